@@ -1,0 +1,69 @@
+// Line, ray and segment against a disk: note 000 §2, completed (derivation in docs/line_disk.md).
+// The piece's projection enters and leaves the disk at the rim crossings tau1 <= tau2. Inside
+// [tau1, tau2] the distance is the height |z(tau)|, linear in tau, so its minimum is at tau1,
+// tau2 or the plane crossing. Outside, the disk distance is the circle distance, whose
+// stationary points are roots of the note-000 quartic. The end points of the piece's own
+// interval are candidates too. The exact disk distance judges every candidate.
+#pragma once
+
+#include "linear.hpp"
+#include "query.hpp"
+
+namespace circledist {
+
+// Where the projection of the piece crosses the rim: b1 tau^2 + 2 b0 tau + (rho0^2 - R^2) = 0.
+template <class Real> void push_rim_crossings(const LocalLinear<Real>& line, Real radius, Candidates<Real>& out) {
+  if (line.is_point) return;
+  const Vec3<Real>& a = line.anchor;
+  const Vec3<Real>& m = line.dir;
+  const Real b1 = m.x() * m.x() + m.y() * m.y();
+  if (!(b1 > 0)) return;
+  const Real b0 = m.x() * a.x() + m.y() * a.y();
+  const Real rho0 = length2d(a.x(), a.y());
+  const Real c = (rho0 - radius) * (rho0 + radius);
+  const Real disc = b0 * b0 - b1 * c;
+  if (disc < 0) return;
+  const Real q = -(b0 + std::copysign(std::sqrt(disc), b0));
+  if (q != 0) {
+    out.push(q / b1);
+    out.push(c / q);
+  } else {
+    out.push(Real(0));
+  }
+}
+
+template <class Real, class Piece> struct LinearDiskQuery {
+  static constexpr bool defined = true;
+
+  template <class Roots> static Minima<Real> solve(const LocalLinear<Real>& line, Real radius, Real scale) {
+    Candidates<Real> starts;
+    push_linear_candidates(line, starts);
+    push_rim_crossings(line, radius, starts);
+    push_line_circle_roots<Roots>(line, radius, scale, starts);
+    const auto h = [&](Real tau) { return disk_distance_local(line.at(tau), radius); };
+    return minimize_linear(h, line, starts, scale);
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Disk3<Real>& disk) {
+    const Round<Real> round(disk.center, disk.normal, disk.radius);
+    const LocalLinear<Real> line(as_linear(piece), round);
+    return solve<Roots>(line, disk.radius, linear_round_scale(line, disk.radius)).best.value;
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Disk3<Real>& disk) {
+    const Round<Real> round(disk.center, disk.normal, disk.radius);
+    const Linear<Real> linear = as_linear(piece);
+    const LocalLinear<Real> line(linear, round);
+    const Real scale = linear_round_scale(line, disk.radius);
+    const Minima<Real> minima = solve<Roots>(line, disk.radius, scale);
+    return linear_round_result(
+        linear, line, round, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
+        &Round<Real>::disk_param);
+  }
+};
+
+template <class Real> struct Query<Line3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Segment3<Real>> {};
+
+}  // namespace circledist

@@ -1,0 +1,138 @@
+// Lines, rays and segments as one "linear piece" origin + t * direction, t in [lo, hi], and the
+// machinery shared by every linear-vs-round query (line_circle.hpp, line_disk.hpp).
+#pragma once
+
+#include "minimize.hpp"
+#include "planar.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace circledist {
+
+template <class Real> struct Linear {
+  Vec3<Real> origin, direction;
+  Real lo, hi;  // parameter interval; either end may be infinite
+};
+
+template <class Real> Linear<Real> as_linear(const Line3<Real>& l) {
+  const Real inf = std::numeric_limits<Real>::infinity();
+  return {l.origin, l.direction, -inf, inf};
+}
+template <class Real> Linear<Real> as_linear(const Ray3<Real>& r) {
+  return {r.origin, r.direction, Real(0), std::numeric_limits<Real>::infinity()};
+}
+template <class Real> Linear<Real> as_linear(const Segment3<Real>& s) { return {s.p0, s.p1 - s.p0, Real(0), Real(1)}; }
+
+// The piece in a round's local frame, re-anchored at its point closest to the round's center and
+// with a unit direction: P(tau) = anchor + tau * dir, and t = (tau + shift) / length. Anchoring
+// keeps the polynomial's variable small and its coefficients free of the along-line offset.
+template <class Real> struct LocalLinear {
+  Vec3<Real> anchor, dir;
+  Real length = 1, shift = 0, lo = 0, hi = 0;
+  bool is_point = false;  // zero-length direction (a degenerate segment)
+
+  LocalLinear(const Linear<Real>& piece, const Round<Real>& round) {
+    const Vec3<Real> d = round.local(piece.origin);
+    const Vec3<Real> m = round.frame.to_local(piece.direction);
+    length = m.norm();
+    if (!(length > 0)) {
+      is_point = true;
+      anchor = d;
+      dir.setZero();
+      length = 1;
+      return;
+    }
+    dir = m / length;
+    shift = -d.dot(dir);
+    anchor = d + shift * dir;
+    lo = std::isfinite(piece.lo) ? piece.lo * length - shift : piece.lo;
+    hi = std::isfinite(piece.hi) ? piece.hi * length - shift : piece.hi;
+  }
+
+  Vec3<Real> at(Real tau) const { return anchor + tau * dir; }
+  Real t_of(Real tau) const { return (tau + shift) / length; }
+};
+
+// Candidates every linear-vs-round query shares: the anchor, the plane crossing and the finite
+// interval ends (the note's "ray origin" rule: an end point may be the closest point).
+template <class Real> void push_linear_candidates(const LocalLinear<Real>& line, Candidates<Real>& out) {
+  out.push(Real(0));
+  if (line.dir.z() != 0) out.push(-line.anchor.z() / line.dir.z());
+  if (std::isfinite(line.lo)) out.push(line.lo);
+  if (std::isfinite(line.hi)) out.push(line.hi);
+}
+
+// Note 000 §1: the zero-derivative condition squared,
+//   (a0 + a1 t)^2 (c0 + 2 c1 t + c2 t^2) = R^2 (b0 + b1 t)^2,
+// expanded into d0 + d1 t + ... + d4 t^4. Here in the circle's frame (b1 = mx^2 + my^2 without
+// the cancellation of M.M - (N.M)^2), with a1 = |M| = 1 and t scaled by `scale` so that the
+// coefficients are O(1). Appends the near-real roots (as tau) to `out`.
+template <class Roots, class Real>
+void push_line_circle_roots(const LocalLinear<Real>& line, Real radius, Real scale, Candidates<Real>& out) {
+  if (line.is_point) return;
+  const Vec3<Real> a = line.anchor / scale;
+  const Vec3<Real>& m = line.dir;
+  const Real r2 = (radius / scale) * (radius / scale);
+  const Real a0 = a.dot(m);
+  const Real b0 = m.x() * a.x() + m.y() * a.y(), b1 = m.x() * m.x() + m.y() * m.y();
+  const Real c0 = a.x() * a.x() + a.y() * a.y(), c1 = b0, c2 = b1;
+  const Real d[5] = {
+      a0 * a0 * c0 - b0 * b0 * r2,
+      2 * (a0 * c0 + a0 * a0 * c1 - b0 * b1 * r2),
+      c0 + 4 * a0 * c1 + a0 * a0 * c2 - b1 * b1 * r2,
+      2 * (c1 + a0 * c2),
+      c2,
+  };
+  Candidates<Real> roots;
+  Roots::roots(d, 4, roots);
+  for (int i = 0; i < roots.count; ++i) out.push(roots.value[i] * scale);
+}
+
+// The length scale of a linear-vs-round query: tolerances and the polish width follow it.
+template <class Real> Real linear_round_scale(const LocalLinear<Real>& line, Real radius) {
+  const Real s = std::max(radius, line.anchor.norm());
+  return s > 0 ? s : Real(1);
+}
+
+// Polishes the candidates on the exact distance `h(tau)` over the piece's interval.
+template <class Real, class H>
+Minima<Real> minimize_linear(const H& h, const LocalLinear<Real>& line, const Candidates<Real>& starts, Real scale) {
+  const Real width = Real(1e-3) * scale;
+  const Real abs_tol = Real(0.1) * std::sqrt(std::numeric_limits<Real>::epsilon()) * scale;
+  return polish_candidates(h, starts, width, line.lo, line.hi, abs_tol);
+}
+
+// Builds the Result from the polished minima: `round_point(p, ambiguous)` maps a local point of
+// the piece to its closest local point on the round. Distinct tied pairs make `unique` false.
+template <class Real, class RoundPoint, class RoundParam>
+Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Real>& line, const Round<Real>& round,
+                                 const Minima<Real>& minima, Real scale, const RoundPoint& round_point,
+                                 const RoundParam& round_param) {
+  Result<Real> r;
+  const Minimum<Real>& best = minima.best;
+  bool ambiguous = false;
+  const Vec3<Real> pa = line.at(best.x);
+  const Vec3<Real> pb = round_point(pa, ambiguous);
+  const Real tie = tie_tolerance(std::max(scale, best.value));
+  const Real apart = distinct_points_tolerance(scale);
+  for (int i = 0; i < minima.count && !ambiguous; ++i) {
+    const Minimum<Real>& m = minima.item[i];
+    if (!(m.value <= best.value + tie)) continue;
+    bool unused = false;
+    const Vec3<Real> qa = line.at(m.x);
+    const Vec3<Real> qb = round_point(qa, unused);
+    if ((qa - pa).norm() > apart || (qb - pb).norm() > apart) ambiguous = true;
+  }
+  Real t = line.is_point ? Real(0) : line.t_of(best.x);
+  t = std::min(std::max(t, piece.lo), piece.hi);
+  r.distance = best.value;
+  r.point_a = piece.origin + t * piece.direction;
+  r.point_b = round.world(pb);
+  r.param_a = Vec2<Real>(t, 0);
+  r.param_b = round_param(pb);
+  r.unique = !ambiguous;
+  return r;
+}
+
+}  // namespace circledist

@@ -1,0 +1,119 @@
+// Candidate polishing: every candidate parameter (a polynomial root, an interval end point, a
+// plane crossing) is moved to a nearby local minimum of the *exact* distance, never of the
+// squared polynomial, and the smallest exact distance wins. This is what keeps tangencies
+// (multiple roots known only to eps^(1/4)) and degenerate polynomials accurate.
+#pragma once
+
+#include "roots.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace circledist {
+
+template <class Real> struct Minimum {
+  Real x = 0;
+  Real value = std::numeric_limits<Real>::infinity();
+};
+
+// Brent's minimization (golden section + parabolic steps) of f on [a, b] starting from x, with
+// fx = f(x) on entry and the minimum's value on return.
+template <class Real, class F>
+Real brent_minimize(const F& f, Real a, Real b, Real x, Real& fx, Real abs_tol) {
+  const Real golden = Real(0.3819660112501051517954131656343618822796908201942371378645513772947395371);
+  const Real rel_tol = std::sqrt(std::numeric_limits<Real>::epsilon());
+  Real w = x, v = x, fw = fx, fv = fx;
+  Real d = 0, e = 0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const Real middle = (a + b) / 2;
+    const Real tol = rel_tol * std::abs(x) + abs_tol, tol2 = 2 * tol;
+    if (std::abs(x - middle) <= tol2 - (b - a) / 2) break;
+    bool golden_step = true;
+    if (std::abs(e) > tol) {
+      Real r = (x - w) * (fx - fv);
+      Real q = (x - v) * (fx - fw);
+      Real p = (x - v) * q - (x - w) * r;
+      q = 2 * (q - r);
+      if (q > 0) p = -p; else q = -q;
+      const Real e_previous = e;
+      e = d;
+      if (std::abs(p) < std::abs(q * e_previous / 2) && p > q * (a - x) && p < q * (b - x)) {
+        d = p / q;
+        const Real u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = x < middle ? tol : -tol;
+        golden_step = false;
+      }
+    }
+    if (golden_step) {
+      e = (x < middle ? b : a) - x;
+      d = golden * e;
+    }
+    const Real u = x + (std::abs(d) >= tol ? d : (d > 0 ? tol : -tol));
+    const Real fu = f(u);
+    if (fu <= fx) {
+      if (u < x) b = x; else a = x;
+      v = w; fv = fw; w = x; fw = fx; x = u; fx = fu;
+    } else {
+      if (u < x) a = u; else b = u;
+      if (fu <= fw || w == x) {
+        v = w; fv = fw; w = u; fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u; fv = fu;
+      }
+    }
+  }
+  return x;
+}
+
+// Moves x0 to a local minimum of f on [lo, hi] (either end may be infinite). The search starts
+// in [x0 - width, x0 + width] and widens while the minimum sits on an inner edge of the bracket.
+template <class Real, class F>
+Minimum<Real> polish_minimum(const F& f, Real x0, Real width, Real lo, Real hi, Real abs_tol) {
+  Minimum<Real> m;
+  m.x = std::min(std::max(x0, lo), hi);
+  m.value = f(m.x);
+  const Real rel_tol = std::sqrt(std::numeric_limits<Real>::epsilon());
+  for (int expansion = 0; expansion < 16; ++expansion) {
+    const Real a = std::max(lo, m.x - width), b = std::min(hi, m.x + width);
+    if (!(b > a)) break;
+    m.x = brent_minimize(f, a, b, m.x, m.value, abs_tol);
+    const Real edge = 4 * (rel_tol * std::abs(m.x) + abs_tol);
+    const bool on_inner_edge = (a > lo && m.x - a <= edge) || (b < hi && b - m.x <= edge);
+    if (!on_inner_edge) break;
+    width *= 8;
+  }
+  return m;
+}
+
+// The polished minima of every candidate, and the best of them.
+template <class Real> struct Minima {
+  std::array<Minimum<Real>, kMaxDegree + 8> item{};
+  int count = 0;
+  Minimum<Real> best;
+};
+
+template <class Real, class F>
+Minima<Real> polish_candidates(const F& f, const Candidates<Real>& starts, Real width, Real lo, Real hi,
+                               Real abs_tol) {
+  Minima<Real> out;
+  for (int i = 0; i < starts.count; ++i) {
+    const Minimum<Real> m = polish_minimum(f, starts.value[i], width, lo, hi, abs_tol);
+    out.item[out.count++] = m;
+    if (m.value < out.best.value) out.best = m;
+  }
+  return out;
+}
+
+// Distances within this of the best one are a tie: the same distance up to rounding.
+template <class Real> Real tie_tolerance(Real scale) {
+  return 64 * std::numeric_limits<Real>::epsilon() * scale;
+}
+
+// Two closest points farther apart than this are distinct pairs. Flat minima (tangencies) are
+// only located to about eps^(1/4) * scale, so anything finer would split one pair into two.
+template <class Real> Real distinct_points_tolerance(Real scale) {
+  return std::max(Real(1e-3), Real(32) * std::pow(std::numeric_limits<Real>::epsilon(), Real(0.25))) * scale;
+}
+
+}  // namespace circledist
