@@ -1,0 +1,31 @@
+"""circledist: exact distances and closest points between circles, disks, lines, rays, segments
+and points in 3D, single or batched (NumPy broadcasting)."""
+
+from ._core import (
+    Circle,
+    ClosestPoints,
+    Disk,
+    Line,
+    Point,
+    Ray,
+    Segment,
+    Shape,
+    closest_points,
+    distance,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Circle",
+    "ClosestPoints",
+    "Disk",
+    "Line",
+    "Point",
+    "Ray",
+    "Segment",
+    "Shape",
+    "__version__",
+    "closest_points",
+    "distance",
+]

@@ -1,0 +1,128 @@
+// The compiled part of circledist: shape classes, and distance / closest_points over every
+// registered pair of kinds. Thin by design: the math lives in cpp/include/circledist.
+#include "pairs.hpp"
+
+namespace py = pybind11;
+using namespace circledist;
+using namespace circledist::python;
+
+namespace {
+
+template <int K> struct ShapeOf : Shape {
+  using Shape::Shape;
+};
+
+PairTable make_pairs() {
+  PairTable t;
+  using R = double;
+  t.add<V3, Circle3<R>>();
+  t.add<V3, Disk3<R>>();
+  t.add<Line3<R>, Circle3<R>>();
+  t.add<Ray3<R>, Circle3<R>>();
+  t.add<Segment3<R>, Circle3<R>>();
+  t.add<Line3<R>, Disk3<R>>();
+  t.add<Ray3<R>, Disk3<R>>();
+  t.add<Segment3<R>, Disk3<R>>();
+  return t;
+}
+
+const PairTable& pairs() {
+  static const PairTable table = make_pairs();
+  return table;
+}
+
+// A shape argument: a Shape object, or an array-like of points.
+struct Argument {
+  py::object keep;
+  const Shape* shape;
+  explicit Argument(py::handle value) {
+    if (py::isinstance<Shape>(value)) {
+      keep = py::reinterpret_borrow<py::object>(value);
+    } else {
+      keep = py::module_::import("circledist._core").attr("Point")(value);
+    }
+    shape = &keep.cast<const Shape&>();
+  }
+};
+
+template <class Fn> Fn lookup(Fn const (&table)[kKindCount][kKindCount], const Shape& a, const Shape& b) {
+  Fn fn = table[a.kind][b.kind];
+  if (!fn)
+    throw py::type_error(std::string("circledist has no query between a ") + kind_name(a.kind) + " and a " +
+                         kind_name(b.kind));
+  return fn;
+}
+
+py::tuple batch_tuple(const Shape& s) { return py::cast(s.batch); }
+
+template <int K, size_t... I> void bind_shape(py::module_& m, const char* doc, std::index_sequence<I...>) {
+  static const FieldSpec* spec = kFieldSpecs[K];
+  py::class_<ShapeOf<K>, Shape> cls(m, kind_name(K), doc);
+  cls.def(py::init([](decltype((void)I, py::handle())... values) {
+            return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check)...});
+          }),
+          py::arg(spec[I].name)...);
+  (cls.def_property_readonly(spec[I].name, [](const Shape& s) { return s.fields[I].array; }), ...);
+}
+
+template <int K> void bind_shape(py::module_& m, const char* doc) {
+  bind_shape<K>(m, doc, std::make_index_sequence<kFieldCounts[K]>());
+}
+
+std::string repr(const Shape& s) {
+  std::string out = kind_name(s.kind);
+  if (!s.batch.empty()) return out + "(batch shape " + shape_text(s.batch) + ")";
+  out += "(";
+  for (size_t i = 0; i < s.fields.size(); ++i) {
+    out += std::string(i ? ", " : "") + s.fields[i].name + "=" + py::repr(s.fields[i].array).cast<std::string>();
+  }
+  return out + ")";
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points";
+
+  py::class_<Shape> shape(m, "Shape", "Base class of every shape: a single shape or a batch of them.");
+  shape.def_property_readonly("batch_shape", &batch_tuple, "Leading batch dimensions; () for a single shape.")
+      .def_property_readonly("kind", [](const Shape& s) { return kind_name(s.kind); })
+      .def("__repr__", &repr);
+
+  bind_shape<kPoint>(m, "A point, or a batch of points of shape (..., 3).");
+  bind_shape<kLine>(m, "The line origin + t * direction, t real (direction of any nonzero length).");
+  bind_shape<kRay>(m, "The ray origin + t * direction, t >= 0.");
+  bind_shape<kSegment>(m, "The segment p0 + t * (p1 - p0), t in [0, 1]; p0 == p1 is a point.");
+  bind_shape<kCircle>(m, "The circle (ring) of a center, a normal (any nonzero length) and a radius >= 0.");
+  bind_shape<kDisk>(m, "The filled disk of a center, a normal (any nonzero length) and a radius >= 0.");
+
+  py::class_<ClosestPoints>(m, "ClosestPoints", "Distance, closest points, parameters and uniqueness of a query.")
+      .def_readonly("distance", &ClosestPoints::distance)
+      .def_readonly("point_a", &ClosestPoints::point_a)
+      .def_readonly("point_b", &ClosestPoints::point_b)
+      .def_readonly("param_a", &ClosestPoints::param_a)
+      .def_readonly("param_b", &ClosestPoints::param_b)
+      .def_readonly("unique", &ClosestPoints::unique)
+      .def("__repr__", [](const ClosestPoints& r) {
+        return "ClosestPoints(distance=" + py::repr(r.distance).cast<std::string>() +
+               ", point_a=" + py::repr(r.point_a).cast<std::string>() +
+               ", point_b=" + py::repr(r.point_b).cast<std::string>() +
+               ", unique=" + py::repr(r.unique).cast<std::string>() + ")";
+      });
+
+  m.def(
+      "distance",
+      [](py::handle a, py::handle b) {
+        const Argument x(a), y(b);
+        return lookup(pairs().distance, *x.shape, *y.shape)(*x.shape, *y.shape);
+      },
+      py::arg("a"), py::arg("b"),
+      "Distance between a and b: a float for two single shapes, an array of the broadcast batch shape otherwise.");
+  m.def(
+      "closest_points",
+      [](py::handle a, py::handle b) {
+        const Argument x(a), y(b);
+        return lookup(pairs().closest, *x.shape, *y.shape)(*x.shape, *y.shape);
+      },
+      py::arg("a"), py::arg("b"), "Distance, closest points on a and b, their parameters and the unique flag.");
+}

@@ -1,0 +1,175 @@
+// One template evaluates every pair of shape kinds over broadcast batches; the module registers
+// each pair with a single line. Loops run in C++ with the GIL released.
+#pragma once
+
+#include "shapes.hpp"
+
+#include <array>
+
+namespace circledist::python {
+
+constexpr int kMaxFields = 8;
+
+// Offsets (in doubles) of every field of both shapes for each element of the broadcast batch.
+// Fields that are full-size in the result's layout or constant step linearly (the fast path);
+// others (e.g. (N, 1) against (M,)) walk an odometer.
+class Broadcast {
+ public:
+  BatchShape shape;
+  Index size = 1;
+
+  Broadcast(const Shape& a, const Shape& b) {
+    bool ok = true;
+    shape = broadcast_shapes(a.batch, b.batch, ok);
+    if (!ok)
+      throw py::value_error(std::string("batch shapes ") + shape_text(a.batch) + " of the " + kind_name(a.kind) +
+                            " and " + shape_text(b.batch) + " of the " + kind_name(b.kind) + " do not broadcast");
+    for (Index d : shape) size *= d;
+    add(a);
+    add(b);
+  }
+
+  // Calls fn(flat_index, field_pointers) for every element.
+  template <class Fn> void for_each(Fn&& fn) const {
+    std::array<const double*, kMaxFields> ptr{};
+    if (linear_) {
+      for (Index i = 0; i < size; ++i) {
+        for (int f = 0; f < count_; ++f) ptr[f] = base_[f] + i * step_[f];
+        fn(i, ptr.data());
+      }
+      return;
+    }
+    const size_t nd = shape.size();
+    std::vector<Index> idx(nd, 0);
+    std::array<Index, kMaxFields> offset{};
+    for (Index i = 0; i < size; ++i) {
+      for (int f = 0; f < count_; ++f) ptr[f] = base_[f] + offset[f];
+      fn(i, ptr.data());
+      for (size_t d = nd; d-- > 0;) {
+        ++idx[d];
+        for (int f = 0; f < count_; ++f) offset[f] += stride_[f][d];
+        if (idx[d] < shape[d]) break;
+        for (int f = 0; f < count_; ++f) offset[f] -= stride_[f][d] * shape[d];
+        idx[d] = 0;
+      }
+    }
+  }
+
+ private:
+  int count_ = 0;
+  bool linear_ = true;
+  std::array<const double*, kMaxFields> base_{};
+  std::array<Index, kMaxFields> step_{};
+  std::array<std::vector<Index>, kMaxFields> stride_;
+
+  void add(const Shape& s) {
+    const size_t nd = shape.size();
+    for (const Field& field : s.fields) {
+      const int f = count_++;
+      base_[f] = field.data();
+      std::vector<Index>& st = stride_[f];
+      st.assign(nd, 0);
+      Index step = field.width;
+      bool full = field.batch.size() == nd;
+      for (size_t k = 0; k < field.batch.size(); ++k) {
+        const size_t d = nd - 1 - k;
+        const Index extent = field.batch[field.batch.size() - 1 - k];
+        if (extent != shape[d]) full = false;
+        st[d] = extent == 1 ? 0 : step;
+        step *= extent;
+      }
+      if (field.batch.empty() || step == field.width) {
+        step_[f] = 0;  // one element repeated
+      } else if (full) {
+        step_[f] = field.width;
+      } else {
+        linear_ = false;
+      }
+    }
+  }
+};
+
+struct ClosestPoints {
+  py::object distance, point_a, point_b, param_a, param_b, unique;
+};
+
+template <class T> py::array_t<T> new_array(const BatchShape& batch, Index trailing) {
+  BatchShape shape = batch;
+  if (trailing > 0) shape.push_back(trailing);
+  return py::array_t<T>(shape);
+}
+
+// Evaluation of one ordered pair of C++ primitive types.
+template <class A, class B> struct Pair {
+  static A first(const double* const* f) { return ShapeTraits<A>::make(f); }
+  static B second(const double* const* f, int offset) { return ShapeTraits<B>::make(f + offset); }
+
+  static py::object distance(const Shape& a, const Shape& b) {
+    const int nb = int(a.fields.size());
+    if (a.batch.empty() && b.batch.empty()) {
+      std::array<const double*, kMaxFields> f{};
+      int k = 0;
+      for (const Field& x : a.fields) f[k++] = x.data();
+      for (const Field& x : b.fields) f[k++] = x.data();
+      return py::float_(circledist::distance(first(f.data()), second(f.data(), nb)));
+    }
+    const Broadcast bc(a, b);
+    auto out = new_array<double>(bc.shape, 0);
+    double* o = out.mutable_data();
+    {
+      py::gil_scoped_release release;
+      bc.for_each([&](Index i, const double* const* f) { o[i] = circledist::distance(first(f), second(f, nb)); });
+    }
+    return std::move(out);
+  }
+
+  static ClosestPoints closest(const Shape& a, const Shape& b) {
+    const int nb = int(a.fields.size());
+    const Broadcast bc(a, b);
+    auto dist = new_array<double>(bc.shape, 0);
+    auto pa = new_array<double>(bc.shape, 3), pb = new_array<double>(bc.shape, 3);
+    auto ta = new_array<double>(bc.shape, 2), tb = new_array<double>(bc.shape, 2);
+    auto unique = new_array<bool>(bc.shape, 0);
+    double *d = dist.mutable_data(), *xa = pa.mutable_data(), *xb = pb.mutable_data();
+    double *ua = ta.mutable_data(), *ub = tb.mutable_data();
+    bool* u = unique.mutable_data();
+    {
+      py::gil_scoped_release release;
+      bc.for_each([&](Index i, const double* const* f) {
+        const Result<double> r = circledist::closest_points(first(f), second(f, nb));
+        d[i] = r.distance;
+        for (int k = 0; k < 3; ++k) {
+          xa[3 * i + k] = r.point_a[k];
+          xb[3 * i + k] = r.point_b[k];
+        }
+        for (int k = 0; k < 2; ++k) {
+          ua[2 * i + k] = r.param_a[k];
+          ub[2 * i + k] = r.param_b[k];
+        }
+        u[i] = r.unique;
+      });
+    }
+    if (bc.shape.empty())
+      return {py::float_(d[0]), std::move(pa), std::move(pb), std::move(ta), std::move(tb), py::bool_(u[0])};
+    return {std::move(dist), std::move(pa), std::move(pb), std::move(ta), std::move(tb), std::move(unique)};
+  }
+};
+
+using DistanceFn = py::object (*)(const Shape&, const Shape&);
+using ClosestFn = ClosestPoints (*)(const Shape&, const Shape&);
+
+struct PairTable {
+  DistanceFn distance[kKindCount][kKindCount] = {};
+  ClosestFn closest[kKindCount][kKindCount] = {};
+
+  // Registers both argument orders of a pair.
+  template <class A, class B> void add() {
+    constexpr int ka = ShapeTraits<A>::kind, kb = ShapeTraits<B>::kind;
+    distance[ka][kb] = &Pair<A, B>::distance;
+    closest[ka][kb] = &Pair<A, B>::closest;
+    distance[kb][ka] = &Pair<B, A>::distance;
+    closest[kb][ka] = &Pair<B, A>::closest;
+  }
+};
+
+}  // namespace circledist::python

@@ -1,0 +1,188 @@
+// Python-side shapes: validated, contiguous float64 fields with leading batch dimensions, and
+// the per-kind traits that turn one batch element into a C++ primitive. No geometry here.
+#pragma once
+
+#include <circledist/circledist.hpp>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace circledist::python {
+
+namespace py = pybind11;
+using Index = py::ssize_t;
+using BatchShape = std::vector<Index>;
+
+enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kKindCount };
+
+inline const char* kind_name(int kind) {
+  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk"};
+  return names[kind];
+}
+
+inline std::string shape_text(const BatchShape& shape) {
+  std::ostringstream s;
+  s << '(';
+  for (size_t i = 0; i < shape.size(); ++i) s << shape[i] << (shape.size() == 1 ? "," : (i + 1 < shape.size() ? ", " : ""));
+  s << ')';
+  return s.str();
+}
+
+// "[i]" or "[i, j]" for a flat index into a batch, "" for an unbatched field.
+inline std::string index_text(Index flat, const BatchShape& batch) {
+  if (batch.empty()) return "";
+  std::vector<Index> idx(batch.size());
+  for (size_t d = batch.size(); d-- > 0;) {
+    idx[d] = flat % batch[d];
+    flat /= batch[d];
+  }
+  std::ostringstream s;
+  s << '[';
+  for (size_t d = 0; d < idx.size(); ++d) s << (d ? ", " : "") << idx[d];
+  s << ']';
+  return s.str();
+}
+
+// A field: `width` doubles per batch element (3 for vectors, 1 for scalars).
+struct Field {
+  const char* name;
+  py::array_t<double, py::array::c_style | py::array::forcecast> array;
+  BatchShape batch;
+  Index width;
+  const double* data() const { return array.data(); }
+};
+
+enum class Check { Finite, NonzeroVector, NonNegative };
+
+inline Field make_field(const char* owner, const char* name, py::handle value, Index width, Check check) {
+  Field f{name, {}, {}, width};
+  py::object converted;
+  try {
+    converted = py::module_::import("numpy").attr("asarray")(value, py::arg("dtype") = "float64");
+  } catch (py::error_already_set&) {
+    throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
+  }
+  f.array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(converted);
+  if (!f.array) {
+    PyErr_Clear();
+    throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
+  }
+  const Index ndim = f.array.ndim();
+  if (width == 3) {
+    if (ndim < 1 || f.array.shape(ndim - 1) != 3) {
+      BatchShape got(f.array.shape(), f.array.shape() + ndim);
+      throw py::value_error(std::string(owner) + ": " + name + " must have shape (3,) or (..., 3), got " +
+                            shape_text(got));
+    }
+    f.batch.assign(f.array.shape(), f.array.shape() + ndim - 1);
+  } else {
+    f.batch.assign(f.array.shape(), f.array.shape() + ndim);
+  }
+  const double* p = f.array.data();
+  const Index count = f.array.size() / width;
+  for (Index i = 0; i < count; ++i) {
+    const double* e = p + i * width;
+    for (Index k = 0; k < width; ++k) {
+      if (!std::isfinite(e[k]))
+        throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " contains NaN or inf");
+    }
+    if (check == Check::NonzeroVector && !(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > 0))
+      throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " has zero length");
+    if (check == Check::NonNegative && e[0] < 0)
+      throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " is negative");
+  }
+  return f;
+}
+
+// NumPy broadcasting of two batch shapes; `ok` is false when they do not broadcast.
+inline BatchShape broadcast_shapes(const BatchShape& a, const BatchShape& b, bool& ok) {
+  ok = true;
+  const size_t n = std::max(a.size(), b.size());
+  BatchShape out(n, 1);
+  for (size_t i = 0; i < n; ++i) {
+    const Index da = i < a.size() ? a[a.size() - 1 - i] : 1;
+    const Index db = i < b.size() ? b[b.size() - 1 - i] : 1;
+    if (da != db && da != 1 && db != 1) ok = false;
+    out[n - 1 - i] = da == 1 ? db : da;
+  }
+  return out;
+}
+
+// A batch of one kind of shape. Fields broadcast against each other (a scalar radius with
+// (N, 3) centers is N circles).
+struct Shape {
+  int kind = kPoint;
+  std::vector<Field> fields;
+  BatchShape batch;
+
+  Shape(int k, std::vector<Field> f) : kind(k), fields(std::move(f)) {
+    for (const Field& field : fields) {
+      bool ok = true;
+      const BatchShape joined = broadcast_shapes(batch, field.batch, ok);
+      if (!ok)
+        throw py::value_error(std::string(kind_name(kind)) + ": " + field.name + " of batch shape " +
+                              shape_text(field.batch) + " does not broadcast with batch shape " + shape_text(batch) +
+                              " of the other fields");
+      batch = joined;
+    }
+  }
+};
+
+// One C++ primitive per kind, built from pointers to one batch element of each field.
+template <class S> struct ShapeTraits;
+
+using V3 = Vec3<double>;
+inline V3 vec(const double* p) { return V3(p[0], p[1], p[2]); }
+
+template <> struct ShapeTraits<V3> {
+  static constexpr int kind = kPoint;
+  static V3 make(const double* const* f) { return vec(f[0]); }
+};
+template <> struct ShapeTraits<Line3<double>> {
+  static constexpr int kind = kLine;
+  static Line3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1])}; }
+};
+template <> struct ShapeTraits<Ray3<double>> {
+  static constexpr int kind = kRay;
+  static Ray3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1])}; }
+};
+template <> struct ShapeTraits<Segment3<double>> {
+  static constexpr int kind = kSegment;
+  static Segment3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1])}; }
+};
+template <> struct ShapeTraits<Circle3<double>> {
+  static constexpr int kind = kCircle;
+  static Circle3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1]), *f[2]}; }
+};
+template <> struct ShapeTraits<Disk3<double>> {
+  static constexpr int kind = kDisk;
+  static Disk3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1]), *f[2]}; }
+};
+
+}  // namespace circledist::python
+
+namespace circledist::python {
+
+// The constructor arguments of each kind, in the order ShapeTraits reads them.
+struct FieldSpec {
+  const char* name;
+  Index width;
+  Check check;
+};
+
+inline constexpr FieldSpec kPointFields[] = {{"p", 3, Check::Finite}};
+inline constexpr FieldSpec kLinearFields[] = {{"origin", 3, Check::Finite}, {"direction", 3, Check::NonzeroVector}};
+inline constexpr FieldSpec kSegmentFields[] = {{"p0", 3, Check::Finite}, {"p1", 3, Check::Finite}};
+inline constexpr FieldSpec kRoundFields[] = {
+    {"center", 3, Check::Finite}, {"normal", 3, Check::NonzeroVector}, {"radius", 1, Check::NonNegative}};
+
+inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields,
+                                                             kSegmentFields, kRoundFields,  kRoundFields};
+inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3};
+
+}  // namespace circledist::python
