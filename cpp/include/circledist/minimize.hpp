@@ -86,17 +86,17 @@ Minimum<Real> polish_minimum(const F& f, Real x0, Real width, Real lo, Real hi, 
   return m;
 }
 
-// The polished minima of every candidate, and the best of them.
-template <class Real> struct Minima {
-  std::array<Minimum<Real>, kMaxDegree + 8> item{};
+// The polished minima of every candidate, and the best of them. Capacity as in Candidates.
+template <class Real, int Capacity = kMaxDegree + 8> struct Minima {
+  std::array<Minimum<Real>, Capacity> item{};
   int count = 0;
   Minimum<Real> best;
 };
 
-template <class Real, class F>
-Minima<Real> polish_candidates(const F& f, const Candidates<Real>& starts, Real width, Real lo, Real hi,
-                               Real abs_tol) {
-  Minima<Real> out;
+template <class Real, class F, int Capacity>
+Minima<Real, Capacity> polish_candidates(const F& f, const Candidates<Real, Capacity>& starts, Real width, Real lo,
+                                         Real hi, Real abs_tol) {
+  Minima<Real, Capacity> out;
   for (int i = 0; i < starts.count; ++i) {
     const Minimum<Real> m = polish_minimum(f, starts.value[i], width, lo, hi, abs_tol);
     out.item[out.count++] = m;

@@ -13,11 +13,17 @@
 
 namespace circledist {
 
-// At most degree 8 (the circle-disk and circle-circle octics); coefficients ascending.
+// Degree 8 covers the line and circle queries (the circle-disk and circle-circle octics);
+// coefficients ascending. Curves need more: a Bezier curve of degree n against a circle gives
+// degree 6n - 2, hence kMaxCurveDegree for degree 7.
 constexpr int kMaxDegree = 8;
+constexpr int kMaxCurveDegree = 40;
 
-template <class Real> struct Candidates {
-  std::array<Real, kMaxDegree + 8> value{};
+// The default capacity holds the roots of one degree-8 polynomial plus a few extra candidates.
+// A larger Capacity also lets EigenCompanion solve degrees up to Capacity - 8 (see roots()).
+template <class Real, int Capacity = kMaxDegree + 8> struct Candidates {
+  static constexpr int capacity = Capacity;
+  std::array<Real, Capacity> value{};
   int count = 0;
   void push(Real x) {
     if (count < int(value.size()) && std::isfinite(x)) value[count++] = x;
@@ -72,6 +78,24 @@ template <class Real> bool near_real(const std::complex<Real>& z, Real tolerance
   return std::abs(z.imag()) <= tolerance * (1 + std::abs(z.real()));
 }
 
+// The near-real eigenvalues of the balanced companion matrix of a trimmed polynomial of degree
+// >= 3. `Matrix` fixes the storage: the degree-8 one every line/circle query instantiates, or a
+// dynamic one for the curve degrees (instantiated only where a large Candidates asks for it).
+template <class Matrix, class Real, int Capacity>
+void companion_roots(const Real* c, int degree, Real tol, Candidates<Real, Capacity>& out) {
+  Matrix companion = Matrix::Zero(degree, degree);
+  for (int i = 0; i + 1 < degree; ++i) companion(i + 1, i) = 1;
+  for (int i = 0; i < degree; ++i) companion(i, degree - 1) = -c[i] / c[degree];
+  balance(companion);
+  Eigen::EigenSolver<Matrix> solver(companion, /*computeEigenvectors=*/false);
+  if (solver.info() != Eigen::Success) return;
+  const auto& eigenvalues = solver.eigenvalues();
+  for (int i = 0; i < degree; ++i) {
+    const std::complex<Real> z = eigenvalues[i];
+    if (near_real(z, tol)) out.push(z.real());
+  }
+}
+
 }  // namespace detail
 
 // Eigen's polynomial solver scheme (balanced companion matrix, real Schur form by QR), without
@@ -85,7 +109,11 @@ struct EigenCompanion {
   }
 
   // Appends the real parts of the near-real roots of c[0] + c[1] x + ... + c[degree] x^degree.
-  template <class Real> static void roots(const Real* coefficients, int degree, Candidates<Real>& out) {
+  // Degrees up to kMaxDegree always; up to Capacity - 8 when `out` is a larger Candidates (the
+  // default Candidates never instantiates the large solver, so line/circle builds do not pay
+  // for it). A degree beyond what `out` supports yields no candidates.
+  template <class Real, int Capacity>
+  static void roots(const Real* coefficients, int degree, Candidates<Real, Capacity>& out) {
     degree = trimmed_degree(coefficients, degree);
     if (degree <= 0) return;
     const Real* c = coefficients;
@@ -109,16 +137,12 @@ struct EigenCompanion {
       return;
     }
     using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDegree, kMaxDegree>;
-    Matrix companion = Matrix::Zero(degree, degree);
-    for (int i = 0; i + 1 < degree; ++i) companion(i + 1, i) = 1;
-    for (int i = 0; i < degree; ++i) companion(i, degree - 1) = -c[i] / c[degree];
-    detail::balance(companion);
-    Eigen::EigenSolver<Matrix> solver(companion, /*computeEigenvectors=*/false);
-    if (solver.info() != Eigen::Success) return;
-    const auto& eigenvalues = solver.eigenvalues();
-    for (int i = 0; i < degree; ++i) {
-      const std::complex<Real> z = eigenvalues[i];
-      if (detail::near_real(z, tol)) out.push(z.real());
+    if (degree <= kMaxDegree) {
+      detail::companion_roots<Matrix>(c, degree, tol, out);
+    } else if constexpr (Capacity > kMaxDegree + 8) {
+      if (degree <= Capacity - 8) {
+        detail::companion_roots<Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>>(c, degree, tol, out);
+      }
     }
   }
 };

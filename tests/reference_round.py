@@ -1,0 +1,555 @@
+"""Independent 50-digit references for the round-shape queries of circledist.
+
+Nothing here uses circledist or polynomial root finding.  Every reference reduces the query to the
+minimisation of a *closed-form* point-to-shape distance over one real parameter:
+
+* point-circle (circle centre C, unit normal N, radius R): with w = P - C, z = N.w and
+  rho = |w - z N| (distance of P from the circle's axis),  dist^2 = z^2 + (rho - R)^2.
+* point-disk (note 001 section 2): dist^2 = z^2 if rho <= R, else z^2 + (rho - R)^2.
+
+Both are exact, so minimising them over a compact one-parameter shape (a circle's angle, a Bezier
+curve's t) gives the exact shape-to-shape distance: the minimiser exists and is found by dense
+sampling followed by golden-section refinement of every sampled local minimum.  Every value ever
+evaluated is the distance between a genuine point of one shape and the genuine closest point of the
+other, hence an upper bound of the true distance; the reference keeps the smallest.
+
+Arithmetic is mpmath at 50 significant digits in a private context (the global mpmath context is
+not touched).  Float inputs are converted exactly (an IEEE double is a dyadic rational), so the
+references describe exactly the float64 scene given to the library, e.g. after a translation by
+1e8 the reference is that of the rounded, translated coordinates.
+
+Frames are built here, independently of the library: the in-plane unit vector U is the
+Gram-Schmidt projection of the coordinate axis least aligned with N, and V = N x U.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Callable, List, Optional, Sequence, Tuple
+
+from mpmath.ctx_mp import MPContext
+
+DPS = 50
+ctx = MPContext()
+ctx.dps = DPS
+mpf = ctx.mpf
+
+CIRCLE_SAMPLES = 720   # samples of an angle over [0, 2 pi)
+CURVE_SAMPLES = 600    # intervals of a Bezier parameter over [0, 1] (end points included)
+PARAM_TOL = mpf("1e-40")  # golden-section bracket width at which refinement stops
+MAX_REFINED = 16       # at most this many sampled local minima (the lowest) are refined
+_INVPHI = (ctx.sqrt(5) - 1) / 2
+_TWO_PI = 2 * ctx.pi
+
+Vec = Tuple[object, object, object]
+
+
+# ----------------------------------------------------------------------------------------------
+# small vector helpers on tuples of mpf
+# ----------------------------------------------------------------------------------------------
+def to_mp(x) -> object:
+    """Exact conversion of a float / int / numpy scalar; strings are parsed at 50 digits."""
+    if isinstance(x, ctx.mpf):
+        return x
+    if isinstance(x, str):
+        return mpf(x)
+    if isinstance(x, int):
+        return mpf(x)
+    return mpf(float(x))
+
+
+def vec(x: Sequence) -> Vec:
+    v = tuple(to_mp(c) for c in x)
+    if len(v) != 3:
+        raise ValueError("expected a 3-vector")
+    return v
+
+
+def add(a: Vec, b: Vec) -> Vec:
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def sub(a: Vec, b: Vec) -> Vec:
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def scale(s, a: Vec) -> Vec:
+    return (s * a[0], s * a[1], s * a[2])
+
+
+def dot(a: Vec, b: Vec):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def cross(a: Vec, b: Vec) -> Vec:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def norm(a: Vec):
+    return ctx.sqrt(dot(a, a))
+
+
+def normalize(a: Vec) -> Vec:
+    n = norm(a)
+    if n == 0:
+        raise ValueError("zero vector")
+    return scale(1 / n, a)
+
+
+def dist(a: Vec, b: Vec):
+    return norm(sub(a, b))
+
+
+def frame(normal: Sequence) -> Tuple[Vec, Vec, Vec]:
+    """Right-handed orthonormal (U, V, N) with N = normal/|normal| (own construction)."""
+    n = normalize(vec(normal))
+    k = min(range(3), key=lambda i: (abs(n[i]), i))
+    e = tuple(mpf(1) if i == k else mpf(0) for i in range(3))
+    u = normalize(sub(e, scale(dot(e, n), n)))
+    v = cross(n, u)
+    return u, v, n
+
+
+@dataclass(frozen=True)
+class Round:
+    """A circle or disk: centre, orthonormal frame (u, v, n), radius; plus the raw float input."""
+
+    center: Vec
+    u: Vec
+    v: Vec
+    n: Vec
+    radius: object
+    raw_center: tuple
+    raw_normal: tuple
+    raw_radius: float
+
+    def rim_point(self, theta) -> Vec:
+        c, s = ctx.cos_sin(theta)
+        return add(self.center, add(scale(self.radius * c, self.u), scale(self.radius * s, self.v)))
+
+
+def make_round(center, normal, radius) -> Round:
+    u, v, n = frame(normal)
+    r = to_mp(radius)
+    if r < 0:
+        raise ValueError("negative radius")
+    return Round(vec(center), u, v, n, r, tuple(center), tuple(normal), radius)
+
+
+# ----------------------------------------------------------------------------------------------
+# closed-form point distances
+# ----------------------------------------------------------------------------------------------
+def _local(p: Vec, rnd: Round):
+    w = sub(p, rnd.center)
+    z = dot(rnd.n, w)
+    a = sub(w, scale(z, rnd.n))
+    return z, a
+
+
+def _round_from_local(z, a, radius, disk: bool):
+    rho = norm(a)
+    if disk and rho <= radius:
+        return abs(z), rho
+    return ctx.sqrt(z * z + (rho - radius) ** 2), rho
+
+
+def point_circle(p: Sequence, rnd: Round):
+    """(distance, closest point, degenerate) with degenerate True when p is on the axis."""
+    p = vec(p)
+    z, a = _local(p, rnd)
+    d, rho = _round_from_local(z, a, rnd.radius, disk=False)
+    if rho == 0:
+        q = add(rnd.center, scale(rnd.radius, rnd.u))
+    else:
+        q = add(rnd.center, scale(rnd.radius / rho, a))
+    return d, q, rho == 0
+
+
+def point_disk(p: Sequence, rnd: Round):
+    """(distance, closest point): note 001 section 2."""
+    p = vec(p)
+    z, a = _local(p, rnd)
+    d, rho = _round_from_local(z, a, rnd.radius, disk=True)
+    if rho <= rnd.radius:
+        q = add(rnd.center, a)
+    else:
+        q = add(rnd.center, scale(rnd.radius / rho, a))
+    return d, q
+
+
+def point_segment(p: Vec, p0: Vec, p1: Vec):
+    """Closed-form distance from a point to a segment (clamped projection)."""
+    d = sub(p1, p0)
+    dd = dot(d, d)
+    t = mpf(0) if dd == 0 else dot(sub(p, p0), d) / dd
+    t = min(max(t, mpf(0)), mpf(1))
+    return dist(p, add(p0, scale(t, d)))
+
+
+# ----------------------------------------------------------------------------------------------
+# Bezier curves
+# ----------------------------------------------------------------------------------------------
+def bernstein(k: int, t) -> List[object]:
+    s = 1 - t
+    tp = [mpf(1)]
+    sp = [mpf(1)]
+    for _ in range(k):
+        tp.append(tp[-1] * t)
+        sp.append(sp[-1] * s)
+    return [math.comb(k, i) * tp[i] * sp[k - i] for i in range(k + 1)]
+
+
+def bezier_point(ctrl: Sequence[Sequence], t) -> Vec:
+    """de Casteljau evaluation in 50-digit arithmetic."""
+    pts = [vec(p) for p in ctrl]
+    t = to_mp(t)
+    while len(pts) > 1:
+        pts = [add(pts[i], scale(t, sub(pts[i + 1], pts[i]))) for i in range(len(pts) - 1)]
+    return pts[0]
+
+
+# ----------------------------------------------------------------------------------------------
+# one-parameter minimisation: dense sampling + golden section on every sampled local minimum
+# ----------------------------------------------------------------------------------------------
+def _golden(f: Callable, a, b, tol):
+    c = b - _INVPHI * (b - a)
+    d = a + _INVPHI * (b - a)
+    fc, fd = f(c), f(d)
+    while b - a > tol:
+        if fc <= fd:
+            b, d, fd = d, c, fc
+            c = b - _INVPHI * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + _INVPHI * (b - a)
+            fd = f(d)
+    return (fc, c) if fc <= fd else (fd, d)
+
+
+@dataclass
+class LocalMin:
+    value: object   # refined distance
+    x: object       # parameter (angle or t)
+    rise: object    # how much the sampled neighbours exceed the sampled minimum (flatness)
+
+
+def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool) -> List[LocalMin]:
+    """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first."""
+    lo, hi = to_mp(lo), to_mp(hi)
+    h = (hi - lo) / intervals
+    n = intervals if periodic else intervals + 1
+    xs = [lo + i * h for i in range(n)]
+    if not periodic:
+        xs[-1] = hi
+    fs = [f(x) for x in xs]
+    cand = []
+    for i in range(n):
+        nb = []
+        if periodic:
+            nb = [fs[(i - 1) % n], fs[(i + 1) % n]]
+        else:
+            if i > 0:
+                nb.append(fs[i - 1])
+            if i < n - 1:
+                nb.append(fs[i + 1])
+        if all(fs[i] <= v for v in nb):
+            cand.append((fs[i], i, min(nb) - fs[i]))
+    cand.sort(key=lambda c: c[0])
+    out = []
+    for fi, i, rise in cand[:MAX_REFINED]:
+        if periodic:
+            a, b = xs[i] - h, xs[i] + h
+        else:
+            a = xs[i - 1] if i > 0 else xs[i]
+            b = xs[i + 1] if i < n - 1 else xs[i]
+        v, x = _golden(f, a, b, PARAM_TOL)
+        if fi <= v:  # the sample itself (e.g. an end point) may be the best point seen
+            v, x = fi, xs[i]
+        out.append(LocalMin(v, x, rise))
+    out.sort(key=lambda m: m.value)
+    return out
+
+
+# ----------------------------------------------------------------------------------------------
+# a moving point (circle rim or Bezier curve) measured against a fixed circle or disk
+# ----------------------------------------------------------------------------------------------
+class _Against:
+    """Distance from the affine combination sum_j coef_j * W_j (+ target centre) to a round target.
+
+    W_j are vectors relative to the target's centre; their axial parts z_j = N.W_j and in-plane
+    parts a_j = W_j - z_j N are precomputed, so the closed form needs few operations per point.
+    """
+
+    def __init__(self, rel_vectors: Sequence[Vec], target: Round, disk: bool):
+        self.target = target
+        self.disk = disk
+        self.z = [dot(target.n, w) for w in rel_vectors]
+        self.a = [sub(w, scale(zj, target.n)) for w, zj in zip(rel_vectors, self.z)]
+
+    def __call__(self, coefs):
+        z = mpf(0)
+        ax = ay = az = mpf(0)
+        for c, zj, aj in zip(coefs, self.z, self.a):
+            z += c * zj
+            ax += c * aj[0]
+            ay += c * aj[1]
+            az += c * aj[2]
+        rho = ctx.sqrt(ax * ax + ay * ay + az * az)
+        r = self.target.radius
+        if self.disk and rho <= r:
+            return abs(z)
+        return ctx.sqrt(z * z + (rho - r) ** 2)
+
+
+@dataclass
+class Pair:
+    value: object
+    pa: Vec
+    pb: Vec
+    rise: object
+    degenerate: bool  # the closest point on the other shape is not unique (point on an axis)
+
+
+@dataclass
+class Reference:
+    distance: object
+    pairs: List[Pair] = field(default_factory=list)
+    scale: float = 1.0                 # largest radius in the query
+    intersect: Optional[bool] = None   # disk-disk only
+    overlap: object = None             # disk-disk only: length of the common chord (or None)
+    coplanar_overlap: bool = False     # disk-disk only: same plane, centres closer than rA+rB
+
+    def __float__(self):
+        return float(self.distance)
+
+
+def _rim_minima(a: Round, target: Round, disk: bool) -> List[LocalMin]:
+    rel = [sub(a.center, target.center), scale(a.radius, a.u), scale(a.radius, a.v)]
+    g = _Against(rel, target, disk)
+
+    def f(theta):
+        c, s = ctx.cos_sin(theta)
+        return g((1, c, s))
+
+    return minimize_1d(f, 0, _TWO_PI, CIRCLE_SAMPLES, periodic=True)
+
+
+def _pairs_from_rim(a: Round, target: Round, disk: bool, swap: bool) -> List[Pair]:
+    out = []
+    for m in _rim_minima(a, target, disk):
+        p = a.rim_point(m.x)
+        if disk:
+            _, q = point_disk(p, target)
+            deg = False
+        else:
+            _, q, _ = point_circle(p, target)
+            _, a_vec = _local(p, target)
+            deg = norm(a_vec) <= mpf("1e-9") * max(target.radius, a.radius)
+        out.append(Pair(m.value, q if swap else p, p if swap else q, m.rise, deg))
+    return out
+
+
+def _scale_of(*radii) -> float:
+    return float(max(abs(to_mp(r)) for r in radii))
+
+
+def circle_circle(ca, na, ra, cb, nb, rb, formulations: str = "ab") -> Reference:
+    """Circle-circle: min over the angle of one circle of the point-circle distance to the other.
+
+    formulations "a": parametrise circle A; "b": parametrise circle B; "ab": both, keep the lower
+    (each is complete on its own; both together make near-degenerate cases robust, e.g. a huge
+    circle against a tiny one)."""
+    A, B = make_round(ca, na, ra), make_round(cb, nb, rb)
+    pairs: List[Pair] = []
+    if "a" in formulations:
+        pairs += _pairs_from_rim(A, B, disk=False, swap=False)
+    if "b" in formulations:
+        pairs += _pairs_from_rim(B, A, disk=False, swap=True)
+    pairs.sort(key=lambda p: p.value)
+    return Reference(pairs[0].value, pairs, _scale_of(ra, rb))
+
+
+def circle_disk(ca, na, ra, cb, nb, rb) -> Reference:
+    """Circle A against disk B: min over A's angle of the closed-form point-disk distance."""
+    A, B = make_round(ca, na, ra), make_round(cb, nb, rb)
+    pairs = _pairs_from_rim(A, B, disk=True, swap=False)
+    return Reference(pairs[0].value, pairs, _scale_of(ra, rb))
+
+
+def disks_intersect(ca, na, ra, cb, nb, rb):
+    """Decide whether two disks share a point; returns (intersect, overlap_length, coplanar).
+
+    Proof.  A disk D with centre C, unit normal N, radius R is D = {x in plane P : |x - C| <= R},
+    a convex set of its plane P.  A common point of disks A and B lies in both planes.
+      * Planes not parallel (NA x NB != 0): PA and PB meet in the line L = {X0 + s M}, M = NA x NB.
+        Since L lies in PA, A cap L = {x in L : |x - CA| <= RA} is the chord [sA-, sA+] (empty when
+        the distance hA from CA to L exceeds RA), likewise B cap L.  A cap B = (A cap L) cap
+        (B cap L), so the disks meet iff the two chords overlap.
+      * Parallel, distinct planes: no common point.
+      * Same plane: if |CA - CB| <= RA + RB the point CA + RA (CB - CA)/|CB - CA| (or CA if the
+        centres coincide) is within RA of CA and, by the triangle inequality, within RB of CB, so it
+        is common; if |CA - CB| > RA + RB no point x can have |x - CA| <= RA and |x - CB| <= RB.
+    Parallelism and coplanarity are decided exactly in rational arithmetic on the float inputs;
+    the chord computation is done at 50 digits (ambiguous only within ~1e-45 of tangency, where
+    the distance is that small anyway).
+    """
+    fa = [Fraction(float(x)) for x in na]
+    fb = [Fraction(float(x)) for x in nb]
+    m_exact = (fa[1] * fb[2] - fa[2] * fb[1], fa[2] * fb[0] - fa[0] * fb[2], fa[0] * fb[1] - fa[1] * fb[0])
+    if all(c == 0 for c in m_exact):
+        dcen = [Fraction(float(y)) - Fraction(float(x)) for x, y in zip(ca, cb)]
+        height = sum(n * d for n, d in zip(fa, dcen))
+        if height != 0:
+            return False, None, False
+        sumr = Fraction(float(ra)) + Fraction(float(rb))
+        d2 = sum(d * d for d in dcen)
+        return d2 <= sumr * sumr, None, d2 < sumr * sumr
+    A, B = make_round(ca, na, ra), make_round(cb, nb, rb)
+    m = cross(A.n, B.n)
+    mm = dot(m, m)
+    dA, dB = dot(A.n, A.center), dot(B.n, B.center)
+    x0 = scale(1 / mm, add(scale(dA, cross(B.n, m)), scale(dB, cross(m, A.n))))
+    chords = []
+    for D in (A, B):
+        rel = sub(D.center, x0)
+        sc = dot(m, rel) / mm
+        perp = sub(rel, scale(sc, m))
+        h2 = dot(perp, perp)
+        r2 = D.radius ** 2
+        if h2 > r2:
+            return False, None, False
+        half = ctx.sqrt(r2 - h2) / ctx.sqrt(mm)
+        chords.append((sc - half, sc + half))
+    lo = max(chords[0][0], chords[1][0])
+    hi = min(chords[0][1], chords[1][1])
+    if lo > hi:
+        return False, None, False
+    return True, (hi - lo) * ctx.sqrt(mm), False
+
+
+def disk_disk_rims(ca, na, ra, cb, nb, rb) -> List[Pair]:
+    """min(rim(A)-disk(B), rim(B)-disk(A)) as sorted pairs (valid also when the disks meet)."""
+    A, B = make_round(ca, na, ra), make_round(cb, nb, rb)
+    pairs = _pairs_from_rim(A, B, disk=True, swap=False) + _pairs_from_rim(B, A, disk=True, swap=True)
+    pairs.sort(key=lambda p: p.value)
+    return pairs
+
+
+def disk_disk(ca, na, ra, cb, nb, rb) -> Reference:
+    """Disk-disk distance: 0 when they meet (see disks_intersect), else the rim formula.
+
+    Why the rim formula is complete for disjoint disks: let (p, q) be a closest pair, p in A, q in
+    B, p != q.  If p is in the relative interior of A, first-order optimality of p for |x - q| over
+    A's plane forces q - p to be parallel to NA; likewise q interior to B forces q - p parallel to
+    NB.  If both were interior and the normals not parallel, q - p = 0: contradiction.  If the
+    normals are parallel, q - p is the plane separation; translating p and q by the same in-plane
+    vector keeps |p - q| (the lower bound) until one of them reaches its rim.  So some closest
+    pair has p on rim(A) or q on rim(B), i.e. the distance is min over rim(A) of point-disk(B) and
+    over rim(B) of point-disk(A), both closed forms minimised over one angle.
+    """
+    inter, overlap, coplanar = disks_intersect(ca, na, ra, cb, nb, rb)
+    scl = _scale_of(ra, rb)
+    if inter:
+        return Reference(mpf(0), [], scl, True, overlap, coplanar)
+    pairs = disk_disk_rims(ca, na, ra, cb, nb, rb)
+    return Reference(pairs[0].value, pairs, scl, False, None, False)
+
+
+def _curve_minima(ctrl, target: Round, disk: bool) -> List[LocalMin]:
+    pts = [vec(p) for p in ctrl]
+    k = len(pts) - 1
+    rel = [sub(p, target.center) for p in pts]
+    g = _Against(rel, target, disk)
+    return minimize_1d(lambda t: g(bernstein(k, t)), 0, 1, CURVE_SAMPLES, periodic=False)
+
+
+def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:
+    T = make_round(center, normal, radius)
+    pairs = []
+    for m in _curve_minima(ctrl, T, disk):
+        p = bezier_point(ctrl, m.x)
+        if disk:
+            _, q = point_disk(p, T)
+            deg = False
+        else:
+            _, q, _ = point_circle(p, T)
+            _, a_vec = _local(p, T)
+            deg = norm(a_vec) <= mpf("1e-9") * T.radius
+        pairs.append(Pair(m.value, p, q, m.rise, deg))
+    return Reference(pairs[0].value, pairs, _scale_of(radius))
+
+
+def bezier_disk(ctrl, center, normal, radius) -> Reference:
+    """Bezier B(t), t in [0, 1], against a disk: min over t of the point-disk closed form."""
+    return _bezier_round(ctrl, center, normal, radius, disk=True)
+
+
+def bezier_circle(ctrl, center, normal, radius) -> Reference:
+    """Bezier B(t), t in [0, 1], against a circle: min over t of the point-circle closed form."""
+    return _bezier_round(ctrl, center, normal, radius, disk=False)
+
+
+# ----------------------------------------------------------------------------------------------
+# alternative computations, used only to validate the references above
+# ----------------------------------------------------------------------------------------------
+def segment_circle_alt(p0, p1, center, normal, radius):
+    """Segment-circle by the other parametrisation: min over the circle's angle of the
+    closed-form point-segment distance."""
+    C = make_round(center, normal, radius)
+    q0, q1 = vec(p0), vec(p1)
+    ms = minimize_1d(lambda th: point_segment(C.rim_point(th), q0, q1), 0, _TWO_PI,
+                     CIRCLE_SAMPLES, periodic=True)
+    return ms[0].value
+
+
+def segment_disk_alt(p0, p1, center, normal, radius):
+    """Segment-disk without parametrising the segment.
+
+    For a closest pair (p, q): either q is on the rim (min over the rim angle of point-segment),
+    or q is interior, then p - q is parallel to N and p minimises |z| over the part of the segment
+    whose projection is inside the disk: p is an end point there, or the segment crosses the plane
+    inside the disk (distance 0), or the segment is parallel to the plane (constant |z|, and the
+    pair can slide to an end point or to the rim)."""
+    D = make_round(center, normal, radius)
+    q0, q1 = vec(p0), vec(p1)
+    best = minimize_1d(lambda th: point_segment(D.rim_point(th), q0, q1), 0, _TWO_PI,
+                       CIRCLE_SAMPLES, periodic=True)[0].value
+    for p in (q0, q1):
+        z, a = _local(p, D)
+        if norm(a) <= D.radius:
+            best = min(best, abs(z))
+    z0, _ = _local(q0, D)
+    z1, _ = _local(q1, D)
+    if (z0 <= 0 <= z1 or z1 <= 0 <= z0) and z0 != z1:
+        t = z0 / (z0 - z1)
+        x = add(q0, scale(t, sub(q1, q0)))
+        _, a = _local(x, D)
+        if norm(a) <= D.radius:
+            best = mpf(0)
+    return best
+
+
+def expected_unique(ref: Reference, rel: float = 1e-6) -> Optional[bool]:
+    """True when the reference shows one clearly isolated closest pair, None when undecided.
+
+    Conditions: the best pair's other point is unique (not on an axis), the distance rises
+    around it by more than 1e-9 * scale between samples, and no other local minimum within
+    rel * scale of the distance belongs to a different pair."""
+    s = mpf(ref.scale)
+    if ref.intersect:
+        return None
+    if not ref.pairs:
+        return None
+    best = ref.pairs[0]
+    if best.degenerate or best.rise <= mpf("1e-9") * s:
+        return None
+    for p in ref.pairs[1:]:
+        if p.value <= best.value + rel * s:
+            if dist(p.pa, best.pa) + dist(p.pb, best.pb) > rel * s:
+                return None
+            if p.degenerate:
+                return None
+    return True

@@ -1,0 +1,257 @@
+"""Test scenes shared by the accuracy and validation tests.
+
+A *case* is a pair (linear shape, round shape) given as exact binary64 tuples:
+    lin_data   point (x,y,z) | line/ray (origin, direction) | segment (p0, p1)
+    round_data (cx, cy, cz, nx, ny, nz, R)
+
+Hard scenes are written in a local frame where the circle/disk has centre 0,
+normal +z and radius 1.  They are then placed in the world with an orientation
+('z': unchanged, so the special geometry is exact in binary64; 'tilt': a fixed
+generic rotation, so every coordinate is a rounded float) and a translation
+(0, 1e6, 1e8 times a fixed unit-ish vector added to every POSITION; directions
+are not translated).  The references are always computed from the final floats.
+"""
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+# ----------------------------------------------------------------------------
+# hard scenes in the local frame (C = 0, N = +z, R = 1)
+# ----------------------------------------------------------------------------
+LINE_SCENES = {
+    "tangent_in_plane": ((1, 0, 0), (0, 1, 0)),
+    "parallel_tangent_h1e-3": ((1, 0, 1e-3), (0, 1, 0)),
+    "parallel_tangent_h1e-6": ((1, 0, 1e-6), (0, 1, 0)),
+    "parallel_tangent_h1e-9": ((1, 0, 1e-9), (0, 1, 0)),
+    "along_axis": ((0, 0, 0.5), (0, 0, 1)),
+    "parallel_axis_off1e-8": ((1e-8, 0, 0.5), (0, 0, 1)),
+    "parallel_axis_off1e-12": ((1e-12, 0, 0.5), (0, 0, 1)),
+    "center_tilt1e-8": ((0, 0, 0), (math.sin(1e-8), 0, math.cos(1e-8))),
+    "center_tilt1e-12": ((0, 0, 0), (math.sin(1e-12), 0, math.cos(1e-12))),
+    "in_plane_through_center": ((0, 0, 0), (1, 0.3, 0)),
+    "near_parallel_1e-9_h1e-9": ((0, 0.5, 1e-9), (1, 0, math.tan(1e-9))),
+    "near_parallel_1e-9_h1e-3": ((0, 0.5, 1e-3), (1, 0, math.tan(1e-9))),
+    "near_parallel_1e-9_h0.5": ((0, 0.5, 0.5), (1, 0, math.tan(1e-9))),
+    "near_parallel_1e-9_tangent_h1e-6": ((0, 1, 1e-6), (1, 0, math.tan(1e-9))),
+    "crosses_rim": ((1, 0, 0), (0.375, 0.5, 0.75)),
+    "parallel_over_interior_h0.25": ((0, 0.5, 0.25), (1, 0, 0)),
+    "generic_far": ((2.5, -1, 1.25), (0.3, 0.8, -0.5)),
+    "in_plane_outside": ((0, 2, 0), (1, 0.2, 0)),
+}
+
+RAY_SCENES = {
+    "starts_above_interior_away": ((0.25, 0.125, 0.5), (0.1, 0.2, 1)),
+    "starts_above_interior_toward": ((0.25, 0.125, 0.5), (0.1, 0.2, -1)),
+    "starts_on_rim_outward": ((1, 0, 0), (1, 0, 0.5)),
+    "starts_on_rim_up": ((1, 0, 0), (0, 0, 1)),
+    "parallel_over_interior_from_center": ((0, 0, 0.3), (1, 0.2, 0)),
+    "axis_up": ((0, 0, 0.4), (0, 0, 1)),
+    "tangent_in_plane_start_before": ((1, -1, 0), (0, 1, 0)),
+    "tangent_in_plane_start_after": ((1, 0.5, 0), (0, 1, 0)),
+}
+
+SEGMENT_SCENES = {
+    "crosses_disk_at_rim": ((0.75, -0.25, -0.5), (1.25, 0.25, 0.5)),
+    "ends_on_rim": ((1, 0, 0), (1.5, 0.25, 0.75)),
+    "ends_on_rim_in_plane_inward": ((1, 0, 0), (0.5, 0.25, 0)),
+    "above_parallel_inside": ((-0.25, 0.125, 0.25), (0.5, -0.25, 0.25)),
+    "above_parallel_partial": ((0.5, 0, 0.25), (1.5, 0.25, 0.25)),
+    "in_plane_inside": ((-0.25, 0.125, 0), (0.5, -0.25, 0)),
+    "zero_length_generic": ((0.5, 0.25, 0.75), (0.5, 0.25, 0.75)),
+    "zero_length_on_axis": ((0, 0, 0.75), (0, 0, 0.75)),
+    "zero_length_on_rim": ((1, 0, 0), (1, 0, 0)),
+    "generic_crossing": ((0.2, 0.1, -0.5), (-0.1, 0.3, 0.6)),
+    "near_parallel_1e-9": ((-2, 0.5, 1e-9), (2, 0.5, 1e-9 + 4 * math.tan(1e-9))),
+    "along_axis_through_center": ((0, 0, -0.5), (0, 0, 0.75)),
+}
+
+POINT_SCENES = {
+    "on_axis": (0, 0, 0.75),
+    "at_center": (0, 0, 0),
+    "on_rim": (1, 0, 0),
+    "near_axis_1e-12": (1e-12, 0, 0.5),
+    "in_plane_inside": (0.5, 0.25, 0),
+    "in_plane_outside": (2, 0.5, 0),
+    "above_interior": (0.25, 0.5, 0.5),
+    "above_rim": (1, 0, 0.5),
+    "generic": (1.5, -0.5, 0.75),
+    "far": (30, 20, -10),
+}
+
+
+def _ray_scenes():
+    out = {k: v for k, v in RAY_SCENES.items()}
+    for name, (o, d) in LINE_SCENES.items():
+        o, d = np.array(o, float), np.array(d, float)
+        out["from_line_" + name] = (tuple(o - 2 * d), tuple(d))
+    return out
+
+
+def _segment_scenes():
+    out = {k: v for k, v in SEGMENT_SCENES.items()}
+    for name, (o, d) in LINE_SCENES.items():
+        o, d = np.array(o, float), np.array(d, float)
+        out["from_line_" + name] = (tuple(o - 2 * d), tuple(o + 2 * d))
+    return out
+
+
+def local_scenes(lin_kind):
+    """{name: local description} for one linear kind."""
+    if lin_kind == "point":
+        return dict(POINT_SCENES)
+    if lin_kind == "line":
+        return dict(LINE_SCENES)
+    if lin_kind == "ray":
+        return _ray_scenes()
+    return _segment_scenes()
+
+
+# scenes re-used with extreme radii
+RADIUS_SCENES = {
+    "point": ["on_axis", "above_interior", "generic", "on_rim"],
+    "line": ["tangent_in_plane", "parallel_tangent_h1e-6", "along_axis", "crosses_rim",
+             "generic_far", "parallel_over_interior_h0.25"],
+    "ray": ["starts_above_interior_away", "starts_on_rim_outward", "from_line_tangent_in_plane"],
+    "segment": ["ends_on_rim", "above_parallel_partial", "zero_length_generic",
+                "crosses_disk_at_rim"],
+}
+RADIUS_VARIANTS = {
+    # name: (scene scale s, radius)
+    "R1e-9_scaled": (1e-9, 1e-9),
+    "R1e9_scaled": (1e9, 1e9),
+    "R1e-9_unscaled": (1.0, 1e-9),
+    "R1e9_unscaled": (1.0, 1e9),
+    "R0": (1.0, 0.0),
+}
+
+
+def _rotation():
+    axis = np.array([1.0, 2.0, 3.0])
+    axis /= np.linalg.norm(axis)
+    ang = 0.7
+    K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + math.sin(ang) * K + (1 - math.cos(ang)) * K @ K
+
+
+ORIENTATIONS = {"z": np.eye(3), "tilt": _rotation()}
+OFFSET_DIR = np.array([1.0, -0.7, 0.4])
+OFFSETS = {"off0": 0.0, "off1e6": 1e6, "off1e8": 1e8}
+
+
+@dataclass(frozen=True)
+class Case:
+    id: str
+    lin_kind: str
+    lin_data: tuple
+    round_kind: str
+    round_data: tuple
+    random: bool = False
+    local_name: str = ""
+    orientation: str = "z"
+    offset: float = 0.0
+
+
+def _f(xs):
+    return tuple(float(x) for x in xs)
+
+
+def place(lin_kind, local, round_kind, orient, offset, s=1.0, radius=1.0):
+    """World-space (lin_data, round_data) for a local scene."""
+    Q = ORIENTATIONS[orient]
+    T = offset * OFFSET_DIR
+
+    def pos(p):
+        return Q @ (s * np.asarray(p, float)) + T
+
+    def dirv(d):
+        return Q @ np.asarray(d, float)
+
+    if lin_kind == "point":
+        lin = _f(pos(local))
+    elif lin_kind in ("line", "ray"):
+        lin = _f(pos(local[0])) + _f(dirv(local[1]))
+    else:
+        lin = _f(pos(local[0])) + _f(pos(local[1]))
+    rnd = _f(pos((0, 0, 0))) + _f(dirv((0, 0, 1))) + (float(radius),)
+    return lin, rnd
+
+
+def hard_cases(lin_kind, round_kind):
+    out = []
+    scenes = local_scenes(lin_kind)
+    for name, local in scenes.items():
+        for orient in ORIENTATIONS:
+            for oname, off in OFFSETS.items():
+                lin, rnd = place(lin_kind, local, round_kind, orient, off)
+                out.append(Case(f"{lin_kind}-{round_kind}-{name}-{orient}-{oname}", lin_kind, lin,
+                                round_kind, rnd, False, name, orient, off))
+    for name in RADIUS_SCENES[lin_kind]:
+        local = scenes[name]
+        for vname, (s, radius) in RADIUS_VARIANTS.items():
+            for orient in ORIENTATIONS:
+                lin, rnd = place(lin_kind, local, round_kind, orient, 0.0, s, radius)
+                out.append(Case(f"{lin_kind}-{round_kind}-{name}-{vname}-{orient}", lin_kind, lin,
+                                round_kind, rnd, False, name, orient, 0.0))
+    return out
+
+
+def random_cases(lin_kind, round_kind, n=40, seed=None):
+    if seed is None:
+        seed = 1000 + 10 * ["point", "line", "ray", "segment"].index(lin_kind) + \
+            ["circle", "disk"].index(round_kind)
+    rng = np.random.default_rng(seed)
+    out = []
+    for i in range(n):
+        c = rng.normal(size=3)
+        nrm = rng.normal(size=3)
+        R = rng.uniform(0.1, 3.0)
+        rnd = _f(c) + _f(nrm) + (float(R),)
+        # place the linear shape around the round one so that all regimes occur
+        if lin_kind == "point":
+            lin = _f(c + rng.normal(scale=1.5, size=3))
+        elif lin_kind in ("line", "ray"):
+            lin = _f(c + rng.normal(scale=1.5, size=3)) + _f(rng.normal(size=3))
+        else:
+            p0 = c + rng.normal(scale=1.5, size=3)
+            lin = _f(p0) + _f(p0 + rng.normal(scale=1.5, size=3))
+        out.append(Case(f"{lin_kind}-{round_kind}-random{i:02d}", lin_kind, lin, round_kind, rnd,
+                        True))
+    return out
+
+
+KIND_PAIRS = [(lk, rk) for rk in ("circle", "disk") for lk in ("point", "line", "ray", "segment")]
+
+
+def all_cases():
+    out = []
+    for lk, rk in KIND_PAIRS:
+        out.extend(random_cases(lk, rk))
+        out.extend(hard_cases(lk, rk))
+    return out
+
+
+# ----------------------------------------------------------------------------
+# library shape construction
+# ----------------------------------------------------------------------------
+def make_lin(cd, kind, data):
+    data = np.asarray(data, float)
+    if kind == "point":
+        return data[:3].copy()
+    if kind == "line":
+        return cd.Line(data[:3], data[3:6])
+    if kind == "ray":
+        return cd.Ray(data[:3], data[3:6])
+    return cd.Segment(data[:3], data[3:6])
+
+
+def make_round(cd, kind, data):
+    data = np.asarray(data, float)
+    ctor = cd.Circle if kind == "circle" else cd.Disk
+    return ctor(data[:3], data[3:6], float(data[6]))
+
+
+def scene_scale(case):
+    """Largest radius in the query."""
+    return float(case.round_data[6])

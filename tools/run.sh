@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# circledist's one entry point for people and CI:
+#   bash tools/run.sh demo   install what is missing, build the package, run the demo
+#   bash tools/run.sh test   install what is missing, build the package, run pytest and the C++ tests (ctest)
+#   bash tools/run.sh bench  install what is missing, build, run the benchmarks
+# Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
+# from apt when missing; Python packages go into ./.venv (which sees the system's site-packages).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+task="${1:-test}"
+
+python=${PYTHON:-python3}
+missing=()
+[ -f /usr/include/eigen3/Eigen/Core ] || missing+=(libeigen3-dev)
+command -v g++ >/dev/null 2>&1 || missing+=(g++)
+"$python" -c "import ensurepip" >/dev/null 2>&1 || missing+=(python3-venv)
+"$python" -c "import os, sysconfig; assert os.path.exists(os.path.join(sysconfig.get_paths()['include'], 'Python.h'))" \
+  >/dev/null 2>&1 || missing+=(python3-dev)
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "== installing from Debian: ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+if [ ! -x .venv/bin/python ]; then
+  echo "== creating .venv"
+  "$python" -m venv --system-site-packages .venv
+fi
+py=.venv/bin/python
+export PATH="$PWD/.venv/bin:$PATH"
+
+pip_install() { "$py" -m pip install -q --disable-pip-version-check "$@"; }
+have() { "$py" -c "import $1" >/dev/null 2>&1; }
+need=()
+for req in numpy:numpy pybind11:pybind11 scikit_build_core:scikit-build-core cmake:cmake ninja:ninja; do
+  have "${req%%:*}" || need+=("${req#*:}")
+done
+case "$task" in
+  test) for req in pytest:pytest hypothesis:hypothesis mpmath:mpmath; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
+  bench) for req in mpmath:mpmath matplotlib:matplotlib distance3d:distance3d; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
+esac
+[ ${#need[@]} -eq 0 ] || { echo "== installing from PyPI: ${need[*]}"; pip_install "${need[@]}"; }
+
+echo "== building the circledist package"
+pip_install --no-build-isolation .
+
+cpp_build() {
+  cmake -S . -B build/cpp -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON >/dev/null
+  cmake --build build/cpp -j 2
+}
+
+case "$task" in
+  demo)
+    "$py" examples/demo.py
+    ;;
+  test)
+    echo "== pytest"
+    status=0
+    "$py" -m pytest -q -p no:cacheprovider || status=$?
+    echo "== C++ tests (ctest)"
+    cpp_build
+    ctest --test-dir build/cpp --output-on-failure || status=1
+    exit $status
+    ;;
+  bench)
+    cpp_build
+    "$py" bench/bench_queries.py
+    ;;
+  *)
+    echo "usage: bash tools/run.sh demo|test|bench" >&2
+    exit 2
+    ;;
+esac
