@@ -313,7 +313,7 @@ class Pair:
     degenerate: bool  # the closest point on the other shape is not unique (point on an axis)
 
 
-@dataclass
+@dataclass(repr=False)
 class Reference:
     distance: object
     pairs: List[Pair] = field(default_factory=list)
@@ -324,6 +324,10 @@ class Reference:
 
     def __float__(self):
         return float(self.distance)
+
+    def __repr__(self):  # short: pytest --showlocals prints it on failures
+        return (f"Reference(distance={ctx.nstr(self.distance, 20)}, pairs={len(self.pairs)}, "
+                f"scale={self.scale}, intersect={self.intersect})")
 
 
 def _rim_minima(a: Round, target: Round, disk: bool) -> List[LocalMin]:
@@ -540,6 +544,9 @@ def expected_unique(ref: Reference, rel: float = 1e-6) -> Optional[bool]:
     rel * scale of the distance belongs to a different pair."""
     s = mpf(ref.scale)
     if ref.intersect:
+        # a common chord of positive length, or two overlapping disks of one plane: a continuum
+        if ref.coplanar_overlap or (ref.overlap is not None and ref.overlap > mpf("1e-9") * s):
+            return False
         return None
     if not ref.pairs:
         return None

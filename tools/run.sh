@@ -46,8 +46,8 @@ esac
 echo "== building the circledist package"
 pip_install --no-build-isolation .
 
-cpp_build() {
-  cmake -S . -B build/cpp -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON >/dev/null
+cpp_build() {  # cpp_build [extra cmake definitions]
+  cmake -S . -B build/cpp -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON "$@" >/dev/null
   cmake --build build/cpp -j 2
 }
 
@@ -65,7 +65,7 @@ case "$task" in
     exit $status
     ;;
   bench)
-    cpp_build
+    cpp_build -DCIRCLEDIST_BUILD_BENCH=ON
     "$py" bench/bench_queries.py
     ;;
   *)

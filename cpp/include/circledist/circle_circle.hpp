@@ -1,0 +1,290 @@
+// Circle against circle (derivation in docs/circle_circle.md), and the machinery every query
+// that parametrizes a circle by its angle shares (circle_disk.hpp, disk_disk.hpp):
+//   - trigonometric polynomials and the tangent half-angle substitution u = tan(t/2), which turns
+//     a trigonometric polynomial of degree K into an ordinary polynomial of degree 2K;
+//   - the circle A seen from the local frame of a round B, P(t) = O + E1 cos t + E2 sin t;
+//   - the octic whose roots are the stationary points of the distance from P(t) to B's ring
+//     (note 001 eq. (2) with the simplification of eq. (3));
+//   - polishing of angle candidates on the exact distance, and the Result with its `unique` flag.
+#pragma once
+
+#include "minimize.hpp"
+#include "planar.hpp"
+#include "query.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace circledist {
+
+template <class Real> constexpr Real pi_v() {
+  return Real(3.141592653589793238462643383279502884197169399375105820974944592307816406L);
+}
+
+// f(t) = c[0] + sum_{k=1..K} (c[k] cos kt + s[k] sin kt). s[0] is always 0.
+template <class Real, int K> struct Trig {
+  std::array<Real, K + 1> c{}, s{};
+
+  Trig derivative() const {
+    Trig d;
+    for (int k = 1; k <= K; ++k) {
+      d.c[k] = k * s[k];
+      d.s[k] = -k * c[k];
+    }
+    return d;
+  }
+};
+
+// The product, by cos j cos k = (cos(j+k) + cos(j-k))/2 and the three similar identities.
+template <class Real, int J, int K> Trig<Real, J + K> operator*(const Trig<Real, J>& f, const Trig<Real, K>& g) {
+  Trig<Real, J + K> h;
+  for (int j = 0; j <= J; ++j) {
+    for (int k = 0; k <= K; ++k) {
+      const Real cc = f.c[j] * g.c[k], ss = f.s[j] * g.s[k], sc = f.s[j] * g.c[k], cs = f.c[j] * g.s[k];
+      const int sum = j + k, diff = j >= k ? j - k : k - j;
+      const Real sign = j >= k ? Real(1) : Real(-1);  // sin((j-k)t) = sign * sin(diff t)
+      h.c[sum] += (cc - ss) / 2;
+      h.c[diff] += (cc + ss) / 2;
+      h.s[sum] += (sc + cs) / 2;
+      h.s[diff] += sign * (sc - cs) / 2;
+    }
+  }
+  h.s[0] = 0;
+  return h;
+}
+
+template <class Real, int K> Trig<Real, K> operator+(Trig<Real, K> f, const Trig<Real, K>& g) {
+  for (int k = 0; k <= K; ++k) {
+    f.c[k] += g.c[k];
+    f.s[k] += g.s[k];
+  }
+  return f;
+}
+
+template <class Real, int K> Trig<Real, K> operator-(Trig<Real, K> f, const Trig<Real, K>& g) {
+  for (int k = 0; k <= K; ++k) {
+    f.c[k] -= g.c[k];
+    f.s[k] -= g.s[k];
+  }
+  return f;
+}
+
+template <class Real, int K> Trig<Real, K> operator*(Real a, Trig<Real, K> f) {
+  for (int k = 0; k <= K; ++k) {
+    f.c[k] *= a;
+    f.s[k] *= a;
+  }
+  return f;
+}
+
+// The tangent half-angle substitution: with u = tan(t/2), cos t = (1-u^2)/(1+u^2) and
+// sin t = 2u/(1+u^2), so p(u) = (1+u^2)^K f(t) is a polynomial of degree 2K (ascending
+// coefficients) whose real roots are exactly the roots t of f in (-pi, pi). Its leading
+// coefficient is f(pi): when t = pi is a root the degree drops, so t = pi is always a candidate.
+// Uses cos kt + i sin kt = ((1 + iu)^2 / (1+u^2))^k.
+template <class Real, int K> std::array<Real, 2 * K + 1> half_angle(const Trig<Real, K>& f) {
+  std::array<Real, 2 * K + 1> out{}, re{}, im{};
+  re[0] = 1;  // re + i im = (1 + iu)^(2k), degree 2k
+  for (int k = 0; k <= K; ++k) {
+    // (c_k re + s_k im) (1 + u^2)^(K-k), the binomials of (1+u^2)^m summed in place.
+    const int m = K - k;
+    Real binomial = 1;
+    for (int j = 0; j <= m; ++j) {
+      for (int i = 0; i <= 2 * k; ++i) out[i + 2 * j] += binomial * (f.c[k] * re[i] + f.s[k] * im[i]);
+      binomial = binomial * Real(m - j) / Real(j + 1);
+    }
+    if (k == K) break;
+    std::array<Real, 2 * K + 1> next_re{}, next_im{};  // times (1 + iu)^2 = (1 - u^2) + i 2u
+    for (int i = 0; i <= 2 * k; ++i) {
+      next_re[i] += re[i];
+      next_re[i + 2] -= re[i];
+      next_re[i + 1] -= 2 * im[i];
+      next_im[i] += im[i];
+      next_im[i + 2] -= im[i];
+      next_im[i + 1] += 2 * re[i];
+    }
+    re = next_re;
+    im = next_im;
+  }
+  return out;
+}
+
+// Appends the angles t = 2 atan(u) of the near-real roots u of the half-angle polynomial of f.
+template <class Roots, class Real, int K, int N> void push_trig_roots(const Trig<Real, K>& f, Candidates<Real, N>& out) {
+  static_assert(2 * K <= kMaxDegree, "circledist: trigonometric degree too high for the default root policy");
+  const std::array<Real, 2 * K + 1> p = half_angle(f);
+  Candidates<Real> roots;
+  Roots::roots(p.data(), 2 * K, roots);
+  for (int i = 0; i < roots.count; ++i) out.push(2 * std::atan(roots.value[i]));
+}
+
+// The angle in (-pi, pi], the range of atan2 that Round::ring_param uses too.
+template <class Real> Real wrap_angle(Real t) {
+  const Real pi = pi_v<Real>();
+  t = std::remainder(t, 2 * pi);
+  return t <= -pi ? t + 2 * pi : t;
+}
+
+// Circle A (radius rho, canonical frame {U_A, V_A, M}) in the local frame of round B:
+//   P(t) = O + E1 cos t + E2 sin t,  O = local(T), E1 = rho local(U_A), E2 = rho local(V_A),
+// t being A's canonical angle: the same t gives A's world point T + rho (cos t U_A + sin t V_A).
+template <class Real> struct LocalCircle {
+  Frame<Real> frame;  // A's own frame (for world points and parameters)
+  Vec3<Real> center, e1, e2;
+  Real radius;
+
+  LocalCircle(const Circle3<Real>& a, const Round<Real>& round) : frame(a.normal), radius(a.radius) {
+    center = round.local(a.center);
+    e1 = a.radius * round.frame.to_local(frame.u);
+    e2 = a.radius * round.frame.to_local(frame.v);
+  }
+
+  Vec3<Real> at(Real t) const { return center + std::cos(t) * e1 + std::sin(t) * e2; }
+
+  // One coordinate as a trigonometric polynomial of degree 1, in units of `scale`.
+  Trig<Real, 1> coordinate(int i, Real scale) const {
+    Trig<Real, 1> f;
+    f.c[0] = center[i] / scale;
+    f.c[1] = e1[i] / scale;
+    f.s[1] = e2[i] / scale;
+    return f;
+  }
+};
+
+// Length scale of a circle-vs-round query: tolerances and coefficients follow it.
+template <class Real> Real circle_round_scale(const LocalCircle<Real>& c, Real radius) {
+  const Real s = std::max(std::max(radius, c.radius), c.center.norm());
+  return s > 0 ? s : Real(1);
+}
+
+// The stationary points of the distance from P(t) to the ring of radius R (note 001 eq. (2)):
+//   P.P' sqrt(x^2 + y^2) = R (x x' + y y'),  squared:  (P.P')^2 (x^2 + y^2) - R^2 (x x' + y y')^2 = 0.
+// By eq. (3), P.P' = (O.E2) cos t - (O.E1) sin t: the second harmonic cancels because
+// |E1| = |E2| and E1.E2 = 0, so the left side has trigonometric degree 4, an octic in u.
+// x x' + y y' = G'/2 with G = x^2 + y^2. Coefficients in units of `scale` (all O(1)).
+template <class Roots, class Real, int N>
+void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
+  const Trig<Real, 1> x = c.coordinate(0, scale), y = c.coordinate(1, scale);
+  const Trig<Real, 2> g = x * x + y * y;
+  const Trig<Real, 2> h = Real(0.5) * g.derivative();
+  Trig<Real, 1> dot;  // P.P'
+  dot.c[1] = c.center.dot(c.e2) / (scale * scale);
+  dot.s[1] = -c.center.dot(c.e1) / (scale * scale);
+  const Real r = radius / scale;
+  const Trig<Real, 4> f = (dot * dot) * g - (r * r) * (h * h);
+  push_trig_roots<Roots>(f, out);
+}
+
+// Candidates every circle query shares: t = pi (the half-angle substitution's blind spot) and
+// t = 0, so that a circle whose every point is closest (coaxial circles, a circle in the disk)
+// always yields two distinct tied minima.
+template <class Real, int N> void push_circle_candidates(Candidates<Real, N>& out) {
+  out.push(Real(0));
+  out.push(pi_v<Real>());
+}
+
+// Polishing tolerances for an angle on a circle of radius rho in a scene of length `scale`.
+// The angle is polished as an offset from its start (see polish_angles), so Brent's relative
+// tolerance does not cap it; this absolute one keeps the arc-length step below about
+// 1e-4 sqrt(eps) scale, and never coarser than 1e-4 sqrt(eps) rad.
+template <class Real> Real angle_tolerance(Real rho, Real scale) {
+  const Real t = Real(1e-4) * std::sqrt(std::numeric_limits<Real>::epsilon());
+  return rho > scale ? t * scale / rho : t;
+}
+
+// Every candidate angle is moved to a local minimum of the exact distance h(t) (periodic: no
+// bounds). Each is polished as an offset d from its start, h(t0 + d), so the tolerance is
+// absolute in the angle wherever the start lies.
+template <class Real, int N, class H>
+Minima<Real, N> polish_angles(const H& h, const Candidates<Real, N>& starts, Real abs_tol) {
+  Minima<Real, N> out;
+  const Real inf = std::numeric_limits<Real>::infinity();
+  for (int i = 0; i < starts.count; ++i) {
+    const Real t0 = starts.value[i];
+    const auto f = [&](Real d) { return h(t0 + d); };
+    Minimum<Real> m = polish_minimum(f, Real(0), Real(1e-3), -inf, inf, abs_tol);
+    m.x = wrap_angle(t0 + m.x);
+    out.item[out.count++] = m;
+    if (m.value < out.best.value) out.best = m;
+  }
+  return out;
+}
+
+// Builds the Result for circle A against round B from the polished minima, as
+// linear_round_result does: `round_point(p, ambiguous)` maps a local point of A to its closest
+// local point of B. Distinct tied pairs make `unique` false. Points on A are told apart at A's
+// own size (a tiny circle coaxial with a big one is still a continuum), points on B at the
+// scene's scale.
+template <class Real, int N, class RoundPoint, class RoundParam>
+Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>& c, const Round<Real>& round,
+                                 const Minima<Real, N>& minima, Real scale, const RoundPoint& round_point,
+                                 const RoundParam& round_param) {
+  Result<Real> r;
+  const Minimum<Real>& best = minima.best;
+  bool ambiguous = false;
+  const Vec3<Real> pa = c.at(best.x);
+  const Vec3<Real> pb = round_point(pa, ambiguous);
+  const Real tie = tie_tolerance(std::max(scale, best.value));
+  const Real apart_a = distinct_points_tolerance(std::min(scale, c.radius));
+  const Real apart_b = distinct_points_tolerance(scale);
+  for (int i = 0; i < minima.count && !ambiguous; ++i) {
+    const Minimum<Real>& m = minima.item[i];
+    if (!(m.value <= best.value + tie)) continue;
+    bool unused = false;
+    const Vec3<Real> qa = c.at(m.x);
+    const Vec3<Real> qb = round_point(qa, unused);
+    if ((qa - pa).norm() > apart_a || (qb - pb).norm() > apart_b) ambiguous = true;
+  }
+  r.distance = best.value;
+  r.point_a = a.center + c.radius * (std::cos(best.x) * c.frame.u + std::sin(best.x) * c.frame.v);
+  r.point_b = round.world(pb);
+  r.param_a = Vec2<Real>(best.x, 0);
+  r.param_b = round_param(pb);
+  r.unique = !ambiguous;
+  return r;
+}
+
+// Circle-circle: the smaller circle is parametrized (its angle features are then never narrower
+// than the other's), its candidates are the octic's roots plus t = 0 and t = pi; the exact
+// point-circle distance judges them.
+template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
+  static constexpr bool defined = true;
+  using Starts = Candidates<Real, kMaxDegree + 8>;
+
+  template <class Roots> static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale) {
+    Starts starts;
+    push_circle_candidates(starts);
+    push_circle_ring_roots<Roots>(c, radius, scale, starts);
+    const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
+    return polish_angles(h, starts, angle_tolerance(c.radius, scale));
+  }
+
+  // a is parametrized, b is the ring.
+  template <class Roots> static Real distance_ordered(const Circle3<Real>& a, const Circle3<Real>& b) {
+    const Round<Real> round(b.center, b.normal, b.radius);
+    const LocalCircle<Real> c(a, round);
+    return solve<Roots>(c, b.radius, circle_round_scale(c, b.radius)).best.value;
+  }
+
+  template <class Roots> static Result<Real> closest_ordered(const Circle3<Real>& a, const Circle3<Real>& b) {
+    const Round<Real> round(b.center, b.normal, b.radius);
+    const LocalCircle<Real> c(a, round);
+    const Real scale = circle_round_scale(c, b.radius);
+    const auto minima = solve<Roots>(c, b.radius, scale);
+    return circle_round_result(
+        a, c, round, minima, scale,
+        [&](const Vec3<Real>& p, bool& ambiguous) { return round.ring_point(p, scale, ambiguous); },
+        &Round<Real>::ring_param);
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& a, const Circle3<Real>& b) {
+    return b.radius < a.radius ? distance_ordered<Roots>(b, a) : distance_ordered<Roots>(a, b);
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Circle3<Real>& b) {
+    return b.radius < a.radius ? closest_ordered<Roots>(b, a).swapped() : closest_ordered<Roots>(a, b);
+  }
+};
+
+}  // namespace circledist
