@@ -1,7 +1,7 @@
 """Independent 50-digit references for circledist.
 
 Nothing in this module shares an algorithm with the library under test.  The
-library (see the notes in /work/shared/seeds) reduces line/circle problems to
+notes the library implements (/work/shared/seeds) reduce line/circle problems to
 a quartic and disk problems to interval partitions plus polynomial roots.
 Here there are NO polynomials and NO root finding: every distance is the
 global minimum of a closed-form function of ONE parameter, found by dense
@@ -44,15 +44,17 @@ t -> dist(S(t), disk) and is used in the self-validation tests.
 Global minimisation in one variable
 -----------------------------------
 ``_global_min_1d``: 2048 samples of the squared objective in binary64 (cheap
-numpy, used ONLY to locate brackets), every sampled local minimum (runs of
-equal samples merged, at most 8 lowest brackets kept -- more than 8 only
-happens when the function is flat to rounding level, where any bracket gives
-the value) is re-sampled with 25 points in mpmath and the up to 3 best
-sub-minima are refined by golden-section search in mpmath until the bracket is
-1e-27 wide (angles) or 1e-32 of the interval (line parameters).  The
-squared distance is smooth in theta, so the value error is ~ (1e-27)^2 relative
-to the scene; when the minimum is degenerate ("flat") the abscissa is
-ill-conditioned but the value still converges.
+numpy, used ONLY to place brackets); every sampled local minimum (runs of equal
+samples merged; brackets that a Lipschitz bound shows cannot reach the best
+sample are dropped) is refined in mpmath by ``_zoom``: recursive re-sampling
+with 13 points per level, following the best and, when present, a second
+distinct local minimum (this finds two minima closer than any fixed step, e.g.
+a line grazing the rim), down to a bracket of 1e-7, then golden-section search
+to a bracket of 1e-20 rad (1e-22 of the interval for line parameters).  The
+squared distance is smooth in theta, so at a quadratic minimum the value error
+is ~1e-40*scale^2 in g^2; where the minimum is degenerate ("flat") the abscissa
+is ill-conditioned but the value still converges.  At a simple zero of g the
+error of g itself is ~1e-20*scale, far below the 1e-12 test tolerance.
 
 Closest points and uniqueness
 -----------------------------
@@ -60,8 +62,9 @@ Each result carries reference closest points and ``near_optimal_radius(eta)``:
 an upper bound on how far ANY pair whose separation is within ``eta`` of the
 minimum can be from the reference pair (or inf when the eta-optimal pairs form
 several separate groups, i.e. near-ties).  ``unique`` is True when that radius
-is tiny for eta = 1e-40*scale, i.e. the minimiser is a single pair in exact
-arithmetic on the given floats.
+is tiny for a squared-distance level d^2 + (1e-19*scale)^2, i.e. the minimiser
+is a single pair in exact arithmetic on the given floats; ``degenerate`` when
+it is an exact tie or a continuum of macroscopic extent.
 """
 
 import functools
@@ -79,10 +82,11 @@ ROUND_KINDS = ("circle", "disk")
 _N_SAMPLES = 2048
 _N_SUB = 12
 _MAX_RUNS = 8
-_THETA_TOL = mpf("1e-27")
-_T_REL_TOL = mpf("1e-32")
-_TINY_REL = mpf("1e-40")     # eta used for the "unique" decision
-_UNIQUE_REL = 1e-8           # a minimiser set wider than this * scale is a continuum
+_THETA_TOL = mpf("1e-20")
+_T_REL_TOL = mpf("1e-22")
+_TINY_REL = mpf("1e-19")     # see RefResult._tiny_radius
+_UNIQUE_REL = 1e-8           # minimiser sets narrower than this * scale count as one pair
+_DEGENERATE_REL = 1e-3       # minimiser sets wider than this * scale are exact continua/ties
 
 
 # ----------------------------------------------------------------------------
@@ -279,22 +283,24 @@ def _runs(mask, periodic):
     return runs
 
 
-def _zoom(f, xl, xr, tol, min_width):
+def _zoom(f, xl, xr, tol, min_width, lipschitz):
     """Recursive re-sampling of [xl, xr] (mpmath): every level samples the bracket at
     _N_SUB + 1 points and descends into the best sampled local minimum and, if there is
-    one, a second distinct local minimum, shrinking the bracket _N_SUB/2-fold per level;
-    brackets narrower than min_width are finished by golden-section search.  The
-    branching is what finds two minima closer than any fixed sampling step (a line
-    grazing the rim produces two minima ~1e-5 rad apart).  At most 48 brackets are
-    opened (flat functions would otherwise branch everywhere)."""
+    one that could still be lower (Lipschitz bound on sqrt(f)), a second distinct local
+    minimum, shrinking the bracket _N_SUB/2-fold per level; brackets narrower than
+    min_width are finished by golden-section search.  The branching is what finds two
+    minima closer than any fixed sampling step (a line grazing the rim gives two minima
+    ~1e-5 rad apart).  At most 24 brackets are opened: only flat functions (all samples
+    equal) get there, and for them the sampled values are already the minimum."""
     stack = [(xl, xr)]
     leaves = []
     opened = 0
     while stack:
         a, b = stack.pop()
-        if b - a <= min_width or opened >= 48:
-            x, fx = _golden(f, a, b, tol)
-            leaves.append((x, fx))
+        if b - a <= min_width:
+            leaves.append(_golden(f, a, b, tol))
+            continue
+        if opened >= 24:
             continue
         opened += 1
         sx = [a + (b - a) * k / _N_SUB for k in range(_N_SUB + 1)]
@@ -307,8 +313,11 @@ def _zoom(f, xl, xr, tol, min_width):
                 loc.append((sv[k], k))
         loc.sort()
         chosen = loc[:1]
+        reach = lipschitz * (b - a) / _N_SUB if lipschitz is not None else None
         for v, k in loc[1:]:
-            if abs(k - chosen[0][1]) >= 2:
+            if abs(k - chosen[0][1]) < 2:
+                continue
+            if reach is None or mp.sqrt(v) - reach <= mp.sqrt(chosen[0][0]):
                 chosen.append((v, k))
                 break
         for v, k in chosen:
@@ -317,7 +326,7 @@ def _zoom(f, xl, xr, tol, min_width):
     return leaves
 
 
-def _global_min_1d(f_mp, f_np, a, b, periodic, tol):
+def _global_min_1d(f_mp, f_np, a, b, periodic, tol, lipschitz=None):
     """All refined local minima of f on [a, b] (periodic: [a, b) with f(a) = f(b)).
 
     f_np is a binary64 version of f used only to place brackets; every value
@@ -342,6 +351,13 @@ def _global_min_1d(f_mp, f_np, a, b, periodic, tol):
         ids = np.arange(first, last + 1) % n
         scored.append((float(np.min(v[ids])), first, last))
     scored.sort()
+    if lipschitz is not None and scored:
+        # g = sqrt(f) is `lipschitz`-Lipschitz: a bracket (samples within h of every
+        # point of it) whose best sample exceeds the best sample overall by more than
+        # lipschitz*h cannot contain the global minimum nor a tie with it.
+        best = math.sqrt(max(scored[0][0], 0.0))
+        scored = [r for r in scored
+                  if math.sqrt(max(r[0], 0.0)) - 1.01 * lipschitz * h <= best]
     results = []
 
     def xpos(i):
@@ -352,7 +368,7 @@ def _global_min_1d(f_mp, f_np, a, b, periodic, tol):
                 return b
         return mpf(af) + mpf(h) * i
 
-    min_width = mpf("1e-10") * (b - a) / (2 * mp.pi if periodic else 1)
+    min_width = mpf("1e-7") * (b - a) / (2 * mp.pi if periodic else 1)
     for _, first, last in scored[:_MAX_RUNS]:
         if periodic and last - first + 1 >= n:
             xl, xr = mpf(a), mpf(a) + 2 * mp.pi
@@ -361,7 +377,7 @@ def _global_min_1d(f_mp, f_np, a, b, periodic, tol):
         if xr <= xl:
             results.append((xl, f_mp(xl)))
             continue
-        results.extend(_zoom(f_mp, xl, xr, tol, min_width))
+        results.extend(_zoom(f_mp, xl, xr, tol, min_width, lipschitz))
     if not periodic:
         results.append((a, f_mp(a)))
         results.append((b, f_mp(b)))
@@ -437,7 +453,7 @@ class _RimMin:
     def __init__(self, lin, rnd):
         self.obj = _RimObjective(lin, rnd)
         self.minima = _global_min_1d(self.obj.g2, self.obj.g2_np, mpf(0), 2 * mp.pi,
-                                     True, _THETA_TOL)
+                                     True, _THETA_TOL, lipschitz=float(rnd.R))
         self.theta, g2 = self.minima[0]
         self.value = mp.sqrt(g2)
         self.point_lin, self.point_round = self.obj.pair(self.theta)
@@ -448,13 +464,13 @@ class _RimMin:
         g2, th = self.obj.g2, self.theta
         sides = []
         for sgn in (1, -1):
-            delta = mpf("1e-35")
+            delta = mpf("1e-30")
             while delta < mp.pi and g2(th + sgn * delta) <= level2:
-                delta *= 4
+                delta *= 8
             if delta >= mp.pi:
                 return None
-            inside = delta / 4
-            for _ in range(40):
+            inside = delta / 8
+            for _ in range(24):
                 mid = (inside + delta) / 2
                 if g2(th + sgn * mid) <= level2:
                     inside = mid
@@ -495,6 +511,7 @@ class RefResult:
     scale        max(distance, R): the scale used for tolerances
     near_optimal_radius(eta) -> (r_lin, r_round) as floats (inf if unbounded)
     unique       the minimising pair is unique (exact arithmetic on the inputs)
+    degenerate   the minimising pairs are an exact tie or a macroscopic continuum
     """
 
     def __init__(self, distance, point_lin, point_round, R, radius_fn, via):
@@ -515,19 +532,44 @@ class RefResult:
         """Upper bounds (r_lin, r_round): every pair (p on S, q on round shape) with
         |p - q| <= distance + eta satisfies |p - point_lin| <= r_lin and
         |q - point_round| <= r_round, unless a radius is inf (near-ties/continuum)."""
-        eta = mpf(eta)
-        if eta not in self._cache:
-            slack = mp.sqrt(2 * self.distance * eta + eta * eta)
-            res = self._radius_fn(eta, slack)
-            self._cache[eta] = (math.inf, math.inf) if res is None else tuple(float(r) for r in res)
-        return self._cache[eta]
+        return self._radius_at_level(self.distance + mpf(eta))
+
+    def _radius_at_level(self, level):
+        if level not in self._cache:
+            # a pair (p, q) with |p - q| <= level whose p (or q) is the nearest point to
+            # the other one at distance >= d: the partner is within slack of that
+            # nearest point (Pythagoras at a nearest point of a convex set)
+            slack = mp.sqrt(max(level * level - self.distance ** 2, mpf(0)))
+            res = self._radius_fn(level, slack)
+            self._cache[level] = (math.inf, math.inf) if res is None else \
+                tuple(float(r) for r in res)
+        return self._cache[level]
 
     @functools.cached_property
+    def _tiny_radius(self):
+        # level chosen on the SQUARED distance: d^2 + (1e-19*scale)^2.  The refined minima
+        # are accurate to ~1e-40*scale^2 in g^2 (golden bracket 1e-20 rad), so exact ties
+        # are recognised even between simple zeros of g, where g itself is only good to
+        # ~1e-20*scale.
+        s = self.scale if self.scale > 0 else mpf("1e-280")
+        level = mp.sqrt(self.distance ** 2 + (_TINY_REL * s) ** 2)
+        return max(self._radius_at_level(level))
+
+    @property
     def unique(self):
-        eta = _TINY_REL * self.scale if self.scale > 0 else mpf("1e-300")
-        ra, rb = self.near_optimal_radius(eta)
+        """The minimising pair is a single pair: the pairs whose squared separation is
+        within (1e-19*scale)^2 of the minimum all lie within 1e-8*scale of the reference
+        pair."""
         lim = _UNIQUE_REL * float(self.scale) if self.scale > 0 else 1e-300
-        return ra <= lim and rb <= lim
+        return self._tiny_radius <= lim
+
+    @property
+    def degenerate(self):
+        """Exactly (not just numerically) non-unique: an exact tie between separate
+        minimisers, or a continuum of minimisers of macroscopic extent (> 1e-3*scale).
+        Cases that are neither unique nor degenerate are ill-conditioned; tests make no
+        claim about the library's `unique` flag for them."""
+        return self._tiny_radius > _DEGENERATE_REL * float(self.scale)
 
 
 def _t_radius(lin, rnd, t_star, level):
@@ -543,7 +585,7 @@ def _t_radius(lin, rnd, t_star, level):
     out = []
     for sgn, bound in ((1, lin.hi), (-1, lin.lo)):
         room = None if bound is None else abs(bound - t_star)
-        delta = mpf("1e-35") * scale / norm_m
+        delta = mpf("1e-30") * scale / norm_m
         hit_end = False
         for _ in range(400):
             if room is not None and delta >= room:
@@ -551,12 +593,12 @@ def _t_radius(lin, rnd, t_star, level):
                 break
             if f(t_star + sgn * delta) > level:
                 break
-            delta *= 4
+            delta *= 8
         if hit_end and f(t_star + sgn * delta) <= level:
             out.append(delta)
             continue
-        inside = delta / 4 if not hit_end else mpf(0)
-        for _ in range(40):
+        inside = delta / 8 if not hit_end else mpf(0)
+        for _ in range(30):
             mid = (inside + delta) / 2
             if f(t_star + sgn * mid) <= level:
                 inside = mid
@@ -574,8 +616,8 @@ def _ref_circle(lin, rnd):
     rm = _RimMin(lin, rnd)
     d = rm.value
 
-    def radius(eta, slack):
-        th = rm.theta_radius((d + eta) ** 2)
+    def radius(level, slack):
+        th = rm.theta_radius(level ** 2)
         if th is None:
             return None
         r_round = rnd.R * th       # chord <= R * angle
@@ -629,8 +671,13 @@ def _ref_disk(lin, rnd):
             if _dot(_sub(q, rnd.C), _sub(q, rnd.C)) <= rnd.R * rnd.R:
                 cands.append((mpf(0), q, q, "in-plane"))
     # (R) rim
-    rm = _RimMin(lin, rnd)
-    cands.append((rm.value, rm.point_lin, rm.point_round, "rim"))
+    if rnd.R == 0:
+        # the rim is the single point C: g(theta) is constant, no search needed
+        q = lin.point(lin.closest_param(rnd.C))
+        cands.append((_norm(_sub(q, rnd.C)), q, rnd.C, "rim"))
+    else:
+        rm = _RimMin(lin, rnd)
+        cands.append((rm.value, rm.point_lin, rm.point_round, "rim"))
     # (E) end points
     for t in lin.endpoint_params():
         e = lin.point(t)
@@ -640,8 +687,8 @@ def _ref_disk(lin, rnd):
     d, pa, pb, via = min(cands, key=lambda c: c[0])
     t_star = lin.closest_param(pa)
 
-    def radius(eta, slack):
-        ra = _t_radius(lin, rnd, t_star, d + eta)
+    def radius(level, slack):
+        ra = _t_radius(lin, rnd, t_star, level)
         # nearest-point map onto the convex disk is 1-Lipschitz; partner off by <= slack
         return ra, ra + slack
 
@@ -653,8 +700,8 @@ def _ref_point_disk(lin, rnd):
     route and brute force in test_reference_validation."""
     d, q = point_disk_closest(lin.B, rnd)
 
-    def radius(eta, slack):
-        # disk convex: |q' - q|^2 <= |p - q'|^2 - d^2 <= (d + eta)^2 - d^2
+    def radius(level, slack):
+        # disk convex: |q' - q|^2 <= |p - q'|^2 - d^2 <= level^2 - d^2
         return mpf(0), slack
 
     return RefResult(d, lin.B, q, rnd.R, radius, "closed-form")
@@ -708,7 +755,8 @@ def reference_by_line_parameter(lin_kind, lin_data, round_kind, round_data):
     """dist(S, shape) = min over t in T of dist(S(t), shape) with the closed-form
     point-circle / point-disk distance.  For the disk the objective is convex in t
     (distance to a convex set restricted to a line), so plain golden-section on the
-    whole window is a complete global method; for the circle the generic sampler is used.
+    whole window is a complete global method; for the circle the generic sampler is used
+    (R = 0: the circle is a point, convex again).
     Shares no step with the rim (theta) formulation."""
     lin = Linear(lin_kind, lin_data)
     rnd = Round(round_kind, round_data)
@@ -719,7 +767,7 @@ def reference_by_line_parameter(lin_kind, lin_data, round_kind, round_data):
     if hi <= lo:
         return mp.sqrt(f2(lo))
     tol = (hi - lo) * _T_REL_TOL
-    if round_kind == "disk":
+    if round_kind == "disk" or rnd.R == 0:
         _, v = _golden(f2, lo, hi, tol)
         return mp.sqrt(min(v, f2(lo), f2(hi)))
     # binary64 version for bracket placement, relative to C
@@ -733,11 +781,11 @@ def reference_by_line_parameter(lin_kind, lin_data, round_kind, round_data):
         x, y, z = p @ U, p @ V, p @ n
         return (np.hypot(x, y) - R) ** 2 + z * z
 
-    res = _global_min_1d(f2, f2_np, lo, hi, False, tol)
+    res = _global_min_1d(f2, f2_np, lo, hi, False, tol, lipschitz=float(mp.sqrt(lin.mm)))
     return mp.sqrt(res[0][1])
 
 
-def brute_force(lin_kind, lin_data, round_kind, round_data, n_lin=600, n_theta=720, n_rad=24):
+def brute_force(lin_kind, lin_data, round_kind, round_data, n_lin=500, n_theta=720, n_rad=16):
     """Plain binary64 sampling of both shapes (no projections at all).
 
     Returns (smallest sampled pair distance, bound) where bound is an upper bound on
@@ -763,9 +811,11 @@ def brute_force(lin_kind, lin_data, round_kind, round_data, n_lin=600, n_theta=7
         Q = R * ring
         gap_round = R * np.pi / n_theta
     else:
+        th = th[::2]
+        ring = ring[::2]
         radii = R * np.arange(n_rad + 1) / n_rad
         Q = (radii[:, None, None] * ring[None, :, :]).reshape(-1, 3)
-        gap_round = math.hypot(R * np.pi / n_theta, R / n_rad / 2)
+        gap_round = math.hypot(2 * R * np.pi / n_theta, R / n_rad / 2)
     best = np.inf
     for k in range(0, len(Q), 512):
         diff = P[:, None, :] - Q[None, k:k + 512, :]
@@ -777,8 +827,8 @@ def brute_force(lin_kind, lin_data, round_kind, round_data, n_lin=600, n_theta=7
 # residual helpers for the tests (exact on the float inputs)
 # ----------------------------------------------------------------------------
 def distance_to_shape(point, kind, data):
-    """mpf distance from a binary64 point to the shape (kind, data)."""
-    p = _v(point)
+    """mpf distance from a point (binary64 array-like or mpf 3-tuple) to the shape."""
+    p = point if isinstance(point, tuple) and isinstance(point[0], type(mpf(0))) else _v(point)
     if kind in LINEAR_KINDS:
         return Linear(kind, data).distance_to_point(p)
     return point_round_distance(p, Round(kind, data))

@@ -7,3 +7,7 @@
 #include "point_disk.hpp"
 #include "line_circle.hpp"
 #include "line_disk.hpp"
+#include "circle_circle.hpp"
+#include "circle_disk.hpp"
+#include "disk_disk.hpp"
+#include "bezier.hpp"

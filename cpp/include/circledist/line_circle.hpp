@@ -11,11 +11,12 @@ template <class Real, class Piece> struct LinearCircleQuery {
   static constexpr bool defined = true;
 
   template <class Roots> static Minima<Real> solve(const LocalLinear<Real>& line, Real radius, Real scale) {
-    Candidates<Real> starts;
-    push_linear_candidates(line, starts);
-    push_line_circle_roots<Roots>(line, radius, scale, starts);
+    Candidates<Real> stationary, exact;
+    push_line_circle_roots<Roots>(line, radius, scale, stationary);
+    push_linear_candidates(line, exact);
     const auto h = [&](Real tau) { return ring_distance_local(line.at(tau), radius); };
-    return minimize_linear(h, line, starts, scale);
+    const auto jet = [&](Real tau) { return ring_jet(line, radius, tau); };
+    return minimize_linear<Roots>(jet, h, line, stationary, exact, scale);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Circle3<Real>& c) {

@@ -54,11 +54,15 @@ template <class Real> struct LocalLinear {
   Real t_of(Real tau) const { return (tau + shift) / length; }
 };
 
-// Candidates every linear-vs-round query shares: the anchor, the plane crossing and the finite
-// interval ends (the note's "ray origin" rule: an end point may be the closest point).
+// Exact candidates every linear-vs-round query evaluates as they are (they are not estimates of
+// a stationary point, so they are not polished): the anchor, the plane crossing (where the disk's
+// height kinks; for a circle, the closest point of a line along the axis, where the quartic
+// vanishes identically), and the finite interval ends (the note's "ray origin" rule).
 template <class Real> void push_linear_candidates(const LocalLinear<Real>& line, Candidates<Real>& out) {
-  out.push(Real(0));
-  if (line.dir.z() != 0) out.push(-line.anchor.z() / line.dir.z());
+  const auto inside = [&](Real tau) { return std::min(std::max(tau, line.lo), line.hi); };
+  out.push(inside(Real(0)));
+  if (line.is_point) return;
+  if (line.dir.z() != 0) out.push(inside(-line.anchor.z() / line.dir.z()));
   if (std::isfinite(line.lo)) out.push(line.lo);
   if (std::isfinite(line.hi)) out.push(line.hi);
 }
@@ -95,12 +99,46 @@ template <class Real> Real linear_round_scale(const LocalLinear<Real>& line, Rea
   return s > 0 ? s : Real(1);
 }
 
-// Polishes the candidates on the exact distance `h(tau)` over the piece's interval.
-template <class Real, class H>
-Minima<Real> minimize_linear(const H& h, const LocalLinear<Real>& line, const Candidates<Real>& starts, Real scale) {
+// The squared ring distance |P|^2 + R^2 - 2 R rho along the piece, with its derivatives
+// (rho' = (P.m)_xy / rho, rho'' = |m_xy|^2 / rho - (P.m)_xy^2 / rho^3, |m| = 1).
+template <class Real> Jet<Real> ring_jet(const LocalLinear<Real>& line, Real radius, Real tau) {
+  const Vec3<Real> p = line.at(tau);
+  const Vec3<Real>& m = line.dir;
+  const Real rho = length2d(p.x(), p.y());
+  const Real along = p.x() * m.x() + p.y() * m.y();
+  const Real value = p.z() * p.z() + (rho - radius) * (rho - radius);
+  if (!(rho > 0)) return {value, p.dot(m), std::numeric_limits<Real>::quiet_NaN()};
+  const Real rho1 = along / rho;
+  const Real rho2 = (m.x() * m.x() + m.y() * m.y() - rho1 * rho1) / rho;
+  return {value, 2 * (p.dot(m) - radius * rho1), 2 * (1 - radius * rho2)};
+}
+
+// The squared disk distance: the height squared over the disk, the ring's outside it.
+template <class Real> Jet<Real> disk_jet(const LocalLinear<Real>& line, Real radius, Real tau) {
+  const Vec3<Real> p = line.at(tau);
+  if (length2d(p.x(), p.y()) <= radius) {
+    const Real mz = line.dir.z();
+    return {p.z() * p.z(), 2 * p.z() * mz, 2 * mz * mz};
+  }
+  return ring_jet(line, radius, tau);
+}
+
+// Polishes the `stationary` candidates (polynomial roots) on the exact distance `h(tau)` over the
+// piece's interval, as the root policy asks (Newton on the squared distance `jet`, or a
+// bracketed search), and evaluates the `exact` candidates as they are.
+template <class Roots, class Real, class J, class H>
+Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& line,
+                             const Candidates<Real>& stationary, const Candidates<Real>& exact, Real scale) {
   const Real width = Real(1e-3) * scale;
   const Real abs_tol = Real(0.1) * std::sqrt(std::numeric_limits<Real>::epsilon()) * scale;
-  return polish_candidates(h, starts, width, line.lo, line.hi, abs_tol);
+  Minima<Real> out;
+  if constexpr (Roots::polish == Polish::Newton) {
+    out = polish_candidates_newton(jet, h, stationary, width, line.lo, line.hi, abs_tol);
+  } else {
+    out = polish_candidates(h, stationary, width, line.lo, line.hi, abs_tol);
+  }
+  for (int i = 0; i < exact.count; ++i) out.add(Minimum<Real>{exact.value[i], h(exact.value[i])});
+  return out;
 }
 
 // Builds the Result from the polished minima: `round_point(p, ambiguous)` maps a local point of

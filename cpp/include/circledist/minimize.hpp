@@ -91,6 +91,11 @@ template <class Real, int Capacity = kMaxDegree + 8> struct Minima {
   std::array<Minimum<Real>, Capacity> item{};
   int count = 0;
   Minimum<Real> best;
+
+  void add(const Minimum<Real>& m) {
+    if (count < Capacity) item[count++] = m;
+    if (m.value < best.value) best = m;
+  }
 };
 
 template <class Real, class F, int Capacity>
@@ -98,10 +103,61 @@ Minima<Real, Capacity> polish_candidates(const F& f, const Candidates<Real, Capa
                                          Real hi, Real abs_tol) {
   Minima<Real, Capacity> out;
   for (int i = 0; i < starts.count; ++i) {
-    const Minimum<Real> m = polish_minimum(f, starts.value[i], width, lo, hi, abs_tol);
-    out.item[out.count++] = m;
-    if (m.value < out.best.value) out.best = m;
+    out.add(polish_minimum(f, starts.value[i], width, lo, hi, abs_tol));
   }
+  return out;
+}
+
+// The squared distance and its first two derivatives along a parameter.
+template <class Real> struct Jet {
+  Real value, slope, curvature;
+};
+
+// Newton steps on the exact squared distance g from x0 (g' = 0 with g'' > 0), each one kept only
+// if g decreases; `distance(x)` is the exact distance. Falls back to the bracketed search when a
+// step fails (a kink, a concave region) before it has converged. Never returns a worse point
+// than its start.
+template <class Real, class J, class F>
+Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width, Real lo, Real hi, Real abs_tol) {
+  Real x = std::min(std::max(x0, lo), hi);
+  Jet<Real> g = jet(x);
+  bool converged = false;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    if (g.slope == 0) {
+      converged = true;
+      break;
+    }
+    if (!(g.curvature > 0)) break;
+    const Real step = -g.slope / g.curvature;
+    const Real next = std::min(std::max(x + step, lo), hi);
+    const Jet<Real> h = jet(next);
+    if (!(h.value <= g.value)) break;
+    x = next;
+    g = h;
+    if (std::abs(step) <= abs_tol) {
+      converged = true;
+      break;
+    }
+  }
+  if (converged) {
+    Minimum<Real> m{x, distance(x)};
+    const Real start = std::min(std::max(x0, lo), hi);
+    const Real start_value = distance(start);
+    return start_value < m.value ? Minimum<Real>{start, start_value} : m;
+  }
+  // Newton could not continue: a concave stretch (an extraneous root of the squared equation,
+  // a local maximum) or a kink. A short bracketed search settles it without widening.
+  Minimum<Real> m{x, distance(x)};
+  const Real a = std::max(lo, x - width), b = std::min(hi, x + width);
+  if (b > a) m.x = brent_minimize(distance, a, b, m.x, m.value, abs_tol);
+  return m;
+}
+
+template <class Real, class J, class F>
+Minima<Real> polish_candidates_newton(const J& jet, const F& distance, const Candidates<Real>& starts, Real width,
+                                      Real lo, Real hi, Real abs_tol) {
+  Minima<Real> out;
+  for (int i = 0; i < starts.count; ++i) out.add(polish_newton(jet, distance, starts.value[i], width, lo, hi, abs_tol));
   return out;
 }
 
@@ -113,7 +169,7 @@ template <class Real> Real tie_tolerance(Real scale) {
 // Two closest points farther apart than this are distinct pairs. Flat minima (tangencies) are
 // only located to about eps^(1/4) * scale, so anything finer would split one pair into two.
 template <class Real> Real distinct_points_tolerance(Real scale) {
-  return std::max(Real(1e-3), Real(32) * std::pow(std::numeric_limits<Real>::epsilon(), Real(0.25))) * scale;
+  return std::max(Real(1e-3), Real(4) * std::pow(std::numeric_limits<Real>::epsilon(), Real(0.25))) * scale;
 }
 
 }  // namespace circledist

@@ -13,6 +13,11 @@
 
 namespace circledist {
 
+// How candidates are moved to a local minimum of the exact distance (minimize.hpp):
+//   Newton: Newton steps on the exact squared distance, a bracketed search only where they fail;
+//   Bracketed: a bracketed (Brent) minimization of the exact distance around every candidate.
+enum class Polish { Newton, Bracketed };
+
 // Degree 8 covers the line and circle queries (the circle-disk and circle-circle octics);
 // coefficients ascending. Curves need more: a Bezier curve of degree n against a circle gives
 // degree 6n - 2, hence kMaxCurveDegree for degree 7.
@@ -96,6 +101,32 @@ void companion_roots(const Real* c, int degree, Real tol, Candidates<Real, Capac
   }
 }
 
+// A few Newton steps on p from x, kept only while |p| decreases (multiple roots converge slowly
+// and are left to the distance polish).
+template <class Real> Real newton_on_polynomial(const Real* c, int n, Real x) {
+  auto value_and_slope = [&](Real t, Real& slope) {
+    Real v = c[n];
+    slope = 0;
+    for (int i = n - 1; i >= 0; --i) {
+      slope = slope * t + v;
+      v = v * t + c[i];
+    }
+    return v;
+  };
+  Real slope = 0;
+  Real v = value_and_slope(x, slope);
+  for (int iteration = 0; iteration < 8 && v != 0 && slope != 0; ++iteration) {
+    const Real next = x - v / slope;
+    Real next_slope = 0;
+    const Real next_v = value_and_slope(next, next_slope);
+    if (!(std::abs(next_v) < std::abs(v))) break;
+    x = next;
+    v = next_v;
+    slope = next_slope;
+  }
+  return x;
+}
+
 }  // namespace detail
 
 // Eigen's polynomial solver scheme (balanced companion matrix, real Schur form by QR), without
@@ -103,6 +134,8 @@ void companion_roots(const Real* c, int degree, Real tol, Candidates<Real, Capac
 // near-real: a quadruple root (a line whose projection is tangent to the circle) comes back as
 // two complex pairs with imaginary parts around eps^(1/4), and `realRoots()` would drop them.
 struct EigenCompanion {
+  static constexpr Polish polish = Polish::Newton;
+
   // Relative imaginary part still taken as a real root (covers multiplicity up to 4 in double).
   template <class Real> static Real near_real_tolerance() {
     return std::max(Real(1e-2), Real(8) * std::pow(std::numeric_limits<Real>::epsilon(), Real(0.25)));
@@ -147,6 +180,114 @@ struct EigenCompanion {
   }
 };
 
+// EigenCompanion's roots, each refined by Newton steps on the polynomial, then polished by a
+// bracketed minimization of the exact distance: the most careful, and the slowest.
+struct EigenPolished {
+  static constexpr Polish polish = Polish::Bracketed;
+
+  template <class Real, int Capacity>
+  static void roots(const Real* coefficients, int degree, Candidates<Real, Capacity>& out) {
+    const int first = out.count;
+    EigenCompanion::roots(coefficients, degree, out);
+    degree = trimmed_degree(coefficients, degree);
+    for (int i = first; i < out.count; ++i) out.value[i] = detail::newton_on_polynomial(coefficients, degree, out.value[i]);
+  }
+};
+
+namespace detail {
+
+template <class Real> Real horner(const Real* c, int n, Real x) {
+  Real v = c[n];
+  for (int i = n - 1; i >= 0; --i) v = v * x + c[i];
+  return v;
+}
+
+// A bound on the rounding error of evaluating p at x by Horner's scheme, generously inflated to
+// cover the rounding already in the coefficients.
+template <class Real> Real horner_error(const Real* c, int n, Real x) {
+  Real v = std::abs(c[n]);
+  const Real ax = std::abs(x);
+  for (int i = n - 1; i >= 0; --i) v = v * ax + std::abs(c[i]);
+  return Real(64) * (n + 1) * std::numeric_limits<Real>::epsilon() * v;
+}
+
+// The root of p in (a, b), where p(a) and p(b) have opposite signs.
+template <class Real> Real newton_bisection(const Real* c, const Real* dc, int n, Real a, Real b, Real pa) {
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  Real x = (a + b) / 2;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const Real px = horner(c, n, x);
+    if (px == 0) return x;
+    if ((px < 0) == (pa < 0)) {
+      a = x;
+      pa = px;
+    } else {
+      b = x;
+    }
+    const Real slope = horner(dc, n - 1, x);
+    Real next = slope != 0 ? x - px / slope : (a + b) / 2;
+    if (!(next > a && next < b)) next = (a + b) / 2;
+    if (std::abs(next - x) <= 2 * eps * std::abs(x) || b - a <= 4 * eps * std::abs(x)) return next;
+    x = next;
+  }
+  return x;
+}
+
+// Appends the real roots of c (degree n >= 1, c[n] != 0) in [lo, hi] in increasing order, and
+// the critical points there at which p vanishes within rounding.
+template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi, Real* out, int& count) {
+  if (n == 1) {
+    const Real x = -c[0] / c[1];
+    if (x >= lo && x <= hi) out[count++] = x;
+    return;
+  }
+  Real dc[kMaxCurveDegree];
+  for (int i = 0; i < n; ++i) dc[i] = (i + 1) * c[i + 1];
+  Real critical[2 * kMaxCurveDegree];
+  int critical_count = 0;
+  isolate_roots(dc, n - 1, lo, hi, critical, critical_count);
+
+  Real a = lo, pa = horner(c, n, lo);
+  if (pa == 0) out[count++] = lo;
+  for (int k = 0; k <= critical_count; ++k) {
+    const Real b = k < critical_count ? critical[k] : hi;
+    const Real pb = horner(c, n, b);
+    if ((pa < 0 && pb > 0) || (pa > 0 && pb < 0)) out[count++] = newton_bisection(c, dc, n, a, b, pa);
+    if (k < critical_count && std::abs(pb) <= horner_error(c, n, b)) {
+      if (count == 0 || out[count - 1] != b) out[count++] = b;
+    } else if (pb == 0 && k == critical_count) {
+      out[count++] = b;
+    }
+    a = b;
+    pa = pb;
+  }
+}
+
+}  // namespace detail
+
+// The Bracketing root policy: real roots without eigenvalues. The roots of p' split the real
+// line into intervals on which p is monotonic; each sign change holds exactly one root, found by
+// safeguarded Newton-bisection; the roots of p' come from p'' the same way, down to degree 1.
+// An even-multiplicity root (a tangency) shows no sign change, but it is a critical point where
+// p vanishes within rounding: such critical points are kept, so a double root is never missed.
+struct Bracketing {
+  static constexpr Polish polish = Polish::Newton;
+
+  template <class Real, int Capacity>
+  static void roots(const Real* coefficients, int degree, Candidates<Real, Capacity>& out) {
+    degree = trimmed_degree(coefficients, degree);
+    if (degree <= 0) return;
+    // Cauchy's bound: every root lies in [-bound, bound].
+    Real bound = 0;
+    for (int i = 0; i < degree; ++i) bound = std::max(bound, std::abs(coefficients[i] / coefficients[degree]));
+    bound = 1 + bound;
+    Real found[2 * kMaxCurveDegree];
+    int count = 0;
+    detail::isolate_roots(coefficients, degree, -bound, bound, found, count);
+    for (int i = 0; i < count; ++i) out.push(found[i]);
+  }
+};
+// The default policy of every solver (chosen by bench/accuracy_vs_time.py: see the README).
 using DefaultRoots = EigenCompanion;
 
 }  // namespace circledist

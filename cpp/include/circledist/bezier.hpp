@@ -1,0 +1,303 @@
+// Bezier curves (degree 1 to 7, t in [0, 1]) against disks and circles: note 001 §3 with
+// polynomial curves. In the round's local frame (center subtracted from the control points
+// first, exact for translated scenes) the curve is converted to the power basis in w = 2t - 1,
+// the variable whose roots of interest lie in [-1, 1], where the power basis is best
+// conditioned. Against a disk, [0, 1] is cut where x^2 + y^2 = r^2 (degree 2n); inside pieces
+// minimize |z| (z = 0 or z' = 0, degrees n and n-1); outside pieces use note 001 eq. (2)
+// squared, degree 6n - 2 (28 for a quintic). Against a circle only the last equation is needed.
+// Squaring adds extraneous roots; they are harmless because every candidate is judged (and
+// polished) on the exact point-round distance, never on the polynomial.
+#pragma once
+
+#include "circle_circle.hpp"
+
+#include <array>
+#include <type_traits>
+
+namespace circledist {
+
+constexpr int kMaxBezierDegree = 7;
+static_assert(6 * kMaxBezierDegree - 2 <= kMaxCurveDegree, "circledist: curve polynomials exceed kMaxCurveDegree");
+
+// Control points P_0 .. P_n as the columns of a fixed-capacity matrix (no heap): the curve is
+// sum_i C(n, i) t^i (1 - t)^(n - i) P_i for t in [0, 1]. A single column is a point.
+template <class Real> struct BezierCurve3 {
+  using ControlPoints = Eigen::Matrix<Real, 3, Eigen::Dynamic, Eigen::ColMajor, 3, kMaxBezierDegree + 1>;
+  ControlPoints control;
+
+  int degree() const { return int(control.cols()) - 1; }
+
+  // De Casteljau: convex combinations only, exact at t = 0 and t = 1.
+  Vec3<Real> at(Real t) const {
+    std::array<Vec3<Real>, kMaxBezierDegree + 1> q;
+    const int n = degree();
+    for (int i = 0; i <= n; ++i) q[i] = control.col(i);
+    for (int k = n; k > 0; --k) {
+      for (int i = 0; i < k; ++i) q[i] = (1 - t) * q[i] + t * q[i + 1];
+    }
+    return q[0];
+  }
+};
+
+// A polynomial of degree <= kMaxCurveDegree, coefficients ascending.
+template <class Real> struct CurvePoly {
+  std::array<Real, kMaxCurveDegree + 1> c{};
+  int degree = 0;
+
+  CurvePoly derivative() const {
+    CurvePoly d;
+    d.degree = std::max(degree - 1, 0);
+    for (int i = 1; i <= degree; ++i) d.c[i - 1] = i * c[i];
+    return d;
+  }
+};
+
+template <class Real> CurvePoly<Real> operator*(const CurvePoly<Real>& a, const CurvePoly<Real>& b) {
+  CurvePoly<Real> p;
+  p.degree = a.degree + b.degree;
+  for (int i = 0; i <= a.degree; ++i) {
+    for (int j = 0; j <= b.degree; ++j) p.c[i + j] += a.c[i] * b.c[j];
+  }
+  return p;
+}
+
+template <class Real> CurvePoly<Real> operator+(const CurvePoly<Real>& a, const CurvePoly<Real>& b) {
+  CurvePoly<Real> p;
+  p.degree = std::max(a.degree, b.degree);
+  for (int i = 0; i <= p.degree; ++i) p.c[i] = a.c[i] + b.c[i];
+  return p;
+}
+
+template <class Real> CurvePoly<Real> operator*(Real s, CurvePoly<Real> a) {
+  for (int i = 0; i <= a.degree; ++i) a.c[i] *= s;
+  return a;
+}
+
+template <class Real> CurvePoly<Real> operator-(const CurvePoly<Real>& a, const CurvePoly<Real>& b) {
+  return a + Real(-1) * b;
+}
+
+// The curve in a round's local frame: control points q_i = frame(P_i - center), and the control
+// points of its first and second derivatives in t.
+template <class Real> struct LocalBezier {
+  int n = 0;
+  std::array<Vec3<Real>, kMaxBezierDegree + 1> q{}, d1{}, d2{};
+  Real speed = 0;  // max |P'(t)|, bounded by the largest hodograph control point
+  Real size = 0;   // max |q_i - q_0|, the curve's extent
+
+  LocalBezier(const BezierCurve3<Real>& b, const Round<Real>& round) : n(std::max(b.degree(), 0)) {
+    for (int i = 0; i <= n && i < int(b.control.cols()); ++i) {
+      q[i] = round.local(b.control.col(i));
+      size = std::max(size, (q[i] - q[0]).norm());
+    }
+    for (int i = 0; i < n; ++i) {
+      d1[i] = Real(n) * (q[i + 1] - q[i]);
+      speed = std::max(speed, d1[i].norm());
+    }
+    for (int i = 0; i + 1 < n; ++i) d2[i] = Real(n - 1) * (d1[i + 1] - d1[i]);
+  }
+
+  static Vec3<Real> casteljau(std::array<Vec3<Real>, kMaxBezierDegree + 1> p, int m, Real t) {
+    for (int k = m; k > 0; --k) {
+      for (int i = 0; i < k; ++i) p[i] = (1 - t) * p[i] + t * p[i + 1];
+    }
+    return p[0];
+  }
+
+  Vec3<Real> at(Real t) const { return casteljau(q, n, t); }
+
+  template <class JetOf> Jet<Real> jet(Real t, Real radius, const JetOf& jet_of) const {
+    const Vec3<Real> p1 = n >= 1 ? casteljau(d1, n - 1, t) : Vec3<Real>::Zero();
+    const Vec3<Real> p2 = n >= 2 ? casteljau(d2, n - 2, t) : Vec3<Real>::Zero();
+    return jet_of(at(t), p1, p2, radius);
+  }
+
+  // Coordinate i in the power basis of w = 2t - 1, in units of `scale`:
+  // C(n, k) t^k (1-t)^(n-k) = C(n, k) 2^-n (1 + w)^k (1 - w)^(n-k).
+  CurvePoly<Real> coordinate(int i, Real scale) const {
+    CurvePoly<Real> out;
+    out.degree = n;
+    Real binomial = 1;  // C(n, k)
+    for (int k = 0; k <= n; ++k) {
+      std::array<Real, kMaxBezierDegree + 1> basis{};
+      basis[0] = 1;
+      for (int m = 0; m < n; ++m) {  // times (1 + w) for m < k, then (1 - w)
+        const Real sign = m < k ? Real(1) : Real(-1);
+        for (int j = m + 1; j > 0; --j) basis[j] = basis[j] + sign * basis[j - 1];
+      }
+      const Real weight = binomial * std::ldexp(q[k][i] / scale, -n);
+      for (int j = 0; j <= n; ++j) out.c[j] += weight * basis[j];
+      binomial = binomial * Real(n - k) / Real(k + 1);
+    }
+    return out;
+  }
+};
+
+template <class Real> Real bezier_round_scale(const LocalBezier<Real>& c, Real radius) {
+  Real s = radius;
+  for (int i = 0; i <= c.n; ++i) s = std::max(s, c.q[i].norm());
+  return s > 0 ? s : Real(1);
+}
+
+// A root policy that can solve the curve degrees: the asked one when it accepts a large
+// Candidates, EigenCompanion otherwise.
+template <class Roots, class Real, class = void> struct CurveRoots {
+  using type = EigenCompanion;
+};
+template <class Roots, class Real>
+struct CurveRoots<Roots, Real,
+                  std::void_t<decltype(Roots::roots(std::declval<const Real*>(), 0,
+                                                    std::declval<Candidates<Real, kMaxCurveDegree + 8>&>()))>> {
+  using type = Roots;
+};
+
+// Appends t = (1 + w) / 2 for the near-real roots w of p in [-1, 1] (a little slack, clamped:
+// a root pushed just outside by rounding still seeds the polish at the end point).
+template <class Roots, class Real, int N> void push_curve_roots(const CurvePoly<Real>& p, Candidates<Real, N>& out) {
+  Candidates<Real, kMaxCurveDegree + 8> roots;
+  CurveRoots<Roots, Real>::type::roots(p.c.data(), p.degree, roots);
+  const Real slack = Real(1e-3);
+  for (int i = 0; i < roots.count; ++i) {
+    const Real w = roots.value[i];
+    if (w >= -1 - slack && w <= 1 + slack) out.push(std::min(std::max((1 + w) / 2, Real(0)), Real(1)));
+  }
+}
+
+// Note 001 eq. (2) squared, in w: (P.P')^2 (x^2 + y^2) - R^2 (x x' + y y')^2 = 0, degree 6n - 2.
+// Both sides carry P' twice, so d/dw in place of d/dt changes nothing.
+template <class Roots, class Real, int N>
+void push_curve_ring_roots(const LocalBezier<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
+  if (c.n < 1) return;
+  const CurvePoly<Real> x = c.coordinate(0, scale), y = c.coordinate(1, scale), z = c.coordinate(2, scale);
+  const CurvePoly<Real> h = x * x.derivative() + y * y.derivative();
+  const CurvePoly<Real> dot = h + z * z.derivative();
+  const Real r = radius / scale;
+  push_curve_roots<Roots>((dot * dot) * (x * x + y * y) - (r * r) * (h * h), out);
+}
+
+// Note 001 §3: where x^2 + y^2 = R^2 (the pieces' ends), and z z' = 0 (the inside pieces).
+template <class Roots, class Real, int N>
+void push_curve_disk_roots(const LocalBezier<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
+  if (c.n < 1) return;
+  const CurvePoly<Real> x = c.coordinate(0, scale), y = c.coordinate(1, scale), z = c.coordinate(2, scale);
+  CurvePoly<Real> g = x * x + y * y;
+  const Real r = radius / scale;
+  g.c[0] -= r * r;
+  push_curve_roots<Roots>(g, out);
+  push_curve_roots<Roots>(z, out);
+  push_curve_roots<Roots>(z.derivative(), out);
+}
+
+// As circle_round_result, for a curve parameter t in [0, 1].
+template <class Real, int N, class RoundPoint, class RoundParam>
+Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
+                                const Minima<Real, N>& minima, Real scale, const RoundPoint& round_point,
+                                const RoundParam& round_param) {
+  Result<Real> r;
+  const Minimum<Real>& best = minima.best;
+  bool ambiguous = false;
+  const Vec3<Real> pa = c.at(best.x);
+  const Vec3<Real> pb = round_point(pa, ambiguous);
+  const Real tie = tie_tolerance(std::max(scale, best.value));
+  const Real apart_a = distinct_points_tolerance(std::min(scale, c.size));
+  const Real apart_b = distinct_points_tolerance(scale);
+  for (int i = 0; i < minima.count && !ambiguous; ++i) {
+    const Minimum<Real>& m = minima.item[i];
+    if (!(m.value <= best.value + tie)) continue;
+    bool unused = false;
+    const Vec3<Real> qa = c.at(m.x);
+    const Vec3<Real> qb = round_point(qa, unused);
+    if ((qa - pa).norm() > apart_a || (qb - pb).norm() > apart_b) ambiguous = true;
+  }
+  r.distance = best.value;
+  r.point_a = b.at(best.x);
+  r.point_b = round.world(pb);
+  r.param_a = Vec2<Real>(best.x, 0);
+  r.param_b = round_param(pb);
+  r.unique = !ambiguous;
+  return r;
+}
+
+template <class Real> struct CurveRoundBase {
+  // 2 end points + 6n-2 + 2n + n + (n-1) roots for a disk: 69 at degree 7.
+  using Starts = Candidates<Real, 72>;
+
+  template <class Roots, class H, class J>
+  static Minima<Real, Starts::capacity> polish(const LocalBezier<Real>& c, const Starts& starts, Real scale, const H& h,
+                                               const J& jet) {
+    return polish_offsets<Roots>(jet, h, starts, Real(1e-3), Real(0), Real(1), angle_tolerance(c.speed, scale),
+                                 screening_margin(scale));
+  }
+};
+
+template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRoundBase<Real> {
+  static constexpr bool defined = true;
+  using Base = CurveRoundBase<Real>;
+
+  template <class Roots> static auto solve(const LocalBezier<Real>& c, Real radius, Real scale) {
+    typename Base::Starts starts;
+    starts.push(Real(0));
+    starts.push(Real(1));
+    push_curve_disk_roots<Roots>(c, radius, scale, starts);
+    push_curve_ring_roots<Roots>(c, radius, scale, starts);
+    const auto h = [&](Real t) { return disk_distance_local(c.at(t), radius); };
+    const auto jet = [&](Real t) { return c.jet(t, radius, &disk_jet_of<Real>); };
+    return Base::template polish<Roots>(c, starts, scale, h, jet);
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
+    if (b.control.cols() == 0) return std::numeric_limits<Real>::quiet_NaN();
+    const Round<Real> round(disk.center, disk.normal, disk.radius);
+    const LocalBezier<Real> c(b, round);
+    return solve<Roots>(c, disk.radius, bezier_round_scale(c, disk.radius)).best.value;
+  }
+
+  template <class Roots = DefaultRoots>
+  static Result<Real> closest(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
+    if (b.control.cols() == 0) return Result<Real>{};
+    const Round<Real> round(disk.center, disk.normal, disk.radius);
+    const LocalBezier<Real> c(b, round);
+    const Real scale = bezier_round_scale(c, disk.radius);
+    const auto minima = solve<Roots>(c, disk.radius, scale);
+    return curve_round_result(
+        b, c, round, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
+        &Round<Real>::disk_param);
+  }
+};
+
+template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRoundBase<Real> {
+  static constexpr bool defined = true;
+  using Base = CurveRoundBase<Real>;
+
+  template <class Roots> static auto solve(const LocalBezier<Real>& c, Real radius, Real scale) {
+    typename Base::Starts starts;
+    starts.push(Real(0));
+    starts.push(Real(1));
+    push_curve_ring_roots<Roots>(c, radius, scale, starts);
+    const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
+    const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
+    return Base::template polish<Roots>(c, starts, scale, h, jet);
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {
+    if (b.control.cols() == 0) return std::numeric_limits<Real>::quiet_NaN();
+    const Round<Real> round(circle.center, circle.normal, circle.radius);
+    const LocalBezier<Real> c(b, round);
+    return solve<Roots>(c, circle.radius, bezier_round_scale(c, circle.radius)).best.value;
+  }
+
+  template <class Roots = DefaultRoots>
+  static Result<Real> closest(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {
+    if (b.control.cols() == 0) return Result<Real>{};
+    const Round<Real> round(circle.center, circle.normal, circle.radius);
+    const LocalBezier<Real> c(b, round);
+    const Real scale = bezier_round_scale(c, circle.radius);
+    const auto minima = solve<Roots>(c, circle.radius, scale);
+    return curve_round_result(
+        b, c, round, minima, scale,
+        [&](const Vec3<Real>& p, bool& ambiguous) { return round.ring_point(p, scale, ambiguous); },
+        &Round<Real>::ring_param);
+  }
+};
+
+}  // namespace circledist

@@ -1,0 +1,126 @@
+// Disk against disk (docs/disk_disk.md). Zero when the disks intersect, decided in B's local
+// frame: disk A meets B's plane in a chord (A's points at height 0), and the disks intersect
+// exactly when that chord meets disk B, a 1-D interval overlap along the chord. Coplanar disks
+// (A's heights all within rounding of 0) intersect when their centers are no farther apart than
+// the radii's sum. Otherwise a closest pair has a point on one of the rims, so the distance is
+// min(circle(A)-disk(B), circle(B)-disk(A)) (circle_disk.hpp).
+#pragma once
+
+#include "circle_disk.hpp"
+
+namespace circledist {
+
+// Where two disks meet, if they do: a point common to both (B-local coordinates) and whether it
+// is the only one (the common part shorter than the distinct-points tolerance).
+template <class Real> struct DiskContact {
+  bool intersect = false;
+  bool unique = true;
+  Vec3<Real> point = Vec3<Real>::Zero();
+};
+
+template <class Real> DiskContact<Real> disk_contact(const Disk3<Real>& a, const Round<Real>& round, Real rb) {
+  DiskContact<Real> out;
+  const Frame<Real> fa(a.normal);
+  const Real ra = a.radius;
+  const Vec3<Real> o = round.local(a.center);
+  const Vec3<Real> ua = round.frame.to_local(fa.u), va = round.frame.to_local(fa.v);
+  // Height over B's plane of A's point o + x ua + y va: c + gx x + gy y, |(gx, gy)| = sin(angle).
+  const Real gx = ua.z(), gy = va.z(), c = o.z();
+  const Real sine = length2d(gx, gy);
+  const Real scale = std::max(std::max(ra, rb), o.norm()) > 0 ? std::max(std::max(ra, rb), o.norm()) : Real(1);
+  const Real flat = 16 * std::numeric_limits<Real>::epsilon() * scale;
+  const Real apart = distinct_points_tolerance(scale);
+
+  if (ra * sine <= flat && std::abs(c) <= flat) {
+    // Coplanar within rounding: the overlap of the two disks along the line of centers.
+    const Real d = length2d(o.x(), o.y());
+    if (!(d <= ra + rb)) return out;
+    const Vec2<Real> dir = d > 0 ? Vec2<Real>(o.x() / d, o.y() / d) : Vec2<Real>(1, 0);
+    const Real lo = std::max(-rb, d - ra), hi = std::min(rb, d + ra);
+    const Real mid = (lo + hi) / 2;
+    out.intersect = true;
+    out.point = Vec3<Real>(mid * dir.x(), mid * dir.y(), 0);
+    // The common part: a lens whose common chord has half-length k, or the smaller disk.
+    Real extent = hi - lo;
+    if (d <= std::abs(ra - rb)) {
+      extent = 2 * std::min(ra, rb);
+    } else {
+      const Real x = (d * d + rb * rb - ra * ra) / (2 * d);  // chord's foot from B's center
+      extent = std::max(extent, 2 * std::sqrt(std::max(Real(0), (rb - x) * (rb + x))));
+    }
+    out.unique = !(extent > apart);
+    return out;
+  }
+  if (!(std::abs(c) <= ra * sine)) return out;  // A lies strictly on one side of B's plane
+  // A's chord in B's plane, in A's plane coordinates: foot -c (gx, gy) / sine^2, direction
+  // (-gy, gx) / sine, half-length sqrt(ra^2 - c^2 / sine^2).
+  const Real half = std::sqrt(std::max(Real(0), (ra * sine - std::abs(c)) * (ra * sine + std::abs(c)))) / sine;
+  const Real k = -c / (sine * sine);
+  const Vec3<Real> foot = o + (k * gx) * ua + (k * gy) * va;
+  const Vec3<Real> e = (-gy / sine) * ua + (gx / sine) * va;
+  // The chord meets disk B where |foot_xy + s e_xy| <= rb: e2 s^2 + 2 f s + (|foot_xy|^2 - rb^2) <= 0.
+  const Real e2 = e.x() * e.x() + e.y() * e.y();
+  const Real f = foot.x() * e.x() + foot.y() * e.y();
+  const Real rho = length2d(foot.x(), foot.y());
+  const Real g = (rho - rb) * (rho + rb);
+  const Real disc = f * f - e2 * g;
+  if (!(disc >= 0) || !(e2 > 0)) return out;
+  const Real root = std::sqrt(disc);
+  const Real lo = std::max(-half, (-f - root) / e2), hi = std::min(half, (-f + root) / e2);
+  if (!(lo <= hi)) return out;
+  const Real mid = (lo + hi) / 2;
+  out.intersect = true;
+  out.point = foot + mid * e;
+  out.point.z() = 0;
+  out.unique = !(hi - lo > apart);
+  return out;
+}
+
+template <class Real> struct Query<Disk3<Real>, Disk3<Real>> {
+  static constexpr bool defined = true;
+  using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
+
+  static Circle3<Real> rim(const Disk3<Real>& d) { return {d.center, d.normal, d.radius}; }
+
+  template <class Roots = DefaultRoots> static Real distance(const Disk3<Real>& a, const Disk3<Real>& b) {
+    const Round<Real> round(b.center, b.normal, b.radius);
+    if (disk_contact(a, round, b.radius).intersect) return Real(0);
+    return std::min(CircleDisk::template distance<Roots>(rim(a), b), CircleDisk::template distance<Roots>(rim(b), a));
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Disk3<Real>& a, const Disk3<Real>& b) {
+    const Round<Real> round(b.center, b.normal, b.radius);
+    const DiskContact<Real> contact = disk_contact(a, round, b.radius);
+    if (contact.intersect) {
+      const Round<Real> round_a(a.center, a.normal, a.radius);
+      Result<Real> r;
+      r.distance = 0;
+      r.point_b = round.world(contact.point);
+      r.point_a = r.point_b;
+      r.param_a = Round<Real>::disk_param(round_a.local(r.point_a));
+      r.param_b = Round<Real>::disk_param(contact.point);
+      r.unique = contact.unique;
+      return r;
+    }
+    // The rim's parameter (theta, 0) becomes the disk's (radius, theta): the same frame.
+    Result<Real> ra = CircleDisk::template closest<Roots>(rim(a), b);
+    ra.param_a = Vec2<Real>(a.radius, ra.param_a.x());
+    Result<Real> rb = CircleDisk::template closest<Roots>(rim(b), a).swapped();
+    rb.param_b = Vec2<Real>(b.radius, rb.param_b.x());
+    const bool a_wins = ra.distance <= rb.distance;
+    Result<Real> best = a_wins ? ra : rb;
+    const Result<Real>& other = a_wins ? rb : ra;
+    // Both rims reaching the same distance at a different pair (or with a continuum of their
+    // own) is a tie; the same pair found from both sides is not.
+    const Real scale = std::max(std::max(a.radius, b.radius), (a.center - b.center).norm());
+    const Real apart = distinct_points_tolerance(scale > 0 ? scale : Real(1));
+    if (other.distance <= best.distance + tie_tolerance(std::max(scale, best.distance))) {
+      const bool same_pair =
+          (other.point_a - best.point_a).norm() <= apart && (other.point_b - best.point_b).norm() <= apart;
+      if (!same_pair || !other.unique) best.unique = false;
+    }
+    return best;
+  }
+};
+
+}  // namespace circledist

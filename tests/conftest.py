@@ -1,0 +1,44 @@
+"""Shared pytest configuration for the circledist reference suite.
+
+* makes the helper modules next to this file (reference.py, scenes.py) importable;
+* registers the hypothesis profile "circledist" (deadline off, 60 examples,
+  derandomized so that every run checks the same examples).  Select another
+  profile with HYPOTHESIS_PROFILE=<name> (e.g. "circledist-long", 600 examples).
+"""
+
+import os
+import sys
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+if HERE not in sys.path:
+    sys.path.insert(0, HERE)
+
+try:
+    from hypothesis import HealthCheck, settings
+
+    settings.register_profile(
+        "circledist",
+        deadline=None,
+        max_examples=60,
+        derandomize=True,
+        print_blob=True,
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
+                               HealthCheck.data_too_large],
+    )
+    settings.register_profile(
+        "circledist-long",
+        parent=settings.get_profile("circledist"),
+        max_examples=600,
+        derandomize=False,
+    )
+    settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "circledist"))
+except ImportError:  # pragma: no cover - hypothesis is a test requirement
+    pass
+
+
+@pytest.fixture(scope="session")
+def cd():
+    """The module under test (tests needing it are skipped while it does not import)."""
+    return pytest.importorskip("circledist")
