@@ -16,7 +16,7 @@ template <class Real, class Piece> struct LinearCircleQuery {
     push_linear_candidates(line, exact);
     const auto h = [&](Real tau) { return ring_distance_local(line.at(tau), radius); };
     const auto jet = [&](Real tau) { return ring_jet(line, radius, tau); };
-    return minimize_linear<Roots>(jet, h, line, stationary, exact, scale);
+    return minimize_linear<Roots>(jet, h, line, radius, stationary, exact, scale);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Circle3<Real>& c) {

@@ -42,7 +42,7 @@ template <class Real, class Piece> struct LinearDiskQuery {
     push_rim_crossings(line, radius, exact);
     const auto h = [&](Real tau) { return disk_distance_local(line.at(tau), radius); };
     const auto jet = [&](Real tau) { return disk_jet(line, radius, tau); };
-    return minimize_linear<Roots>(jet, h, line, stationary, exact, scale);
+    return minimize_linear<Roots>(jet, h, line, radius, stationary, exact, scale);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Disk3<Real>& disk) {

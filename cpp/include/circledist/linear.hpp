@@ -127,13 +127,30 @@ template <class Real> Jet<Real> disk_jet(const LocalLinear<Real>& line, Real rad
 // piece's interval, as the root policy asks (Newton on the squared distance `jet`, or a
 // bracketed search), and evaluates the `exact` candidates as they are.
 template <class Roots, class Real, class J, class H>
-Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& line,
+Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& line, Real radius,
                              const Candidates<Real>& stationary, const Candidates<Real>& exact, Real scale) {
   const Real width = Real(1e-3) * scale;
   const Real abs_tol = Real(0.1) * std::sqrt(std::numeric_limits<Real>::epsilon()) * scale;
   Minima<Real> out;
   if constexpr (Roots::polish == Polish::Newton) {
-    out = polish_candidates_newton(jet, h, stationary, width, line.lo, line.hi, abs_tol);
+    // Squaring note 000's condition (P.M) = R (Q-C).M / |Q-C| let in the roots of the other
+    // branch, (P.M) = -R (...): those are no stationary points of the distance, so they are
+    // evaluated but not polished (Newton would fail on them and fall back to a slow search).
+    Candidates<Real> genuine;
+    for (int i = 0; i < stationary.count; ++i) {
+      const Real tau = std::min(std::max(stationary.value[i], line.lo), line.hi);
+      const Vec3<Real> p = line.at(tau);
+      const Real rho = length2d(p.x(), p.y());
+      const Real along = p.dot(line.dir);
+      const Real pull = rho > 0 ? radius * (p.x() * line.dir.x() + p.y() * line.dir.y()) / rho : Real(0);
+      if (std::abs(along - pull) > 4 * std::abs(along + pull) + abs_tol) {
+        out.add(Minimum<Real>{tau, h(tau)});
+      } else {
+        genuine.push(tau);
+      }
+    }
+    const Minima<Real> polished = polish_candidates_newton(jet, h, genuine, width, line.lo, line.hi, abs_tol);
+    for (int i = 0; i < polished.count; ++i) out.add(polished.item[i]);
   } else {
     out = polish_candidates(h, stationary, width, line.lo, line.hi, abs_tol);
   }

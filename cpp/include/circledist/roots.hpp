@@ -241,6 +241,25 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
     if (x >= lo && x <= hi) out[count++] = x;
     return;
   }
+  if (n == 2) {
+    // Closed form: the stable quadratic formula, or the vertex when p nearly touches zero there.
+    const Real disc = c[1] * c[1] - 4 * c[2] * c[0];
+    Real r[2];
+    int k = 0;
+    if (disc > 0) {
+      const Real q = -(c[1] + std::copysign(std::sqrt(disc), c[1])) / 2;
+      r[0] = q / c[2];
+      r[1] = q != 0 ? c[0] / q : Real(0);
+      if (r[0] > r[1]) std::swap(r[0], r[1]);
+      k = 2;
+    } else {
+      const Real vertex = -c[1] / (2 * c[2]);
+      if (std::abs(horner(c, 2, vertex)) <= horner_error(c, 2, vertex)) r[k++] = vertex;
+    }
+    for (int i = 0; i < k; ++i)
+      if (r[i] >= lo && r[i] <= hi) out[count++] = r[i];
+    return;
+  }
   Real dc[kMaxCurveDegree];
   for (int i = 0; i < n; ++i) dc[i] = (i + 1) * c[i + 1];
   Real critical[2 * kMaxCurveDegree];
