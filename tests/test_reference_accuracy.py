@@ -143,14 +143,16 @@ PARAM_CASES = [c for c in CASES if c.lin_kind != "point" and (c.random or c.offs
 @pytest.mark.parametrize("order", ORDERS)
 @pytest.mark.parametrize("case", PARAM_CASES, ids=[c.id for c in PARAM_CASES])
 def test_linear_parameter(cd, case, order):
-    """For lines/rays/segments the parameter reported with a point is the t of the API:
+    """For lines/rays/segments the parameter reported with a point (its first component,
+    if a vector) is the t of the API:
     point = origin + t*direction (segment: p0 + t*(p1 - p0)), t >= 0 for rays, t in [0, 1]
     for segments."""
     a, b = _shapes(cd, case, order)
     res = cd.closest_points(a, b)
     point = np.asarray(res.point_a if order == "lin_first" else res.point_b, float)
     t = np.asarray(res.param_a if order == "lin_first" else res.param_b, float).reshape(-1)
-    assert t.size == 1, f"parameter of a {case.lin_kind} has shape {t.shape}"
+    # the library may report every parameter as a fixed-length vector; t comes first
+    assert t.size >= 1, f"empty parameter for a {case.lin_kind}"
     t = float(t[0])
     data = np.asarray(case.lin_data, float)
     base = data[:3]

@@ -12,23 +12,35 @@ template <int K> struct ShapeOf : Shape {
   using Shape::Shape;
 };
 
-PairTable make_pairs() {
-  PairTable t;
-  using R = double;
-  t.add<V3, Circle3<R>>();
-  t.add<V3, Disk3<R>>();
-  t.add<Line3<R>, Circle3<R>>();
-  t.add<Ray3<R>, Circle3<R>>();
-  t.add<Segment3<R>, Circle3<R>>();
-  t.add<Line3<R>, Disk3<R>>();
-  t.add<Ray3<R>, Disk3<R>>();
-  t.add<Segment3<R>, Disk3<R>>();
-  return t;
+const PairTables& pairs() {
+  static const PairTables tables = [] {
+    PairTables t;
+    register_float(t);
+    register_double(t);
+    register_long_double(t);
+    return t;
+  }();
+  return tables;
 }
 
-const PairTable& pairs() {
-  static const PairTable table = make_pairs();
-  return table;
+// precision=None computes in float when every input field was float32, else in double.
+int precision_of(const py::object& name, const Shape& a, const Shape& b) {
+  if (name.is_none()) return a.single() && b.single() ? kFloat : kDouble;
+  const std::string s = py::str(name);
+  if (s == "float32" || s == "float") return kFloat;
+  if (s == "float64" || s == "double") return kDouble;
+  if (s == "longdouble" || s == "long double" || s == "float128") return kLongDouble;
+  throw py::value_error("precision must be None, 'float32', 'float64' or 'longdouble', got '" + s + "'");
+}
+
+int solver_of(const py::object& name) {
+  if (name.is_none()) return pairs().default_solver;
+  const std::string s = py::str(name);
+  if (s == "companion") return kCompanion;
+  if (s == "polished") return kPolished;
+  if (s == "bracketing") return kBracketing;
+  if (s == "default") return pairs().default_solver;
+  throw py::value_error("solver must be None, 'default', 'companion', 'polished' or 'bracketing', got '" + s + "'");
 }
 
 // A shape argument: a Shape object, or an array-like of points.
@@ -45,8 +57,11 @@ struct Argument {
   }
 };
 
-template <class Fn> Fn lookup(Fn const (&table)[kKindCount][kKindCount], const Shape& a, const Shape& b) {
-  Fn fn = table[a.kind][b.kind];
+template <class Fn>
+Fn lookup(Fn const (PairTable::*table)[kKindCount][kKindCount], const Shape& a, const Shape& b, const py::object& precision,
+          const py::object& solver) {
+  const PairTable& t = pairs().table[precision_of(precision, a, b)][solver_of(solver)];
+  Fn fn = (t.*table)[a.kind][b.kind];
   if (!fn)
     throw py::type_error(std::string("circledist has no query between a ") + kind_name(a.kind) + " and a " +
                          kind_name(b.kind));
@@ -112,17 +127,17 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "distance",
-      [](py::handle a, py::handle b) {
+      [](py::handle a, py::handle b, py::object precision, py::object solver) {
         const Argument x(a), y(b);
-        return lookup(pairs().distance, *x.shape, *y.shape)(*x.shape, *y.shape);
+        return lookup(&PairTable::distance, *x.shape, *y.shape, precision, solver)(*x.shape, *y.shape);
       },
-      py::arg("a"), py::arg("b"),
+      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
       "Distance between a and b: a float for two single shapes, an array of the broadcast batch shape otherwise.");
   m.def(
       "closest_points",
-      [](py::handle a, py::handle b) {
+      [](py::handle a, py::handle b, py::object precision, py::object solver) {
         const Argument x(a), y(b);
-        return lookup(pairs().closest, *x.shape, *y.shape)(*x.shape, *y.shape);
+        return lookup(&PairTable::closest, *x.shape, *y.shape, precision, solver)(*x.shape, *y.shape);
       },
-      py::arg("a"), py::arg("b"), "Distance, closest points on a and b, their parameters and the unique flag.");
+      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(), "Distance, closest points on a and b, their parameters and the unique flag.");
 }

@@ -5,6 +5,7 @@
 #include "shapes.hpp"
 
 #include <array>
+#include <type_traits>
 
 namespace circledist::python {
 
@@ -99,8 +100,19 @@ template <class T> py::array_t<T> new_array(const BatchShape& batch, Index trail
   return py::array_t<T>(shape);
 }
 
-// Evaluation of one ordered pair of C++ primitive types.
-template <class A, class B> struct Pair {
+// A single result: a Python float in float and double, a NumPy long double otherwise.
+template <class Real> py::object scalar(Real value) {
+  if constexpr (std::is_same_v<Real, long double>) {
+    auto out = new_array<long double>({}, 0);
+    *out.mutable_data() = value;
+    return out[py::tuple()];
+  } else {
+    return py::float_(double(value));
+  }
+}
+
+// Evaluation of one ordered pair of C++ primitive types (of scalar Real) with one root policy.
+template <class Roots, class A, class B, class Real> struct PairOf {
   static A first(const double* const* f) { return ShapeTraits<A>::make(f); }
   static B second(const double* const* f, int offset) { return ShapeTraits<B>::make(f + offset); }
 
@@ -111,14 +123,14 @@ template <class A, class B> struct Pair {
       int k = 0;
       for (const Field& x : a.fields) f[k++] = x.data();
       for (const Field& x : b.fields) f[k++] = x.data();
-      return py::float_(circledist::distance(first(f.data()), second(f.data(), nb)));
+      return scalar<Real>(circledist::distance<Roots>(first(f.data()), second(f.data(), nb)));
     }
     const Broadcast bc(a, b);
-    auto out = new_array<double>(bc.shape, 0);
-    double* o = out.mutable_data();
+    auto out = new_array<Real>(bc.shape, 0);
+    Real* o = out.mutable_data();
     {
       py::gil_scoped_release release;
-      bc.for_each([&](Index i, const double* const* f) { o[i] = circledist::distance(first(f), second(f, nb)); });
+      bc.for_each([&](Index i, const double* const* f) { o[i] = circledist::distance<Roots>(first(f), second(f, nb)); });
     }
     return std::move(out);
   }
@@ -126,17 +138,17 @@ template <class A, class B> struct Pair {
   static ClosestPoints closest(const Shape& a, const Shape& b) {
     const int nb = int(a.fields.size());
     const Broadcast bc(a, b);
-    auto dist = new_array<double>(bc.shape, 0);
-    auto pa = new_array<double>(bc.shape, 3), pb = new_array<double>(bc.shape, 3);
-    auto ta = new_array<double>(bc.shape, 2), tb = new_array<double>(bc.shape, 2);
+    auto dist = new_array<Real>(bc.shape, 0);
+    auto pa = new_array<Real>(bc.shape, 3), pb = new_array<Real>(bc.shape, 3);
+    auto ta = new_array<Real>(bc.shape, 2), tb = new_array<Real>(bc.shape, 2);
     auto unique = new_array<bool>(bc.shape, 0);
-    double *d = dist.mutable_data(), *xa = pa.mutable_data(), *xb = pb.mutable_data();
-    double *ua = ta.mutable_data(), *ub = tb.mutable_data();
+    Real *d = dist.mutable_data(), *xa = pa.mutable_data(), *xb = pb.mutable_data();
+    Real *ua = ta.mutable_data(), *ub = tb.mutable_data();
     bool* u = unique.mutable_data();
     {
       py::gil_scoped_release release;
       bc.for_each([&](Index i, const double* const* f) {
-        const Result<double> r = circledist::closest_points(first(f), second(f, nb));
+        const Result<Real> r = circledist::closest_points<Roots>(first(f), second(f, nb));
         d[i] = r.distance;
         for (int k = 0; k < 3; ++k) {
           xa[3 * i + k] = r.point_a[k];
@@ -150,7 +162,7 @@ template <class A, class B> struct Pair {
       });
     }
     if (bc.shape.empty())
-      return {py::float_(d[0]), std::move(pa), std::move(pb), std::move(ta), std::move(tb), py::bool_(u[0])};
+      return {scalar<Real>(d[0]), std::move(pa), std::move(pb), std::move(ta), std::move(tb), py::bool_(u[0])};
     return {std::move(dist), std::move(pa), std::move(pb), std::move(ta), std::move(tb), std::move(unique)};
   }
 };
@@ -158,18 +170,53 @@ template <class A, class B> struct Pair {
 using DistanceFn = py::object (*)(const Shape&, const Shape&);
 using ClosestFn = ClosestPoints (*)(const Shape&, const Shape&);
 
+// The pairs of one precision and root policy, indexed by the kinds of both arguments.
 struct PairTable {
   DistanceFn distance[kKindCount][kKindCount] = {};
   ClosestFn closest[kKindCount][kKindCount] = {};
+};
 
-  // Registers both argument orders of a pair.
+enum Precision : int { kFloat, kDouble, kLongDouble, kPrecisionCount };
+enum Solver : int { kCompanion, kPolished, kBracketing, kSolverCount };
+
+struct PairTables {
+  PairTable table[kPrecisionCount][kSolverCount];
+  int default_solver = kCompanion;
+};
+
+// Registers both argument orders of a pair with one policy.
+template <class Roots, class Real> struct PairRegistrar {
+  PairTable& table;
   template <class A, class B> void add() {
     constexpr int ka = ShapeTraits<A>::kind, kb = ShapeTraits<B>::kind;
-    distance[ka][kb] = &Pair<A, B>::distance;
-    closest[ka][kb] = &Pair<A, B>::closest;
-    distance[kb][ka] = &Pair<B, A>::distance;
-    closest[kb][ka] = &Pair<B, A>::closest;
+    table.distance[ka][kb] = &PairOf<Roots, A, B, Real>::distance;
+    table.closest[ka][kb] = &PairOf<Roots, A, B, Real>::closest;
+    table.distance[kb][ka] = &PairOf<Roots, B, A, Real>::distance;
+    table.closest[kb][ka] = &PairOf<Roots, B, A, Real>::closest;
   }
 };
+
+// The one list of pairs the module offers.
+template <class Real, class Visitor> void for_each_pair(Visitor&& v) {
+  v.template add<Vec3<Real>, Circle3<Real>>();
+  v.template add<Vec3<Real>, Disk3<Real>>();
+  v.template add<Line3<Real>, Circle3<Real>>();
+  v.template add<Ray3<Real>, Circle3<Real>>();
+  v.template add<Segment3<Real>, Circle3<Real>>();
+  v.template add<Line3<Real>, Disk3<Real>>();
+  v.template add<Ray3<Real>, Disk3<Real>>();
+  v.template add<Segment3<Real>, Disk3<Real>>();
+}
+
+template <class Real> void register_precision(PairTable (&tables)[kSolverCount]) {
+  for_each_pair<Real>(PairRegistrar<EigenCompanion, Real>{tables[kCompanion]});
+  for_each_pair<Real>(PairRegistrar<EigenPolished, Real>{tables[kPolished]});
+  for_each_pair<Real>(PairRegistrar<Bracketing, Real>{tables[kBracketing]});
+}
+
+// Defined in pairs_float.cpp, pairs_double.cpp and pairs_longdouble.cpp (compiled in parallel).
+void register_float(PairTables& t);
+void register_double(PairTables& t);
+void register_long_double(PairTables& t);
 
 }  // namespace circledist::python

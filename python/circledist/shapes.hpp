@@ -54,6 +54,7 @@ struct Field {
   py::array_t<double, py::array::c_style | py::array::forcecast> array;
   BatchShape batch;
   Index width;
+  bool single = false;  // given as float32: computing in float reproduces the input exactly
   const double* data() const { return array.data(); }
 };
 
@@ -63,7 +64,10 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
   Field f{name, {}, {}, width};
   py::object converted;
   try {
-    converted = py::module_::import("numpy").attr("asarray")(value, py::arg("dtype") = "float64");
+    const py::module_ numpy = py::module_::import("numpy");
+    const py::object given = numpy.attr("asarray")(value);
+    f.single = py::object(given.attr("dtype")).equal(numpy.attr("dtype")("float32"));
+    converted = numpy.attr("asarray")(given, py::arg("dtype") = "float64");
   } catch (py::error_already_set&) {
     throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
   }
@@ -120,6 +124,12 @@ struct Shape {
   std::vector<Field> fields;
   BatchShape batch;
 
+  bool single() const {
+    for (const Field& f : fields)
+      if (!f.single) return false;
+    return true;
+  }
+
   Shape(int k, std::vector<Field> f) : kind(k), fields(std::move(f)) {
     for (const Field& field : fields) {
       bool ok = true;
@@ -136,32 +146,31 @@ struct Shape {
 // One C++ primitive per kind, built from pointers to one batch element of each field.
 template <class S> struct ShapeTraits;
 
-using V3 = Vec3<double>;
-inline V3 vec(const double* p) { return V3(p[0], p[1], p[2]); }
+template <class Real> Vec3<Real> vec(const double* p) { return Vec3<Real>(Real(p[0]), Real(p[1]), Real(p[2])); }
 
-template <> struct ShapeTraits<V3> {
+template <class Real> struct ShapeTraits<Vec3<Real>> {
   static constexpr int kind = kPoint;
-  static V3 make(const double* const* f) { return vec(f[0]); }
+  static Vec3<Real> make(const double* const* f) { return vec<Real>(f[0]); }
 };
-template <> struct ShapeTraits<Line3<double>> {
+template <class Real> struct ShapeTraits<Line3<Real>> {
   static constexpr int kind = kLine;
-  static Line3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1])}; }
+  static Line3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
-template <> struct ShapeTraits<Ray3<double>> {
+template <class Real> struct ShapeTraits<Ray3<Real>> {
   static constexpr int kind = kRay;
-  static Ray3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1])}; }
+  static Ray3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
-template <> struct ShapeTraits<Segment3<double>> {
+template <class Real> struct ShapeTraits<Segment3<Real>> {
   static constexpr int kind = kSegment;
-  static Segment3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1])}; }
+  static Segment3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
-template <> struct ShapeTraits<Circle3<double>> {
+template <class Real> struct ShapeTraits<Circle3<Real>> {
   static constexpr int kind = kCircle;
-  static Circle3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1]), *f[2]}; }
+  static Circle3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
 };
-template <> struct ShapeTraits<Disk3<double>> {
+template <class Real> struct ShapeTraits<Disk3<Real>> {
   static constexpr int kind = kDisk;
-  static Disk3<double> make(const double* const* f) { return {vec(f[0]), vec(f[1]), *f[2]}; }
+  static Disk3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
 };
 
 }  // namespace circledist::python
