@@ -2,7 +2,7 @@
 
 * makes the helper modules next to this file (reference.py, scenes.py) importable;
 * registers the hypothesis profile "circledist" (deadline off, 60 examples,
-  derandomized so that every run checks the same examples).  Select another
+  derandomized so that every run checks the same examples, no shrinking).  Select another
   profile with HYPOTHESIS_PROFILE=<name> (e.g. "circledist-long", 600 examples).
 """
 
@@ -16,7 +16,7 @@ if HERE not in sys.path:
     sys.path.insert(0, HERE)
 
 try:
-    from hypothesis import HealthCheck, settings
+    from hypothesis import HealthCheck, Phase, settings
 
     settings.register_profile(
         "circledist",
@@ -24,6 +24,9 @@ try:
         max_examples=60,
         derandomize=True,
         print_blob=True,
+        # no shrinking by default: a failing property reports its first counter-example at
+        # once instead of spending ~25 s minimising it (the long profile shrinks)
+        phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.target],
         suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
                                HealthCheck.data_too_large],
     )
@@ -32,6 +35,7 @@ try:
         parent=settings.get_profile("circledist"),
         max_examples=600,
         derandomize=False,
+        phases=list(Phase),
     )
     settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "circledist"))
 except ImportError:  # pragma: no cover - hypothesis is a test requirement

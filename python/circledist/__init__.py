@@ -2,6 +2,7 @@
 and points in 3D, single or batched (NumPy broadcasting)."""
 
 from ._core import (
+    Bezier,
     Circle,
     ClosestPoints,
     Disk,
@@ -17,6 +18,7 @@ from ._core import (
 __version__ = "0.1.0"
 
 __all__ = [
+    "Bezier",
     "Circle",
     "ClosestPoints",
     "Disk",

@@ -110,6 +110,7 @@ PYBIND11_MODULE(_core, m) {
   bind_shape<kSegment>(m, "The segment p0 + t * (p1 - p0), t in [0, 1]; p0 == p1 is a point.");
   bind_shape<kCircle>(m, "The circle (ring) of a center, a normal (any nonzero length) and a radius >= 0.");
   bind_shape<kDisk>(m, "The filled disk of a center, a normal (any nonzero length) and a radius >= 0.");
+  bind_shape<kBezier>(m, "The Bezier curve of control points (k + 1, 3), degree k from 1 to 7, t in [0, 1].");
 
   py::class_<ClosestPoints>(m, "ClosestPoints", "Distance, closest points, parameters and uniqueness of a query.")
       .def_readonly("distance", &ClosestPoints::distance)

@@ -113,30 +113,31 @@ template <class Real> py::object scalar(Real value) {
 
 // Evaluation of one ordered pair of C++ primitive types (of scalar Real) with one root policy.
 template <class Roots, class A, class B, class Real> struct PairOf {
-  static A first(const double* const* f) { return ShapeTraits<A>::make(f); }
-  static B second(const double* const* f, int offset) { return ShapeTraits<B>::make(f + offset); }
+  // The C++ primitives of one element; `points` is each shape's Bezier control point count.
+  static A first(const double* const* f, const Shape& a) { return ShapeTraits<A>::make(f, a.points); }
+  static B second(const double* const* f, const Shape& a, const Shape& b) {
+    return ShapeTraits<B>::make(f + a.fields.size(), b.points);
+  }
 
   static py::object distance(const Shape& a, const Shape& b) {
-    const int nb = int(a.fields.size());
     if (a.batch.empty() && b.batch.empty()) {
       std::array<const double*, kMaxFields> f{};
       int k = 0;
       for (const Field& x : a.fields) f[k++] = x.data();
       for (const Field& x : b.fields) f[k++] = x.data();
-      return scalar<Real>(circledist::distance<Roots>(first(f.data()), second(f.data(), nb)));
+      return scalar<Real>(circledist::distance<Roots>(first(f.data(), a), second(f.data(), a, b)));
     }
     const Broadcast bc(a, b);
     auto out = new_array<Real>(bc.shape, 0);
     Real* o = out.mutable_data();
     {
       py::gil_scoped_release release;
-      bc.for_each([&](Index i, const double* const* f) { o[i] = circledist::distance<Roots>(first(f), second(f, nb)); });
+      bc.for_each([&](Index i, const double* const* f) { o[i] = circledist::distance<Roots>(first(f, a), second(f, a, b)); });
     }
     return std::move(out);
   }
 
   static ClosestPoints closest(const Shape& a, const Shape& b) {
-    const int nb = int(a.fields.size());
     const Broadcast bc(a, b);
     auto dist = new_array<Real>(bc.shape, 0);
     auto pa = new_array<Real>(bc.shape, 3), pb = new_array<Real>(bc.shape, 3);
@@ -148,7 +149,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     {
       py::gil_scoped_release release;
       bc.for_each([&](Index i, const double* const* f) {
-        const Result<Real> r = circledist::closest_points<Roots>(first(f), second(f, nb));
+        const Result<Real> r = circledist::closest_points<Roots>(first(f, a), second(f, a, b));
         d[i] = r.distance;
         for (int k = 0; k < 3; ++k) {
           xa[3 * i + k] = r.point_a[k];
@@ -206,6 +207,11 @@ template <class Real, class Visitor> void for_each_pair(Visitor&& v) {
   v.template add<Line3<Real>, Disk3<Real>>();
   v.template add<Ray3<Real>, Disk3<Real>>();
   v.template add<Segment3<Real>, Disk3<Real>>();
+  v.template add<Circle3<Real>, Circle3<Real>>();
+  v.template add<Circle3<Real>, Disk3<Real>>();
+  v.template add<Disk3<Real>, Disk3<Real>>();
+  v.template add<BezierCurve3<Real>, Disk3<Real>>();
+  v.template add<BezierCurve3<Real>, Circle3<Real>>();
 }
 
 template <class Real> void register_precision(PairTable (&tables)[kSolverCount]) {

@@ -18,10 +18,10 @@ namespace py = pybind11;
 using Index = py::ssize_t;
 using BatchShape = std::vector<Index>;
 
-enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kKindCount };
+enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kBezier, kKindCount };
 
 inline const char* kind_name(int kind) {
-  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk"};
+  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"};
   return names[kind];
 }
 
@@ -60,6 +60,9 @@ struct Field {
 
 enum class Check { Finite, NonzeroVector, NonNegative };
 
+// The width of a field of Bezier control points, (..., k + 1, 3): known once the array is seen.
+constexpr Index kControlPoints = -1;
+
 inline Field make_field(const char* owner, const char* name, py::handle value, Index width, Check check) {
   Field f{name, {}, {}, width};
   py::object converted;
@@ -77,7 +80,16 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
     throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
   }
   const Index ndim = f.array.ndim();
-  if (width == 3) {
+  if (width == kControlPoints) {
+    const Index count = ndim >= 2 ? f.array.shape(ndim - 2) : 0;
+    if (ndim < 2 || f.array.shape(ndim - 1) != 3 || count < 2 || count > kMaxBezierDegree + 1) {
+      BatchShape got(f.array.shape(), f.array.shape() + ndim);
+      throw py::value_error(std::string(owner) + ": " + name + " must have shape (k + 1, 3) or (..., k + 1, 3) with " +
+                            "degree k from 1 to " + std::to_string(kMaxBezierDegree) + ", got " + shape_text(got));
+    }
+    f.width = width = 3 * count;
+    f.batch.assign(f.array.shape(), f.array.shape() + ndim - 2);
+  } else if (width == 3) {
     if (ndim < 1 || f.array.shape(ndim - 1) != 3) {
       BatchShape got(f.array.shape(), f.array.shape() + ndim);
       throw py::value_error(std::string(owner) + ": " + name + " must have shape (3,) or (..., 3), got " +
@@ -123,6 +135,7 @@ struct Shape {
   int kind = kPoint;
   std::vector<Field> fields;
   BatchShape batch;
+  int points = 0;  // control points per Bezier curve
 
   bool single() const {
     for (const Field& f : fields)
@@ -131,6 +144,7 @@ struct Shape {
   }
 
   Shape(int k, std::vector<Field> f) : kind(k), fields(std::move(f)) {
+    if (kind == kBezier) points = int(fields[0].width / 3);
     for (const Field& field : fields) {
       bool ok = true;
       const BatchShape joined = broadcast_shapes(batch, field.batch, ok);
@@ -150,27 +164,36 @@ template <class Real> Vec3<Real> vec(const double* p) { return Vec3<Real>(Real(p
 
 template <class Real> struct ShapeTraits<Vec3<Real>> {
   static constexpr int kind = kPoint;
-  static Vec3<Real> make(const double* const* f) { return vec<Real>(f[0]); }
+  static Vec3<Real> make(const double* const* f, int) { return vec<Real>(f[0]); }
 };
 template <class Real> struct ShapeTraits<Line3<Real>> {
   static constexpr int kind = kLine;
-  static Line3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+  static Line3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
 template <class Real> struct ShapeTraits<Ray3<Real>> {
   static constexpr int kind = kRay;
-  static Ray3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+  static Ray3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
 template <class Real> struct ShapeTraits<Segment3<Real>> {
   static constexpr int kind = kSegment;
-  static Segment3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+  static Segment3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
 template <class Real> struct ShapeTraits<Circle3<Real>> {
   static constexpr int kind = kCircle;
-  static Circle3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+  static Circle3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
 };
 template <class Real> struct ShapeTraits<Disk3<Real>> {
   static constexpr int kind = kDisk;
-  static Disk3<Real> make(const double* const* f) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+  static Disk3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+};
+template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
+  static constexpr int kind = kBezier;
+  static BezierCurve3<Real> make(const double* const* f, int points) {
+    BezierCurve3<Real> curve;
+    curve.control.resize(3, points);
+    for (int i = 0; i < points; ++i) curve.control.col(i) = vec<Real>(f[0] + 3 * i);
+    return curve;
+  }
 };
 
 }  // namespace circledist::python
@@ -190,8 +213,10 @@ inline constexpr FieldSpec kSegmentFields[] = {{"p0", 3, Check::Finite}, {"p1", 
 inline constexpr FieldSpec kRoundFields[] = {
     {"center", 3, Check::Finite}, {"normal", 3, Check::NonzeroVector}, {"radius", 1, Check::NonNegative}};
 
-inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields,
-                                                             kSegmentFields, kRoundFields,  kRoundFields};
-inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3};
+inline constexpr FieldSpec kBezierFields[] = {{"control_points", kControlPoints, Check::Finite}};
+
+inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields, kSegmentFields,
+                                                             kRoundFields,   kRoundFields,  kBezierFields};
+inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1};
 
 }  // namespace circledist::python

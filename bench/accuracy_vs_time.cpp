@@ -1,0 +1,356 @@
+// accuracy_vs_time: distances and timings of every query kind x root policy x precision.
+//
+// Driven by bench/accuracy_vs_time.py, which writes the cases, computes 50-digit references and
+// turns this program's output into docs/accuracy_vs_time.md and the plots.
+//
+//   accuracy_vs_time CASES OUT [--min-time SECONDS] [--kinds a,b,...]
+//
+// CASES is a text file, one case per line:
+//     <kind> <group> <count> <v1> ... <v_count>
+// kind:  a name of the kind table below (e.g. "line-circle");
+// group: 0 random, 1 hard, 2 sweep (sweeps are evaluated but not timed);
+// values: doubles, written so that they round-trip exactly (Python's repr). The float run rounds
+// them to float (to nearest), the long double run extends them exactly.
+// Value layout, the first shape then the second:
+//     point x y z | line, ray ox oy oz dx dy dz | segment p0 p1 |
+//     circle, disk cx cy cz nx ny nz r | bezier k x0 y0 z0 ... (k control points)
+//
+// OUT receives
+//     K <kind> <compiled 0/1>                                   one line per kind of the table
+//     D <case index> <policy> <precision> <distance, 21 digits>  every case x policy x precision
+//     T <kind> <group> <policy> <precision> <cases> <ns/query median> <ns/query min> <samples>
+// Timing: one sample is a number of passes over every case of (kind, group), sized to take
+// about 2 ms; samples are repeated for --min-time seconds (at least 5) and the median (and the
+// smallest) time per query is reported. Single-threaded: one core.
+#include <circledist/primitives.hpp>
+#include <circledist/query.hpp>
+#include <circledist/roots.hpp>
+
+#if __has_include(<circledist/point_circle.hpp>)
+#include <circledist/point_circle.hpp>
+#define CDB_POINT_CIRCLE 1
+#endif
+#if __has_include(<circledist/point_disk.hpp>)
+#include <circledist/point_disk.hpp>
+#define CDB_POINT_DISK 1
+#endif
+#if __has_include(<circledist/line_circle.hpp>)
+#include <circledist/line_circle.hpp>
+#define CDB_LINE_CIRCLE 1
+#endif
+#if __has_include(<circledist/line_disk.hpp>)
+#include <circledist/line_disk.hpp>
+#define CDB_LINE_DISK 1
+#endif
+#if __has_include(<circledist/circle_circle.hpp>)
+#include <circledist/circle_circle.hpp>
+#define CDB_CIRCLE_CIRCLE 1
+#endif
+#if __has_include(<circledist/circle_disk.hpp>)
+#include <circledist/circle_disk.hpp>
+#define CDB_CIRCLE_DISK 1
+#endif
+#if __has_include(<circledist/disk_disk.hpp>)
+#include <circledist/disk_disk.hpp>
+#define CDB_DISK_DISK 1
+#endif
+#if __has_include(<circledist/bezier.hpp>)
+#include <circledist/bezier.hpp>
+#define CDB_BEZIER 1
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace cdb {
+
+using namespace circledist;
+
+// One case as read: kind, group and the values as doubles.
+struct Case {
+  int index = 0;
+  std::string kind;
+  int group = 0;
+  std::vector<double> values;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Shape readers: each takes its values from v starting at i and advances i. false when short.
+// ---------------------------------------------------------------------------------------------
+template <class Real> struct Reader {
+  const std::vector<double>& v;
+  std::size_t i = 0;
+  bool ok = true;
+
+  Real next() {
+    if (i >= v.size()) {
+      ok = false;
+      return Real(0);
+    }
+    return static_cast<Real>(v[i++]);  // float: round to nearest; long double: exact
+  }
+  Vec3<Real> vec() {
+    const Real x = next(), y = next(), z = next();
+    return Vec3<Real>(x, y, z);
+  }
+  void read(Vec3<Real>& p) { p = vec(); }
+  void read(Line3<Real>& l) { l.origin = vec(); l.direction = vec(); }
+  void read(Ray3<Real>& r) { r.origin = vec(); r.direction = vec(); }
+  void read(Segment3<Real>& s) { s.p0 = vec(); s.p1 = vec(); }
+  void read(Circle3<Real>& c) { c.center = vec(); c.normal = vec(); c.radius = next(); }
+  void read(Disk3<Real>& d) { d.center = vec(); d.normal = vec(); d.radius = next(); }
+#ifdef CDB_BEZIER
+  void read(BezierCurve3<Real>& b) {
+    const int k = int(next());
+    if (k < 1 || k > kMaxBezierDegree + 1) {
+      ok = false;
+      return;
+    }
+    b.control.resize(3, k);
+    for (int j = 0; j < k; ++j) b.control.col(j) = vec();
+  }
+#endif
+};
+
+// ---------------------------------------------------------------------------------------------
+// The kind table. A kind is a pair of shape types; adding one is one line in kind_table().
+// ---------------------------------------------------------------------------------------------
+template <template <class> class A, template <class> class B> struct Kind {
+  template <class Real> using First = A<Real>;
+  template <class Real> using Second = B<Real>;
+};
+
+template <class Real> using Point = Vec3<Real>;
+
+const char* policy_names[] = {"EigenCompanion", "EigenPolished", "Bracketing"};
+const char* precision_names[] = {"float", "double", "longdouble"};
+
+struct Output {
+  std::FILE* file;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Distances of every case of one kind, then the timing of each group.
+template <class K, class Real, class Policy>
+void run_one(const std::vector<const Case*>& cases, const std::string& kind, int policy, int precision,
+             double min_time, Output& out) {
+  using SA = typename K::template First<Real>;
+  using SB = typename K::template Second<Real>;
+  struct Item {
+    SA a;
+    SB b;
+    int index, group;
+  };
+  std::vector<Item> items;
+  items.reserve(cases.size());
+  for (const Case* c : cases) {
+    Reader<Real> r{c->values};
+    Item it{};
+    r.read(it.a);
+    r.read(it.b);
+    if (!r.ok) {
+      std::fprintf(stderr, "accuracy_vs_time: case %d (%s) has too few values\n", c->index, kind.c_str());
+      continue;
+    }
+    it.index = c->index;
+    it.group = c->group;
+    items.push_back(it);
+  }
+  for (const Item& it : items) {
+    const Real d = circledist::distance<Policy>(it.a, it.b);
+    std::fprintf(out.file, "D %d %s %s %.21Lg\n", it.index, policy_names[policy], precision_names[precision],
+                 static_cast<long double>(d));
+  }
+  for (int group = 0; group <= 1; ++group) {
+    std::vector<Item> set;
+    for (const Item& it : items)
+      if (it.group == group) set.push_back(it);
+    if (set.empty()) continue;
+    volatile Real sink = 0;
+    auto pass = [&]() {
+      Real sum = 0;
+      for (const Item& it : set) sum += circledist::distance<Policy>(it.a, it.b);
+      sink = sink + sum;
+    };
+    // Warm-up pass, then passes per sample sized to about 2 ms.
+    auto t0 = std::chrono::steady_clock::now();
+    pass();
+    const double one = std::max(seconds_since(t0), 1e-9);
+    const int passes = std::max(1, int(std::ceil(2e-3 / one)));
+    std::vector<double> per_query;
+    const auto start = std::chrono::steady_clock::now();
+    while (per_query.size() < 5 || (seconds_since(start) < min_time && per_query.size() < 1000)) {
+      t0 = std::chrono::steady_clock::now();
+      for (int p = 0; p < passes; ++p) pass();
+      per_query.push_back(seconds_since(t0) * 1e9 / (double(passes) * double(set.size())));
+    }
+    std::sort(per_query.begin(), per_query.end());
+    const std::size_t n = per_query.size();
+    const double median = n % 2 ? per_query[n / 2] : (per_query[n / 2 - 1] + per_query[n / 2]) / 2;
+    std::fprintf(out.file, "T %s %d %s %s %zu %.4f %.4f %zu\n", kind.c_str(), group, policy_names[policy],
+                 precision_names[precision], set.size(), median, per_query.front(), n);
+  }
+}
+
+template <class K, class Real>
+void run_precision(const std::vector<const Case*>& cases, const std::string& kind, int precision, double min_time,
+                   Output& out) {
+  run_one<K, Real, EigenCompanion>(cases, kind, 0, precision, min_time, out);
+  run_one<K, Real, EigenPolished>(cases, kind, 1, precision, min_time, out);
+  run_one<K, Real, Bracketing>(cases, kind, 2, precision, min_time, out);
+}
+
+template <class K> void run_kind(const std::vector<const Case*>& cases, const std::string& kind, double min_time, Output& out) {
+  run_precision<K, float>(cases, kind, 0, min_time, out);
+  run_precision<K, double>(cases, kind, 1, min_time, out);
+  run_precision<K, long double>(cases, kind, 2, min_time, out);
+}
+
+using Runner = std::function<void(const std::vector<const Case*>&, const std::string&, double, Output&)>;
+
+struct KindEntry {
+  std::string name;
+  Runner run;  // empty when the kind's header is not there
+};
+
+template <class K> KindEntry entry(const char* name) { return {name, &run_kind<K>}; }
+KindEntry missing(const char* name) { return {name, Runner()}; }
+
+// Every query kind the benchmark knows. A kind whose header is missing is listed as not compiled.
+std::vector<KindEntry> kind_table() {
+  std::vector<KindEntry> t;
+#ifdef CDB_POINT_CIRCLE
+  t.push_back(entry<Kind<Point, Circle3>>("point-circle"));
+#else
+  t.push_back(missing("point-circle"));
+#endif
+#ifdef CDB_POINT_DISK
+  t.push_back(entry<Kind<Point, Disk3>>("point-disk"));
+#else
+  t.push_back(missing("point-disk"));
+#endif
+#ifdef CDB_LINE_CIRCLE
+  t.push_back(entry<Kind<Line3, Circle3>>("line-circle"));
+  t.push_back(entry<Kind<Ray3, Circle3>>("ray-circle"));
+  t.push_back(entry<Kind<Segment3, Circle3>>("segment-circle"));
+#else
+  for (const char* n : {"line-circle", "ray-circle", "segment-circle"}) t.push_back(missing(n));
+#endif
+#ifdef CDB_LINE_DISK
+  t.push_back(entry<Kind<Line3, Disk3>>("line-disk"));
+  t.push_back(entry<Kind<Ray3, Disk3>>("ray-disk"));
+  t.push_back(entry<Kind<Segment3, Disk3>>("segment-disk"));
+#else
+  for (const char* n : {"line-disk", "ray-disk", "segment-disk"}) t.push_back(missing(n));
+#endif
+#ifdef CDB_CIRCLE_CIRCLE
+  t.push_back(entry<Kind<Circle3, Circle3>>("circle-circle"));
+#else
+  t.push_back(missing("circle-circle"));
+#endif
+#ifdef CDB_CIRCLE_DISK
+  t.push_back(entry<Kind<Circle3, Disk3>>("circle-disk"));
+#else
+  t.push_back(missing("circle-disk"));
+#endif
+#ifdef CDB_DISK_DISK
+  t.push_back(entry<Kind<Disk3, Disk3>>("disk-disk"));
+#else
+  t.push_back(missing("disk-disk"));
+#endif
+#ifdef CDB_BEZIER
+  t.push_back(entry<Kind<BezierCurve3, Disk3>>("bezier-disk"));
+  t.push_back(entry<Kind<BezierCurve3, Circle3>>("bezier-circle"));
+#else
+  t.push_back(missing("bezier-disk"));
+  t.push_back(missing("bezier-circle"));
+#endif
+  return t;
+}
+
+std::vector<Case> read_cases(const char* path) {
+  std::ifstream in(path);
+  if (!in) {
+    std::fprintf(stderr, "accuracy_vs_time: cannot read %s\n", path);
+    std::exit(2);
+  }
+  std::vector<Case> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    Case c;
+    int count = 0;
+    if (!(s >> c.kind >> c.group >> count)) continue;
+    c.values.reserve(count);
+    std::string token;
+    for (int i = 0; i < count && (s >> token); ++i) c.values.push_back(std::strtod(token.c_str(), nullptr));
+    c.index = int(out.size());
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+}  // namespace cdb
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s CASES OUT [--min-time SECONDS] [--kinds a,b,...]\n", argv[0]);
+    return 2;
+  }
+  double min_time = 0.05;
+  std::vector<std::string> only;
+  for (int i = 3; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--min-time" && i + 1 < argc) {
+      min_time = std::atof(argv[++i]);
+    } else if (arg == "--kinds" && i + 1 < argc) {
+      std::stringstream s(argv[++i]);
+      std::string k;
+      while (std::getline(s, k, ',')) only.push_back(k);
+    } else {
+      std::fprintf(stderr, "accuracy_vs_time: unknown argument %s\n", arg.c_str());
+      return 2;
+    }
+  }
+  const std::vector<cdb::Case> cases = cdb::read_cases(argv[1]);
+  std::FILE* file = std::fopen(argv[2], "w");
+  if (!file) {
+    std::fprintf(stderr, "accuracy_vs_time: cannot write %s\n", argv[2]);
+    return 2;
+  }
+  cdb::Output out{file};
+  const auto table = cdb::kind_table();
+  for (const auto& k : table) std::fprintf(file, "K %s %d\n", k.name.c_str(), k.run ? 1 : 0);
+  for (const auto& c : cases) {
+    bool known = false;
+    for (const auto& k : table) known = known || k.name == c.kind;
+    if (!known) std::fprintf(stderr, "accuracy_vs_time: unknown kind %s (case %d)\n", c.kind.c_str(), c.index);
+  }
+  for (const auto& k : table) {
+    if (!k.run) continue;
+    if (!only.empty() && std::find(only.begin(), only.end(), k.name) == only.end()) continue;
+    std::vector<const cdb::Case*> mine;
+    for (const auto& c : cases)
+      if (c.kind == k.name) mine.push_back(&c);
+    if (mine.empty()) continue;
+    std::fprintf(stderr, "accuracy_vs_time: %s (%zu cases)\n", k.name.c_str(), mine.size());
+    k.run(mine, k.name, min_time, out);
+    std::fflush(file);
+  }
+  std::fclose(file);
+  return 0;
+}

@@ -1,0 +1,284 @@
+// bench_queries: the scalar C++ path, circledist::distance(a, b) in a loop on one core in double,
+// timed on exactly the inputs bench_queries.py times in Python.
+//
+//   bench_queries INPUT OUTPUT [--min-time SECONDS]
+//
+// INPUT (written by bench_queries.py), little-endian:
+//     8 bytes  magic "CDBQIN01"
+//     u64      number of kinds
+//     per kind: u64 name length, the name (e.g. "line-disk"), u64 n (queries), u64 w (doubles per
+//               query), then n * w doubles, query after query: the first shape's values, then the
+//               second's.
+// Value layout of one shape:
+//     point x y z | line, ray: origin, direction | segment: p0, p1 |
+//     circle, disk: center, normal, radius | bezier: its control points, x y z each (the count
+//     is whatever the second shape leaves of w).
+// OUTPUT receives "CDBQOUT1", u64 number of kinds, then per kind the name (as above), u64 n and
+// the n distances (0 queries for a kind this build does not know).
+// stdout, one line per kind:
+//     T <kind> <n> <ns/query median> <ns/query min> <passes>     timed
+//     S <kind>                                                   unknown here: skipped
+// One timed pass runs distance() over all n queries; after a warm-up pass (whose distances are
+// the ones written), passes are repeated for --min-time seconds (at least 5, at most 200) and the
+// median time per query is reported.
+//
+// Adding a query kind: one line in kind_table() (and a shape reader below if the shape is new).
+#include <circledist/primitives.hpp>
+#include <circledist/query.hpp>
+
+#if __has_include(<circledist/point_circle.hpp>)
+#include <circledist/point_circle.hpp>
+#define CDB_HAS_POINT_CIRCLE 1
+#endif
+#if __has_include(<circledist/point_disk.hpp>)
+#include <circledist/point_disk.hpp>
+#define CDB_HAS_POINT_DISK 1
+#endif
+#if __has_include(<circledist/line_circle.hpp>)
+#include <circledist/line_circle.hpp>
+#define CDB_HAS_LINE_CIRCLE 1
+#endif
+#if __has_include(<circledist/line_disk.hpp>)
+#include <circledist/line_disk.hpp>
+#define CDB_HAS_LINE_DISK 1
+#endif
+#if __has_include(<circledist/circle_circle.hpp>)
+#include <circledist/circle_circle.hpp>
+#define CDB_HAS_CIRCLE_CIRCLE 1
+#endif
+#if __has_include(<circledist/circle_disk.hpp>)
+#include <circledist/circle_disk.hpp>
+#define CDB_HAS_CIRCLE_DISK 1
+#endif
+#if __has_include(<circledist/disk_disk.hpp>)
+#include <circledist/disk_disk.hpp>
+#define CDB_HAS_DISK_DISK 1
+#endif
+#if __has_include(<circledist/bezier.hpp>)
+#include <circledist/bezier.hpp>
+#define CDB_HAS_BEZIER 1
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Real = double;
+using circledist::Vec3;
+using Point = Vec3<Real>;
+using Line = circledist::Line3<Real>;
+using Ray = circledist::Ray3<Real>;
+using Segment = circledist::Segment3<Real>;
+using Circle = circledist::Circle3<Real>;
+using Disk = circledist::Disk3<Real>;
+
+// ---- shape readers: Width<S>::value doubles per shape (0: variable, takes what is left) ------
+template <class S> struct Width;
+template <> struct Width<Point> { static constexpr int value = 3; };
+template <> struct Width<Line> { static constexpr int value = 6; };
+template <> struct Width<Ray> { static constexpr int value = 6; };
+template <> struct Width<Segment> { static constexpr int value = 6; };
+template <> struct Width<Circle> { static constexpr int value = 7; };
+template <> struct Width<Disk> { static constexpr int value = 7; };
+
+Vec3<Real> vec(const double* v) { return Vec3<Real>(v[0], v[1], v[2]); }
+
+bool read(Point& p, const double* v, int) { p = vec(v); return true; }
+bool read(Line& l, const double* v, int) { l = {vec(v), vec(v + 3)}; return true; }
+bool read(Ray& r, const double* v, int) { r = {vec(v), vec(v + 3)}; return true; }
+bool read(Segment& s, const double* v, int) { s = {vec(v), vec(v + 3)}; return true; }
+bool read(Circle& c, const double* v, int) { c = {vec(v), vec(v + 3), v[6]}; return true; }
+bool read(Disk& d, const double* v, int) { d = {vec(v), vec(v + 3), v[6]}; return true; }
+
+#ifdef CDB_HAS_BEZIER
+using Bezier = circledist::BezierCurve3<Real>;
+template <> struct Width<Bezier> { static constexpr int value = 0; };
+bool read(Bezier& b, const double* v, int width) {
+  const int points = width / 3;
+  if (width % 3 != 0 || points < 1 || points > circledist::kMaxBezierDegree + 1) return false;
+  b.control.resize(3, points);
+  for (int j = 0; j < points; ++j) b.control.col(j) = vec(v + 3 * j);
+  return true;
+}
+#endif
+
+// ---- input and output files ------------------------------------------------------------------
+struct KindData {
+  std::string name;
+  std::uint64_t n = 0, width = 0;
+  std::vector<double> values;
+};
+
+[[noreturn]] void fail(const std::string& message) {
+  std::fprintf(stderr, "bench_queries: %s\n", message.c_str());
+  std::exit(2);
+}
+
+std::uint64_t read_u64(std::FILE* f) {
+  std::uint64_t x = 0;
+  if (std::fread(&x, sizeof x, 1, f) != 1) fail("truncated input");
+  return x;
+}
+
+std::vector<KindData> read_input(const char* path) {
+  std::FILE* f = std::fopen(path, "rb");
+  if (!f) fail(std::string("cannot read ") + path);
+  char magic[8];
+  if (std::fread(magic, 1, 8, f) != 8 || std::memcmp(magic, "CDBQIN01", 8) != 0) fail("bad input magic");
+  std::vector<KindData> out(read_u64(f));
+  for (KindData& k : out) {
+    k.name.resize(read_u64(f));
+    if (!k.name.empty() && std::fread(&k.name[0], 1, k.name.size(), f) != k.name.size()) fail("truncated input");
+    k.n = read_u64(f);
+    k.width = read_u64(f);
+    k.values.resize(k.n * k.width);
+    if (std::fread(k.values.data(), sizeof(double), k.values.size(), f) != k.values.size()) fail("truncated input");
+  }
+  std::fclose(f);
+  return out;
+}
+
+void write_u64(std::FILE* f, std::uint64_t x) { std::fwrite(&x, sizeof x, 1, f); }
+
+// ---- timing ----------------------------------------------------------------------------------
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct Timing {
+  double median_ns = 0, min_ns = 0;
+  int passes = 0;
+};
+
+template <class A, class B>
+Timing run(const KindData& data, double min_time, std::vector<double>& distances) {
+  struct Item {
+    A a;
+    B b;
+  };
+  constexpr int wb = Width<B>::value;
+  static_assert(wb > 0, "the second shape has a fixed width");
+  const int width = int(data.width);
+  const int wa = Width<A>::value > 0 ? Width<A>::value : width - wb;
+  if (wa <= 0 || wa + wb != width) fail(data.name + ": " + std::to_string(width) + " values per query do not fit");
+  std::vector<Item> items(data.n);
+  for (std::uint64_t i = 0; i < data.n; ++i) {
+    const double* v = data.values.data() + i * width;
+    if (!read(items[i].a, v, wa) || !read(items[i].b, v + wa, wb)) fail(data.name + ": bad query " + std::to_string(i));
+  }
+
+  // Warm-up pass: these are the distances written.
+  distances.resize(data.n);
+  auto t0 = std::chrono::steady_clock::now();
+  for (std::uint64_t i = 0; i < data.n; ++i) distances[i] = circledist::distance(items[i].a, items[i].b);
+  const double first = std::max(seconds_since(t0), 1e-9);
+
+  volatile Real sink = 0;
+  const int passes = std::min(200, std::max(5, int(std::ceil(min_time / first))));
+  std::vector<double> per_query;
+  for (int p = 0; p < passes; ++p) {
+    t0 = std::chrono::steady_clock::now();
+    Real sum = 0;
+    for (const Item& it : items) sum += circledist::distance(it.a, it.b);
+    per_query.push_back(seconds_since(t0) * 1e9 / double(std::max<std::uint64_t>(data.n, 1)));
+    sink = sink + sum;
+  }
+  std::sort(per_query.begin(), per_query.end());
+  const std::size_t m = per_query.size();
+  Timing t;
+  t.median_ns = m % 2 ? per_query[m / 2] : (per_query[m / 2 - 1] + per_query[m / 2]) / 2;
+  t.min_ns = per_query.front();
+  t.passes = int(m);
+  return t;
+}
+
+// ---- the kind table --------------------------------------------------------------------------
+using Runner = Timing (*)(const KindData&, double, std::vector<double>&);
+struct KindEntry {
+  const char* name;
+  Runner run;
+};
+
+std::vector<KindEntry> kind_table() {
+  std::vector<KindEntry> t;
+#ifdef CDB_HAS_POINT_CIRCLE
+  t.push_back({"point-circle", &run<Point, Circle>});
+#endif
+#ifdef CDB_HAS_POINT_DISK
+  t.push_back({"point-disk", &run<Point, Disk>});
+#endif
+#ifdef CDB_HAS_LINE_CIRCLE
+  t.push_back({"line-circle", &run<Line, Circle>});
+  t.push_back({"ray-circle", &run<Ray, Circle>});
+  t.push_back({"segment-circle", &run<Segment, Circle>});
+#endif
+#ifdef CDB_HAS_LINE_DISK
+  t.push_back({"line-disk", &run<Line, Disk>});
+  t.push_back({"ray-disk", &run<Ray, Disk>});
+  t.push_back({"segment-disk", &run<Segment, Disk>});
+#endif
+#ifdef CDB_HAS_CIRCLE_CIRCLE
+  t.push_back({"circle-circle", &run<Circle, Circle>});
+#endif
+#ifdef CDB_HAS_CIRCLE_DISK
+  t.push_back({"circle-disk", &run<Circle, Disk>});
+#endif
+#ifdef CDB_HAS_DISK_DISK
+  t.push_back({"disk-disk", &run<Disk, Disk>});
+#endif
+#ifdef CDB_HAS_BEZIER
+  t.push_back({"bezier-circle", &run<Bezier, Circle>});
+  t.push_back({"bezier-disk", &run<Bezier, Disk>});
+#endif
+  return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s INPUT OUTPUT [--min-time SECONDS]\n", argv[0]);
+    return 2;
+  }
+  double min_time = 0.5;
+  for (int i = 3; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--min-time") == 0 && i + 1 < argc) {
+      min_time = std::atof(argv[++i]);
+    } else {
+      fail(std::string("unknown argument ") + argv[i]);
+    }
+  }
+  const std::vector<KindData> kinds = read_input(argv[1]);
+  const std::vector<KindEntry> table = kind_table();
+
+  std::FILE* out = std::fopen(argv[2], "wb");
+  if (!out) fail(std::string("cannot write ") + argv[2]);
+  std::fwrite("CDBQOUT1", 1, 8, out);
+  write_u64(out, kinds.size());
+  for (const KindData& k : kinds) {
+    const auto entry = std::find_if(table.begin(), table.end(), [&](const KindEntry& e) { return k.name == e.name; });
+    std::vector<double> distances;
+    if (entry == table.end()) {
+      std::printf("S %s\n", k.name.c_str());
+    } else {
+      const Timing t = entry->run(k, min_time, distances);
+      std::printf("T %s %llu %.4f %.4f %d\n", k.name.c_str(), static_cast<unsigned long long>(k.n), t.median_ns,
+                  t.min_ns, t.passes);
+    }
+    std::fflush(stdout);
+    write_u64(out, k.name.size());
+    std::fwrite(k.name.data(), 1, k.name.size(), out);
+    write_u64(out, distances.size());
+    std::fwrite(distances.data(), sizeof(double), distances.size(), out);
+  }
+  std::fclose(out);
+  return 0;
+}

@@ -1,0 +1,302 @@
+// Cheap exact bounds on the distance between two shapes, with no polynomial solved: what
+// within() and intersects() (effects.hpp) try before the solvers, and what a broadphase culls on.
+//
+// Lower bounds (the distance is at least):
+//   - bounding balls: |c_a - c_b| - r_a - r_b for bounded shapes; the closed-form distance from a
+//     line or ray to the other's ball center, less its radius, for unbounded ones;
+//   - plane sides: a shape lying wholly on one side of a circle's or disk's plane is at least its
+//     smallest height over that plane away from it (every point of the round is in the plane);
+//   - a shape inside a circle's ball is at least the circle's radius less its own reach from the
+//     circle's center away from the ring (every ring point is at the radius from the center).
+// Upper bounds (the distance is at most): the closed-form point-circle / point-disk distance of a
+// few concrete points of the other shape (the point of a segment, circle or disk nearest to the
+// round's center, where it crosses the round's plane, a curve's end points and middle), and the
+// exact disk-disk contact test (disk_disk.hpp, closed form).
+// Every bound is exact up to rounding: callers keep a margin of sqrt(eps) * scale around them.
+#pragma once
+
+#include "sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace circledist {
+
+template <class Real> struct DistanceBounds {
+  Real lower = 0;                                         // the distance is >= lower
+  Real upper = std::numeric_limits<Real>::infinity();     // the distance is <= upper
+  Real scale = 1;                                         // the pair's length scale (for tolerances)
+};
+
+// A ball holding the shape; radius +inf for unbounded shapes (lines, rays).
+template <class Real> struct Ball {
+  Vec3<Real> center = Vec3<Real>::Zero();
+  Real radius = std::numeric_limits<Real>::infinity();
+  bool bounded() const { return radius < std::numeric_limits<Real>::infinity(); }
+};
+
+template <class Real> Ball<Real> bounding_ball(const Vec3<Real>& p) { return {p, Real(0)}; }
+template <class Real> Ball<Real> bounding_ball(const Line3<Real>& l) { return {l.origin}; }
+template <class Real> Ball<Real> bounding_ball(const Ray3<Real>& r) { return {r.origin}; }
+template <class Real> Ball<Real> bounding_ball(const Segment3<Real>& s) {
+  return {(s.p0 + s.p1) / 2, (s.p1 - s.p0).norm() / 2};
+}
+template <class Real> Ball<Real> bounding_ball(const Circle3<Real>& c) { return {c.center, c.radius}; }
+template <class Real> Ball<Real> bounding_ball(const Disk3<Real>& d) { return {d.center, d.radius}; }
+// The curve lies in its control points' convex hull, so in the ball around their box's center.
+template <class Real> Ball<Real> bounding_ball(const BezierCurve3<Real>& b) {
+  if (b.control.cols() == 0) return {};
+  const Vec3<Real> lo = b.control.rowwise().minCoeff(), hi = b.control.rowwise().maxCoeff();
+  Ball<Real> out{(lo + hi) / 2, Real(0)};
+  for (int i = 0; i < int(b.control.cols()); ++i) {
+    out.radius = std::max(out.radius, (b.control.col(i) - out.center).norm());
+  }
+  return out;
+}
+template <class S> Ball<scalar_t<S>> bounding_ball(const Swept<S>& s) {
+  Ball<scalar_t<S>> b = bounding_ball(s.shape);
+  b.radius += s.sweep;
+  return b;
+}
+
+// The closed-form distance from a point to a line, ray or segment (t clamped to the interval).
+template <class Real> Real point_linear_distance(const Vec3<Real>& p, const Linear<Real>& piece) {
+  const Vec3<Real> w = p - piece.origin;
+  const Real dd = piece.direction.squaredNorm();
+  if (!(dd > 0)) return w.norm();
+  const Real t = std::min(std::max(w.dot(piece.direction) / dd, piece.lo), piece.hi);
+  return (w - t * piece.direction).norm();
+}
+
+// A round's plane: heights h(x) = n.(x - c) with n of unit length.
+template <class Real> struct Plane {
+  Vec3<Real> center, n;
+  template <class R> explicit Plane(const R& round) : center(round.center), n(round.normal / round.normal.norm()) {}
+  Real height(const Vec3<Real>& x) const { return n.dot(x - center); }
+};
+
+// The range [lo, hi] of heights a shape takes over a plane (infinite ends for unbounded ones).
+template <class Real> struct Range {
+  Real lo, hi;
+  // The smallest |height|: > 0 when the shape lies strictly on one side.
+  Real gap() const { return lo > 0 ? lo : (hi < 0 ? -hi : Real(0)); }
+};
+
+template <class Real> Range<Real> height_range(const Vec3<Real>& p, const Plane<Real>& plane) {
+  const Real h = plane.height(p);
+  return {h, h};
+}
+template <class Real> Range<Real> linear_height_range(const Linear<Real>& piece, const Plane<Real>& plane) {
+  const Real inf = std::numeric_limits<Real>::infinity();
+  const Real h = plane.height(piece.origin), slope = plane.n.dot(piece.direction);
+  if (slope == 0) return {h, h};
+  const Real a = std::isfinite(piece.lo) ? h + piece.lo * slope : (slope > 0 ? -inf : inf);
+  const Real b = std::isfinite(piece.hi) ? h + piece.hi * slope : (slope > 0 ? inf : -inf);
+  return {std::min(a, b), std::max(a, b)};
+}
+template <class Real> Range<Real> height_range(const Line3<Real>& l, const Plane<Real>& plane) {
+  return linear_height_range(as_linear(l), plane);
+}
+template <class Real> Range<Real> height_range(const Ray3<Real>& r, const Plane<Real>& plane) {
+  return linear_height_range(as_linear(r), plane);
+}
+template <class Real> Range<Real> height_range(const Segment3<Real>& s, const Plane<Real>& plane) {
+  const Real a = plane.height(s.p0), b = plane.height(s.p1);
+  return {std::min(a, b), std::max(a, b)};
+}
+template <class Real, class R> Range<Real> round_height_range(const R& round, const Plane<Real>& plane) {
+  const Real h = plane.height(round.center);
+  const Vec3<Real> m = round.normal / round.normal.norm();
+  const Real spread = round.radius * plane.n.cross(m).norm();  // radius * sin(angle between the planes)
+  return {h - spread, h + spread};
+}
+template <class Real> Range<Real> height_range(const Circle3<Real>& c, const Plane<Real>& plane) {
+  return round_height_range(c, plane);
+}
+template <class Real> Range<Real> height_range(const Disk3<Real>& d, const Plane<Real>& plane) {
+  return round_height_range(d, plane);
+}
+template <class Real> Range<Real> height_range(const BezierCurve3<Real>& b, const Plane<Real>& plane) {
+  Range<Real> r{std::numeric_limits<Real>::infinity(), -std::numeric_limits<Real>::infinity()};
+  for (int i = 0; i < int(b.control.cols()); ++i) {
+    const Real h = plane.height(b.control.col(i));
+    r.lo = std::min(r.lo, h);
+    r.hi = std::max(r.hi, h);
+  }
+  return r;
+}
+
+template <class T> struct is_round : std::false_type {};
+template <class Real> struct is_round<Circle3<Real>> : std::true_type {};
+template <class Real> struct is_round<Disk3<Real>> : std::true_type {};
+template <class T> constexpr bool is_round_v = is_round<T>::value;
+template <class T> constexpr bool is_disk_v = std::is_same_v<T, Disk3<scalar_t<T>>>;
+template <class T> constexpr bool is_circle_v = std::is_same_v<T, Circle3<scalar_t<T>>>;
+template <class T> constexpr bool is_point_v = std::is_same_v<T, Vec3<scalar_t<T>>>;
+template <class T> constexpr bool is_linear_v =
+    std::is_same_v<T, Line3<scalar_t<T>>> || std::is_same_v<T, Ray3<scalar_t<T>>> ||
+    std::is_same_v<T, Segment3<scalar_t<T>>>;
+
+// The exact distance from a point to a round (closed form).
+template <class Real> Real point_round_distance(const Vec3<Real>& p, const Circle3<Real>& c) {
+  return Query<Vec3<Real>, Circle3<Real>>::distance(p, c);
+}
+template <class Real> Real point_round_distance(const Vec3<Real>& p, const Disk3<Real>& d) {
+  return Query<Vec3<Real>, Disk3<Real>>::distance(p, d);
+}
+
+// Calls visit(point) for a few concrete points of a shape likely to be near a round: see the
+// header comment. Every point lies on the shape (up to rounding).
+template <class Real, class R, class Visit> void sample_points(const Vec3<Real>& p, const R&, const Visit& visit) {
+  visit(p);
+}
+
+template <class Real, class R, class Visit>
+void sample_linear_points(const Linear<Real>& piece, const R& round, const Visit& visit) {
+  const Real dd = piece.direction.squaredNorm();
+  if (!(dd > 0)) {
+    visit(piece.origin);
+    return;
+  }
+  const auto at = [&](Real t) {
+    t = std::min(std::max(t, piece.lo), piece.hi);
+    return Vec3<Real>(piece.origin + t * piece.direction);
+  };
+  visit(at((round.center - piece.origin).dot(piece.direction) / dd));  // nearest to the center
+  const Plane<Real> plane(round);
+  const Real slope = plane.n.dot(piece.direction);
+  if (slope != 0) visit(at(-plane.height(piece.origin) / slope));  // the plane crossing
+}
+template <class Real, class R, class Visit> void sample_points(const Line3<Real>& l, const R& round, const Visit& visit) {
+  sample_linear_points(as_linear(l), round, visit);
+}
+template <class Real, class R, class Visit> void sample_points(const Ray3<Real>& l, const R& round, const Visit& visit) {
+  sample_linear_points(as_linear(l), round, visit);
+}
+template <class Real, class R, class Visit>
+void sample_points(const Segment3<Real>& s, const R& round, const Visit& visit) {
+  sample_linear_points(as_linear(s), round, visit);
+}
+
+// A circle or disk A (center c, unit normal m, radius ra) against the round B: the point of A
+// nearest to B's center and A's rim crossings of B's plane; for a disk also the point of its
+// chord in B's plane nearest to B's center.
+template <class Real, class A, class R, class Visit>
+void sample_round_points(const A& a, bool filled, const R& round, const Visit& visit) {
+  const Vec3<Real> m = a.normal / a.normal.norm();
+  const Real ra = a.radius;
+  const Vec3<Real> q = round.center - a.center;
+  const Vec3<Real> in_plane = q - m.dot(q) * m;
+  const Real rho = in_plane.norm();
+  if (filled && rho <= ra) {
+    visit(Vec3<Real>(a.center + in_plane));
+  } else if (rho > 0) {
+    visit(Vec3<Real>(a.center + (ra / rho) * in_plane));
+  } else {
+    visit(Vec3<Real>(a.center + ra * Frame<Real>(m).u));
+  }
+  // Heights over B's plane along A: h(alpha) = hc + ra s cos(alpha) with alpha measured from e1,
+  // the direction of steepest ascent in A's plane (s = |e1 unnormalized| = sin of the angle).
+  const Plane<Real> plane(round);
+  const Vec3<Real> g = plane.n - plane.n.dot(m) * m;
+  const Real s = g.norm();
+  if (!(s > 0) || !(ra > 0)) return;
+  const Vec3<Real> e1 = g / s, e2 = m.cross(e1);
+  const Real hc = plane.height(a.center);
+  const Real x = -hc / s;  // the chord's offset along e1
+  if (!(std::abs(x) <= ra)) return;
+  const Real half = std::sqrt(std::max(Real(0), (ra - x) * (ra + x)));
+  const Vec3<Real> foot = a.center + x * e1;
+  visit(Vec3<Real>(foot + half * e2));
+  visit(Vec3<Real>(foot - half * e2));
+  if (filled) {
+    const Real y = std::min(std::max((round.center - foot).dot(e2), -half), half);
+    visit(Vec3<Real>(foot + y * e2));
+  }
+}
+template <class Real, class R, class Visit>
+void sample_points(const Circle3<Real>& c, const R& round, const Visit& visit) {
+  sample_round_points<Real>(c, false, round, visit);
+}
+template <class Real, class R, class Visit> void sample_points(const Disk3<Real>& d, const R& round, const Visit& visit) {
+  sample_round_points<Real>(d, true, round, visit);
+}
+template <class Real, class R, class Visit>
+void sample_points(const BezierCurve3<Real>& b, const R&, const Visit& visit) {
+  if (b.control.cols() == 0) return;
+  visit(Vec3<Real>(b.control.col(0)));
+  visit(Vec3<Real>(b.control.col(b.control.cols() - 1)));
+  visit(b.at(Real(0.5)));
+}
+
+// The pair's length scale: the sizes and the separation of the bounding balls.
+template <class Real, class A> Real pair_scale(const Ball<Real>& ball_a, const A& a, const Ball<Real>& ball_b) {
+  Real s = ball_b.radius;
+  if (ball_a.bounded()) {
+    s = std::max({s, ball_a.radius, (ball_a.center - ball_b.center).norm()});
+  } else if constexpr (is_linear_v<A>) {
+    s = std::max(s, point_linear_distance(ball_b.center, as_linear(a)));
+  }
+  return s > 0 ? s : Real(1);
+}
+
+// Bounds for any shape A against a round B.
+template <class A, class R> DistanceBounds<scalar_t<R>> bounds_against_round(const A& a, const R& b) {
+  using Real = scalar_t<R>;
+  DistanceBounds<Real> out;
+  const Ball<Real> ball_a = bounding_ball(a), ball_b = bounding_ball(b);
+  out.scale = pair_scale(ball_a, a, ball_b);
+  // Lower: balls.
+  if (ball_a.bounded()) {
+    const Real apart = (ball_a.center - ball_b.center).norm();
+    out.lower = std::max(out.lower, apart - ball_a.radius - ball_b.radius);
+    // Inside a circle's ball, away from its ring.
+    if constexpr (is_circle_v<R>) out.lower = std::max(out.lower, b.radius - apart - ball_a.radius);
+    if constexpr (is_circle_v<A>) out.lower = std::max(out.lower, a.radius - apart - ball_b.radius);
+  } else if constexpr (is_linear_v<A>) {
+    out.lower = std::max(out.lower, point_linear_distance(b.center, as_linear(a)) - b.radius);
+  }
+  // Lower: plane sides.
+  out.lower = std::max(out.lower, height_range(a, Plane<Real>(b)).gap());
+  if constexpr (is_round_v<A>) out.lower = std::max(out.lower, height_range(b, Plane<Real>(a)).gap());
+  // Upper: concrete points.
+  if constexpr (is_disk_v<A> && is_disk_v<R>) {
+    if (disk_contact(a, Round<Real>(b.center, b.normal, b.radius), b.radius).intersect) {
+      out.upper = 0;
+      return out;
+    }
+  }
+  sample_points(a, b, [&](const Vec3<Real>& p) { out.upper = std::min(out.upper, point_round_distance(p, b)); });
+  if constexpr (is_round_v<A>) {
+    sample_points(b, a, [&](const Vec3<Real>& p) { out.upper = std::min(out.upper, point_round_distance(p, a)); });
+  }
+  return out;
+}
+
+// Whether bounds are worth computing for a pair: one side is a circle or disk and the other is not
+// a bare point (point-round distances are closed forms already cheaper than the bounds).
+template <class A, class B>
+constexpr bool has_bounds_v = (is_round_v<A> || is_round_v<B>) && !is_point_v<A> && !is_point_v<B>;
+
+// Bounds on the distance between the cores of a and b, then the sweeps taken off.
+template <class A, class B> DistanceBounds<scalar_t<core_t<A>>> distance_bounds(const A& a, const B& b) {
+  using Real = scalar_t<core_t<A>>;
+  using CA = core_t<A>;
+  using CB = core_t<B>;
+  static_assert(has_bounds_v<CA, CB>, "circledist: no bounds for this pair of shapes");
+  DistanceBounds<Real> out;
+  if constexpr (is_round_v<CB>) {
+    out = bounds_against_round(core(a), core(b));
+  } else {
+    out = bounds_against_round(core(b), core(a));
+  }
+  const Real ra = sweep_of(a), rb = sweep_of(b);
+  out.lower = (out.lower - ra) - rb;
+  out.upper = swept_distance(out.upper, ra, rb);
+  out.scale = out.scale + ra + rb;
+  return out;
+}
+
+}  // namespace circledist

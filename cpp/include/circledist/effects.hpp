@@ -1,0 +1,165 @@
+// Requested effects, from cheapest to dearest: intersects(a, b) and within(a, b, d) (booleans),
+// distance(a, b) (query.hpp: never builds closest points), closest_points(a, b). The booleans
+// first try the cheap exact bounds of bounds.hpp and run the polynomial solver only when the
+// bounds cannot decide. Every shape may be swept (sweep.hpp).
+//
+// Definitions. With D the library's distance(a, b) and s the pair's length scale,
+//   within(a, b, d)   is   D <= d + tol,   tol = 64 eps (s + d)   (d >= 0; false for d < 0),
+//   intersects(a, b)  is   within(a, b, 0).
+// The tolerance absorbs the rounding of D itself: a segment through a disk computes its height at
+// the crossing as ~1e-17, not 0. The bounds decide only with a margin of sqrt(eps) (s + d) to
+// spare (far above the solvers' error), so a decision by bounds always agrees with the solver;
+// the answer is the same as `distance(a, b) <= d + tol` computed for every pair.
+//
+// Counters (Stats, one set per thread) let callers and tests see the work done:
+//   solves             polynomial solves (calls of a root policy wrapped in Counted<>)
+//   distances          exact distance evaluations (one per pair, including within()'s fallbacks)
+//   closest_points     closest-point evaluations
+//   within             within() / intersects() / distance_if_within() pair tests
+//   decided_by_bounds  of those, the ones the bounds decided (no exact distance evaluated)
+//   culled             pairs a broadphase (a scene's bounding-volume hierarchy) skipped unseen
+// within() and friends always count; circledist::distance() / closest_points() count solves only
+// when given a Counted<> root policy (the Python module always does).
+#pragma once
+
+#include "bounds.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+namespace circledist {
+
+struct Stats {
+  std::uint64_t solves = 0;
+  std::uint64_t distances = 0;
+  std::uint64_t closest_points = 0;
+  std::uint64_t within = 0;
+  std::uint64_t decided_by_bounds = 0;
+  std::uint64_t culled = 0;
+};
+
+// The calling thread's counters.
+inline Stats& stats() {
+  static thread_local Stats s;
+  return s;
+}
+inline void reset_stats() { stats() = Stats{}; }
+
+// A root policy that counts its calls in stats().solves and otherwise is `Roots`.
+template <class Roots> struct Counted {
+  static constexpr Polish polish = Roots::polish;
+  using Inner = Roots;
+
+  template <class Real, int Capacity>
+  static auto roots(const Real* coefficients, int degree, Candidates<Real, Capacity>& out)
+      -> decltype(Roots::roots(coefficients, degree, out)) {
+    ++stats().solves;
+    return Roots::roots(coefficients, degree, out);
+  }
+};
+
+template <class Roots> struct counted_policy {
+  using type = Counted<Roots>;
+};
+template <class Roots> struct counted_policy<Counted<Roots>> {
+  using type = Counted<Roots>;
+};
+template <class Roots> using counted_t = typename counted_policy<Roots>::type;
+
+// The tolerance of within(): see the header comment.
+template <class Real> Real touch_tolerance(Real scale) { return 64 * std::numeric_limits<Real>::epsilon() * scale; }
+template <class Real> Real bounds_margin(Real scale) { return std::sqrt(std::numeric_limits<Real>::epsilon()) * scale; }
+
+// What the bounds say about `distance <= limit (+ tol)`: decided true, decided false, or unknown.
+enum class Verdict { No, Yes, Unknown };
+
+template <class Real> Verdict judge(const DistanceBounds<Real>& b, Real limit) {
+  const Real scale = b.scale + limit;
+  const Real tol = touch_tolerance(scale), margin = bounds_margin(scale);
+  if (b.lower > limit + tol + margin) return Verdict::No;
+  if (b.upper + margin <= limit || b.upper <= tol / 2) return Verdict::Yes;
+  return Verdict::Unknown;
+}
+
+// The pair's length scale when no bounds were computed (closed-form pairs).
+template <class A, class B> scalar_t<core_t<A>> plain_scale(const A& a, const B& b) {
+  using Real = scalar_t<core_t<A>>;
+  const Ball<Real> ba = bounding_ball(a), bb = bounding_ball(b);
+  if (!ba.bounded() || !bb.bounded()) return Real(1);
+  const Real s = std::max({ba.radius, bb.radius, (ba.center - bb.center).norm()});
+  return s > 0 ? s : Real(1);
+}
+
+template <class A, class B> constexpr bool pair_has_bounds_v = has_bounds_v<core_t<A>, core_t<B>>;
+
+// The distance when it is at most d (+ tol), +inf otherwise: the exact distance is evaluated
+// only when the bounds cannot show it exceeds d. (What a nearest-neighbour search asks.)
+template <class Roots = DefaultRoots, class A, class B>
+scalar_t<core_t<A>> distance_if_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+  using Real = scalar_t<core_t<A>>;
+  Stats& st = stats();
+  ++st.within;
+  const Real inf = std::numeric_limits<Real>::infinity();
+  if (!(d >= 0)) {
+    ++st.decided_by_bounds;
+    return inf;
+  }
+  Real scale;
+  if constexpr (pair_has_bounds_v<A, B>) {
+    const DistanceBounds<Real> bounds = distance_bounds(a, b);
+    if (judge(bounds, d) == Verdict::No) {
+      ++st.decided_by_bounds;
+      return inf;
+    }
+    scale = bounds.scale;
+  } else {
+    scale = plain_scale(a, b);
+  }
+  ++st.distances;
+  const Real D = circledist::distance<counted_t<Roots>>(a, b);
+  return D <= d + touch_tolerance(scale + d) ? D : inf;
+}
+
+// distance(a, b) <= d + tol, deciding by bounds where they suffice.
+template <class Roots = DefaultRoots, class A, class B> bool within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+  using Real = scalar_t<core_t<A>>;
+  Stats& st = stats();
+  ++st.within;
+  if (!(d >= 0)) {
+    ++st.decided_by_bounds;
+    return false;
+  }
+  Real scale;
+  if constexpr (pair_has_bounds_v<A, B>) {
+    const DistanceBounds<Real> bounds = distance_bounds(a, b);
+    const Verdict v = judge(bounds, d);
+    if (v != Verdict::Unknown) {
+      ++st.decided_by_bounds;
+      return v == Verdict::Yes;
+    }
+    scale = bounds.scale;
+  } else {
+    scale = plain_scale(a, b);
+  }
+  ++st.distances;
+  return circledist::distance<counted_t<Roots>>(a, b) <= d + touch_tolerance(scale + d);
+}
+
+// Whether the shapes touch or overlap: within(a, b, 0).
+template <class Roots = DefaultRoots, class A, class B> bool intersects(const A& a, const B& b) {
+  return within<Roots>(a, b, scalar_t<core_t<A>>(0));
+}
+
+// distance() and closest_points() that count their evaluations and solves in stats().
+template <class Roots = DefaultRoots, class A, class B> auto counted_distance(const A& a, const B& b) {
+  ++stats().distances;
+  return circledist::distance<counted_t<Roots>>(a, b);
+}
+template <class Roots = DefaultRoots, class A, class B> auto counted_closest_points(const A& a, const B& b) {
+  ++stats().closest_points;
+  return circledist::closest_points<counted_t<Roots>>(a, b);
+}
+
+}  // namespace circledist
