@@ -213,74 +213,72 @@ void run_precision(const std::vector<const Case*>& cases, const std::string& kin
   run_one<K, Real, Bracketing>(cases, kind, 2, precision, min_time, out);
 }
 
-template <class K> void run_kind(const std::vector<const Case*>& cases, const std::string& kind, double min_time, Output& out) {
-  run_precision<K, float>(cases, kind, 0, min_time, out);
-  run_precision<K, double>(cases, kind, 1, min_time, out);
-  run_precision<K, long double>(cases, kind, 2, min_time, out);
+using Runner = void (*)(const std::vector<const Case*>&, const std::string&, int, double, Output&);
+
+// Every kind the benchmark knows, in table order; those whose header is missing are reported as
+// not compiled.
+const char* all_kind_names[] = {"point-circle", "point-disk",    "line-circle", "ray-circle",
+                                "segment-circle", "line-disk",   "ray-disk",    "segment-disk",
+                                "circle-circle", "circle-disk",  "disk-disk",   "bezier-disk",
+                                "bezier-circle"};
+
+template <class K, class Real> void add(std::map<std::string, Runner>& t, const char* name) {
+  t[name] = &run_precision<K, Real>;
 }
 
-using Runner = std::function<void(const std::vector<const Case*>&, const std::string&, double, Output&)>;
-
-struct KindEntry {
-  std::string name;
-  Runner run;  // empty when the kind's header is not there
-};
-
-template <class K> KindEntry entry(const char* name) { return {name, &run_kind<K>}; }
-KindEntry missing(const char* name) { return {name, Runner()}; }
-
-// Every query kind the benchmark knows. A kind whose header is missing is listed as not compiled.
-std::vector<KindEntry> kind_table() {
-  std::vector<KindEntry> t;
+// The kind table for one precision: one line per kind (a pair of shape types).
+template <class Real> std::map<std::string, Runner> kind_table() {
+  std::map<std::string, Runner> t;
 #ifdef CDB_POINT_CIRCLE
-  t.push_back(entry<Kind<Point, Circle3>>("point-circle"));
-#else
-  t.push_back(missing("point-circle"));
+  add<Kind<Point, Circle3>, Real>(t, "point-circle");
 #endif
 #ifdef CDB_POINT_DISK
-  t.push_back(entry<Kind<Point, Disk3>>("point-disk"));
-#else
-  t.push_back(missing("point-disk"));
+  add<Kind<Point, Disk3>, Real>(t, "point-disk");
 #endif
 #ifdef CDB_LINE_CIRCLE
-  t.push_back(entry<Kind<Line3, Circle3>>("line-circle"));
-  t.push_back(entry<Kind<Ray3, Circle3>>("ray-circle"));
-  t.push_back(entry<Kind<Segment3, Circle3>>("segment-circle"));
-#else
-  for (const char* n : {"line-circle", "ray-circle", "segment-circle"}) t.push_back(missing(n));
+  add<Kind<Line3, Circle3>, Real>(t, "line-circle");
+  add<Kind<Ray3, Circle3>, Real>(t, "ray-circle");
+  add<Kind<Segment3, Circle3>, Real>(t, "segment-circle");
 #endif
 #ifdef CDB_LINE_DISK
-  t.push_back(entry<Kind<Line3, Disk3>>("line-disk"));
-  t.push_back(entry<Kind<Ray3, Disk3>>("ray-disk"));
-  t.push_back(entry<Kind<Segment3, Disk3>>("segment-disk"));
-#else
-  for (const char* n : {"line-disk", "ray-disk", "segment-disk"}) t.push_back(missing(n));
+  add<Kind<Line3, Disk3>, Real>(t, "line-disk");
+  add<Kind<Ray3, Disk3>, Real>(t, "ray-disk");
+  add<Kind<Segment3, Disk3>, Real>(t, "segment-disk");
 #endif
 #ifdef CDB_CIRCLE_CIRCLE
-  t.push_back(entry<Kind<Circle3, Circle3>>("circle-circle"));
-#else
-  t.push_back(missing("circle-circle"));
+  add<Kind<Circle3, Circle3>, Real>(t, "circle-circle");
 #endif
 #ifdef CDB_CIRCLE_DISK
-  t.push_back(entry<Kind<Circle3, Disk3>>("circle-disk"));
-#else
-  t.push_back(missing("circle-disk"));
+  add<Kind<Circle3, Disk3>, Real>(t, "circle-disk");
 #endif
 #ifdef CDB_DISK_DISK
-  t.push_back(entry<Kind<Disk3, Disk3>>("disk-disk"));
-#else
-  t.push_back(missing("disk-disk"));
+  add<Kind<Disk3, Disk3>, Real>(t, "disk-disk");
 #endif
 #ifdef CDB_BEZIER
-  t.push_back(entry<Kind<BezierCurve3, Disk3>>("bezier-disk"));
-  t.push_back(entry<Kind<BezierCurve3, Circle3>>("bezier-circle"));
-#else
-  t.push_back(missing("bezier-disk"));
-  t.push_back(missing("bezier-circle"));
+  add<Kind<BezierCurve3, Disk3>, Real>(t, "bezier-disk");
+  add<Kind<BezierCurve3, Circle3>, Real>(t, "bezier-circle");
 #endif
   return t;
 }
 
+// The build may split the program by precision to compile in parallel: CDB_PART = 0 (float),
+// 1 (double), 2 (long double) compile one precision's runners, 3 the driver; without CDB_PART
+// everything is one translation unit.
+std::map<std::string, Runner> float_table();
+std::map<std::string, Runner> double_table();
+std::map<std::string, Runner> long_double_table();
+
+#if !defined(CDB_PART) || CDB_PART == 0
+std::map<std::string, Runner> float_table() { return kind_table<float>(); }
+#endif
+#if !defined(CDB_PART) || CDB_PART == 1
+std::map<std::string, Runner> double_table() { return kind_table<double>(); }
+#endif
+#if !defined(CDB_PART) || CDB_PART == 2
+std::map<std::string, Runner> long_double_table() { return kind_table<long double>(); }
+#endif
+
+#if !defined(CDB_PART) || CDB_PART == 3
 std::vector<Case> read_cases(const char* path) {
   std::ifstream in(path);
   if (!in) {
@@ -304,7 +302,11 @@ std::vector<Case> read_cases(const char* path) {
   return out;
 }
 
+#endif  // the driver (read_cases)
+
 }  // namespace cdb
+
+#if !defined(CDB_PART) || CDB_PART == 3
 
 int main(int argc, char** argv) {
   if (argc < 3) {
@@ -333,24 +335,25 @@ int main(int argc, char** argv) {
     return 2;
   }
   cdb::Output out{file};
-  const auto table = cdb::kind_table();
-  for (const auto& k : table) std::fprintf(file, "K %s %d\n", k.name.c_str(), k.run ? 1 : 0);
+  const std::map<std::string, cdb::Runner> tables[3] = {cdb::float_table(), cdb::double_table(),
+                                                        cdb::long_double_table()};
+  for (const char* name : cdb::all_kind_names) std::fprintf(file, "K %s %d\n", name, int(tables[1].count(name)));
   for (const auto& c : cases) {
-    bool known = false;
-    for (const auto& k : table) known = known || k.name == c.kind;
-    if (!known) std::fprintf(stderr, "accuracy_vs_time: unknown kind %s (case %d)\n", c.kind.c_str(), c.index);
+    if (!tables[1].count(c.kind)) std::fprintf(stderr, "accuracy_vs_time: kind %s not compiled (case %d)\n", c.kind.c_str(), c.index);
   }
-  for (const auto& k : table) {
-    if (!k.run) continue;
-    if (!only.empty() && std::find(only.begin(), only.end(), k.name) == only.end()) continue;
+  for (const char* name : cdb::all_kind_names) {
+    if (!tables[1].count(name)) continue;
+    if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
     std::vector<const cdb::Case*> mine;
     for (const auto& c : cases)
-      if (c.kind == k.name) mine.push_back(&c);
+      if (c.kind == name) mine.push_back(&c);
     if (mine.empty()) continue;
-    std::fprintf(stderr, "accuracy_vs_time: %s (%zu cases)\n", k.name.c_str(), mine.size());
-    k.run(mine, k.name, min_time, out);
+    std::fprintf(stderr, "accuracy_vs_time: %s (%zu cases)\n", name, mine.size());
+    for (int precision = 0; precision < 3; ++precision) tables[precision].at(name)(mine, name, precision, min_time, out);
     std::fflush(file);
   }
   std::fclose(file);
   return 0;
 }
+
+#endif  // the driver

@@ -460,7 +460,8 @@ class _RimMin:
 
     def theta_radius(self, level2):
         """Max angular distance from theta* of its connected component of {g^2 <= level2};
-        None if another part of the sub-level set exists (near-tie) or it is the whole rim."""
+        "whole" if the component is the whole rim, "tie" if another part of the sub-level
+        set exists (a tie or near-tie with a separate minimiser)."""
         g2, th = self.obj.g2, self.theta
         sides = []
         for sgn in (1, -1):
@@ -468,7 +469,7 @@ class _RimMin:
             while delta < mp.pi and g2(th + sgn * delta) <= level2:
                 delta *= 8
             if delta >= mp.pi:
-                return None
+                return "whole"
             inside = delta / 8
             for _ in range(24):
                 mid = (inside + delta) / 2
@@ -485,7 +486,7 @@ class _RimMin:
 
         for x, v in self.minima[1:]:
             if v <= level2 and not in_component(x):
-                return None
+                return "tie"
         # binary64 samples that might lie in another part of the sub-level set
         n = _N_SAMPLES
         xs = 2 * np.pi / n * np.arange(n)
@@ -495,7 +496,7 @@ class _RimMin:
         for i in suspects:
             x = mpf(float(xs[i]))
             if not in_component(x) and g2(x) <= level2:
-                return None
+                return "tie"
         return max(dr, dl)
 
 
@@ -532,7 +533,7 @@ class RefResult:
         """Upper bounds (r_lin, r_round): every pair (p on S, q on round shape) with
         |p - q| <= distance + eta satisfies |p - point_lin| <= r_lin and
         |q - point_round| <= r_round, unless a radius is inf (near-ties/continuum)."""
-        return self._radius_at_level(self.distance + mpf(eta))
+        return self._radius_at_level(self.distance + mpf(eta))[:2]
 
     def _radius_at_level(self, level):
         if level not in self._cache:
@@ -541,8 +542,10 @@ class RefResult:
             # nearest point (Pythagoras at a nearest point of a convex set)
             slack = mp.sqrt(max(level * level - self.distance ** 2, mpf(0)))
             res = self._radius_fn(level, slack)
-            self._cache[level] = (math.inf, math.inf) if res is None else \
-                tuple(float(r) for r in res)
+            if isinstance(res, str):
+                self._cache[level] = (math.inf, math.inf, res)
+            else:
+                self._cache[level] = tuple(float(r) for r in res) + (None,)
         return self._cache[level]
 
     @functools.cached_property
@@ -551,25 +554,37 @@ class RefResult:
         # are accurate to ~1e-40*scale^2 in g^2 (golden bracket 1e-20 rad), so exact ties
         # are recognised even between simple zeros of g, where g itself is only good to
         # ~1e-20*scale.
-        s = self.scale if self.scale > 0 else mpf("1e-280")
-        level = mp.sqrt(self.distance ** 2 + (_TINY_REL * s) ** 2)
-        return max(self._radius_at_level(level))
+        level = mp.sqrt(self.distance ** 2 + (_TINY_REL * self._eff_scale) ** 2)
+        ra, rb, reason = self._radius_at_level(level)
+        return max(ra, rb), reason
+
+    @property
+    def _eff_scale(self):
+        # scale = 0 means d = R = 0: S passes through the single point C, and any positive
+        # length serves to tell an isolated pair from a continuum
+        return self.scale if self.scale > 0 else mpf(1)
 
     @property
     def unique(self):
         """The minimising pair is a single pair: the pairs whose squared separation is
         within (1e-19*scale)^2 of the minimum all lie within 1e-8*scale of the reference
         pair."""
-        lim = _UNIQUE_REL * float(self.scale) if self.scale > 0 else 1e-300
-        return self._tiny_radius <= lim
+        return self._tiny_radius[0] <= _UNIQUE_REL * float(self._eff_scale)
 
     @property
     def degenerate(self):
-        """Exactly (not just numerically) non-unique: an exact tie between separate
-        minimisers, or a continuum of minimisers of macroscopic extent (> 1e-3*scale).
-        Cases that are neither unique nor degenerate are ill-conditioned; tests make no
-        claim about the library's `unique` flag for them."""
-        return self._tiny_radius > _DEGENERATE_REL * float(self.scale)
+        """Exactly (not just numerically) non-unique: a continuum of minimisers of
+        macroscopic extent (> 1e-3*scale, or the whole rim), or a tie between separate
+        minimisers when d >= 1e-6*scale (for smaller d a "tie" within the reference's
+        resolution, ~1e-38*scale^2/d, can be a rounding-level near-tie, e.g. a tangent
+        line made to cross the circle by 1e-17 by rounding).  Cases that are neither
+        unique nor degenerate are ill-conditioned; the tests make no claim about the
+        library's `unique` flag for them."""
+        radius, reason = self._tiny_radius
+        eff = self._eff_scale
+        if reason == "tie":
+            return self.distance >= mpf("1e-6") * eff
+        return reason == "whole" or radius > _DEGENERATE_REL * float(eff)
 
 
 def _t_radius(lin, rnd, t_star, level):
@@ -618,8 +633,8 @@ def _ref_circle(lin, rnd):
 
     def radius(level, slack):
         th = rm.theta_radius(level ** 2)
-        if th is None:
-            return None
+        if isinstance(th, str):
+            return th
         r_round = rnd.R * th       # chord <= R * angle
         # the nearest point of the convex S to a rim point is 1-Lipschitz in that point;
         # a near-optimal partner may further be off that nearest point by <= slack

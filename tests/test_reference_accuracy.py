@@ -103,7 +103,10 @@ def _check_closest(case, order, res, r):
     if abs(sep - mpf(d)) > tol + sl_lin + sl_round:
         problems.append(f"|point_a - point_b| = {_fmt(sep)} but distance = {d!r}")
     # any pair passing the checks above is eta-optimal with
-    eta = 4 * tol + 2 * sl_lin + 2 * sl_round
+    eta = 4 * float(tol) + 2 * sl_lin + 2 * sl_round
+    # round eta up to a quarter decade (a larger eta only loosens the bound) so that both
+    # argument orders share the cached sub-level computation
+    eta = 10 ** (math.ceil(math.log10(eta) * 4) / 4)
     ra, rb = r.near_optimal_radius(eta)
     floor = 1e-6 * float(scale)
     if math.isfinite(ra):

@@ -63,6 +63,10 @@ template <class Real> void analytic_cases() {
   // A segment ending exactly on the rim, from above.
   CHECK_NEAR(distance(Segment3<Real>{V(1, 0, 0), V(1, 0, 5)}, disk), Real(0), bar);
   CHECK_NEAR(distance(Segment3<Real>{V(0, 1, 1), V(0, 2, 1)}, disk), Real(1), bar);
+  // A ray starting beyond the disk's cylinder and pointing away: its rim crossings lie behind
+  // its origin and must not count; the origin is the closest point.
+  CHECK_NEAR(distance(Ray3<Real>{V(3, 0, 1), V(1, 0, 0)}, disk), std::sqrt(Real(5)), bar * 3);
+  CHECK_NEAR(distance(Ray3<Real>{V(3, 0, 1), V(1, 0, 0)}, ring), std::sqrt(Real(5)), bar * 3);
 }
 
 // A scene translated far from the origin keeps an absolute error of 1e-12 for a unit radius:

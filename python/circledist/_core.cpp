@@ -73,11 +73,14 @@ py::tuple batch_tuple(const Shape& s) { return py::cast(s.batch); }
 template <int K, size_t... I> void bind_shape(py::module_& m, const char* doc, std::index_sequence<I...>) {
   static const FieldSpec* spec = kFieldSpecs[K];
   py::class_<ShapeOf<K>, Shape> cls(m, kind_name(K), doc);
-  cls.def(py::init([](decltype((void)I, py::handle())... values) {
-            return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check)...});
+  cls.def(py::init([](decltype((void)I, py::handle())... values, py::handle sweep) {
+            return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check)...,
+                                  sweep_field(kind_name(K), sweep)});
           }),
-          py::arg(spec[I].name)...);
+          py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none());
   (cls.def_property_readonly(spec[I].name, [](const Shape& s) { return s.fields[I].array; }), ...);
+  cls.def_property_readonly(kSweepField.name, [](const Shape& s) { return s.fields.back().array; },
+                            "Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).");
 }
 
 template <int K> void bind_shape(py::module_& m, const char* doc) {
@@ -89,12 +92,16 @@ std::string repr(const Shape& s) {
   if (!s.batch.empty()) return out + "(batch shape " + shape_text(s.batch) + ")";
   out += "(";
   for (size_t i = 0; i < s.fields.size(); ++i) {
-    out += std::string(i ? ", " : "") + s.fields[i].name + "=" + py::repr(s.fields[i].array).cast<std::string>();
+    const Field& f = s.fields[i];
+    if (i + 1 == s.fields.size() && *f.data() == 0) break;  // the default sweep is not shown
+    out += std::string(i ? ", " : "") + f.name + "=" + py::repr(f.array).cast<std::string>();
   }
   return out + ")";
 }
 
 }  // namespace
+
+#include "bind_effects.hpp"
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points";
@@ -141,4 +148,6 @@ PYBIND11_MODULE(_core, m) {
         return lookup(&PairTable::closest, *x.shape, *y.shape, precision, solver)(*x.shape, *y.shape);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(), "Distance, closest points on a and b, their parameters and the unique flag.");
+
+  bind_effects(m);
 }

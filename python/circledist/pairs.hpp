@@ -4,12 +4,14 @@
 
 #include "shapes.hpp"
 
+#include <circledist/effects.hpp>
+
 #include <array>
 #include <type_traits>
 
 namespace circledist::python {
 
-constexpr int kMaxFields = 8;
+constexpr int kMaxFields = 12;  // two shapes of up to 5 fields (with the sweep), and a limit
 
 // Offsets (in doubles) of every field of both shapes for each element of the broadcast batch.
 // Fields that are full-size in the result's layout or constant step linearly (the fast path);
@@ -19,15 +21,24 @@ class Broadcast {
   BatchShape shape;
   Index size = 1;
 
-  Broadcast(const Shape& a, const Shape& b) {
+  // `limit` (optional): a third batch, the distances of within(), broadcast with both shapes.
+  Broadcast(const Shape& a, const Shape& b, const Shape* limit = nullptr) {
     bool ok = true;
     shape = broadcast_shapes(a.batch, b.batch, ok);
     if (!ok)
       throw py::value_error(std::string("batch shapes ") + shape_text(a.batch) + " of the " + kind_name(a.kind) +
                             " and " + shape_text(b.batch) + " of the " + kind_name(b.kind) + " do not broadcast");
+    if (limit) {
+      const BatchShape joined = broadcast_shapes(shape, limit->batch, ok);
+      if (!ok)
+        throw py::value_error(std::string(limit->fields[0].name) + " of batch shape " + shape_text(limit->batch) +
+                              " does not broadcast with the shapes' batch shape " + shape_text(shape));
+      shape = joined;
+    }
     for (Index d : shape) size *= d;
     add(a);
     add(b);
+    if (limit) add(*limit);
   }
 
   // Calls fn(flat_index, field_pointers) for every element.
@@ -113,10 +124,14 @@ template <class Real> py::object scalar(Real value) {
 
 // Evaluation of one ordered pair of C++ primitive types (of scalar Real) with one root policy.
 template <class Roots, class A, class B, class Real> struct PairOf {
-  // The C++ primitives of one element; `points` is each shape's Bezier control point count.
-  static A first(const double* const* f, const Shape& a) { return ShapeTraits<A>::make(f, a.points); }
-  static B second(const double* const* f, const Shape& a, const Shape& b) {
-    return ShapeTraits<B>::make(f + a.fields.size(), b.points);
+  // The C++ primitives of one element, swept by each shape's last field (sweep.hpp: a sweep of 0
+  // gives the core's results bit for bit); `points` is each shape's Bezier control point count.
+  static Swept<A> first(const double* const* f, const Shape& a) {
+    return {ShapeTraits<A>::make(f, a.points), Real(*f[a.fields.size() - 1])};
+  }
+  static Swept<B> second(const double* const* f, const Shape& a, const Shape& b) {
+    const double* const* g = f + a.fields.size();
+    return {ShapeTraits<B>::make(g, b.points), Real(*g[b.fields.size() - 1])};
   }
 
   static py::object distance(const Shape& a, const Shape& b) {
@@ -125,6 +140,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
       int k = 0;
       for (const Field& x : a.fields) f[k++] = x.data();
       for (const Field& x : b.fields) f[k++] = x.data();
+      ++stats().distances;
       return scalar<Real>(circledist::distance<Roots>(first(f.data(), a), second(f.data(), a, b)));
     }
     const Broadcast bc(a, b);
@@ -134,6 +150,36 @@ template <class Roots, class A, class B, class Real> struct PairOf {
       py::gil_scoped_release release;
       bc.for_each([&](Index i, const double* const* f) { o[i] = circledist::distance<Roots>(first(f, a), second(f, a, b)); });
     }
+    stats().distances += std::uint64_t(bc.size);
+    return std::move(out);
+  }
+
+  // effects.hpp over the broadcast of a, b and the limits d: within() (a bool per element) or,
+  // with `want_distance`, distance_if_within() (the distance, +inf beyond d).
+  static py::object within(const Shape& a, const Shape& b, const Shape& limit, bool want_distance) {
+    const Broadcast bc(a, b, &limit);
+    const size_t at = a.fields.size() + b.fields.size();
+    if (want_distance) {
+      auto out = new_array<Real>(bc.shape, 0);
+      Real* o = out.mutable_data();
+      {
+        py::gil_scoped_release release;
+        bc.for_each([&](Index i, const double* const* f) {
+          o[i] = circledist::distance_if_within<Roots>(first(f, a), second(f, a, b), Real(*f[at]));
+        });
+      }
+      if (bc.shape.empty()) return scalar<Real>(o[0]);
+      return std::move(out);
+    }
+    auto out = new_array<bool>(bc.shape, 0);
+    bool* o = out.mutable_data();
+    {
+      py::gil_scoped_release release;
+      bc.for_each([&](Index i, const double* const* f) {
+        o[i] = circledist::within<Roots>(first(f, a), second(f, a, b), Real(*f[at]));
+      });
+    }
+    if (bc.shape.empty()) return py::bool_(o[0]);
     return std::move(out);
   }
 
@@ -162,6 +208,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
         u[i] = r.unique;
       });
     }
+    stats().closest_points += std::uint64_t(bc.size);
     if (bc.shape.empty())
       return {scalar<Real>(d[0]), std::move(pa), std::move(pb), std::move(ta), std::move(tb), py::bool_(u[0])};
     return {std::move(dist), std::move(pa), std::move(pb), std::move(ta), std::move(tb), std::move(unique)};
@@ -170,11 +217,13 @@ template <class Roots, class A, class B, class Real> struct PairOf {
 
 using DistanceFn = py::object (*)(const Shape&, const Shape&);
 using ClosestFn = ClosestPoints (*)(const Shape&, const Shape&);
+using WithinFn = py::object (*)(const Shape&, const Shape&, const Shape&, bool);
 
 // The pairs of one precision and root policy, indexed by the kinds of both arguments.
 struct PairTable {
   DistanceFn distance[kKindCount][kKindCount] = {};
   ClosestFn closest[kKindCount][kKindCount] = {};
+  WithinFn within[kKindCount][kKindCount] = {};
 };
 
 enum Precision : int { kFloat, kDouble, kLongDouble, kPrecisionCount };
@@ -194,6 +243,8 @@ template <class Roots, class Real> struct PairRegistrar {
     table.closest[ka][kb] = &PairOf<Roots, A, B, Real>::closest;
     table.distance[kb][ka] = &PairOf<Roots, B, A, Real>::distance;
     table.closest[kb][ka] = &PairOf<Roots, B, A, Real>::closest;
+    table.within[ka][kb] = &PairOf<Roots, A, B, Real>::within;
+    table.within[kb][ka] = &PairOf<Roots, B, A, Real>::within;
   }
 };
 
@@ -214,10 +265,11 @@ template <class Real, class Visitor> void for_each_pair(Visitor&& v) {
   v.template add<BezierCurve3<Real>, Circle3<Real>>();
 }
 
+// Counted<>: every polynomial solve is counted in circledist::stats() (effects.hpp).
 template <class Real> void register_precision(PairTable (&tables)[kSolverCount]) {
-  for_each_pair<Real>(PairRegistrar<EigenCompanion, Real>{tables[kCompanion]});
-  for_each_pair<Real>(PairRegistrar<EigenPolished, Real>{tables[kPolished]});
-  for_each_pair<Real>(PairRegistrar<Bracketing, Real>{tables[kBracketing]});
+  for_each_pair<Real>(PairRegistrar<Counted<EigenCompanion>, Real>{tables[kCompanion]});
+  for_each_pair<Real>(PairRegistrar<Counted<EigenPolished>, Real>{tables[kPolished]});
+  for_each_pair<Real>(PairRegistrar<Counted<Bracketing>, Real>{tables[kBracketing]});
 }
 
 // Defined in pairs_float.cpp, pairs_double.cpp and pairs_longdouble.cpp (compiled in parallel).

@@ -215,6 +215,29 @@ inline constexpr FieldSpec kRoundFields[] = {
 
 inline constexpr FieldSpec kBezierFields[] = {{"control_points", kControlPoints, Check::Finite}};
 
+// Every kind takes an optional `sweep` radius (>= 0, default 0) after its own fields: the field
+// is always present, last, so that a shape is swept (sweep.hpp) without per-kind code.
+inline constexpr FieldSpec kSweepField = {"sweep", 1, Check::NonNegative};
+
+// The default sweep, 0: exact in every precision, so it never decides the precision.
+inline Field default_sweep() {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  static const Array* zero = [] {  // never freed: no Python object is released after finalization
+    auto* a = new Array(BatchShape{});
+    *a->mutable_data() = 0;
+    a->attr("setflags")(py::arg("write") = false);
+    return a;
+  }();
+  Field f{kSweepField.name, *zero, {}, 1};
+  f.single = true;
+  return f;
+}
+
+inline Field sweep_field(const char* owner, py::handle value) {
+  if (value.is_none()) return default_sweep();
+  return make_field(owner, kSweepField.name, value, kSweepField.width, kSweepField.check);
+}
+
 inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields, kSegmentFields,
                                                              kRoundFields,   kRoundFields,  kBezierFields};
 inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1};

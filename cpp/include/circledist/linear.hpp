@@ -54,15 +54,14 @@ template <class Real> struct LocalLinear {
   Real t_of(Real tau) const { return (tau + shift) / length; }
 };
 
-// Exact candidates every linear-vs-round query evaluates as they are (they are not estimates of
-// a stationary point, so they are not polished): the anchor, the plane crossing (where the disk's
+// Exact candidates every linear-vs-round query evaluates as they are, clamped to the interval
+// (they are not estimates of a stationary point, so they are not polished): the anchor, the plane crossing (where the disk's
 // height kinks; for a circle, the closest point of a line along the axis, where the quartic
 // vanishes identically), and the finite interval ends (the note's "ray origin" rule).
 template <class Real> void push_linear_candidates(const LocalLinear<Real>& line, Candidates<Real>& out) {
-  const auto inside = [&](Real tau) { return std::min(std::max(tau, line.lo), line.hi); };
-  out.push(inside(Real(0)));
+  out.push(Real(0));
   if (line.is_point) return;
-  if (line.dir.z() != 0) out.push(inside(-line.anchor.z() / line.dir.z()));
+  if (line.dir.z() != 0) out.push(-line.anchor.z() / line.dir.z());
   if (std::isfinite(line.lo)) out.push(line.lo);
   if (std::isfinite(line.hi)) out.push(line.hi);
 }
@@ -154,7 +153,10 @@ Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& 
   } else {
     out = polish_candidates(h, stationary, width, line.lo, line.hi, abs_tol);
   }
-  for (int i = 0; i < exact.count; ++i) out.add(Minimum<Real>{exact.value[i], h(exact.value[i])});
+  for (int i = 0; i < exact.count; ++i) {
+    const Real tau = std::min(std::max(exact.value[i], line.lo), line.hi);
+    out.add(Minimum<Real>{tau, h(tau)});
+  }
   return out;
 }
 

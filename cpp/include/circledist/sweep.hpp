@@ -107,10 +107,13 @@ template <class Real> Result<Real> swept_result(Result<Real> r, Real ra, Real rb
 
 template <class T> constexpr bool is_bare_point_type_v = std::is_same_v<core_t<T>, Vec3<scalar_t<core_t<T>>>>;
 
+// Lazy forms of the traits (std::conjunction instantiates the query test only for swept pairs).
+template <class A, class B> struct has_core_query : std::bool_constant<has_symmetric_query_v<core_t<A>, core_t<B>>> {};
+template <class A, class B> struct either_swept : std::bool_constant<is_swept_v<A> || is_swept_v<B>> {};
+
 // Every pair of shapes with a query gets the same pair with either or both sides swept.
 template <class A, class B>
-struct Query<A, B,
-             std::enable_if_t<(is_swept_v<A> || is_swept_v<B>)&&has_symmetric_query_v<core_t<A>, core_t<B>>>> {
+struct Query<A, B, std::enable_if_t<std::conjunction_v<either_swept<A, B>, has_core_query<A, B>>>> {
   static constexpr bool defined = true;
   using Real = scalar_t<core_t<A>>;
 

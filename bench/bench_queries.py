@@ -1,0 +1,573 @@
+#!/usr/bin/env python3
+"""Query timings of circledist: the scalar C++ loop, the batched and the scalar Python calls, and
+the PyPI package distance3d where it offers the same query, all on the same random inputs; plus
+the peak memory of a batch of 10^7 point-circle queries. Prints one markdown table and writes it
+with the machine's description to docs/benchmark.md.
+
+    python bench/bench_queries.py [--n 100000] [--binary build/cpp/bench/bench_queries]
+                                  [--kinds point-circle,line-disk,...] [--no-memory] [--quick]
+
+`bash tools/run.sh bench` builds the C++ program (CIRCLEDIST_BUILD_BENCH=ON) and runs this.
+
+How each column is measured (median of repeated runs everywhere, one core, double):
+  C++ scalar ns          circledist::distance(a, b) in a loop over the n queries (bench_queries.cpp)
+  Python batch ns/query  one cd.distance(A, B) on shapes holding all n queries, divided by n
+                         (building the shapes is not timed)
+  Python scalar us       cd.distance(a, b) on single shapes, per call, Python loop included
+  distance3d ns          its function per query in a Python loop (after a warm-up call), on a
+                         subset sized to a time budget; max |delta| over that subset
+Adding a query kind: one entry in KINDS (and a shape in SHAPES if it is new), one line in
+kind_table() of bench_queries.cpp.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import os
+import platform
+import resource
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable, Optional
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+DEFAULT_BINARY = ROOT / "build" / "cpp" / "bench" / "bench_queries"
+REPORT = ROOT / "docs" / "benchmark.md"
+SEED = 20240601
+
+# Issue 2's targets.
+TARGET_POINT_NS = 30.0  # point-circle and point-disk, C++ scalar
+TARGET_BATCH_RATIO = 1.10  # Python batch vs the C++ loop
+TARGET_SCALAR_US = 2.0  # one Python call
+TARGET_MEMORY = 0.10  # peak above inputs + outputs, 10^7 point-circle queries
+
+
+# --------------------------------------------------------------------------------------------
+# Shapes: random fields (seeded), their flat layout for the C++ program, the circledist class.
+# --------------------------------------------------------------------------------------------
+@dataclass
+class ShapeSpec:
+    make: Callable[[np.random.Generator, int], list]  # fields, each with leading dimension n
+    cls: str  # circledist class name
+
+
+def _points(rng, n):
+    return [rng.normal(0.0, 1.5, (n, 3))]
+
+
+def _linear(rng, n):  # origin, direction (not unit length)
+    return [rng.normal(0.0, 2.0, (n, 3)), rng.normal(0.0, 1.0, (n, 3))]
+
+
+def _segment(rng, n):
+    p0 = rng.normal(0.0, 1.5, (n, 3))
+    return [p0, p0 + rng.normal(0.0, 1.5, (n, 3))]
+
+
+def _round(rng, n):  # center, normal (not unit length), radius
+    return [rng.normal(0.0, 1.0, (n, 3)), rng.normal(0.0, 1.0, (n, 3)), rng.uniform(0.5, 2.0, n)]
+
+
+def _bezier(rng, n):  # cubic: 4 control points
+    return [rng.normal(0.0, 1.5, (n, 4, 3))]
+
+
+SHAPES = {
+    "point": ShapeSpec(_points, "Point"),
+    "line": ShapeSpec(_linear, "Line"),
+    "ray": ShapeSpec(_linear, "Ray"),
+    "segment": ShapeSpec(_segment, "Segment"),
+    "circle": ShapeSpec(_round, "Circle"),
+    "disk": ShapeSpec(_round, "Disk"),
+    "bezier": ShapeSpec(_bezier, "Bezier"),
+}
+
+
+def _unit(v):
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+# distance3d adapters: (fields of a, fields of b) -> (function(i) -> distance). Its functions
+# take unit normals and unit line directions (circledist takes any length), so those are
+# normalized once beforehand; point_to_disk is numba-compiled for contiguous float64 rows.
+def _d3d_point_circle(d3d, a, b):
+    p, (c, nrm, r) = a[0], (b[0], _unit(b[1]), b[2])
+    f = d3d.point_to_circle
+    return lambda i: f(p[i], c[i], float(r[i]), nrm[i])[0]
+
+
+def _d3d_point_disk(d3d, a, b):
+    p, (c, nrm, r) = np.ascontiguousarray(a[0]), (np.ascontiguousarray(b[0]), _unit(b[1]), b[2])
+    f = d3d.point_to_disk
+    return lambda i: f(p[i], c[i], float(r[i]), nrm[i])[0]
+
+
+def _d3d_line_circle(d3d, a, b):
+    o, m = a[0], _unit(a[1])
+    c, nrm, r = b[0], _unit(b[1]), b[2]
+    f = d3d.line_to_circle
+    return lambda i: f(o[i], m[i], c[i], float(r[i]), nrm[i])[0]
+
+
+def _d3d_segment_circle(d3d, a, b):
+    p0, p1 = a
+    c, nrm, r = b[0], _unit(b[1]), b[2]
+    f = d3d.line_segment_to_circle
+    return lambda i: f(p0[i], p1[i], c[i], float(r[i]), nrm[i])[0]
+
+
+def _d3d_disk_disk(d3d, a, b):
+    c1, n1, r1 = a[0], _unit(a[1]), a[2]
+    c2, n2, r2 = b[0], _unit(b[1]), b[2]
+    f = d3d.disk_to_disk
+    return lambda i: f(c1[i], float(r1[i]), n1[i], c2[i], float(r2[i]), n2[i])[0]
+
+
+@dataclass
+class Kind:
+    name: str
+    a: str
+    b: str
+    d3d: Optional[Callable] = None
+    d3d_name: str = ""
+
+
+KINDS = [
+    Kind("point-circle", "point", "circle", _d3d_point_circle, "point_to_circle"),
+    Kind("point-disk", "point", "disk", _d3d_point_disk, "point_to_disk"),
+    Kind("line-circle", "line", "circle", _d3d_line_circle, "line_to_circle"),
+    Kind("ray-circle", "ray", "circle"),
+    Kind("segment-circle", "segment", "circle", _d3d_segment_circle, "line_segment_to_circle"),
+    Kind("line-disk", "line", "disk"),
+    Kind("ray-disk", "ray", "disk"),
+    Kind("segment-disk", "segment", "disk"),
+    Kind("circle-circle", "circle", "circle"),
+    Kind("circle-disk", "circle", "disk"),
+    Kind("disk-disk", "disk", "disk", _d3d_disk_disk, "disk_to_disk"),
+    Kind("bezier-circle", "bezier", "circle"),
+    Kind("bezier-disk", "bezier", "disk"),
+]
+
+
+@dataclass
+class Row:
+    kind: Kind
+    fields_a: list
+    fields_b: list
+    cpp_ns: Optional[float] = None
+    cpp_distances: Optional[np.ndarray] = None
+    batch_ns: Optional[float] = None
+    batch_distances: Optional[np.ndarray] = None
+    scalar_us: Optional[float] = None
+    d3d_ns: Optional[float] = None
+    d3d_count: int = 0
+    d3d_max_delta: Optional[float] = None
+    d3d_larger: int = 0  # distance3d farther than circledist by more than 1e-9
+    d3d_smaller: int = 0  # distance3d nearer than circledist by more than 1e-9
+    notes: list = field(default_factory=list)
+
+    @property
+    def n(self):
+        return len(self.fields_a[0])
+
+    def flat(self):
+        n = self.n
+        return np.concatenate([f.reshape(n, -1) for f in self.fields_a + self.fields_b], axis=1)
+
+
+def median(xs):
+    return float(np.median(np.asarray(xs, dtype=float)))
+
+
+def repeat_timing(fn, min_repeats, max_repeats, min_time):
+    """Calls fn() (after one warm-up call) until min_repeats calls and min_time seconds (or
+    max_repeats calls) are reached; returns the median seconds per call."""
+    fn()
+    samples = []
+    start = time.perf_counter()
+    while len(samples) < max_repeats and (len(samples) < min_repeats or time.perf_counter() - start < min_time):
+        t0 = time.perf_counter()
+        fn()
+        samples.append(time.perf_counter() - t0)
+    return median(samples)
+
+
+# --------------------------------------------------------------------------------------------
+# The C++ program: binary input and output.
+# --------------------------------------------------------------------------------------------
+def write_input(path, rows):
+    with open(path, "wb") as f:
+        f.write(b"CDBQIN01")
+        f.write(struct.pack("<Q", len(rows)))
+        for row in rows:
+            values = np.ascontiguousarray(row.flat(), dtype="<f8")
+            name = row.kind.name.encode()
+            f.write(struct.pack("<Q", len(name)) + name)
+            f.write(struct.pack("<QQ", values.shape[0], values.shape[1]))
+            f.write(values.tobytes())
+
+
+def read_output(path):
+    out = {}
+    with open(path, "rb") as f:
+        if f.read(8) != b"CDBQOUT1":
+            raise RuntimeError(f"{path}: not a bench_queries output")
+        (count,) = struct.unpack("<Q", f.read(8))
+        for _ in range(count):
+            (length,) = struct.unpack("<Q", f.read(8))
+            name = f.read(length).decode()
+            (n,) = struct.unpack("<Q", f.read(8))
+            out[name] = np.frombuffer(f.read(8 * n), dtype="<f8").copy()
+    return out
+
+
+def run_cpp(binary, rows, workdir):
+    if not Path(binary).is_file():
+        print(f"!! {binary} not found: build it with `bash tools/run.sh bench` (C++ column left empty)")
+        return
+    inp, outp = Path(workdir) / "queries.bin", Path(workdir) / "distances.bin"
+    write_input(inp, rows)
+    print(f"== C++ scalar loop ({binary.relative_to(ROOT) if binary.is_relative_to(ROOT) else binary})", flush=True)
+    proc = subprocess.run([str(binary), str(inp), str(outp)], capture_output=True, text=True)
+    if proc.returncode != 0:
+        print(proc.stdout, proc.stderr)
+        raise RuntimeError(f"bench_queries failed with status {proc.returncode}")
+    distances = read_output(outp)
+    by_name = {row.kind.name: row for row in rows}
+    for line in proc.stdout.splitlines():
+        parts = line.split()
+        if parts and parts[0] == "T":
+            row = by_name[parts[1]]
+            row.cpp_ns = float(parts[3])
+            row.cpp_distances = distances[parts[1]]
+            print(f"   {parts[1]:15s} {row.cpp_ns:10.1f} ns/query  ({parts[5]} passes, min {float(parts[4]):.1f})")
+        elif parts and parts[0] == "S":
+            by_name[parts[1]].notes.append("not in this C++ build")
+            print(f"   {parts[1]:15s} not in this C++ build")
+
+
+# --------------------------------------------------------------------------------------------
+# Python: batched and scalar calls.
+# --------------------------------------------------------------------------------------------
+def run_python(cd, rows, scalar_count):
+    print("== Python batch and scalar calls", flush=True)
+    for row in rows:
+        ka, kb = row.kind.a, row.kind.b
+        ca, cb = getattr(cd, SHAPES[ka].cls, None), getattr(cd, SHAPES[kb].cls, None)
+        if ca is None or cb is None:
+            row.notes.append("not in the installed Python package")
+            print(f"   {row.kind.name:15s} not in the installed Python package")
+            continue
+        A, B = ca(*row.fields_a), cb(*row.fields_b)
+        row.batch_distances = np.asarray(cd.distance(A, B))
+        seconds = repeat_timing(lambda: cd.distance(A, B), 5, 100, 1.0)
+        row.batch_ns = seconds / row.n * 1e9
+
+        m = min(scalar_count, row.n)
+        pairs = [(ca(*(f[i] for f in row.fields_a)), cb(*(f[i] for f in row.fields_b))) for i in range(m)]
+        distance = cd.distance
+
+        def scalar_pass():
+            for a, b in pairs:
+                distance(a, b)
+
+        row.scalar_us = repeat_timing(scalar_pass, 5, 50, 0.5) / m * 1e6
+        print(f"   {row.kind.name:15s} batch {row.batch_ns:10.1f} ns/query   scalar {row.scalar_us:8.3f} us/call",
+              flush=True)
+
+
+# --------------------------------------------------------------------------------------------
+# distance3d.
+# --------------------------------------------------------------------------------------------
+def run_distance3d(rows, budget):
+    try:
+        import distance3d.distance as d3d
+    except ImportError:
+        print("!! distance3d is not installed (pip install distance3d): its columns are left empty")
+        return None
+    import importlib.metadata
+
+    version = importlib.metadata.version("distance3d")
+    print(f"== distance3d {version} (Python loop, subset sized to {budget:g} s per kind)", flush=True)
+    for row in rows:
+        if row.kind.d3d is None:
+            continue
+        f = row.kind.d3d(d3d, row.fields_a, row.fields_b)
+        reference = row.batch_distances if row.batch_distances is not None else row.cpp_distances
+        for i in range(20):  # warm-up (numba dispatch, caches)
+            f(i)
+        t0 = time.perf_counter()
+        probe = 200
+        for i in range(probe):
+            f(i)
+        per_call = (time.perf_counter() - t0) / probe
+        m = int(min(row.n, max(1000, budget / per_call)))
+        chunks = np.array_split(np.arange(m), 5)
+        out = np.empty(m)
+        samples = []
+        for chunk in chunks:
+            t0 = time.perf_counter()
+            for i in chunk:
+                out[i] = f(i)
+            samples.append((time.perf_counter() - t0) / len(chunk))
+        row.d3d_ns = median(samples) * 1e9
+        row.d3d_count = m
+        if reference is not None:
+            delta = out - reference[:m]
+            row.d3d_max_delta = float(np.max(np.abs(delta)))
+            row.d3d_larger = int(np.sum(delta > 1e-9))
+            row.d3d_smaller = int(np.sum(delta < -1e-9))
+        print(f"   {row.kind.name:15s} {row.kind.d3d_name:24s} {row.d3d_ns:10.0f} ns/query on {m} queries, "
+              f"max |delta| {row.d3d_max_delta:.3g} (farther on {row.d3d_larger}, nearer on {row.d3d_smaller})",
+              flush=True)
+    return version
+
+
+# --------------------------------------------------------------------------------------------
+# Peak memory of a batch of 10^7 point-circle queries, in a fresh interpreter.
+# --------------------------------------------------------------------------------------------
+def memory_child(n):
+    """Runs in the subprocess: prints one line of key=value pairs."""
+    import circledist as cd
+
+    def peak():  # bytes; Linux reports ru_maxrss in KiB
+        return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+
+    baseline = peak()
+    rng = np.random.default_rng(SEED)
+    # Filled in place (no temporaries), so the peak before the call is the baseline + inputs.
+    p, c, nrm, r = np.empty((n, 3)), np.empty((n, 3)), np.empty((n, 3)), np.empty(n)
+    rng.standard_normal(out=p)
+    rng.standard_normal(out=c)
+    rng.standard_normal(out=nrm)
+    rng.random(out=r)
+    r *= 1.5
+    r += 0.5
+    inputs = p.nbytes + c.nbytes + nrm.nbytes + r.nbytes
+    before = peak()
+    t0 = time.perf_counter()
+    points, circles = cd.Point(p), cd.Circle(c, nrm, r)
+    t1 = time.perf_counter()
+    d = cd.distance(points, circles)
+    t2 = time.perf_counter()
+    after = peak()
+    print(f"n={n} baseline={baseline} before={before} after={after} inputs={inputs} outputs={d.nbytes} "
+          f"construct_s={t1 - t0:.4f} call_s={t2 - t1:.4f}")
+
+
+def run_memory(n):
+    print(f"== peak memory, {n:.0e} point-circle queries in a fresh interpreter", flush=True)
+    proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--memory-child", str(n)],
+                          capture_output=True, text=True)
+    if proc.returncode != 0:
+        print(proc.stdout, proc.stderr)
+        return None
+    m = dict(kv.split("=") for kv in proc.stdout.split())
+    m = {k: float(v) for k, v in m.items()}
+    io = m["inputs"] + m["outputs"]
+    m["io"] = io
+    m["extra"] = m["after"] - m["before"] - m["outputs"]  # beyond the output array
+    m["peak_over_baseline"] = m["after"] - m["baseline"]
+    m["overhead"] = m["peak_over_baseline"] / io - 1.0
+    mib = 1024.0**2
+    print(f"   inputs {m['inputs'] / mib:.0f} MiB + outputs {m['outputs'] / mib:.0f} MiB; peak above the "
+          f"interpreter's baseline {m['peak_over_baseline'] / mib:.0f} MiB: overhead {100 * m['overhead']:+.1f} % "
+          f"(the call itself: {m['extra'] / mib:+.0f} MiB beyond its output)")
+    return m
+
+
+# --------------------------------------------------------------------------------------------
+# Report.
+# --------------------------------------------------------------------------------------------
+def machine():
+    model, cores = "unknown CPU", os.cpu_count()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else cores
+    try:
+        load = Path("/proc/loadavg").read_text().split()[:3]
+    except OSError:
+        load = ["?"] * 3
+    compiler = "unknown compiler"
+    cache = ROOT / "build" / "cpp" / "CMakeCache.txt"
+    try:
+        for line in cache.read_text().splitlines():
+            if line.startswith("CMAKE_CXX_COMPILER:"):
+                exe = line.split("=", 1)[1]
+                compiler = subprocess.run([exe, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
+                break
+    except (OSError, IndexError):
+        pass
+    return {"model": model, "cores": cores, "usable": usable, "load": " ".join(load), "compiler": compiler,
+            "python": platform.python_version(), "numpy": np.__version__}
+
+
+def fmt(x, spec, missing="—"):
+    return missing if x is None else format(x, spec)
+
+
+def table(rows):
+    lines = [
+        "| kind | C++ scalar ns | Python batch ns/query | batch/C++ ratio | Python scalar µs | distance3d ns "
+        "| max \\|Δ\\| vs distance3d |",
+        "|---|---:|---:|---:|---:|---:|---:|",
+    ]
+    for row in rows:
+        ratio = row.batch_ns / row.cpp_ns if row.batch_ns and row.cpp_ns else None
+        d3d = f"{row.d3d_ns:,.0f}" if row.d3d_ns is not None else "—"
+        delta = fmt(row.d3d_max_delta, ".1e")
+        lines.append(f"| {row.kind.name} | {fmt(row.cpp_ns, '.1f')} | {fmt(row.batch_ns, '.1f')} | "
+                     f"{fmt(ratio, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |")
+    return "\n".join(lines)
+
+
+def targets(rows, mem):
+    by = {row.kind.name: row for row in rows}
+    out = []
+
+    def verdict(ok):
+        return "met" if ok else "**missed**"
+
+    for name in ("point-circle", "point-disk"):
+        row = by.get(name)
+        if row and row.cpp_ns is not None:
+            out.append(f"- {name} C++ scalar ≤ {TARGET_POINT_NS:g} ns: {row.cpp_ns:.1f} ns, "
+                       f"{verdict(row.cpp_ns <= TARGET_POINT_NS)}")
+    ratios = [(row.batch_ns / row.cpp_ns, row.kind.name) for row in rows if row.batch_ns and row.cpp_ns]
+    if ratios:
+        over = [f"{k} ({r:.2f})" for r, k in ratios if r > TARGET_BATCH_RATIO]
+        out.append(f"- Python batch within {100 * (TARGET_BATCH_RATIO - 1):.0f} % of the C++ loop: "
+                   + ("met for every kind" if not over else f"**missed** for {', '.join(over)}"))
+    scal = [(row.scalar_us, row.kind.name) for row in rows if row.scalar_us is not None]
+    if scal:
+        over = [f"{k} ({u:.2f} µs)" for u, k in scal if u > TARGET_SCALAR_US]
+        out.append(f"- Python scalar call ≤ {TARGET_SCALAR_US:g} µs: "
+                   + ("met for every kind" if not over else f"**missed** for {', '.join(over)}"))
+    if mem:
+        out.append(f"- peak memory of 10^7 point-circle queries ≤ inputs + outputs + {100 * TARGET_MEMORY:.0f} %: "
+                   f"{100 * mem['overhead']:+.1f} %, {verdict(mem['overhead'] <= TARGET_MEMORY)}")
+    return "\n".join(out)
+
+
+def report(rows, info, mem, d3d_version, n, wall):
+    mib = 1024.0**2
+    parts = [
+        "# Benchmark: query timings",
+        "",
+        f"Written by `bench/bench_queries.py` (`bash tools/run.sh bench`) on "
+        f"{datetime.datetime.now().strftime('%Y-%m-%d %H:%M')}, in {wall:.0f} s.",
+        "",
+        f"Machine: {info['model']}, {info['cores']} cores ({info['usable']} usable), load average "
+        f"{info['load']} at the end of the run; {info['compiler']}; Python {info['python']}, "
+        f"NumPy {info['numpy']}" + (f", distance3d {d3d_version}" if d3d_version else "") + ".",
+        "",
+        f"Inputs: {n:,} random queries per kind (seed {SEED}; centers and origins around the origin, "
+        "normals and directions of random length, radii in [0.5, 2], Bézier curves cubic), the same "
+        "bytes for C++ and Python. Times are medians of repeated runs on one core, in double.",
+        "",
+        table(rows),
+        "",
+        "- **C++ scalar**: `circledist::distance(a, b)` in a loop over the queries (`bench/bench_queries.cpp`, "
+        "-O3, no `-march=native`).",
+        "- **Python batch**: one `cd.distance(A, B)` over all the queries (shapes built beforehand), per query; "
+        "**batch/C++** is its ratio to the C++ loop.",
+        "- **Python scalar**: `cd.distance(a, b)` on single shapes, per call, Python loop included.",
+        "- **distance3d**: its function called per query in a Python loop after a warm-up, on a subset "
+        "(count below); **max |Δ|** is the largest difference from circledist's distance on that subset.",
+        "",
+    ]
+    agree = []
+    for row in rows:
+        if row.cpp_distances is not None and row.batch_distances is not None:
+            agree.append(float(np.max(np.abs(row.cpp_distances - row.batch_distances))))
+    if agree:
+        parts.append(f"C++ and Python return the same distances (largest difference {max(agree):.1e}).")
+        parts.append("")
+    d3d_rows = [row for row in rows if row.d3d_ns is not None]
+    if d3d_rows:
+        parts.append("distance3d, per function: queries compared; how many of its distances are farther "
+                     "(> 1e-9) and nearer (< -1e-9) than circledist's:")
+        parts.append("")
+        for row in d3d_rows:
+            parts.append(f"- `{row.kind.d3d_name}` ({row.kind.name}): {row.d3d_count:,} queries, farther on "
+                         f"{row.d3d_larger:,}, nearer on {row.d3d_smaller:,}.")
+        parts.append("")
+    if mem:
+        parts += [
+            "Peak memory of one batch of 10^7 point–circle queries (10^7 points against 10^7 circles) in a "
+            "fresh interpreter, from `ru_maxrss`: inputs "
+            f"{mem['inputs'] / mib:.0f} MiB + outputs {mem['outputs'] / mib:.0f} MiB = {mem['io'] / mib:.0f} MiB; "
+            f"peak above the interpreter's baseline (after importing NumPy and circledist) "
+            f"{mem['peak_over_baseline'] / mib:.0f} MiB, overhead **{100 * mem['overhead']:+.1f} %**; the call "
+            f"(shape construction + `cd.distance`) raised the peak by {(mem['after'] - mem['before']) / mib:.0f} MiB "
+            f"for its {mem['outputs'] / mib:.0f} MiB output. Building the shapes took {mem['construct_s']:.2f} s, "
+            f"the call {mem['call_s']:.2f} s ({mem['call_s'] / mem['n'] * 1e9:.0f} ns/query).",
+            "",
+        ]
+    tgt = targets(rows, mem)
+    if tgt:
+        parts += ["Issue 2's targets:", "", tgt, ""]
+    return "\n".join(parts)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--n", type=int, default=100_000, help="queries per kind")
+    parser.add_argument("--binary", type=Path, default=DEFAULT_BINARY)
+    parser.add_argument("--kinds", default="", help="comma-separated subset of the kinds")
+    parser.add_argument("--scalar", type=int, default=2000, help="scalar Python calls per pass")
+    parser.add_argument("--d3d-budget", type=float, default=2.0, help="seconds of distance3d calls per kind")
+    parser.add_argument("--memory-n", type=int, default=10_000_000)
+    parser.add_argument("--no-memory", action="store_true")
+    parser.add_argument("--no-report", action="store_true", help="do not write docs/benchmark.md")
+    parser.add_argument("--memory-child", type=int, default=0, help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.memory_child:
+        memory_child(args.memory_child)
+        return
+
+    start = time.perf_counter()
+    import circledist as cd
+
+    kinds = KINDS
+    if args.kinds:
+        wanted = args.kinds.split(",")
+        kinds = [k for k in KINDS if k.name in wanted]
+    rng = np.random.default_rng(SEED)
+    rows = []
+    for kind in kinds:
+        fa = SHAPES[kind.a].make(rng, args.n)
+        fb = SHAPES[kind.b].make(rng, args.n)
+        rows.append(Row(kind, fa, fb))
+
+    with tempfile.TemporaryDirectory(prefix="circledist-bench-") as workdir:
+        run_cpp(args.binary, rows, workdir)
+    run_python(cd, rows, args.scalar)
+    d3d_version = run_distance3d(rows, args.d3d_budget)
+    mem = None if args.no_memory else run_memory(args.memory_n)
+
+    wall = time.perf_counter() - start
+    text = report(rows, machine(), mem, d3d_version, args.n, wall)
+    print()
+    print(text)
+    if not args.no_report:
+        REPORT.parent.mkdir(exist_ok=True)
+        REPORT.write_text(text)
+        print(f"== written to {REPORT.relative_to(ROOT)}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,74 @@
+// Python bindings of the requested effects (cpp/include/circledist/effects.hpp): intersects,
+// within, distance_if_within over broadcast batches, and the work counters. Every pair goes
+// through the one PairOf template (pairs.hpp), like distance and closest_points.
+// Included by _core.cpp after its helpers (pairs(), lookup(), Argument, precision/solver names).
+#pragma once
+
+#include "pairs.hpp"
+
+#include <string>
+
+namespace {
+
+// The limits d of within(), a batch of scalars >= 0 broadcast with both shapes.
+Shape limit_shape(const char* owner, py::handle d) {
+  return Shape(kPoint, {make_field(owner, "d", d, 1, Check::NonNegative)});
+}
+
+py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
+                      const py::object& solver) {
+  const Argument x(a), y(b);
+  return lookup(&PairTable::within, *x.shape, *y.shape, precision, solver)(*x.shape, *y.shape, limit, want_distance);
+}
+
+py::dict stats_dict() {
+  const Stats& s = stats();
+  py::dict out;
+  out["solves"] = s.solves;
+  out["distances"] = s.distances;
+  out["closest_points"] = s.closest_points;
+  out["within"] = s.within;
+  out["decided_by_bounds"] = s.decided_by_bounds;
+  out["culled"] = s.culled;
+  return out;
+}
+
+}  // namespace
+
+inline void bind_effects(py::module_& m) {
+  m.def(
+      "intersects",
+      [](py::handle a, py::handle b, py::object precision, py::object solver) {
+        static const Shape* zero = new Shape(kPoint, {default_sweep()});  // d = 0 (a shared 0-d zero)
+        return run_within(a, b, *zero, false, precision, solver);
+      },
+      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
+      "Whether a and b touch or overlap (sweeps included): within(a, b, 0). Cheap exact bounds decide first; "
+      "the polynomial solver runs only where they cannot. A bool, or a bool array of the broadcast batch shape.");
+  m.def(
+      "within",
+      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver) {
+        return run_within(a, b, limit_shape("within", d), false, precision, solver);
+      },
+      py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
+      py::arg("solver") = py::none(),
+      "Whether distance(a, b) <= d (d >= 0, up to a rounding tolerance of 64 eps times the pair's size). Cheap "
+      "exact bounds decide first; the polynomial solver runs only where they cannot. d broadcasts with a and b.");
+  m.def(
+      "distance_if_within",
+      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver) {
+        return run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver);
+      },
+      py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
+      py::arg("solver") = py::none(),
+      "distance(a, b) where within(a, b, d) holds, inf elsewhere; the distance is only computed where the bounds "
+      "cannot show that it exceeds d.");
+  m.def("stats", &stats_dict,
+        "The calling thread's work counters: solves (polynomial solves), distances (exact distance evaluations), "
+        "closest_points, within (within/intersects pair tests), decided_by_bounds (of those, decided without "
+        "a solve), culled (pairs a Scene's broadphase skipped).");
+  m.def("reset_stats", &reset_stats, "Sets every counter of stats() to 0.");
+  m.def(
+      "_count_culled", [](std::uint64_t n) { stats().culled += n; }, py::arg("n"),
+      "Adds n to stats()['culled'] (used by circledist.Scene).");
+}
