@@ -132,14 +132,14 @@ template <template <class> class A, template <class> class B> struct Kind {
 
 template <class Real> using Point = Vec3<Real>;
 
-const char* policy_names[] = {"EigenCompanion", "EigenPolished", "Bracketing"};
-const char* precision_names[] = {"float", "double", "longdouble"};
+inline const char* policy_names[] = {"EigenCompanion", "EigenPolished", "Bracketing"};
+inline const char* precision_names[] = {"float", "double", "longdouble"};
 
 struct Output {
   std::FILE* file;
 };
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -217,7 +217,7 @@ using Runner = void (*)(const std::vector<const Case*>&, const std::string&, int
 
 // Every kind the benchmark knows, in table order; those whose header is missing are reported as
 // not compiled.
-const char* all_kind_names[] = {"point-circle", "point-disk",    "line-circle", "ray-circle",
+inline const char* all_kind_names[] = {"point-circle", "point-disk",    "line-circle", "ray-circle",
                                 "segment-circle", "line-disk",   "ray-disk",    "segment-disk",
                                 "circle-circle", "circle-disk",  "disk-disk",   "bezier-disk",
                                 "bezier-circle"};

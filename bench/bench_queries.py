@@ -187,16 +187,22 @@ def median(xs):
     return float(np.median(np.asarray(xs, dtype=float)))
 
 
+# CPU time of the calling thread, as in bench_queries.cpp: on a shared machine the wall clock also
+# counts the time the scheduler gives to other processes. The batched call releases the GIL but
+# runs on the calling thread, so its work is counted.
+clock = time.thread_time
+
+
 def repeat_timing(fn, min_repeats, max_repeats, min_time):
     """Calls fn() (after one warm-up call) until min_repeats calls and min_time seconds (or
     max_repeats calls) are reached; returns the median seconds per call."""
     fn()
     samples = []
-    start = time.perf_counter()
-    while len(samples) < max_repeats and (len(samples) < min_repeats or time.perf_counter() - start < min_time):
-        t0 = time.perf_counter()
+    start = clock()
+    while len(samples) < max_repeats and (len(samples) < min_repeats or clock() - start < min_time):
+        t0 = clock()
         fn()
-        samples.append(time.perf_counter() - t0)
+        samples.append(clock() - t0)
     return median(samples)
 
 
@@ -248,7 +254,8 @@ def run_cpp(binary, rows, workdir):
             row = by_name[parts[1]]
             row.cpp_ns = float(parts[3])
             row.cpp_distances = distances[parts[1]]
-            print(f"   {parts[1]:15s} {row.cpp_ns:10.1f} ns/query  ({parts[5]} passes, min {float(parts[4]):.1f})")
+            print(f"   {parts[1]:15s} {row.cpp_ns:10.1f} ns/query  (median of {parts[5]} {parts[6]}, "
+                  f"min {float(parts[4]):.1f})", flush=True)
         elif parts and parts[0] == "S":
             by_name[parts[1]].notes.append("not in this C++ build")
             print(f"   {parts[1]:15s} not in this C++ build")
@@ -257,7 +264,7 @@ def run_cpp(binary, rows, workdir):
 # --------------------------------------------------------------------------------------------
 # Python: batched and scalar calls.
 # --------------------------------------------------------------------------------------------
-def run_python(cd, rows, scalar_count):
+def run_python(cd, rows, scalar_count, batch_time=1.0):
     print("== Python batch and scalar calls", flush=True)
     for row in rows:
         ka, kb = row.kind.a, row.kind.b
@@ -266,10 +273,28 @@ def run_python(cd, rows, scalar_count):
             row.notes.append("not in the installed Python package")
             print(f"   {row.kind.name:15s} not in the installed Python package")
             continue
-        A, B = ca(*row.fields_a), cb(*row.fields_b)
-        row.batch_distances = np.asarray(cd.distance(A, B))
-        seconds = repeat_timing(lambda: cd.distance(A, B), 5, 100, 1.0)
-        row.batch_ns = seconds / row.n * 1e9
+        expected = (row.cpp_ns or 0.0) * 1e-9 * row.n  # seconds for one batch of every query
+        if expected < batch_time:
+            A, B = ca(*row.fields_a), cb(*row.fields_b)
+            row.batch_distances = np.asarray(cd.distance(A, B))
+            seconds = repeat_timing(lambda: cd.distance(A, B), 5, 100, batch_time)
+            row.batch_ns = seconds / row.n * 1e9
+            mode = "calls"
+        else:
+            # Slow kinds: one pass over the queries in 10 batches of n/10, the median batch
+            # (the first, the warm-up, left out), as the C++ program does.
+            bounds = np.linspace(0, row.n, 11).astype(int)
+            parts, samples = [], []
+            for k, (lo, hi) in enumerate(zip(bounds[:-1], bounds[1:])):
+                A = ca(*(f[lo:hi] for f in row.fields_a))
+                B = cb(*(f[lo:hi] for f in row.fields_b))
+                t0 = clock()
+                parts.append(np.asarray(cd.distance(A, B)))
+                if k > 0:
+                    samples.append((clock() - t0) / (hi - lo))
+            row.batch_distances = np.concatenate(parts)
+            row.batch_ns = median(samples) * 1e9
+            mode = "batches of n/10"
 
         m = min(scalar_count, row.n)
         pairs = [(ca(*(f[i] for f in row.fields_a)), cb(*(f[i] for f in row.fields_b))) for i in range(m)]
@@ -279,9 +304,9 @@ def run_python(cd, rows, scalar_count):
             for a, b in pairs:
                 distance(a, b)
 
-        row.scalar_us = repeat_timing(scalar_pass, 5, 50, 0.5) / m * 1e6
-        print(f"   {row.kind.name:15s} batch {row.batch_ns:10.1f} ns/query   scalar {row.scalar_us:8.3f} us/call",
-              flush=True)
+        row.scalar_us = repeat_timing(scalar_pass, 3, 50, 0.5) / m * 1e6
+        print(f"   {row.kind.name:15s} batch {row.batch_ns:10.1f} ns/query ({mode})   "
+              f"scalar {row.scalar_us:8.3f} us/call", flush=True)
 
 
 # --------------------------------------------------------------------------------------------
@@ -304,20 +329,20 @@ def run_distance3d(rows, budget):
         reference = row.batch_distances if row.batch_distances is not None else row.cpp_distances
         for i in range(20):  # warm-up (numba dispatch, caches)
             f(i)
-        t0 = time.perf_counter()
+        t0 = clock()
         probe = 200
         for i in range(probe):
             f(i)
-        per_call = (time.perf_counter() - t0) / probe
+        per_call = (clock() - t0) / probe
         m = int(min(row.n, max(1000, budget / per_call)))
         chunks = np.array_split(np.arange(m), 5)
         out = np.empty(m)
         samples = []
         for chunk in chunks:
-            t0 = time.perf_counter()
+            t0 = clock()
             for i in chunk:
                 out[i] = f(i)
-            samples.append((time.perf_counter() - t0) / len(chunk))
+            samples.append((clock() - t0) / len(chunk))
         row.d3d_ns = median(samples) * 1e9
         row.d3d_count = m
         if reference is not None:
@@ -341,6 +366,15 @@ def memory_child(n):
     def peak():  # bytes; Linux reports ru_maxrss in KiB
         return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
 
+    def hwm():  # the same peak as the kernel keeps it for this address space (cross-check)
+        try:
+            for line in Path("/proc/self/status").read_text().splitlines():
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) * 1024
+        except OSError:
+            pass
+        return -1
+
     baseline = peak()
     rng = np.random.default_rng(SEED)
     # Filled in place (no temporaries), so the peak before the call is the baseline + inputs.
@@ -353,20 +387,23 @@ def memory_child(n):
     r += 0.5
     inputs = p.nbytes + c.nbytes + nrm.nbytes + r.nbytes
     before = peak()
-    t0 = time.perf_counter()
+    t0 = clock()
     points, circles = cd.Point(p), cd.Circle(c, nrm, r)
-    t1 = time.perf_counter()
+    t1 = clock()
     d = cd.distance(points, circles)
-    t2 = time.perf_counter()
+    t2 = clock()
     after = peak()
-    print(f"n={n} baseline={baseline} before={before} after={after} inputs={inputs} outputs={d.nbytes} "
-          f"construct_s={t1 - t0:.4f} call_s={t2 - t1:.4f}")
+    print(f"n={n} baseline={baseline} before={before} after={after} hwm={hwm()} inputs={inputs} "
+          f"outputs={d.nbytes} construct_s={t1 - t0:.4f} call_s={t2 - t1:.4f}")
 
 
 def run_memory(n):
+    """ru_maxrss survives fork + exec: a child exec'd straight from this process would start
+    with this process's resident size as its peak. Going through a shell that forks (it does
+    not exec its last command when another follows) starts the child from the shell's size."""
     print(f"== peak memory, {n:.0e} point-circle queries in a fresh interpreter", flush=True)
-    proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--memory-child", str(n)],
-                          capture_output=True, text=True)
+    command = f'"{sys.executable}" "{Path(__file__).resolve()}" --memory-child {n}; exit $?'
+    proc = subprocess.run(["/bin/sh", "-c", command], capture_output=True, text=True)
     if proc.returncode != 0:
         print(proc.stdout, proc.stderr)
         return None
@@ -380,7 +417,8 @@ def run_memory(n):
     mib = 1024.0**2
     print(f"   inputs {m['inputs'] / mib:.0f} MiB + outputs {m['outputs'] / mib:.0f} MiB; peak above the "
           f"interpreter's baseline {m['peak_over_baseline'] / mib:.0f} MiB: overhead {100 * m['overhead']:+.1f} % "
-          f"(the call itself: {m['extra'] / mib:+.0f} MiB beyond its output)")
+          f"(the call itself: {m['extra'] / mib:+.0f} MiB beyond its output; ru_maxrss {m['after'] / mib:.0f} MiB, "
+          f"VmHWM {m['hwm'] / mib:.0f} MiB)")
     return m
 
 
@@ -540,6 +578,8 @@ def main():
         return
 
     start = time.perf_counter()
+    # First, while this process is small (see run_memory).
+    mem = None if args.no_memory else run_memory(args.memory_n)
     import circledist as cd
 
     kinds = KINDS
@@ -557,7 +597,6 @@ def main():
         run_cpp(args.binary, rows, workdir)
     run_python(cd, rows, args.scalar)
     d3d_version = run_distance3d(rows, args.d3d_budget)
-    mem = None if args.no_memory else run_memory(args.memory_n)
 
     wall = time.perf_counter() - start
     text = report(rows, machine(), mem, d3d_version, args.n, wall)

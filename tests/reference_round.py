@@ -9,7 +9,8 @@ minimisation of a *closed-form* point-to-shape distance over one real parameter:
 
 Both are exact, so minimising them over a compact one-parameter shape (a circle's angle, a Bezier
 curve's t) gives the exact shape-to-shape distance: the minimiser exists and is found by dense
-sampling followed by golden-section refinement of every sampled local minimum.  Every value ever
+sampling followed by golden-section refinement of every sampled local minimum (exactly tied
+samples on a continuum of minimisers excepted, see minimize_1d).  Every value ever
 evaluated is the distance between a genuine point of one shape and the genuine closest point of the
 other, hence an upper bound of the true distance; the reference keeps the smallest.
 
@@ -29,6 +30,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Callable, List, Optional, Sequence, Tuple
 
+import mpmath.libmp as _lm
 from mpmath.ctx_mp import MPContext
 
 DPS = 50
@@ -39,9 +41,12 @@ mpf = ctx.mpf
 CIRCLE_SAMPLES = 720   # samples of an angle over [0, 2 pi)
 CURVE_SAMPLES = 600    # intervals of a Bezier parameter over [0, 1] (end points included)
 PARAM_TOL = mpf("1e-40")  # golden-section bracket width at which refinement stops
-MAX_REFINED = 16       # at most this many sampled local minima (the lowest) are refined
+TIE_TOL = mpf("1e-40")  # sampled values this close (relative) count as tied (see minimize_1d)
+MAX_REFINED = 64       # safety cap on refinements per minimisation (never reached in the tests)
 _INVPHI = (ctx.sqrt(5) - 1) / 2
 _TWO_PI = 2 * ctx.pi
+_RN = _lm.round_nearest
+_add, _mul = _lm.mpf_add, _lm.mpf_mul
 
 Vec = Tuple[object, object, object]
 
@@ -236,14 +241,21 @@ class LocalMin:
     rise: object    # how much the sampled neighbours exceed the sampled minimum (flatness)
 
 
-def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool) -> List[LocalMin]:
-    """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first."""
+def _sample_grid(lo, hi, intervals: int, periodic: bool):
+    """The sample abscissae of minimize_1d (shared so that cached values match exactly)."""
     lo, hi = to_mp(lo), to_mp(hi)
     h = (hi - lo) / intervals
     n = intervals if periodic else intervals + 1
     xs = [lo + i * h for i in range(n)]
     if not periodic:
         xs[-1] = hi
+    return xs, h
+
+
+def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool) -> List[LocalMin]:
+    """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first."""
+    xs, h = _sample_grid(lo, hi, intervals, periodic)
+    n = len(xs)
     fs = [f(x) for x in xs]
     cand = []
     for i in range(n):
@@ -258,8 +270,16 @@ def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool) -> List[Loc
         if all(fs[i] <= v for v in nb):
             cand.append((fs[i], i, min(nb) - fs[i]))
     cand.sort(key=lambda c: c[0])
+    # Every sampled local minimum is refined, except exact ties: on a continuum of closest points
+    # (concentric circles, a circle inside a disk's plane, ...) hundreds of samples tie to ~1e-50;
+    # two of each tied value are refined (enough to see that the closest pair is not unique).
+    tie = TIE_TOL * max(mpf(1), max(abs(v) for v in fs))
+    chosen = []
+    for c in cand:
+        if sum(1 for v in chosen if abs(v[0] - c[0]) <= tie) < 2:
+            chosen.append(c)
     out = []
-    for fi, i, rise in cand[:MAX_REFINED]:
+    for fi, i, rise in chosen[:MAX_REFINED]:
         if periodic:
             a, b = xs[i] - h, xs[i] + h
         else:
@@ -281,27 +301,49 @@ class _Against:
 
     W_j are vectors relative to the target's centre; their axial parts z_j = N.W_j and in-plane
     parts a_j = W_j - z_j N are precomputed, so the closed form needs few operations per point.
+    The evaluation works on mpmath's raw mantissa/exponent tuples (libmp) at the context's
+    precision: the same arithmetic as mpf operators, without the object overhead.
     """
 
     def __init__(self, rel_vectors: Sequence[Vec], target: Round, disk: bool):
         self.target = target
         self.disk = disk
-        self.z = [dot(target.n, w) for w in rel_vectors]
-        self.a = [sub(w, scale(zj, target.n)) for w, zj in zip(rel_vectors, self.z)]
+        z = [dot(target.n, w) for w in rel_vectors]
+        a = [sub(w, scale(zj, target.n)) for w, zj in zip(rel_vectors, z)]
+        self.terms = [(zj._mpf_, aj[0]._mpf_, aj[1]._mpf_, aj[2]._mpf_) for zj, aj in zip(z, a)]
+        self.r = target.radius._mpf_
+
+    def raw(self, coefs):
+        """coefs: raw libmp values, or None for an exact 1.  Returns the raw distance."""
+        P, RN = ctx.prec, _RN
+        z = ax = ay = az = _lm.fzero
+        for c, (zj, a0, a1, a2) in zip(coefs, self.terms):
+            if c is None:
+                z, ax, ay, az = _add(z, zj, P, RN), _add(ax, a0, P, RN), _add(ay, a1, P, RN), _add(az, a2, P, RN)
+            else:
+                z = _add(z, _mul(c, zj, P, RN), P, RN)
+                ax = _add(ax, _mul(c, a0, P, RN), P, RN)
+                ay = _add(ay, _mul(c, a1, P, RN), P, RN)
+                az = _add(az, _mul(c, a2, P, RN), P, RN)
+        rho2 = _add(_add(_mul(ax, ax, P, RN), _mul(ay, ay, P, RN), P, RN), _mul(az, az, P, RN), P, RN)
+        rho = _lm.mpf_sqrt(rho2, P, RN)
+        if self.disk and _lm.mpf_le(rho, self.r):
+            return _lm.mpf_abs(z)
+        e = _lm.mpf_sub(rho, self.r, P, RN)
+        return _lm.mpf_sqrt(_add(_mul(z, z, P, RN), _mul(e, e, P, RN), P, RN), P, RN)
 
     def __call__(self, coefs):
-        z = mpf(0)
-        ax = ay = az = mpf(0)
-        for c, zj, aj in zip(coefs, self.z, self.a):
-            z += c * zj
-            ax += c * aj[0]
-            ay += c * aj[1]
-            az += c * aj[2]
-        rho = ctx.sqrt(ax * ax + ay * ay + az * az)
-        r = self.target.radius
-        if self.disk and rho <= r:
-            return abs(z)
-        return ctx.sqrt(z * z + (rho - r) ** 2)
+        return ctx.make_mpf(self.raw([None if c is None else to_mp(c)._mpf_ for c in coefs]))
+
+
+def _raw_bernstein(k: int, t_raw):
+    P, RN = ctx.prec, _RN
+    s_raw = _lm.mpf_sub(_lm.fone, t_raw, P, RN)
+    tp, sp = [_lm.fone], [_lm.fone]
+    for _ in range(k):
+        tp.append(_mul(tp[-1], t_raw, P, RN))
+        sp.append(_mul(sp[-1], s_raw, P, RN))
+    return [_lm.mpf_mul_int(_mul(tp[i], sp[k - i], P, RN), math.comb(k, i), P, RN) for i in range(k + 1)]
 
 
 @dataclass
@@ -330,13 +372,20 @@ class Reference:
                 f"scale={self.scale}, intersect={self.intersect})")
 
 
+# cos and sin of the angle samples, computed once (every circle is sampled at the same angles)
+_GRID_COS_SIN = {x._mpf_: _lm.mpf_cos_sin(x._mpf_, ctx.prec, _RN)
+                 for x in _sample_grid(0, _TWO_PI, CIRCLE_SAMPLES, True)[0]}
+
+
 def _rim_minima(a: Round, target: Round, disk: bool) -> List[LocalMin]:
     rel = [sub(a.center, target.center), scale(a.radius, a.u), scale(a.radius, a.v)]
     g = _Against(rel, target, disk)
 
     def f(theta):
-        c, s = ctx.cos_sin(theta)
-        return g((1, c, s))
+        cs = _GRID_COS_SIN.get(theta._mpf_)
+        if cs is None:
+            cs = _lm.mpf_cos_sin(theta._mpf_, ctx.prec, _RN)
+        return ctx.make_mpf(g.raw((None,) + cs))
 
     return minimize_1d(f, 0, _TWO_PI, CIRCLE_SAMPLES, periodic=True)
 
@@ -467,7 +516,8 @@ def _curve_minima(ctrl, target: Round, disk: bool) -> List[LocalMin]:
     k = len(pts) - 1
     rel = [sub(p, target.center) for p in pts]
     g = _Against(rel, target, disk)
-    return minimize_1d(lambda t: g(bernstein(k, t)), 0, 1, CURVE_SAMPLES, periodic=False)
+    return minimize_1d(lambda t: ctx.make_mpf(g.raw(_raw_bernstein(k, t._mpf_))), 0, 1, CURVE_SAMPLES,
+                       periodic=False)
 
 
 def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:

@@ -13,7 +13,13 @@ from ._core import (
     Shape,
     closest_points,
     distance,
+    distance_if_within,
+    intersects,
+    reset_stats,
+    stats,
+    within,
 )
+from .scene import Scene
 
 __version__ = "0.1.0"
 
@@ -25,9 +31,15 @@ __all__ = [
     "Line",
     "Point",
     "Ray",
+    "Scene",
     "Segment",
     "Shape",
     "__version__",
     "closest_points",
     "distance",
+    "distance_if_within",
+    "intersects",
+    "reset_stats",
+    "stats",
+    "within",
 ]

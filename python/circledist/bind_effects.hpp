@@ -69,6 +69,17 @@ inline void bind_effects(py::module_& m) {
         "a solve), culled (pairs a Scene's broadphase skipped).");
   m.def("reset_stats", &reset_stats, "Sets every counter of stats() to 0.");
   m.def(
+      "_query_kinds",
+      [] {
+        const PairTable& t = pairs().table[kDouble][pairs().default_solver];
+        py::list out;
+        for (int a = 0; a < kKindCount; ++a)
+          for (int b = 0; b < kKindCount; ++b)
+            if (t.distance[a][b]) out.append(py::make_tuple(kind_name(a), kind_name(b)));
+        return out;
+      },
+      "The (kind, kind) pairs that have a query (used by circledist.Scene).");
+  m.def(
       "_count_culled", [](std::uint64_t n) { stats().culled += n; }, py::arg("n"),
       "Adds n to stats()['culled'] (used by circledist.Scene).");
 }
