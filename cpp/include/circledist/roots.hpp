@@ -211,10 +211,16 @@ template <class Real> Real horner_error(const Real* c, int n, Real x) {
   return Real(64) * (n + 1) * std::numeric_limits<Real>::epsilon() * v;
 }
 
-// The root of p in (a, b), where p(a) and p(b) have opposite signs.
-template <class Real> Real newton_bisection(const Real* c, const Real* dc, int n, Real a, Real b, Real pa) {
+// The root of p in (a, b), where p(a) and p(b) have opposite signs, to a relative accuracy of
+// eps or an absolute one of `abs_tol` (roots near 0 would otherwise take bisection steps down to
+// the smallest numbers).
+template <class Real>
+Real newton_bisection(const Real* c, const Real* dc, int n, Real a, Real b, Real pa, Real pb, Real abs_tol) {
   const Real eps = std::numeric_limits<Real>::epsilon();
-  Real x = (a + b) / 2;
+  // Start at the false-position point; a Newton step that leaves the bracket is replaced by the
+  // bracket's midpoint, which halves it.
+  Real x = a - pa * (b - a) / (pb - pa);
+  if (!(x > a && x < b)) x = (a + b) / 2;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const Real px = horner(c, n, x);
     if (px == 0) return x;
@@ -223,11 +229,15 @@ template <class Real> Real newton_bisection(const Real* c, const Real* dc, int n
       pa = px;
     } else {
       b = x;
+      pb = px;
     }
     const Real slope = horner(dc, n - 1, x);
+    const Real tol = 2 * eps * std::abs(x) + abs_tol;
     Real next = slope != 0 ? x - px / slope : (a + b) / 2;
+    // Converged: the last Newton step may land just past the end the iterate became.
+    if (std::abs(next - x) <= tol) return std::min(std::max(next, a), b);
     if (!(next > a && next < b)) next = (a + b) / 2;
-    if (std::abs(next - x) <= 2 * eps * std::abs(x) || b - a <= 4 * eps * std::abs(x)) return next;
+    if (b - a <= 2 * tol) return next;
     x = next;
   }
   return x;
@@ -271,7 +281,8 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
   for (int k = 0; k <= critical_count; ++k) {
     const Real b = k < critical_count ? critical[k] : hi;
     const Real pb = horner(c, n, b);
-    if ((pa < 0 && pb > 0) || (pa > 0 && pb < 0)) out[count++] = newton_bisection(c, dc, n, a, b, pa);
+    if ((pa < 0 && pb > 0) || (pa > 0 && pb < 0))
+      out[count++] = newton_bisection(c, dc, n, a, b, pa, pb, std::numeric_limits<Real>::epsilon() * (hi - lo));
     if (k < critical_count && std::abs(pb) <= horner_error(c, n, b)) {
       if (count == 0 || out[count - 1] != b) out[count++] = b;
     } else if (pb == 0 && k == critical_count) {
@@ -296,10 +307,16 @@ struct Bracketing {
   static void roots(const Real* coefficients, int degree, Candidates<Real, Capacity>& out) {
     degree = trimmed_degree(coefficients, degree);
     if (degree <= 0) return;
-    // Cauchy's bound: every root lies in [-bound, bound].
+    // Fujiwara's bound: every root lies in [-bound, bound]; far tighter than Cauchy's when the
+    // coefficients are unbalanced, which saves bisection steps on the two outer intervals.
     Real bound = 0;
-    for (int i = 0; i < degree; ++i) bound = std::max(bound, std::abs(coefficients[i] / coefficients[degree]));
-    bound = 1 + bound;
+    for (int i = 0; i < degree; ++i) {
+      Real ratio = std::abs(coefficients[i] / coefficients[degree]);
+      if (i == 0) ratio /= 2;
+      bound = std::max(bound, std::pow(ratio, Real(1) / Real(degree - i)));
+    }
+    bound = 2 * bound;
+    if (!(bound > 0)) bound = 1;
     Real found[2 * kMaxCurveDegree];
     int count = 0;
     detail::isolate_roots(coefficients, degree, -bound, bound, found, count);
