@@ -17,11 +17,16 @@
 //
 // OUT receives
 //     K <kind> <compiled 0/1>                                   one line per kind of the table
-//     D <case index> <policy> <precision> <distance, 21 digits>  every case x policy x precision
+//     D <case index> <policy> <precision> <distance: 21 digits> <distance: exact hexfloat>
+//                                                               every case x policy x precision
 //     T <kind> <group> <policy> <precision> <cases> <ns/query median> <ns/query min> <samples>
 // Timing: one sample is a number of passes over every case of (kind, group), sized to take
 // about 2 ms; samples are repeated for --min-time seconds (at least 5) and the median (and the
 // smallest) time per query is reported. Single-threaded: one core.
+//
+// Built as one translation unit (the CMake target), or split to compile in parallel: with
+// -DCDB_PART=0, 1, 2 a unit holds the float, double, long double runners, with -DCDB_PART=3 the
+// driver (accuracy_vs_time.py does that when it compiles the program itself).
 #include <circledist/primitives.hpp>
 #include <circledist/query.hpp>
 #include <circledist/roots.hpp>
@@ -171,8 +176,8 @@ void run_one(const std::vector<const Case*>& cases, const std::string& kind, int
   }
   for (const Item& it : items) {
     const Real d = circledist::distance<Policy>(it.a, it.b);
-    std::fprintf(out.file, "D %d %s %s %.21Lg\n", it.index, policy_names[policy], precision_names[precision],
-                 static_cast<long double>(d));
+    const long double x = static_cast<long double>(d);
+    std::fprintf(out.file, "D %d %s %s %.21Lg %La\n", it.index, policy_names[policy], precision_names[precision], x, x);
   }
   for (int group = 0; group <= 1; ++group) {
     std::vector<Item> set;

@@ -26,3 +26,15 @@ for target_name, target in (("ring", ring), ("coin", coin)):
 radii = np.linspace(0.5, 2.5, 5)
 circles = cd.Circle(np.zeros((5, 3)), [0, 0, 1], radii)
 print("one line against 5 circles:", cd.distance(cd.Line([0, 1.5, 0.25], [1, 0, 0]), circles))
+
+# A scene shipped inside the package (circledist/scenes/demo.json): each query names only the
+# effects it wants (intersects, within, distance, closest_points, nearest), and nothing else is
+# computed. The same as running `python -m circledist`; the picture goes to docs/demo_scene.png.
+import os
+import sys
+
+from circledist import cli
+
+print()
+picture = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "demo_scene.png")
+sys.exit(cli.main(["--plot", os.path.normpath(picture)]))

@@ -45,4 +45,4 @@ except ImportError:  # pragma: no cover - hypothesis is a test requirement
 @pytest.fixture(scope="session")
 def cd():
     """The module under test (tests needing it are skipped while it does not import)."""
-    return pytest.importorskip("circledist")
+    return pytest.importorskip("circledist", exc_type=ImportError)

@@ -251,7 +251,3 @@ def make_round(cd, kind, data):
     ctor = cd.Circle if kind == "circle" else cd.Disk
     return ctor(data[:3], data[3:6], float(data[6]))
 
-
-def scene_scale(case):
-    """Largest radius in the query."""
-    return float(case.round_data[6])

@@ -38,7 +38,8 @@ for req in numpy:numpy pybind11:pybind11 scikit_build_core:scikit-build-core cma
   have "${req%%:*}" || need+=("${req#*:}")
 done
 case "$task" in
-  test) for req in pytest:pytest hypothesis:hypothesis mpmath:mpmath; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
+  demo) have matplotlib || need+=(matplotlib) ;;
+  test) for req in pytest:pytest hypothesis:hypothesis mpmath:mpmath matplotlib:matplotlib; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
   bench) for req in mpmath:mpmath matplotlib:matplotlib distance3d:distance3d; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
 esac
 [ ${#need[@]} -eq 0 ] || { echo "== installing from PyPI: ${need[*]}"; pip_install "${need[@]}"; }

@@ -2,7 +2,7 @@
 // independently in long double: no library code is used for them. A shape is sampled directly
 // (its own frame, built differently from the library's), the closest point of a disk or circle
 // to a point is the elementary projection, and the minimum over the sampled parameter is found
-// by dense sampling followed by zooming (33 samples on +-h around the best, h /= 8, down to
+// by dense sampling followed by zooming (33 samples on +-h around the 4 best, h /= 8, down to
 // h ~ 1e-21). Analytic values are used where the geometry gives them.
 // Tolerance in double: |error| <= 1e-12 * max(true distance, largest radius).
 #include <circledist/circledist.hpp>
@@ -61,8 +61,11 @@ struct Round {
   }
 };
 
-// Minimum of f over [lo, hi] (periodic or not): dense samples, then zoom on the lowest local
-// minima of the samples.
+// Minimum of f over [lo, hi] (periodic or not): dense samples, then a zoom from each of the
+// lowest local minima of the samples. Each zoom level samples 33 points on +-h around every
+// kept point, keeps the 4 lowest distinct local minima of those samples (a beam: near a
+// tangency two narrow valleys lie side by side, and the lower one need not hold the lowest
+// sample at first), and divides h by 8, down to h ~ 1e-21.
 template <class F> LD minimize(const F& f, LD lo, LD hi, bool periodic, int samples = 4096) {
   std::vector<LD> value(samples + 1);
   const LD step = (hi - lo) / samples;
@@ -78,22 +81,30 @@ template <class F> LD minimize(const F& f, LD lo, LD hi, bool periodic, int samp
   if (minima.size() > 24) minima.resize(24);
   LD best = std::numeric_limits<LD>::infinity();
   for (const auto& m : minima) {
-    LD t = lo + step * m.second, h = 2 * step, ft = m.first;
-    while (h > 1e-21L * (1 + std::abs(t))) {
-      LD bt = t;
-      for (int k = -16; k <= 16; ++k) {
-        LD x = t + h * k / 16;
-        if (!periodic) x = std::min(std::max(x, lo), hi);
-        const LD fx = f(x);
-        if (fx < ft) {
-          ft = fx;
-          bt = x;
+    std::vector<std::pair<LD, LD>> beams{{m.first, lo + step * m.second}};  // (value, t)
+    for (LD h = 2 * step; h > 1e-21L * (1 + std::abs(beams[0].second)); h /= 8) {
+      std::vector<std::pair<LD, LD>> next;
+      for (const auto& beam : beams) {
+        LD v[33], x[33];
+        for (int k = 0; k < 33; ++k) {
+          x[k] = beam.second + h * (k - 16) / 16;
+          if (!periodic) x[k] = std::min(std::max(x[k], lo), hi);
+          v[k] = f(x[k]);
+        }
+        for (int k = 0; k < 33; ++k) {
+          if ((k == 0 || v[k] <= v[k - 1]) && (k == 32 || v[k] <= v[k + 1])) next.push_back({v[k], x[k]});
         }
       }
-      t = bt;
-      h /= 8;
+      std::sort(next.begin(), next.end());
+      beams.clear();
+      for (const auto& c : next) {
+        bool duplicate = false;
+        for (const auto& kept : beams) duplicate = duplicate || std::abs(kept.second - c.second) < h / 32;
+        if (!duplicate) beams.push_back(c);
+        if (beams.size() == 4) break;
+      }
     }
-    best = std::min(best, ft);
+    best = std::min(best, beams[0].first);
   }
   return best;
 }
@@ -452,7 +463,13 @@ void bezier_tests() {
     bezier_case("bezier-circle", "crossing the rim", rim, ring, ref::bezier_circle(rim, ring));
   }
   {
-    // A quintic waving over the disk and around the circle: several local minima.
+    // A quintic with four local minima of the distance to the disk and to the circle (at
+    // 0.110, 0.121, 0.381 and 0.442: the two lowest are close competitors).
+    const BezierCurve3<double> four = bezier({V3d(1.9, -1.2, 0.7), V3d(-0.1, 0.9, -1.6), V3d(-1.2, 0, 0.5),
+                                              V3d(-1.1, -3.2, -0.6), V3d(-1.1, 0.9, -0.8), V3d(1.4, 0, 0)});
+    bezier_case("bezier-disk", "degree 5, four local minima", four, disk, ref::bezier_disk(four, disk), 1);
+    bezier_case("bezier-circle", "degree 5, four local minima", four, ring, ref::bezier_circle(four, ring), 1);
+    // A quintic waving over the disk and around the circle.
     const BezierCurve3<double> wave = bezier({V3d(-1.6, -0.2, 0.4), V3d(-1.0, 1.4, -0.3), V3d(-0.3, -1.5, 0.9),
                                               V3d(0.4, 1.6, -0.6), V3d(1.0, -1.2, 0.7), V3d(1.7, 0.3, 0.2)});
     bezier_case("bezier-disk", "degree 5 waving", wave, disk, ref::bezier_disk(wave, disk));
@@ -488,6 +505,53 @@ void random_tests() {
     for (int i = 0; i <= degree; ++i) c.control.col(i) = vec();
     bezier_case("bezier-disk", "random", c, d, ref::bezier_disk(c, d));
     bezier_case("bezier-circle", "random", c, b, ref::bezier_circle(c, b));
+  }
+}
+
+// Tangencies (multiple roots: the hardest candidates) in random orientations: B touches A at a
+// point p with a common tangent line, exactly or offset by up to 1e-12..1, and curves tangent to
+// A's rim at p.
+void tangency_tests() {
+  std::mt19937_64 rng(77);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(0, 1);
+  auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
+  for (int k = 0; k < 48; ++k) {
+    const V3d ca = vec(), na = vec().normalized();
+    const double ra = std::exp(normal(rng)), rb = std::exp(normal(rng));
+    const Frame<double> f(na);
+    const double t = 6.283185307179586 * uniform(rng);
+    const V3d p = ca + ra * (std::cos(t) * f.u + std::sin(t) * f.v);
+    const V3d tangent = -std::sin(t) * f.u + std::cos(t) * f.v, radial = (p - ca).normalized();
+    const double offset = k % 2 == 0 ? 0.0 : std::pow(10.0, -12 * uniform(rng));
+    V3d cb, nb;
+    if (k % 3 == 0) {  // B's plane turned about the common tangent
+      const double phi = 6.283185307179586 * uniform(rng);
+      const V3d in_b = std::cos(phi) * radial + std::sin(phi) * na;
+      cb = p + rb * in_b + offset * vec();
+      nb = tangent.cross(in_b);
+    } else if (k % 3 == 1) {  // coplanar, outside or inside
+      cb = p + (uniform(rng) < 0.5 ? rb : -rb) * radial + offset * vec();
+      nb = na;
+    } else {  // B standing on A's rim
+      cb = p + rb * radial + offset * vec();
+      nb = tangent;
+    }
+    const Circle3<double> a{ca, na, ra}, b{cb, nb, rb};
+    const Disk3<double> da{ca, na, ra}, db{cb, nb, rb};
+    circle_circle_case("tangent", a, b, ref::circle_circle(a, b));
+    circle_disk_case("tangent", b, da, ref::circle_disk(b, da));
+    disk_disk_case("tangent", da, db, ref::disk_disk(da, db));
+    const int degree = 2 + k % 6;
+    const double bend = (uniform(rng) - 0.3) * 0.5, lift = k % 4 < 2 ? 0.0 : 10 * offset;
+    BezierCurve3<double> c;
+    c.control.resize(3, degree + 1);
+    for (int j = 0; j <= degree; ++j) {
+      const double s = -1 + 2.0 * j / degree;
+      c.control.col(j) = p + s * tangent + bend * s * s * radial + lift * na;
+    }
+    bezier_case("bezier-disk", "tangent", c, da, ref::bezier_disk(c, da));
+    bezier_case("bezier-circle", "tangent", c, a, ref::bezier_circle(c, a));
   }
 }
 
@@ -534,6 +598,7 @@ int main() {
   disk_disk_tests();
   bezier_tests();
   random_tests();
+  tangency_tests();
   other_precision<float>("float", 1e-5);
   other_precision<long double>("long double", 1e-15);
   for (const auto& w : worst) std::printf("largest relative error, %s: %.3g\n", w.first.c_str(), w.second);

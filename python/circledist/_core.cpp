@@ -68,7 +68,11 @@ Fn lookup(Fn const (PairTable::*table)[kKindCount][kKindCount], const Shape& a, 
   return fn;
 }
 
-py::tuple batch_tuple(const Shape& s) { return py::cast(s.batch); }
+py::tuple batch_tuple(const Shape& s) {
+  py::tuple out(s.batch.size());
+  for (size_t i = 0; i < s.batch.size(); ++i) out[i] = py::int_(s.batch[i]);
+  return out;
+}
 
 template <int K, size_t... I> void bind_shape(py::module_& m, const char* doc, std::index_sequence<I...>) {
   static const FieldSpec* spec = kFieldSpecs[K];

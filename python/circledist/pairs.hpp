@@ -263,6 +263,17 @@ template <class Real, class Visitor> void for_each_pair(Visitor&& v) {
   v.template add<Disk3<Real>, Disk3<Real>>();
   v.template add<BezierCurve3<Real>, Disk3<Real>>();
   v.template add<BezierCurve3<Real>, Circle3<Real>>();
+  // Closed forms (linear_linear.hpp): points, lines, rays and segments against each other.
+  v.template add<Vec3<Real>, Vec3<Real>>();
+  v.template add<Vec3<Real>, Line3<Real>>();
+  v.template add<Vec3<Real>, Ray3<Real>>();
+  v.template add<Vec3<Real>, Segment3<Real>>();
+  v.template add<Line3<Real>, Line3<Real>>();
+  v.template add<Line3<Real>, Ray3<Real>>();
+  v.template add<Line3<Real>, Segment3<Real>>();
+  v.template add<Ray3<Real>, Ray3<Real>>();
+  v.template add<Ray3<Real>, Segment3<Real>>();
+  v.template add<Segment3<Real>, Segment3<Real>>();
 }
 
 // Counted<>: every polynomial solve is counted in circledist::stats() (effects.hpp).

@@ -40,6 +40,7 @@ UNBOUNDED = ("Line", "Ray")
 
 LEAF = 8     # shapes per leaf
 BRANCH = 4   # children per node
+BEAM = 16    # nodes per level kept by the descent that seeds a nearest query
 RELATIVE_MARGIN = 1e-9  # culling margin, relative to the scene's and the query's size
 
 
@@ -494,23 +495,26 @@ class Scene:
         return [(self._names[i], d) for i, d in best]
 
     def _greedy_seeds(self, q: _Query, k: int, skip: np.ndarray) -> np.ndarray:
+        """A few shapes likely to be among the nearest: a beam descent keeps the BEAM nodes of
+        smallest lower bound per level; of the shapes in the leaves reached (and the lines and
+        rays), the k + 2 of smallest lower bound."""
         b = self._built
-        want = k + len(skip)
-        seeds = np.zeros(0, int)
+        items = np.zeros(0, int)
         if b.levels:
-            width = max(1, -(-want // LEAF))  # leaves to reach
             nodes = np.zeros(1, int)
             for level in range(len(b.levels)):
                 lo, hi = b.levels[level]
-                bound = q.node_bound(lo[nodes], hi[nodes])
-                if len(nodes) > width:
-                    nodes = nodes[np.argsort(bound, kind="stable")[:width]]
+                if len(nodes) > BEAM:
+                    bound = q.node_bound(lo[nodes], hi[nodes])
+                    nodes = nodes[np.argsort(bound, kind="stable")[:BEAM]]
                 if level + 1 < len(b.levels):
                     nodes = self._children(level, nodes)
-            seeds = self._leaf_items(nodes)
-        if len(seeds) < want:
-            seeds = np.concatenate([seeds, b.unbounded[:want - len(seeds)]])
-        return seeds[~np.isin(seeds, skip)]
+            items = self._leaf_items(nodes)
+        items = np.concatenate([items, b.unbounded])
+        items = items[~np.isin(items, skip)]
+        bound = q.item_bound(b.lo[items], b.hi[items], b.center[items], b.radius[items])
+        bound = self._unbounded_item_bound(q, items, bound)
+        return items[np.argsort(bound, kind="stable")[:k + 2]]
 
     def within(self, shape, d: float) -> list[str]:
         """Names of the scene shapes within distance d of `shape` (a shape, or the name of a scene

@@ -20,7 +20,8 @@ constexpr int kMaxBezierDegree = 7;
 static_assert(6 * kMaxBezierDegree - 2 <= kMaxCurveDegree, "circledist: curve polynomials exceed kMaxCurveDegree");
 
 // Control points P_0 .. P_n as the columns of a fixed-capacity matrix (no heap): the curve is
-// sum_i C(n, i) t^i (1 - t)^(n - i) P_i for t in [0, 1]. A single column is a point.
+// sum_i C(n, i) t^i (1 - t)^(n - i) P_i for t in [0, 1]. A single column is a point; no column
+// is the empty set, at distance +infinity (the infimum over nothing) from everything.
 template <class Real> struct BezierCurve3 {
   using ControlPoints = Eigen::Matrix<Real, 3, Eigen::Dynamic, Eigen::ColMajor, 3, kMaxBezierDegree + 1>;
   ControlPoints control;
@@ -218,14 +219,21 @@ Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<R
   return r;
 }
 
+template <class Real> Result<Real> empty_curve_result() {
+  Result<Real> r;
+  r.distance = std::numeric_limits<Real>::infinity();
+  r.unique = false;
+  return r;
+}
+
 template <class Real> struct CurveRoundBase {
-  // 2 end points + 6n-2 + 2n + n + (n-1) roots for a disk: 69 at degree 7.
+  // 2 end points + 6n-2 + 2n + n + (n-1) roots for a disk: 69 at degree 7 (a circle: 6n-2 + n + (n-1)).
   using Starts = Candidates<Real, 72>;
 
   template <class Roots, class H, class J>
   static Minima<Real, Starts::capacity> polish(const LocalBezier<Real>& c, const Starts& starts, Real scale, const H& h,
                                                const J& jet) {
-    return polish_offsets<Roots>(jet, h, starts, Real(1e-3), Real(0), Real(1), angle_tolerance(c.speed, scale),
+    return polish_offsets<Roots>(jet, h, starts, Real(1e-3), Real(0), Real(1), parameter_tolerance(c.speed, scale),
                                  screening_margin(scale));
   }
 };
@@ -246,7 +254,7 @@ template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRound
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
-    if (b.control.cols() == 0) return std::numeric_limits<Real>::quiet_NaN();
+    if (b.control.cols() == 0) return std::numeric_limits<Real>::infinity();
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     const LocalBezier<Real> c(b, round);
     return solve<Roots>(c, disk.radius, bezier_round_scale(c, disk.radius)).best.value;
@@ -254,7 +262,7 @@ template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRound
 
   template <class Roots = DefaultRoots>
   static Result<Real> closest(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
-    if (b.control.cols() == 0) return Result<Real>{};
+    if (b.control.cols() == 0) return empty_curve_result<Real>();
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     const LocalBezier<Real> c(b, round);
     const Real scale = bezier_round_scale(c, disk.radius);
@@ -274,13 +282,21 @@ template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRou
     starts.push(Real(0));
     starts.push(Real(1));
     push_curve_ring_roots<Roots>(c, radius, scale, starts);
+    // Eq. (2) squared carries the factor x^2 + y^2: on a curve lying along the axis it vanishes
+    // identically and has no roots, while the distance sqrt(R^2 + z^2) is smallest where
+    // z z' = 0. Those roots (degrees n and n - 1, cheap) seed the polish there and near it.
+    if (c.n >= 1) {
+      const CurvePoly<Real> z = c.coordinate(2, scale);
+      push_curve_roots<Roots>(z, starts);
+      push_curve_roots<Roots>(z.derivative(), starts);
+    }
     const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
     return Base::template polish<Roots>(c, starts, scale, h, jet);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {
-    if (b.control.cols() == 0) return std::numeric_limits<Real>::quiet_NaN();
+    if (b.control.cols() == 0) return std::numeric_limits<Real>::infinity();
     const Round<Real> round(circle.center, circle.normal, circle.radius);
     const LocalBezier<Real> c(b, round);
     return solve<Roots>(c, circle.radius, bezier_round_scale(c, circle.radius)).best.value;
@@ -288,7 +304,7 @@ template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRou
 
   template <class Roots = DefaultRoots>
   static Result<Real> closest(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {
-    if (b.control.cols() == 0) return Result<Real>{};
+    if (b.control.cols() == 0) return empty_curve_result<Real>();
     const Round<Real> round(circle.center, circle.normal, circle.radius);
     const LocalBezier<Real> c(b, round);
     const Real scale = bezier_round_scale(c, circle.radius);

@@ -191,13 +191,15 @@ template <class Real, int N> void push_circle_candidates(Candidates<Real, N>& ou
   out.push(pi_v<Real>());
 }
 
-// Polishing tolerances for an angle on a circle of radius rho in a scene of length `scale`.
-// The angle is polished as an offset from its start (see polish_angles), so Brent's relative
-// tolerance does not cap it; this absolute one keeps the arc-length step below about
-// 1e-4 sqrt(eps) scale, and never coarser than 1e-4 sqrt(eps) rad.
-template <class Real> Real angle_tolerance(Real rho, Real scale) {
+// The absolute polishing tolerance for a parameter along which points move at most `speed`
+// per unit (a circle's radius for its angle, the hodograph bound for a curve's t), in a scene
+// of length `scale`: about 1e-4 sqrt(eps) in the parameter, finer when a unit of parameter is
+// longer than the scene, so that the arc-length step stays below 1e-4 sqrt(eps) scale. The
+// parameter is polished as an offset from its start (polish_offsets), so Brent's relative
+// tolerance does not cap it.
+template <class Real> Real parameter_tolerance(Real speed, Real scale) {
   const Real t = Real(1e-4) * std::sqrt(std::numeric_limits<Real>::epsilon());
-  return rho > scale ? t * scale / rho : t;
+  return speed > scale ? t * scale / speed : t;
 }
 
 // Which candidates are worth polishing. Polishing only lowers a value, and every local minimum
@@ -338,7 +340,7 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     push_circle_ring_roots<Roots>(c, radius, scale, starts);
     const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
-    return polish_angles<Roots>(jet, h, starts, angle_tolerance(c.radius, scale), screening_margin(scale));
+    return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
   // a is parametrized, b is the ring.

@@ -43,7 +43,7 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     push_circle_ring_roots<Roots>(c, radius, scale, starts);
     const auto h = [&](Real t) { return disk_distance_local(c.at(t), radius); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &disk_jet_of<Real>); };
-    return polish_angles<Roots>(jet, h, starts, angle_tolerance(c.radius, scale), screening_margin(scale));
+    return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& a, const Disk3<Real>& disk) {

@@ -11,8 +11,8 @@
 // When they touch or overlap (d <= r_a + r_b) the distance is 0 and both returned points are one
 // common point: the point on the cores' connecting segment halfway through the stretch that lies
 // in both swept shapes, p_a + t u with t the middle of [max(0, d - r_b), min(d, r_a)]. When d == 0
-// the direction u is undefined and not needed: that point is the cores' contact point p_a (and
-// p_b, which equals it up to rounding, is kept as point_b).
+// the direction u is undefined and not needed: that point is the cores' contact point p_a, returned
+// as both points (p_b equals it up to rounding).
 // Parameters (param_a, param_b) are always those of the cores' closest points. `unique` is the
 // cores' flag while the swept shapes are apart or touch at exactly d == r_a + r_b; overlapping
 // swept shapes (d < r_a + r_b) share a whole region of points, so `unique` is then false (unless
@@ -21,6 +21,7 @@
 #pragma once
 
 #include "circledist.hpp"
+#include "linear_linear.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -100,7 +101,9 @@ template <class Real> Result<Real> swept_result(Result<Real> r, Real ra, Real rb
     r.point_a = common;
     r.point_b = common;
   }
-  // d == 0: the cores' contact point already lies in both swept shapes.
+  // d == 0: the cores' contact point p_a lies in both swept shapes (p_b equals it up to
+  // rounding); both returned points are that one common point.
+  if (d == 0) r.point_b = r.point_a;
   if (d < ra + rb && !point_only) r.unique = false;
   return r;
 }

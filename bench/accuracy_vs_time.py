@@ -1,0 +1,1012 @@
+#!/usr/bin/env python3
+"""Accuracy against time for every circledist query kind x root policy x precision.
+
+    python bench/accuracy_vs_time.py [--quick] [--min-time S] [--jobs N] [--binary PATH]
+
+1. Generates the cases: seeded random ones and the hard families (tangent lines, lines on or
+   near the axis, near-parallel lines, rim crossings, coplanar / concentric / linked /
+   near-coplanar circles, curves grazing a disk, ...), each placed in the round shape's own
+   frame, under a generic rotation, and translated by 1e6 and 1e8, plus radii 1e-9 and 1e9.
+   The stability sweeps of bench/sweeps.py are appended (double only, not timed).
+2. Computes 50-digit references by an independent method: tests/reference.py (linear shapes
+   against circles and disks) and tests/reference_round.py (circle, disk and Bezier kinds)
+   minimise a closed-form point-to-shape distance over ONE parameter (dense sampling, then
+   golden-section refinement in mpmath); no polynomial, no root finding. The float run gets the
+   references of its own float-rounded inputs; the long double run's inputs are the doubles
+   extended exactly, so it shares the double references. References are cached in
+   build/accuracy_vs_time/references.json (keyed by the reference modules' contents).
+3. Runs bench/accuracy_vs_time.cpp (the CMake target `accuracy_vs_time` when built and up to
+   date, else compiled here into build/accuracy_vs_time/), which computes every distance in
+   float, double and long double with the three root policies, and times them.
+4. Prints one table per kind x policy x precision (ns/query, max and median relative error on
+   the random and on the hard cases), writes docs/accuracy_vs_time.md with the recommended
+   default policy, docs/accuracy_vs_time.png (error against time) and docs/stability_sweeps.png.
+
+Relative error = |d - d_ref| / max(d_ref, largest radius of the query). The bar is 1e-12 in
+double; float and long double are judged against the same number of ulps (1e-12 eps_p / eps_d:
+5.4e-4 for float, 4.9e-16 for long double).
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import math
+import multiprocessing
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+for _p in (ROOT / "tests", ROOT / "bench"):
+    if str(_p) not in sys.path:
+        sys.path.insert(0, str(_p))
+
+import reference as LREF  # noqa: E402  (tests/reference.py: linear shapes vs circle/disk)
+import reference_round as RREF  # noqa: E402  (tests/reference_round.py: circle/disk/Bezier kinds)
+from mpmath import mp, mpf  # noqa: E402
+
+mp.dps = 50
+
+# ------------------------------------------------------------------------------------------------
+# kinds, value layouts (shared with accuracy_vs_time.cpp) and the precisions / policies
+# ------------------------------------------------------------------------------------------------
+KINDS = ["point-circle", "point-disk", "line-circle", "ray-circle", "segment-circle", "line-disk",
+         "ray-disk", "segment-disk", "circle-circle", "circle-disk", "disk-disk", "bezier-disk",
+         "bezier-circle"]
+LINEAR = ("point", "line", "ray", "segment")
+ROUND = ("circle", "disk")
+SHAPE_SIZE = {"point": 3, "line": 6, "ray": 6, "segment": 6, "circle": 7, "disk": 7}
+POLICIES = ["EigenCompanion", "EigenPolished", "Bracketing"]
+PRECISIONS = ["float", "double", "longdouble"]
+EPS = {"float": 2.0 ** -23, "double": 2.0 ** -52, "longdouble": 2.0 ** -63}
+DOUBLE_BAR = 1e-12
+BAR = {p: DOUBLE_BAR * EPS[p] / EPS["double"] for p in PRECISIONS}
+GROUPS = {"random": 0, "hard": 1, "sweep": 2}
+ERROR_FLOOR = 1e-21  # zero errors are drawn here on log axes
+
+BUILD = ROOT / "build" / "accuracy_vs_time"
+DOCS = ROOT / "docs"
+
+
+def shapes_of(kind):
+    a, b = kind.split("-")
+    return a, b
+
+
+def split_values(kind, values):
+    """((shape kind, values), (shape kind, values)) of a case."""
+    a, b = shapes_of(kind)
+    if a == "bezier":
+        n = 1 + 3 * int(values[0])
+    else:
+        n = SHAPE_SIZE[a]
+    return (a, tuple(values[:n])), (b, tuple(values[n:]))
+
+
+def largest_radius(kind, values):
+    out = 0.0
+    for shape, vals in split_values(kind, values):
+        if shape in ROUND:
+            out = max(out, abs(float(vals[6])))
+    return out
+
+
+def to_float32(values):
+    """The float run's inputs: every double rounded to the nearest float (as the C++ does)."""
+    return tuple(float(np.float32(v)) for v in values)
+
+
+# ------------------------------------------------------------------------------------------------
+# references (independent: one-parameter minimisation of closed forms, no polynomial roots)
+# ------------------------------------------------------------------------------------------------
+def reference_distance(kind, values):
+    """50-digit distance of the scene the float inputs `values` describe exactly (an mpf)."""
+    (a, va), (b, vb) = split_values(kind, values)
+    if a in LINEAR:
+        return mpf(LREF.reference(a, va, b, vb).distance)
+    ra = (va[0:3], va[3:6], va[6]) if a in ROUND else None
+    rb = (vb[0:3], vb[3:6], vb[6])
+    if a == "circle" and b == "circle":
+        ref = RREF.circle_circle(*ra, *rb)
+    elif a == "circle" and b == "disk":
+        ref = RREF.circle_disk(*ra, *rb)
+    elif a == "disk" and b == "disk":
+        ref = RREF.disk_disk(*ra, *rb)
+    elif a == "bezier":
+        k = int(va[0])
+        ctrl = [tuple(va[1 + 3 * i: 4 + 3 * i]) for i in range(k)]
+        fn = RREF.bezier_disk if b == "disk" else RREF.bezier_circle
+        ref = fn(ctrl, *rb)
+    else:
+        raise ValueError(kind)
+    return mpf(str(ref.distance))
+
+
+def _reference_version():
+    h = hashlib.sha256()
+    for name in ("reference.py", "reference_round.py"):
+        h.update((ROOT / "tests" / name).read_bytes())
+    return h.hexdigest()[:16]
+
+
+def _key(kind, values):
+    return kind + "|" + ",".join(repr(float(v)) for v in values)
+
+
+def _ref_job(item):
+    kind, values = item
+    return _key(kind, values), str(reference_distance(kind, values))
+
+
+def compute_references(jobs_list, jobs, log=print):
+    """{key: 50-digit string} for every (kind, values) pair, cached on disk."""
+    BUILD.mkdir(parents=True, exist_ok=True)
+    path = BUILD / "references.json"
+    version = _reference_version()
+    cache = {}
+    if path.exists():
+        try:
+            data = json.loads(path.read_text())
+            if data.get("version") == version:
+                cache = data["references"]
+        except (OSError, ValueError, KeyError):
+            cache = {}
+    todo = {}
+    for kind, values in jobs_list:
+        k = _key(kind, values)
+        if k not in cache:
+            todo[k] = (kind, tuple(values))
+    if todo:
+        log(f"== references: {len(todo)} to compute ({len(cache)} cached), {jobs} processes")
+        t0 = time.time()
+        items = list(todo.values())
+        if jobs > 1:
+            with multiprocessing.Pool(jobs) as pool:
+                for i, (k, v) in enumerate(pool.imap_unordered(_ref_job, items, chunksize=4)):
+                    cache[k] = v
+                    if (i + 1) % 500 == 0:
+                        log(f"   {i + 1}/{len(items)} ({time.time() - t0:.0f} s)")
+        else:
+            for item in items:
+                k, v = _ref_job(item)
+                cache[k] = v
+        log(f"   done in {time.time() - t0:.1f} s")
+        path.write_text(json.dumps({"version": version, "references": cache}))
+    return cache
+
+
+# ------------------------------------------------------------------------------------------------
+# scenes: local descriptions placed in the world
+# ------------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Case:
+    kind: str
+    group: str  # random | hard | sweep
+    name: str
+    values: tuple
+    exact: object = None  # analytic distance of the inputs (sweeps), used instead of the reference
+
+
+def _rotation(axis, angle):
+    a = np.asarray(axis, float)
+    a /= np.linalg.norm(a)
+    K = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
+
+
+ROTATION = _rotation((0.36, -0.48, 0.8), 0.9)     # a generic rotation: every coordinate rounds
+OFFSET_DIRECTION = np.array([1.0, -0.7, 0.4])
+PLACEMENTS = [("z", 0.0), ("rot", 0.0), ("z", 1e6), ("z", 1e8), ("rot", 1e6), ("rot", 1e8)]
+
+
+def shape_values(shape, orient="z", offset=0.0, scale=1.0):
+    """World values of a local shape: ('point', p) | ('line'|'ray', o, d) | ('segment', p0, p1)
+    | ('circle'|'disk', c, n, r) | ('bezier', [p...]). Positions are scaled by `scale`, rotated,
+    then translated by offset * OFFSET_DIRECTION; directions and normals are only rotated."""
+    Q = np.eye(3) if orient == "z" else ROTATION
+    T = offset * OFFSET_DIRECTION
+
+    def pos(p):
+        return [float(x) for x in Q @ (scale * np.asarray(p, float)) + T]
+
+    def vec(d):
+        return [float(x) for x in Q @ np.asarray(d, float)]
+
+    kind = shape[0]
+    if kind == "point":
+        return pos(shape[1])
+    if kind in ("line", "ray"):
+        return pos(shape[1]) + vec(shape[2])
+    if kind == "segment":
+        return pos(shape[1]) + pos(shape[2])
+    if kind in ROUND:
+        return pos(shape[1]) + vec(shape[2]) + [float(scale * shape[3])]
+    if kind == "bezier":
+        out = [float(len(shape[1]))]
+        for p in shape[1]:
+            out += pos(p)
+        return out
+    raise ValueError(kind)
+
+
+def scene_values(a, b, orient="z", offset=0.0, scale=1.0):
+    return tuple(shape_values(a, orient, offset, scale) + shape_values(b, orient, offset, scale))
+
+
+Z = (0.0, 0.0, 1.0)
+ORIGIN = (0.0, 0.0, 0.0)
+UNIT_CIRCLE = ("circle", ORIGIN, Z, 1.0)
+UNIT_DISK = ("disk", ORIGIN, Z, 1.0)
+T9 = 1e-9
+
+# Lines against the unit circle / disk (center 0, normal +z): (origin, direction).
+LINE_SCENES = {
+    "tangent in plane": ((1, 0, 0), (0, 1, 0)),
+    "tangent lifted 1e-3": ((1, 0, 1e-3), (0, 1, 0)),
+    "tangent lifted 1e-6": ((1, 0, 1e-6), (0, 1, 0)),
+    "tangent lifted 1e-9": ((1, 0, 1e-9), (0, 1, 0)),
+    "on the axis": ((0, 0, 0.5), (0, 0, 1)),
+    "axis offset 1e-8": ((1e-8, 0, 0.5), (0, 0, 1)),
+    "axis offset 1e-12": ((1e-12, 0, 0.5), (0, 0, 1)),
+    "axis tilted 1e-8": ((0, 0, 0.5), (math.sin(1e-8), 0, math.cos(1e-8))),
+    "axis tilted 1e-12": ((0, 0, 0.5), (math.sin(1e-12), 0, math.cos(1e-12))),
+    "near-parallel 1e-9 at 1e-3": ((0, 0.5, 1e-3), (1, 0, math.tan(1e-9))),
+    "near-parallel 1e-9 tangent at 1e-6": ((0, 1, 1e-6), (1, 0, math.tan(1e-9))),
+    "crosses the plane on the rim": ((1, 0, 0), (0.375, 0.5, 0.75)),
+    "crosses 1e-9 inside the rim": ((1 - T9, 0, 0), (0.375, 0.5, 0.75)),
+    "crosses 1e-9 outside the rim": ((1 + T9, 0, 0), (0.375, 0.5, 0.75)),
+    "in plane through the center": ((0, 0, 0), (1, 0.3, 0)),
+    "in plane 1e-9 outside tangent": ((0, 1 + T9, 0), (1, 0, 0)),
+    "parallel over the interior": ((0, 0.5, 0.25), (1, 0, 0)),
+    "generic": ((2.5, -1, 1.25), (0.3, 0.8, -0.5)),
+}
+# Rays and segments: around every line scene, from its special point, and a few of their own.
+RAY_EXTRA = {
+    "starts over the interior, up": ((0.25, 0.125, 0.5), (0.1, 0.2, 1)),
+    "starts over the interior, down": ((0.25, 0.125, 0.5), (0.1, 0.2, -1)),
+    "starts on the rim, outward": ((1, 0, 0), (1, 0, 0.5)),
+    "starts on the rim, up": ((1, 0, 0), (0, 0, 1)),
+}
+SEGMENT_EXTRA = {
+    "zero length on the axis": ((0, 0, 0.75), (0, 0, 0.75)),
+    "zero length on the rim": ((1, 0, 0), (1, 0, 0)),
+    "in plane inside": ((-0.25, 0.125, 0), (0.5, -0.25, 0)),
+    "parallel over the interior, partly": ((0.5, 0, 0.25), (1.5, 0.25, 0.25)),
+    "ends on the rim": ((1, 0, 0), (1.5, 0.25, 0.75)),
+}
+POINT_SCENES = {
+    "on the axis": (0, 0, 0.75), "center": (0, 0, 0), "on the rim": (1, 0, 0),
+    "near the axis 1e-12": (1e-12, 0, 0.5), "over the rim 1e-9": (1, 0, 1e-9),
+    "in plane 1e-9 outside": (1 + T9, 0, 0), "in plane inside": (0.5, 0.25, 0),
+    "over the interior": (0.25, 0.5, 0.5), "generic": (1.5, -0.5, 0.75), "far": (30, 20, -10),
+}
+RADIUS_SCENES = ["tangent in plane", "tangent lifted 1e-6", "on the axis", "crosses the plane on the rim",
+                 "generic"]
+# (scale of the whole scene, local radius)
+RADIUS_VARIANTS = {"scene x1e-9": (1e-9, 1.0), "scene x1e9": (1e9, 1.0), "radius 1e-9": (1.0, 1e-9),
+                   "radius 1e9": (1.0, 1e9)}
+
+
+def _sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def _axpy(a, x, y):
+    return tuple(a * xi + yi for xi, yi in zip(x, y))
+
+
+def linear_local_scenes(lin):
+    """{name: local shape} of one linear kind."""
+    out = {}
+    if lin == "point":
+        return {n: ("point", p) for n, p in POINT_SCENES.items()}
+    for name, (o, d) in LINE_SCENES.items():
+        if lin == "line":
+            out[name] = ("line", o, d)
+        elif lin == "ray":
+            out["through: " + name] = ("ray", _axpy(-2, d, o), d)
+            out["from: " + name] = ("ray", o, d)
+        else:
+            out["over: " + name] = ("segment", _axpy(-2, d, o), _axpy(2, d, o))
+            out["ending at: " + name] = ("segment", o, _axpy(2, d, o))
+    if lin == "ray":
+        out.update({n: ("ray", o, d) for n, (o, d) in RAY_EXTRA.items()})
+    if lin == "segment":
+        out.update({n: ("segment", p, q) for n, (p, q) in SEGMENT_EXTRA.items()})
+    return out
+
+
+def _tilt(angle, axis="x"):
+    """The +z normal tilted by `angle` about the x (or y) axis."""
+    s, c = math.sin(angle), math.cos(angle)
+    return (0.0, s, c) if axis == "x" else (s, 0.0, c)
+
+
+def _c(center, normal, r):
+    return ("circle", center, normal, r)
+
+
+def _d(center, normal, r):
+    return ("disk", center, normal, r)
+
+
+def _bernstein_from_power(coefs, n):
+    """Bernstein coefficients (degree n) of the polynomial sum_j coefs[j] t^j."""
+    a = list(coefs) + [0.0] * (n + 1 - len(coefs))
+    return [sum(math.comb(i, j) / math.comb(n, j) * a[j] for j in range(i + 1)) for i in range(n + 1)]
+
+
+def _poly_curve(xs, ys, zs, n):
+    """Bezier control points of the polynomial curve (x(t), y(t), z(t)) of degree n."""
+    bx, by, bz = (_bernstein_from_power(c, n) for c in (xs, ys, zs))
+    return list(zip(bx, by, bz))
+
+
+CIRCLE_CIRCLE_SCENES = {
+    "concentric coplanar": (_c(ORIGIN, Z, 1), _c(ORIGIN, Z, 2)),
+    "coplanar disjoint": (_c(ORIGIN, Z, 1), _c((3, 0, 0), Z, 0.5)),
+    "coplanar nested": (_c(ORIGIN, Z, 2), _c((0.7, 0.2, 0), Z, 0.5)),
+    "coplanar crossing": (_c(ORIGIN, Z, 1), _c((1, 0, 0), Z, 1)),
+    "coplanar touching outside": (_c(ORIGIN, Z, 1), _c((2.5, 0, 0), Z, 1.5)),
+    "coplanar touching inside": (_c(ORIGIN, Z, 2), _c((1, 0, 0), Z, 1)),
+    "coaxial": (_c(ORIGIN, Z, 1), _c((0, 0, 0.75), Z, 1.5)),
+    "linked": (_c(ORIGIN, Z, 1), _c((0.6, 0, 0), (0, 1, 0), 0.6)),
+    "linked, crossing once": (_c(ORIGIN, Z, 1), _c((0.8, 0, 0.3), (0, 1, 0), math.sqrt(0.13))),
+    "orthogonal touching": (_c(ORIGIN, Z, 1), _c((2, 0, 0), (0, 1, 0), 1)),
+    "near-coplanar 1e-9 concentric": (_c(ORIGIN, Z, 1), _c(ORIGIN, _tilt(T9, "y"), 2)),
+    "near-coplanar 1e-9 nested": (_c(ORIGIN, Z, 2), _c((0.7, 0.2, 0), _tilt(T9), 0.5)),
+    "near-coplanar 1e-9 disjoint": (_c(ORIGIN, Z, 1), _c((3, 0, 0), _tilt(T9), 0.5)),
+    "near-coplanar 1e-9 crossing": (_c(ORIGIN, Z, 1), _c((1, 0, 0), _tilt(T9), 1)),
+    "parallel 1e-9 apart, nested": (_c(ORIGIN, Z, 2), _c((0.7, 0.2, T9), Z, 0.5)),
+    "radius ratio 1e-6 near the rim": (_c((0.6, 0.8, 1e-3), (0.3, -0.5, 0.8), 1e-6), _c(ORIGIN, Z, 1)),
+    "radius ratio 1e6, linked": (_c(ORIGIN, Z, 1e6), _c((1e6 - 0.25, 0.5, 0.1), (0.2, 1, 0.1), 1)),
+    "same center, orthogonal": (_c(ORIGIN, (1, 1, 0), 1), _c(ORIGIN, (1, -1, 0), 2)),
+}
+CIRCLE_DISK_SCENES = {
+    "in plane inside": (_c((0.2, 0.1, 0), Z, 0.5), UNIT_DISK[:3] + (2.0,)),
+    "concentric coplanar outside": (_c(ORIGIN, Z, 3), _d(ORIGIN, Z, 2)),
+    "coplanar crossing the rim": (_c((1.5, 0, 0), Z, 1), UNIT_DISK),
+    "coplanar disjoint": (_c((4, 0, 0), Z, 1), _d(ORIGIN, (0, 0, -1), 2)),
+    "coplanar touching the rim": (_c((2, 0, 0), Z, 1), UNIT_DISK),
+    "coaxial above, smaller": (_c((0, 0, 0.7), Z, 1), _d(ORIGIN, Z, 2)),
+    "coaxial above, larger": (_c((0, 0, 0.5), Z, 3), _d(ORIGIN, Z, 2)),
+    "parallel 1e-9 above, nested": (_c((0.3, 0.2, T9), Z, 0.5), UNIT_DISK),
+    "near-coplanar 1e-9 outside": (_c(ORIGIN, _tilt(T9), 3), _d(ORIGIN, Z, 2)),
+    "near-coplanar 1e-9 disjoint": (_c((3, 0, 0), _tilt(T9), 1), UNIT_DISK),
+    "near-coplanar 1e-9 inside": (_c((0.2, 0.1, 0), _tilt(T9), 0.5), UNIT_DISK),
+    "linked through the disk": (_c((0.6, 0, 0), (0, 1, 0), 0.6), UNIT_DISK),
+    "touching the face": (_c((0.3, 0, 1), (0, 1, 0), 1), UNIT_DISK),
+    "1e-9 above the face": (_c((0.3, 0, 1 + T9), (0, 1, 0), 1), UNIT_DISK),
+    "touching the rim from above": (_c((1, 0, 1), (0, 1, 0), 1), UNIT_DISK),
+    "radius ratio 1e-6 over the rim": (_c((1, 0, 1e-3), (0.3, -0.5, 0.8), 1e-6), UNIT_DISK),
+}
+DISK_DISK_SCENES = {
+    "coplanar overlapping": (UNIT_DISK, _d((1.5, 0, 0), Z, 1)),
+    "coplanar disjoint": (UNIT_DISK, _d((3, 0, 0), Z, 1)),
+    "coplanar touching": (UNIT_DISK, _d((2, 0, 0), Z, 1)),
+    "stacked coaxial": (UNIT_DISK, _d((0, 0, 0.5), Z, 1)),
+    "stacked, offset past the rim": (UNIT_DISK, _d((2.5, 0, 0.5), Z, 1)),
+    "parallel 1e-9 apart, overlapping": (UNIT_DISK, _d((0.5, 0, T9), Z, 1)),
+    "near-coplanar 1e-9 disjoint": (UNIT_DISK, _d((3, 0, 0), _tilt(T9), 1)),
+    "near-coplanar 1e-9 concentric": (UNIT_DISK, _d(ORIGIN, _tilt(T9), 2)),
+    "perpendicular, touching the face": (UNIT_DISK, _d((0.3, 0, 1), (0, 1, 0), 1)),
+    "perpendicular, 1e-9 above the face": (UNIT_DISK, _d((0.3, 0, 1 + T9), (0, 1, 0), 1)),
+    "perpendicular, through": (UNIT_DISK, _d((0.3, 0, 0.5), (0, 1, 0), 1)),
+    "perpendicular, rim to rim": (UNIT_DISK, _d((2, 0, 0), (0, 1, 0), 1)),
+    "generic disjoint": (UNIT_DISK, _d((1.5, 1, 1.2), (0.3, 0.8, 0.4), 0.8)),
+}
+_WAVY = _poly_curve([-1.5, 3.0], [0.3], [0.15, 2.13, -3.89, 4.49, -1.53, 0.45], 5)
+BEZIER_SCENES = {
+    "straight, tangent in plane": [(1, -1, 0), (1, -1 / 3, 0), (1, 1 / 3, 0), (1, 1, 0)],
+    "straight, tangent lifted 1e-9": [(1, -1, T9), (1, -1 / 3, T9), (1, 1 / 3, T9), (1, 1, T9)],
+    "straight, crossing on the rim": [(0.625, -0.5, -0.75), (1.375, 0.5, 0.75)],
+    "straight, along the axis": [(0, 0, 0.5), (0, 0, 1), (0, 0, 1.5)],
+    "parabola touching the center": [(-1, 0, 1), (0, 0, -1), (1, 0, 1)],
+    "parabola touching the rim": [(0, 0, 1), (1, 0, -1), (2, 0, 1)],
+    "arc in plane crossing the rim": [(0.5, -1.5, 0), (1.5, 0, 0), (0.5, 1.5, 0)],
+    "wavy quintic": _WAVY,
+    "degree 7 over the disk": [(-1.2, -0.8, 0.4), (-0.6, 1.1, -0.2), (0.1, -1.3, 0.5), (0.8, 1.2, 0.1),
+                               (1.3, -0.4, -0.3), (0.4, 0.9, 0.6), (-0.5, 0.2, 0.2), (1.1, 0.1, 0.3)],
+}
+
+
+def hard_scenes(kind):
+    """[(name, a, b, scale)] in local coordinates, before placement."""
+    a, b = shapes_of(kind)
+    out = []
+    if a in LINEAR:
+        rnd = UNIT_CIRCLE if b == "circle" else UNIT_DISK
+        scenes = linear_local_scenes(a)
+        out += [(n, s, rnd, 1.0) for n, s in scenes.items()]
+        for base in RADIUS_SCENES if a != "point" else ["on the axis", "generic", "on the rim"]:
+            names = [n for n in scenes if n == base or n.endswith(": " + base)]
+            for n in names:
+                for vname, (s, r) in RADIUS_VARIANTS.items():
+                    round_shape = (rnd[0], rnd[1], rnd[2], r)  # shape_values scales it by s
+                    out.append((f"{n} [{vname}]", scenes[n], round_shape, s))
+    elif kind == "circle-circle":
+        out = [(n, x, y, 1.0) for n, (x, y) in CIRCLE_CIRCLE_SCENES.items()]
+    elif kind == "circle-disk":
+        out = [(n, x, y, 1.0) for n, (x, y) in CIRCLE_DISK_SCENES.items()]
+    elif kind == "disk-disk":
+        out = [(n, x, y, 1.0) for n, (x, y) in DISK_DISK_SCENES.items()]
+    elif a == "bezier":
+        rnd = UNIT_CIRCLE if b == "circle" else UNIT_DISK
+        out = [(n, ("bezier", pts), rnd, 1.0) for n, pts in BEZIER_SCENES.items()]
+    return out
+
+
+def hard_cases(kind):
+    out = []
+    for name, a, b, s in hard_scenes(kind):
+        # Radius variants are not translated: a radius of 1e-9 at 1e8 (ulp 1.5e-8) asks for an
+        # absolute error below the rounding of the line's own anchor, in any precision.
+        placements = [("z", 0.0), ("rot", 0.0)] if "[" in name else PLACEMENTS
+        for orient, off in placements:
+            tag = orient + ("" if off == 0 else f" +{off:.0e}")
+            out.append(Case(kind, "hard", f"{name} ({tag})", scene_values(a, b, orient, off, s)))
+    return out
+
+
+def _unit(v):
+    v = np.asarray(v, float)
+    return v / np.linalg.norm(v)
+
+
+def random_cases(kind, n):
+    rng = np.random.default_rng(7000 + KINDS.index(kind))
+    a, b = shapes_of(kind)
+    out = []
+    for i in range(n):
+        c = rng.normal(size=3)
+        nrm = rng.normal(size=3) * (1.0 if rng.random() < 0.5 else rng.uniform(0.1, 10.0))
+        rb = (b, c, nrm, rng.uniform(0.2, 2.0))
+        if a == "point":
+            sa = ("point", c + rng.normal(scale=1.5, size=3))
+        elif a in ("line", "ray"):
+            sa = (a, c + rng.normal(scale=1.5, size=3), rng.normal(size=3))
+        elif a == "segment":
+            p0 = c + rng.normal(scale=1.5, size=3)
+            sa = ("segment", p0, p0 + rng.normal(scale=1.5, size=3))
+        elif a in ROUND:
+            sa = (a, c + rng.uniform(-2, 2, 3), rng.normal(size=3), rng.uniform(0.2, 2.0))
+        else:
+            k = 2 + i % 7  # degrees 1..7
+            sa = ("bezier", [c + rng.uniform(-2, 2, 3) for _ in range(k)])
+        out.append(Case(kind, "random", f"random {i:03d}", scene_values(sa, rb)))
+    return out
+
+
+def generate_cases(n_random, kinds):
+    cases = []
+    for kind in kinds:
+        cases += random_cases(kind, n_random)
+        cases += hard_cases(kind)
+    return cases
+
+
+# ------------------------------------------------------------------------------------------------
+# the C++ program
+# ------------------------------------------------------------------------------------------------
+def _sources():
+    src = ROOT / "bench" / "accuracy_vs_time.cpp"
+    headers = sorted((ROOT / "cpp" / "include" / "circledist").glob("*.hpp"))
+    return src, headers
+
+
+def _newest_source_time():
+    src, headers = _sources()
+    return max(p.stat().st_mtime for p in [src] + headers)
+
+
+def _eigen_flags():
+    try:
+        out = subprocess.run(["pkg-config", "--cflags", "eigen3"], capture_output=True, text=True, check=True)
+        flags = out.stdout.split()
+        if flags:
+            return flags
+    except (OSError, subprocess.CalledProcessError):
+        pass
+    return ["-I/usr/include/eigen3"]
+
+
+def ensure_binary(explicit=None, jobs=2, log=print):
+    """The benchmark program: --binary, else the CMake target if up to date, else compiled here."""
+    if explicit:
+        return Path(explicit)
+    newest = _newest_source_time()
+    cmake_bin = ROOT / "build" / "cpp" / "bench" / "accuracy_vs_time"
+    if cmake_bin.exists() and cmake_bin.stat().st_mtime >= newest:
+        return cmake_bin
+    own = BUILD / "accuracy_vs_time"
+    if own.exists() and own.stat().st_mtime >= newest:
+        return own
+    BUILD.mkdir(parents=True, exist_ok=True)
+    cxx = os.environ.get("CXX", "g++")
+    src, _ = _sources()
+    flags = ["-std=c++17", "-O3", "-DNDEBUG", f"-I{ROOT / 'cpp' / 'include'}"] + _eigen_flags()
+    log(f"== compiling {src.relative_to(ROOT)} ({cxx} -O3, 4 parts, {jobs} at a time)")
+    t0 = time.time()
+    # One translation unit per precision plus the driver (CDB_PART), compiled in parallel.
+    objects, pending = [], []
+    for part in range(4):
+        obj = BUILD / f"accuracy_vs_time.part{part}.o"
+        objects.append(obj)
+        cmd = [cxx] + flags + [f"-DCDB_PART={part}", "-c", str(src), "-o", str(obj)]
+        pending.append(cmd)
+    running = []
+    while pending or running:
+        while pending and len(running) < max(1, jobs):
+            running.append(subprocess.Popen(pending.pop(0)))
+        proc = running.pop(0)
+        if proc.wait() != 0:
+            raise SystemExit("accuracy_vs_time: compilation failed")
+    tmp = BUILD / "accuracy_vs_time.tmp"
+    subprocess.run([cxx] + [str(o) for o in objects] + ["-o", str(tmp)], check=True)
+    tmp.replace(own)
+    log(f"   compiled in {time.time() - t0:.0f} s")
+    return own
+
+
+def run_binary(binary, cases, min_time, log=print):
+    BUILD.mkdir(parents=True, exist_ok=True)
+    inp, out = BUILD / "cases.txt", BUILD / "results.txt"
+    with open(inp, "w") as f:
+        f.write("# kind group count values (written by bench/accuracy_vs_time.py)\n")
+        for c in cases:
+            f.write(f"{c.kind} {GROUPS[c.group]} {len(c.values)} " + " ".join(repr(float(v)) for v in c.values) + "\n")
+    log(f"== running {binary} on {len(cases)} cases (min time {min_time} s per timing)")
+    t0 = time.time()
+    subprocess.run([str(binary), str(inp), str(out), "--min-time", str(min_time)], check=True)
+    log(f"   done in {time.time() - t0:.1f} s")
+    compiled, dist, timing = {}, {}, {}
+    for line in out.read_text().splitlines():
+        f = line.split()
+        if f[0] == "K":
+            compiled[f[1]] = f[2] == "1"
+        elif f[0] == "D":
+            dist[(int(f[1]), f[2], f[3])] = f[5] if len(f) > 5 else f[4]  # the exact hexfloat
+        elif f[0] == "T":
+            group = "random" if f[2] == "0" else "hard"
+            timing[(f[1], group, f[3], f[4])] = float(f[6])
+    return compiled, dist, timing
+
+
+# ------------------------------------------------------------------------------------------------
+# errors and the summary
+# ------------------------------------------------------------------------------------------------
+def parse_distance(text):
+    """An mpf from the program's exact hexfloat (glibc %La, e.g. 0xc.ccccccccccccccdp-7) or from a
+    decimal string; None for NaN, inf or garbage."""
+    if text is None:
+        return None
+    t = text.strip().lower()
+    if t.lstrip("+-").startswith("0x"):
+        sign = -1 if t.startswith("-") else 1
+        mant, _, exp = t.lstrip("+-")[2:].partition("p")
+        whole, _, frac = mant.partition(".")
+        digits = whole + frac
+        m = int(digits, 16) if digits else 0
+        return sign * mp.ldexp(mpf(m), int(exp or 0) - 4 * len(frac))
+    try:
+        d = mpf(t)
+    except (ValueError, TypeError):
+        return None
+    return d if mp.isfinite(d) else None
+
+
+def relative_error(d_text, ref, radius):
+    """|d - ref| / max(ref, radius) in 50 digits; inf for NaN / inf / missing."""
+    d = parse_distance(d_text)
+    if d is None:
+        return math.inf
+    denom = max(ref, mpf(radius))
+    err = abs(d - ref)
+    if denom == 0:
+        return 0.0 if err == 0 else math.inf
+    return float(err / denom)
+
+
+def case_inputs(case, precision):
+    return to_float32(case.values) if precision == "float" else case.values
+
+
+def evaluate(cases, refs, dist):
+    """errors[(case index, policy, precision)] = relative error."""
+    errors = {}
+    for i, c in enumerate(cases):
+        for prec in PRECISIONS:
+            if c.group == "sweep" and prec != "double":
+                continue
+            vals = case_inputs(c, prec)
+            ref = mpf(c.exact) if c.exact is not None else mpf(refs[_key(c.kind, vals)])
+            radius = largest_radius(c.kind, vals)
+            for pol in POLICIES:
+                errors[(i, pol, prec)] = relative_error(dist.get((i, pol, prec)), ref, radius)
+    return errors
+
+
+@dataclass
+class Row:
+    kind: str
+    policy: str
+    precision: str
+    ns_random: float
+    ns_hard: float
+    random_max: float
+    random_median: float
+    hard_max: float
+    hard_median: float
+    hard_over: int
+    hard_count: int
+    random_over: int
+    worst: str
+
+
+def summarize(cases, errors, timing, kinds):
+    rows = []
+    for kind in kinds:
+        idx = {g: [i for i, c in enumerate(cases) if c.kind == kind and c.group == g] for g in ("random", "hard")}
+        for prec in PRECISIONS:
+            for pol in POLICIES:
+                e = {g: [errors[(i, pol, prec)] for i in idx[g]] for g in idx}
+                worst_i = max(idx["hard"], key=lambda i: errors[(i, pol, prec)]) if idx["hard"] else None
+                rows.append(Row(
+                    kind, pol, prec,
+                    timing.get((kind, "random", pol, prec), math.nan),
+                    timing.get((kind, "hard", pol, prec), math.nan),
+                    max(e["random"], default=math.nan), statistics.median(e["random"]) if e["random"] else math.nan,
+                    max(e["hard"], default=math.nan), statistics.median(e["hard"]) if e["hard"] else math.nan,
+                    sum(x > BAR[prec] for x in e["hard"]), len(e["hard"]),
+                    sum(x > BAR[prec] for x in e["random"]),
+                    cases[worst_i].name if worst_i is not None else ""))
+    return rows
+
+
+def _geomean(xs):
+    xs = [x for x in xs if x > 0 and math.isfinite(x)]
+    return math.exp(sum(math.log(x) for x in xs) / len(xs)) if xs else math.nan
+
+
+def policy_stats(rows, cases, errors, precision):
+    stats = {}
+    for pol in POLICIES:
+        hard = [errors[(i, pol, precision)] for i, c in enumerate(cases) if c.group == "hard"]
+        rnd = [errors[(i, pol, precision)] for i, c in enumerate(cases) if c.group == "random"]
+        logs = [math.log10(max(x, ERROR_FLOOR)) if math.isfinite(x) else 0.0 for x in hard]
+        pr = [r for r in rows if r.policy == pol and r.precision == precision]
+        stats[pol] = {
+            "hard_over": sum(not x <= BAR[precision] for x in hard), "hard_count": len(hard),
+            "hard_max": max(hard), "hard_meanlog": sum(logs) / len(logs),
+            "random_over": sum(not x <= BAR[precision] for x in rnd), "random_count": len(rnd),
+            "random_max": max(rnd),
+            "ns_random": _geomean([r.ns_random for r in pr]), "ns_hard": _geomean([r.ns_hard for r in pr]),
+            "failing_kinds": sorted({r.kind for r in pr if r.hard_over or r.random_over}),
+        }
+    return stats
+
+
+def recommend(rows, cases, errors):
+    """The most accurate policy on the hard cases in double: fewest cases over the bar, then the
+    smallest max error, then the smallest mean log10 error. Policies within a factor 2 of the best
+    max error and 0.1 of its mean log10 error count as equally accurate; the cheapest of those
+    (geometric mean of ns/query on the random cases) is recommended. Returns (policy, stats, tied)."""
+    stats = policy_stats(rows, cases, errors, "double")
+    over = {p: stats[p]["hard_over"] + stats[p]["random_over"] for p in POLICIES}
+    cands = [p for p in POLICIES if over[p] == min(over.values())]
+    best_max = min(stats[p]["hard_max"] for p in cands)
+    cands = [p for p in cands if stats[p]["hard_max"] <= 2 * best_max]
+    best_log = min(stats[p]["hard_meanlog"] for p in cands)
+    tied = [p for p in cands if stats[p]["hard_meanlog"] <= best_log + 0.1]
+    best = min(tied, key=lambda p: stats[p]["ns_random"])
+    return best, stats, tied
+
+
+def current_default():
+    text = (ROOT / "cpp" / "include" / "circledist" / "roots.hpp").read_text()
+    for line in text.splitlines():
+        if line.strip().startswith("using DefaultRoots"):
+            return line.split("=")[1].strip().rstrip(";").strip()
+    return "?"
+
+
+# ------------------------------------------------------------------------------------------------
+# output: terminal table, markdown, plots
+# ------------------------------------------------------------------------------------------------
+def fmt_e(x):
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "-"
+    if math.isinf(x):
+        return "inf"
+    if x == 0:
+        return "0"
+    return f"{x:.1e}"
+
+
+def fmt_ns(x):
+    if x is None or math.isnan(x):
+        return "-"
+    return f"{x:.0f}" if x >= 100 else f"{x:.1f}"
+
+
+HEADER = ["kind", "policy", "precision", "ns random", "ns hard", "random max", "random median",
+          "hard max", "hard median", "hard > bar", "worst hard case"]
+
+
+def row_cells(r):
+    return [r.kind, r.policy, r.precision, fmt_ns(r.ns_random), fmt_ns(r.ns_hard), fmt_e(r.random_max),
+            fmt_e(r.random_median), fmt_e(r.hard_max), fmt_e(r.hard_median), f"{r.hard_over}/{r.hard_count}",
+            r.worst if r.hard_max > BAR[r.precision] else ""]
+
+
+def print_table(rows, out=sys.stdout):
+    cells = [HEADER] + [row_cells(r) for r in rows]
+    widths = [max(len(c[i]) for c in cells) for i in range(len(HEADER) - 1)]
+    for i, c in enumerate(cells):
+        if i > 1 and c[0] != cells[i - 1][0]:
+            print("", file=out)
+        print("  ".join(x.ljust(w) if j < 3 else x.rjust(w) for j, (x, w) in enumerate(zip(c, widths)))
+              + ("  " + c[-1] if c[-1] else ""), file=out)
+
+
+def md_table(header, rows):
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    out += ["| " + " | ".join(r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep_summary, runtime, n_random, kinds,
+                   compiled, min_time):
+    default = current_default()
+    dbl = {(r.kind, r.policy): r for r in rows if r.precision == "double"}
+    n_hard = sum(c.group == "hard" for c in cases)
+    n_rand = sum(c.group == "random" for c in cases)
+    s = stats[best]
+    others = [p for p in POLICIES if p != best]
+    lines = [
+        "# Accuracy against time: root policies and precisions",
+        "",
+        "Generated by `python bench/accuracy_vs_time.py` (also run by `bash tools/run.sh bench`); do not edit",
+        "by hand. Every distance query kind of the headers, with each root policy (`EigenCompanion`,",
+        "`EigenPolished`, `Bracketing`) in float, double and long double, on "
+        f"{n_rand} seeded random cases ({n_random} per kind) and {n_hard} hard cases.",
+        "",
+        "## Headline",
+        "",
+    ]
+    verdict = ("the current `DefaultRoots`" if best == default
+               else f"**not** the current `DefaultRoots` (`{default}`)")
+    if len(tied) > 1:
+        why = (f"{', '.join(f'`{p}`' for p in tied)} are equally accurate on the hard cases in double "
+               f"(same number over the bar, max error within x2, mean log10 error within 0.1); `{best}` is "
+               "the cheapest of them")
+    else:
+        why = f"`{best}` is the most accurate policy on the hard cases in double"
+    lines += [
+        f"- **Recommended default: `{best}`** ({verdict}). {why}.",
+        "",
+        "| policy (double) | hard cases over 1e-12 | hard max error | hard mean log10 error | random over | "
+        "random max error | ns/query random (geomean) | ns/query hard (geomean) |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for p in POLICIES:
+        o = stats[p]
+        lines.append(f"| `{p}` | {o['hard_over']}/{o['hard_count']} | {fmt_e(o['hard_max'])} | "
+                     f"{o['hard_meanlog']:.2f} | {o['random_over']}/{o['random_count']} | {fmt_e(o['random_max'])} | "
+                     f"{o['ns_random']:.0f} | {o['ns_hard']:.0f} |")
+    ratio = {p: stats[p]["ns_random"] / stats[best]["ns_random"] for p in POLICIES}
+    lines += [
+        "",
+        f"- Cost of the others relative to `{best}` (random cases): "
+        + ", ".join(f"`{p}` x{ratio[p]:.2f}" for p in others) + ".",
+    ]
+    for prec in ("float", "longdouble"):
+        ps = other_precisions[prec]
+        lines.append(f"- {prec if prec == 'float' else 'long double'} (bar {BAR[prec]:.1e}): cases over the bar "
+                     + ", ".join(f"`{p}` {ps[p]['hard_over']} hard / {ps[p]['random_over']} random "
+                                 f"(max {fmt_e(max(ps[p]['hard_max'], ps[p]['random_max']))})" for p in POLICIES)
+                     + ".")
+    if s["failing_kinds"]:
+        lines.append(f"- Even `{best}` misses the bar on: {', '.join(s['failing_kinds'])} (see the tables).")
+    if sweep_summary:
+        lines.append("- Stability sweeps (double, `docs/stability_sweeps.png`): " + sweep_summary)
+    missing = [k for k in KINDS if not compiled.get(k, False)]
+    if missing:
+        lines.append(f"- Kinds whose header is missing (not measured): {', '.join(missing)}.")
+    lines += [
+        "",
+        "Relative error = |d - d_ref| / max(d_ref, largest radius of the query). The bar is 1e-12 in double;",
+        "float and long double are judged against the same number of ulps of their own precision,",
+        f"1e-12 eps_p / eps_double: {BAR['float']:.1e} for float, {BAR['longdouble']:.1e} for long double.",
+        "The float inputs are the double cases rounded to float, and their references are those of the",
+        "rounded inputs (so the error measures the solver, not the input rounding); the long double",
+        "inputs are the doubles extended exactly and share the double references.",
+        "",
+        "References: 50-digit mpmath, by an independent method (tests/reference.py and",
+        "tests/reference_round.py): the distance is minimised over ONE parameter (an angle of a circle or",
+        "the curve/line parameter) of a closed-form point-to-shape distance, by dense sampling and",
+        "golden-section refinement; no polynomial and no root finding.",
+        "",
+        f"Timing: ns/query is the median over repeated passes (each ~2 ms, at least {min_time} s per",
+        "kind x policy x precision x case set) of one single-threaded loop of `circledist::distance<Policy>`",
+        "over the cases, compiled -O3 -DNDEBUG without -march=native. Absolute numbers depend on the",
+        f"machine and its load (measured on a {os.cpu_count()}-core machine shared with other jobs); compare",
+        "policies within a kind and precision rather than absolute values.",
+        "",
+        "## Double: time and worst error per kind",
+        "",
+    ]
+    header = ["kind"] + [f"{p} ns" for p in POLICIES] + [f"{p} max err (random / hard)" for p in POLICIES]
+    body = []
+    for k in kinds:
+        if (k, POLICIES[0]) not in dbl:
+            continue
+        body.append([k] + [fmt_ns(dbl[(k, p)].ns_random) for p in POLICIES]
+                    + [f"{fmt_e(dbl[(k, p)].random_max)} / {fmt_e(dbl[(k, p)].hard_max)}" for p in POLICIES])
+    lines += [md_table(header, body), "", "![error against time](accuracy_vs_time.png)", "",
+              "## Every kind x policy x precision", "",
+              "ns random / ns hard: ns/query on the random / hard cases. `hard > bar`: hard cases over the",
+              "precision's bar. The worst hard case is named where it is over the bar.", ""]
+    lines.append(md_table(HEADER, [row_cells(r) for r in rows]))
+    lines += ["", "## Hard cases", "",
+              "Linear shapes against the unit circle / disk in its own frame: tangent in the plane; tangent",
+              "line lifted by 1e-3, 1e-6, 1e-9; line on the axis, offset from it by 1e-8 / 1e-12, tilted from it",
+              "by 1e-8 / 1e-12; near-parallel to the plane (1e-9) at height 1e-3 and over the rim at 1e-6;",
+              "crossing the plane on the rim and 1e-9 inside / outside it; in-plane lines; rays and segments",
+              "around and starting at each of those, plus their own (starting on the rim, zero length, ...);",
+              "points on the axis, the rim, near both. Circle / disk kinds: coplanar (disjoint, nested,",
+              "crossing, touching), concentric, coaxial, linked, near-coplanar (tilt 1e-9), parallel 1e-9 apart,",
+              "perpendicular touching, radius ratios 1e-6 / 1e6. Bezier kinds: straight curves tangent to the",
+              "rim (lifted by 1e-9), along the axis, parabolas touching the disk, a wavy quintic, a degree-7",
+              "curve. Each scene is used in the round shape's frame, under a generic rotation, and translated",
+              "by 1e6 and 1e8 (both orientations); selected linear scenes also with the scene scaled by",
+              "1e-9 / 1e9 and with the radius alone 1e-9 / 1e9 (those not translated: a radius of 1e-9 at 1e8,",
+              "where the ulp is 1.5e-8, would ask for an absolute error below the rounding of the line's own",
+              "closest point to the center, in any policy).", "",
+              f"Script runtime: {runtime:.0f} s (references cached in build/accuracy_vs_time/ after the first run).",
+              ""]
+    path.write_text("\n".join(lines))
+
+
+POLICY_COLORS = {"EigenCompanion": "#1f77b4", "EigenPolished": "#d62728", "Bracketing": "#2ca02c"}
+PRECISION_MARKERS = {"float": "v", "double": "o", "longdouble": "s"}
+
+
+def plot_accuracy(path, rows, kinds):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+
+    kinds = [k for k in kinds if any(r.kind == k for r in rows)]
+    ncol = 4
+    nrow = (len(kinds) + 1 + ncol - 1) // ncol
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.4 * nrow), squeeze=False)
+    for ax, kind in zip(axes.flat, kinds):
+        for r in rows:
+            if r.kind != kind:
+                continue
+            col = POLICY_COLORS[r.policy]
+            mk = PRECISION_MARKERS[r.precision]
+            for ns, err, filled in ((r.ns_random, r.random_max, False), (r.ns_hard, r.hard_max, True)):
+                if not math.isfinite(ns):
+                    continue
+                y = err if math.isfinite(err) else 1.0
+                ax.scatter([ns], [max(y, ERROR_FLOOR)], s=46, marker=mk, edgecolors=col,
+                           facecolors=col if filled else "none", linewidths=1.4, zorder=3)
+        for prec, ls in (("float", ":"), ("double", "--"), ("longdouble", "-.")):
+            ax.axhline(BAR[prec], color="0.45", lw=0.9, ls=ls, zorder=1)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_ylim(ERROR_FLOOR / 3, 3.0)
+        ax.set_title(kind, fontsize=11)
+        ax.grid(True, which="major", alpha=0.3)
+        ax.tick_params(labelsize=8)
+        ax.set_xlabel("ns / query", fontsize=9)
+        ax.set_ylabel("max relative error", fontsize=9)
+    legend_ax = axes.flat[len(kinds)]
+    for ax in list(axes.flat)[len(kinds):]:
+        ax.axis("off")
+    handles = [Line2D([], [], ls="", marker="o", color=c, label=p, markersize=8) for p, c in POLICY_COLORS.items()]
+    handles += [Line2D([], [], ls="", marker=m, color="0.3", label=p if p != "longdouble" else "long double",
+                       markersize=8) for p, m in PRECISION_MARKERS.items()]
+    handles += [Line2D([], [], ls="", marker="o", color="0.3", label="hard cases (filled)", markersize=8),
+                Line2D([], [], ls="", marker="o", markerfacecolor="none", color="0.3",
+                       label="random cases (hollow)", markersize=8)]
+    handles += [Line2D([], [], color="0.45", ls=ls, label=f"bar {p}") for p, ls in
+                (("float", ":"), ("double", "--"), ("long double", "-."))]
+    legend_ax.legend(handles=handles, loc="center", fontsize=10, frameon=False,
+                     title=f"errors below {ERROR_FLOOR:.0e} drawn at it", title_fontsize=9)
+    fig.suptitle("circledist: max relative error against time, per kind x root policy x precision", fontsize=13)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+# ------------------------------------------------------------------------------------------------
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--random", type=int, default=40, help="random cases per kind (default 40)")
+    ap.add_argument("--min-time", type=float, default=0.05, help="seconds of timing per kind x policy x precision x set")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="processes for the references / compiling")
+    ap.add_argument("--binary", help="use this accuracy_vs_time executable")
+    ap.add_argument("--kinds", help="comma-separated subset of the kinds")
+    ap.add_argument("--quick", action="store_true", help="10 random cases per kind, 0.01 s timings")
+    ap.add_argument("--no-docs", action="store_true", help="print the table only; write no docs/ files")
+    args = ap.parse_args(argv)
+    if args.quick:
+        args.random, args.min_time = 10, 0.01
+    t_start = time.time()
+
+    import sweeps  # bench/sweeps.py
+
+    binary = ensure_binary(args.binary, args.jobs)
+    kinds = KINDS if not args.kinds else [k for k in args.kinds.split(",") if k in KINDS]
+    # Kinds the program does not compile (missing header) are dropped before any reference work.
+    probe = BUILD / "probe.txt"
+    BUILD.mkdir(parents=True, exist_ok=True)
+    probe.write_text("")
+    subprocess.run([str(binary), str(probe), str(BUILD / "probe_out.txt"), "--min-time", "0"], check=True)
+    compiled = {ln.split()[1]: ln.split()[2] == "1" for ln in (BUILD / "probe_out.txt").read_text().splitlines()
+                if ln.startswith("K ")}
+    kinds = [k for k in kinds if compiled.get(k)]
+
+    cases = generate_cases(args.random, kinds)
+    sweep_cases = sweeps.sweep_cases(kinds)
+    all_cases = cases + [Case(sc.kind, "sweep", sc.label, sc.values, sc.exact) for sc in sweep_cases]
+    needed = []
+    for c in all_cases:
+        if c.exact is None:
+            needed.append((c.kind, c.values))
+        if c.group != "sweep":
+            needed.append((c.kind, to_float32(c.values)))
+    refs = compute_references(needed, args.jobs)
+    compiled, dist, timing = run_binary(binary, all_cases, args.min_time)
+    errors = evaluate(all_cases, refs, dist)
+    rows = summarize(all_cases, errors, timing, kinds)
+    print()
+    print_table(rows)
+    best, stats, tied = recommend(rows, all_cases, errors)
+    other_precisions = {p: policy_stats(rows, all_cases, errors, p) for p in ("float", "longdouble")}
+
+    # Stability sweeps: error against k per policy (double).
+    offset = len(cases)
+    sweep_err = {}
+    for j, sc in enumerate(sweep_cases):
+        for pol in POLICIES:
+            sweep_err[(j, pol)] = errors[(offset + j, pol, "double")]
+    sweep_fail = sweeps.summarize_failures(sweep_cases, sweep_err, POLICIES, DOUBLE_BAR)
+    print()
+    print(f"Recommended default: {best} (current DefaultRoots: {current_default()}; "
+          f"equally accurate in double: {', '.join(tied)})")
+    for p in POLICIES:
+        s = stats[p]
+        print(f"  {p:15s} hard over bar {s['hard_over']}/{s['hard_count']}  hard max {fmt_e(s['hard_max'])}  "
+              f"random over bar {s['random_over']}  ns (geomean random) {s['ns_random']:.0f}  hard {s['ns_hard']:.0f}")
+    print("Stability sweeps (double, bar 1e-12):")
+    for line in sweep_fail["lines"]:
+        print("  " + line)
+    runtime = time.time() - t_start
+    if not args.no_docs:
+        DOCS.mkdir(exist_ok=True)
+        sweeps.plot_sweeps(DOCS / "stability_sweeps.png", sweep_cases, sweep_err, POLICIES, POLICY_COLORS, DOUBLE_BAR)
+        plot_accuracy(DOCS / "accuracy_vs_time.png", rows, kinds)
+        runtime = time.time() - t_start
+        write_markdown(DOCS / "accuracy_vs_time.md", rows, best, stats, tied, other_precisions, all_cases,
+                       sweep_fail["summary"], runtime, args.random, kinds, compiled, args.min_time)
+        print(f"wrote docs/accuracy_vs_time.md, docs/accuracy_vs_time.png, docs/stability_sweeps.png")
+    print(f"runtime {runtime:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

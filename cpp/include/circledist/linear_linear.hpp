@@ -1,0 +1,154 @@
+// Points, lines, rays and segments against each other: closed forms, no polynomial. They let
+// swept points (balls) and swept segments (capsules) meet each other, and a scene mix every kind.
+//
+// Two pieces P(s) = p + s u, s in [lo_a, hi_a], and Q(t) = q + t v, t in [lo_b, hi_b] (either end
+// may be infinite): the squared distance f(s, t) = |w + s u - t v|^2, w = p - q, is convex, so its
+// minimum over the box of parameters is the interior stationary point when that lies in the box,
+// and otherwise lies on an edge of the box, where one parameter sits at a finite end and the
+// other minimizes a convex quadratic: its stationary value clamped to its interval. The exact
+// distance judges those few candidates. Parallel pieces (u x v = 0) have no interior point; their
+// distance is constant along the overlap of their projections, which contains an end point of one
+// of them unless both are full lines (then any pair at s = 0 does). `unique` is false when that
+// overlap is longer than the distinct-points tolerance (a continuum of closest pairs).
+#pragma once
+
+#include "linear.hpp"
+#include "query.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace circledist {
+
+template <class Real> struct LinearPair {
+  Real distance = std::numeric_limits<Real>::infinity();
+  Real s = 0, t = 0;
+  bool unique = true;
+};
+
+template <class Real> Real clamp_to(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
+
+template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
+  const Vec3<Real>& u = a.direction;
+  const Vec3<Real>& v = b.direction;
+  const Vec3<Real> w = a.origin - b.origin;
+  const Real aa = u.squaredNorm(), bb = u.dot(v), cc = v.squaredNorm(), dd = u.dot(w), ee = v.dot(w);
+  const bool a_point = !(aa > 0), b_point = !(cc > 0);
+  LinearPair<Real> best;
+  const auto consider = [&](Real s, Real t) {
+    const Real dist = (w + s * u - t * v).norm();
+    if (dist < best.distance) best = {dist, s, t, true};
+  };
+  // The stationary value of one parameter with the other fixed, clamped.
+  const auto t_for = [&](Real s) { return b_point ? clamp_to(Real(0), b.lo, b.hi) : clamp_to((bb * s + ee) / cc, b.lo, b.hi); };
+  const auto s_for = [&](Real t) { return a_point ? clamp_to(Real(0), a.lo, a.hi) : clamp_to((bb * t - dd) / aa, a.lo, a.hi); };
+  const Real cross2 = u.cross(v).squaredNorm();
+  const Real parallel = 64 * std::numeric_limits<Real>::epsilon() * aa * cc;
+  if (!a_point && !b_point && cross2 > 0) {
+    // The interior stationary point; its distance by the closed form |w.n| / |n|, n = u x v,
+    // which stays accurate for nearly parallel pieces (where s and t are ill-conditioned).
+    const Real s = (bb * ee - cc * dd) / cross2, t = (aa * ee - bb * dd) / cross2;
+    if (s >= a.lo && s <= a.hi && t >= b.lo && t <= b.hi) {
+      const Vec3<Real> n = u.cross(v);
+      best = {std::abs(w.dot(n)) / std::sqrt(cross2), s, t, true};
+    }
+  }
+  if (std::isfinite(a.lo)) consider(a.lo, t_for(a.lo));
+  if (std::isfinite(a.hi)) consider(a.hi, t_for(a.hi));
+  if (std::isfinite(b.lo)) consider(s_for(b.lo), b.lo);
+  if (std::isfinite(b.hi)) consider(s_for(b.hi), b.hi);
+  if (!(best.distance < std::numeric_limits<Real>::infinity())) {
+    // Two full lines, parallel (or a degenerate direction): any s gives the distance.
+    const Real s = clamp_to(Real(0), a.lo, a.hi);
+    consider(s, t_for(s));
+  }
+  if (!a_point && !b_point && !(cross2 > parallel)) {
+    // Parallel: the overlap of b's projection onto a's parameter with a's interval.
+    const Real t0 = std::isfinite(b.lo) ? b.lo : -std::numeric_limits<Real>::infinity();
+    const Real t1 = std::isfinite(b.hi) ? b.hi : std::numeric_limits<Real>::infinity();
+    Real p0 = (bb * t0 - dd) / aa, p1 = (bb * t1 - dd) / aa;
+    if (!(p0 == p0)) p0 = bb > 0 ? -std::numeric_limits<Real>::infinity() : std::numeric_limits<Real>::infinity();
+    if (!(p1 == p1)) p1 = bb > 0 ? std::numeric_limits<Real>::infinity() : -std::numeric_limits<Real>::infinity();
+    const Real lo = std::max(a.lo, std::min(p0, p1)), hi = std::min(a.hi, std::max(p0, p1));
+    const Real scale = std::max({w.norm(), best.distance, Real(1e-300)});
+    if (hi > lo && (hi - lo) * std::sqrt(aa) > distinct_points_tolerance(scale)) best.unique = false;
+  }
+  return best;
+}
+
+template <class Real, class PieceA, class PieceB> struct LinearLinearQuery {
+  static constexpr bool defined = true;
+
+  template <class Roots = DefaultRoots> static Real distance(const PieceA& a, const PieceB& b) {
+    return linear_pair(as_linear(a), as_linear(b)).distance;
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const PieceA& a, const PieceB& b) {
+    const Linear<Real> la = as_linear(a), lb = as_linear(b);
+    const LinearPair<Real> p = linear_pair(la, lb);
+    Result<Real> r;
+    r.distance = p.distance;
+    r.point_a = la.origin + p.s * la.direction;
+    r.point_b = lb.origin + p.t * lb.direction;
+    r.param_a = Vec2<Real>(p.s, 0);
+    r.param_b = Vec2<Real>(p.t, 0);
+    r.unique = p.unique;
+    return r;
+  }
+};
+
+template <class Real> struct Query<Line3<Real>, Line3<Real>> : LinearLinearQuery<Real, Line3<Real>, Line3<Real>> {};
+template <class Real> struct Query<Line3<Real>, Ray3<Real>> : LinearLinearQuery<Real, Line3<Real>, Ray3<Real>> {};
+template <class Real>
+struct Query<Line3<Real>, Segment3<Real>> : LinearLinearQuery<Real, Line3<Real>, Segment3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Ray3<Real>> : LinearLinearQuery<Real, Ray3<Real>, Ray3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Segment3<Real>> : LinearLinearQuery<Real, Ray3<Real>, Segment3<Real>> {};
+template <class Real>
+struct Query<Segment3<Real>, Segment3<Real>> : LinearLinearQuery<Real, Segment3<Real>, Segment3<Real>> {};
+
+// A point against a line, ray or segment: its projection, clamped to the interval.
+template <class Real, class Piece> struct PointLinearQuery {
+  static constexpr bool defined = true;
+
+  static Real parameter(const Vec3<Real>& p, const Linear<Real>& l) {
+    const Real aa = l.direction.squaredNorm();
+    return aa > 0 ? clamp_to((p - l.origin).dot(l.direction) / aa, l.lo, l.hi) : clamp_to(Real(0), l.lo, l.hi);
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Piece& piece) {
+    const Linear<Real> l = as_linear(piece);
+    return (l.origin + parameter(p, l) * l.direction - p).norm();
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Piece& piece) {
+    const Linear<Real> l = as_linear(piece);
+    const Real t = parameter(p, l);
+    Result<Real> r;
+    r.point_a = p;
+    r.point_b = l.origin + t * l.direction;
+    r.distance = (r.point_b - p).norm();
+    r.param_b = Vec2<Real>(t, 0);
+    return r;
+  }
+};
+
+template <class Real> struct Query<Vec3<Real>, Line3<Real>> : PointLinearQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Vec3<Real>, Ray3<Real>> : PointLinearQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Vec3<Real>, Segment3<Real>> : PointLinearQuery<Real, Segment3<Real>> {};
+
+template <class Real> struct Query<Vec3<Real>, Vec3<Real>> {
+  static constexpr bool defined = true;
+  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Vec3<Real>& q) {
+    return (q - p).norm();
+  }
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Vec3<Real>& q) {
+    Result<Real> r;
+    r.distance = (q - p).norm();
+    r.point_a = p;
+    r.point_b = q;
+    return r;
+  }
+};
+
+}  // namespace circledist

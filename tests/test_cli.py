@@ -1,0 +1,181 @@
+"""The command line (python -m circledist / the circledist console script): the table, --json,
+--plot, the shipped demo scene, and bad scene files (an error naming the file, the shape or
+query and the field; nothing written; a non-zero exit)."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+cd = pytest.importorskip("circledist")
+cli = pytest.importorskip("circledist.cli")
+
+SCENE = {
+    "description": "test scene",
+    "shapes": [
+        {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
+        {"name": "rail", "kind": "line", "origin": [-3, 1, 0.5], "direction": [1, 0, 0]},
+        {"name": "coin", "kind": "disk", "center": [3, 0, 0], "normal": [1, 0, 1], "radius": 0.5, "sweep": 0.1},
+        {"name": "probe", "kind": "segment", "p0": [3, 0, -1], "p1": [3, 0, 1]},
+        {"name": "tip", "kind": "point", "p": [0, 0, 2]},
+        {"name": "cable", "kind": "bezier", "control_points": [[-2, -2, 1], [0, 0, 3], [2, -2, 1]]},
+    ],
+    "queries": [
+        {"a": "rail", "b": "ring", "effects": ["intersects", "within", "distance", "closest_points"], "d": 0.6},
+        {"name": "coin vs probe", "a": "coin", "b": "probe", "effects": ["intersects", "closest_points"]},
+        {"a": "ring", "effects": ["nearest"], "k": 2},
+        {"a": "coin", "effects": ["within"], "d": 3.0},
+        {"a": "cable", "b": "ring", "effects": ["distance"]},
+    ],
+}
+
+
+def write(tmp_path, data, name="scene.json"):
+    p = tmp_path / name
+    p.write_text(json.dumps(data) if not isinstance(data, str) else data)
+    return str(p)
+
+
+def test_table(tmp_path, capsys):
+    assert cli.main([write(tmp_path, SCENE)]) == 0
+    out = capsys.readouterr().out
+    assert "test scene" in out
+    assert "rail ~ ring  intersects" in out.replace("   ", "  ") or "rail ~ ring" in out
+    lines = {tuple(l.split()[:4]): l for l in out.splitlines()}
+    text = "\n".join(lines.values())
+    assert "0.5 between (0, 1, 0.5) and (0, 1, 0)" in text
+    assert "nearest k=2" in text and "within 3" in text
+    assert "coin vs probe" in text
+
+
+def test_json_answers_match_the_library(tmp_path, capsys):
+    out_path = tmp_path / "answers.json"
+    assert cli.main([write(tmp_path, SCENE), "--json", str(out_path)]) == 0
+    answers = json.loads(out_path.read_text())["answers"]
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    rail = cd.Line([-3, 1, 0.5], [1, 0, 0])
+    first = answers[0]
+    assert first["a"] == "rail" and first["b"] == "ring" and first["d"] == 0.6
+    assert first["intersects"] is False and first["within"] is True
+    assert first["distance"] == cd.distance(rail, ring)
+    r = cd.closest_points(rail, ring)
+    assert first["closest_points"]["point_a"] == list(r.point_a)
+    assert first["closest_points"]["unique"] is True
+    coin = cd.Disk([3, 0, 0], [1, 0, 1], 0.5, sweep=0.1)
+    probe = cd.Segment([3, 0, -1], [3, 0, 1])
+    assert answers[1]["query"] == "coin vs probe" and answers[1]["intersects"] is True
+    assert answers[1]["closest_points"]["distance"] == 0.0
+    assert cd.intersects(coin, probe)
+    nearest = answers[2]["nearest"]
+    assert [x["name"] for x in nearest] == ["tip", "rail"] or len(nearest) == 2
+    shapes = {s["name"]: s for s in SCENE["shapes"]}
+    scene = cli.load_scene("x.json", json.dumps(SCENE))
+    expected = sorted((cd.distance(scene.shapes["ring"], s), i, n) for i, (n, s) in enumerate(scene.shapes.items())
+                      if n != "ring")[:2]
+    assert [x["name"] for x in nearest] == [n for _, _, n in expected]
+    assert [x["distance"] for x in nearest] == [d for d, _, _ in expected]
+    assert answers[3]["within"] == [n for n in shapes if n != "coin"
+                                    and cd.within(scene.shapes["coin"], scene.shapes[n], 3.0)]
+    assert "answers written to" in capsys.readouterr().out
+
+
+def test_json_to_stdout(tmp_path, capsys):
+    assert cli.main([write(tmp_path, SCENE), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["answers"]) == len(SCENE["queries"])
+
+
+def test_plot(tmp_path):
+    pytest.importorskip("matplotlib")
+    png = tmp_path / "scene.png"
+    assert cli.main([write(tmp_path, SCENE), "--plot", str(png)]) == 0
+    data = png.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000
+
+
+BAD = [
+    ("not json", "{", "not valid JSON"),
+    ("no shapes", {"queries": []}, "field 'shapes'"),
+    ("bad radius", {"shapes": [{"name": "r", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
+                                "radius": -1}]}, "shape 'r': field 'radius': must be >= 0"),
+    ("missing field", {"shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "radius": 1}]},
+     "shape 'r': field 'normal': missing"),
+    ("zero normal", {"shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, 0],
+                                 "radius": 1}]}, "shape 'r': field 'normal': must not be the zero vector"),
+    ("unknown kind", {"shapes": [{"name": "x", "kind": "torus"}]}, "shape 'x': field 'kind'"),
+    ("unknown field", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "colour": "red"}]},
+     "shape 'p': field 'colour': unknown"),
+    ("short vector", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0]}]},
+     "shape 'p': field 'p': must be a list of 3 numbers"),
+    ("negative sweep", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "sweep": -2}]},
+     "shape 'p': field 'sweep'"),
+    ("duplicate name", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0]},
+                                   {"name": "p", "kind": "point", "p": [1, 0, 0]}]}, "shape 'p': field 'name'"),
+    ("bad bezier", {"shapes": [{"name": "c", "kind": "bezier", "control_points": [[0, 0, 0]]}]},
+     "shape 'c': field 'control_points'"),
+    ("unknown shape in query", {"shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "nope",
+                                                                        "effects": ["distance"]}]},
+     "queries[0]: field 'b': no shape named \"nope\""),
+    ("unknown effect", {"shapes": SCENE["shapes"], "queries": [{"name": "q", "a": "ring", "b": "rail",
+                                                                "effects": ["volume"]}]},
+     "query 'q': field 'effects': 'volume'"),
+    ("within without d", {"shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "rail", "effects": ["within"]}]},
+     "queries[0]: field 'd': missing"),
+    ("no query for the pair", {"shapes": SCENE["shapes"], "queries": [{"a": "cable", "b": "probe",
+                                                                       "effects": ["distance"]}]},
+     "queries[0]: field 'b': circledist has no query between a Bezier and a Segment"),
+    ("bad k", {"shapes": SCENE["shapes"], "queries": [{"a": "ring", "effects": ["nearest"], "k": 0}]},
+     "queries[0]: field 'k'"),
+]
+
+
+@pytest.mark.parametrize("label,data,message", BAD, ids=[b[0] for b in BAD])
+def test_bad_scene_files(tmp_path, capsys, label, data, message):
+    path = write(tmp_path, data)
+    out_json, out_png = tmp_path / "answers.json", tmp_path / "picture.png"
+    status = cli.main([path, "--json", str(out_json), "--plot", str(out_png)])
+    err = capsys.readouterr().err
+    assert status == 2
+    assert path in err and message in err, err
+    assert not out_json.exists() and not out_png.exists()
+    assert sorted(os.listdir(tmp_path)) == ["scene.json"]  # nothing partial, no temporary files
+
+
+def test_missing_file(tmp_path, capsys):
+    assert cli.main([str(tmp_path / "absent.json")]) == 2
+    assert "absent.json: cannot read" in capsys.readouterr().err
+
+
+def test_demo_scene_ships_in_the_package():
+    from importlib import resources
+
+    text = resources.files("circledist").joinpath("scenes", "demo.json").read_text()
+    scene = cli.load_scene("demo.json", text)
+    assert len(scene.shapes) >= 5 and scene.queries
+
+
+def test_module_runs_the_demo_without_arguments(tmp_path):
+    pytest.importorskip("matplotlib")
+    r = subprocess.run([sys.executable, "-m", "circledist"], cwd=tmp_path, capture_output=True, text=True,
+                       timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert "closest_points" in r.stdout and "nearest" in r.stdout
+    png = tmp_path / cli.DEMO_PICTURE
+    assert png.exists() and png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_module_no_plot(tmp_path):
+    r = subprocess.run([sys.executable, "-m", "circledist", "--no-plot"], cwd=tmp_path, capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert os.listdir(tmp_path) == []
+
+
+def test_console_script_is_declared():
+    from importlib import metadata
+
+    scripts = [e for e in metadata.entry_points(group="console_scripts") if e.name == "circledist"]
+    assert scripts and scripts[0].value == "circledist.cli:main"

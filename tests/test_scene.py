@@ -1,0 +1,197 @@
+"""cd.Scene: named shapes of mixed kinds; nearest / within / pairs_within / distance_matrix give
+exactly the brute-force answers on random (seeded) scenes while the bounding-volume hierarchy
+spares most pairs any exact work."""
+
+import numpy as np
+import pytest
+
+cd = pytest.importorskip("circledist")
+
+
+def rand_dirs(rng, n):
+    v = rng.normal(size=(n, 3))
+    return v / np.linalg.norm(v, axis=1, keepdims=True)
+
+
+def mixed_scene(seed, n=600, box=20.0, sweeps=True, kinds=("Disk", "Circle", "Segment", "Point", "Bezier")):
+    """A scene of n shapes of the given kinds (in turn), and the same shapes as a list."""
+    rng = np.random.default_rng(seed)
+    scene = cd.Scene()
+    shapes = []
+    for i in range(n):
+        kind = kinds[i % len(kinds)]
+        c = rng.uniform(-box, box, 3)
+        sweep = float(rng.uniform(0, 0.2)) if sweeps and rng.uniform() < 0.5 else 0.0
+        if kind in ("Disk", "Circle"):
+            s = getattr(cd, kind)(c, rand_dirs(rng, 1)[0], rng.uniform(0.2, 1.2), sweep=sweep)
+        elif kind == "Segment":
+            s = cd.Segment(c, c + rng.uniform(-1, 1, 3), sweep=sweep)
+        elif kind == "Point":
+            s = cd.Point(c, sweep=sweep)
+        elif kind == "Bezier":
+            s = cd.Bezier(c + rng.uniform(-1, 1, (4, 3)), sweep=sweep)
+        elif kind == "Line":
+            s = cd.Line(c, rand_dirs(rng, 1)[0], sweep=sweep)
+        else:
+            raise AssertionError(kind)
+        scene.add(f"{kind.lower()}{i}", s)
+        shapes.append(s)
+    return scene, shapes
+
+
+def brute_distances(query, shapes):
+    return np.array([cd.distance(query, s) for s in shapes])
+
+
+QUERIES = {
+    "line": cd.Line([-20, 1.0, 2.0], [1, 0.3, -0.2]),
+    "ray": cd.Ray([0, 0, 0], [0.2, 1, 0.1]),
+    "circle": cd.Circle([1, 2, 3], [0.3, 0.1, 1], 2.0, sweep=0.1),
+    "disk": cd.Disk([-4, 5, 0], [1, 1, 0], 1.5),
+}
+
+
+@pytest.mark.parametrize("query", list(QUERIES))
+@pytest.mark.parametrize("k", [1, 4])
+def test_nearest_equals_brute_force(query, k):
+    # Bezier curves have queries against circles and disks only.
+    kinds = ("Disk", "Circle", "Segment", "Point") if query in ("line", "ray") else \
+        ("Disk", "Circle", "Segment", "Point", "Bezier")
+    scene, shapes = mixed_scene(5 + k, kinds=kinds)
+    q = QUERIES[query]
+    d = brute_distances(q, shapes)
+    order = np.argsort(d, kind="stable")[:k]
+    expected = [(scene.names[i], d[i]) for i in order]
+    cd.reset_stats()
+    got = scene.nearest(q, k)
+    assert got == expected
+    s = cd.stats()
+    assert s["distances"] < len(shapes) / 5, s
+    assert s["culled"] > 0.8 * len(shapes)
+
+
+def test_nearest_with_sweeps_and_names():
+    scene, shapes = mixed_scene(2, n=300, kinds=("Disk", "Circle", "Point", "Segment"))
+    name = scene.names[10]
+    q = scene[name]
+    d = brute_distances(q, shapes)
+    d[10] = np.inf                      # a name as the query leaves that shape out
+    order = np.argsort(d, kind="stable")[:3]
+    assert scene.nearest(name, 3) == [(scene.names[i], d[i]) for i in order]
+    assert scene.nearest(q, 1)[0] == (name, 0.0)
+    assert [n for n, _ in scene.nearest(q, 2, exclude=[name])] == [scene.names[order[0]], scene.names[order[1]]]
+
+
+@pytest.mark.parametrize("query", list(QUERIES))
+@pytest.mark.parametrize("d", [0.0, 0.5, 3.0])
+def test_within_equals_brute_force(query, d):
+    kinds = ("Disk", "Circle", "Segment", "Point") if query in ("line", "ray") else \
+        ("Disk", "Circle", "Segment", "Point", "Bezier")
+    scene, shapes = mixed_scene(11, kinds=kinds)
+    q = QUERIES[query]
+    expected = [scene.names[i] for i, s in enumerate(shapes) if cd.within(q, s, d)]
+    dist = brute_distances(q, shapes)
+    assert expected == [scene.names[i] for i in np.flatnonzero(dist <= d)]
+    cd.reset_stats()
+    assert scene.within(q, d) == expected
+    s = cd.stats()
+    assert s["within"] < len(shapes) / 4, s
+
+
+@pytest.mark.parametrize("d", [0.0, 0.4, 2.0])
+def test_pairs_within_equals_brute_force(d):
+    scene, shapes = mixed_scene(21, n=240, box=8.0, kinds=("Disk", "Circle", "Segment", "Point"))
+    names = scene.names
+    expected = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
+                if cd.within(shapes[i], shapes[j], d)]
+    cd.reset_stats()
+    got = scene.pairs_within(d)
+    assert got == expected
+    total = len(shapes) * (len(shapes) - 1) // 2
+    assert cd.stats()["within"] < total / 5
+    assert cd.stats()["culled"] + cd.stats()["within"] == total
+
+
+def test_pairs_within_with_lines():
+    scene, shapes = mixed_scene(4, n=150, box=6.0, kinds=("Disk", "Circle", "Segment", "Line"))
+    names = scene.names
+    expected = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
+                if cd.within(shapes[i], shapes[j], 0.5)]
+    assert scene.pairs_within(0.5) == expected
+
+
+def test_distance_matrix():
+    scene, shapes = mixed_scene(8, n=60, kinds=("Disk", "Circle", "Segment", "Point"))
+    a = scene.names[::3]
+    b = scene.names[1::4] + [scene.names[0]]
+    m = scene.distance_matrix(a, b)
+    assert m.shape == (len(a), len(b))
+    index = {n: i for i, n in enumerate(scene.names)}
+    for i, na in enumerate(a):
+        for j, nb in enumerate(b):
+            assert m[i, j] == cd.distance(shapes[index[na]], shapes[index[nb]])
+    cd.reset_stats()
+    scene.distance_matrix(a, b)
+    assert cd.stats()["closest_points"] == 0
+
+
+def test_large_disk_scene_solves_a_small_fraction():
+    rng = np.random.default_rng(99)
+    n = 20000
+    disks = cd.Disk(rng.uniform(-50, 50, (n, 3)), rand_dirs(rng, n), rng.uniform(0.2, 1.0, n))
+    scene = cd.Scene()
+    scene.extend("disk", disks)
+    line = cd.Line([-60, 3, -2], [1, 0.1, 0.05])
+    cd.reset_stats()
+    best = scene.nearest(line, 3)
+    s = cd.stats()
+    assert s["solves"] < 0.01 * n, s
+    assert s["distances"] < 0.01 * n, s
+    d = cd.distance(line, disks)
+    order = np.argsort(d, kind="stable")[:3]
+    assert best == [(f"disk{i}", d[i]) for i in order]
+    expected = [f"disk{i}" for i in np.flatnonzero(cd.within(line, disks, 0.5))]
+    cd.reset_stats()
+    assert scene.within(line, 0.5) == expected
+    assert cd.stats()["solves"] < 0.01 * n
+
+
+def test_scene_errors():
+    scene = cd.Scene({"ring": cd.Circle([0, 0, 0], [0, 0, 1], 1.0)})
+    assert len(scene) == 1 and "ring" in scene
+    with pytest.raises(ValueError, match="already"):
+        scene.add("ring", cd.Point([0, 0, 0]))
+    with pytest.raises(ValueError, match="extend"):
+        scene.add("many", cd.Point(np.zeros((2, 3))))
+    with pytest.raises(TypeError):
+        scene.add("thing", [0, 0, 0])
+    with pytest.raises(KeyError, match="nope"):
+        scene.nearest("nope")
+    with pytest.raises(ValueError, match="k must be"):
+        scene.nearest(cd.Point([0, 0, 0]), 0)
+    with pytest.raises(ValueError, match="d must be"):
+        scene.within(cd.Point([0, 0, 0]), -1)
+    with pytest.raises(ValueError, match="2 names"):
+        scene.extend(["a", "b"], cd.Point(np.zeros((3, 3))))
+    scene.add("cable", cd.Bezier([[0, 0, 0], [1, 1, 0], [2, 0, 0]]))
+    with pytest.raises(TypeError, match="no query between a Segment and a Bezier"):
+        scene.nearest(cd.Segment([0, 0, 0], [1, 0, 0]))
+    with pytest.raises(ValueError, match="single shape"):
+        scene.nearest(cd.Point(np.zeros((2, 3))))
+
+
+def test_extend_names_and_contents():
+    scene = cd.Scene()
+    scene.extend("p", cd.Point(np.arange(12.0).reshape(4, 3), sweep=[0, 1, 2, 3]))
+    scene.add("ring", cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+    assert scene.names == ["p0", "p1", "p2", "p3", "ring"]
+    assert float(scene["p2"].sweep) == 2.0
+    np.testing.assert_array_equal(scene["p3"].p, [9, 10, 11])
+    # From the origin: the ring at 1, then the balls at |p_i| - sweep_i (sqrt 5, sqrt 50 - 1, ...).
+    nearest = scene.nearest(cd.Point([0, 0, 0]), 5)
+    assert [name for name, _ in nearest] == ["ring", "p0", "p1", "p2", "p3"]
+    expected = [1.0] + [np.linalg.norm(np.arange(12.0).reshape(4, 3)[i]) - i for i in range(4)]
+    np.testing.assert_allclose([d for _, d in nearest], expected, rtol=1e-15)
+    # Adding after a query rebuilds the hierarchy.
+    scene.add("close", cd.Point([0.1, 0, 0]))
+    assert scene.nearest(cd.Point([0.1, 0, 0]))[0] == ("close", 0.0)
