@@ -67,7 +67,11 @@ case "$task" in
     ;;
   bench)
     cpp_build -DCIRCLEDIST_BUILD_BENCH=ON
-    "$py" bench/bench_queries.py
+    cmake --build build/cpp --target accuracy_vs_time
+    "$py" bench/bench_queries.py          # docs/benchmark.md
+    "$py" bench/accuracy_vs_time.py       # docs/accuracy_vs_time.md, .png, docs/stability_sweeps.png
+    "$py" bench/bench_scene.py            # docs/scene_scaling.md, .png
+    "$py" bench/figures.py                # docs/line_disk.png
     ;;
   *)
     echo "usage: bash tools/run.sh demo|test|bench" >&2
