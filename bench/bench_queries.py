@@ -489,11 +489,22 @@ def targets(rows, mem):
         over = [f"{k} ({r:.2f})" for r, k in ratios if r > TARGET_BATCH_RATIO]
         out.append(f"- Python batch within {100 * (TARGET_BATCH_RATIO - 1):.0f} % of the C++ loop: "
                    + ("met for every kind" if not over else f"**missed** for {', '.join(over)}"))
-    scal = [(row.scalar_us, row.kind.name) for row in rows if row.scalar_us is not None]
+    # The issue sets ns targets for the point kinds only (the others' cost is the solver's, set by
+    # the accuracy/time issue): the whole call is judged there, the binding's overhead (the call
+    # less the C++ query) everywhere.
+    scal = [(row.scalar_us, row.kind.name) for row in rows
+            if row.scalar_us is not None and row.kind.name in ("point-circle", "point-disk")]
     if scal:
         over = [f"{k} ({u:.2f} µs)" for u, k in scal if u > TARGET_SCALAR_US]
-        out.append(f"- Python scalar call ≤ {TARGET_SCALAR_US:g} µs: "
-                   + ("met for every kind" if not over else f"**missed** for {', '.join(over)}"))
+        out.append(f"- Python scalar call ≤ {TARGET_SCALAR_US:g} µs (point kinds): "
+                   + ("met (" + ", ".join(f"{k} {u:.2f} µs" for u, k in scal) + ")" if not over
+                      else f"**missed** for {', '.join(over)}"))
+    extra = [(row.scalar_us - row.cpp_ns / 1000, row.kind.name) for row in rows
+             if row.scalar_us is not None and row.cpp_ns is not None]
+    if extra:
+        worst = max(extra)
+        out.append(f"- scalar call overhead (call less the C++ query) ≤ {TARGET_SCALAR_US:g} µs, every kind: "
+                   f"largest {worst[0]:.2f} µs ({worst[1]}), {verdict(worst[0] <= TARGET_SCALAR_US)}")
     if mem:
         out.append(f"- peak memory of 10^7 point-circle queries ≤ inputs + outputs + {100 * TARGET_MEMORY:.0f} %: "
                    f"{100 * mem['overhead']:+.1f} %, {verdict(mem['overhead'] <= TARGET_MEMORY)}")

@@ -113,9 +113,12 @@ RADIUS_SCENES = {
     "point": ["on_axis", "above_interior", "generic", "on_rim"],
     "line": ["tangent_in_plane", "parallel_tangent_h1e-6", "along_axis", "crosses_rim",
              "generic_far", "parallel_over_interior_h0.25"],
-    "ray": ["starts_above_interior_away", "starts_on_rim_outward", "from_line_tangent_in_plane"],
+    # On the axis with a tiny radius and tilted: the rounded line passes ~1e-17 from the center,
+    # an offset that must survive (the anchor is computed before rotating into the frame).
+    "ray": ["starts_above_interior_away", "starts_on_rim_outward", "from_line_tangent_in_plane",
+            "axis_up", "from_line_along_axis"],
     "segment": ["ends_on_rim", "above_parallel_partial", "zero_length_generic",
-                "crosses_disk_at_rim"],
+                "crosses_disk_at_rim", "along_axis_through_center", "from_line_along_axis"],
 }
 RADIUS_VARIANTS = {
     # name: (scene scale s, radius)

@@ -95,10 +95,10 @@ def _check_closest(case, order, res, r):
     on_round = ref.distance_to_shape(p_round, case.round_kind, case.round_data)
     if on_lin > tol + sl_lin:
         problems.append(f"point on {case.lin_kind} is {float(on_lin):.3e} off it "
-                        f"(allowed {tol + sl_lin:.3e})")
+                        f"(allowed {float(tol + sl_lin):.3e})")
     if on_round > tol + sl_round:
         problems.append(f"point on {case.round_kind} is {float(on_round):.3e} off it "
-                        f"(allowed {tol + sl_round:.3e})")
+                        f"(allowed {float(tol + sl_round):.3e})")
     sep = ref.mp_distance(p_lin, p_round)
     if abs(sep - mpf(d)) > tol + sl_lin + sl_round:
         problems.append(f"|point_a - point_b| = {_fmt(sep)} but distance = {d!r}")

@@ -134,6 +134,17 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     return {ShapeTraits<B>::make(g, b.points), Real(*g[b.fields.size() - 1])};
   }
 
+  // The bare primitives, for pairs where neither shape is swept (the common case: no per-element
+  // sweep read, no swept wrapper in the loop).
+  static A first_core(const double* const* f, const Shape& a) { return ShapeTraits<A>::make(f, a.points); }
+  static B second_core(const double* const* f, const Shape& a, const Shape& b) {
+    return ShapeTraits<B>::make(f + a.fields.size(), b.points);
+  }
+  static bool unswept(const Shape& s) {
+    const Field& sweep = s.fields.back();
+    return sweep.batch.empty() && *sweep.data() == 0;
+  }
+
   static py::object distance(const Shape& a, const Shape& b) {
     if (a.batch.empty() && b.batch.empty()) {
       std::array<const double*, kMaxFields> f{};
@@ -148,7 +159,15 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     Real* o = out.mutable_data();
     {
       py::gil_scoped_release release;
-      bc.for_each([&](Index i, const double* const* f) { o[i] = circledist::distance<Roots>(first(f, a), second(f, a, b)); });
+      if (unswept(a) && unswept(b)) {
+        bc.for_each([&](Index i, const double* const* f) {
+          o[i] = circledist::distance<Roots>(first_core(f, a), second_core(f, a, b));
+        });
+      } else {
+        bc.for_each([&](Index i, const double* const* f) {
+          o[i] = circledist::distance<Roots>(first(f, a), second(f, a, b));
+        });
+      }
     }
     stats().distances += std::uint64_t(bc.size);
     return std::move(out);

@@ -13,6 +13,10 @@ namespace circledist {
 template <class Real> struct Linear {
   Vec3<Real> origin, direction;
   Real lo, hi;  // parameter interval; either end may be infinite
+  // A segment keeps its second end point: direction = p1 - p0 is rounded, and the line through
+  // the rounded direction can miss the true one by more than a tiny offset it must keep.
+  Vec3<Real> end = Vec3<Real>::Zero();
+  bool has_end = false;
 };
 
 template <class Real> Linear<Real> as_linear(const Line3<Real>& l) {
@@ -22,30 +26,68 @@ template <class Real> Linear<Real> as_linear(const Line3<Real>& l) {
 template <class Real> Linear<Real> as_linear(const Ray3<Real>& r) {
   return {r.origin, r.direction, Real(0), std::numeric_limits<Real>::infinity()};
 }
-template <class Real> Linear<Real> as_linear(const Segment3<Real>& s) { return {s.p0, s.p1 - s.p0, Real(0), Real(1)}; }
+template <class Real> Linear<Real> as_linear(const Segment3<Real>& s) {
+  return {s.p0, s.p1 - s.p0, Real(0), Real(1), s.p1, true};
+}
+
+// a * b - c * d with a single rounding error (Kahan's algorithm with fused multiply-adds).
+template <class Real> Real difference_of_products(Real a, Real b, Real c, Real d) {
+  const Real cd = c * d;
+  const Real error = std::fma(-c, d, cd);
+  return std::fma(a, b, -cd) + error;
+}
+
+// x cross y, each component to within about one rounding of its own value, however much the
+// two products cancel.
+template <class Real> Vec3<Real> accurate_cross(const Vec3<Real>& x, const Vec3<Real>& y) {
+  return Vec3<Real>(difference_of_products(x.y(), y.z(), x.z(), y.y()),
+                    difference_of_products(x.z(), y.x(), x.x(), y.z()),
+                    difference_of_products(x.x(), y.y(), x.y(), y.x()));
+}
 
 // The piece in a round's local frame, re-anchored at its point closest to the round's center and
 // with a unit direction: P(tau) = anchor + tau * dir, and t = (tau + shift) / length. Anchoring
 // keeps the polynomial's variable small and its coefficients free of the along-line offset.
 template <class Real> struct LocalLinear {
   Vec3<Real> anchor, dir;
+  Vec3<Real> anchor_world, dir_world;  // the same, on world axes (the anchor relative to the center)
   Real length = 1, shift = 0, lo = 0, hi = 0;
   bool is_point = false;  // zero-length direction (a degenerate segment)
 
+  //
+  // The anchor is computed in world coordinates before any rotation: rotating the origin (at a
+  // distance |o - c| from the center) into the frame would err by eps |o - c|, far more than the
+  // offset of a line passing 1e-17 from the center of a circle of radius 1e-9. With w = (o - c) x d
+  // (through both end points for a segment) to one rounding per component, the anchor
+  // d x w / |d|^2 is accurate relative to its own length.
   LocalLinear(const Linear<Real>& piece, const Round<Real>& round) {
-    const Vec3<Real> d = round.local(piece.origin);
+    const Vec3<Real> origin = piece.origin - round.center;
     const Vec3<Real> m = round.frame.to_local(piece.direction);
     length = m.norm();
     if (!(length > 0)) {
       is_point = true;
-      anchor = d;
+      anchor_world = origin;
+      dir_world.setZero();
+      anchor = round.frame.to_local(origin);
       dir.setZero();
       length = 1;
       return;
     }
     dir = m / length;
-    shift = -d.dot(dir);
-    anchor = d + shift * dir;
+    // The direction scaled by a power of two (exact) to components of order 1: no overflow.
+    const int exponent = std::ilogb(piece.direction.cwiseAbs().maxCoeff());
+    const Vec3<Real> direction = piece.direction.unaryExpr([&](Real x) { return Real(std::ldexp(x, -exponent)); });
+    Vec3<Real> w;
+    if (piece.has_end) {
+      w = accurate_cross(origin, Vec3<Real>(piece.end - round.center));
+      for (int i = 0; i < 3; ++i) w[i] = std::ldexp(w[i], -exponent);
+    } else {
+      w = accurate_cross(origin, direction);
+    }
+    anchor_world = direction.cross(w) / direction.squaredNorm();
+    dir_world = direction / direction.norm();
+    anchor = round.frame.to_local(anchor_world);
+    shift = -origin.dot(dir_world);
     lo = std::isfinite(piece.lo) ? piece.lo * length - shift : piece.lo;
     hi = std::isfinite(piece.hi) ? piece.hi * length - shift : piece.hi;
   }
@@ -181,10 +223,21 @@ Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Re
     const Vec3<Real> qb = round_point(qa, unused);
     if ((qa - pa).norm() > apart || (qb - pb).norm() > apart) ambiguous = true;
   }
+  // The point on the piece: an end point exactly when the minimum sits there; otherwise from the
+  // world anchor (accurate relative to its distance from the center, where origin + t direction
+  // would err by eps |origin - center| across the line).
   Real t = line.is_point ? Real(0) : line.t_of(best.x);
   t = std::min(std::max(t, piece.lo), piece.hi);
+  if (line.is_point || best.x <= line.lo) {
+    t = line.is_point ? Real(0) : piece.lo;
+    r.point_a = piece.origin;
+  } else if (best.x >= line.hi) {
+    t = piece.hi;
+    r.point_a = piece.has_end ? piece.end : Vec3<Real>(piece.origin + t * piece.direction);
+  } else {
+    r.point_a = round.center + (line.anchor_world + best.x * line.dir_world);
+  }
   r.distance = best.value;
-  r.point_a = piece.origin + t * piece.direction;
   r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(t, 0);
   r.param_b = round_param(pb);
