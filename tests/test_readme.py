@@ -12,9 +12,13 @@ def blocks(language):
     return re.findall(rf"```{language}\n(.*?)```", README, flags=re.S)
 
 
-def test_python_example_runs():
-    (code,) = blocks("python")
-    exec(compile(code, "README.md", "exec"), {})
+def test_python_examples_run():
+    """Every Python block, in order, in one namespace (later blocks may use earlier names)."""
+    codes = blocks("python")
+    assert codes
+    namespace = {}
+    for code in codes:
+        exec(compile(code, "README.md", "exec"), namespace)
 
 
 def test_cpp_example_is_the_consumer_source():
