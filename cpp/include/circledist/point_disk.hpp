@@ -9,7 +9,7 @@ namespace circledist {
 template <class Real> struct Query<Vec3<Real>, Disk3<Real>> {
   static constexpr bool defined = true;
 
-  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Disk3<Real>& disk) {
+  template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Disk3<Real>& disk) {
     const Vec3<Real> d = p - disk.center;
     const Vec3<Real> n = disk.normal / disk.normal.norm();
     const Real z = n.dot(d);

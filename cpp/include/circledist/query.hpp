@@ -17,7 +17,7 @@ template <class A, class B> constexpr bool has_query_v = Query<A, B>::defined;
 template <class A, class B> constexpr bool has_symmetric_query_v = has_query_v<A, B> || has_query_v<B, A>;
 
 // The distance only: no closest points are built.
-template <class Roots = DefaultRoots, class A, class B> auto distance(const A& a, const B& b) {
+template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto distance(const A& a, const B& b) {
   static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
   if constexpr (has_query_v<A, B>) {
     return Query<A, B>::template distance<Roots>(a, b);
