@@ -172,6 +172,7 @@ class Row:
     cpp_distances: Optional[np.ndarray] = None
     batch_ns: Optional[float] = None
     batch_min_ns: Optional[float] = None  # the fastest call (or batch of n/10)
+    paired_ratios: list = field(default_factory=list)  # batch/C++ of alternating rounds
     batch_distances: Optional[np.ndarray] = None
     scalar_us: Optional[float] = None
     d3d_ns: Optional[float] = None
@@ -273,6 +274,35 @@ def run_cpp(binary, rows, workdir):
 # --------------------------------------------------------------------------------------------
 # Python: batched and scalar calls.
 # --------------------------------------------------------------------------------------------
+PAIRED_ROUNDS = 9
+PAIRED_MAX_SECONDS = 0.05  # kinds whose batch of n queries takes less get alternating rounds
+
+
+def run_paired(cd, binary, rows, workdir):
+    """For the fast kinds, C++ loop and Python batch timed in alternating short rounds: the
+    machine's slow spells last seconds, so a C++ run and the Python call right after it see the
+    same machine, and the median of the per-round ratios is the steadiest comparison."""
+    fast = [row for row in rows if row.cpp_ns and row.cpp_ns * 1e-9 * row.n < PAIRED_MAX_SECONDS
+            and getattr(cd, SHAPES[row.kind.a].cls, None) and getattr(cd, SHAPES[row.kind.b].cls, None)]
+    if not fast or not Path(binary).is_file():
+        return
+    print(f"== alternating C++ / Python rounds ({PAIRED_ROUNDS}) for {', '.join(r.kind.name for r in fast)}",
+          flush=True)
+    for row in fast:
+        inp, outp = Path(workdir) / f"paired-{row.kind.name}.bin", Path(workdir) / "paired-out.bin"
+        write_input(inp, [row])
+        A = getattr(cd, SHAPES[row.kind.a].cls)(*row.fields_a)
+        B = getattr(cd, SHAPES[row.kind.b].cls)(*row.fields_b)
+        for _ in range(PAIRED_ROUNDS):
+            proc = subprocess.run([str(binary), str(inp), str(outp), "--min-time", "0.2"],
+                                  capture_output=True, text=True, check=True)
+            cpp = next(float(line.split()[3]) for line in proc.stdout.splitlines() if line.startswith("T "))
+            py = repeat_timing(lambda: cd.distance(A, B), 5, 100, 0.2) / row.n * 1e9
+            row.paired_ratios.append(py / cpp)
+        print(f"   {row.kind.name:15s} batch/C++ per round: "
+              + " ".join(f"{r:.2f}" for r in row.paired_ratios), flush=True)
+
+
 def run_python(cd, rows, scalar_count, batch_time=1.0):
     print("== Python batch and scalar calls", flush=True)
     for row in rows:
@@ -468,6 +498,14 @@ def fmt(x, spec, missing="—"):
     return missing if x is None else format(x, spec)
 
 
+def judged_ratio(row):
+    """The batch/C++ ratio the target is judged on: the median of alternating rounds where the
+    kind had them, else the ratio of the fastest passes."""
+    if row.paired_ratios:
+        return median(row.paired_ratios)
+    return fastest_ratio(row)
+
+
 def fastest_ratio(row):
     """The batch/C++ ratio of the fastest passes: the machine's slow spells (another tenant, a
     frequency change) lengthen some passes of either side, never shorten one, so the fastest of
@@ -479,13 +517,13 @@ def fastest_ratio(row):
 
 def table(rows):
     lines = [
-        "| kind | C++ scalar ns | Python batch ns/query | batch/C++ ratio | fastest batch/fastest C++ "
+        "| kind | C++ scalar ns | Python batch ns/query | batch/C++ ratio | judged batch/C++ "
         "| Python scalar µs | distance3d ns | max \\|Δ\\| vs distance3d |",
         "|---|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for row in rows:
         ratio = row.batch_ns / row.cpp_ns if row.batch_ns and row.cpp_ns else None
-        fastest = fastest_ratio(row)
+        fastest = judged_ratio(row)
         d3d = f"{row.d3d_ns:,.0f}" if row.d3d_ns is not None else "—"
         delta = fmt(row.d3d_max_delta, ".1e")
         lines.append(f"| {row.kind.name} | {fmt(row.cpp_ns, '.1f')} | {fmt(row.batch_ns, '.1f')} | "
@@ -505,12 +543,12 @@ def targets(rows, mem):
         if row and row.cpp_ns is not None:
             out.append(f"- {name} C++ scalar ≤ {TARGET_POINT_NS:g} ns: {row.cpp_ns:.1f} ns, "
                        f"{verdict(row.cpp_ns <= TARGET_POINT_NS)}")
-    ratios = [(fastest_ratio(row), row.kind.name) for row in rows if fastest_ratio(row)]
+    ratios = [(judged_ratio(row), row.kind.name) for row in rows if judged_ratio(row)]
     if ratios:
         over = [f"{k} ({r:.2f})" for r, k in ratios if r > TARGET_BATCH_RATIO]
         worst = max(ratios)
         out.append(f"- Python batch within {100 * (TARGET_BATCH_RATIO - 1):.0f} % of the C++ loop "
-                   "(fastest pass of each): "
+                   "(judged ratio): "
                    + (f"met for every kind (largest {worst[0]:.2f}, {worst[1]})" if not over
                       else f"**missed** for {', '.join(over)}"))
     # The issue sets ns targets for the point kinds only (the others' cost is the solver's, set by
@@ -556,9 +594,11 @@ def report(rows, info, mem, d3d_version, n, wall):
         "- **C++ scalar**: `circledist::distance(a, b)` in a loop over the queries (`bench/bench_queries.cpp`, "
         "-O3, no `-march=native`).",
         "- **Python batch**: one `cd.distance(A, B)` over all the queries (shapes built beforehand), per query; "
-        "**batch/C++** is its ratio to the C++ loop (medians); **fastest batch/fastest C++** the ratio of "
-        "the fastest call to the fastest C++ pass, the one the target is judged on: a busy moment on a "
-        "shared machine slows some passes of either side and never speeds one up.",
+        "**batch/C++** is its ratio to the C++ loop (medians, the two measured seconds apart); "
+        f"**judged batch/C++**, the ratio the target is judged on: for kinds whose batch takes under "
+        f"{PAIRED_MAX_SECONDS * 1e3:g} ms, the median of {PAIRED_ROUNDS} rounds alternating a C++ run "
+        "and the Python call (a slow spell of a shared machine lasts seconds and then slows both "
+        "sides of a round alike); for the others, the fastest call over the fastest C++ pass.",
         "- **Python scalar**: `cd.distance(a, b)` on single shapes, per call, Python loop included.",
         "- **distance3d**: its function called per query in a Python loop after a warm-up, on a subset "
         "(count below); **max |Δ|** is the largest difference from circledist's distance on that subset.",
@@ -632,7 +672,8 @@ def main():
 
     with tempfile.TemporaryDirectory(prefix="circledist-bench-") as workdir:
         run_cpp(args.binary, rows, workdir)
-    run_python(cd, rows, args.scalar)
+        run_python(cd, rows, args.scalar)
+        run_paired(cd, args.binary, rows, workdir)
     d3d_version = run_distance3d(rows, args.d3d_budget)
 
     wall = time.perf_counter() - start
