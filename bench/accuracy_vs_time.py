@@ -43,10 +43,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-# One core, as the targets are stated: NumPy's BLAS threads would otherwise spin beside the
-# timed thread after any BLAS call (and on a 2-core machine take the other core).
-for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_var, "1")
+import one_core  # noqa: F401  (before NumPy: one BLAS thread)
 
 import numpy as np
 

@@ -36,10 +36,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Optional
 
-# One core, as the targets are stated: NumPy's BLAS threads would otherwise spin beside the
-# timed thread after any BLAS call (and on a 2-core machine take the other core).
-for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_var, "1")
+import one_core  # noqa: F401  (before NumPy: one BLAS thread)
 
 import numpy as np
 
@@ -201,10 +198,9 @@ def median(xs):
 clock = time.thread_time
 
 
-def repeat_timing(fn, min_repeats, max_repeats, min_time, fastest=False):
+def repeat_timing(fn, min_repeats, max_repeats, min_time):
     """Calls fn() (after one warm-up call) until min_repeats calls and min_time seconds (or
-    max_repeats calls) are reached; returns the median seconds per call (and, with `fastest`,
-    the fastest call's)."""
+    max_repeats calls) are reached; returns the seconds of each call."""
     fn()
     samples = []
     start = clock()
@@ -212,7 +208,7 @@ def repeat_timing(fn, min_repeats, max_repeats, min_time, fastest=False):
         t0 = clock()
         fn()
         samples.append(clock() - t0)
-    return (median(samples), min(samples)) if fastest else median(samples)
+    return samples
 
 
 # --------------------------------------------------------------------------------------------
@@ -276,14 +272,15 @@ def run_cpp(binary, rows, workdir):
 # --------------------------------------------------------------------------------------------
 PAIRED_ROUNDS = 9
 PAIRED_MAX_SECONDS = 0.05  # kinds whose batch of n queries takes less get alternating rounds
+PAIRED_ROUND_SECONDS = 0.2  # each side of a round
 
 
 def run_paired(cd, binary, rows, workdir):
     """For the fast kinds, C++ loop and Python batch timed in alternating short rounds: the
     machine's slow spells last seconds, so a C++ run and the Python call right after it see the
     same machine, and the median of the per-round ratios is the steadiest comparison."""
-    fast = [row for row in rows if row.cpp_ns and row.cpp_ns * 1e-9 * row.n < PAIRED_MAX_SECONDS
-            and getattr(cd, SHAPES[row.kind.a].cls, None) and getattr(cd, SHAPES[row.kind.b].cls, None)]
+    # Kinds timed on both sides (a batch time means the package has both shapes).
+    fast = [row for row in rows if row.cpp_ns and row.batch_ns and row.cpp_ns * 1e-9 * row.n < PAIRED_MAX_SECONDS]
     if not fast or not Path(binary).is_file():
         return
     print(f"== alternating C++ / Python rounds ({PAIRED_ROUNDS}) for {', '.join(r.kind.name for r in fast)}",
@@ -294,10 +291,10 @@ def run_paired(cd, binary, rows, workdir):
         A = getattr(cd, SHAPES[row.kind.a].cls)(*row.fields_a)
         B = getattr(cd, SHAPES[row.kind.b].cls)(*row.fields_b)
         for _ in range(PAIRED_ROUNDS):
-            proc = subprocess.run([str(binary), str(inp), str(outp), "--min-time", "0.2"],
+            proc = subprocess.run([str(binary), str(inp), str(outp), "--min-time", str(PAIRED_ROUND_SECONDS)],
                                   capture_output=True, text=True, check=True)
             cpp = next(float(line.split()[3]) for line in proc.stdout.splitlines() if line.startswith("T "))
-            py = repeat_timing(lambda: cd.distance(A, B), 5, 100, 0.2) / row.n * 1e9
+            py = median(repeat_timing(lambda: cd.distance(A, B), 5, 100, PAIRED_ROUND_SECONDS)) / row.n * 1e9
             row.paired_ratios.append(py / cpp)
         print(f"   {row.kind.name:15s} batch/C++ per round: "
               + " ".join(f"{r:.2f}" for r in row.paired_ratios), flush=True)
@@ -316,9 +313,9 @@ def run_python(cd, rows, scalar_count, batch_time=1.0):
         if expected < batch_time:
             A, B = ca(*row.fields_a), cb(*row.fields_b)
             row.batch_distances = np.asarray(cd.distance(A, B))
-            seconds, fastest = repeat_timing(lambda: cd.distance(A, B), 5, 100, batch_time, fastest=True)
-            row.batch_ns = seconds / row.n * 1e9
-            row.batch_min_ns = fastest / row.n * 1e9
+            samples = repeat_timing(lambda: cd.distance(A, B), 5, 100, batch_time)
+            row.batch_ns = median(samples) / row.n * 1e9
+            row.batch_min_ns = min(samples) / row.n * 1e9
             mode = "calls"
         else:
             # Slow kinds: one pass over the queries in 10 batches of n/10, the median batch
@@ -345,7 +342,7 @@ def run_python(cd, rows, scalar_count, batch_time=1.0):
             for a, b in pairs:
                 distance(a, b)
 
-        row.scalar_us = repeat_timing(scalar_pass, 3, 50, 0.5) / m * 1e6
+        row.scalar_us = median(repeat_timing(scalar_pass, 3, 50, 0.5)) / m * 1e6
         print(f"   {row.kind.name:15s} batch {row.batch_ns:10.1f} ns/query ({mode})   "
               f"scalar {row.scalar_us:8.3f} us/call", flush=True)
 
@@ -523,11 +520,11 @@ def table(rows):
     ]
     for row in rows:
         ratio = row.batch_ns / row.cpp_ns if row.batch_ns and row.cpp_ns else None
-        fastest = judged_ratio(row)
+        judged = judged_ratio(row)
         d3d = f"{row.d3d_ns:,.0f}" if row.d3d_ns is not None else "—"
         delta = fmt(row.d3d_max_delta, ".1e")
         lines.append(f"| {row.kind.name} | {fmt(row.cpp_ns, '.1f')} | {fmt(row.batch_ns, '.1f')} | "
-                     f"{fmt(ratio, '.2f')} | {fmt(fastest, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |")
+                     f"{fmt(ratio, '.2f')} | {fmt(judged, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |")
     return "\n".join(lines)
 
 
