@@ -156,18 +156,17 @@ template <class Roots, class A, class B, class Real> struct PairOf {
   // Where each shape's fields sit among an element's field pointers, read once per call: the
   // per-element work is then only the loads (no vector sizes in the loop).
   struct Layout {
-    int b_at, a_sweep, b_sweep, a_points, b_points;
+    int b_at, limit_at, a_points, b_points;  // limit_at: within()'s distance, after both shapes
     Layout(const Shape& a, const Shape& b)
         : b_at(int(a.fields.size())),
-          a_sweep(int(a.fields.size()) - 1),
-          b_sweep(int(a.fields.size() + b.fields.size()) - 1),
+          limit_at(int(a.fields.size() + b.fields.size())),
           a_points(a.points),
           b_points(b.points) {}
 
     // The C++ primitives of one element, swept by each shape's last field (sweep.hpp: a sweep of
     // 0 gives the core's results bit for bit); `points` is each shape's Bezier control point count.
-    Swept<A> first(const double* const* f) const { return {first_core(f), Real(*f[a_sweep])}; }
-    Swept<B> second(const double* const* f) const { return {second_core(f), Real(*f[b_sweep])}; }
+    Swept<A> first(const double* const* f) const { return {first_core(f), Real(*f[b_at - 1])}; }
+    Swept<B> second(const double* const* f) const { return {second_core(f), Real(*f[limit_at - 1])}; }
     // The bare primitives, for pairs where neither shape is swept (the common case: no
     // per-element sweep read, no swept wrapper in the loop).
     A first_core(const double* const* f) const { return ShapeTraits<A>::make(f, a_points); }
@@ -214,14 +213,13 @@ template <class Roots, class A, class B, class Real> struct PairOf {
   static py::object within(const Shape& a, const Shape& b, const Shape& limit, bool want_distance) {
     const Broadcast bc(a, b, &limit);
     const Layout at(a, b);
-    const size_t limit_at = a.fields.size() + b.fields.size();
     if (want_distance) {
       auto out = new_array<Real>(bc.shape, 0);
       Real* o = out.mutable_data();
       {
         py::gil_scoped_release release;
         bc.for_each([&](Index i, const double* const* f) CIRCLEDIST_PER_ELEMENT {
-          o[i] = circledist::distance_if_within<Roots>(at.first(f), at.second(f), Real(*f[limit_at]));
+          o[i] = circledist::distance_if_within<Roots>(at.first(f), at.second(f), Real(*f[at.limit_at]));
         });
       }
       if (bc.shape.empty()) return scalar<Real>(o[0]);
@@ -232,7 +230,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     {
       py::gil_scoped_release release;
       bc.for_each([&](Index i, const double* const* f) CIRCLEDIST_PER_ELEMENT {
-        o[i] = circledist::within<Roots>(at.first(f), at.second(f), Real(*f[limit_at]));
+        o[i] = circledist::within<Roots>(at.first(f), at.second(f), Real(*f[at.limit_at]));
       });
     }
     if (bc.shape.empty()) return py::bool_(o[0]);
@@ -286,9 +284,16 @@ struct PairTable {
 enum Precision : int { kFloat, kDouble, kLongDouble, kPrecisionCount };
 enum Solver : int { kCompanion, kPolished, kBracketing, kSolverCount };
 
+// The table index of a root policy.
+template <class Roots> constexpr int solver_index() {
+  if constexpr (std::is_same_v<Roots, EigenPolished>) return kPolished;
+  else if constexpr (std::is_same_v<Roots, Bracketing>) return kBracketing;
+  else return kCompanion;
+}
+
 struct PairTables {
   PairTable table[kPrecisionCount][kSolverCount];
-  int default_solver = kCompanion;
+  int default_solver = solver_index<DefaultRoots>();  // solver=None: the C++ default
 };
 
 // Registers both argument orders of a pair with one policy.

@@ -147,7 +147,7 @@ template <class Roots, class Real, class = void> struct CurveRoots {
 };
 template <class Roots, class Real>
 struct CurveRoots<Roots, Real,
-                  std::void_t<decltype(Roots::roots(std::declval<const Real*>(), 0,
+                  std::void_t<decltype(Roots::roots(std::declval<const Real*>(), 0, Real(0), Real(0),
                                                     std::declval<Candidates<Real, kMaxCurveDegree + 8>&>()))>> {
   using type = Roots;
 };
@@ -156,8 +156,8 @@ struct CurveRoots<Roots, Real,
 // a root pushed just outside by rounding still seeds the polish at the end point).
 template <class Roots, class Real, int N> void push_curve_roots(const CurvePoly<Real>& p, Candidates<Real, N>& out) {
   Candidates<Real, kMaxCurveDegree + 8> roots;
-  CurveRoots<Roots, Real>::type::roots(p.c.data(), p.degree, roots);
   const Real slack = Real(1e-3);
+  CurveRoots<Roots, Real>::type::roots(p.c.data(), p.degree, -1 - slack, 1 + slack, roots);
   for (int i = 0; i < roots.count; ++i) {
     const Real w = roots.value[i];
     if (w >= -1 - slack && w <= 1 + slack) out.push(std::min(std::max((1 + w) / 2, Real(0)), Real(1)));

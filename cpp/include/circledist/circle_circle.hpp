@@ -115,7 +115,8 @@ template <class Roots, class Real, int K, int N> void push_trig_roots(const Trig
   static_assert(2 * K <= kMaxDegree, "circledist: trigonometric degree too high for the default root policy");
   const std::array<Real, 2 * K + 1> p = half_angle(f);
   Candidates<Real> roots;
-  Roots::roots(p.data(), 2 * K, roots);
+  const Real inf = std::numeric_limits<Real>::infinity();
+  Roots::roots(p.data(), 2 * K, -inf, inf, roots);
   for (int i = 0; i < roots.count; ++i) out.push(2 * std::atan(roots.value[i]));
 }
 
@@ -343,6 +344,18 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
+  // Whether a is the circle to parametrize: the smaller one, and between equal radii the first in
+  // a fixed order of the fields, so that (a, b) and (b, a) run the same computation and give
+  // the same distance to the last bit.
+  static bool parametrized_first(const Circle3<Real>& a, const Circle3<Real>& b) {
+    if (a.radius != b.radius) return a.radius < b.radius;
+    for (int i = 0; i < 3; ++i)
+      if (a.center[i] != b.center[i]) return a.center[i] < b.center[i];
+    for (int i = 0; i < 3; ++i)
+      if (a.normal[i] != b.normal[i]) return a.normal[i] < b.normal[i];
+    return true;
+  }
+
   // a is parametrized, b is the ring.
   template <class Roots> static Real distance_ordered(const Circle3<Real>& a, const Circle3<Real>& b) {
     const Round<Real> round(b.center, b.normal, b.radius);
@@ -362,11 +375,11 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& a, const Circle3<Real>& b) {
-    return b.radius < a.radius ? distance_ordered<Roots>(b, a) : distance_ordered<Roots>(a, b);
+    return parametrized_first(a, b) ? distance_ordered<Roots>(a, b) : distance_ordered<Roots>(b, a);
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Circle3<Real>& b) {
-    return b.radius < a.radius ? closest_ordered<Roots>(b, a).swapped() : closest_ordered<Roots>(a, b);
+    return parametrized_first(a, b) ? closest_ordered<Roots>(a, b) : closest_ordered<Roots>(b, a).swapped();
   }
 };
 

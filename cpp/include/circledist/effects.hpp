@@ -53,10 +53,10 @@ template <class Roots> struct Counted {
   using Inner = Roots;
 
   template <class Real, int Capacity>
-  static auto roots(const Real* coefficients, int degree, Candidates<Real, Capacity>& out)
-      -> decltype(Roots::roots(coefficients, degree, out)) {
+  static auto roots(const Real* coefficients, int degree, Real lo, Real hi, Candidates<Real, Capacity>& out)
+      -> decltype(Roots::roots(coefficients, degree, lo, hi, out)) {
     ++stats().solves;
-    return Roots::roots(coefficients, degree, out);
+    return Roots::roots(coefficients, degree, lo, hi, out);
   }
 };
 

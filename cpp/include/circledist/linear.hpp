@@ -129,8 +129,15 @@ void push_line_circle_roots(const LocalLinear<Real>& line, Real radius, Real sca
       2 * (c1 + a0 * c2),
       c2,
   };
+  // Only |tau| <= |a| + R can hold a root: beyond it |P.m| = |a0 + tau| > R while
+  // |P_xy . m_xy| <= |P_xy|, so the left side exceeds the right unless P_xy = 0 (the line
+  // crossing the axis: a local maximum of the ring distance, never a minimum). A 1 % margin
+  // covers the coefficients' rounding; the piece's own interval bounds the search too (its
+  // ends are exact candidates).
+  const Real reach = Real(1.01) * (a.norm() + radius / scale);
+  const Real lo = std::max(-reach, line.lo / scale), hi = std::min(reach, line.hi / scale);
   Candidates<Real> roots;
-  Roots::roots(d, 4, roots);
+  Roots::roots(d, 4, lo, hi, roots);
   for (int i = 0; i < roots.count; ++i) out.push(roots.value[i] * scale);
 }
 
@@ -184,7 +191,10 @@ Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& 
       const Real rho = length2d(p.x(), p.y());
       const Real along = p.dot(line.dir);
       const Real pull = rho > 0 ? radius * (p.x() * line.dir.x() + p.y() * line.dir.y()) / rho : Real(0);
-      if (std::abs(along - pull) > 4 * std::abs(along + pull) + abs_tol) {
+      // A genuine root where the squared distance is concave is a local maximum: the minima
+      // beside it have roots of their own, so it is evaluated, not polished (Newton would stop
+      // at once and hand it to the slow bracketed search).
+      if (std::abs(along - pull) > 4 * std::abs(along + pull) + abs_tol || jet(tau).curvature < 0) {
         out.add(Minimum<Real>{tau, h(tau)});
       } else {
         genuine.push(tau);

@@ -130,6 +130,10 @@ Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width
     if (!(g.curvature > 0)) break;
     const Real step = -g.slope / g.curvature;
     const Real next = std::min(std::max(x + step, lo), hi);
+    if (next == x) {  // held at an end of the interval: the minimum on it is there
+      converged = true;
+      break;
+    }
     const Jet<Real> h = jet(next);
     if (!(h.value <= g.value)) break;
     x = next;

@@ -77,10 +77,12 @@ template <class Real> struct Frame {
 
   explicit Frame(const Vec3<Real>& normal) {
     n = normal / normal.norm();
+    // The pair holds N.z and the larger of N.x, N.y, so the largest component of the unit N:
+    // its squared length is at least 1/3 and needs no hypot against underflow.
     if (std::abs(n.x()) > std::abs(n.y())) {
-      u = Vec3<Real>(-n.z(), Real(0), n.x()) / std::hypot(n.x(), n.z());
+      u = Vec3<Real>(-n.z(), Real(0), n.x()) / std::sqrt(n.x() * n.x() + n.z() * n.z());
     } else {
-      u = Vec3<Real>(Real(0), n.z(), -n.y()) / std::hypot(n.y(), n.z());
+      u = Vec3<Real>(Real(0), n.z(), -n.y()) / std::sqrt(n.y() * n.y() + n.z() * n.z());
     }
     v = n.cross(u);
   }
