@@ -55,6 +55,17 @@ template <class Real> int trimmed_degree(const Real* c, int degree) {
 
 namespace detail {
 
+// p(x) by Horner's scheme, with p'(x) in `slope` from the same pass.
+template <class Real> Real horner_with_slope(const Real* c, int n, Real x, Real& slope) {
+  Real v = c[n];
+  slope = 0;
+  for (int i = n - 1; i >= 0; --i) {
+    slope = slope * x + v;
+    v = v * x + c[i];
+  }
+  return v;
+}
+
 // Diagonal similarity scaling by powers of two (Parlett-Reinsch): the eigenvalues are
 // unchanged and the QR iteration becomes far more accurate for unbalanced companions.
 template <class Matrix> void balance(Matrix& a) {
@@ -110,21 +121,12 @@ void companion_roots(const Real* c, int degree, Real tol, Candidates<Real, Capac
 // A few Newton steps on p from x, kept only while |p| decreases (multiple roots converge slowly
 // and are left to the distance polish).
 template <class Real> Real newton_on_polynomial(const Real* c, int n, Real x) {
-  auto value_and_slope = [&](Real t, Real& slope) {
-    Real v = c[n];
-    slope = 0;
-    for (int i = n - 1; i >= 0; --i) {
-      slope = slope * t + v;
-      v = v * t + c[i];
-    }
-    return v;
-  };
   Real slope = 0;
-  Real v = value_and_slope(x, slope);
+  Real v = horner_with_slope(c, n, x, slope);
   for (int iteration = 0; iteration < 8 && v != 0 && slope != 0; ++iteration) {
     const Real next = x - v / slope;
     Real next_slope = 0;
-    const Real next_v = value_and_slope(next, next_slope);
+    const Real next_v = horner_with_slope(c, n, next, next_slope);
     if (!(std::abs(next_v) < std::abs(v))) break;
     x = next;
     v = next_v;
@@ -208,16 +210,6 @@ template <class Real> Real horner(const Real* c, int n, Real x) {
   return v;
 }
 
-// p'(x), by Horner's scheme on p's coefficients.
-template <class Real> Real horner_slope(const Real* c, int n, Real x) {
-  Real v = c[n], slope = 0;
-  for (int i = n - 1; i >= 0; --i) {
-    slope = slope * x + v;
-    v = v * x + c[i];
-  }
-  return slope;
-}
-
 // A bound on the rounding error of evaluating p at x by Horner's scheme, generously inflated to
 // cover the rounding already in the coefficients.
 template <class Real> Real horner_error(const Real* c, int n, Real x) {
@@ -228,10 +220,10 @@ template <class Real> Real horner_error(const Real* c, int n, Real x) {
 }
 
 // The root of p in (a, b), from x in (a, b), where p(a) and p(b) have opposite signs and p is
-// monotonic, to a
-// relative accuracy of `rel_tol`, an absolute one of `abs_tol` (roots near 0 would otherwise take
-// bisection steps down to the smallest numbers), or until p(x) is zero within its rounding
-// (closer than that, Newton steps are rounding noise and the bracket shrinks one side only).
+// monotonic, to a relative accuracy of `rel_tol`, an absolute one of `abs_tol` (roots near 0
+// would otherwise take bisection steps down to the smallest numbers), or until p(x) is zero
+// within its rounding (closer than that, Newton steps are rounding noise and the bracket shrinks
+// one side only).
 template <class Real>
 Real newton_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol) {
   const Real eps = std::numeric_limits<Real>::epsilon();
@@ -303,12 +295,13 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
   // where p' is nearly 0, and the first Newton step flies far off (then the steps only halve the
   // distance back). The quadratic model there, p(c) + p''(c) (x - c)^2 / 2, vanishes at
   // c +- sqrt(-2 p(c) / p''(c)): a start close to the root. From the critical end with the
-  // smaller |p|, else false position.
+  // smaller |p|, else (the model has no root there: NaN or outside) false position.
   const auto start = [&](Real a, Real b, Real pa, Real pb, bool a_critical, bool b_critical) {
     const bool from_a = a_critical && (!b_critical || std::abs(pa) <= std::abs(pb));
     if (from_a || b_critical) {
       const Real e = from_a ? a : b, pe = from_a ? pa : pb;
-      const Real curvature = horner_slope(dc, n - 1, e);
+      Real curvature = 0;
+      horner_with_slope(dc, n - 1, e, curvature);
       const Real step = std::sqrt(-2 * pe / curvature);
       const Real x = from_a ? e + step : e - step;
       if (x > a && x < b) return x;
