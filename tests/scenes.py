@@ -35,6 +35,8 @@ LINE_SCENES = {
     "near_parallel_1e-9_h1e-3": ((0, 0.5, 1e-3), (1, 0, math.tan(1e-9))),
     "near_parallel_1e-9_h0.5": ((0, 0.5, 0.5), (1, 0, math.tan(1e-9))),
     "near_parallel_1e-9_tangent_h1e-6": ((0, 1, 1e-6), (1, 0, math.tan(1e-9))),
+    # A tilt whose squares underflow: b1 ~ 1e-251 must not be squared into the subnormals.
+    "near_parallel_1e-250_h0.25": ((0, 0.5, 0.25), (1, 0, 1e-250)),
     "crosses_rim": ((1, 0, 0), (0.375, 0.5, 0.75)),
     "parallel_over_interior_h0.25": ((0, 0.5, 0.25), (1, 0, 0)),
     "generic_far": ((2.5, -1, 1.25), (0.3, 0.8, -0.5)),

@@ -260,8 +260,12 @@ def test_stats_keys_and_reset():
     cd.reset_stats()
     assert cd.stats() == {"solves": 0, "distances": 0, "closest_points": 0, "within": 0,
                           "decided_by_bounds": 0, "culled": 0}
-    cd.distance(cd.Line([0, 0, 1], [1, 0, 0]), cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+    # A tilted line off the axis: one bracketed root of the line-circle quartic.
+    cd.distance(cd.Line([0.5, 0.2, 1], [1, 0.3, 0.4]), cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
     assert cd.stats()["solves"] == 1 and cd.stats()["distances"] == 1
+    # A line parallel to the plane over the center is the hard case, answered without a solve.
+    cd.distance(cd.Line([0, 0, 1], [1, 0, 0]), cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+    assert cd.stats()["solves"] == 1 and cd.stats()["distances"] == 2
 
 
 # ---- the closed-form pairs (points, lines, rays, segments) --------------------------------

@@ -58,6 +58,11 @@ template <class Roots> struct Counted {
     ++stats().solves;
     return Roots::roots(coefficients, degree, lo, hi, out);
   }
+
+  template <class Real> static Real bracketed_root(const Real* coefficients, int degree, Real lo, Real hi) {
+    ++stats().solves;
+    return Roots::bracketed_root(coefficients, degree, lo, hi);
+  }
 };
 
 template <class Roots> struct counted_policy {

@@ -2,6 +2,8 @@
 // interval with its end points added for rays and segments.
 #pragma once
 
+#include <type_traits>
+
 #include "linear.hpp"
 #include "query.hpp"
 
@@ -38,7 +40,136 @@ template <class Real, class Piece> struct LinearCircleQuery {
   }
 };
 
-template <class Real> struct Query<Line3<Real>, Circle3<Real>> : LinearCircleQuery<Real, Line3<Real>> {};
+// A full line against a circle, seen from the circle's side. With the line's unit direction m
+// and its point a closest to the center (both relative to the center, a.m = 0), the squared
+// distance from the ring point R z (z a unit vector of the circle's plane) to the line is
+//   |R z - a|^2 - (R z.m)^2 = R^2 (s^2 z2^2 - 2 b.z) + const,   s^2 = |m_xy|^2, b = a_xy / R,
+// in the plane's basis e1 = m_xy / s, e2 = n x e1: a quadratic minimized over the unit circle,
+// a trust-region subproblem. Its global minimum (More and Sorensen) is
+//   z = (b1 / mu, b2 / (mu + s^2))  at the root mu >= 0 of  b1^2 / mu^2 + b2^2 / (mu + s^2)^2 = 1,
+// which lies in [max(|b1|, |b| - s^2), |b|] (|z1| <= 1, |z2| <= 1, |z| = 1) and is the only
+// sign change there of the quartic (note 000's quartic seen from the circle)
+//   P(mu) = (mu^2 - b1^2) (mu + s^2)^2 - b2^2 mu^2.
+// So one bracketed root gives the answer: no isolation, no candidates, no polish. b1 = 0 with
+// |b2| < s^2 is the "hard case" mu = 0: two mirror-image closest points (unique = false).
+template <class Real> struct LineRingMinimum {
+  Vec3<Real> ring_point, line_point;  // relative to the center
+  Real distance = 0;
+  Vec3<Real> mirror;  // the ring point reflected across the plane of e2 and n: the other minimum's
+                      // neighbor when b1 is small (the two minima differ by 4 R^2 |b1 z1|)
+  Vec3<Real> anchor, unit_direction;  // a and m
+  bool on_axis = false;  // a line along the axis: every ring point is closest
+};
+
+// False when the line is too extreme for the direct method (a zero or huge direction, a zero
+// radius, non-finite input): LinearCircleQuery then answers.
+template <class Roots, class Real>
+bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, LineRingMinimum<Real>& out) {
+  const Real radius = circle.radius;
+  const Real normal_length = circle.normal.norm();
+  const Real d2 = line.direction.squaredNorm();
+  // Far from overflow and underflow (accurate_cross needs its error terms above the subnormals).
+  const auto moderate = [](Real x) { return x > Real(0x1p-300) && x < Real(0x1p300); };
+  if (!(moderate(radius) && moderate(d2) && moderate(normal_length))) return false;
+  const Vec3<Real> n = circle.normal / normal_length;
+  const Vec3<Real> origin = line.origin - circle.center;
+  // The anchor from w = o x d to one rounding per component (as LocalLinear): accurate relative
+  // to its own length however far along the line the origin lies.
+  const Vec3<Real> a = line.direction.cross(accurate_cross(origin, line.direction)) / d2;
+  const Vec3<Real> m = line.direction / std::sqrt(d2);
+  if (!a.allFinite()) return false;
+  // m x n from the inputs to one rounding per component: for a line nearly along the axis,
+  // m - (m.n) n would carry m's rounding, eps, into a tilt of size s, and tip the ring point
+  // out of the plane by eps / s.
+  const Vec3<Real> tilt = accurate_cross(line.direction, circle.normal) / (std::sqrt(d2) * normal_length);
+  const Vec3<Real> a_xy = a - a.dot(n) * n, m_xy = n.cross(tilt);
+  const Real s2 = tilt.squaredNorm();  // |m_xy|^2 without 1 - (m.n)^2's cancellation
+  Vec3<Real> direction;  // of the closest ring point
+  if (!(s2 > std::numeric_limits<Real>::epsilon() * std::numeric_limits<Real>::epsilon())) {
+    // Parallel to the axis (to a tilt below eps): the ring point toward the line.
+    const Real rho = a_xy.norm();
+    out.on_axis = rho <= 8 * std::numeric_limits<Real>::epsilon() * std::max(radius, a.norm());
+    direction = rho > 0 ? a_xy : Frame<Real>(circle.normal).u;  // angle 0 when all are closest
+    out.mirror = out.ring_point = radius * direction / direction.norm();
+  } else {
+    // a_xy.m_xy = R s b1 is -(a.n)(m.n) because a.m = 0. Taken directly, the dot product would
+    // carry a.m's rounding, eps |a|, which swamps it for a line nearly parallel to the plane and
+    // close to it, and picks the wrong one of the two crossings.
+    const Real along = -a.dot(n) * m.dot(n);
+    const Vec3<Real> a_across = a_xy - (a_xy.dot(m_xy) / s2) * m_xy, a_parallel = (along / s2) * m_xy;
+    const Real s = std::sqrt(s2);
+    // The secular root in double for float scenes: with s^2 and b1 both near float's eps, the
+    // quartic's low coefficients b1^2 s^4 would fall below float's smallest normal.
+    using Work = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
+    const Work b1 = Work(along) / (Work(s) * Work(radius)), t2 = Work(s2);
+    const Work b_norm = std::sqrt(b1 * b1 + Work(a_across.squaredNorm()) / (Work(radius) * Work(radius)));
+    const Work lo = std::max(std::abs(b1), b_norm - t2), hi = b_norm;
+    const Work c[5] = {-b1 * b1 * t2 * t2, -2 * b1 * b1 * t2, (t2 - b_norm) * (t2 + b_norm), 2 * t2, 1};
+    // With |b1| <= eps^2 the b1 = 0 minimizer (the hard-case formula below, which also covers
+    // |b2| > s^2) is within 2 |b1| R^2 of the minimum squared distance, so within eps R of the
+    // distance; solving instead would square b1 into the subnormals and lose the root.
+    const Work eps = std::numeric_limits<Real>::epsilon();
+    Real mu = 0;
+    if (std::abs(b1) > eps * eps) {
+      Work root = lo;
+      if (hi > lo && detail::horner(c, 4, lo) < 0) root = Roots::bracketed_root(c, 4, lo, hi);
+      mu = Real(root);
+    }
+    if (mu > 0) {
+      direction = a_parallel / mu + a_across / (mu + s2);
+    } else {
+      // The hard case: z2 = b2 / s^2 across, the rest of the unit length along m_xy.
+      const Vec3<Real> across = a_across / (radius * s2);
+      const Real rest = std::sqrt(std::max(Real(0), 1 - across.squaredNorm()));
+      direction = across + (along < 0 ? -rest : rest) / s * m_xy;
+    }
+    const Real length = direction.norm();
+    if (!(length > 0) || !std::isfinite(length)) return false;
+    out.ring_point = (radius / length) * direction;
+    out.mirror = out.ring_point - (2 * out.ring_point.dot(m_xy) / s2) * m_xy;
+  }
+  const Vec3<Real> offset = out.ring_point - a;
+  out.distance = offset.cross(m).norm();
+  out.line_point = a + offset.dot(m) * m;
+  out.anchor = a;
+  out.unit_direction = m;
+  return true;
+}
+
+template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
+  static constexpr bool defined = true;
+  using General = LinearCircleQuery<Real, Line3<Real>>;
+
+  template <class Roots = DefaultRoots> static Real distance(const Line3<Real>& line, const Circle3<Real>& c) {
+    LineRingMinimum<Real> m;
+    if (!line_ring_minimum<Roots>(line, c, m)) return General::template distance<Roots>(line, c);
+    return m.distance;
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Line3<Real>& line, const Circle3<Real>& c) {
+    LineRingMinimum<Real> m;
+    if (!line_ring_minimum<Roots>(line, c, m)) return General::template closest<Roots>(line, c);
+    Result<Real> r;
+    r.distance = m.distance;
+    r.point_a = c.center + m.line_point;
+    r.point_b = c.center + m.ring_point;
+    const Real d2 = line.direction.squaredNorm();
+    r.param_a = Vec2<Real>((m.line_point - (line.origin - c.center)).dot(line.direction) / d2, 0);
+    const Frame<Real> frame(c.normal);
+    r.param_b = Round<Real>::ring_param(frame.to_local(m.ring_point));
+    // Another pair at the same distance within rounding: the whole ring (a line on the axis), the
+    // mirror-image minimum when b1 is (nearly) zero (the mirror point bounds it from above), or
+    // a distance flat to rounding over the ring (a line within rounding of the center's axis).
+    r.unique = !m.on_axis;
+    {
+      const Real scale = std::max(c.radius, m.anchor.norm());
+      const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
+      const bool tied = mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
+      if (tied && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale)) r.unique = false;
+    }
+    return r;
+  }
+};
 template <class Real> struct Query<Ray3<Real>, Circle3<Real>> : LinearCircleQuery<Real, Ray3<Real>> {};
 template <class Real> struct Query<Segment3<Real>, Circle3<Real>> : LinearCircleQuery<Real, Segment3<Real>> {};
 

@@ -3,11 +3,14 @@
 // then polished and judged on the exact distance (see minimize.hpp), so a policy may return a
 // superset of the true roots but must never lose a real root, including multiple ones.
 //
-// The one entry point of a policy:
+// The two entry points of a policy:
 //   Policy::roots(c, degree, lo, hi, out)
 // appends candidates for the real roots of c[0] + c[1] x + ... + c[degree] x^degree in [lo, hi]
 // (either end may be infinite). The interval is the caller's promise that no root outside it
 // matters: bracketing searches only there, the companion policies find every root anyway.
+//   Policy::bracketed_root(c, degree, lo, hi)
+// returns the one root in the finite [lo, hi], where the caller knows that p(lo) < 0 <= p(hi)
+// and that p changes sign nowhere else in between (a full line against a circle, line_circle.hpp).
 #pragma once
 
 #include <Eigen/Eigenvalues>
@@ -54,6 +57,10 @@ template <class Real> int trimmed_degree(const Real* c, int degree) {
 }
 
 namespace detail {
+
+template <class Real> Real horner(const Real* c, int n, Real x);
+template <class Real>
+Real newton_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol);
 
 // p(x) by Horner's scheme, with p'(x) in `slope` from the same pass.
 template <class Real> Real horner_with_slope(const Real* c, int n, Real x, Real& slope) {
@@ -186,6 +193,21 @@ struct EigenCompanion {
       }
     }
   }
+
+  // The near-real root closest to [lo, hi], clamped into it (the midpoint if there is none).
+  template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi) {
+    Candidates<Real> all;
+    roots(c, degree, lo, hi, all);
+    Real best = (lo + hi) / 2, gap = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < all.count; ++i) {
+      const Real x = std::min(std::max(all.value[i], lo), hi);
+      if (std::abs(x - all.value[i]) < gap) {
+        gap = std::abs(x - all.value[i]);
+        best = x;
+      }
+    }
+    return best;
+  }
 };
 
 // EigenCompanion's roots, each refined by Newton steps on the polynomial, then polished by a
@@ -199,6 +221,13 @@ struct EigenPolished {
     EigenCompanion::roots(coefficients, degree, lo, hi, out);
     degree = trimmed_degree(coefficients, degree);
     for (int i = first; i < out.count; ++i) out.value[i] = detail::newton_on_polynomial(coefficients, degree, out.value[i]);
+  }
+
+  // EigenCompanion's root, refined by safeguarded Newton in the bracket.
+  template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi) {
+    const Real x = EigenCompanion::bracketed_root(c, degree, lo, hi);
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    return detail::newton_bisection(c, degree, lo, hi, detail::horner(c, degree, lo), x, 2 * eps, Real(0));
   }
 };
 
@@ -365,6 +394,16 @@ struct Bracketing {
     int count = 0;
     detail::isolate_roots(coefficients, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count);
     for (int i = 0; i < count; ++i) out.push(found[i]);
+  }
+
+  // One sign change and nothing else in the bracket: safeguarded Newton from the false-position
+  // point, no isolation. Where that point rounds onto lo (a root many orders of magnitude below
+  // hi), Newton starts at lo itself: the midpoint would take a halving per order of magnitude.
+  template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi) {
+    const Real plo = detail::horner(c, degree, lo), phi = detail::horner(c, degree, hi);
+    Real x = lo - plo * (hi - lo) / (phi - plo);
+    if (!(x > lo && x < hi)) x = lo;
+    return detail::newton_bisection(c, degree, lo, hi, plo, x, 2 * std::numeric_limits<Real>::epsilon(), Real(0));
   }
 };
 // The default policy of every solver, chosen by bench/accuracy_vs_time.py (see the README):
