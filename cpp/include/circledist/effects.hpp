@@ -59,9 +59,10 @@ template <class Roots> struct Counted {
     return Roots::roots(coefficients, degree, lo, hi, out);
   }
 
-  template <class Real> static Real bracketed_root(const Real* coefficients, int degree, Real lo, Real hi) {
+  template <class Real>
+  static Real bracketed_root(const Real* coefficients, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
     ++stats().solves;
-    return Roots::bracketed_root(coefficients, degree, lo, hi);
+    return Roots::bracketed_root(coefficients, degree, lo, hi, p_lo, p_hi);
   }
 };
 

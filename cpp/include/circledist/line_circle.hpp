@@ -63,25 +63,37 @@ template <class Real> struct LineRingMinimum {
 
 // False when the line is too extreme for the direct method (a zero or huge direction, a zero
 // radius, non-finite input): LinearCircleQuery then answers.
+namespace detail {
+template <class Real> constexpr Real power_of_two(int exponent) {
+  Real x = 1;
+  for (int i = 0; i < exponent; ++i) x *= 2;
+  return x;
+}
+}  // namespace detail
+
 template <class Roots, class Real>
 bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, LineRingMinimum<Real>& out) {
   const Real radius = circle.radius;
   const Real normal_length = circle.normal.norm();
   const Real d2 = line.direction.squaredNorm();
-  // Far from overflow and underflow (accurate_cross needs its error terms above the subnormals).
-  const auto moderate = [](Real x) { return x > Real(0x1p-300) && x < Real(0x1p300); };
+  // Far from overflow and underflow (accurate_cross needs its error terms above the subnormals):
+  // within 2^(+-0.3 max_exponent), 2^+-307 in double, 2^+-38 in float.
+  constexpr Real bound = detail::power_of_two<Real>(std::numeric_limits<Real>::max_exponent * 3 / 10);
+  const auto moderate = [bound](Real x) { return x > 1 / bound && x < bound; };
   if (!(moderate(radius) && moderate(d2) && moderate(normal_length))) return false;
-  const Vec3<Real> n = circle.normal / normal_length;
+  // Reciprocals once: a division per component would be most of the query's time.
+  const Real inverse_normal = 1 / normal_length, inverse_length = 1 / std::sqrt(d2);
+  const Vec3<Real> n = circle.normal * inverse_normal;
   const Vec3<Real> origin = line.origin - circle.center;
   // The anchor from w = o x d to one rounding per component (as LocalLinear): accurate relative
   // to its own length however far along the line the origin lies.
-  const Vec3<Real> a = line.direction.cross(accurate_cross(origin, line.direction)) / d2;
-  const Vec3<Real> m = line.direction / std::sqrt(d2);
+  const Vec3<Real> m = line.direction * inverse_length;
+  const Vec3<Real> a = m.cross(accurate_cross(origin, line.direction)) * inverse_length;
   if (!a.allFinite()) return false;
   // m x n from the inputs to one rounding per component: for a line nearly along the axis,
   // m - (m.n) n would carry m's rounding, eps, into a tilt of size s, and tip the ring point
   // out of the plane by eps / s.
-  const Vec3<Real> tilt = accurate_cross(line.direction, circle.normal) / (std::sqrt(d2) * normal_length);
+  const Vec3<Real> tilt = accurate_cross(line.direction, circle.normal) * (inverse_length * inverse_normal);
   const Vec3<Real> a_xy = a - a.dot(n) * n, m_xy = n.cross(tilt);
   const Real s2 = tilt.squaredNorm();  // |m_xy|^2 without 1 - (m.n)^2's cancellation
   Vec3<Real> direction;  // of the closest ring point
@@ -96,13 +108,16 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     // carry a.m's rounding, eps |a|, which swamps it for a line nearly parallel to the plane and
     // close to it, and picks the wrong one of the two crossings.
     const Real along = -a.dot(n) * m.dot(n);
-    const Vec3<Real> a_across = a_xy - (a_xy.dot(m_xy) / s2) * m_xy, a_parallel = (along / s2) * m_xy;
+    const Real inverse_s2 = 1 / s2;
+    const Vec3<Real> a_across = a_xy - (a_xy.dot(m_xy) * inverse_s2) * m_xy, a_parallel = (along * inverse_s2) * m_xy;
     const Real s = std::sqrt(s2);
     // The secular root in double for float scenes: with s^2 and b1 both near float's eps, the
     // quartic's low coefficients b1^2 s^4 would fall below float's smallest normal.
     using Work = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
-    const Work b1 = Work(along) / (Work(s) * Work(radius)), t2 = Work(s2);
-    const Work b_norm = std::sqrt(b1 * b1 + Work(a_across.squaredNorm()) / (Work(radius) * Work(radius)));
+    const Work inverse_radius = 1 / Work(radius), t2 = Work(s2);
+    const Work b1 = Work(along) * inverse_radius / Work(s);
+    const Work b2_squared = Work(a_across.squaredNorm()) * (inverse_radius * inverse_radius);
+    const Work b_norm = std::sqrt(b1 * b1 + b2_squared);
     const Work lo = std::max(std::abs(b1), b_norm - t2), hi = b_norm;
     const Work c[5] = {-b1 * b1 * t2 * t2, -2 * b1 * b1 * t2, (t2 - b_norm) * (t2 + b_norm), 2 * t2, 1};
     // With |b1| <= eps^2 the b1 = 0 minimizer (the hard-case formula below, which also covers
@@ -111,22 +126,24 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     const Work eps = std::numeric_limits<Real>::epsilon();
     Real mu = 0;
     if (std::abs(b1) > eps * eps) {
-      Work root = lo;
-      if (hi > lo && detail::horner(c, 4, lo) < 0) root = Roots::bracketed_root(c, 4, lo, hi);
-      mu = Real(root);
+      // P at the ends in closed form (with b^2 = b1^2 + b2^2): -b1^2 b2^2 at |b1|,
+      // b1^2 (lo^2 - b^2) at b - s^2, b2^2 s^2 (2 b + s^2) at b.
+      const Work p_lo = lo == std::abs(b1) ? -b1 * b1 * b2_squared : b1 * b1 * (lo - b_norm) * (lo + b_norm);
+      const Work p_hi = b2_squared * t2 * (2 * b_norm + t2);
+      mu = Real(hi > lo ? Roots::bracketed_root(c, 4, lo, hi, p_lo, p_hi) : lo);
     }
     if (mu > 0) {
-      direction = a_parallel / mu + a_across / (mu + s2);
+      direction = a_parallel * (mu + s2) + a_across * mu;  // z = (b1 / mu, b2 / (mu + s^2)), scaled
     } else {
       // The hard case: z2 = b2 / s^2 across, the rest of the unit length along m_xy.
-      const Vec3<Real> across = a_across / (radius * s2);
+      const Vec3<Real> across = a_across * (inverse_s2 / radius);
       const Real rest = std::sqrt(std::max(Real(0), 1 - across.squaredNorm()));
       direction = across + (along < 0 ? -rest : rest) / s * m_xy;
     }
     const Real length = direction.norm();
     if (!(length > 0) || !std::isfinite(length)) return false;
     out.ring_point = (radius / length) * direction;
-    out.mirror = out.ring_point - (2 * out.ring_point.dot(m_xy) / s2) * m_xy;
+    out.mirror = out.ring_point - (2 * out.ring_point.dot(m_xy) * inverse_s2) * m_xy;
   }
   const Vec3<Real> offset = out.ring_point - a;
   out.distance = offset.cross(m).norm();
