@@ -5,6 +5,7 @@
 #include "check.hpp"
 
 #include <cmath>
+#include <limits>
 
 using namespace circledist;
 
@@ -97,7 +98,47 @@ void radius_cases() {
   }
 }
 
+// Coefficients (lowest first) of (x - r0)(x - r1)(x - r2)(x - r3).
+inline void quartic_from_roots(const double r[4], double c[5]) {
+  c[0] = 1;
+  for (int k = 1; k <= 4; ++k) c[k] = 0;
+  for (int i = 0; i < 4; ++i) {
+    for (int k = i + 1; k >= 1; --k) c[k] = c[k - 1] - r[i] * c[k];
+    c[0] = -r[i] * c[0];
+  }
+}
+
+// Policy::bracketed_root, the line-circle quartic's solver: a root inside, a root many orders of
+// magnitude below the bracket's top, and a non-negative p(lo) returning lo itself.
+template <class Policy> void bracketed_root_cases(bool refined) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  {
+    const double r[4] = {0.3, -2, -3, -5}, lo = 0, hi = 1;
+    double c[5];
+    quartic_from_roots(r, c);
+    const double x = Policy::bracketed_root(c, 4, lo, hi, detail::horner(c, 4, lo), detail::horner(c, 4, hi));
+    CHECK_NEAR(x, 0.3, 8 * eps);
+  }
+  {
+    const double r[4] = {1e-30, -1, -2, -3}, lo = 0, hi = 1;
+    double c[5];
+    quartic_from_roots(r, c);
+    const double x = Policy::bracketed_root(c, 4, lo, hi, detail::horner(c, 4, lo), detail::horner(c, 4, hi));
+    // The companion matrix finds it to eps of the largest root; refining policies to eps of itself.
+    CHECK_NEAR(x, 1e-30, refined ? 8 * eps * 1e-30 : 8 * eps);
+  }
+  {
+    const double r[4] = {0.25, -1, -2, -3};
+    double c[5];
+    quartic_from_roots(r, c);
+    CHECK(Policy::bracketed_root(c, 4, 0.25, 1.0, 0.0, detail::horner(c, 4, 1.0)) == 0.25);
+  }
+}
+
 int main() {
+  bracketed_root_cases<EigenCompanion>(false);
+  bracketed_root_cases<EigenPolished>(true);
+  bracketed_root_cases<Bracketing>(true);
   analytic_cases<float>();
   analytic_cases<double>();
   analytic_cases<long double>();
