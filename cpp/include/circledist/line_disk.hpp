@@ -6,6 +6,7 @@
 // interval are candidates too. The exact disk distance judges every candidate.
 #pragma once
 
+#include "line_circle.hpp"
 #include "linear.hpp"
 #include "query.hpp"
 
@@ -63,7 +64,28 @@ template <class Real, class Piece> struct LinearDiskQuery {
   }
 };
 
-template <class Real> struct Query<Line3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Line3<Real>> {};
+// A full line's distance to a disk: zero where it crosses the disk's plane inside the rim, and
+// otherwise its distance to the rim circle. The distance to the line is convex over the plane and
+// vanishes at the crossing, so with the crossing outside the disk (or none) its minimum over the
+// disk lies on the rim; a line parallel to the plane over the disk is as close to the rim points
+// under it as to any. So the line-circle solver from the circle's side answers it (one bracketed
+// root). Closest points keep the general path, which also reports a continuum of them.
+template <class Real> struct Query<Line3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Line3<Real>> {
+  using General = LinearDiskQuery<Real, Line3<Real>>;
+
+  template <class Roots = DefaultRoots> static Real distance(const Line3<Real>& line, const Disk3<Real>& disk) {
+    LineRingMinimum<Real> m;
+    if (!line_ring_minimum<Roots>(line, Circle3<Real>{disk.center, disk.normal, disk.radius}, m))
+      return General::template distance<Roots>(line, disk);
+    const Vec3<Real> n = disk.normal / disk.normal.norm();
+    const Real height = m.anchor.dot(n), slope = m.unit_direction.dot(n);
+    if (slope != 0) {
+      const Vec3<Real> crossing = m.anchor - (height / slope) * m.unit_direction;
+      if (crossing.squaredNorm() <= disk.radius * disk.radius) return Real(0);
+    }
+    return m.distance;
+  }
+};
 template <class Real> struct Query<Ray3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Ray3<Real>> {};
 template <class Real> struct Query<Segment3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Segment3<Real>> {};
 
