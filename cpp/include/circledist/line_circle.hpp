@@ -57,12 +57,10 @@ template <class Real> struct LineRingMinimum {
   Real distance = 0;
   Vec3<Real> mirror;  // the ring point reflected across the plane of e2 and n: the other minimum's
                       // neighbor when b1 is small (the two minima differ by 4 R^2 |b1 z1|)
-  Vec3<Real> anchor, unit_direction;  // a and m
+  Vec3<Real> anchor, unit_direction, unit_normal;  // a, m and n
   bool on_axis = false;  // a line along the axis: every ring point is closest
 };
 
-// False when the line is too extreme for the direct method (a zero or huge direction, a zero
-// radius, non-finite input): LinearCircleQuery then answers.
 namespace detail {
 template <class Real> constexpr Real power_of_two(int exponent) {
   Real x = 1;
@@ -71,6 +69,8 @@ template <class Real> constexpr Real power_of_two(int exponent) {
 }
 }  // namespace detail
 
+// False when the line is too extreme for the direct method (a zero or huge direction, a zero
+// radius, non-finite input): LinearCircleQuery then answers.
 template <class Roots, class Real>
 bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, LineRingMinimum<Real>& out) {
   const Real radius = circle.radius;
@@ -150,6 +150,7 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
   out.line_point = a + offset.dot(m) * m;
   out.anchor = a;
   out.unit_direction = m;
+  out.unit_normal = n;
   return true;
 }
 
@@ -177,13 +178,10 @@ template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
     // Another pair at the same distance within rounding: the whole ring (a line on the axis), the
     // mirror-image minimum when b1 is (nearly) zero (the mirror point bounds it from above), or
     // a distance flat to rounding over the ring (a line within rounding of the center's axis).
-    r.unique = !m.on_axis;
-    {
-      const Real scale = std::max(c.radius, m.anchor.norm());
-      const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
-      const bool tied = mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
-      if (tied && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale)) r.unique = false;
-    }
+    const Real scale = std::max(c.radius, m.anchor.norm());
+    const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
+    const bool tied = mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
+    r.unique = !m.on_axis && !(tied && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale));
     return r;
   }
 };

@@ -77,8 +77,7 @@ template <class Real> struct Query<Line3<Real>, Disk3<Real>> : LinearDiskQuery<R
     LineRingMinimum<Real> m;
     if (!line_ring_minimum<Roots>(line, Circle3<Real>{disk.center, disk.normal, disk.radius}, m))
       return General::template distance<Roots>(line, disk);
-    const Vec3<Real> n = disk.normal / disk.normal.norm();
-    const Real height = m.anchor.dot(n), slope = m.unit_direction.dot(n);
+    const Real height = m.anchor.dot(m.unit_normal), slope = m.unit_direction.dot(m.unit_normal);
     if (slope != 0) {
       const Vec3<Real> crossing = m.anchor - (height / slope) * m.unit_direction;
       if (crossing.squaredNorm() <= disk.radius * disk.radius) return Real(0);

@@ -60,7 +60,6 @@ template <class Real> int trimmed_degree(const Real* c, int degree) {
 
 namespace detail {
 
-template <class Real> Real horner(const Real* c, int n, Real x);
 template <class Real>
 Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol);
 
