@@ -613,7 +613,10 @@ def test_batch_circle_disk_equals_scalar(order):
         dref = float(ref_of(c).distance)
         assert abs(di - dref) <= REL_TOL * max(dref, radius_scale(c.a, c.b)), c.id
     r = cd.closest_points(x, y)
-    np.testing.assert_array_equal(np.asarray(r.distance), d)
+    # The distance alone takes a shorter path (docs/circle_disk.md, "The distance alone"): the
+    # same value up to rounding, not to the bit.
+    for c, di, ri in zip(cases, d, np.asarray(r.distance)):
+        assert abs(ri - di) <= 1e-13 * max(di, radius_scale(c.a, c.b)), c.id
     assert np.asarray(r.point_a).shape == (len(cases), 3)
     for i, c in enumerate(cases):
         sa, sb = ordered(c, order)

@@ -82,30 +82,49 @@ template <class Real, int K> Trig<Real, K> operator*(Real a, Trig<Real, K> f) {
 // sin t = 2u/(1+u^2), so p(u) = (1+u^2)^K f(t) is a polynomial of degree 2K (ascending
 // coefficients) whose real roots are exactly the roots t of f in (-pi, pi). Its leading
 // coefficient is f(pi): when t = pi is a root the degree drops, so t = pi is always a candidate.
-// Uses cos kt + i sin kt = ((1 + iu)^2 / (1+u^2))^k.
+// (1+u^2)^K cos kt and (1+u^2)^K sin kt are the real and imaginary parts of
+// (1 + iu)^(2k) (1+u^2)^(K-k): polynomials with integer coefficients, tabulated at compile time,
+// so that the substitution is one small matrix product.
+template <int K> struct HalfAngleTable {
+  long long cos_part[K + 1][2 * K + 1] = {}, sin_part[K + 1][2 * K + 1] = {};
+
+  constexpr HalfAngleTable() {
+    long long re[2 * K + 1] = {}, im[2 * K + 1] = {};  // (1 + iu)^(2k), degree 2k
+    re[0] = 1;
+    for (int k = 0; k <= K; ++k) {
+      // times (1 + u^2)^(K-k), by its binomial coefficients
+      long long binomial = 1;
+      for (int j = 0, m = K - k; j <= m; ++j) {
+        for (int i = 0; i <= 2 * k; ++i) {
+          cos_part[k][i + 2 * j] += binomial * re[i];
+          sin_part[k][i + 2 * j] += binomial * im[i];
+        }
+        binomial = binomial * (m - j) / (j + 1);
+      }
+      long long next_re[2 * K + 1] = {}, next_im[2 * K + 1] = {};  // times (1 - u^2) + i 2u
+      for (int i = 0; i <= 2 * k && i + 2 <= 2 * K; ++i) {
+        next_re[i] += re[i];
+        next_re[i + 2] -= re[i];
+        next_re[i + 1] -= 2 * im[i];
+        next_im[i] += im[i];
+        next_im[i + 2] -= im[i];
+        next_im[i + 1] += 2 * re[i];
+      }
+      for (int i = 0; i <= 2 * K; ++i) {
+        re[i] = next_re[i];
+        im[i] = next_im[i];
+      }
+    }
+  }
+};
+
 template <class Real, int K> std::array<Real, 2 * K + 1> half_angle(const Trig<Real, K>& f) {
-  std::array<Real, 2 * K + 1> out{}, re{}, im{};
-  re[0] = 1;  // re + i im = (1 + iu)^(2k), degree 2k
-  for (int k = 0; k <= K; ++k) {
-    // (c_k re + s_k im) (1 + u^2)^(K-k), the binomials of (1+u^2)^m summed in place.
-    const int m = K - k;
-    Real binomial = 1;
-    for (int j = 0; j <= m; ++j) {
-      for (int i = 0; i <= 2 * k; ++i) out[i + 2 * j] += binomial * (f.c[k] * re[i] + f.s[k] * im[i]);
-      binomial = binomial * Real(m - j) / Real(j + 1);
-    }
-    if (k == K) break;
-    std::array<Real, 2 * K + 1> next_re{}, next_im{};  // times (1 + iu)^2 = (1 - u^2) + i 2u
-    for (int i = 0; i <= 2 * k; ++i) {
-      next_re[i] += re[i];
-      next_re[i + 2] -= re[i];
-      next_re[i + 1] -= 2 * im[i];
-      next_im[i] += im[i];
-      next_im[i + 2] -= im[i];
-      next_im[i + 1] += 2 * re[i];
-    }
-    re = next_re;
-    im = next_im;
+  static constexpr HalfAngleTable<K> table{};
+  std::array<Real, 2 * K + 1> out{};
+  for (int i = 0; i <= 2 * K; ++i) {
+    Real sum = 0;
+    for (int k = 0; k <= K; ++k) sum += Real(table.cos_part[k][i]) * f.c[k] + Real(table.sin_part[k][i]) * f.s[k];
+    out[i] = sum;
   }
   return out;
 }
@@ -251,7 +270,7 @@ Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, 
     Minimum<Real> m;
     if constexpr (Roots::polish == Polish::Newton) {
       const auto g = [&](Real d) { return jet(t0 + d); };
-      m = polish_newton(g, f, Real(0), width, lo - t0, hi - t0, abs_tol);
+      m = polish_newton(g, f, Real(0), width, lo - t0, hi - t0, abs_tol, screened.value[i]);
     } else {
       m = polish_minimum(f, Real(0), width, lo - t0, hi - t0, abs_tol);
     }

@@ -46,10 +46,26 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
+  // The distance alone needs neither the rim partition nor, often, the octic (docs/circle_disk.md,
+  // "The distance alone"): it is the smaller of the circle-ring distance and |z| at the points
+  // over the disk where z = 0 or z' = 0. Those few points come first; where the best of them is
+  // as low as |z| gets anywhere on the circle (the circle crosses the disk, or its lowest point is
+  // over it), no ring point can be closer and the octic is skipped.
   template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& a, const Disk3<Real>& disk) {
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     const LocalCircle<Real> c(a, round);
-    return solve<Roots>(c, disk.radius, circle_round_scale(c, disk.radius)).best.value;
+    const Real scale = circle_round_scale(c, disk.radius);
+    Candidates<Real, 8> heights;
+    push_circle_candidates(heights);  // z' = 0 everywhere (a parallel circle) has no roots to push
+    push_height_roots<Roots>(c, scale, heights);
+    Real best = std::numeric_limits<Real>::infinity(), lowest = best;
+    for (int i = 0; i < heights.count; ++i) {
+      const Vec3<Real> p = c.at(heights.value[i]);
+      best = std::min(best, disk_distance_local(p, disk.radius));
+      lowest = std::min(lowest, std::abs(p.z()));
+    }
+    if (best <= lowest + tie_tolerance(scale)) return best;
+    return std::min(best, Query<Circle3<Real>, Circle3<Real>>::template solve<Roots>(c, disk.radius, scale).best.value);
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Disk3<Real>& disk) {

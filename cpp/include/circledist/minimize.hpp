@@ -116,9 +116,11 @@ template <class Real> struct Jet {
 // Newton steps on the exact squared distance g from x0 (g' = 0 with g'' > 0), each one kept only
 // if g decreases; `distance(x)` is the exact distance. Falls back to the bracketed search when a
 // step fails (a kink, a concave region) before it has converged. Never returns a worse point
-// than its start.
+// than its start. `start_value`, when the caller already has distance(x0) (the screening
+// computed it), saves evaluating it again.
 template <class Real, class J, class F>
-Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width, Real lo, Real hi, Real abs_tol) {
+Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width, Real lo, Real hi, Real abs_tol,
+                            Real start_value = std::numeric_limits<Real>::quiet_NaN()) {
   Real x = std::min(std::max(x0, lo), hi);
   Jet<Real> g = jet(x);
   bool converged = false;
@@ -135,7 +137,12 @@ Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width
       break;
     }
     const Jet<Real> h = jet(next);
-    if (!(h.value <= g.value)) break;
+    if (!(h.value <= g.value)) {
+      // A step below the tolerance that does not lower g is rounding noise at the minimum (about
+      // one polish in four from an accurate root): converged, not a reason for the bracketed search.
+      converged = std::abs(step) <= abs_tol;
+      break;
+    }
     x = next;
     g = h;
     if (std::abs(step) <= abs_tol) {
@@ -146,7 +153,7 @@ Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width
   if (converged) {
     Minimum<Real> m{x, distance(x)};
     const Real start = std::min(std::max(x0, lo), hi);
-    const Real start_value = distance(start);
+    if (start != x0 || !(start_value == start_value)) start_value = distance(start);
     return start_value < m.value ? Minimum<Real>{start, start_value} : m;
   }
   // Newton could not continue: a concave stretch (an extraneous root of the squared equation,

@@ -251,28 +251,104 @@ template <class Real> Real horner_error(const Real* c, int n, Real x) {
   return Real(64) * (n + 1) * std::numeric_limits<Real>::epsilon() * v;
 }
 
+// What one pass of the root search needs at x: p(x), p'(x), p''(x) / 2, and sum |c_i| |x|^i,
+// which bounds the rounding of p(x).
+template <class Real> struct PassValues {
+  Real value, slope, half_curvature, size;
+};
+
+// Horner's scheme, any degree: the four values from one pass over the coefficients.
+template <class Real> struct HornerPass {
+  const Real* c;
+  int n;
+
+  PassValues<Real> operator()(Real x) const {
+    Real value = c[n], slope = 0, half_curvature = 0, size = std::abs(c[n]);
+    const Real ax = std::abs(x);
+    for (int i = n - 1; i >= 0; --i) {
+      half_curvature = half_curvature * x + slope;
+      slope = slope * x + value;
+      value = value * x + c[i];
+      size = size * ax + std::abs(c[i]);
+    }
+    return {value, slope, half_curvature, size};
+  }
+};
+
+// c[0] + c[1] x + ... + c[N] x^N by Estrin's scheme (x2 = x^2, x4 = x^4): pairs, then pairs of
+// pairs. Horner's chain of N multiply-adds is latency-bound (no FMA without -mfma); this one is
+// log2(N) deep, and its rounding obeys the same kind of bound, a small multiple of
+// eps sum |c_i| |x|^i.
+template <int N, class Real> Real estrin(const Real* c, Real x, Real x2, Real x4) {
+  if constexpr (N == 0) {
+    return c[0];
+  } else if constexpr (N == 1) {
+    return c[0] + c[1] * x;
+  } else if constexpr (N <= 3) {
+    return (c[0] + c[1] * x) + x2 * estrin<N - 2>(c + 2, x, x2, x4);
+  } else if constexpr (N <= 7) {
+    return estrin<3>(c, x, x2, x4) + x4 * estrin<N - 4>(c + 4, x, x2, x4);
+  } else {
+    return estrin<7>(c, x, x2, x4) + (x4 * x4) * estrin<N - 8>(c + 8, x, x2, x4);
+  }
+}
+
+// The same four values for a fixed degree N (3..8, every line and circle query), by Estrin's
+// scheme on the coefficients of p, p' and p''/2 (formed once per search) and of |p|: about a
+// third faster per pass than Horner.
+template <int N, class Real> struct EstrinPass {
+  const Real* c;
+  Real d1[N], d2[N - 1], magnitude[N + 1];
+
+  explicit EstrinPass(const Real* coefficients) : c(coefficients) {
+    for (int i = 0; i <= N; ++i) magnitude[i] = std::abs(c[i]);
+    for (int i = 0; i < N; ++i) d1[i] = Real(i + 1) * c[i + 1];
+    for (int i = 0; i + 1 < N; ++i) d2[i] = Real((i + 1) * (i + 2) / 2) * c[i + 2];
+  }
+
+  PassValues<Real> operator()(Real x) const {
+    const Real x2 = x * x, x4 = x2 * x2, ax = std::abs(x);
+    return {estrin<N>(c, x, x2, x4), estrin<N - 1>(d1, x, x2, x4), estrin<N - 2>(d2, x, x2, x4),
+            estrin<N>(magnitude, ax, x2, x4)};
+  }
+};
+
+// p(x) and horner_error's bound on its rounding, by Estrin's scheme for the degrees 3..8.
+template <int N, class Real> Real estrin_with_error(const Real* c, Real x, Real& error) {
+  Real magnitude[N + 1];
+  for (int i = 0; i <= N; ++i) magnitude[i] = std::abs(c[i]);
+  const Real x2 = x * x, x4 = x2 * x2;
+  error = Real(64) * (N + 1) * std::numeric_limits<Real>::epsilon() * estrin<N>(magnitude, std::abs(x), x2, x4);
+  return estrin<N>(c, x, x2, x4);
+}
+
+template <class Real> Real value_with_error(const Real* c, int n, Real x, Real& error) {
+  switch (n) {
+    case 3: return estrin_with_error<3>(c, x, error);
+    case 4: return estrin_with_error<4>(c, x, error);
+    case 5: return estrin_with_error<5>(c, x, error);
+    case 6: return estrin_with_error<6>(c, x, error);
+    case 7: return estrin_with_error<7>(c, x, error);
+    case 8: return estrin_with_error<8>(c, x, error);
+    default: error = horner_error(c, n, x); return horner(c, n, x);
+  }
+}
+
 // The root of p in (a, b), from x in (a, b), where p(a) and p(b) have opposite signs and p is
 // monotonic, to a relative accuracy of `rel_tol`, an absolute one of `abs_tol` (roots near 0
 // would otherwise take bisection steps down to the smallest numbers), or until p(x) is zero
 // within its rounding (closer than that, the steps are rounding noise and the bracket shrinks
-// one side only). Halley steps (cubic convergence; p'' comes from the same Horner pass, so a
-// step costs little more than Newton's and about one pass in four is saved), Newton's where
-// Halley's denominator is not positive and finite.
-template <class Real>
-Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol) {
+// one side only). Halley steps (cubic convergence; p'' comes from the same pass, so a step
+// costs little more than Newton's and about one pass in four is saved), Newton's where
+// Halley's denominator is not positive and finite. `pass(x)` gives PassValues for degree n.
+template <class Real, class Pass>
+Real halley_search(const Pass& pass, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol) {
   const Real eps = std::numeric_limits<Real>::epsilon();
   // A step that leaves the bracket is replaced by the bracket's midpoint, which halves it.
   for (int iteration = 0; iteration < 100; ++iteration) {
-    // p(x), p'(x), p''(x) / 2 and sum |c_i| |x|^i (which bounds Horner's rounding) in one pass.
-    Real px = c[n], slope = 0, half_curvature = 0, size = std::abs(c[n]);
-    const Real ax = std::abs(x);
-    for (int i = n - 1; i >= 0; --i) {
-      half_curvature = half_curvature * x + slope;
-      slope = slope * x + px;
-      px = px * x + c[i];
-      size = size * ax + std::abs(c[i]);
-    }
-    if (std::abs(px) <= 2 * n * eps * size) return x;
+    const PassValues<Real> v = pass(x);
+    const Real px = v.value, slope = v.slope, half_curvature = v.half_curvature;
+    if (std::abs(px) <= 2 * n * eps * v.size) return x;
     if ((px < 0) == (pa < 0)) {
       a = x;
       pa = px;
@@ -301,6 +377,21 @@ Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Rea
     x = next;
   }
   return x;
+}
+
+// halley_search with Estrin passes for the degrees of the line and circle queries, Horner's
+// for the rest (curves).
+template <class Real>
+Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol) {
+  switch (n) {
+    case 3: return halley_search(EstrinPass<3, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 4: return halley_search(EstrinPass<4, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 5: return halley_search(EstrinPass<5, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 6: return halley_search(EstrinPass<6, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 7: return halley_search(EstrinPass<7, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 8: return halley_search(EstrinPass<8, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    default: return halley_search(HornerPass<Real>{c, n}, n, a, b, pa, x, rel_tol, abs_tol);
+  }
 }
 
 // Appends the real roots of c (degree n >= 1, c[n] != 0) in [lo, hi] in increasing order, and
@@ -357,16 +448,17 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
     const Real x = a - pa * (b - a) / (pb - pa);
     return x > a && x < b ? x : (a + b) / 2;
   };
-  Real a = lo, pa = horner(c, n, lo);
+  Real error = 0;
+  Real a = lo, pa = value_with_error(c, n, lo, error);
   if (pa == 0) out[count++] = lo;
   for (int k = 0; k <= critical_count; ++k) {
     const Real b = k < critical_count ? critical[k] : hi;
-    const Real pb = horner(c, n, b);
+    const Real pb = value_with_error(c, n, b, error);
     if ((pa < 0 && pb > 0) || (pa > 0 && pb < 0)) {
       const Real x = start(a, b, pa, pb, k > 0, k < critical_count);
       out[count++] = halley_bisection(c, n, a, b, pa, x, rel_tol, rel_tol * (hi - lo) / 2);
     }
-    if (k < critical_count && std::abs(pb) <= horner_error(c, n, b)) {
+    if (k < critical_count && std::abs(pb) <= error) {
       if (count == 0 || out[count - 1] != b) out[count++] = b;
     } else if (pb == 0 && k == critical_count) {
       out[count++] = b;
