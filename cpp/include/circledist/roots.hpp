@@ -322,6 +322,22 @@ template <int N, class Real> Real estrin_with_error(const Real* c, Real x, Real&
   return estrin<N>(c, x, x2, x4);
 }
 
+// p(x) by Estrin's scheme for the degrees 1..8, Horner's beyond.
+template <class Real> Real polynomial_value(const Real* c, int n, Real x) {
+  const Real x2 = x * x, x4 = x2 * x2;
+  switch (n) {
+    case 1: return estrin<1>(c, x, x2, x4);
+    case 2: return estrin<2>(c, x, x2, x4);
+    case 3: return estrin<3>(c, x, x2, x4);
+    case 4: return estrin<4>(c, x, x2, x4);
+    case 5: return estrin<5>(c, x, x2, x4);
+    case 6: return estrin<6>(c, x, x2, x4);
+    case 7: return estrin<7>(c, x, x2, x4);
+    case 8: return estrin<8>(c, x, x2, x4);
+    default: return horner(c, n, x);
+  }
+}
+
 template <class Real> Real value_with_error(const Real* c, int n, Real x, Real& error) {
   switch (n) {
     case 3: return estrin_with_error<3>(c, x, error);
@@ -435,12 +451,13 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
   // distance back). The quadratic model there, p(c) + p''(c) (x - c)^2 / 2, vanishes at
   // c +- sqrt(-2 p(c) / p''(c)): a start close to the root. From the critical end with the
   // smaller |p|, else (the model has no root there: NaN or outside) false position.
+  Real ddc[kMaxCurveDegree];  // p''
+  for (int i = 0; i + 1 < n && critical_count > 0; ++i) ddc[i] = (i + 1) * dc[i + 1];
   const auto start = [&](Real a, Real b, Real pa, Real pb, bool a_critical, bool b_critical) {
     const bool from_a = a_critical && (!b_critical || std::abs(pa) <= std::abs(pb));
     if (from_a || b_critical) {
       const Real e = from_a ? a : b, pe = from_a ? pa : pb;
-      Real curvature = 0;
-      horner_with_slope(dc, n - 1, e, curvature);
+      const Real curvature = polynomial_value(ddc, n - 2, e);
       const Real step = std::sqrt(-2 * pe / curvature);
       const Real x = from_a ? e + step : e - step;
       if (x > a && x < b) return x;
