@@ -1,11 +1,13 @@
 // Point, line, ray and segment against circles and disks, on cases whose answer is known in
 // closed form (tangencies, the axis, the plane, translations), in float, double and long double.
 #include <circledist/circledist.hpp>
+#include <circledist/effects.hpp>
 
 #include "check.hpp"
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 using namespace circledist;
 
@@ -135,7 +137,31 @@ template <class Policy> void bracketed_root_cases(bool refined) {
   }
 }
 
+// Policy::roots_in: the roots of one polynomial inside a union of intervals, and no others; one
+// solve for the statistics however many intervals.
+template <class Policy> void roots_in_cases() {
+  const double r[4] = {-3, -0.5, 0.75, 2};
+  double c[5];
+  quartic_from_roots(r, c);
+  Intervals<double> where;
+  where.add(-std::numeric_limits<double>::infinity(), -1);
+  where.add(0.5, 1);
+  Candidates<double> out;
+  stats() = Stats{};
+  Counted<Policy>::roots_in(c, 4, where, out);
+  CHECK(stats().solves == 1);
+  CHECK(out.count == 2);
+  double found[2] = {out.value[0], out.value[1]};
+  if (found[0] > found[1]) std::swap(found[0], found[1]);
+  CHECK_NEAR(found[0], -3, 1e-12);
+  CHECK_NEAR(found[1], 0.75, 1e-12);
+  CHECK(where.contains(-1e300) && where.contains(0.5) && !where.contains(0) && !where.contains(2));
+}
+
 int main() {
+  roots_in_cases<EigenCompanion>();
+  roots_in_cases<EigenPolished>();
+  roots_in_cases<Bracketing>();
   bracketed_root_cases<EigenCompanion>(false);
   bracketed_root_cases<EigenPolished>(true);
   bracketed_root_cases<Bracketing>(true);

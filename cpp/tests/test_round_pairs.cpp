@@ -508,6 +508,52 @@ void random_tests() {
   }
 }
 
+// ring_search_intervals (the octic's pruning): for random, touching and linked pairs, the angle
+// at which A comes closest to B's ring, found by the reference minimizer on the library's own
+// parametrization of A, lies in the intervals kept for the sampled bound. So does every angle
+// whose distance ties with it (two-sample check: the second-best local minimum when it ties).
+void pruning_tests() {
+  std::mt19937_64 rng(20261123);
+  std::normal_distribution<double> normal;
+  auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
+  auto radius = [&] { return std::exp(0.7 * normal(rng)); };
+  int pruned = 0, total = 0;
+  for (int k = 0; k < 300; ++k) {
+    Circle3<double> a{vec(), vec(), radius()}, b{vec(), vec(), radius()};
+    if (k % 3 == 1) b.center = a.center + a.radius * Frame<double>(a.normal).u + 1e-9 * vec();  // touching
+    if (k % 3 == 2) b = {a.center + a.radius * Frame<double>(a.normal).u, Frame<double>(a.normal).u, a.radius};  // linked
+    const circledist::Round<double> round(b.center, b.normal, b.radius);
+    const LocalCircle<double> c(a, round);
+    const double scale = circle_round_scale(c, b.radius);
+    const V3 o = c.center.cast<LD>(), e1 = c.e1.cast<LD>(), e2 = c.e2.cast<LD>();
+    LD best_t = 0, best_h = std::numeric_limits<LD>::infinity();
+    const auto h = [&](LD t) {
+      const V3 p = o + std::cos(t) * e1 + std::sin(t) * e2;
+      const LD rho = std::sqrt(p.x() * p.x() + p.y() * p.y());
+      const LD value = std::sqrt(p.z() * p.z() + (rho - LD(b.radius)) * (rho - LD(b.radius)));
+      if (value < best_h) {
+        best_h = value;
+        best_t = t;
+      }
+      return value;
+    };
+    ref::minimize(h, -ref::kPi, ref::kPi, true);
+    const double bound = sampled_distance(c, [&](const V3d& p) { return ring_distance_local(p, b.radius); });
+    CHECK(bound >= double(best_h) - 1e-15 * scale);
+    const Intervals<double> kept = ring_search_intervals(c, b.radius, bound + 1e-4 * scale);
+    const double u = std::tan(double(best_t) / 2);
+    CHECK(kept.contains(u));
+    if (!kept.contains(u)) std::printf("pruning case %d: u* = %.17g outside the kept intervals\n", k, u);
+    ++total;
+    if (!(kept.count == 1 && kept.lo[0] == -std::numeric_limits<double>::infinity() &&
+          kept.hi[0] == std::numeric_limits<double>::infinity()))
+      ++pruned;
+  }
+  // Not a requirement, but pruning that never prunes would be a defect worth seeing.
+  CHECK(pruned > total / 2);
+  std::printf("pruning: %d of %d pairs searched on part of the circle only\n", pruned, total);
+}
+
 // Tangencies (multiple roots: the hardest candidates) in random orientations: B touches A at a
 // point p with a common tangent line, exactly or offset by up to 1e-12..1, and curves tangent to
 // A's rim at p.
@@ -599,6 +645,7 @@ int main() {
   bezier_tests();
   random_tests();
   tangency_tests();
+  pruning_tests();
   other_precision<float>("float", 1e-5);
   other_precision<long double>("long double", 1e-15);
   for (const auto& w : worst) std::printf("largest relative error, %s: %.3g\n", w.first.c_str(), w.second);

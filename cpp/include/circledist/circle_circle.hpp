@@ -12,6 +12,7 @@
 #include "planar.hpp"
 #include "query.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -129,13 +130,15 @@ template <class Real, int K> std::array<Real, 2 * K + 1> half_angle(const Trig<R
   return out;
 }
 
-// Appends the angles t = 2 atan(u) of the near-real roots u of the half-angle polynomial of f.
-template <class Roots, class Real, int K, int N> void push_trig_roots(const Trig<Real, K>& f, Candidates<Real, N>& out) {
+// Appends the angles t = 2 atan(u) of the near-real roots u of the half-angle polynomial of f,
+// where the caller's intervals of u say they can matter (everywhere by default).
+template <class Roots, class Real, int K, int N>
+void push_trig_roots(const Trig<Real, K>& f, Candidates<Real, N>& out,
+                     const Intervals<Real>& where = Intervals<Real>::everywhere()) {
   static_assert(2 * K <= kMaxDegree, "circledist: trigonometric degree too high for the default root policy");
   const std::array<Real, 2 * K + 1> p = half_angle(f);
   Candidates<Real> roots;
-  const Real inf = std::numeric_limits<Real>::infinity();
-  Roots::roots(p.data(), 2 * K, -inf, inf, roots);
+  Roots::roots_in(p.data(), 2 * K, where, roots);
   for (int i = 0; i < roots.count; ++i) out.push(2 * std::atan(roots.value[i]));
 }
 
@@ -185,13 +188,86 @@ template <class Real> Real circle_round_scale(const LocalCircle<Real>& c, Real r
   return s > 0 ? s : Real(1);
 }
 
+// The smallest distance(P(t)) over the eight angles t = k pi/4 (exact cosines and sines, no
+// trigonometric calls): a distance that A reaches, an upper bound on its minimum to prune with.
+template <class Real, class Distance> Real sampled_distance(const LocalCircle<Real>& c, const Distance& distance) {
+  const Real k = Real(0.7071067811865475244008443621048490392848359376884740365883398689953662L);
+  const Real angle[8][2] = {{1, 0}, {k, k}, {0, 1}, {-k, k}, {-1, 0}, {-k, -k}, {0, -1}, {k, -k}};
+  Real best = std::numeric_limits<Real>::infinity();
+  for (const auto& cs : angle) best = std::min(best, distance(Vec3<Real>(c.center + cs[0] * c.e1 + cs[1] * c.e2)));
+  return best;
+}
+
+// Where on A the distance h to the ring can be at most `bound`, as intervals of u = tan(t/2)
+// (docs/circle_circle.md, "Pruning"). Every ring point Q has z = 0 and |Q| = R, so
+// h(t) >= |z(t)| and h(t) >= ||P(t)| - R|: h <= bound needs -bound <= z <= bound and
+// (R - bound)^2 <= |P|^2 <= (R + bound)^2. z and |P|^2 = |O|^2 + rho^2 + 2 O.E1 cos t + 2 O.E2 sin t
+// are trigonometric of degree 1, so each condition is a quadratic inequality in u; the
+// intervals are where all four hold, between the sorted roots of the quadratics. Exact for the
+// minimum: a bound that some point reaches keeps the minimizer and every tie with it.
+template <class Real> Intervals<Real> ring_search_intervals(const LocalCircle<Real>& c, Real radius, Real bound) {
+  // (1 + u^2) (v0 + v1 cos t + v2 sin t - limit) = a u^2 + b u + c0, to be <= 0 (sign 1) or >= 0 (-1).
+  struct Condition {
+    Real a, b, c0, sign;
+    Real at(Real u) const { return sign * ((a * u + b) * u + c0); }
+  };
+  const auto condition = [](Real v0, Real v1, Real v2, Real limit, Real sign) {
+    return Condition{v0 - limit - v1, 2 * v2, v0 - limit + v1, sign};
+  };
+  const Real z0 = c.center.z(), z1 = c.e1.z(), z2 = c.e2.z();
+  const Real q0 = c.center.squaredNorm() + c.radius * c.radius, q1 = 2 * c.center.dot(c.e1),
+             q2 = 2 * c.center.dot(c.e2);
+  Condition conditions[4];
+  int n = 0;
+  conditions[n++] = condition(z0, z1, z2, bound, 1);
+  conditions[n++] = condition(z0, z1, z2, -bound, -1);
+  conditions[n++] = condition(q0, q1, q2, (radius + bound) * (radius + bound), 1);
+  if (radius > bound) conditions[n++] = condition(q0, q1, q2, (radius - bound) * (radius - bound), -1);
+  // The quadratics' real roots split the line into pieces on which every condition keeps its sign.
+  Real cuts[8];
+  int cut_count = 0;
+  for (int i = 0; i < n; ++i) {
+    const Condition& q = conditions[i];
+    if (q.a == 0) {
+      if (q.b != 0) cuts[cut_count++] = -q.c0 / q.b;
+      continue;
+    }
+    const Real disc = q.b * q.b - 4 * q.a * q.c0;
+    if (!(disc >= 0)) continue;
+    const Real root = -(q.b + std::copysign(std::sqrt(disc), q.b)) / 2;
+    cuts[cut_count++] = root / q.a;
+    if (root != 0) cuts[cut_count++] = q.c0 / root;
+  }
+  for (int i = 1; i < cut_count; ++i)  // insertion sort: at most eight
+    for (int j = i; j > 0 && cuts[j] < cuts[j - 1]; --j) std::swap(cuts[j], cuts[j - 1]);
+  const Real inf = std::numeric_limits<Real>::infinity();
+  Intervals<Real> out;
+  for (int i = 0; i <= cut_count; ++i) {
+    const Real lo = i == 0 ? -inf : cuts[i - 1], hi = i == cut_count ? inf : cuts[i];
+    if (!(lo <= hi)) continue;  // a NaN cut
+    const Real inside = cut_count == 0 ? Real(0)
+                        : i == 0       ? hi - std::max(Real(1), std::abs(hi))
+                        : i == cut_count ? lo + std::max(Real(1), std::abs(lo))
+                                         : (lo + hi) / 2;
+    bool kept = true;
+    for (int k = 0; k < n && kept; ++k) kept = !(conditions[k].at(inside) > 0);
+    if (kept) out.add(lo, hi);
+  }
+  // The sample that set the bound satisfies every condition: nothing kept means the pieces
+  // went wrong (NaN), and the whole line is searched.
+  return out.count > 0 ? out : Intervals<Real>::everywhere();
+}
+
 // The stationary points of the distance from P(t) to the ring of radius R (note 001 eq. (2)):
 //   P.P' sqrt(x^2 + y^2) = R (x x' + y y'),  squared:  (P.P')^2 (x^2 + y^2) - R^2 (x x' + y y')^2 = 0.
 // By eq. (3), P.P' = (O.E2) cos t - (O.E1) sin t: the second harmonic cancels because
 // |E1| = |E2| and E1.E2 = 0, so the left side has trigonometric degree 4, an octic in u.
-// x x' + y y' = G'/2 with G = x^2 + y^2. Coefficients in units of `scale` (all O(1)).
+// x x' + y y' = G'/2 with G = x^2 + y^2. Coefficients in units of `scale` (all O(1)). Only roots
+// where the distance can be at most `bound` are searched for (ring_search_intervals; the
+// margin of 1e-4 scale dwarfs the rounding of the quadratics).
 template <class Roots, class Real, int N>
-void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
+void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale, Candidates<Real, N>& out,
+                            Real bound = std::numeric_limits<Real>::infinity()) {
   const Trig<Real, 1> x = c.coordinate(0, scale), y = c.coordinate(1, scale);
   const Trig<Real, 2> g = x * x + y * y;
   const Trig<Real, 2> h = Real(0.5) * g.derivative();
@@ -200,7 +276,11 @@ void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale,
   dot.s[1] = -c.center.dot(c.e1) / (scale * scale);
   const Real r = radius / scale;
   const Trig<Real, 4> f = (dot * dot) * g - (r * r) * (h * h);
-  push_trig_roots<Roots>(f, out);
+  if (bound < std::numeric_limits<Real>::infinity()) {
+    push_trig_roots<Roots>(f, out, ring_search_intervals(c, radius, bound + Real(1e-4) * scale));
+  } else {
+    push_trig_roots<Roots>(f, out);
+  }
 }
 
 // Candidates every circle query shares: t = pi (the half-angle substitution's blind spot) and
@@ -349,16 +429,20 @@ Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>
 
 // Circle-circle: the smaller circle is parametrized (its angle features are then never narrower
 // than the other's), its candidates are the octic's roots plus t = 0 and t = pi; the exact
-// point-circle distance judges them.
+// point-circle distance judges them. The octic is searched only where the distance can beat the
+// best of eight samples (or the caller's `bound`, a distance some point is known to reach).
 template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
   static constexpr bool defined = true;
   using Starts = Candidates<Real, kMaxDegree + 8>;
 
-  template <class Roots> static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale) {
+  template <class Roots>
+  static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
+                                              Real bound = std::numeric_limits<Real>::infinity()) {
     Starts starts;
     push_circle_candidates(starts);
-    push_circle_ring_roots<Roots>(c, radius, scale, starts);
-    const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
+    const auto distance = [&](const Vec3<Real>& p) { return ring_distance_local(p, radius); };
+    push_circle_ring_roots<Roots>(c, radius, scale, starts, std::min(bound, sampled_distance(c, distance)));
+    const auto h = [&](Real t) { return distance(c.at(t)); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }

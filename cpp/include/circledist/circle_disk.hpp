@@ -40,8 +40,11 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     push_circle_candidates(starts);
     push_rim_partition<Roots>(c, radius, scale, starts);
     push_height_roots<Roots>(c, scale, starts);
-    push_circle_ring_roots<Roots>(c, radius, scale, starts);
-    const auto h = [&](Real t) { return disk_distance_local(c.at(t), radius); };
+    // The octic's roots matter outside the cylinder only, where the disk distance is the ring's:
+    // there the minimum is at most any disk distance A reaches (ring_search_intervals).
+    const auto distance = [&](const Vec3<Real>& p) { return disk_distance_local(p, radius); };
+    push_circle_ring_roots<Roots>(c, radius, scale, starts, sampled_distance(c, distance));
+    const auto h = [&](Real t) { return distance(c.at(t)); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &disk_jet_of<Real>); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
@@ -65,7 +68,9 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
       lowest = std::min(lowest, std::abs(p.z()));
     }
     if (best <= lowest + tie_tolerance(scale)) return best;
-    return std::min(best, Query<Circle3<Real>, Circle3<Real>>::template solve<Roots>(c, disk.radius, scale).best.value);
+    // Only rim points closer than `best` matter: the octic is searched where they can be.
+    return std::min(best,
+                    Query<Circle3<Real>, Circle3<Real>>::template solve<Roots>(c, disk.radius, scale, best).best.value);
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Disk3<Real>& disk) {

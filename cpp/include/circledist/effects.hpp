@@ -59,6 +59,13 @@ template <class Roots> struct Counted {
     return Roots::roots(coefficients, degree, lo, hi, out);
   }
 
+  template <class Real, int Capacity>
+  static void roots_in(const Real* coefficients, int degree, const Intervals<Real>& intervals,
+                       Candidates<Real, Capacity>& out) {
+    ++stats().solves;
+    Roots::roots_in(coefficients, degree, intervals, out);
+  }
+
   template <class Real>
   static Real bracketed_root(const Real* coefficients, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
     ++stats().solves;

@@ -13,6 +13,9 @@
 // nowhere else in between and gives p(lo) <= 0 <= p(hi) (from a closed form: more accurate than
 // Horner there, and free; a full line against a circle, line_circle.hpp). Where p_lo is not
 // below zero, lo is the root and is returned as it is.
+//   Policy::roots_in(c, degree, intervals, out)
+// is roots() for a union of disjoint intervals (one polynomial solve, however many pieces):
+// bracketing searches each piece, the companion policies solve once and keep the roots inside.
 #pragma once
 
 #include <Eigen/Eigenvalues>
@@ -45,6 +48,44 @@ template <class Real, int Capacity = kMaxDegree + 8> struct Candidates {
     if (count < int(value.size()) && std::isfinite(x)) value[count++] = x;
   }
 };
+
+// Disjoint intervals [lo[i], hi[i]] in increasing order; the outer ends may be infinite.
+template <class Real> struct Intervals {
+  static constexpr int capacity = 9;
+  std::array<Real, capacity> lo{}, hi{};
+  int count = 0;
+
+  static Intervals everywhere() {
+    Intervals all;
+    all.add(-std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::infinity());
+    return all;
+  }
+  // Appends [a, b] (a >= the last hi), merged with the last interval where they touch.
+  void add(Real a, Real b) {
+    if (count > 0 && hi[count - 1] >= a) {
+      hi[count - 1] = std::max(hi[count - 1], b);
+    } else if (count < capacity) {
+      lo[count] = a;
+      hi[count] = b;
+      ++count;
+    }
+  }
+  bool contains(Real x) const {
+    for (int i = 0; i < count; ++i)
+      if (x >= lo[i] && x <= hi[i]) return true;
+    return false;
+  }
+};
+
+// roots_in for the policies that find every root anyway: one solve, the roots inside kept.
+template <class Roots, class Real, int Capacity>
+void roots_kept_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
+  Candidates<Real, Capacity> all;
+  const Real inf = std::numeric_limits<Real>::infinity();
+  Roots::roots(c, degree, -inf, inf, all);
+  for (int i = 0; i < all.count; ++i)
+    if (intervals.contains(all.value[i])) out.push(all.value[i]);
+}
 
 // The degree after dropping leading coefficients that are rounding noise relative to the
 // largest one; -1 when the polynomial is identically zero. Eigen's PolynomialSolver asserts on
@@ -195,6 +236,11 @@ struct EigenCompanion {
     }
   }
 
+  template <class Real, int Capacity>
+  static void roots_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
+    roots_kept_in<EigenCompanion>(c, degree, intervals, out);
+  }
+
   // The near-real root closest to [lo, hi], clamped into it (the midpoint if there is none).
   template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real) {
     if (!(p_lo < 0)) return lo;
@@ -223,6 +269,11 @@ struct EigenPolished {
     EigenCompanion::roots(coefficients, degree, lo, hi, out);
     degree = trimmed_degree(coefficients, degree);
     for (int i = first; i < out.count; ++i) out.value[i] = detail::newton_on_polynomial(coefficients, degree, out.value[i]);
+  }
+
+  template <class Real, int Capacity>
+  static void roots_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
+    roots_kept_in<EigenPolished>(c, degree, intervals, out);
   }
 
   // EigenCompanion's root, refined by safeguarded Halley in the bracket.
@@ -522,6 +573,12 @@ struct Bracketing {
     int count = 0;
     detail::isolate_roots(coefficients, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count);
     for (int i = 0; i < count; ++i) out.push(found[i]);
+  }
+
+  // Each piece is searched on its own: the derivative chain only has its critical points there.
+  template <class Real, int Capacity>
+  static void roots_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
+    for (int i = 0; i < intervals.count; ++i) roots(c, degree, intervals.lo[i], intervals.hi[i], out);
   }
 
   // One sign change and nothing else in the bracket: safeguarded Halley from the false-position
