@@ -16,6 +16,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <type_traits>
 
 namespace circledist {
 
@@ -130,21 +132,26 @@ template <class Real, int K> std::array<Real, 2 * K + 1> half_angle(const Trig<R
   return out;
 }
 
-// Appends the angles t = 2 atan(u) of the near-real roots u of the half-angle polynomial of f,
-// where the caller's intervals of u say they can matter (everywhere by default).
-template <class Roots, class Real, int K, int N>
-void push_trig_roots(const Trig<Real, K>& f, Candidates<Real, N>& out,
-                     const Intervals<Real>& where = Intervals<Real>::everywhere()) {
+// Appends the angles t = 2 atan(u) of the near-real roots u of a half-angle polynomial p of
+// degree <= kMaxDegree, where the caller's intervals of u say they can matter.
+template <class Roots, class Real, int N>
+void push_half_angle_roots(const Real* p, int degree, const Intervals<Real>& where, Candidates<Real, N>& out) {
+  Candidates<Real> roots;
+  Roots::roots_in(p, degree, where, roots);
+  for (int i = 0; i < roots.count; ++i) out.push(2 * std::atan(roots.value[i]));
+}
+
+// The same for the roots of a trigonometric polynomial f, through its half-angle polynomial.
+template <class Roots, class Real, int K, int N> void push_trig_roots(const Trig<Real, K>& f, Candidates<Real, N>& out) {
   static_assert(2 * K <= kMaxDegree, "circledist: trigonometric degree too high for the default root policy");
   const std::array<Real, 2 * K + 1> p = half_angle(f);
-  Candidates<Real> roots;
-  Roots::roots_in(p.data(), 2 * K, where, roots);
-  for (int i = 0; i < roots.count; ++i) out.push(2 * std::atan(roots.value[i]));
+  push_half_angle_roots<Roots>(p.data(), 2 * K, Intervals<Real>::everywhere(), out);
 }
 
 // The angle in (-pi, pi], the range of atan2 that Round::ring_param uses too.
 template <class Real> Real wrap_angle(Real t) {
   const Real pi = pi_v<Real>();
+  if (t > -pi && t <= pi) return t;  // the usual case: a polished angle stays near its start
   t = std::remainder(t, 2 * pi);
   return t <= -pi ? t + 2 * pi : t;
 }
@@ -188,14 +195,26 @@ template <class Real> Real circle_round_scale(const LocalCircle<Real>& c, Real r
   return s > 0 ? s : Real(1);
 }
 
-// The smallest distance(P(t)) over the eight angles t = k pi/4 (exact cosines and sines, no
-// trigonometric calls): a distance that A reaches, an upper bound on its minimum to prune with.
-template <class Real, class Distance> Real sampled_distance(const LocalCircle<Real>& c, const Distance& distance) {
+// The smallest distance over the eight angles t = k pi/4 (exact cosines and sines, no
+// trigonometric calls), from `squared(P)`, the squared distance of a local point: a distance that
+// A reaches, an upper bound on its minimum to prune with (one square root, not sixteen).
+template <class Real, class Squared> Real sampled_distance(const LocalCircle<Real>& c, const Squared& squared) {
   const Real k = Real(0.7071067811865475244008443621048490392848359376884740365883398689953662L);
   const Real angle[8][2] = {{1, 0}, {k, k}, {0, 1}, {-k, k}, {-1, 0}, {-k, -k}, {0, -1}, {k, -k}};
   Real best = std::numeric_limits<Real>::infinity();
-  for (const auto& cs : angle) best = std::min(best, distance(Vec3<Real>(c.center + cs[0] * c.e1 + cs[1] * c.e2)));
-  return best;
+  for (const auto& cs : angle) best = std::min(best, squared(Vec3<Real>(c.center + cs[0] * c.e1 + cs[1] * c.e2)));
+  return std::sqrt(best);
+}
+
+// Squared distances from a local point to the ring and to the disk of radius R (an underflow to 0
+// only loosens a bound built from them).
+template <class Real> Real ring_distance_squared(const Vec3<Real>& p, Real radius) {
+  const Real off = length2d(p.x(), p.y()) - radius;
+  return p.z() * p.z() + off * off;
+}
+template <class Real> Real disk_distance_squared(const Vec3<Real>& p, Real radius) {
+  const Real off = std::max(length2d(p.x(), p.y()) - radius, Real(0));
+  return p.z() * p.z() + off * off;
 }
 
 // Where on A the distance h to the ring can be at most `bound`, as intervals of u = tan(t/2)
@@ -217,12 +236,19 @@ template <class Real> Intervals<Real> ring_search_intervals(const LocalCircle<Re
   const Real z0 = c.center.z(), z1 = c.e1.z(), z2 = c.e2.z();
   const Real q0 = c.center.squaredNorm() + c.radius * c.radius, q1 = 2 * c.center.dot(c.e1),
              q2 = 2 * c.center.dot(c.e2);
+  // A condition that holds on the whole circle is left out: v0 + v1 cos t + v2 sin t ranges over
+  // v0 -+ sqrt(v1^2 + v2^2), compared squared.
+  const auto always_below = [](Real v0, Real v1, Real v2, Real limit) {
+    return limit - v0 >= 0 && (limit - v0) * (limit - v0) >= v1 * v1 + v2 * v2;
+  };
   Condition conditions[4];
   int n = 0;
-  conditions[n++] = condition(z0, z1, z2, bound, 1);
-  conditions[n++] = condition(z0, z1, z2, -bound, -1);
-  conditions[n++] = condition(q0, q1, q2, (radius + bound) * (radius + bound), 1);
-  if (radius > bound) conditions[n++] = condition(q0, q1, q2, (radius - bound) * (radius - bound), -1);
+  if (!always_below(z0, z1, z2, bound)) conditions[n++] = condition(z0, z1, z2, bound, 1);
+  if (!always_below(-z0, -z1, -z2, bound)) conditions[n++] = condition(z0, z1, z2, -bound, -1);
+  const Real outer = (radius + bound) * (radius + bound), inner = (radius - bound) * (radius - bound);
+  if (!always_below(q0, q1, q2, outer)) conditions[n++] = condition(q0, q1, q2, outer, 1);
+  if (radius > bound && !always_below(-q0, -q1, -q2, -inner)) conditions[n++] = condition(q0, q1, q2, inner, -1);
+  if (n == 0) return Intervals<Real>::everywhere();
   // The quadratics' real roots split the line into pieces on which every condition keeps its sign.
   Real cuts[8];
   int cut_count = 0;
@@ -265,22 +291,48 @@ template <class Real> Intervals<Real> ring_search_intervals(const LocalCircle<Re
 // x x' + y y' = G'/2 with G = x^2 + y^2. Coefficients in units of `scale` (all O(1)). Only roots
 // where the distance can be at most `bound` are searched for (ring_search_intervals; the
 // margin of 1e-4 scale dwarfs the rounding of the quadratics).
+//
+// The octic is built in u directly (the half-angle form of that equation, which half_angle()
+// would give from the Trig products, in a third of the operations): (1 + u^2) times a first
+// harmonic v0 + v1 cos t + v2 sin t is the quadratic (v0 + v1) + 2 v2 u + (v0 - v1) u^2, so with
+//   X, Y, X', Y', D = (1 + u^2) x, y, x', y', P.P'        (quadratics)
+//   G = X^2 + Y^2 = (1 + u^2)^2 (x^2 + y^2),   H = X X' + Y Y' = (1 + u^2)^2 (x x' + y y'),
+//   p(u) = D^2 G - R^2 H^2 = (1 + u^2)^4 [ (P.P')^2 (x^2 + y^2) - R^2 (x x' + y y')^2 ].
+template <class Real> std::array<Real, 9> circle_ring_octic(const LocalCircle<Real>& c, Real radius, Real scale) {
+  const Real inv = 1 / scale;
+  const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
+  const auto product = [](const auto& a, const auto& b) {
+    std::array<Real, std::tuple_size<std::decay_t<decltype(a)>>::value + std::tuple_size<std::decay_t<decltype(b)>>::value - 1> out{};
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
+    return out;
+  };
+  const Real x0 = c.center.x() * inv, x1 = c.e1.x() * inv, x2 = c.e2.x() * inv;
+  const Real y0 = c.center.y() * inv, y1 = c.e1.y() * inv, y2 = c.e2.y() * inv;
+  const std::array<Real, 3> x = quadratic(x0, x1, x2), y = quadratic(y0, y1, y2);
+  const std::array<Real, 3> dx = quadratic(0, x2, -x1), dy = quadratic(0, y2, -y1);
+  const std::array<Real, 3> d = quadratic(0, c.center.dot(c.e2) * inv * inv, -c.center.dot(c.e1) * inv * inv);
+  std::array<Real, 5> g = product(x, x), h = product(x, dx);
+  const std::array<Real, 5> yy = product(y, y), ydy = product(y, dy);
+  for (int i = 0; i < 5; ++i) {
+    g[i] += yy[i];
+    h[i] += ydy[i];
+  }
+  const Real r = radius * inv;
+  std::array<Real, 9> p = product(product(d, d), g);
+  const std::array<Real, 9> hh = product(h, h);
+  for (int i = 0; i < 9; ++i) p[i] -= r * r * hh[i];
+  return p;
+}
+
 template <class Roots, class Real, int N>
 void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale, Candidates<Real, N>& out,
                             Real bound = std::numeric_limits<Real>::infinity()) {
-  const Trig<Real, 1> x = c.coordinate(0, scale), y = c.coordinate(1, scale);
-  const Trig<Real, 2> g = x * x + y * y;
-  const Trig<Real, 2> h = Real(0.5) * g.derivative();
-  Trig<Real, 1> dot;  // P.P'
-  dot.c[1] = c.center.dot(c.e2) / (scale * scale);
-  dot.s[1] = -c.center.dot(c.e1) / (scale * scale);
-  const Real r = radius / scale;
-  const Trig<Real, 4> f = (dot * dot) * g - (r * r) * (h * h);
-  if (bound < std::numeric_limits<Real>::infinity()) {
-    push_trig_roots<Roots>(f, out, ring_search_intervals(c, radius, bound + Real(1e-4) * scale));
-  } else {
-    push_trig_roots<Roots>(f, out);
-  }
+  const std::array<Real, 9> p = circle_ring_octic(c, radius, scale);
+  const Intervals<Real> where = bound < std::numeric_limits<Real>::infinity()
+                                    ? ring_search_intervals(c, radius, bound + Real(1e-4) * scale)
+                                    : Intervals<Real>::everywhere();
+  push_half_angle_roots<Roots>(p.data(), 8, where, out);
 }
 
 // Candidates every circle query shares: t = pi (the half-angle substitution's blind spot) and
@@ -440,9 +492,9 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
                                               Real bound = std::numeric_limits<Real>::infinity()) {
     Starts starts;
     push_circle_candidates(starts);
-    const auto distance = [&](const Vec3<Real>& p) { return ring_distance_local(p, radius); };
-    push_circle_ring_roots<Roots>(c, radius, scale, starts, std::min(bound, sampled_distance(c, distance)));
-    const auto h = [&](Real t) { return distance(c.at(t)); };
+    const auto squared = [&](const Vec3<Real>& p) { return ring_distance_squared(p, radius); };
+    push_circle_ring_roots<Roots>(c, radius, scale, starts, std::min(bound, sampled_distance(c, squared)));
+    const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
