@@ -15,9 +15,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
-#include <tuple>
-#include <type_traits>
 
 namespace circledist {
 
@@ -206,17 +205,6 @@ template <class Real, class Squared> Real sampled_distance(const LocalCircle<Rea
   return std::sqrt(best);
 }
 
-// Squared distances from a local point to the ring and to the disk of radius R (an underflow to 0
-// only loosens a bound built from them).
-template <class Real> Real ring_distance_squared(const Vec3<Real>& p, Real radius) {
-  const Real off = length2d(p.x(), p.y()) - radius;
-  return p.z() * p.z() + off * off;
-}
-template <class Real> Real disk_distance_squared(const Vec3<Real>& p, Real radius) {
-  const Real off = std::max(length2d(p.x(), p.y()) - radius, Real(0));
-  return p.z() * p.z() + off * off;
-}
-
 // Where on A the distance h to the ring can be at most `bound`, as intervals of u = tan(t/2)
 // (docs/circle_circle.md, "Pruning"). Every ring point Q has z = 0 and |Q| = R, so
 // h(t) >= |z(t)| and h(t) >= ||P(t)| - R|: h <= bound needs -bound <= z <= bound and
@@ -260,9 +248,8 @@ template <class Real> Intervals<Real> ring_search_intervals(const LocalCircle<Re
     }
     const Real disc = q.b * q.b - 4 * q.a * q.c0;
     if (!(disc >= 0)) continue;
-    const Real root = -(q.b + std::copysign(std::sqrt(disc), q.b)) / 2;
-    cuts[cut_count++] = root / q.a;
-    if (root != 0) cuts[cut_count++] = q.c0 / root;
+    detail::stable_quadratic_roots(q.c0, q.b, q.a, disc, cuts + cut_count);
+    cut_count += 2;
   }
   for (int i = 1; i < cut_count; ++i)  // insertion sort: at most eight
     for (int j = i; j > 0 && cuts[j] < cuts[j - 1]; --j) std::swap(cuts[j], cuts[j - 1]);
@@ -288,9 +275,7 @@ template <class Real> Intervals<Real> ring_search_intervals(const LocalCircle<Re
 //   P.P' sqrt(x^2 + y^2) = R (x x' + y y'),  squared:  (P.P')^2 (x^2 + y^2) - R^2 (x x' + y y')^2 = 0.
 // By eq. (3), P.P' = (O.E2) cos t - (O.E1) sin t: the second harmonic cancels because
 // |E1| = |E2| and E1.E2 = 0, so the left side has trigonometric degree 4, an octic in u.
-// x x' + y y' = G'/2 with G = x^2 + y^2. Coefficients in units of `scale` (all O(1)). Only roots
-// where the distance can be at most `bound` are searched for (ring_search_intervals; the
-// margin of 1e-4 scale dwarfs the rounding of the quadratics).
+// x x' + y y' = G'/2 with G = x^2 + y^2. Coefficients in units of `scale` (all O(1)).
 //
 // The octic is built in u directly (the half-angle form of that equation, which half_angle()
 // would give from the Trig products, in a third of the operations): (1 + u^2) times a first
@@ -298,15 +283,17 @@ template <class Real> Intervals<Real> ring_search_intervals(const LocalCircle<Re
 //   X, Y, X', Y', D = (1 + u^2) x, y, x', y', P.P'        (quadratics)
 //   G = X^2 + Y^2 = (1 + u^2)^2 (x^2 + y^2),   H = X X' + Y Y' = (1 + u^2)^2 (x x' + y y'),
 //   p(u) = D^2 G - R^2 H^2 = (1 + u^2)^4 [ (P.P')^2 (x^2 + y^2) - R^2 (x x' + y y')^2 ].
+template <class Real, std::size_t A, std::size_t B>
+std::array<Real, A + B - 1> product(const std::array<Real, A>& a, const std::array<Real, B>& b) {
+  std::array<Real, A + B - 1> out{};
+  for (std::size_t i = 0; i < A; ++i)
+    for (std::size_t j = 0; j < B; ++j) out[i + j] += a[i] * b[j];
+  return out;
+}
+
 template <class Real> std::array<Real, 9> circle_ring_octic(const LocalCircle<Real>& c, Real radius, Real scale) {
   const Real inv = 1 / scale;
   const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
-  const auto product = [](const auto& a, const auto& b) {
-    std::array<Real, std::tuple_size<std::decay_t<decltype(a)>>::value + std::tuple_size<std::decay_t<decltype(b)>>::value - 1> out{};
-    for (std::size_t i = 0; i < a.size(); ++i)
-      for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-    return out;
-  };
   const Real x0 = c.center.x() * inv, x1 = c.e1.x() * inv, x2 = c.e2.x() * inv;
   const Real y0 = c.center.y() * inv, y1 = c.e1.y() * inv, y2 = c.e2.y() * inv;
   const std::array<Real, 3> x = quadratic(x0, x1, x2), y = quadratic(y0, y1, y2);
@@ -325,14 +312,13 @@ template <class Real> std::array<Real, 9> circle_ring_octic(const LocalCircle<Re
   return p;
 }
 
+// Its roots are searched only where the distance can be at most `bound`, a distance A reaches
+// (ring_search_intervals, which searches everywhere for an infinite bound; the margin of
+// 1e-4 scale dwarfs the rounding of its quadratics).
 template <class Roots, class Real, int N>
-void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale, Candidates<Real, N>& out,
-                            Real bound = std::numeric_limits<Real>::infinity()) {
+void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale, Real bound, Candidates<Real, N>& out) {
   const std::array<Real, 9> p = circle_ring_octic(c, radius, scale);
-  const Intervals<Real> where = bound < std::numeric_limits<Real>::infinity()
-                                    ? ring_search_intervals(c, radius, bound + Real(1e-4) * scale)
-                                    : Intervals<Real>::everywhere();
-  push_half_angle_roots<Roots>(p.data(), 8, where, out);
+  push_half_angle_roots<Roots>(p.data(), 8, ring_search_intervals(c, radius, bound + Real(1e-4) * scale), out);
 }
 
 // Candidates every circle query shares: t = pi (the half-angle substitution's blind spot) and
@@ -493,7 +479,7 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     Starts starts;
     push_circle_candidates(starts);
     const auto squared = [&](const Vec3<Real>& p) { return ring_distance_squared(p, radius); };
-    push_circle_ring_roots<Roots>(c, radius, scale, starts, std::min(bound, sampled_distance(c, squared)));
+    push_circle_ring_roots<Roots>(c, radius, scale, std::min(bound, sampled_distance(c, squared)), starts);
     const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));

@@ -43,7 +43,7 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     // The octic's roots matter outside the cylinder only, where the disk distance is the ring's:
     // there the minimum is at most any disk distance A reaches (ring_search_intervals).
     const auto squared = [&](const Vec3<Real>& p) { return disk_distance_squared(p, radius); };
-    push_circle_ring_roots<Roots>(c, radius, scale, starts, sampled_distance(c, squared));
+    push_circle_ring_roots<Roots>(c, radius, scale, sampled_distance(c, squared), starts);
     const auto h = [&](Real t) { return disk_distance_local(c.at(t), radius); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &disk_jet_of<Real>); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));

@@ -4,6 +4,7 @@
 
 #include "primitives.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace circledist {
@@ -20,6 +21,17 @@ template <class Real> Real ring_distance_local(const Vec3<Real>& p, Real radius)
 template <class Real> Real disk_distance_local(const Vec3<Real>& p, Real radius) {
   const Real rho = length2d(p.x(), p.y());
   return rho <= radius ? std::abs(p.z()) : length2d(p.z(), rho - radius);
+}
+
+// The same two distances squared, without the last square root (for bounds: an underflow to 0
+// only loosens them).
+template <class Real> Real ring_distance_squared(const Vec3<Real>& p, Real radius) {
+  const Real off = length2d(p.x(), p.y()) - radius;
+  return p.z() * p.z() + off * off;
+}
+template <class Real> Real disk_distance_squared(const Vec3<Real>& p, Real radius) {
+  const Real off = std::max(length2d(p.x(), p.y()) - radius, Real(0));
+  return p.z() * p.z() + off * off;
 }
 
 template <class Real> struct Round {

@@ -104,6 +104,15 @@ namespace detail {
 template <class Real>
 Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol);
 
+// The two real roots of c0 + c1 x + c2 x^2 (c2 != 0, discriminant `disc` >= 0) by the stable
+// formula: q = -(c1 + sign(c1) sqrt(disc)) / 2, roots q / c2 and c0 / q (0 when q is 0, a double
+// root at 0).
+template <class Real> void stable_quadratic_roots(Real c0, Real c1, Real c2, Real disc, Real r[2]) {
+  const Real q = -(c1 + std::copysign(std::sqrt(disc), c1)) / 2;
+  r[0] = q / c2;
+  r[1] = q != 0 ? c0 / q : Real(0);
+}
+
 // p(x) by Horner's scheme, with p'(x) in `slope` from the same pass.
 template <class Real> Real horner_with_slope(const Real* c, int n, Real x, Real& slope) {
   Real v = c[n];
@@ -216,10 +225,10 @@ struct EigenCompanion {
       // Stable quadratic formula; a complex pair contributes its real part when near-real.
       const Real disc = c[1] * c[1] - 4 * c[2] * c[0];
       if (disc >= 0) {
-        const Real q = -(c[1] + std::copysign(std::sqrt(disc), c[1])) / 2;
-        out.push(q / c[2]);
-        if (q != 0) out.push(c[0] / q);
-        else out.push(Real(0));
+        Real r[2];
+        detail::stable_quadratic_roots(c[0], c[1], c[2], disc, r);
+        out.push(r[0]);
+        out.push(r[1]);
       } else {
         const std::complex<Real> z(-c[1] / (2 * c[2]), std::sqrt(-disc) / (2 * std::abs(c[2])));
         if (detail::near_real(z, tol)) out.push(z.real());
@@ -293,13 +302,18 @@ template <class Real> Real horner(const Real* c, int n, Real x) {
   return v;
 }
 
-// A bound on the rounding error of evaluating p at x by Horner's scheme, generously inflated to
-// cover the rounding already in the coefficients.
+// A bound on the rounding error of evaluating p (degree n) at x, from size = sum |c_i| |x|^i,
+// generously inflated to cover the rounding already in the coefficients.
+template <class Real> Real rounding_bound(int n, Real size) {
+  return Real(64) * (n + 1) * std::numeric_limits<Real>::epsilon() * size;
+}
+
+// That bound for Horner's scheme.
 template <class Real> Real horner_error(const Real* c, int n, Real x) {
   Real v = std::abs(c[n]);
   const Real ax = std::abs(x);
   for (int i = n - 1; i >= 0; --i) v = v * ax + std::abs(c[i]);
-  return Real(64) * (n + 1) * std::numeric_limits<Real>::epsilon() * v;
+  return rounding_bound(n, v);
 }
 
 // What one pass of the root search needs at x: p(x), p'(x), p''(x) / 2, and sum |c_i| |x|^i,
@@ -369,7 +383,7 @@ template <int N, class Real> Real estrin_with_error(const Real* c, Real x, Real&
   Real magnitude[N + 1];
   for (int i = 0; i <= N; ++i) magnitude[i] = std::abs(c[i]);
   const Real x2 = x * x, x4 = x2 * x2;
-  error = Real(64) * (N + 1) * std::numeric_limits<Real>::epsilon() * estrin<N>(magnitude, std::abs(x), x2, x4);
+  error = rounding_bound(N, estrin<N>(magnitude, std::abs(x), x2, x4));
   return estrin<N>(c, x, x2, x4);
 }
 
@@ -477,9 +491,7 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
     Real r[2];
     int k = 0;
     if (disc > 0) {
-      const Real q = -(c[1] + std::copysign(std::sqrt(disc), c[1])) / 2;
-      r[0] = q / c[2];
-      r[1] = q != 0 ? c[0] / q : Real(0);
+      stable_quadratic_roots(c[0], c[1], c[2], disc, r);
       if (r[0] > r[1]) std::swap(r[0], r[1]);
       k = 2;
     } else {
