@@ -87,10 +87,15 @@ template <class Real> struct LocalBezier {
   Real size = 0;   // max |q_i - q_0|, the curve's extent
 
   LocalBezier(const BezierCurve3<Real>& b, const Round<Real>& round) : n(std::max(b.degree(), 0)) {
-    for (int i = 0; i <= n && i < int(b.control.cols()); ++i) {
-      q[i] = round.local(b.control.col(i));
-      size = std::max(size, (q[i] - q[0]).norm());
-    }
+    for (int i = 0; i <= n && i < int(b.control.cols()); ++i) q[i] = round.local(b.control.col(i));
+    derive();
+  }
+
+  // A curve from its local control points (a piece of another, piece_of below).
+  LocalBezier(const std::array<Vec3<Real>, kMaxBezierDegree + 1>& local, int degree) : n(degree), q(local) { derive(); }
+
+  void derive() {
+    for (int i = 0; i <= n; ++i) size = std::max(size, (q[i] - q[0]).norm());
     for (int i = 0; i < n; ++i) {
       d1[i] = Real(n) * (q[i + 1] - q[i]);
       speed = std::max(speed, d1[i].norm());
@@ -106,6 +111,24 @@ template <class Real> struct LocalBezier {
   }
 
   Vec3<Real> at(Real t) const { return casteljau(q, n, t); }
+
+  // The control points of the piece t in [t0, t1], by blossoming: the k-th is the polar form at
+  // (t0 x (n - k), t1 x k), de Casteljau's steps with t0 then t1. Computed from the whole
+  // curve's points at once (not by repeated halving, whose midpoints would carry the rounding
+  // of a far control point into a piece next to the round), so a piece near an end of the
+  // curve is as accurate as the curve's own points there.
+  LocalBezier piece(Real t0, Real t1) const {
+    std::array<Vec3<Real>, kMaxBezierDegree + 1> out{};
+    for (int k = 0; k <= n; ++k) {
+      std::array<Vec3<Real>, kMaxBezierDegree + 1> p = q;
+      for (int level = 0; level < n; ++level) {
+        const Real t = level < n - k ? t0 : t1;
+        for (int i = 0; i + level < n; ++i) p[i] = (1 - t) * p[i] + t * p[i + 1];
+      }
+      out[k] = p[0];
+    }
+    return LocalBezier(out, n);
+  }
 
   template <class JetOf> Jet<Real> jet(Real t, Real radius, const JetOf& jet_of) const {
     const Vec3<Real> p1 = n >= 1 ? casteljau(d1, n - 1, t) : Vec3<Real>::Zero();
@@ -229,12 +252,80 @@ template <class Real> Result<Real> empty_curve_result() {
 template <class Real> struct CurveRoundBase {
   // 2 end points + 6n-2 + 2n + n + (n-1) roots for a disk: 69 at degree 7 (a circle: 6n-2 + n + (n-1)).
   using Starts = Candidates<Real, 72>;
+  using Found = Minima<Real, Starts::capacity>;
 
   template <class Roots, class H, class J>
-  static Minima<Real, Starts::capacity> polish(const LocalBezier<Real>& c, const Starts& starts, Real scale, const H& h,
-                                               const J& jet) {
+  static Found polish(const LocalBezier<Real>& c, const Starts& starts, Real scale, const H& h, const J& jet) {
     return polish_offsets<Roots>(jet, h, starts, Real(1e-3), Real(0), Real(1), parameter_tolerance(c.speed, scale),
                                  screening_margin(scale));
+  }
+
+  // Minima over a piece's parameter s, moved to the curve's t = t0 + s (t1 - t0) (the whole
+  // curve, t0 = 0 and t1 = 1, unchanged).
+  static Found on_span(Found found, Real t0, Real t1) {
+    if (t0 == 0 && t1 == 1) return found;
+    for (int i = 0; i < found.count; ++i) found.item[i].x = t0 + found.item[i].x * (t1 - t0);
+    found.best.x = t0 + found.best.x * (t1 - t0);
+    return found;
+  }
+
+  // A curve far larger than the round (1e5 times, or one control point 1e10 away) cannot be
+  // solved as a whole: in units of its own size the round is a speck, and the polynomials'
+  // roots near it are lost to rounding (a relative error of 1e-2, or the minimum missed). So the
+  // curve is cut into pieces, each small next to max(radius, its distance to the round), and
+  // each piece is solved in its own variable and scale. Branch and bound: a piece's control
+  // points hold it (convex hull), so its ball's center's distance minus the ball's radius bounds
+  // its distance from below, and pieces that cannot beat an end point already seen are dropped.
+  // A curve of the round's size is one piece: the whole curve, solved as before.
+  // `distance_of(p)` is the exact distance of a local point; `solve_piece(piece, scale)` the
+  // minima over one piece (parameter s in [0, 1], mapped here to t = t0 + s (t1 - t0)).
+  template <class DistanceOf, class SolvePiece>
+  static Found solve_pieces(const LocalBezier<Real>& c, Real radius, Real scale, const DistanceOf& distance_of,
+                            const SolvePiece& solve_piece) {
+    constexpr int kPieceRatio = 4, kMaxDepth = 64, kMaxPieces = 64;
+    struct Span {
+      Real t0, t1;
+      int depth;
+    };
+    const auto ball = [](const LocalBezier<Real>& p, Vec3<Real>& center) {
+      Vec3<Real> lo = p.q[0], hi = p.q[0];
+      for (int i = 1; i <= p.n; ++i) {
+        lo = lo.cwiseMin(p.q[i]);
+        hi = hi.cwiseMax(p.q[i]);
+      }
+      center = (lo + hi) / 2;
+      Real r = 0;
+      for (int i = 0; i <= p.n; ++i) r = std::max(r, (p.q[i] - center).norm());
+      return r;
+    };
+    Vec3<Real> center;
+    const Real whole = ball(c, center);
+    if (!(whole > kPieceRatio * std::max(radius, distance_of(center) - whole))) return solve_piece(c, scale, 0, 1);
+    Found out;
+    Real upper = std::min(distance_of(c.q[0]), distance_of(c.q[c.n]));
+    std::array<Span, 2 * kMaxDepth + 2> stack;
+    int top = 0, pieces = 0;
+    stack[top++] = {Real(0), Real(1), 0};
+    while (top > 0) {
+      const Span span = stack[--top];
+      const LocalBezier<Real> piece = c.piece(span.t0, span.t1);
+      const Real r = ball(piece, center);
+      const Real lower = distance_of(center) - r;
+      if (lower > upper + tie_tolerance(std::max(scale, upper))) continue;
+      upper = std::min(upper, std::min(distance_of(piece.q[0]), distance_of(piece.q[piece.n])));
+      const Real mid = (span.t0 + span.t1) / 2;
+      if (r > kPieceRatio * std::max(radius, lower) && span.depth < kMaxDepth && pieces + top < kMaxPieces &&
+          mid > span.t0 && mid < span.t1) {
+        stack[top++] = {mid, span.t1, span.depth + 1};
+        stack[top++] = {span.t0, mid, span.depth + 1};
+        continue;
+      }
+      ++pieces;
+      const Found found = solve_piece(piece, bezier_round_scale(piece, radius), span.t0, span.t1);
+      for (int i = 0; i < found.count; ++i) out.add(found.item[i]);
+      if (found.best.value < out.best.value) out.best = found.best;
+    }
+    return out;
   }
 };
 
@@ -243,14 +334,17 @@ template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRound
   using Base = CurveRoundBase<Real>;
 
   template <class Roots> static auto solve(const LocalBezier<Real>& c, Real radius, Real scale) {
-    typename Base::Starts starts;
-    starts.push(Real(0));
-    starts.push(Real(1));
-    push_curve_disk_roots<Roots>(c, radius, scale, starts);
-    push_curve_ring_roots<Roots>(c, radius, scale, starts);
-    const auto h = [&](Real t) { return disk_distance_local(c.at(t), radius); };
-    const auto jet = [&](Real t) { return c.jet(t, radius, &disk_jet_of<Real>); };
-    return Base::template polish<Roots>(c, starts, scale, h, jet);
+    const auto distance_of = [&](const Vec3<Real>& p) { return disk_distance_local(p, radius); };
+    return Base::solve_pieces(c, radius, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s, Real t0, Real t1) {
+      typename Base::Starts starts;
+      starts.push(Real(0));
+      starts.push(Real(1));
+      push_curve_disk_roots<Roots>(piece, radius, s, starts);
+      push_curve_ring_roots<Roots>(piece, radius, s, starts);
+      const auto h = [&](Real t) { return disk_distance_local(piece.at(t), radius); };
+      const auto jet = [&](Real t) { return piece.jet(t, radius, &disk_jet_of<Real>); };
+      return Base::on_span(Base::template polish<Roots>(piece, starts, s, h, jet), t0, t1);
+    });
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
@@ -278,21 +372,24 @@ template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRou
   using Base = CurveRoundBase<Real>;
 
   template <class Roots> static auto solve(const LocalBezier<Real>& c, Real radius, Real scale) {
-    typename Base::Starts starts;
-    starts.push(Real(0));
-    starts.push(Real(1));
-    push_curve_ring_roots<Roots>(c, radius, scale, starts);
-    // Eq. (2) squared carries the factor x^2 + y^2: on a curve lying along the axis it vanishes
-    // identically and has no roots, while the distance sqrt(R^2 + z^2) is smallest where
-    // z z' = 0. Those roots (degrees n and n - 1, cheap) seed the polish there and near it.
-    if (c.n >= 1) {
-      const CurvePoly<Real> z = c.coordinate(2, scale);
-      push_curve_roots<Roots>(z, starts);
-      push_curve_roots<Roots>(z.derivative(), starts);
-    }
-    const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
-    const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
-    return Base::template polish<Roots>(c, starts, scale, h, jet);
+    const auto distance_of = [&](const Vec3<Real>& p) { return ring_distance_local(p, radius); };
+    return Base::solve_pieces(c, radius, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s, Real t0, Real t1) {
+      typename Base::Starts starts;
+      starts.push(Real(0));
+      starts.push(Real(1));
+      push_curve_ring_roots<Roots>(piece, radius, s, starts);
+      // Eq. (2) squared carries the factor x^2 + y^2: on a curve lying along the axis it vanishes
+      // identically and has no roots, while the distance sqrt(R^2 + z^2) is smallest where
+      // z z' = 0. Those roots (degrees n and n - 1, cheap) seed the polish there and near it.
+      if (piece.n >= 1) {
+        const CurvePoly<Real> z = piece.coordinate(2, s);
+        push_curve_roots<Roots>(z, starts);
+        push_curve_roots<Roots>(z.derivative(), starts);
+      }
+      const auto h = [&](Real t) { return ring_distance_local(piece.at(t), radius); };
+      const auto jet = [&](Real t) { return piece.jet(t, radius, &ring_jet_of<Real>); };
+      return Base::on_span(Base::template polish<Roots>(piece, starts, s, h, jet), t0, t1);
+    });
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {

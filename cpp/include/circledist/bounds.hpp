@@ -73,7 +73,7 @@ template <class Real> Real point_linear_distance(const Vec3<Real>& p, const Line
 // A round's plane: heights h(x) = n.(x - c) with n of unit length.
 template <class Real> struct Plane {
   Vec3<Real> center, n;
-  template <class R> explicit Plane(const R& round) : center(round.center), n(round.normal / round.normal.norm()) {}
+  template <class R> explicit Plane(const R& round) : center(round.center), n(unit_vector(round.normal)) {}
   Real height(const Vec3<Real>& x) const { return n.dot(x - center); }
 };
 
@@ -108,7 +108,7 @@ template <class Real> Range<Real> height_range(const Segment3<Real>& s, const Pl
 }
 template <class Real, class R> Range<Real> round_height_range(const R& round, const Plane<Real>& plane) {
   const Real h = plane.height(round.center);
-  const Vec3<Real> m = round.normal / round.normal.norm();
+  const Vec3<Real> m = unit_vector(round.normal);
   const Real spread = round.radius * plane.n.cross(m).norm();  // radius * sin(angle between the planes)
   return {h - spread, h + spread};
 }
@@ -185,7 +185,7 @@ void sample_points(const Segment3<Real>& s, const R& round, const Visit& visit) 
 // chord in B's plane nearest to B's center.
 template <class Real, class A, class R, class Visit>
 void sample_round_points(const A& a, bool filled, const R& round, const Visit& visit) {
-  const Vec3<Real> m = a.normal / a.normal.norm();
+  const Vec3<Real> m = unit_vector(a.normal);
   const Real ra = a.radius;
   const Vec3<Real> q = round.center - a.center;
   const Vec3<Real> in_plane = q - m.dot(q) * m;
@@ -263,7 +263,8 @@ template <class A, class R> DistanceBounds<scalar_t<R>> bounds_against_round(con
   if constexpr (is_round_v<A>) out.lower = std::max(out.lower, height_range(b, Plane<Real>(a)).gap());
   // Upper: concrete points.
   if constexpr (is_disk_v<A> && is_disk_v<R>) {
-    if (disk_contact(a, Round<Real>(b.center, b.normal, b.radius), b.radius).intersect) {
+    const DiskContact<Real> contact = disk_contact(a, Round<Real>(b.center, b.normal, b.radius), b.radius);
+    if (contact.intersect && !contact.borderline) {
       out.upper = 0;
       return out;
     }

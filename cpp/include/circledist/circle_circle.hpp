@@ -349,6 +349,10 @@ template <class Real> Real parameter_tolerance(Real speed, Real scale) {
 // roots of the squared equations, which would otherwise slide across the whole circle (about
 // 125 exact evaluations per candidate against about 40 for a start at a minimum). The sorted
 // order polishes the most promising start first; the first one is always polished.
+// The premise, accurate roots, holds for the policies that refine every root to rounding
+// (Roots::accurate_roots, Bracketing). The eigenvalue policies' roots of a clustered octic (a
+// circle 1e4 times larger than the disk it passes, whose closest stretch spans 1e-5 rad) err by
+// 1e-4 in u, so their starts lie far above the minimum they lead to: every one is polished.
 template <class Real> Real screening_margin(Real scale) {
   return 16 * std::sqrt(std::numeric_limits<Real>::epsilon()) * scale;
 }
@@ -375,22 +379,26 @@ template <class Real, int N> struct ScreenedStarts {
 // exact squared distance `jet` (falling back to the bracketed search where they fail), or the
 // bracketed search alone. Each start t0 is polished as an offset d, h(t0 + d), so that Brent's
 // relative tolerance (sqrt(eps) |x|) never limits the parameter's absolute accuracy.
+// `reach` bounds the offset itself: half a turn for a periodic angle, where a flat distance (a
+// circle parallel to a disk) would otherwise let Newton's steps run to t = 5e16.
 template <class Roots, class Real, int N, class J, class H>
 Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, N>& starts, Real width, Real lo,
-                               Real hi, Real abs_tol, Real margin) {
+                               Real hi, Real abs_tol, Real margin,
+                               Real reach = std::numeric_limits<Real>::infinity()) {
   Minima<Real, N> out;
   const ScreenedStarts<Real, N> screened(h, starts);
   for (int k = 0; k < screened.count; ++k) {
     const int i = screened.order[k];
-    if (out.count > 0 && !(screened.value[i] <= out.best.value + margin)) break;
+    if (has_accurate_roots<Roots>::value && out.count > 0 && !(screened.value[i] <= out.best.value + margin)) break;
     const Real t0 = starts.value[i];
     const auto f = [&](Real d) { return h(t0 + d); };
+    const Real below = std::max(lo - t0, -reach), above = std::min(hi - t0, reach);
     Minimum<Real> m;
     if constexpr (Roots::polish == Polish::Newton) {
       const auto g = [&](Real d) { return jet(t0 + d); };
-      m = polish_newton(g, f, Real(0), width, lo - t0, hi - t0, abs_tol, screened.value[i]);
+      m = polish_newton(g, f, Real(0), width, below, above, abs_tol, screened.value[i]);
     } else {
-      m = polish_minimum(f, Real(0), width, lo - t0, hi - t0, abs_tol);
+      m = polish_minimum(f, Real(0), width, below, above, abs_tol);
     }
     m.x = t0 + m.x;
     out.item[out.count++] = m;
@@ -403,7 +411,7 @@ Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, 
 template <class Roots, class Real, int N, class J, class H>
 Minima<Real, N> polish_angles(const J& jet, const H& h, const Candidates<Real, N>& starts, Real abs_tol, Real margin) {
   const Real inf = std::numeric_limits<Real>::infinity();
-  Minima<Real, N> out = polish_offsets<Roots>(jet, h, starts, Real(1e-3), -inf, inf, abs_tol, margin);
+  Minima<Real, N> out = polish_offsets<Roots>(jet, h, starts, Real(1e-3), -inf, inf, abs_tol, margin, pi_v<Real>());
   for (int i = 0; i < out.count; ++i) out.item[i].x = wrap_angle(out.item[i].x);
   out.best.x = wrap_angle(out.best.x);
   return out;

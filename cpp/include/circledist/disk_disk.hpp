@@ -15,6 +15,12 @@ namespace circledist {
 template <class Real> struct DiskContact {
   bool intersect = false;
   bool unique = true;
+  // Contact decided within rounding: the common part is so short that the square roots giving
+  // its ends (which turn eps scale^2 in their radicands into sqrt(eps) scale) cannot tell a
+  // touch from a gap of 1e-8 scale. The rims then decide: when two disks meet, an end of their
+  // common part lies on a rim, so min(circle(A)-disk(B), circle(B)-disk(A)) is 0 exactly when
+  // they meet and the distance otherwise.
+  bool borderline = false;
   Vec3<Real> point = Vec3<Real>::Zero();
 };
 
@@ -51,7 +57,8 @@ template <class Real> DiskContact<Real> disk_contact(const Disk3<Real>& a, const
     out.unique = !(extent > apart);
     return out;
   }
-  if (!(std::abs(c) <= ra * sine)) return out;  // A lies strictly on one side of B's plane
+  // A lies strictly on one side of B's plane (or touches it within rounding: the rims decide).
+  if (!(std::abs(c) <= ra * sine)) return out;
   // A's chord in B's plane, in A's plane coordinates: foot -c (gx, gy) / sine^2, direction
   // (-gy, gx) / sine, half-length sqrt(ra^2 - c^2 / sine^2).
   const Real half = std::sqrt(std::max(Real(0), (ra * sine - std::abs(c)) * (ra * sine + std::abs(c)))) / sine;
@@ -70,6 +77,7 @@ template <class Real> DiskContact<Real> disk_contact(const Disk3<Real>& a, const
   if (!(lo <= hi)) return out;
   const Real mid = (lo + hi) / 2;
   out.intersect = true;
+  out.borderline = !(hi - lo > 64 * std::sqrt(std::numeric_limits<Real>::epsilon()) * scale);
   out.point = foot + mid * e;
   out.point.z() = 0;
   out.unique = !(hi - lo > apart);
@@ -84,14 +92,15 @@ template <class Real> struct Query<Disk3<Real>, Disk3<Real>> {
 
   template <class Roots = DefaultRoots> static Real distance(const Disk3<Real>& a, const Disk3<Real>& b) {
     const Round<Real> round(b.center, b.normal, b.radius);
-    if (disk_contact(a, round, b.radius).intersect) return Real(0);
+    const DiskContact<Real> contact = disk_contact(a, round, b.radius);
+    if (contact.intersect && !contact.borderline) return Real(0);
     return std::min(CircleDisk::template distance<Roots>(rim(a), b), CircleDisk::template distance<Roots>(rim(b), a));
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Disk3<Real>& a, const Disk3<Real>& b) {
     const Round<Real> round(b.center, b.normal, b.radius);
     const DiskContact<Real> contact = disk_contact(a, round, b.radius);
-    if (contact.intersect) {
+    if (contact.intersect && !contact.borderline) {
       const Round<Real> round_a(a.center, a.normal, a.radius);
       Result<Real> r;
       r.distance = 0;

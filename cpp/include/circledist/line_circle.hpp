@@ -84,11 +84,11 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
   // Reciprocals once: a division per component would be most of the query's time.
   const Real inverse_normal = 1 / normal_length, inverse_length = 1 / std::sqrt(d2);
   const Vec3<Real> n = circle.normal * inverse_normal;
-  const Vec3<Real> origin = line.origin - circle.center;
   // The anchor from w = o x d to one rounding per component (as LocalLinear): accurate relative
   // to its own length however far along the line the origin lies.
   const Vec3<Real> m = line.direction * inverse_length;
-  const Vec3<Real> a = m.cross(accurate_cross(origin, line.direction)) * inverse_length;
+  const Vec3<Real> a = m.cross(offset_cross(ExactDifference<Real>(line.origin, circle.center), line.direction)) *
+                       inverse_length;
   if (!a.allFinite()) return false;
   // m x n from the inputs to one rounding per component: for a line nearly along the axis,
   // m - (m.n) n would carry m's rounding, eps, into a tilt of size s, and tip the ring point
@@ -104,12 +104,16 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     direction = rho > 0 ? a_xy : Frame<Real>(circle.normal).u;  // angle 0 when all are closest
     out.mirror = out.ring_point = radius * direction / direction.norm();
   } else {
-    // a_xy.m_xy = R s b1 is -(a.n)(m.n) because a.m = 0. Taken directly, the dot product would
-    // carry a.m's rounding, eps |a|, which swamps it for a line nearly parallel to the plane and
-    // close to it, and picks the wrong one of the two crossings.
-    const Real along = -a.dot(n) * m.dot(n);
+    // a_xy.m_xy = R s b1 is -(a.n)(m.n) because a.m = 0, and a.n = a.(n - (m.n) m) for the same
+    // reason. Each form matters at one extreme. Taken directly, a_xy.m_xy would carry a.m's
+    // rounding, eps |a|, which swamps it for a line nearly parallel to the plane and close to it
+    // (and picks the wrong one of the two crossings). And for a line nearly along the axis, a.n
+    // is of size |a| s while its rounding is eps |a|: at a tilt s near eps, b1 would be noise and
+    // the closest ring point anywhere on the ring. n - (m.n) m = tilt x m comes from the
+    // accurate tilt, to eps relative to its length s, so (tilt x m).a is accurate at both ends.
+    const Real along = -a.dot(tilt.cross(m)) * m.dot(n);
     const Real inverse_s2 = 1 / s2;
-    const Vec3<Real> a_across = a_xy - (a_xy.dot(m_xy) * inverse_s2) * m_xy, a_parallel = (along * inverse_s2) * m_xy;
+    const Vec3<Real> a_parallel = (along * inverse_s2) * m_xy, a_across = a_xy - a_parallel;
     const Real s = std::sqrt(s2);
     // The secular root in double for float scenes: with s^2 and b1 both near float's eps, the
     // quartic's low coefficients b1^2 s^4 would fall below float's smallest normal.

@@ -45,6 +45,32 @@ template <class Real> Vec3<Real> accurate_cross(const Vec3<Real>& x, const Vec3<
                     difference_of_products(x.x(), y.y(), x.y(), y.x()));
 }
 
+// x - y as an unevaluated sum hi + lo, exactly (Knuth's TwoSum per component). A line's origin
+// far from a round's center (1e10 away for a radius of 1) loses eps |x| in x - y, far more
+// than the offset of the line from the center that the answer depends on.
+template <class Real> struct ExactDifference {
+  Vec3<Real> hi, lo;
+  ExactDifference(const Vec3<Real>& x, const Vec3<Real>& y) {
+    for (int i = 0; i < 3; ++i) {
+      hi[i] = x[i] - y[i];
+      const Real back = hi[i] - x[i];
+      lo[i] = (x[i] - (hi[i] - back)) - (y[i] + back);
+    }
+  }
+};
+
+// (x - y) cross d to about one rounding per component of the result, however far x lies from y
+// along d: the cross product of the rounded difference by accurate_cross, plus what the
+// difference's rounding contributes (small: plain arithmetic is accurate enough for it).
+template <class Real> Vec3<Real> offset_cross(const ExactDifference<Real>& x, const Vec3<Real>& d) {
+  return accurate_cross(x.hi, d) + x.lo.cross(d);
+}
+
+// (x - c) cross (y - c) the same way, for a segment through two far end points.
+template <class Real> Vec3<Real> offset_cross(const ExactDifference<Real>& x, const ExactDifference<Real>& y) {
+  return accurate_cross(x.hi, y.hi) + (x.hi.cross(y.lo) + x.lo.cross(y.hi));
+}
+
 // The piece in a round's local frame, re-anchored at its point closest to the round's center and
 // with a unit direction: P(tau) = anchor + tau * dir, and t = (tau + shift) / length. Anchoring
 // keeps the polynomial's variable small and its coefficients free of the along-line offset.
@@ -61,10 +87,10 @@ template <class Real> struct LocalLinear {
   // (through both end points for a segment) to one rounding per component, the anchor
   // d x w / |d|^2 is accurate relative to its own length.
   LocalLinear(const Linear<Real>& piece, const Round<Real>& round) {
-    const Vec3<Real> origin = piece.origin - round.center;
-    const Vec3<Real> m = round.frame.to_local(piece.direction);
-    length = m.norm();
-    if (!(length > 0)) {
+    const ExactDifference<Real> exact_origin(piece.origin, round.center);
+    const Vec3<Real>& origin = exact_origin.hi;
+    const Real largest = piece.direction.cwiseAbs().maxCoeff();
+    if (!(largest > 0)) {
       is_point = true;
       anchor_world = origin;
       dir_world.setZero();
@@ -73,16 +99,20 @@ template <class Real> struct LocalLinear {
       length = 1;
       return;
     }
-    dir = m / length;
-    // The direction scaled by a power of two (exact) to components of order 1: no overflow.
-    const int exponent = std::ilogb(piece.direction.cwiseAbs().maxCoeff());
+    // The direction scaled by a power of two (exact) to components of order 1: its squared
+    // length neither overflows (|d| = 1e200) nor underflows (1e-200); `length` is |d| itself.
+    const int exponent = std::ilogb(largest);
     const Vec3<Real> direction = piece.direction.unaryExpr([&](Real x) { return Real(std::ldexp(x, -exponent)); });
+    const Vec3<Real> m = round.frame.to_local(direction);
+    const Real scaled_length = m.norm();
+    length = std::ldexp(scaled_length, exponent);
+    dir = m / scaled_length;
     Vec3<Real> w;
     if (piece.has_end) {
-      w = accurate_cross(origin, Vec3<Real>(piece.end - round.center));
+      w = offset_cross(exact_origin, ExactDifference<Real>(piece.end, round.center));
       for (int i = 0; i < 3; ++i) w[i] = std::ldexp(w[i], -exponent);
     } else {
-      w = accurate_cross(origin, direction);
+      w = offset_cross(exact_origin, direction);
     }
     anchor_world = direction.cross(w) / direction.squaredNorm();
     dir_world = direction / direction.norm();

@@ -29,7 +29,31 @@ template <class Real> struct LinearPair {
 
 template <class Real> Real clamp_to(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
 
+// The piece with its direction scaled by a power of two (exact) to a largest component in
+// [1, 2), its parameter interval scaled inversely: the same points, P(s) = p + s u for s in the
+// returned interval, with s = ldexp(s', -exponent). Products of directions (|u|^2 |v|^2, and
+// |u x v|^2 of lines with |u| = 1e80) would otherwise overflow or underflow.
+template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& exponent) {
+  const Real largest = piece.direction.cwiseAbs().maxCoeff();
+  exponent = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+  Linear<Real> out = piece;
+  for (int i = 0; i < 3; ++i) out.direction[i] = std::ldexp(piece.direction[i], -exponent);
+  out.lo = std::ldexp(piece.lo, exponent);
+  out.hi = std::ldexp(piece.hi, exponent);
+  return out;
+}
+
+template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b);
+
 template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
+  int ea = 0, eb = 0;
+  LinearPair<Real> p = linear_pair_scaled(unit_scaled(a, ea), unit_scaled(b, eb));
+  p.s = std::ldexp(p.s, -ea);
+  p.t = std::ldexp(p.t, -eb);
+  return p;
+}
+
+template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b) {
   const Vec3<Real>& u = a.direction;
   const Vec3<Real>& v = b.direction;
   const Vec3<Real> w = a.origin - b.origin;

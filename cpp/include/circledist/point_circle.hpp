@@ -12,7 +12,7 @@ template <class Real> struct Query<Vec3<Real>, Circle3<Real>> {
   // Needs only the unit normal, not the full frame: height z and distance rho from the axis.
   template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Circle3<Real>& c) {
     const Vec3<Real> d = p - c.center;
-    const Vec3<Real> n = c.normal / c.normal.norm();
+    const Vec3<Real> n = unit_vector(c.normal);
     const Real z = n.dot(d);
     const Real rho = (d - z * n).norm();
     return length2d(z, rho - c.radius);

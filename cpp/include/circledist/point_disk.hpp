@@ -11,7 +11,7 @@ template <class Real> struct Query<Vec3<Real>, Disk3<Real>> {
 
   template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Disk3<Real>& disk) {
     const Vec3<Real> d = p - disk.center;
-    const Vec3<Real> n = disk.normal / disk.normal.norm();
+    const Vec3<Real> n = unit_vector(disk.normal);
     const Real z = n.dot(d);
     const Real rho = (d - z * n).norm();
     return rho <= disk.radius ? std::abs(z) : length2d(z, rho - disk.radius);

@@ -68,6 +68,19 @@ template <class Real> struct Result {
   }
 };
 
+// v / |v| for any finite nonzero v. |v|^2 overflows for |v| beyond about 1.3e154 (double) and
+// loses digits in the subnormals below about 1e-138: such vectors are first scaled by a power of
+// two (exact) to a largest component in [1, 2). The common case pays one comparison.
+template <class Real> CIRCLEDIST_INLINE Vec3<Real> unit_vector(const Vec3<Real>& v) {
+  constexpr Real eps = std::numeric_limits<Real>::epsilon();
+  constexpr Real tiny = std::numeric_limits<Real>::min() / (eps * eps);
+  const Real n2 = v.squaredNorm();
+  if (n2 > tiny && n2 < std::numeric_limits<Real>::max()) return v / std::sqrt(n2);
+  const int exponent = std::ilogb(v.cwiseAbs().maxCoeff());
+  const Vec3<Real> w(std::ldexp(v.x(), -exponent), std::ldexp(v.y(), -exponent), std::ldexp(v.z(), -exponent));
+  return w / w.norm();
+}
+
 // The right-handed orthonormal frame {U, V, N} of a circle or disk, built the same way everywhere
 // so that angles mean the same thing in C++ and Python:
 //   N = normal / |normal|;
@@ -76,7 +89,7 @@ template <class Real> struct Frame {
   Vec3<Real> u, v, n;
 
   explicit Frame(const Vec3<Real>& normal) {
-    n = normal / normal.norm();
+    n = unit_vector(normal);
     // The pair holds N.z and the larger of N.x, N.y, so the largest component of the unit N:
     // its squared length is at least 1/3 and needs no hypot against underflow.
     if (std::abs(n.x()) > std::abs(n.y())) {

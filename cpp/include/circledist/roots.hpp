@@ -24,6 +24,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <type_traits>
 
 namespace circledist {
 
@@ -31,6 +32,13 @@ namespace circledist {
 //   Newton: Newton steps on the exact squared distance, a bracketed search only where they fail;
 //   Bracketed: a bracketed (Brent) minimization of the exact distance around every candidate.
 enum class Polish { Newton, Bracketed };
+
+// Whether a policy returns every root to rounding (Roots::accurate_roots = true), so that a
+// candidate's start value tells how low it can lead (screening_margin, circle_circle.hpp).
+// Policies that do not say are taken as not accurate.
+template <class Roots, class = void> struct has_accurate_roots : std::false_type {};
+template <class Roots>
+struct has_accurate_roots<Roots, std::enable_if_t<Roots::accurate_roots>> : std::true_type {};
 
 // Degree 8 covers the line and circle queries (the circle-disk and circle-circle octics);
 // coefficients ascending. Curves need more: a Bezier curve of degree n against a circle gives
@@ -77,14 +85,15 @@ template <class Real> struct Intervals {
   }
 };
 
-// roots_in for the policies that find every root anyway: one solve, the roots inside kept.
+// roots_in for the policies that find every root anyway: one solve, every root kept. Their
+// roots of an ill-conditioned polynomial can err by more than the intervals are wide (a circle
+// 1e4 times larger than the disk it passes: roots 4e-5 apart in u, found 1e-4 off), so keeping
+// only the roots inside would drop the one that leads to the minimum; every root is a candidate
+// judged on the exact distance anyway, and the intervals are the Bracketing policy's saving.
 template <class Roots, class Real, int Capacity>
-void roots_kept_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
-  Candidates<Real, Capacity> all;
+void roots_kept_in(const Real* c, int degree, const Intervals<Real>&, Candidates<Real, Capacity>& out) {
   const Real inf = std::numeric_limits<Real>::infinity();
-  Roots::roots(c, degree, -inf, inf, all);
-  for (int i = 0; i < all.count; ++i)
-    if (intervals.contains(all.value[i])) out.push(all.value[i]);
+  Roots::roots(c, degree, -inf, inf, out);
 }
 
 // The degree after dropping leading coefficients that are rounding noise relative to the
@@ -250,20 +259,19 @@ struct EigenCompanion {
     roots_kept_in<EigenCompanion>(c, degree, intervals, out);
   }
 
-  // The near-real root closest to [lo, hi], clamped into it (the midpoint if there is none).
-  template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real) {
+  // A near-real root inside [lo, hi]. Where the eigenvalues put none there (a root at the
+  // bracket's end, 1e-17 from lo, computed a little outside it), the sign change the caller
+  // guarantees is searched by safeguarded Halley instead: a clamped or midpoint answer would be
+  // no root at all.
+  template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
     if (!(p_lo < 0)) return lo;
     Candidates<Real> all;
     roots(c, degree, lo, hi, all);
-    Real best = (lo + hi) / 2, gap = std::numeric_limits<Real>::infinity();
-    for (int i = 0; i < all.count; ++i) {
-      const Real x = std::min(std::max(all.value[i], lo), hi);
-      if (std::abs(x - all.value[i]) < gap) {
-        gap = std::abs(x - all.value[i]);
-        best = x;
-      }
-    }
-    return best;
+    for (int i = 0; i < all.count; ++i)
+      if (all.value[i] >= lo && all.value[i] <= hi) return all.value[i];
+    Real x = lo - p_lo * (hi - lo) / (p_hi - p_lo);
+    if (!(x > lo && x < hi)) x = lo;
+    return detail::halley_bisection(c, degree, lo, hi, p_lo, x, 2 * std::numeric_limits<Real>::epsilon(), Real(0));
   }
 };
 
@@ -475,15 +483,34 @@ Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Rea
   }
 }
 
+// Room for what isolate_roots returns at one level: the roots and the critical points where p
+// vanishes within rounding. In exact arithmetic that is at most 2n - 1 values, but rounding
+// noise (a polynomial dominated by one huge coefficient) can show more sign changes than roots.
+constexpr int kIsolateCapacity = 2 * kMaxCurveDegree + 8;
+
 // Appends the real roots of c (degree n >= 1, c[n] != 0) in [lo, hi] in increasing order, and
 // the critical points there at which p vanishes within rounding; roots to a relative accuracy
-// `rel_tol` (2 eps for the answer). The critical points only need sqrt(eps): an error delta in
-// one changes p there by p'' delta^2 / 2, within the rounding its sign test allows for.
-template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi, Real rel_tol, Real* out, int& count) {
+// `rel_tol` (2 eps for the answer) and an absolute one of rel_tol * min(1, (hi - lo) / 2): the
+// callers' variables are O(1) where roots cluster (a half angle, a line parameter in units of
+// the scene, a curve's [-1, 1]), and an interval widened by a root bound (up to 1e9 for a
+// nearly vanishing leading coefficient) must not widen the tolerance with it, or close roots
+// merge. The critical points only need sqrt(eps): an error delta in one changes p there by
+// p'' delta^2 / 2, within the rounding its sign test allows for. `out` holds `capacity` values;
+// false when more were found (noise): the caller then finds the roots another way.
+template <class Real>
+bool isolate_roots(const Real* c, int n, Real lo, Real hi, Real rel_tol, Real* out, int& count, int capacity) {
+  bool room = true;
+  const auto push = [&](Real x) {
+    if (count < capacity) {
+      out[count++] = x;
+    } else {
+      room = false;
+    }
+  };
   if (n == 1) {
     const Real x = -c[0] / c[1];
-    if (x >= lo && x <= hi) out[count++] = x;
-    return;
+    if (x >= lo && x <= hi) push(x);
+    return room;
   }
   if (n == 2) {
     // Closed form: the stable quadratic formula, or the vertex when p nearly touches zero there.
@@ -499,15 +526,15 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
       if (std::abs(horner(c, 2, vertex)) <= horner_error(c, 2, vertex)) r[k++] = vertex;
     }
     for (int i = 0; i < k; ++i)
-      if (r[i] >= lo && r[i] <= hi) out[count++] = r[i];
-    return;
+      if (r[i] >= lo && r[i] <= hi) push(r[i]);
+    return room;
   }
   Real dc[kMaxCurveDegree];
   for (int i = 0; i < n; ++i) dc[i] = (i + 1) * c[i + 1];
-  Real critical[2 * kMaxCurveDegree];
+  Real critical[kIsolateCapacity];
   int critical_count = 0;
   const Real coarse = std::sqrt(std::numeric_limits<Real>::epsilon());
-  isolate_roots(dc, n - 1, lo, hi, coarse, critical, critical_count);
+  if (!isolate_roots(dc, n - 1, lo, hi, coarse, critical, critical_count, kIsolateCapacity)) return false;
 
   // Where to start Newton in [a, b]. Next to a critical end c the false-position point sits
   // where p' is nearly 0, and the first Newton step flies far off (then the steps only halve the
@@ -528,24 +555,26 @@ template <class Real> void isolate_roots(const Real* c, int n, Real lo, Real hi,
     const Real x = a - pa * (b - a) / (pb - pa);
     return x > a && x < b ? x : (a + b) / 2;
   };
+  const Real abs_tol = rel_tol * std::min(Real(1), (hi - lo) / 2);
   Real error = 0;
   Real a = lo, pa = value_with_error(c, n, lo, error);
-  if (pa == 0) out[count++] = lo;
+  if (pa == 0) push(lo);
   for (int k = 0; k <= critical_count; ++k) {
     const Real b = k < critical_count ? critical[k] : hi;
     const Real pb = value_with_error(c, n, b, error);
     if ((pa < 0 && pb > 0) || (pa > 0 && pb < 0)) {
       const Real x = start(a, b, pa, pb, k > 0, k < critical_count);
-      out[count++] = halley_bisection(c, n, a, b, pa, x, rel_tol, rel_tol * (hi - lo) / 2);
+      push(halley_bisection(c, n, a, b, pa, x, rel_tol, abs_tol));
     }
     if (k < critical_count && std::abs(pb) <= error) {
-      if (count == 0 || out[count - 1] != b) out[count++] = b;
+      if (count == 0 || out[count - 1] != b) push(b);
     } else if (pb == 0 && k == critical_count) {
-      out[count++] = b;
+      push(b);
     }
     a = b;
     pa = pb;
   }
+  return room;
 }
 
 // Fujiwara's bound, 2 max |c_i / c_n|^(1 / (n - i)) (the i = 0 term halved), rounded up to a
@@ -571,6 +600,8 @@ template <class Real> Real root_bound(const Real* c, int n) {
 // p vanishes within rounding: such critical points are kept, so a double root is never missed.
 struct Bracketing {
   static constexpr Polish polish = Polish::Newton;
+  // Every root to rounding (a relative 2 eps): candidates can be screened by their start values.
+  static constexpr bool accurate_roots = true;
 
   template <class Real, int Capacity>
   static void roots(const Real* coefficients, int degree, Real lo, Real hi, Candidates<Real, Capacity>& out) {
@@ -581,10 +612,19 @@ struct Bracketing {
       lo = std::max(lo, -bound);
       hi = std::min(hi, bound);
     }
-    Real found[2 * kMaxCurveDegree];
+    Real found[detail::kIsolateCapacity];
     int count = 0;
-    detail::isolate_roots(coefficients, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count);
-    for (int i = 0; i < count; ++i) out.push(found[i]);
+    if (detail::isolate_roots(coefficients, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count,
+                              detail::kIsolateCapacity)) {
+      for (int i = 0; i < count; ++i) out.push(found[i]);
+      return;
+    }
+    // More sign changes than a polynomial of this degree has roots: rounding noise. The
+    // companion matrix finds every root however noisy the values; its roots are clamped into
+    // [lo, hi] (candidates, judged on the exact distance afterwards).
+    Candidates<Real, Capacity> all;
+    EigenCompanion::roots(coefficients, degree, lo, hi, all);
+    for (int i = 0; i < all.count; ++i) out.push(std::min(std::max(all.value[i], lo), hi));
   }
 
   // Each piece is searched on its own: the derivative chain only has its critical points there.
