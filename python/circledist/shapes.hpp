@@ -125,7 +125,8 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
       if (!std::isfinite(e[k]))
         throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " contains NaN or inf");
     }
-    if (check == Check::NonzeroVector && !(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > 0))
+    // Any nonzero component (a squared length would underflow for |v| = 1e-200).
+    if (check == Check::NonzeroVector && e[0] == 0 && e[1] == 0 && e[2] == 0)
       throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " has zero length");
     if (check == Check::NonNegative && e[0] < 0)
       throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " is negative");

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <type_traits>
+#include <vector>
 
 namespace circledist {
 
@@ -39,6 +40,22 @@ template <class Real> struct BezierCurve3 {
     return q[0];
   }
 };
+
+// As for the other primitives (primitives.hpp): the curve scaled by 2^e, its largest
+// coordinate, and the same curve in double.
+template <class Real> BezierCurve3<Real> scaled(const BezierCurve3<Real>& b, int e) {
+  BezierCurve3<Real> out = b;
+  for (int i = 0; i < int(b.control.cols()); ++i) out.control.col(i) = detail::ldexp3(Vec3<Real>(b.control.col(i)), e);
+  return out;
+}
+template <class Real> Real extent(const BezierCurve3<Real>& b) {
+  return b.control.cols() > 0 ? b.control.cwiseAbs().maxCoeff() : Real(0);
+}
+template <class Real, if_float<Real> = 0> BezierCurve3<double> promoted(const BezierCurve3<Real>& b) {
+  BezierCurve3<double> out;
+  out.control = b.control.template cast<double>();
+  return out;
+}
 
 // A polynomial of degree <= kMaxCurveDegree, coefficients ascending.
 template <class Real> struct CurvePoly {
@@ -282,10 +299,12 @@ template <class Real> struct CurveRoundBase {
   template <class DistanceOf, class SolvePiece>
   static Found solve_pieces(const LocalBezier<Real>& c, Real radius, Real scale, const DistanceOf& distance_of,
                             const SolvePiece& solve_piece) {
-    constexpr int kPieceRatio = 4, kMaxDepth = 64, kMaxPieces = 64;
+    // Halving stops where t no longer splits (about 1075 levels next to t = 0: a control point
+    // 1e300 times farther than the round is reached in about 1000). At most 64 pieces are
+    // solved; past that every remaining piece is solved as it is.
+    constexpr int kPieceRatio = 4, kMaxPieces = 64;
     struct Span {
       Real t0, t1;
-      int depth;
     };
     const auto ball = [](const LocalBezier<Real>& p, Vec3<Real>& center) {
       Vec3<Real> lo = p.q[0], hi = p.q[0];
@@ -303,21 +322,20 @@ template <class Real> struct CurveRoundBase {
     if (!(whole > kPieceRatio * std::max(radius, distance_of(center) - whole))) return solve_piece(c, scale, 0, 1);
     Found out;
     Real upper = std::min(distance_of(c.q[0]), distance_of(c.q[c.n]));
-    std::array<Span, 2 * kMaxDepth + 2> stack;
-    int top = 0, pieces = 0;
-    stack[top++] = {Real(0), Real(1), 0};
-    while (top > 0) {
-      const Span span = stack[--top];
+    std::vector<Span> stack{{Real(0), Real(1)}};  // on the heap: deep for extreme curves only
+    int pieces = 0;
+    while (!stack.empty()) {
+      const Span span = stack.back();
+      stack.pop_back();
       const LocalBezier<Real> piece = c.piece(span.t0, span.t1);
       const Real r = ball(piece, center);
       const Real lower = distance_of(center) - r;
       if (lower > upper + tie_tolerance(std::max(scale, upper))) continue;
       upper = std::min(upper, std::min(distance_of(piece.q[0]), distance_of(piece.q[piece.n])));
       const Real mid = (span.t0 + span.t1) / 2;
-      if (r > kPieceRatio * std::max(radius, lower) && span.depth < kMaxDepth && pieces + top < kMaxPieces &&
-          mid > span.t0 && mid < span.t1) {
-        stack[top++] = {mid, span.t1, span.depth + 1};
-        stack[top++] = {span.t0, mid, span.depth + 1};
+      if (r > kPieceRatio * std::max(radius, lower) && pieces < kMaxPieces && mid > span.t0 && mid < span.t1) {
+        stack.push_back({mid, span.t1});
+        stack.push_back({span.t0, mid});
         continue;
       }
       ++pieces;

@@ -61,14 +61,6 @@ template <class Real> struct LineRingMinimum {
   bool on_axis = false;  // a line along the axis: every ring point is closest
 };
 
-namespace detail {
-template <class Real> constexpr Real power_of_two(int exponent) {
-  Real x = 1;
-  for (int i = 0; i < exponent; ++i) x *= 2;
-  return x;
-}
-}  // namespace detail
-
 // False when the line is too extreme for the direct method (a zero or huge direction, a zero
 // radius, non-finite input): LinearCircleQuery then answers.
 template <class Roots, class Real>

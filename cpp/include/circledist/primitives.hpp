@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 // The closed-form point queries are a few dozen instructions: inlined into a caller's loop, the
 // latencies of consecutive queries overlap (a call per query costs about 10 % of one).
@@ -60,6 +61,18 @@ template <class Real> struct Result {
   Vec2<Real> param_a = Vec2<Real>::Zero(), param_b = Vec2<Real>::Zero();
   bool unique = true;
 
+  // The same result in another precision (a float query computed in double).
+  template <class To> Result<To> cast() const {
+    Result<To> r;
+    r.distance = To(distance);
+    r.point_a = point_a.template cast<To>();
+    r.point_b = point_b.template cast<To>();
+    r.param_a = param_a.template cast<To>();
+    r.param_b = param_b.template cast<To>();
+    r.unique = unique;
+    return r;
+  }
+
   Result swapped() const {
     Result r = *this;
     std::swap(r.point_a, r.point_b);
@@ -67,6 +80,72 @@ template <class Real> struct Result {
     return r;
   }
 };
+
+// Whole queries scaled by a power of two (exact): every length times 2^e, directions too, so that
+// line parameters and angles keep their values (query.hpp rescales scenes whose coordinates
+// square past overflow or into the subnormals). extent() is the largest coordinate or length a
+// shape holds (directions and normals aside: their scale is handled where they are normalized).
+namespace detail {
+template <class Real> Vec3<Real> ldexp3(const Vec3<Real>& v, int e) {
+  return Vec3<Real>(std::ldexp(v.x(), e), std::ldexp(v.y(), e), std::ldexp(v.z(), e));
+}
+template <class Real> constexpr Real power_of_two(int exponent) {
+  Real x = 1;
+  for (int i = 0; i < (exponent < 0 ? -exponent : exponent); ++i) x = exponent < 0 ? x / 2 : x * 2;
+  return x;
+}
+}  // namespace detail
+
+template <class Real> Vec3<Real> scaled(const Vec3<Real>& p, int e) { return detail::ldexp3(p, e); }
+template <class Real> Line3<Real> scaled(const Line3<Real>& l, int e) {
+  return {detail::ldexp3(l.origin, e), detail::ldexp3(l.direction, e)};
+}
+template <class Real> Ray3<Real> scaled(const Ray3<Real>& r, int e) {
+  return {detail::ldexp3(r.origin, e), detail::ldexp3(r.direction, e)};
+}
+template <class Real> Segment3<Real> scaled(const Segment3<Real>& s, int e) {
+  return {detail::ldexp3(s.p0, e), detail::ldexp3(s.p1, e)};
+}
+template <class Real> Circle3<Real> scaled(const Circle3<Real>& c, int e) {
+  return {detail::ldexp3(c.center, e), c.normal, std::ldexp(c.radius, e)};
+}
+template <class Real> Disk3<Real> scaled(const Disk3<Real>& d, int e) {
+  return {detail::ldexp3(d.center, e), d.normal, std::ldexp(d.radius, e)};
+}
+template <class Real> Real extent(const Vec3<Real>& p) { return p.cwiseAbs().maxCoeff(); }
+template <class Real> Real extent(const Line3<Real>& l) { return extent(l.origin); }
+template <class Real> Real extent(const Ray3<Real>& r) { return extent(r.origin); }
+template <class Real> Real extent(const Segment3<Real>& s) { return std::max(extent(s.p0), extent(s.p1)); }
+template <class Real> Real extent(const Circle3<Real>& c) { return std::max(extent(c.center), c.radius); }
+template <class Real> Real extent(const Disk3<Real>& d) { return std::max(extent(d.center), d.radius); }
+// A disk's parameter s is a length; the others (t, angles) do not change with the scale.
+template <class Real, class Shape> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Shape&, int) { return param; }
+template <class Real> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Disk3<Real>&, int e) {
+  return Vec2<Real>(std::ldexp(param.x(), -e), param.y());
+}
+
+// float queries are computed in double and rounded (query.hpp): float's 24 bits cannot hold
+// the cancellations of tangencies (a circle-circle answer was off by 0.32), nor the squares of
+// coordinates past 1.8e19. promoted() is the same shape in double, exactly.
+// Templates deduced from the argument (no conversions: an Eigen vector of double would convert
+// to one of float), enabled for float only.
+template <class Real> using if_float = std::enable_if_t<std::is_same<Real, float>::value, int>;
+template <class Real, if_float<Real> = 0> Vec3<double> promoted(const Vec3<Real>& p) { return p.template cast<double>(); }
+template <class Real, if_float<Real> = 0> Line3<double> promoted(const Line3<Real>& l) {
+  return {promoted(l.origin), promoted(l.direction)};
+}
+template <class Real, if_float<Real> = 0> Ray3<double> promoted(const Ray3<Real>& r) {
+  return {promoted(r.origin), promoted(r.direction)};
+}
+template <class Real, if_float<Real> = 0> Segment3<double> promoted(const Segment3<Real>& s) {
+  return {promoted(s.p0), promoted(s.p1)};
+}
+template <class Real, if_float<Real> = 0> Circle3<double> promoted(const Circle3<Real>& c) {
+  return {promoted(c.center), promoted(c.normal), double(c.radius)};
+}
+template <class Real, if_float<Real> = 0> Disk3<double> promoted(const Disk3<Real>& d) {
+  return {promoted(d.center), promoted(d.normal), double(d.radius)};
+}
 
 // v / |v| for any finite nonzero v. |v|^2 overflows for |v| beyond about 1.3e154 (double) and
 // loses digits in the subnormals below about 1e-138: such vectors are first scaled by a power of

@@ -5,6 +5,9 @@
 #include "primitives.hpp"
 #include "roots.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace circledist {
@@ -16,9 +19,9 @@ template <class A, class B, class Enable = void> struct Query {
 template <class A, class B> constexpr bool has_query_v = Query<A, B>::defined;
 template <class A, class B> constexpr bool has_symmetric_query_v = has_query_v<A, B> || has_query_v<B, A>;
 
-// The distance only: no closest points are built.
-template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto distance(const A& a, const B& b) {
-  static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
+namespace detail {
+
+template <class Roots, class A, class B> CIRCLEDIST_INLINE auto direct_distance(const A& a, const B& b) {
   if constexpr (has_query_v<A, B>) {
     return Query<A, B>::template distance<Roots>(a, b);
   } else {
@@ -26,13 +29,92 @@ template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto d
   }
 }
 
-// Distance, closest points on a and b, their parameters and the `unique` flag.
-template <class Roots = DefaultRoots, class A, class B> auto closest_points(const A& a, const B& b) {
-  static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
+template <class Roots, class A, class B> auto direct_closest_points(const A& a, const B& b) {
   if constexpr (has_query_v<A, B>) {
     return Query<A, B>::template closest<Roots>(a, b);
   } else {
     return Query<B, A>::template closest<Roots>(b, a).swapped();
+  }
+}
+
+// Shapes the front end can promote to double (float primitives) and scale (every primitive):
+// found by argument-dependent lookup where the shape is defined (primitives.hpp, bezier.hpp).
+template <class A, class = void> struct promotable : std::false_type {};
+template <class A> struct promotable<A, std::void_t<decltype(promoted(std::declval<const A&>()))>> : std::true_type {};
+template <class A, class = void> struct scalable : std::false_type {};
+template <class A>
+struct scalable<A, std::void_t<decltype(scaled(std::declval<const A&>(), 0)), decltype(extent(std::declval<const A&>()))>>
+    : std::true_type {};
+
+// Distances between 2^(min_exponent / 4) and 2^(max_exponent / 4) (1e-77 .. 1e77 in double) are
+// trusted as computed: the solvers square coordinates and differences of coordinates (and the
+// octics their fourth powers in units of the scene), which neither overflows nor reaches the
+// subnormals there. Outside it (inf or NaN from an overflow, 0 from an underflow, or simply a
+// huge or tiny answer) the scene's own size decides: a scene out of that range is scaled by a
+// power of two to a largest coordinate in [1, 2), solved, and scaled back, as hypot does.
+template <class Real> CIRCLEDIST_INLINE bool moderate(Real x) {
+  constexpr Real lo = power_of_two<Real>(std::numeric_limits<Real>::min_exponent / 4);
+  constexpr Real hi = power_of_two<Real>(std::numeric_limits<Real>::max_exponent / 4);
+  return x > lo && x < hi;
+}
+
+// The exponent to scale a and b by, or 0 when their coordinates are moderate already.
+template <class A, class B> int scene_exponent(const A& a, const B& b) {
+  const auto largest = std::max(extent(a), extent(b));
+  if (!(largest > 0) || !(largest < std::numeric_limits<decltype(largest)>::infinity()) || moderate(largest)) return 0;
+  return -std::ilogb(largest);
+}
+
+// direct_distance, checked for range (`moderate`) and recomputed on the scaled scene.
+template <class Roots, class A, class B> CIRCLEDIST_INLINE auto ranged_distance(const A& a, const B& b) {
+  const auto d = direct_distance<Roots>(a, b);
+  if constexpr (scalable<A>::value && scalable<B>::value) {
+    if (!moderate(d)) {
+      const int e = scene_exponent(a, b);
+      if (e != 0) return std::ldexp(direct_distance<Roots>(scaled(a, e), scaled(b, e)), -e);
+    }
+  }
+  return d;
+}
+
+template <class Roots, class A, class B> auto ranged_closest_points(const A& a, const B& b) {
+  auto r = direct_closest_points<Roots>(a, b);
+  if constexpr (scalable<A>::value && scalable<B>::value) {
+    if (!moderate(r.distance)) {
+      const int e = scene_exponent(a, b);
+      if (e != 0) {
+        r = direct_closest_points<Roots>(scaled(a, e), scaled(b, e));
+        r.distance = std::ldexp(r.distance, -e);
+        r.point_a = ldexp3(r.point_a, -e);
+        r.point_b = ldexp3(r.point_b, -e);
+        r.param_a = unscaled_param(r.param_a, a, e);
+        r.param_b = unscaled_param(r.param_b, b, e);
+      }
+    }
+  }
+  return r;
+}
+
+}  // namespace detail
+
+// The distance only: no closest points are built. float shapes are solved in double and the
+// answer rounded (primitives.hpp, promoted()).
+template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto distance(const A& a, const B& b) {
+  static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
+  if constexpr (detail::promotable<A>::value && detail::promotable<B>::value) {
+    return float(detail::ranged_distance<Roots>(promoted(a), promoted(b)));
+  } else {
+    return detail::ranged_distance<Roots>(a, b);
+  }
+}
+
+// Distance, closest points on a and b, their parameters and the `unique` flag.
+template <class Roots = DefaultRoots, class A, class B> auto closest_points(const A& a, const B& b) {
+  static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
+  if constexpr (detail::promotable<A>::value && detail::promotable<B>::value) {
+    return detail::ranged_closest_points<Roots>(promoted(a), promoted(b)).template cast<float>();
+  } else {
+    return detail::ranged_closest_points<Roots>(a, b);
   }
 }
 
