@@ -46,6 +46,12 @@ template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& e
 template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b);
 
 template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
+  // Directions with components within 2^(+-max_exponent / 5) need no scaling: the products of
+  // four of them stay off overflow and the subnormals (the common case pays two comparisons).
+  constexpr Real lo = detail::power_of_two<Real>(std::numeric_limits<Real>::min_exponent / 5);
+  constexpr Real hi = detail::power_of_two<Real>(std::numeric_limits<Real>::max_exponent / 5);
+  const Real largest_a = a.direction.cwiseAbs().maxCoeff(), largest_b = b.direction.cwiseAbs().maxCoeff();
+  if (largest_a >= lo && largest_a <= hi && largest_b >= lo && largest_b <= hi) return linear_pair_scaled(a, b);
   int ea = 0, eb = 0;
   LinearPair<Real> p = linear_pair_scaled(unit_scaled(a, ea), unit_scaled(b, eb));
   p.s = std::ldexp(p.s, -ea);

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -150,14 +152,42 @@ template <class Real, if_float<Real> = 0> Disk3<double> promoted(const Disk3<Rea
 // v / |v| for any finite nonzero v. |v|^2 overflows for |v| beyond about 1.3e154 (double) and
 // loses digits in the subnormals below about 1e-138: such vectors are first scaled by a power of
 // two (exact) to a largest component in [1, 2). The common case pays one comparison.
+namespace detail {
+// The rare path, kept out of line so that the common one stays a few instructions.
+template <class Real>
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, cold))
+#endif
+Vec3<Real> unit_vector_scaled(const Vec3<Real>& v) {
+  const int exponent = std::ilogb(v.cwiseAbs().maxCoeff());
+  const Vec3<Real> w(std::ldexp(v.x(), -exponent), std::ldexp(v.y(), -exponent), std::ldexp(v.z(), -exponent));
+  return w / w.norm();
+}
+}  // namespace detail
+
+namespace detail {
+// lo < x < hi for 0 < lo < hi: one unsigned comparison of the bit patterns for double (positive
+// doubles order as their bits; negative values, inf and NaN fall outside), two comparisons for
+// the other types. The check sits on the hottest paths (every point query normalizes a normal).
+template <class Real> CIRCLEDIST_INLINE bool strictly_between(Real x, Real lo, Real hi) {
+  if constexpr (std::is_same<Real, double>::value) {
+    std::uint64_t bx, blo, bhi;
+    std::memcpy(&bx, &x, 8);
+    std::memcpy(&blo, &lo, 8);
+    std::memcpy(&bhi, &hi, 8);
+    return bx - blo - 1 < bhi - blo - 1;
+  } else {
+    return x > lo && x < hi;
+  }
+}
+}  // namespace detail
+
 template <class Real> CIRCLEDIST_INLINE Vec3<Real> unit_vector(const Vec3<Real>& v) {
   constexpr Real eps = std::numeric_limits<Real>::epsilon();
   constexpr Real tiny = std::numeric_limits<Real>::min() / (eps * eps);
   const Real n2 = v.squaredNorm();
-  if (n2 > tiny && n2 < std::numeric_limits<Real>::max()) return v / std::sqrt(n2);
-  const int exponent = std::ilogb(v.cwiseAbs().maxCoeff());
-  const Vec3<Real> w(std::ldexp(v.x(), -exponent), std::ldexp(v.y(), -exponent), std::ldexp(v.z(), -exponent));
-  return w / w.norm();
+  if (detail::strictly_between(n2, tiny, std::numeric_limits<Real>::max())) return v / std::sqrt(n2);
+  return detail::unit_vector_scaled(v);
 }
 
 // The right-handed orthonormal frame {U, V, N} of a circle or disk, built the same way everywhere

@@ -55,7 +55,7 @@ struct scalable<A, std::void_t<decltype(scaled(std::declval<const A&>(), 0)), de
 template <class Real> CIRCLEDIST_INLINE bool moderate(Real x) {
   constexpr Real lo = power_of_two<Real>(std::numeric_limits<Real>::min_exponent / 4);
   constexpr Real hi = power_of_two<Real>(std::numeric_limits<Real>::max_exponent / 4);
-  return x > lo && x < hi;
+  return strictly_between(x, lo, hi);
 }
 
 // The exponent to scale a and b by, or 0 when their coordinates are moderate already.
@@ -65,14 +65,22 @@ template <class A, class B> int scene_exponent(const A& a, const B& b) {
   return -std::ilogb(largest);
 }
 
+// The distance of the scene scaled when its size asks for it (else d, as computed): out of line,
+// so that the common path of ranged_distance stays one comparison.
+template <class Roots, class A, class B, class Real>
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, cold))
+#endif
+Real rescaled_distance(const A& a, const B& b, Real d) {
+  const int e = scene_exponent(a, b);
+  return e != 0 ? Real(std::ldexp(direct_distance<Roots>(scaled(a, e), scaled(b, e)), -e)) : d;
+}
+
 // direct_distance, checked for range (`moderate`) and recomputed on the scaled scene.
 template <class Roots, class A, class B> CIRCLEDIST_INLINE auto ranged_distance(const A& a, const B& b) {
   const auto d = direct_distance<Roots>(a, b);
   if constexpr (scalable<A>::value && scalable<B>::value) {
-    if (!moderate(d)) {
-      const int e = scene_exponent(a, b);
-      if (e != 0) return std::ldexp(direct_distance<Roots>(scaled(a, e), scaled(b, e)), -e);
-    }
+    if (!moderate(d)) return rescaled_distance<Roots>(a, b, d);
   }
   return d;
 }
