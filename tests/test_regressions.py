@@ -23,7 +23,7 @@ import reference_round as R
 
 cd = pytest.importorskip("circledist")
 
-SOLVERS = ("bracketing", "companion", "polished")
+SOLVERS = ("bracketing", "companion", "polished", "eigen")
 BARS = {"float64": 1e-12, "longdouble": 1e-15}
 EPS = np.finfo(np.float64).eps
 LINEAR = ("point", "line", "ray", "segment")
@@ -231,3 +231,40 @@ def test_regression_case_float32(case, solver):
         assert abs(float(d) - truth) <= bar, (name, float(d), truth)
         r = cd.closest_points(x, y, solver=solver)
         assert abs(float(r.distance) - truth) <= bar, (name, float(r.distance), truth)
+
+
+# Issue 14 class 10: np.longdouble inputs are not rounded to float64. The differences below are
+# 2^-60 relative, far under float64's resolution: a float64 copy of the inputs answers 0.
+LD = np.longdouble
+WIDE = np.finfo(np.longdouble).nmant > np.finfo(np.float64).nmant
+needs_wide = pytest.mark.skipif(not WIDE, reason="np.longdouble is float64 on this platform")
+
+
+@needs_wide
+def test_longdouble_inputs_are_not_rounded():
+    tiny = LD(2) ** -60
+    a = cd.Point(np.array([0, 0, 1], dtype=LD) + np.array([0, 0, tiny], dtype=LD))
+    b = cd.Point(np.array([0, 0, 1], dtype=LD))
+    assert a.p.dtype == np.longdouble and a.p[2] == LD(1) + tiny  # kept as given
+    d = cd.distance(a, b)  # precision=None follows the inputs: long double
+    assert isinstance(d, np.longdouble) and d == tiny
+    assert cd.distance(a, b, precision="float64") == 0.0  # float64 reads the float64 copy
+    r = cd.closest_points(a, b)
+    assert r.distance == tiny and r.point_a.dtype == np.longdouble
+
+
+@needs_wide
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_longdouble_inputs_circle_gap(solver):
+    # Two coplanar concentric circles whose radii differ by 2^-60: the gap is the difference.
+    gap = LD(2) ** -60
+    inner = cd.Circle(np.zeros(3, dtype=LD), np.array([0, 0, 1], dtype=LD), LD(1))
+    outer = cd.Circle(np.zeros(3, dtype=LD), np.array([0, 0, 1], dtype=LD), LD(1) + gap)
+    for x, y in ((inner, outer), (outer, inner)):
+        d = cd.distance(x, y, solver=solver)
+        assert isinstance(d, np.longdouble)
+        assert abs(d - gap) <= 1e-15 * gap
+        # a batch of long double shapes reads the same values
+        batch = cd.Circle(np.zeros((2, 3), dtype=LD), np.array([0, 0, 1], dtype=LD), np.array([LD(1), LD(1) + gap]))
+        expected = [cd.distance(inner, inner, solver=solver), cd.distance(outer, inner, solver=solver)]
+        assert np.array_equal(cd.distance(batch, inner, solver=solver), np.array(expected, dtype=LD))

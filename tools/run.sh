@@ -3,6 +3,8 @@
 #   bash tools/run.sh demo   install what is missing, build the package, run the demo
 #   bash tools/run.sh test   install what is missing, build the package, run pytest and the C++ tests (ctest)
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
+#   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
+#                            mode over N cases (default 10^7; docs/fuzz_report.json)
 # Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
 # from apt when missing; Python packages go into ./.venv (which sees the system's site-packages).
 set -euo pipefail
@@ -41,6 +43,7 @@ case "$task" in
   demo) have matplotlib || need+=(matplotlib) ;;
   test) for req in pytest:pytest hypothesis:hypothesis mpmath:mpmath matplotlib:matplotlib; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
   bench) for req in mpmath:mpmath matplotlib:matplotlib distance3d:distance3d; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
+  fuzz) ;;
 esac
 [ ${#need[@]} -eq 0 ] || { echo "== installing from PyPI: ${need[*]}"; pip_install "${need[@]}"; }
 
@@ -63,7 +66,16 @@ case "$task" in
     echo "== C++ tests (ctest)"
     cpp_build
     ctest --test-dir build/cpp --output-on-failure || status=1
+    echo "== C++ tests under AddressSanitizer and UndefinedBehaviorSanitizer"
+    cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCIRCLEDIST_BUILD_TESTS=ON \
+      -DCMAKE_CXX_FLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" >/dev/null
+    cmake --build build/sanitize -j 2
+    timeout 600 ctest --test-dir build/sanitize -E consumer --output-on-failure || status=1
     exit $status
+    ;;
+  fuzz)
+    "$py" tools/fuzz_crash.py --cases "${2:-10000000}" --chunk 200000 --batched --timeout 1800 \
+      --report docs/fuzz_report.json
     ;;
   bench)
     cpp_build -DCIRCLEDIST_BUILD_BENCH=ON
@@ -74,7 +86,7 @@ case "$task" in
     "$py" bench/figures.py                # docs/line_disk.png
     ;;
   *)
-    echo "usage: bash tools/run.sh demo|test|bench" >&2
+    echo "usage: bash tools/run.sh demo|test|bench|fuzz [N]" >&2
     exit 2
     ;;
 esac

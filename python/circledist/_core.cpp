@@ -23,9 +23,10 @@ const PairTables& pairs() {
   return tables;
 }
 
-// precision=None computes in float when every input field was float32, else in double.
+// precision=None follows NumPy's promotion of the inputs: long double when any field was given as
+// np.longdouble, float when every one was float32, double otherwise.
 int precision_of(const py::object& name, const Shape& a, const Shape& b) {
-  if (name.is_none()) return a.single() && b.single() ? kFloat : kDouble;
+  if (name.is_none()) return a.wide() || b.wide() ? kLongDouble : a.single() && b.single() ? kFloat : kDouble;
   const std::string s = py::str(name);
   if (s == "float32" || s == "float") return kFloat;
   if (s == "float64" || s == "double") return kDouble;
@@ -39,8 +40,10 @@ int solver_of(const py::object& name) {
   if (s == "companion") return kCompanion;
   if (s == "polished") return kPolished;
   if (s == "bracketing") return kBracketing;
+  if (s == "eigen") return kEigen;
   if (s == "default") return pairs().default_solver;
-  throw py::value_error("solver must be None, 'default', 'companion', 'polished' or 'bracketing', got '" + s + "'");
+  throw py::value_error("solver must be None, 'default', 'companion', 'polished', 'bracketing' or 'eigen', got '" + s +
+                        "'");
 }
 
 // A shape argument: a Shape object, or an array-like of points.
@@ -82,8 +85,8 @@ template <int K, size_t... I> void bind_shape(py::module_& m, const char* doc, s
                                   sweep_field(kind_name(K), sweep)});
           }),
           py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none());
-  (cls.def_property_readonly(spec[I].name, [](const Shape& s) { return s.fields[I].array; }), ...);
-  cls.def_property_readonly(kSweepField.name, [](const Shape& s) { return s.fields.back().array; },
+  (cls.def_property_readonly(spec[I].name, [](const Shape& s) { return s.fields[I].value(); }), ...);
+  cls.def_property_readonly(kSweepField.name, [](const Shape& s) { return s.fields.back().value(); },
                             "Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).");
 }
 
@@ -98,7 +101,7 @@ std::string repr(const Shape& s) {
   for (size_t i = 0; i < s.fields.size(); ++i) {
     const Field& f = s.fields[i];
     if (i + 1 == s.fields.size() && *f.data() == 0) break;  // the default sweep is not shown
-    out += std::string(i ? ", " : "") + f.name + "=" + py::repr(f.array).cast<std::string>();
+    out += std::string(i ? ", " : "") + f.name + "=" + py::repr(f.value()).cast<std::string>();
   }
   return out + ")";
 }

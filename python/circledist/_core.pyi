@@ -7,7 +7,7 @@ import numpy.typing as npt
 
 ArrayLike = npt.ArrayLike
 Precision = Optional[Literal["float32", "float64", "longdouble"]]
-Solver = Optional[Literal["default", "companion", "polished", "bracketing"]]
+Solver = Optional[Literal["default", "companion", "polished", "bracketing", "eigen"]]
 
 class Shape:
     @property

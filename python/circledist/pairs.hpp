@@ -22,10 +22,11 @@ namespace circledist::python {
 
 constexpr int kMaxFields = 12;  // two shapes of up to 5 fields (with the sweep), and a limit
 
-// Offsets (in doubles) of every field of both shapes for each element of the broadcast batch.
-// Fields that are full-size in the result's layout or constant step linearly (the fast path);
-// others (e.g. (N, 1) against (M,)) walk an odometer.
-class Broadcast {
+// Offsets (in values of the storage type T: double, or long double for long-double queries) of
+// every field of both shapes for each element of the broadcast batch. Fields that are full-size
+// in the result's layout or constant step linearly (the fast path); others (e.g. (N, 1) against
+// (M,)) walk an odometer.
+template <class T> class Broadcast {
  public:
   BatchShape shape;
   Index size = 1;
@@ -52,7 +53,7 @@ class Broadcast {
 
   // Calls fn(flat_index, field_pointers) for every element.
   template <class Fn> void for_each(Fn&& fn) const {
-    std::array<const double*, kMaxFields> ptr{};
+    std::array<const T*, kMaxFields> ptr{};
     if (linear_) {
       // The field count as a constant: the pointers stay in registers and advance by a fixed
       // step (most of the loop's own cost on the point queries).
@@ -88,7 +89,7 @@ class Broadcast {
 
  private:
   template <int N, class Fn> void linear_loop(Fn& fn) const {
-    std::array<const double*, N> ptr{};
+    std::array<const T*, N> ptr{};
     std::array<Index, N> step{};
     for (int f = 0; f < N; ++f) ptr[f] = base_[f], step[f] = step_[f];
     for (Index i = 0; i < size; ++i) {
@@ -99,7 +100,7 @@ class Broadcast {
 
   int count_ = 0;
   bool linear_ = true;
-  std::array<const double*, kMaxFields> base_{};
+  std::array<const T*, kMaxFields> base_{};
   std::array<Index, kMaxFields> step_{};
   std::array<std::vector<Index>, kMaxFields> stride_;
 
@@ -107,7 +108,7 @@ class Broadcast {
     const size_t nd = shape.size();
     for (const Field& field : s.fields) {
       const int f = count_++;
-      base_[f] = field.data();
+      base_[f] = field.template data_as<T>();
       std::vector<Index>& st = stride_[f];
       st.assign(nd, 0);
       Index step = field.width;
@@ -151,8 +152,14 @@ template <class Real> py::object scalar(Real value) {
   }
 }
 
+// The values a query of precision Real reads: float64 for float and double (a float query
+// reads float32 inputs exactly from their float64 copies), long double for long double.
+template <class Real> using Storage = std::conditional_t<std::is_same_v<Real, long double>, long double, double>;
+
 // Evaluation of one ordered pair of C++ primitive types (of scalar Real) with one root policy.
 template <class Roots, class A, class B, class Real> struct PairOf {
+  using T = Storage<Real>;
+  using Broadcast = circledist::python::Broadcast<T>;
   // Where each shape's fields sit among an element's field pointers, read once per call: the
   // per-element work is then only the loads (no vector sizes in the loop).
   struct Layout {
@@ -165,13 +172,22 @@ template <class Roots, class A, class B, class Real> struct PairOf {
 
     // The C++ primitives of one element, swept by each shape's last field (sweep.hpp: a sweep of
     // 0 gives the core's results bit for bit); `points` is each shape's Bezier control point count.
-    Swept<A> first(const double* const* f) const { return {first_core(f), Real(*f[b_at - 1])}; }
-    Swept<B> second(const double* const* f) const { return {second_core(f), Real(*f[limit_at - 1])}; }
+    Swept<A> first(const T* const* f) const { return {first_core(f), Real(*f[b_at - 1])}; }
+    Swept<B> second(const T* const* f) const { return {second_core(f), Real(*f[limit_at - 1])}; }
     // The bare primitives, for pairs where neither shape is swept (the common case: no
     // per-element sweep read, no swept wrapper in the loop).
-    A first_core(const double* const* f) const { return ShapeTraits<A>::make(f, a_points); }
-    B second_core(const double* const* f) const { return ShapeTraits<B>::make(f + b_at, b_points); }
+    A first_core(const T* const* f) const { return ShapeTraits<A>::make(f, a_points); }
+    B second_core(const T* const* f) const { return ShapeTraits<B>::make(f + b_at, b_points); }
   };
+
+  // float queries read float64 copies of the inputs rounded to float: they must fit.
+  static void check_range(const Shape& a, const Shape& b, const Shape* limit = nullptr) {
+    if constexpr (std::is_same_v<Real, float>) {
+      check_float_range(a);
+      check_float_range(b);
+      if (limit) check_float_range("within", limit->fields[0]);
+    }
+  }
 
   static bool unswept(const Shape& s) {
     const Field& sweep = s.fields.back();
@@ -179,11 +195,12 @@ template <class Roots, class A, class B, class Real> struct PairOf {
   }
 
   static py::object distance(const Shape& a, const Shape& b) {
+    check_range(a, b);
     if (a.batch.empty() && b.batch.empty()) {
-      std::array<const double*, kMaxFields> f{};
+      std::array<const T*, kMaxFields> f{};
       int k = 0;
-      for (const Field& x : a.fields) f[k++] = x.data();
-      for (const Field& x : b.fields) f[k++] = x.data();
+      for (const Field& x : a.fields) f[k++] = x.template data_as<T>();
+      for (const Field& x : b.fields) f[k++] = x.template data_as<T>();
       ++stats().distances;
       const Layout at(a, b);
       return scalar<Real>(circledist::distance<Roots>(at.first(f.data()), at.second(f.data())));
@@ -195,11 +212,11 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     {
       py::gil_scoped_release release;
       if (unswept(a) && unswept(b)) {
-        bc.for_each([&](Index i, const double* const* f) CIRCLEDIST_PER_ELEMENT {
+        bc.for_each([&](Index i, const T* const* f) CIRCLEDIST_PER_ELEMENT {
           o[i] = circledist::distance<Roots>(at.first_core(f), at.second_core(f));
         });
       } else {
-        bc.for_each([&](Index i, const double* const* f) CIRCLEDIST_PER_ELEMENT {
+        bc.for_each([&](Index i, const T* const* f) CIRCLEDIST_PER_ELEMENT {
           o[i] = circledist::distance<Roots>(at.first(f), at.second(f));
         });
       }
@@ -211,6 +228,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
   // effects.hpp over the broadcast of a, b and the limits d: within() (a bool per element) or,
   // with `want_distance`, distance_if_within() (the distance, +inf beyond d).
   static py::object within(const Shape& a, const Shape& b, const Shape& limit, bool want_distance) {
+    check_range(a, b, &limit);
     const Broadcast bc(a, b, &limit);
     const Layout at(a, b);
     if (want_distance) {
@@ -218,7 +236,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
       Real* o = out.mutable_data();
       {
         py::gil_scoped_release release;
-        bc.for_each([&](Index i, const double* const* f) CIRCLEDIST_PER_ELEMENT {
+        bc.for_each([&](Index i, const T* const* f) CIRCLEDIST_PER_ELEMENT {
           o[i] = circledist::distance_if_within<Roots>(at.first(f), at.second(f), Real(*f[at.limit_at]));
         });
       }
@@ -229,7 +247,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     bool* o = out.mutable_data();
     {
       py::gil_scoped_release release;
-      bc.for_each([&](Index i, const double* const* f) CIRCLEDIST_PER_ELEMENT {
+      bc.for_each([&](Index i, const T* const* f) CIRCLEDIST_PER_ELEMENT {
         o[i] = circledist::within<Roots>(at.first(f), at.second(f), Real(*f[at.limit_at]));
       });
     }
@@ -238,6 +256,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
   }
 
   static ClosestPoints closest(const Shape& a, const Shape& b) {
+    check_range(a, b);
     const Broadcast bc(a, b);
     const Layout at(a, b);
     auto dist = new_array<Real>(bc.shape, 0);
@@ -249,7 +268,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     bool* u = unique.mutable_data();
     {
       py::gil_scoped_release release;
-      bc.for_each([&](Index i, const double* const* f) CIRCLEDIST_PER_ELEMENT {
+      bc.for_each([&](Index i, const T* const* f) CIRCLEDIST_PER_ELEMENT {
         const Result<Real> r = circledist::closest_points<Roots>(at.first(f), at.second(f));
         d[i] = r.distance;
         for (int k = 0; k < 3; ++k) {
@@ -282,12 +301,13 @@ struct PairTable {
 };
 
 enum Precision : int { kFloat, kDouble, kLongDouble, kPrecisionCount };
-enum Solver : int { kCompanion, kPolished, kBracketing, kSolverCount };
+enum Solver : int { kCompanion, kPolished, kBracketing, kEigen, kSolverCount };
 
 // The table index of a root policy.
 template <class Roots> constexpr int solver_index() {
   if constexpr (std::is_same_v<Roots, EigenPolished>) return kPolished;
   else if constexpr (std::is_same_v<Roots, Bracketing>) return kBracketing;
+  else if constexpr (std::is_same_v<Roots, EigenPolynomialSolver>) return kEigen;
   else return kCompanion;
 }
 
@@ -343,6 +363,7 @@ template <class Real> void register_precision(PairTable (&tables)[kSolverCount])
   for_each_pair<Real>(PairRegistrar<Counted<EigenCompanion>, Real>{tables[kCompanion]});
   for_each_pair<Real>(PairRegistrar<Counted<EigenPolished>, Real>{tables[kPolished]});
   for_each_pair<Real>(PairRegistrar<Counted<Bracketing>, Real>{tables[kBracketing]});
+  for_each_pair<Real>(PairRegistrar<Counted<EigenPolynomialSolver>, Real>{tables[kEigen]});
 }
 
 // Defined in pairs_float.cpp, pairs_double.cpp and pairs_longdouble.cpp (compiled in parallel).

@@ -9,8 +9,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -50,14 +52,38 @@ inline std::string index_text(Index flat, const BatchShape& batch) {
   return s.str();
 }
 
-// A field: `width` doubles per batch element (3 for vectors, 1 for scalars).
+// A field: `width` values per batch element (3 for vectors, 1 for scalars), as float64, and as
+// long double too when it was given as np.longdouble (which float64 would round: a long-double
+// query then reads those values; the other precisions read the float64 ones).
 struct Field {
+  using Wide = py::array_t<long double, py::array::c_style | py::array::forcecast>;
   const char* name;
   py::array_t<double, py::array::c_style | py::array::forcecast> array;
   BatchShape batch;
   Index width;
   bool single = false;  // given as float32: computing in float reproduces the input exactly
+  bool is_wide = false;  // given as np.longdouble (wider than float64): `wide` holds the values
+  Wide wide;
+  mutable bool is_widened = false;  // `widened`: the float64 values as long double, made on a
+  mutable Wide widened;             // long-double query's first use (the GIL held)
   const double* data() const { return array.data(); }
+  bool has_wide() const { return is_wide; }
+
+  // The values in the storage type T of a query's precision (double, or long double).
+  template <class T> const T* data_as() const {
+    if constexpr (std::is_same_v<T, long double>) {
+      if (is_wide) return wide.data();
+      if (!is_widened) {
+        widened = Wide::ensure(py::reinterpret_borrow<py::object>(array.attr("astype")("longdouble")));
+        is_widened = true;
+      }
+      return widened.data();
+    } else {
+      return array.data();
+    }
+  }
+  // The array a user reads back: the long double one when that is what was given.
+  py::object value() const { return is_wide ? py::object(wide) : py::object(array); }
 };
 
 enum class Check { Finite, NonzeroVector, NonNegative };
@@ -85,6 +111,10 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
     const py::module_ numpy = py::module_::import("numpy");
     const py::object given = numpy.attr("asarray")(value);
     f.single = py::object(given.attr("dtype")).equal(numpy.attr("dtype")("float32"));
+    // np.longdouble is kept as it is where it is wider than float64 (x86's 80-bit format).
+    if (py::object(given.attr("dtype")).equal(numpy.attr("dtype")("longdouble")) &&
+        std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
+      f.wide = Field::Wide::ensure(given), f.is_wide = true;
     converted = numpy.attr("asarray")(given, py::arg("dtype") = "float64");
   } catch (py::error_already_set&) {
     throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
@@ -134,6 +164,23 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
   return f;
 }
 
+// precision="float32" rounds every input to float32: a value beyond float32's range (which would
+// become inf) or a nonzero one below its smallest subnormal (which would become 0, turning a
+// direction of 1e-50 into a zero vector) is an error naming the argument and its index.
+inline void check_float_range(const char* owner, const Field& f) {
+  if (f.single) return;  // given as float32
+  const double* p = f.data();
+  const Index n = f.array.size();
+  const double high = double(std::numeric_limits<float>::max());
+  const double low = double(std::numeric_limits<float>::denorm_min()) / 2;
+  for (Index i = 0; i < n; ++i) {
+    const double a = std::abs(p[i]);
+    if (a > high || (a > 0 && a <= low))
+      throw py::value_error(std::string(owner) + ": " + f.name + index_text(i / f.width, f.batch) +
+                            " is outside float32's range (precision='float32'): " + std::to_string(p[i]));
+  }
+}
+
 // NumPy broadcasting of two batch shapes; `ok` is false when they do not broadcast.
 inline BatchShape broadcast_shapes(const BatchShape& a, const BatchShape& b, bool& ok) {
   ok = true;
@@ -161,6 +208,11 @@ struct Shape {
       if (!f.single) return false;
     return true;
   }
+  bool wide() const {
+    for (const Field& f : fields)
+      if (f.has_wide()) return true;
+    return false;
+  }
 
   Shape(int k, std::vector<Field> f) : kind(k), fields(std::move(f)) {
     if (kind == kBezier) points = int(fields[0].width / 3);
@@ -176,38 +228,42 @@ struct Shape {
   }
 };
 
+inline void check_float_range(const Shape& s) {
+  for (const Field& f : s.fields) check_float_range(kind_name(s.kind), f);
+}
+
 // One C++ primitive per kind, built from pointers to one batch element of each field.
 template <class S> struct ShapeTraits;
 
-template <class Real> Vec3<Real> vec(const double* p) { return Vec3<Real>(Real(p[0]), Real(p[1]), Real(p[2])); }
+template <class Real, class T> Vec3<Real> vec(const T* p) { return Vec3<Real>(Real(p[0]), Real(p[1]), Real(p[2])); }
 
 template <class Real> struct ShapeTraits<Vec3<Real>> {
   static constexpr int kind = kPoint;
-  static Vec3<Real> make(const double* const* f, int) { return vec<Real>(f[0]); }
+  template <class T> static Vec3<Real> make(const T* const* f, int) { return vec<Real>(f[0]); }
 };
 template <class Real> struct ShapeTraits<Line3<Real>> {
   static constexpr int kind = kLine;
-  static Line3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+  template <class T> static Line3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
 template <class Real> struct ShapeTraits<Ray3<Real>> {
   static constexpr int kind = kRay;
-  static Ray3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+  template <class T> static Ray3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
 template <class Real> struct ShapeTraits<Segment3<Real>> {
   static constexpr int kind = kSegment;
-  static Segment3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+  template <class T> static Segment3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
 };
 template <class Real> struct ShapeTraits<Circle3<Real>> {
   static constexpr int kind = kCircle;
-  static Circle3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+  template <class T> static Circle3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
 };
 template <class Real> struct ShapeTraits<Disk3<Real>> {
   static constexpr int kind = kDisk;
-  static Disk3<Real> make(const double* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+  template <class T> static Disk3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
 };
 template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
   static constexpr int kind = kBezier;
-  static BezierCurve3<Real> make(const double* const* f, int points) {
+  template <class T> static BezierCurve3<Real> make(const T* const* f, int points) {
     BezierCurve3<Real> curve;
     curve.control.resize(3, points);
     for (int i = 0; i < points; ++i) curve.control.col(i) = vec<Real>(f[0] + 3 * i);

@@ -25,6 +25,9 @@ template <class Real> struct LinearPair {
   Real distance = std::numeric_limits<Real>::infinity();
   Real s = 0, t = 0;
   bool unique = true;
+  // The closest points, from the pieces with scaled directions: finite even where s or t is not
+  // representable (a direction of 1e-295 with the closest point 1e38 away: t = 1e333).
+  Vec3<Real> point_a = Vec3<Real>::Zero(), point_b = Vec3<Real>::Zero();
 };
 
 template <class Real> Real clamp_to(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
@@ -34,7 +37,13 @@ template <class Real> Real clamp_to(Real x, Real lo, Real hi) { return std::min(
 // returned interval, with s = ldexp(s', -exponent). Products of directions (|u|^2 |v|^2, and
 // |u x v|^2 of lines with |u| = 1e80) would otherwise overflow or underflow.
 template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& exponent) {
+  // Components within 2^(+-max_exponent / 5) need no scaling: products of four of them stay off
+  // overflow and the subnormals (the common case pays two comparisons).
+  constexpr Real lo = detail::power_of_two<Real>(std::numeric_limits<Real>::min_exponent / 5);
+  constexpr Real hi = detail::power_of_two<Real>(std::numeric_limits<Real>::max_exponent / 5);
   const Real largest = piece.direction.cwiseAbs().maxCoeff();
+  exponent = 0;
+  if (largest >= lo && largest <= hi) return piece;
   exponent = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
   Linear<Real> out = piece;
   for (int i = 0; i < 3; ++i) out.direction[i] = std::ldexp(piece.direction[i], -exponent);
@@ -46,14 +55,11 @@ template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& e
 template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b);
 
 template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
-  // Directions with components within 2^(+-max_exponent / 5) need no scaling: the products of
-  // four of them stay off overflow and the subnormals (the common case pays two comparisons).
-  constexpr Real lo = detail::power_of_two<Real>(std::numeric_limits<Real>::min_exponent / 5);
-  constexpr Real hi = detail::power_of_two<Real>(std::numeric_limits<Real>::max_exponent / 5);
-  const Real largest_a = a.direction.cwiseAbs().maxCoeff(), largest_b = b.direction.cwiseAbs().maxCoeff();
-  if (largest_a >= lo && largest_a <= hi && largest_b >= lo && largest_b <= hi) return linear_pair_scaled(a, b);
   int ea = 0, eb = 0;
-  LinearPair<Real> p = linear_pair_scaled(unit_scaled(a, ea), unit_scaled(b, eb));
+  const Linear<Real> sa = unit_scaled(a, ea), sb = unit_scaled(b, eb);
+  LinearPair<Real> p = linear_pair_scaled(sa, sb);
+  p.point_a = sa.origin + p.s * sa.direction;
+  p.point_b = sb.origin + p.t * sb.direction;
   p.s = std::ldexp(p.s, -ea);
   p.t = std::ldexp(p.t, -eb);
   return p;
@@ -119,8 +125,8 @@ template <class Real, class PieceA, class PieceB> struct LinearLinearQuery {
     const LinearPair<Real> p = linear_pair(la, lb);
     Result<Real> r;
     r.distance = p.distance;
-    r.point_a = la.origin + p.s * la.direction;
-    r.point_b = lb.origin + p.t * lb.direction;
+    r.point_a = p.point_a;
+    r.point_b = p.point_b;
     r.param_a = Vec2<Real>(p.s, 0);
     r.param_b = Vec2<Real>(p.t, 0);
     r.unique = p.unique;
@@ -141,24 +147,32 @@ struct Query<Segment3<Real>, Segment3<Real>> : LinearLinearQuery<Real, Segment3<
 template <class Real, class Piece> struct PointLinearQuery {
   static constexpr bool defined = true;
 
-  static Real parameter(const Vec3<Real>& p, const Linear<Real>& l) {
-    const Real aa = l.direction.squaredNorm();
-    return aa > 0 ? clamp_to((p - l.origin).dot(l.direction) / aa, l.lo, l.hi) : clamp_to(Real(0), l.lo, l.hi);
+  // The projection's parameter on the piece with its direction scaled to components in [1, 2)
+  // (`exponent` returns the scaling: t = ldexp(t', -exponent)), so |d|^2 neither overflows
+  // (1e283) nor underflows; the closest point is origin + t' d'.
+  static Real parameter(const Vec3<Real>& p, const Linear<Real>& l, Linear<Real>& scaled, int& exponent) {
+    scaled = unit_scaled(l, exponent);
+    const Real aa = scaled.direction.squaredNorm();
+    return aa > 0 ? clamp_to((p - l.origin).dot(scaled.direction) / aa, scaled.lo, scaled.hi)
+                  : clamp_to(Real(0), scaled.lo, scaled.hi);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Piece& piece) {
-    const Linear<Real> l = as_linear(piece);
-    return (l.origin + parameter(p, l) * l.direction - p).norm();
+    Linear<Real> scaled;
+    int exponent = 0;
+    const Real t = parameter(p, as_linear(piece), scaled, exponent);
+    return (scaled.origin + t * scaled.direction - p).norm();
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Piece& piece) {
-    const Linear<Real> l = as_linear(piece);
-    const Real t = parameter(p, l);
+    Linear<Real> scaled;
+    int exponent = 0;
+    const Real t = parameter(p, as_linear(piece), scaled, exponent);
     Result<Real> r;
     r.point_a = p;
-    r.point_b = l.origin + t * l.direction;
+    r.point_b = scaled.origin + t * scaled.direction;
     r.distance = (r.point_b - p).norm();
-    r.param_b = Vec2<Real>(t, 0);
+    r.param_b = Vec2<Real>(std::ldexp(t, -exponent), 0);
     return r;
   }
 };

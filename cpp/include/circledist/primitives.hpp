@@ -83,9 +83,8 @@ template <class Real> struct Result {
   }
 };
 
-// Whole queries scaled by a power of two (exact): every length times 2^e, directions too, so that
-// line parameters and angles keep their values (query.hpp rescales scenes whose coordinates
-// square past overflow or into the subnormals). extent() is the largest coordinate or length a
+// Whole queries scaled by a power of two (exact): every length times 2^e (query.hpp rescales
+// scenes whose coordinates square past overflow or into the subnormals). extent() is the largest coordinate or length a
 // shape holds (directions and normals aside: their scale is handled where they are normalized).
 namespace detail {
 template <class Real> Vec3<Real> ldexp3(const Vec3<Real>& v, int e) {
@@ -98,12 +97,22 @@ template <class Real> constexpr Real power_of_two(int exponent) {
 }
 }  // namespace detail
 
+namespace detail {
+// The exponent of a direction's largest component (0 for a zero direction): a line's direction
+// is scaled to components in [1, 2) apart from the scene, which could carry a direction of 1e200
+// in a scene of 1e-200 past overflow.
+template <class Real> int direction_exponent(const Vec3<Real>& d) {
+  const Real largest = d.cwiseAbs().maxCoeff();
+  return largest > 0 && largest <= std::numeric_limits<Real>::max() ? std::ilogb(largest) : 0;
+}
+}  // namespace detail
+
 template <class Real> Vec3<Real> scaled(const Vec3<Real>& p, int e) { return detail::ldexp3(p, e); }
 template <class Real> Line3<Real> scaled(const Line3<Real>& l, int e) {
-  return {detail::ldexp3(l.origin, e), detail::ldexp3(l.direction, e)};
+  return {detail::ldexp3(l.origin, e), detail::ldexp3(l.direction, -detail::direction_exponent(l.direction))};
 }
 template <class Real> Ray3<Real> scaled(const Ray3<Real>& r, int e) {
-  return {detail::ldexp3(r.origin, e), detail::ldexp3(r.direction, e)};
+  return {detail::ldexp3(r.origin, e), detail::ldexp3(r.direction, -detail::direction_exponent(r.direction))};
 }
 template <class Real> Segment3<Real> scaled(const Segment3<Real>& s, int e) {
   return {detail::ldexp3(s.p0, e), detail::ldexp3(s.p1, e)};
@@ -120,10 +129,18 @@ template <class Real> Real extent(const Ray3<Real>& r) { return extent(r.origin)
 template <class Real> Real extent(const Segment3<Real>& s) { return std::max(extent(s.p0), extent(s.p1)); }
 template <class Real> Real extent(const Circle3<Real>& c) { return std::max(extent(c.center), c.radius); }
 template <class Real> Real extent(const Disk3<Real>& d) { return std::max(extent(d.center), d.radius); }
-// A disk's parameter s is a length; the others (t, angles) do not change with the scale.
+// The parameters of the shape from those of the scaled one: a disk's s is a length; a line's or
+// ray's t follows its direction's scaling (P = o + t' d 2^-k in the scene scaled by 2^e, so
+// t = t' 2^(-k-e)); a segment's t, a curve's t and angles do not change.
 template <class Real, class Shape> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Shape&, int) { return param; }
 template <class Real> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Disk3<Real>&, int e) {
   return Vec2<Real>(std::ldexp(param.x(), -e), param.y());
+}
+template <class Real> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Line3<Real>& l, int e) {
+  return Vec2<Real>(std::ldexp(param.x(), -detail::direction_exponent(l.direction) - e), param.y());
+}
+template <class Real> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Ray3<Real>& r, int e) {
+  return Vec2<Real>(std::ldexp(param.x(), -detail::direction_exponent(r.direction) - e), param.y());
 }
 
 // float queries are computed in double and rounded (query.hpp): float's 24 bits cannot hold

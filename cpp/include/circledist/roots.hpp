@@ -19,6 +19,7 @@
 #pragma once
 
 #include <Eigen/Eigenvalues>
+#include <unsupported/Eigen/Polynomials>
 
 #include <array>
 #include <cmath>
@@ -259,19 +260,56 @@ struct EigenCompanion {
     roots_kept_in<EigenCompanion>(c, degree, intervals, out);
   }
 
-  // A near-real root inside [lo, hi]. Where the eigenvalues put none there (a root at the
-  // bracket's end, 1e-17 from lo, computed a little outside it), the sign change the caller
-  // guarantees is searched by safeguarded Halley instead: a clamped or midpoint answer would be
-  // no root at all.
   template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
+    return eigenvalue_bracketed_root<EigenCompanion>(c, degree, lo, hi, p_lo, p_hi);
+  }
+
+  // For the policies whose roots are eigenvalues: a near-real root inside [lo, hi]. Where the
+  // eigenvalues put none there (a root at the bracket's end, 1e-17 from lo, computed a little
+  // outside it), the sign change the caller guarantees is searched by safeguarded Halley instead:
+  // a clamped or midpoint answer would be no root at all.
+  template <class Policy, class Real>
+  static Real eigenvalue_bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
     if (!(p_lo < 0)) return lo;
     Candidates<Real> all;
-    roots(c, degree, lo, hi, all);
+    Policy::roots(c, degree, lo, hi, all);
     for (int i = 0; i < all.count; ++i)
       if (all.value[i] >= lo && all.value[i] <= hi) return all.value[i];
     Real x = lo - p_lo * (hi - lo) / (p_hi - p_lo);
     if (!(x > lo && x < hi)) x = lo;
     return detail::halley_bisection(c, degree, lo, hi, p_lo, x, 2 * std::numeric_limits<Real>::epsilon(), Real(0));
+  }
+};
+
+// Eigen's own solver, Eigen::PolynomialSolver (unsupported/Eigen/Polynomials), called as it is:
+// the design card's solver. EigenCompanion is the same scheme without the eigenvectors and the
+// dynamic allocations, about 3x faster for the same roots (docs/accuracy_vs_time.md). Eigen
+// asserts on a zero leading coefficient, so the polynomial is trimmed first. Its realRoots()
+// keeps roots whose imaginary part is below an absolute 1e-12: a tangency's quadruple root
+// comes back with imaginary parts near eps^(1/4) = 1e-4 and would be lost, so the near-real
+// filter of EigenCompanion (relative, up to multiplicity 4) is applied to roots() instead.
+struct EigenPolynomialSolver {
+  static constexpr Polish polish = Polish::Newton;
+
+  template <class Real, int Capacity>
+  static void roots(const Real* coefficients, int degree, Real /*lo*/, Real /*hi*/, Candidates<Real, Capacity>& out) {
+    degree = trimmed_degree(coefficients, degree);
+    if (degree <= 0) return;
+    const Eigen::Matrix<Real, Eigen::Dynamic, 1> polynomial =
+        Eigen::Map<const Eigen::Matrix<Real, Eigen::Dynamic, 1>>(coefficients, degree + 1);
+    const Eigen::PolynomialSolver<Real, Eigen::Dynamic> solver(polynomial);
+    const Real tol = EigenCompanion::near_real_tolerance<Real>();
+    for (Eigen::Index i = 0; i < solver.roots().size(); ++i)
+      if (detail::near_real(std::complex<Real>(solver.roots()[i]), tol)) out.push(solver.roots()[i].real());
+  }
+
+  template <class Real, int Capacity>
+  static void roots_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
+    roots_kept_in<EigenPolynomialSolver>(c, degree, intervals, out);
+  }
+
+  template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
+    return EigenCompanion::eigenvalue_bracketed_root<EigenPolynomialSolver>(c, degree, lo, hi, p_lo, p_hi);
   }
 };
 

@@ -1,0 +1,359 @@
+"""Crash-isolating fuzz of circledist's Python API (issue 15).
+
+Cases cover every kind pair in both orders, every entry point (distance, closest_points, within,
+intersects, distance_if_within), precision and solver, magnitudes from 1e-300 to 1e300, degenerate
+shapes (zero radius, zero-length segments, points on axes, coplanar and concentric rounds), sweeps,
+batches in several memory layouts (C, Fortran, strided, read-only) and dtypes.
+
+Each chunk of cases runs in a child process. The child writes the case it is about to run to a file
+first, so when it dies (a signal: a crash) or stops answering (a hang), the parent names the input.
+The child also checks every answer: no NaN for inputs the constructors accepted, distances >= 0,
+closest points finite whenever the distance is finite, and distance() == closest_points().distance.
+
+    python tools/fuzz_crash.py [--cases N] [--seed S] [--chunk K] [--timeout T] [--report FILE]
+
+Exit status 0 when nothing was found, 1 otherwise; the summary (counts, and one reproducer per
+finding) is printed and, with --report, written as JSON.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+KINDS = ("point", "line", "ray", "segment", "circle", "disk", "bezier")
+ENTRY_POINTS = ("distance", "closest_points", "within", "intersects", "distance_if_within")
+PRECISIONS = (None, "float32", "float64", "longdouble")
+SOLVERS = (None, "bracketing", "companion", "polished", "eigen")
+
+
+# ----------------------------------------------------------------------------------------------
+# cases: plain JSON-able dicts (floats as repr strings, so that the reproducer is exact)
+# ----------------------------------------------------------------------------------------------
+def _magnitude(rng):
+    """A length scale: mostly moderate, often extreme."""
+    r = rng.random()
+    if r < 0.5:
+        return float(10 ** rng.uniform(-2, 2))
+    if r < 0.75:
+        return float(10 ** rng.uniform(-300, 300))
+    return float(10.0 ** int(rng.choice([-300, -200, -155, -100, 100, 155, 200, 300])) * rng.uniform(1, 9))
+
+
+def _vector(rng, scale):
+    v = rng.normal(size=3) * scale
+    mode = rng.random()
+    if mode < 0.1:
+        v[rng.integers(0, 3)] = 0.0
+    elif mode < 0.15:
+        v[:] = 0.0
+        v[rng.integers(0, 3)] = scale
+    return [float(x) for x in v]
+
+
+def _direction(rng):
+    v = _vector(rng, _magnitude(rng))
+    if not any(v):
+        v[2] = 1.0
+    return v
+
+
+def _shape(rng, kind, scale, center):
+    def near():
+        return [c + x for c, x in zip(center, _vector(rng, scale))]
+
+    if kind == "point":
+        return {"p": near()}
+    if kind in ("line", "ray"):
+        return {"origin": near(), "direction": _direction(rng)}
+    if kind == "segment":
+        p0 = near()
+        return {"p0": p0, "p1": list(p0) if rng.random() < 0.1 else near()}
+    if kind in ("circle", "disk"):
+        radius = 0.0 if rng.random() < 0.05 else abs(scale * rng.uniform(0.1, 3))
+        return {"center": near(), "normal": _direction(rng), "radius": radius}
+    count = int(rng.integers(2, 9))
+    points = [near() for _ in range(count)]
+    if rng.random() < 0.3:  # one dominant control point (issue 15 item 1)
+        points[int(rng.integers(0, count))] = [float(x) for x in rng.normal(size=3) * scale * 10 ** rng.uniform(2, 200)]
+    return {"control_points": points}
+
+
+def generate(seed: int, count: int):
+    rng = np.random.default_rng(seed)
+    for index in range(count):
+        scale = _magnitude(rng)
+        center = _vector(rng, scale * (10 ** rng.uniform(0, 8) if rng.random() < 0.2 else 1))
+        ka, kb = KINDS[rng.integers(0, len(KINDS))], KINDS[rng.integers(0, len(KINDS))]
+        a, b = _shape(rng, ka, scale, center), _shape(rng, kb, scale, center)
+        if rng.random() < 0.2:
+            a["sweep"] = abs(_magnitude(rng) * rng.random())
+        if ka in ("circle", "disk") and kb in ("circle", "disk") and rng.random() < 0.3:
+            b["center"] = list(a["center"])  # concentric
+        yield {
+            "index": index,
+            "a": [ka, a],
+            "b": [kb, b],
+            "entry": ENTRY_POINTS[rng.integers(0, len(ENTRY_POINTS))],
+            "precision": PRECISIONS[rng.integers(0, len(PRECISIONS))],
+            "solver": SOLVERS[rng.integers(0, len(SOLVERS))],
+            "d": abs(_magnitude(rng)),
+            "batch": int(rng.integers(0, 4)),  # 0: scalar; 1: C batch; 2: Fortran; 3: strided, read-only
+        }
+
+
+# ----------------------------------------------------------------------------------------------
+# the child: run cases, check answers
+# ----------------------------------------------------------------------------------------------
+def _build(cd, kind, fields, batch):
+    cls = getattr(cd, kind.capitalize())
+    args = {k: v for k, v in fields.items()}
+    if batch:
+        out = {}
+        for k, v in args.items():
+            arr = np.asarray(v, dtype=float)
+            stacked = np.stack([arr, arr, arr])
+            if batch == 2:
+                stacked = np.asfortranarray(stacked)
+            elif batch == 3:
+                wide = np.stack([stacked, stacked], axis=-1)
+                stacked = wide[..., 0]
+                stacked.setflags(write=False)
+            out[k] = stacked
+        args = out
+    sweep = args.pop("sweep", None)
+    positional = list(args.values())
+    return cls(*positional, sweep=sweep) if sweep is not None else cls(*positional)
+
+
+def _finite_array(x):
+    return bool(np.all(np.isfinite(np.asarray(x, dtype=np.longdouble))))
+
+
+def run_case(cd, case):
+    """Returns None when all is well, else a finding (a short string). Exceptions from the
+    constructors or the queries are answers (a clear error), not findings."""
+    kw = {"precision": case["precision"], "solver": case["solver"]}
+    try:
+        a = _build(cd, *case["a"], case["batch"])
+        b = _build(cd, *case["b"], case["batch"])
+    except (ValueError, TypeError, OverflowError):
+        return None
+    entry = case["entry"]
+    try:
+        if entry == "distance":
+            d = np.asarray(cd.distance(a, b, **kw), dtype=np.longdouble)
+            if np.any(np.isnan(d)):
+                return "NaN distance"
+            if np.any(d < 0):
+                return "negative distance"
+        elif entry == "closest_points":
+            r = cd.closest_points(a, b, **kw)
+            d = np.asarray(r.distance, dtype=np.longdouble)
+            if np.any(np.isnan(d)):
+                return "NaN distance"
+            finite = np.isfinite(d)
+            pa = np.asarray(r.point_a, dtype=np.longdouble).reshape(-1, 3)
+            pb = np.asarray(r.point_b, dtype=np.longdouble).reshape(-1, 3)
+            if not (np.all(np.isfinite(pa[finite.ravel()])) and np.all(np.isfinite(pb[finite.ravel()]))):
+                return "non-finite closest points for a finite distance"
+            d2 = np.asarray(cd.distance(a, b, **kw), dtype=np.longdouble)
+            if not np.array_equal(np.isinf(d2), np.isinf(d)):
+                return "distance() and closest_points().distance disagree on inf"
+        elif entry in ("within", "intersects"):
+            out = cd.within(a, b, case["d"], **kw) if entry == "within" else cd.intersects(a, b, **kw)
+            np.asarray(out, dtype=bool)
+        else:
+            d = np.asarray(cd.distance_if_within(a, b, case["d"], **kw), dtype=np.longdouble)
+            if np.any(np.isnan(d)):
+                return "NaN distance_if_within"
+    except (ValueError, TypeError, OverflowError):
+        return None
+    return None
+
+
+def _group_key(case):
+    """Cases that can run as one batched call: the same kinds, field layout and query."""
+    def layout(kind, fields):
+        return (kind, tuple(sorted(fields)), len(fields.get("control_points", ())))
+    return (layout(*case["a"]), layout(*case["b"]), case["entry"], case["precision"], case["solver"])
+
+
+def _batch_shape(cd, kind, fields_list):
+    cls = getattr(cd, kind.capitalize())
+    names = [k for k in fields_list[0] if k != "sweep"]
+    columns = [np.array([f[k] for f in fields_list], dtype=float) for k in names]
+    sweep = np.array([f.get("sweep", 0.0) for f in fields_list], dtype=float)
+    return cls(*columns, sweep=sweep)
+
+
+def run_batch(cd, cases):
+    """One batched call for cases of one group; None when every element is fine (or the whole
+    call raised a clear error: then each case is run alone to see which), else the index of the
+    first bad element and the finding."""
+    case = cases[0]
+    kw = {"precision": case["precision"], "solver": case["solver"]}
+    try:
+        a = _batch_shape(cd, case["a"][0], [c["a"][1] for c in cases])
+        b = _batch_shape(cd, case["b"][0], [c["b"][1] for c in cases])
+        d_limit = np.array([c["d"] for c in cases])
+        entry = case["entry"]
+        if entry == "distance":
+            d = np.asarray(cd.distance(a, b, **kw), dtype=np.longdouble)
+            bad = np.isnan(d) | (d < 0)
+            return (int(np.argmax(bad)), "NaN or negative distance (batch)") if bad.any() else None
+        if entry == "closest_points":
+            r = cd.closest_points(a, b, **kw)
+            d = np.asarray(r.distance, dtype=np.longdouble)
+            pa = np.asarray(r.point_a, dtype=np.longdouble)
+            pb = np.asarray(r.point_b, dtype=np.longdouble)
+            finite = np.isfinite(d)
+            bad = np.isnan(d) | (finite & ~(np.isfinite(pa).all(-1) & np.isfinite(pb).all(-1)))
+            return (int(np.argmax(bad)), "NaN distance or non-finite points (batch)") if bad.any() else None
+        if entry in ("within", "intersects"):
+            out = cd.within(a, b, d_limit, **kw) if entry == "within" else cd.intersects(a, b, **kw)
+            np.asarray(out, dtype=bool)
+            return None
+        d = np.asarray(cd.distance_if_within(a, b, d_limit, **kw), dtype=np.longdouble)
+        bad = np.isnan(d)
+        return (int(np.argmax(bad)), "NaN distance_if_within (batch)") if bad.any() else None
+    except (ValueError, TypeError, OverflowError):
+        return "error"
+
+
+def child(cases_file, current_file, results_file, batched="0"):
+    import circledist as cd
+
+    cases = json.load(open(cases_file))
+    findings = []
+
+    def note(case):
+        current.seek(0)
+        current.write(json.dumps(case))
+        current.truncate()
+        current.flush()
+
+    with open(current_file, "w") as current:
+        if batched == "1":
+            groups = {}
+            for case in cases:
+                groups.setdefault(_group_key(case), []).append(case)
+            for group in groups.values():
+                note({"batch_of": [c["index"] for c in group], **group[0]})
+                result = run_batch(cd, group)
+                if result is None:
+                    continue
+                # A clear error somewhere in the batch, or a bad element: each case alone.
+                alone = 0
+                for case in group:
+                    note(case)
+                    finding = run_case(cd, dict(case, batch=0))
+                    if finding:
+                        findings.append({"finding": finding, "case": case})
+                        alone += 1
+                if result != "error" and alone == 0:  # bad in the batch only
+                    findings.append({"finding": result[1], "case": group[result[0]]})
+        else:
+            for case in cases:
+                note(case)
+                finding = run_case(cd, case)
+                if finding:
+                    findings.append({"finding": finding, "case": case})
+    json.dump({"ran": len(cases), "findings": findings}, open(results_file, "w"))
+
+
+# ----------------------------------------------------------------------------------------------
+# the parent: chunks in child processes
+# ----------------------------------------------------------------------------------------------
+def _run_child(todo, batched, python, timeout, tmp):
+    """Runs the cases in a child; returns (result or None, last case started, crash/hang text)."""
+    cases_file, current_file, results_file = (os.path.join(tmp, n) for n in ("cases", "current", "results"))
+    json.dump(todo, open(cases_file, "w"))
+    for f in (current_file, results_file):
+        if os.path.exists(f):
+            os.remove(f)
+    try:
+        proc = subprocess.run([python, os.path.abspath(__file__), "--child", cases_file, current_file, results_file,
+                               "1" if batched else "0"], timeout=timeout, capture_output=True, text=True)
+        if proc.returncode == 0 and os.path.exists(results_file):
+            return json.load(open(results_file)), None, None
+        what = f"crash (exit {proc.returncode})", proc.stderr[-2000:]
+    except subprocess.TimeoutExpired:
+        what = "hang", ""
+    last = json.load(open(current_file)) if os.path.exists(current_file) else None
+    return None, last, what
+
+
+def _run_chunk(todo, batched, python, timeout, tmp, summary):
+    """Adds the chunk's counts to summary. A batched chunk that stops its child is run again case
+    by case; a case that stops its child is recorded with its input, and the rest run on."""
+    while todo:
+        result, last, what = _run_child(todo, batched, python, timeout, tmp)
+        if result is not None:
+            summary["cases"] += result["ran"]
+            summary["findings"] += len(result["findings"])
+            seen = {e["finding"] for e in summary["examples"]}
+            for f in result["findings"]:
+                if f["finding"] not in seen:
+                    summary["examples"].append(f)
+                    seen.add(f["finding"])
+            return
+        if batched:
+            batched = False
+            continue
+        summary["hangs" if what[0] == "hang" else "crashes"] += 1
+        summary["examples"].append({"finding": what[0], "case": last, "stderr": what[1]})
+        done = next((i + 1 for i, c in enumerate(todo) if last and c["index"] == last["index"]), len(todo))
+        summary["cases"] += done
+        todo = todo[done:]
+
+
+def fuzz(count, seed, chunk, timeout, python=sys.executable, progress=False, batched=False):
+    summary = {"cases": 0, "crashes": 0, "hangs": 0, "findings": 0, "examples": []}
+    cases = generate(seed, count)
+    with tempfile.TemporaryDirectory() as tmp:
+        while True:
+            todo = [c for _, c in zip(range(chunk), cases)]
+            if not todo:
+                break
+            _run_chunk(todo, batched, python, timeout, tmp, summary)
+            if progress:
+                print(f"  {summary['cases']} cases, {summary['crashes']} crashes, {summary['hangs']} hangs, "
+                      f"{summary['findings']} findings", file=sys.stderr, flush=True)
+    return summary
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if argv and argv[0] == "--child":
+        child(*argv[1:5])
+        return 0
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--cases", type=int, default=2000)
+    parser.add_argument("--seed", type=int, default=15)
+    parser.add_argument("--chunk", type=int, default=2000)
+    parser.add_argument("--timeout", type=float, default=120.0)
+    parser.add_argument("--report")
+    parser.add_argument("--batched", action="store_true",
+                        help="run each chunk's cases of one kind pair and query as one batched call (the long mode)")
+    args = parser.parse_args(argv)
+    t0 = time.time()
+    summary = fuzz(args.cases, args.seed, args.chunk, args.timeout, progress=True, batched=args.batched)
+    summary["seconds"] = round(time.time() - t0, 1)
+    text = json.dumps(summary, indent=1)
+    print(text)
+    if args.report:
+        open(args.report, "w").write(text)
+    return 0 if summary["crashes"] == summary["hangs"] == summary["findings"] == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
