@@ -47,6 +47,17 @@ int solver_of(const py::object& name) {
 }
 
 // A shape argument: a Shape object, or an array-like of points.
+// The Shape of a Python object, checked to have been built by its constructor: one made by
+// Circle.__new__(Circle) alone has unconstructed storage, which must never be read.
+const Shape& constructed(py::handle value) {
+  auto* instance = reinterpret_cast<py::detail::instance*>(value.ptr());
+  for (const auto& holder : py::detail::values_and_holders(instance))
+    if (!holder.holder_constructed())
+      throw py::type_error(std::string(Py_TYPE(value.ptr())->tp_name) +
+                           " was not initialized: build shapes with their constructor, e.g. Circle(center, normal, radius)");
+  return value.cast<const Shape&>();
+}
+
 struct Argument {
   py::object keep;
   const Shape* shape;
@@ -56,7 +67,7 @@ struct Argument {
     } else {
       keep = py::module_::import("circledist._core").attr("Point")(value);
     }
-    shape = &keep.cast<const Shape&>();
+    shape = &constructed(keep);
   }
 };
 
@@ -71,7 +82,8 @@ Fn lookup(Fn const (PairTable::*table)[kKindCount][kKindCount], const Shape& a, 
   return fn;
 }
 
-py::tuple batch_tuple(const Shape& s) {
+py::tuple batch_tuple(py::handle self) {
+  const Shape& s = constructed(self);
   py::tuple out(s.batch.size());
   for (size_t i = 0; i < s.batch.size(); ++i) out[i] = py::int_(s.batch[i]);
   return out;
@@ -85,8 +97,8 @@ template <int K, size_t... I> void bind_shape(py::module_& m, const char* doc, s
                                   sweep_field(kind_name(K), sweep)});
           }),
           py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none());
-  (cls.def_property_readonly(spec[I].name, [](const Shape& s) { return s.fields[I].value(); }), ...);
-  cls.def_property_readonly(kSweepField.name, [](const Shape& s) { return s.fields.back().value(); },
+  (cls.def_property_readonly(spec[I].name, [](py::handle s) { return constructed(s).fields[I].value(); }), ...);
+  cls.def_property_readonly(kSweepField.name, [](py::handle s) { return constructed(s).fields.back().value(); },
                             "Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).");
 }
 
@@ -94,7 +106,8 @@ template <int K> void bind_shape(py::module_& m, const char* doc) {
   bind_shape<K>(m, doc, std::make_index_sequence<kFieldCounts[K]>());
 }
 
-std::string repr(const Shape& s) {
+std::string repr(py::handle self) {
+  const Shape& s = constructed(self);
   std::string out = kind_name(s.kind);
   if (!s.batch.empty()) return out + "(batch shape " + shape_text(s.batch) + ")";
   out += "(";
@@ -115,7 +128,7 @@ PYBIND11_MODULE(_core, m) {
 
   py::class_<Shape> shape(m, "Shape", "Base class of every shape: a single shape or a batch of them.");
   shape.def_property_readonly("batch_shape", &batch_tuple, "Leading batch dimensions; () for a single shape.")
-      .def_property_readonly("kind", [](const Shape& s) { return kind_name(s.kind); })
+      .def_property_readonly("kind", [](py::handle s) { return kind_name(constructed(s).kind); })
       .def("__repr__", &repr);
 
   bind_shape<kPoint>(m, "A point, or a batch of points of shape (..., 3).");

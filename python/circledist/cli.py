@@ -101,8 +101,13 @@ class LoadedScene:
 # loading and validation
 # ------------------------------------------------------------------------------------------
 def _number(value, where: str, *, minimum: float | None = None) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise SceneError(f"{where}: must be a finite number, got {json.dumps(value)}")
+    try:  # an integer literal of 400 digits is a Python int that no float holds
+        finite = not isinstance(value, bool) and isinstance(value, (int, float)) and math.isfinite(float(value))
+    except OverflowError:
+        finite = False
+    if not finite:
+        shown = json.dumps(value) if not isinstance(value, int) or abs(value) < 10**30 else f"an integer of {len(str(abs(value)))} digits"
+        raise SceneError(f"{where}: must be a finite number, got {shown}")
     if minimum is not None and value < minimum:
         raise SceneError(f"{where}: must be >= {minimum:g}, got {json.dumps(value)}")
     return float(value)
@@ -228,10 +233,16 @@ def load_scene(path: str, text: str | None = None) -> LoadedScene:
                 text = f.read()
         except OSError as e:
             raise SceneError(f"{path}: cannot read the scene file: {e.strerror}") from None
+        except UnicodeDecodeError as e:
+            raise SceneError(f"{path}: not a UTF-8 text file (byte {e.start}: {e.reason})") from None
     try:
         data = json.loads(text)
     except json.JSONDecodeError as e:
         raise SceneError(f"{path}: not valid JSON: {e.msg} at line {e.lineno}, column {e.colno}") from None
+    except RecursionError:
+        raise SceneError(f"{path}: not a scene: JSON nested too deeply") from None
+    except ValueError as e:  # e.g. an integer literal past Python's digit limit
+        raise SceneError(f"{path}: not valid JSON: {e}") from None
     if not isinstance(data, dict):
         raise SceneError(f"{path}: the scene must be a JSON object with 'shapes' and 'queries'")
     for key in data:

@@ -17,6 +17,9 @@ from __future__ import annotations
 
 from typing import Iterable, Sequence
 
+import functools
+import numbers
+
 import numpy as np
 
 from . import _core
@@ -98,6 +101,46 @@ def _group_key(kind: str, arrays: list[np.ndarray]):
 # ------------------------------------------------------------------------------------------
 # bounding volumes (vectorized): boxes [lo, hi] and balls (center, radius), sweeps included
 # ------------------------------------------------------------------------------------------
+def _overflow_handled():
+    """Overflow and inf - inf are handled where they matter (_norm, _conservative): no warnings."""
+    return np.errstate(over="ignore", invalid="ignore")
+
+
+def _quiet(fn):
+    @functools.wraps(fn)
+    def quiet(*args, **kwargs):
+        with _overflow_handled():
+            return fn(*args, **kwargs)
+    return quiet
+
+
+def _norm(v: np.ndarray, axis: int = -1) -> np.ndarray:
+    """Euclidean norms along `axis` that overflow only where the norm itself does (a vector of
+    1e200 has norm 1e200, not inf, as with hypot): scaled by the largest component."""
+    scale = np.abs(v).max(axis=axis, keepdims=True)
+    with _overflow_handled():
+        unit = np.where((scale > 0) & np.isfinite(scale), v / np.where(scale > 0, scale, 1.0), 0.0)
+        out = np.squeeze(scale, axis=axis) * np.sqrt((unit * unit).sum(axis=axis))
+    return np.where(np.isfinite(np.squeeze(scale, axis=axis)), out, np.inf)
+
+
+def _limit(owner: str, d) -> float:
+    """A distance limit: a real number >= 0 (strings, None and NaN are errors)."""
+    if isinstance(d, (str, bytes, bool, np.bool_)) or not isinstance(d, numbers.Real):
+        raise TypeError(f"{owner}: d must be a real number >= 0, got {d!r}")
+    d = float(d)
+    if not d >= 0:
+        raise ValueError(f"{owner}: d must be a number >= 0, got {d}")
+    return d
+
+
+def _conservative(bound: np.ndarray) -> np.ndarray:
+    """Lower bounds that rounding past overflow made NaN (inf - inf) are no bound at all: -inf,
+    so culling never drops a shape for it."""
+    return np.where(np.isnan(bound), -np.inf, bound)
+
+
+@_quiet
 def _volumes(kind: str, f: list[np.ndarray]):
     sweep = f[-1]
     if kind == "Point":
@@ -106,17 +149,18 @@ def _volumes(kind: str, f: list[np.ndarray]):
     elif kind == "Segment":
         p0, p1 = f[0], f[1]
         lo, hi = np.minimum(p0, p1), np.maximum(p0, p1)
-        center, radius = (p0 + p1) / 2, np.linalg.norm(p1 - p0, axis=1) / 2
+        center, radius = p0 / 2 + p1 / 2, _norm(p1 / 2 - p0 / 2, axis=1)
     elif kind in ("Circle", "Disk"):
         c, n, r = f[0], f[1], f[2]
-        nn = n / np.linalg.norm(n, axis=1, keepdims=True)
+        nn = n / np.abs(n).max(axis=1, keepdims=True)
+        nn = nn / _norm(nn, axis=1)[:, None]
         ext = r[:, None] * np.sqrt(np.maximum(0.0, 1.0 - nn * nn))
         lo, hi, center, radius = c - ext, c + ext, c, r.copy()
     elif kind == "Bezier":
         cp = f[0]
         lo, hi = cp.min(axis=1), cp.max(axis=1)
-        center = (lo + hi) / 2
-        radius = np.linalg.norm(cp - center[:, None, :], axis=2).max(axis=1)
+        center = lo / 2 + hi / 2
+        radius = _norm(cp - center[:, None, :], axis=2).max(axis=1)
     else:
         raise AssertionError(kind)
     # Rounding of the above is far below this pad (and the culling margin is larger still).
@@ -126,20 +170,24 @@ def _volumes(kind: str, f: list[np.ndarray]):
     return lo - grow[:, None], hi + grow[:, None], center, radius + grow
 
 
+@_quiet
 def _box_gap(lo, hi, qlo, qhi):
     gap = np.maximum(0.0, np.maximum(lo - qhi, qlo - hi))
-    return np.sqrt((gap * gap).sum(axis=-1))
+    return _norm(gap)
 
 
+@_quiet
 def _point_line_distance(points, origin, direction, ray: bool):
+    unit = direction / np.abs(direction).max()
+    unit = unit / _norm(unit)
     w = points - origin
-    dd = direction @ direction
-    t = (w @ direction) / dd
+    t = w @ unit
     if ray:
         t = np.maximum(t, 0.0)
-    return np.linalg.norm(w - t[..., None] * direction, axis=-1)
+    return _norm(w - t[..., None] * unit)
 
 
+@_quiet
 def _morton(points: np.ndarray) -> np.ndarray:
     lo, hi = points.min(axis=0), points.max(axis=0)
     span = np.where(hi > lo, hi - lo, 1.0)
@@ -175,17 +223,17 @@ class _Query:
             self.lo, self.hi, self.center, self.radius = lo[0], hi[0], c[0], float(r[0])
             self.size = float(np.abs(self.center).max() + self.radius)
 
+    @_quiet
     def node_bound(self, lo, hi):
         """Lower bounds on the distance to anything inside the boxes [lo, hi]."""
+        center = lo / 2 + hi / 2
+        half = _norm(hi / 2 - lo / 2)
         if self.unbounded:
-            center = (lo + hi) / 2
-            half = np.linalg.norm(hi - lo, axis=-1) / 2
-            return _point_line_distance(center, self.origin, self.direction, self.ray) - half - self.sweep
+            return _conservative(_point_line_distance(center, self.origin, self.direction, self.ray) - half - self.sweep)
         gap = _box_gap(lo, hi, self.lo, self.hi)
-        center = (lo + hi) / 2
-        half = np.linalg.norm(hi - lo, axis=-1) / 2
-        return np.maximum(gap, np.linalg.norm(center - self.center, axis=-1) - half - self.radius)
+        return _conservative(np.maximum(gap, _norm(center - self.center) - half - self.radius))
 
+    @_quiet
     def item_bound(self, lo, hi, center, radius):
         """Lower bounds on the distance to shapes with these boxes and balls (inf radius: unbounded)."""
         bounded = np.isfinite(radius)
@@ -193,12 +241,12 @@ class _Query:
         if self.unbounded:
             out[bounded] = (_point_line_distance(center[bounded], self.origin, self.direction, self.ray)
                             - radius[bounded] - self.sweep)
-            return out
+            return _conservative(out)
         out[bounded] = np.maximum(
             _box_gap(lo[bounded], hi[bounded], self.lo, self.hi),
-            np.linalg.norm(center[bounded] - self.center, axis=-1) - radius[bounded] - self.radius)
+            _norm(center[bounded] - self.center) - radius[bounded] - self.radius)
         # A bounded query against a line or ray of the scene: the line's distance to the query's ball.
-        return out
+        return _conservative(out)
 
 
 class Scene:
@@ -301,6 +349,7 @@ class Scene:
             raise KeyError(f"Scene: no shape named {name!r}") from None
 
     # ---- the hierarchy ---------------------------------------------------------------------
+    @_quiet
     def _build(self):
         if self._built is not None:
             return self._built
@@ -333,7 +382,7 @@ class Scene:
         if len(b.bounded):
             lo, hi = b.lo[b.bounded], b.hi[b.bounded]
             b.scale = float(np.abs(np.concatenate([lo, hi])).max() + (hi - lo).max())
-            order = b.bounded[np.argsort(_morton((lo + hi) / 2), kind="stable")]
+            order = b.bounded[np.argsort(_morton(lo / 2 + hi / 2), kind="stable")]
             b.leaf_items = order
             starts = np.arange(0, len(order), LEAF)
             levels = [(np.minimum.reduceat(b.lo[order], starts), np.maximum.reduceat(b.hi[order], starts))]
@@ -392,8 +441,9 @@ class Scene:
             item = items[i]
             ray = b.groups[b.group[item]].kind == "Ray"
             d = _point_line_distance(q.center, b.line_origin[item], b.line_direction[item], ray)
-            bound[i] = d - q.radius - b.sweep[item]
-        return bound
+            with _overflow_handled():
+                bound[i] = d - q.radius - b.sweep[item]
+        return _conservative(bound)
 
     def _margin(self, q: _Query, limit: float) -> float:
         b = self._built
@@ -439,9 +489,11 @@ class Scene:
         same as sorting every distance (brute force)."""
         shape, skip = self._resolve(shape)
         skip |= {self._lookup(n) for n in exclude}
+        if isinstance(k, (bool, np.bool_)) or not isinstance(k, (int, np.integer)):
+            raise TypeError(f"Scene.nearest: k must be an integer >= 1, got {k!r}")
         k = int(k)
         if k < 1:
-            raise ValueError(f"Scene.nearest: k must be >= 1, got {k}")
+            raise ValueError(f"Scene.nearest: k must be an integer >= 1, got {k}")
         b = self._build()
         q = _Query(shape)
         self._check_kinds(q.kind)
@@ -520,9 +572,7 @@ class Scene:
         """Names of the scene shapes within distance d of `shape` (a shape, or the name of a scene
         shape, then left out), in insertion order: those for which circledist.within holds."""
         shape, skip = self._resolve(shape)
-        d = float(d)
-        if not d >= 0:
-            raise ValueError(f"Scene.within: d must be a number >= 0, got {d}")
+        d = _limit("Scene.within", d)
         b = self._build()
         q = _Query(shape)
         self._check_kinds(q.kind)
@@ -537,9 +587,7 @@ class Scene:
     def pairs_within(self, d: float) -> list[tuple[str, str]]:
         """Every pair of scene shapes within distance d of each other, as (name_i, name_j) with i
         added before j, sorted by (i, j): the pairs for which circledist.within holds."""
-        d = float(d)
-        if not d >= 0:
-            raise ValueError(f"Scene.pairs_within: d must be a number >= 0, got {d}")
+        d = _limit("Scene.pairs_within", d)
         b = self._build()
         supported = _supported()
         kinds = [g.kind for g in b.groups]
@@ -600,8 +648,9 @@ class Scene:
         same = (na == nb)[:, None, None]
         ok = (ia < count) & (ib < count) & (~same | (ia < ib))
         ia, ib = b.leaf_items[ia[ok]], b.leaf_items[ib[ok]]
-        gap = np.maximum(_box_gap(b.lo[ia], b.hi[ia], b.lo[ib], b.hi[ib]),
-                         np.linalg.norm(b.center[ia] - b.center[ib], axis=1) - b.radius[ia] - b.radius[ib])
+        with _overflow_handled():
+            gap = _conservative(np.maximum(_box_gap(b.lo[ia], b.hi[ia], b.lo[ib], b.hi[ib]),
+                                           _norm(b.center[ia] - b.center[ib]) - b.radius[ia] - b.radius[ib]))
         keep = gap <= limit
         return ia[keep], ib[keep]
 

@@ -104,21 +104,47 @@ inline bool all_finite(const double* p, Index n) {
   return (carry >> 63) == 0;
 }
 
+// Real numbers only: NumPy would turn complex values (dropping the imaginary part), datetime64
+// values and numeric strings into float64 without a word. Object arrays are accepted when every
+// element is a real number (numbers.Real: Fractions, mpmath numbers); None is not.
+inline bool is_real_array(const py::object& given) {
+  const std::string kind = py::str(given.attr("dtype").attr("kind"));
+  if (kind == "f" || kind == "i" || kind == "u") return true;
+  if (kind != "O") return false;
+  const py::object real = py::module_::import("numbers").attr("Real");
+  for (py::handle x : given.attr("flat"))
+    if (!py::isinstance(x, real)) return false;
+  return true;
+}
+
+// A shape is a value: its fields are private read-only copies, so neither the caller's array nor
+// the shape's own attributes can change a validated shape afterwards.
+inline py::object frozen_copy(const py::module_& numpy, const py::object& given, const char* dtype) {
+  py::object out = numpy.attr("array")(given, py::arg("dtype") = dtype, py::arg("order") = "C", py::arg("copy") = true);
+  out.attr("setflags")(py::arg("write") = false);
+  return out;
+}
+
 inline Field make_field(const char* owner, const char* name, py::handle value, Index width, Check check) {
   Field f{name, {}, {}, width};
   py::object converted;
+  bool real = false;
   try {
     const py::module_ numpy = py::module_::import("numpy");
     const py::object given = numpy.attr("asarray")(value);
-    f.single = py::object(given.attr("dtype")).equal(numpy.attr("dtype")("float32"));
-    // np.longdouble is kept as it is where it is wider than float64 (x86's 80-bit format).
-    if (py::object(given.attr("dtype")).equal(numpy.attr("dtype")("longdouble")) &&
-        std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
-      f.wide = Field::Wide::ensure(given), f.is_wide = true;
-    converted = numpy.attr("asarray")(given, py::arg("dtype") = "float64");
+    real = is_real_array(given);
+    if (real) {
+      f.single = py::object(given.attr("dtype")).equal(numpy.attr("dtype")("float32"));
+      // np.longdouble is kept as it is where it is wider than float64 (x86's 80-bit format).
+      if (py::object(given.attr("dtype")).equal(numpy.attr("dtype")("longdouble")) &&
+          std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
+        f.wide = Field::Wide::ensure(frozen_copy(numpy, given, "longdouble")), f.is_wide = true;
+      converted = frozen_copy(numpy, given, "float64");
+    }
   } catch (py::error_already_set&) {
-    throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
+    real = false;
   }
+  if (!real) throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
   f.array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(converted);
   if (!f.array) {
     PyErr_Clear();

@@ -231,13 +231,22 @@ void sample_points(const BezierCurve3<Real>& b, const R&, const Visit& visit) {
   visit(b.at(Real(0.5)));
 }
 
-// The pair's length scale: the sizes and the separation of the bounding balls.
-template <class Real, class A> Real pair_scale(const Ball<Real>& ball_a, const A& a, const Ball<Real>& ball_b) {
-  Real s = ball_b.radius;
-  if (ball_a.bounded()) {
-    s = std::max({s, ball_a.radius, (ball_a.center - ball_b.center).norm()});
-  } else if constexpr (is_linear_v<A>) {
-    s = std::max(s, point_linear_distance(ball_b.center, as_linear(a)));
+// The pair's length scale (for tolerances): the sizes and the separation of the bounding balls;
+// a line or ray (unbounded) counts by its distance from the other's center, two of them by the
+// separation of their origins. (Not 1: a scene of size 1e-20 would get a tolerance of 1e-14.)
+template <class Real, class A, class B>
+Real pair_scale(const Ball<Real>& ball_a, const A& a, const Ball<Real>& ball_b, const B& b) {
+  Real s = 0;
+  if (ball_a.bounded() && ball_b.bounded()) {
+    s = std::max({ball_a.radius, ball_b.radius, (ball_a.center - ball_b.center).norm()});
+  } else if (ball_b.bounded()) {
+    if constexpr (is_linear_v<core_t<A>>)
+      s = std::max(ball_b.radius, point_linear_distance(ball_b.center, as_linear(core(a))) + sweep_of(a));
+  } else if (ball_a.bounded()) {
+    if constexpr (is_linear_v<core_t<B>>)
+      s = std::max(ball_a.radius, point_linear_distance(ball_a.center, as_linear(core(b))) + sweep_of(b));
+  } else {
+    s = (ball_a.center - ball_b.center).norm() + sweep_of(a) + sweep_of(b);
   }
   return s > 0 ? s : Real(1);
 }
@@ -247,7 +256,7 @@ template <class A, class R> DistanceBounds<scalar_t<R>> bounds_against_round(con
   using Real = scalar_t<R>;
   DistanceBounds<Real> out;
   const Ball<Real> ball_a = bounding_ball(a), ball_b = bounding_ball(b);
-  out.scale = pair_scale(ball_a, a, ball_b);
+  out.scale = pair_scale(ball_a, a, ball_b, b);
   // Lower: balls.
   if (ball_a.bounded()) {
     const Real apart = (ball_a.center - ball_b.center).norm();

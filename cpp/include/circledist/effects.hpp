@@ -99,19 +99,16 @@ template <class Real> Verdict judge(const DistanceBounds<Real>& b, Real limit) {
 
 // The pair's length scale when no bounds were computed (closed-form pairs).
 template <class A, class B> scalar_t<core_t<A>> plain_scale(const A& a, const B& b) {
-  using Real = scalar_t<core_t<A>>;
-  const Ball<Real> ba = bounding_ball(a), bb = bounding_ball(b);
-  if (!ba.bounded() || !bb.bounded()) return Real(1);
-  const Real s = std::max({ba.radius, bb.radius, (ba.center - bb.center).norm()});
-  return s > 0 ? s : Real(1);
+  return pair_scale(bounding_ball(a), a, bounding_ball(b), b);
 }
 
 template <class A, class B> constexpr bool pair_has_bounds_v = has_bounds_v<core_t<A>, core_t<B>>;
 
-// The distance when it is at most d (+ tol), +inf otherwise: the exact distance is evaluated
-// only when the bounds cannot show it exceeds d. (What a nearest-neighbour search asks.)
-template <class Roots = DefaultRoots, class A, class B>
-scalar_t<core_t<A>> distance_if_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+namespace detail {
+
+// distance_if_within() and within() on shapes in double or wider, of a moderate scene size.
+template <class Roots, class A, class B>
+scalar_t<core_t<A>> moderate_distance_if_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
   using Real = scalar_t<core_t<A>>;
   Stats& st = stats();
   ++st.within;
@@ -136,8 +133,7 @@ scalar_t<core_t<A>> distance_if_within(const A& a, const B& b, scalar_t<core_t<A
   return D <= d + touch_tolerance(scale + d) ? D : inf;
 }
 
-// distance(a, b) <= d + tol, deciding by bounds where they suffice.
-template <class Roots = DefaultRoots, class A, class B> bool within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+template <class Roots, class A, class B> bool moderate_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
   using Real = scalar_t<core_t<A>>;
   Stats& st = stats();
   ++st.within;
@@ -159,6 +155,54 @@ template <class Roots = DefaultRoots, class A, class B> bool within(const A& a, 
   }
   ++st.distances;
   return circledist::distance<counted_t<Roots>>(a, b) <= d + touch_tolerance(scale + d);
+}
+
+// The effects' front end, as query.hpp's is distance()'s: float shapes are decided in double, and
+// a scene out of the moderate size range (the bounds square coordinates: at 1e155 a scale of inf
+// made every pair "within") is scaled by a power of two first. within() is invariant under the
+// scaling: D, d and the tolerance scale alike.
+template <class S> auto promoted_shape(const S& s) { return promoted(s); }
+template <class S> auto promoted_shape(const Swept<S>& s) { return swept(promoted(s.shape), double(s.sweep)); }
+template <class S> S scaled_shape(const S& s, int e) { return scaled(s, e); }
+template <class S> Swept<S> scaled_shape(const Swept<S>& s, int e) { return {scaled(s.shape, e), std::ldexp(s.sweep, e)}; }
+template <class A, class B>
+constexpr bool promotable_pair_v = promotable<core_t<A>>::value && promotable<core_t<B>>::value;
+template <class A, class B>
+constexpr bool scalable_pair_v = scalable<core_t<A>>::value && scalable<core_t<B>>::value;
+
+}  // namespace detail
+
+// The distance when it is at most d (+ tol), +inf otherwise: the exact distance is evaluated
+// only when the bounds cannot show it exceeds d. (What a nearest-neighbour search asks.)
+template <class Roots = DefaultRoots, class A, class B>
+scalar_t<core_t<A>> distance_if_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+  using Real = scalar_t<core_t<A>>;
+  if constexpr (detail::promotable_pair_v<A, B>) {
+    return Real(distance_if_within<Roots>(detail::promoted_shape(a), detail::promoted_shape(b), double(d)));
+  } else {
+    if constexpr (detail::scalable_pair_v<A, B>) {
+      const int e = detail::scene_exponent(core(a), core(b));
+      if (e != 0)
+        return std::ldexp(detail::moderate_distance_if_within<Roots>(detail::scaled_shape(a, e), detail::scaled_shape(b, e),
+                                                                     std::ldexp(d, e)),
+                          -e);
+    }
+    return detail::moderate_distance_if_within<Roots>(a, b, d);
+  }
+}
+
+// distance(a, b) <= d + tol, deciding by bounds where they suffice.
+template <class Roots = DefaultRoots, class A, class B> bool within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+  if constexpr (detail::promotable_pair_v<A, B>) {
+    return within<Roots>(detail::promoted_shape(a), detail::promoted_shape(b), double(d));
+  } else {
+    if constexpr (detail::scalable_pair_v<A, B>) {
+      const int e = detail::scene_exponent(core(a), core(b));
+      if (e != 0)
+        return detail::moderate_within<Roots>(detail::scaled_shape(a, e), detail::scaled_shape(b, e), std::ldexp(d, e));
+    }
+    return detail::moderate_within<Roots>(a, b, d);
+  }
 }
 
 // Whether the shapes touch or overlap: within(a, b, 0).

@@ -1,0 +1,179 @@
+"""Issue 15's input items: a shape made without its constructor is a TypeError (not a crash),
+shapes are values (no aliasing of the caller's arrays, read-only fields), only real numbers are
+accepted, errors are clear, Scene bounds stay conservative at every magnitude, and the CLI answers
+bad files with its one-line error. Each crash-prone call runs in a child process so that a
+regression fails the test instead of taking pytest down."""
+
+import json
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+cd = pytest.importorskip("circledist")
+cli = pytest.importorskip("circledist.cli")
+
+PROBE = cd.Circle([0.3, -0.7, 2.5], [0.0, 1.0, 1.0], 0.5)
+KINDS = {
+    "Point": ([1.0, 2.0, 3.0],),
+    "Line": ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]),
+    "Ray": ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]),
+    "Segment": ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]),
+    "Circle": ([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0),
+    "Disk": ([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0),
+    "Bezier": ([[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.0]],),
+}
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+@pytest.mark.parametrize("use", ["repr(p)", "p.kind", "p.batch_shape", "p.sweep", "cd.distance(p, cd.Point([0, 0, 5]))",
+                                 "cd.closest_points(cd.Point([0, 0, 5]), p)", "cd.within(p, p, 1.0)",
+                                 "cd.intersects(p, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))"])
+def test_shape_without_constructor_is_a_type_error(kind, use):
+    code = (f"import circledist as cd\np = cd.{kind}.__new__(cd.{kind})\n"
+            f"try:\n    {use}\nexcept TypeError as e:\n    print('TypeError', e)\n")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.startswith("TypeError") and "not initialized" in proc.stdout, proc.stdout
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_fields_are_read_only_copies(kind):
+    args = [np.array(a, dtype=float) for a in KINDS[kind]]
+    shape = getattr(cd, kind)(*args)
+    before = cd.distance(shape, PROBE)
+    for a in args:
+        a[...] = 0.0 if a.ndim == 0 else 7.0  # the caller's arrays change ...
+    assert cd.distance(shape, PROBE) == before  # ... the shape does not
+    for name in ("sweep",) + tuple(n for n in ("p", "origin", "direction", "p0", "p1", "center", "normal", "radius",
+                                                "control_points") if hasattr(shape, n)):
+        field = getattr(shape, name)
+        with pytest.raises(ValueError, match="read-only"):
+            field[...] = 0
+
+
+def test_batch_fields_do_not_alias():
+    a = np.zeros((2, 3))
+    p = cd.Point(a)
+    a[0, 0] = 5
+    np.testing.assert_array_equal(cd.distance(p, cd.Point([0, 0, 0])), [0.0, 0.0])
+    c = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    with pytest.raises(ValueError):
+        c.normal[:] = 0
+    with pytest.raises(ValueError):
+        c.radius[...] = -1
+    assert cd.distance(c, cd.Point([0, 0, 2])) == pytest.approx(math.sqrt(5), rel=1e-15)
+
+
+@pytest.mark.parametrize("value", [
+    [0, 0, 3 + 4j], np.array([1, 2, 3], dtype=complex), np.array([1, 2, 3], dtype="datetime64[s]"),
+    np.array([1, 2, 3], dtype="timedelta64[s]"), ["1", "2", "3"], np.array(["1", "2", "3"]), [b"1", b"2", b"3"],
+    [None, None, None], [1.0, None, 2.0], [True, False, True], [1.0, "x", 2.0]])
+def test_only_real_numbers(value):
+    with pytest.raises(ValueError, match="Point: p must be a real number array"):
+        cd.Point(value)
+
+
+@pytest.mark.parametrize("value", [3 + 4j, np.complex64(1), np.datetime64(1, "s"), "1", b"1", None, True])
+def test_only_real_scalars(value):
+    with pytest.raises(ValueError, match="Circle: radius must be a real number array"):
+        cd.Circle([0, 0, 0], [0, 0, 1], value)
+
+
+def test_real_objects_are_accepted():
+    from fractions import Fraction
+    assert cd.distance(cd.Point([Fraction(1, 2), 0, 0]), cd.Point([0, 0, 0])) == 0.5
+    assert cd.distance(cd.Point(np.array([1, 2, 2], dtype=np.int8)), [0, 0, 0]) == 3.0
+
+
+def test_limit_errors_are_clear():
+    a, b = cd.Point([0, 0, 0]), cd.Point([0, 0, 1])
+    with pytest.raises(ValueError, match="within: d must be a real number array"):
+        cd.within(a, b, None)
+    with pytest.raises(ValueError, match="within: d must be a real number array"):
+        cd.within(a, b, "1")
+    with pytest.raises(ValueError, match="within: d contains NaN or inf"):
+        cd.within(a, b, float("nan"))
+
+
+def test_scene_nearest_k_is_checked():
+    s = cd.Scene([("a", cd.Point([0, 0, 1])), ("b", cd.Point([0, 0, 2]))])
+    for bad in (float("nan"), 1.7, "2", None, True):
+        with pytest.raises(TypeError, match="k must be an integer"):
+            s.nearest(cd.Point([0, 0, 0]), k=bad)
+    with pytest.raises(ValueError, match="k must be an integer >= 1"):
+        s.nearest(cd.Point([0, 0, 0]), k=0)
+    assert s.nearest(cd.Point([0, 0, 0]), k=np.int64(2)) == [("a", 1.0), ("b", 2.0)]
+    for bad in (None, "5"):
+        with pytest.raises(TypeError, match="d must be a real number"):
+            s.within(cd.Point([0, 0, 0]), bad)
+
+
+@pytest.mark.parametrize("far", [1e155, 1e200, 1e300, 1.7e308, -1e300])
+def test_scene_bounds_stay_conservative_with_far_shapes(far):
+    """One far shape must not overflow the hierarchy's bounds into culling the near ones."""
+    near = {"seg": cd.Segment([1, 0, 0], [1, 1, 0]), "ring": cd.Circle([0, 3, 0], [0, 0, 1], 1.0),
+            "coin": cd.Disk([0, 0, -2], [1, 1, 1], 0.5)}
+    shapes = dict(near)
+    shapes["far"] = cd.Point([far, 0, 0])
+    shapes["far ring"] = cd.Circle([far, far, 0], [0, 0, 1], abs(far) / 10)
+    shapes["far line"] = cd.Line([far, 0, far], [1e-200, 1, 0])
+    s = cd.Scene(list(shapes.items()))
+    q = cd.Point([0, 0, 0])
+    brute = [n for n, sh in shapes.items() if cd.within(q, sh, 5.0)]
+    assert s.within(q, 5.0) == brute == ["seg", "ring", "coin"]
+    assert s.nearest(q, k=3) == sorted(((n, cd.distance(q, sh)) for n, sh in near.items()), key=lambda x: x[1])
+    pairs = s.pairs_within(5.0)
+    assert ("seg", "ring") in pairs and ("seg", "coin") in pairs
+
+
+@pytest.mark.parametrize("text,message", [
+    ('{"shapes": [{"name": "a", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1' + "0" * 400
+     + "}]}", "field 'radius': must be a finite number"),
+    ("[" * 100000 + "]" * 100000, "nested too deeply"),
+])
+def test_cli_bad_files_give_the_one_line_error(tmp_path, capsys, text, message):
+    path = tmp_path / "scene.json"
+    path.write_text(text)
+    assert cli.main([str(path), "--no-plot"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("circledist: error:") and message in err and "Traceback" not in err
+
+
+def test_cli_non_utf8_file(tmp_path, capsys):
+    path = tmp_path / "scene.json"
+    path.write_bytes(b'{"shapes": [\xff\xfe]}')
+    assert cli.main([str(path), "--no-plot"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("circledist: error:") and "UTF-8" in err
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e-200, 1e-155, 1e-40, 1e-20, 1e20, 1e155, 1e200, 1e300])
+@pytest.mark.parametrize("precision", ["float64", "longdouble"])
+def test_effects_at_extreme_scales(scale, precision):
+    """within / intersects / distance_if_within agree with the distance at every magnitude (a scale
+    of inf from an overflowed |c_a - c_b| made every pair 'within')."""
+    q = cd.Point([0, 0, 0])
+    shapes = [(cd.Point([3 * scale, 4 * scale, 0]), 5 * scale),
+              (cd.Circle([0, 0, 6 * scale], [0, 0, 1], scale), math.sqrt(37) * scale),
+              (cd.Line([0, 2 * scale, 0], [1e-200, 0, 1]), 2 * scale),
+              (cd.Segment([2 * scale, -scale, 0], [2 * scale, scale, 0]), 2 * scale),
+              (cd.Disk([0, 0, 2 * scale], [0, 1e200, 1e200], scale), math.sqrt(2 + (math.sqrt(2) - 1) ** 2) * scale)]
+    for shape, truth in shapes:
+        for a, b in ((q, shape), (shape, q)):
+            assert cd.distance(a, b, precision=precision) == pytest.approx(truth, rel=1e-14)
+            for d, expected in ((truth / 2, False), (truth * 0.999, False), (truth * 1.001, True), (truth * 2, True)):
+                assert bool(cd.within(a, b, d, precision=precision)) is expected, (shape, d)
+                got = cd.distance_if_within(a, b, d, precision=precision)
+                assert (got == pytest.approx(truth, rel=1e-14)) if expected else got == math.inf
+            assert bool(cd.intersects(a, b, precision=precision)) is False
+
+
+def test_float32_effects_past_float_squares():
+    a = cd.Point(np.float32([0, 0, 0]))
+    b = cd.Point(np.float32([3e20, 4e20, 0]))
+    assert cd.distance(a, b) == np.float32(5e20)
+    assert bool(cd.within(a, b, np.float32(6e20))) and not bool(cd.within(a, b, np.float32(4e20)))
+    assert cd.distance_if_within(a, b, np.float32(6e20)) == np.float32(5e20)
