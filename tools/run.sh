@@ -4,7 +4,9 @@
 #   bash tools/run.sh test   install what is missing, build the package, run pytest and the C++ tests (ctest)
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
-#                            mode over N cases (default 10^7; docs/fuzz_report.json)
+#                            mode over N cases (default 10^7; docs/fuzz_report.json), then the
+#                            differential accuracy test's long mode over N queries
+#                            (docs/differential_report.json)
 # Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
 # from apt when missing; Python packages go into ./.venv (which sees the system's site-packages).
 set -euo pipefail
@@ -43,7 +45,7 @@ case "$task" in
   demo) have matplotlib || need+=(matplotlib) ;;
   test) for req in pytest:pytest hypothesis:hypothesis mpmath:mpmath matplotlib:matplotlib; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
   bench) for req in mpmath:mpmath matplotlib:matplotlib distance3d:distance3d; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
-  fuzz) ;;
+  fuzz) for req in mpmath:mpmath; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
 esac
 [ ${#need[@]} -eq 0 ] || { echo "== installing from PyPI: ${need[*]}"; pip_install "${need[@]}"; }
 
@@ -74,8 +76,11 @@ case "$task" in
     exit $status
     ;;
   fuzz)
+    status=0
     "$py" tools/fuzz_crash.py --cases "${2:-10000000}" --chunk 200000 --batched --timeout 1800 \
-      --report docs/fuzz_report.json
+      --report docs/fuzz_report.json || status=$?
+    "$py" tools/differential.py --queries "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
+    exit $status
     ;;
   bench)
     cpp_build -DCIRCLEDIST_BUILD_BENCH=ON

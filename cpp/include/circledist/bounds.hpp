@@ -28,6 +28,7 @@ template <class Real> struct DistanceBounds {
   Real lower = 0;                                         // the distance is >= lower
   Real upper = std::numeric_limits<Real>::infinity();     // the distance is <= upper
   Real scale = 1;                                         // the pair's length scale (for tolerances)
+  Real rounding = 0;  // what rounding of the shapes' coordinates can move the bounds by (far points)
 };
 
 // A ball holding the shape; radius +inf for unbounded shapes (lines, rays).
@@ -290,6 +291,23 @@ template <class A, class R> DistanceBounds<scalar_t<R>> bounds_against_round(con
 template <class A, class B>
 constexpr bool has_bounds_v = (is_round_v<A> || is_round_v<B>) && !is_point_v<A> && !is_point_v<B>;
 
+// A shape moved by -anchor: only its points move (directions, normals and radii stay).
+template <class Real> Vec3<Real> moved_by(const Vec3<Real>& p, const Vec3<Real>& o) { return p - o; }
+template <class Real> Line3<Real> moved_by(const Line3<Real>& l, const Vec3<Real>& o) { return {l.origin - o, l.direction}; }
+template <class Real> Ray3<Real> moved_by(const Ray3<Real>& r, const Vec3<Real>& o) { return {r.origin - o, r.direction}; }
+template <class Real> Segment3<Real> moved_by(const Segment3<Real>& s, const Vec3<Real>& o) { return {s.p0 - o, s.p1 - o}; }
+template <class Real> Circle3<Real> moved_by(const Circle3<Real>& c, const Vec3<Real>& o) {
+  return {c.center - o, c.normal, c.radius};
+}
+template <class Real> Disk3<Real> moved_by(const Disk3<Real>& d, const Vec3<Real>& o) {
+  return {d.center - o, d.normal, d.radius};
+}
+template <class Real> BezierCurve3<Real> moved_by(const BezierCurve3<Real>& b, const Vec3<Real>& o) {
+  BezierCurve3<Real> out = b;
+  out.control.colwise() -= o;
+  return out;
+}
+
 // Bounds on the distance between the cores of a and b, then the sweeps taken off.
 template <class A, class B> DistanceBounds<scalar_t<core_t<A>>> distance_bounds(const A& a, const B& b) {
   using Real = scalar_t<core_t<A>>;
@@ -297,10 +315,22 @@ template <class A, class B> DistanceBounds<scalar_t<core_t<A>>> distance_bounds(
   using CB = core_t<B>;
   static_assert(has_bounds_v<CA, CB>, "circledist: no bounds for this pair of shapes");
   DistanceBounds<Real> out;
+  // In a frame at the round's center (each coordinate rounded once, exactly where the shapes are
+  // near it): in world coordinates a scene 5e10 from the origin carries eps * 5e10 = 1e-5 into
+  // every bound, and a gap of 1e-6 was decided 'within' by an upper bound below it.
+  // What is still far from it (a line's origin 1e11 along the line, a far control point) carries
+  // its coordinates' rounding into the bounds: `rounding`, which judge() adds to its margin.
+  const auto frame_bounds = [&](const auto& piece, const auto& round) {
+    const Vec3<Real> anchor = round.center;
+    const auto moved = moved_by(piece, anchor);
+    DistanceBounds<Real> bounds = bounds_against_round(moved, moved_by(round, anchor));
+    bounds.rounding = 64 * std::numeric_limits<Real>::epsilon() * std::max(extent(moved), round.radius);
+    return bounds;
+  };
   if constexpr (is_round_v<CB>) {
-    out = bounds_against_round(core(a), core(b));
+    out = frame_bounds(core(a), core(b));
   } else {
-    out = bounds_against_round(core(b), core(a));
+    out = frame_bounds(core(b), core(a));
   }
   const Real ra = sweep_of(a), rb = sweep_of(b);
   out.lower = (out.lower - ra) - rb;

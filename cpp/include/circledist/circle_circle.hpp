@@ -194,15 +194,27 @@ template <class Real> Real circle_round_scale(const LocalCircle<Real>& c, Real r
   return s > 0 ? s : Real(1);
 }
 
-// The smallest distance over the eight angles t = k pi/4 (exact cosines and sines, no
-// trigonometric calls), from `squared(P)`, the squared distance of a local point: a distance that
-// A reaches, an upper bound on its minimum to prune with (one square root, not sixteen).
-template <class Real, class Squared> Real sampled_distance(const LocalCircle<Real>& c, const Squared& squared) {
+// The smallest and largest distances over the eight angles t = k pi/4 (exact cosines and sines,
+// no trigonometric calls), from `squared(P)`, the squared distance of a local point: the smallest
+// is a distance that A reaches, an upper bound on its minimum to prune with (one square root, not
+// sixteen); the largest tells nearly coincident circles (circle-circle's solve).
+template <class Real> struct SampledDistances {
+  Real best, worst;
+};
+template <class Real, class Squared>
+SampledDistances<Real> sampled_distances(const LocalCircle<Real>& c, const Squared& squared) {
   const Real k = Real(0.7071067811865475244008443621048490392848359376884740365883398689953662L);
   const Real angle[8][2] = {{1, 0}, {k, k}, {0, 1}, {-k, k}, {-1, 0}, {-k, -k}, {0, -1}, {k, -k}};
-  Real best = std::numeric_limits<Real>::infinity();
-  for (const auto& cs : angle) best = std::min(best, squared(Vec3<Real>(c.center + cs[0] * c.e1 + cs[1] * c.e2)));
-  return std::sqrt(best);
+  Real best = std::numeric_limits<Real>::infinity(), worst = 0;
+  for (const auto& cs : angle) {
+    const Real q = squared(Vec3<Real>(c.center + cs[0] * c.e1 + cs[1] * c.e2));
+    best = std::min(best, q);
+    worst = std::max(worst, q);
+  }
+  return {std::sqrt(best), std::sqrt(worst)};
+}
+template <class Real, class Squared> Real sampled_distance(const LocalCircle<Real>& c, const Squared& squared) {
+  return sampled_distances(c, squared).best;
 }
 
 // Where on A the distance h to the ring can be at most `bound`, as intervals of u = tan(t/2)
@@ -479,7 +491,7 @@ Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>
 // best of eight samples (or the caller's `bound`, a distance some point is known to reach).
 template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
   static constexpr bool defined = true;
-  using Starts = Candidates<Real, kMaxDegree + 8>;
+  using Starts = Candidates<Real, kMaxDegree + 16>;
 
   template <class Roots>
   static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
@@ -487,7 +499,15 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     Starts starts;
     push_circle_candidates(starts);
     const auto squared = [&](const Vec3<Real>& p) { return ring_distance_squared(p, radius); };
-    push_circle_ring_roots<Roots>(c, radius, scale, std::min(bound, sampled_distance(c, squared)), starts);
+    const SampledDistances<Real> samples = sampled_distances(c, squared);
+    push_circle_ring_roots<Roots>(c, radius, scale, std::min(bound, samples.best), starts);
+    // Nearly coincident circles (every sample within 1e-3 scale of the ring): the octic is
+    // rounding noise over the whole circle and its roots say nothing (two circles 1e-12 apart
+    // in center and 4e-10 in tilt were answered 30 times too far). The distance there is a
+    // trigonometric polynomial of low degree in t with few, wide minima, so the eight sample
+    // angles, polished on the exact distance, reach them.
+    if (samples.worst <= Real(1e-3) * scale)
+      for (int k = -3; k <= 4; ++k) starts.push(k * pi_v<Real>() / 4);
     const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
     const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));

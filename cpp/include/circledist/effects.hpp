@@ -91,7 +91,7 @@ enum class Verdict { No, Yes, Unknown };
 
 template <class Real> Verdict judge(const DistanceBounds<Real>& b, Real limit) {
   const Real scale = b.scale + limit;
-  const Real tol = touch_tolerance(scale), margin = bounds_margin(scale);
+  const Real tol = touch_tolerance(scale), margin = bounds_margin(scale) + b.rounding;
   if (b.lower > limit + tol + margin) return Verdict::No;
   if (b.upper + margin <= limit || b.upper <= tol / 2) return Verdict::Yes;
   return Verdict::Unknown;

@@ -150,6 +150,73 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
   return true;
 }
 
+// The closest points of a line's minimum over the ring (line_ring_minimum). `line` is the full
+// line through the piece (for a ray or a segment, the piece's own parametrization: t = param).
+template <class Real>
+Result<Real> line_ring_result(const Line3<Real>& line, const Circle3<Real>& c, const LineRingMinimum<Real>& m) {
+  Result<Real> r;
+  r.distance = m.distance;
+  r.point_a = c.center + m.line_point;
+  r.point_b = c.center + m.ring_point;
+  const Real d2 = line.direction.squaredNorm();
+  r.param_a = Vec2<Real>((m.line_point - (line.origin - c.center)).dot(line.direction) / d2, 0);
+  const Frame<Real> frame(c.normal);
+  r.param_b = Round<Real>::ring_param(frame.to_local(m.ring_point));
+  // Another pair at the same distance within rounding: the whole ring (a line on the axis), the
+  // mirror-image minimum when b1 is (nearly) zero (the mirror point bounds it from above), or
+  // a distance flat to rounding over the ring (a line within rounding of the center's axis).
+  const Real scale = std::max(c.radius, m.anchor.norm());
+  const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
+  const bool tied = mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
+  r.unique = !m.on_axis && !(tied && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale));
+  return r;
+}
+
+// A ray or segment whose full line has its minimum over the ring on the piece has that minimum
+// too: the piece is part of the line, so it is no closer, and it holds the line's closest point.
+// Then one bracketed root answers it, as for a full line; otherwise (or where the line's minimum
+// is tied with its mirror image, either of which might be the piece's) the general path does.
+// A segment's line is taken through p0 along the rounded p1 - p0, which misses p1 by about eps
+// times its length: only segments shorter than 64 radii (an error below 64 eps R) take it.
+template <class Real> struct PieceLine {
+  Line3<Real> line;
+  bool usable = true;
+};
+template <class Real> PieceLine<Real> piece_line(const Line3<Real>& l, Real) { return {l}; }
+template <class Real> PieceLine<Real> piece_line(const Ray3<Real>& r, Real) { return {{r.origin, r.direction}}; }
+template <class Real> PieceLine<Real> piece_line(const Segment3<Real>& s, Real radius) {
+  const Vec3<Real> d = s.p1 - s.p0;
+  return {{s.p0, d}, d.squaredNorm() <= 4096 * radius * radius};
+}
+
+// Whether `point` (relative to `center`) of `line` lies on the piece: its parameter on the line,
+// which is the piece's own parametrization, within [lo, hi].
+template <class Real>
+bool on_piece(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point, const Linear<Real>& piece) {
+  const Real t = (point - (line.origin - center)).dot(line.direction) / line.direction.squaredNorm();
+  return t >= piece.lo && t <= piece.hi;
+}
+
+// Whether the line's ring minimum m is tied with its mirror image (b1 near 0): which of the two
+// lies on a piece, and whether a piece's closest pair is unique, is then the general path's call.
+template <class Real> bool tied_with_mirror(const Circle3<Real>& c, const LineRingMinimum<Real>& m) {
+  if (m.on_axis) return false;
+  const Real scale = std::max(c.radius, m.anchor.norm());
+  const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
+  return mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
+}
+
+// The line's minimum over the ring for a piece: false where the general path must answer.
+// `for_closest` also leaves out ties (the piece may hold one of the pair, so be unique).
+template <class Roots, class Piece, class Real>
+bool piece_ring_minimum(const Piece& piece, const Circle3<Real>& c, Line3<Real>& line, LineRingMinimum<Real>& m,
+                        bool for_closest) {
+  const PieceLine<Real> pl = piece_line(piece, c.radius);
+  line = pl.line;
+  return pl.usable && line_ring_minimum<Roots>(line, c, m) && on_piece(line, c.center, m.line_point, as_linear(piece)) &&
+         !(for_closest && tied_with_mirror(c, m));
+}
+
 template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
   static constexpr bool defined = true;
   using General = LinearCircleQuery<Real, Line3<Real>>;
@@ -163,25 +230,30 @@ template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
   template <class Roots = DefaultRoots> static Result<Real> closest(const Line3<Real>& line, const Circle3<Real>& c) {
     LineRingMinimum<Real> m;
     if (!line_ring_minimum<Roots>(line, c, m)) return General::template closest<Roots>(line, c);
-    Result<Real> r;
-    r.distance = m.distance;
-    r.point_a = c.center + m.line_point;
-    r.point_b = c.center + m.ring_point;
-    const Real d2 = line.direction.squaredNorm();
-    r.param_a = Vec2<Real>((m.line_point - (line.origin - c.center)).dot(line.direction) / d2, 0);
-    const Frame<Real> frame(c.normal);
-    r.param_b = Round<Real>::ring_param(frame.to_local(m.ring_point));
-    // Another pair at the same distance within rounding: the whole ring (a line on the axis), the
-    // mirror-image minimum when b1 is (nearly) zero (the mirror point bounds it from above), or
-    // a distance flat to rounding over the ring (a line within rounding of the center's axis).
-    const Real scale = std::max(c.radius, m.anchor.norm());
-    const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
-    const bool tied = mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
-    r.unique = !m.on_axis && !(tied && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale));
-    return r;
+    return line_ring_result(line, c, m);
   }
 };
-template <class Real> struct Query<Ray3<Real>, Circle3<Real>> : LinearCircleQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Circle3<Real>> : LinearCircleQuery<Real, Segment3<Real>> {};
+
+// Rays and segments: the full line's answer where piece_ring_minimum allows, else the general path.
+template <class Real, class Piece> struct PieceCircleQuery : LinearCircleQuery<Real, Piece> {
+  using General = LinearCircleQuery<Real, Piece>;
+
+  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Circle3<Real>& c) {
+    Line3<Real> line;
+    LineRingMinimum<Real> m;
+    if (piece_ring_minimum<Roots>(piece, c, line, m, false)) return m.distance;
+    return General::template distance<Roots>(piece, c);
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Circle3<Real>& c) {
+    Line3<Real> line;
+    LineRingMinimum<Real> m;
+    if (piece_ring_minimum<Roots>(piece, c, line, m, true)) return line_ring_result(line, c, m);
+    return General::template closest<Roots>(piece, c);
+  }
+};
+
+template <class Real> struct Query<Ray3<Real>, Circle3<Real>> : PieceCircleQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Circle3<Real>> : PieceCircleQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

@@ -69,23 +69,81 @@ template <class Real, class Piece> struct LinearDiskQuery {
 // vanishes at the crossing, so with the crossing outside the disk (or none) its minimum over the
 // disk lies on the rim; a line parallel to the plane over the disk is as close to the rim points
 // under it as to any. So the line-circle solver from the circle's side answers it (one bracketed
-// root). Closest points keep the general path, which also reports a continuum of them.
-template <class Real> struct Query<Line3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Line3<Real>> {
-  using General = LinearDiskQuery<Real, Line3<Real>>;
+// root). A ray or segment takes the line's answer where it holds the line's point of it (the
+// crossing, or the line's closest point to the rim when the line does not cross the disk), as in
+// PieceCircleQuery; elsewhere, and for closest points of a line within sqrt(eps) of parallel to
+// the plane (which may touch a continuum), the general path answers.
+template <class Real> struct LineDiskMinimum {
+  Line3<Real> line;  // the full line through the piece
+  LineRingMinimum<Real> ring;
+  bool crosses = false;  // the line crosses the plane inside the rim, at `crossing`
+  bool parallel = false;
+  Vec3<Real> crossing = Vec3<Real>::Zero();  // relative to the center
+};
 
-  template <class Roots = DefaultRoots> static Real distance(const Line3<Real>& line, const Disk3<Real>& disk) {
-    LineRingMinimum<Real> m;
-    if (!line_ring_minimum<Roots>(line, Circle3<Real>{disk.center, disk.normal, disk.radius}, m))
-      return General::template distance<Roots>(line, disk);
-    const Real height = m.anchor.dot(m.unit_normal), slope = m.unit_direction.dot(m.unit_normal);
-    if (slope != 0) {
-      const Vec3<Real> crossing = m.anchor - (height / slope) * m.unit_direction;
-      if (crossing.squaredNorm() <= disk.radius * disk.radius) return Real(0);
+template <class Roots, class Piece, class Real>
+bool line_disk_minimum(const Piece& piece, const Disk3<Real>& disk, LineDiskMinimum<Real>& out) {
+  const PieceLine<Real> pl = piece_line(piece, disk.radius);
+  out.line = pl.line;
+  if (!pl.usable || !line_ring_minimum<Roots>(out.line, Circle3<Real>{disk.center, disk.normal, disk.radius}, out.ring))
+    return false;
+  const LineRingMinimum<Real>& m = out.ring;
+  const Real height = m.anchor.dot(m.unit_normal), slope = m.unit_direction.dot(m.unit_normal);
+  out.parallel = slope == 0;
+  if (!out.parallel) {
+    out.crossing = m.anchor - (height / slope) * m.unit_direction;
+    out.crosses = out.crossing.squaredNorm() <= disk.radius * disk.radius;
+  }
+  return true;
+}
+
+template <class Real, class Piece> struct PieceDiskQuery : LinearDiskQuery<Real, Piece> {
+  using General = LinearDiskQuery<Real, Piece>;
+
+  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Disk3<Real>& disk) {
+    LineDiskMinimum<Real> m;
+    if (line_disk_minimum<Roots>(piece, disk, m)) {
+      const Linear<Real> linear = as_linear(piece);
+      if (m.crosses) {
+        if (on_piece(m.line, disk.center, m.crossing, linear)) return Real(0);
+      } else if (on_piece(m.line, disk.center, m.ring.line_point, linear)) {
+        return m.ring.distance;
+      }
     }
-    return m.distance;
+    return General::template distance<Roots>(piece, disk);
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Disk3<Real>& disk) {
+    LineDiskMinimum<Real> m;
+    const Circle3<Real> rim{disk.center, disk.normal, disk.radius};
+    // A line within sqrt(eps) of parallel to the plane may touch the disk along a chord, or be as
+    // close to a stretch of the rim as to its closest point: the general path judges `unique`.
+    if (line_disk_minimum<Roots>(piece, disk, m) &&
+        std::abs(m.ring.unit_direction.dot(m.ring.unit_normal)) > std::sqrt(std::numeric_limits<Real>::epsilon())) {
+      const Linear<Real> linear = as_linear(piece);
+      if (m.crosses) {
+        if (on_piece(m.line, disk.center, m.crossing, linear)) {
+          // One common point: the line meets the plane once.
+          Result<Real> r;
+          r.distance = 0;
+          r.point_a = r.point_b = disk.center + m.crossing;
+          r.param_a = Vec2<Real>((m.crossing - (m.line.origin - disk.center)).dot(m.line.direction) /
+                                     m.line.direction.squaredNorm(),
+                                 0);
+          r.param_b = Round<Real>::disk_param(Frame<Real>(disk.normal).to_local(m.crossing));
+          return r;
+        }
+      } else if (on_piece(m.line, disk.center, m.ring.line_point, linear) && !tied_with_mirror(rim, m.ring)) {
+        Result<Real> r = line_ring_result(m.line, rim, m.ring);
+        r.param_b = Vec2<Real>(disk.radius, r.param_b.x());
+        return r;
+      }
+    }
+    return General::template closest<Roots>(piece, disk);
   }
 };
-template <class Real> struct Query<Ray3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Disk3<Real>> : LinearDiskQuery<Real, Segment3<Real>> {};
+template <class Real> struct Query<Line3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

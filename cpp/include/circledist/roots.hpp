@@ -21,6 +21,7 @@
 #include <Eigen/Eigenvalues>
 #include <unsupported/Eigen/Polynomials>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
@@ -117,6 +118,16 @@ Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Rea
 // The two real roots of c0 + c1 x + c2 x^2 (c2 != 0, discriminant `disc` >= 0) by the stable
 // formula: q = -(c1 + sign(c1) sqrt(disc)) / 2, roots q / c2 and c0 / q (0 when q is 0, a double
 // root at 0).
+// c0, c1, c2 scaled by one power of two (exact; the roots do not change) to a largest magnitude
+// in [1, 2): the discriminant c1^2 - 4 c2 c0 would overflow for coefficients past 1e154 and
+// vanish into the subnormals below 1e-154. Returns the discriminant of the scaled coefficients.
+template <class Real> Real balanced_quadratic(const Real* c, Real out[3]) {
+  const Real largest = std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2])});
+  const int e = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+  for (int i = 0; i < 3; ++i) out[i] = e != 0 ? std::ldexp(c[i], -e) : c[i];
+  return out[1] * out[1] - 4 * out[2] * out[0];
+}
+
 template <class Real> void stable_quadratic_roots(Real c0, Real c1, Real c2, Real disc, Real r[2]) {
   const Real q = -(c1 + std::copysign(std::sqrt(disc), c1)) / 2;
   r[0] = q / c2;
@@ -233,14 +244,15 @@ struct EigenCompanion {
     }
     if (degree == 2) {
       // Stable quadratic formula; a complex pair contributes its real part when near-real.
-      const Real disc = c[1] * c[1] - 4 * c[2] * c[0];
+      Real q[3];
+      const Real disc = detail::balanced_quadratic(c, q);
       if (disc >= 0) {
         Real r[2];
-        detail::stable_quadratic_roots(c[0], c[1], c[2], disc, r);
+        detail::stable_quadratic_roots(q[0], q[1], q[2], disc, r);
         out.push(r[0]);
         out.push(r[1]);
       } else {
-        const std::complex<Real> z(-c[1] / (2 * c[2]), std::sqrt(-disc) / (2 * std::abs(c[2])));
+        const std::complex<Real> z(-q[1] / (2 * q[2]), std::sqrt(-disc) / (2 * std::abs(q[2])));
         if (detail::near_real(z, tol)) out.push(z.real());
       }
       return;
@@ -552,16 +564,17 @@ bool isolate_roots(const Real* c, int n, Real lo, Real hi, Real rel_tol, Real* o
   }
   if (n == 2) {
     // Closed form: the stable quadratic formula, or the vertex when p nearly touches zero there.
-    const Real disc = c[1] * c[1] - 4 * c[2] * c[0];
+    Real q[3];
+    const Real disc = balanced_quadratic(c, q);
     Real r[2];
     int k = 0;
     if (disc > 0) {
-      stable_quadratic_roots(c[0], c[1], c[2], disc, r);
+      stable_quadratic_roots(q[0], q[1], q[2], disc, r);
       if (r[0] > r[1]) std::swap(r[0], r[1]);
       k = 2;
     } else {
-      const Real vertex = -c[1] / (2 * c[2]);
-      if (std::abs(horner(c, 2, vertex)) <= horner_error(c, 2, vertex)) r[k++] = vertex;
+      const Real vertex = -q[1] / (2 * q[2]);
+      if (std::abs(horner(q, 2, vertex)) <= horner_error(q, 2, vertex)) r[k++] = vertex;
     }
     for (int i = 0; i < k; ++i)
       if (r[i] >= lo && r[i] <= hi) push(r[i]);
@@ -593,10 +606,13 @@ bool isolate_roots(const Real* c, int n, Real lo, Real hi, Real rel_tol, Real* o
     const Real x = a - pa * (b - a) / (pb - pa);
     return x > a && x < b ? x : (a + b) / 2;
   };
-  const Real abs_tol = rel_tol * std::min(Real(1), (hi - lo) / 2);
+  // Relative accuracy down to the smallest normal numbers (a root of 6.7e-16 is wanted to its
+  // own digits, not to eps); the search also stops where p is zero within rounding.
+  const Real abs_tol = std::numeric_limits<Real>::min();
   Real error = 0;
   Real a = lo, pa = value_with_error(c, n, lo, error);
-  if (pa == 0) push(lo);
+  // An end where p vanishes within rounding may be a root whose value did not round to 0.
+  if (std::abs(pa) <= error) push(lo);
   for (int k = 0; k <= critical_count; ++k) {
     const Real b = k < critical_count ? critical[k] : hi;
     const Real pb = value_with_error(c, n, b, error);
@@ -606,7 +622,7 @@ bool isolate_roots(const Real* c, int n, Real lo, Real hi, Real rel_tol, Real* o
     }
     if (k < critical_count && std::abs(pb) <= error) {
       if (count == 0 || out[count - 1] != b) push(b);
-    } else if (pb == 0 && k == critical_count) {
+    } else if (k == critical_count && std::abs(pb) <= error && (count == 0 || out[count - 1] != b)) {
       push(b);
     }
     a = b;
@@ -650,19 +666,27 @@ struct Bracketing {
       lo = std::max(lo, -bound);
       hi = std::min(hi, bound);
     }
+    // isolate_roots' buffers hold degrees up to kMaxCurveDegree (the septic curve's).
     Real found[detail::kIsolateCapacity];
     int count = 0;
-    if (detail::isolate_roots(coefficients, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count,
-                              detail::kIsolateCapacity)) {
+    if (degree <= kMaxCurveDegree &&
+        detail::isolate_roots(coefficients, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count,
+                              detail::kIsolateCapacity) &&
+        count <= Capacity - out.count) {
       for (int i = 0; i < count; ++i) out.push(found[i]);
       return;
     }
-    // More sign changes than a polynomial of this degree has roots: rounding noise. The
-    // companion matrix finds every root however noisy the values; its roots are clamped into
-    // [lo, hi] (candidates, judged on the exact distance afterwards).
+    // More sign changes than a polynomial of this degree has roots (rounding noise), more values
+    // than `out` has room for (noise-level critical points of a degree-40 polynomial), or a
+    // degree beyond the buffers: the companion matrix finds every root however noisy the values;
+    // its roots are refined by Newton and clamped into [lo, hi] (candidates, judged on the
+    // exact distance afterwards).
     Candidates<Real, Capacity> all;
     EigenCompanion::roots(coefficients, degree, lo, hi, all);
-    for (int i = 0; i < all.count; ++i) out.push(std::min(std::max(all.value[i], lo), hi));
+    for (int i = 0; i < all.count; ++i) {
+      const Real x = detail::newton_on_polynomial(coefficients, degree, all.value[i]);
+      out.push(std::min(std::max(x, lo), hi));
+    }
   }
 
   // Each piece is searched on its own: the derivative chain only has its critical points there.

@@ -1,0 +1,1980 @@
+"""Differential accuracy testing of circledist (issue 14, "keep it closed"): a library module.
+
+Nothing here is a test; tests/test_differential.py (the CI slice) and tools/differential.py (the
+long mode) drive it.  Three parts:
+
+1. Case families.  ``generate(family, n, seed)`` returns ``n`` JSON-able cases
+   ``{"family", "id", "a", "a_data", "b", "b_data"}`` (kind names and plain floats; a Bezier's
+   data is a list of [x, y, z] control points) for the kind pairs the family applies to, cycling
+   through them.  Pairs are written in a canonical order (point/line/ray/segment/bezier before
+   circle/disk, circle before disk); the checker runs both argument orders.  ``FAMILIES`` lists
+   them: plain random cases and the adversarial ones of issue 14 (tangencies, lines on and near
+   the axis, coplanar and (nearly) concentric rounds, far-translated scenes, far line origins,
+   extreme radius ratios, nearly touching disks, a circle parallel to a disk at tiny heights,
+   large / far-controlled / in-plane Bezier curves, a huge circle passing a small disk).
+
+2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
+   distance is the minimum over one parameter of a closed form (point-circle, point-disk,
+   point-line): a circle's angle against the other shape (both ways round for two rounds), a
+   line's parameter against the round and the round's angle against the line, a Bezier curve's
+   t against the round (each half from its own end, so parameters near an end keep their full
+   precision).  Dense sampling, then a vectorised beam search (nested re-sampling around the
+   best few sampled local minima) in float64, then long-double levels around the best; Bezier
+   curves also get a Lipschitz branch and bound (hodograph bounds, so a basin narrower than the
+   sampling step is not lost) and their long-double stage works on pieces [t - 5e-8, t + 5e-8]
+   whose control points are computed in double-double (a curve 1e5 times larger than the round
+   is resolved to ~1e-19 of the round).  Coordinates are taken relative to the round's centre;
+   offsets between inputs (B - C, p1 - p0, P_i - C) and the anchoring of a line at its point
+   nearest the centre are computed in double-double, so far-translated scenes and far line
+   origins lose nothing.  Every value is the distance between two genuine points (up to the
+   long-double rounding reported as ``slack``), hence an UPPER bound of the true distance.  The
+   screen is a sampling method, not a proof: its misses show up as alarms the 50-digit
+   reference refutes (counted as "refuted", never as findings).
+
+3. The checker (``check_cases``): for every (solver, precision) combination and both argument
+   orders it calls distance, closest_points, within, distance_if_within and intersects, batched
+   and (for the chosen cases) scalar, and reports findings: answers above the screen's bound or
+   below every verified bound (beyond the bar), closest points off their shapes, separations
+   that differ from the reported distance, distance(a, b) != distance(b, a), batch != scalar,
+   within / intersects inconsistent with the distance, non-finite answers or wrong dtypes.
+   The bound an answer is held against is the screen's, or lower: the separation (plus the
+   measured distances off their shapes) of any combination's closest points, a genuine pair too.
+   ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
+   tests/reference.py and tests/reference_round.py (and evaluates the screen's own best pair
+   at 50 digits, so a reference that missed the minimum is caught, not trusted).
+
+Bars: |d - d_true| <= bar * max(d_true, largest radius in the query), bar 1e-12 in float64,
+1e-15 in long double (float64 inputs referenced exactly), 4 float32 ulps (4 * 2^-23) for float32
+inputs (README: float32 queries are solved in double and rounded; referenced on the float32
+values).  Closest points must lie on their shapes within 8 ulps (of the answer's precision) of
+the scene scale (the largest input coordinate or radius), and their separation must equal the
+reported distance within the bar plus those ulps.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+SOLVERS = ("bracketing", "companion", "polished", "eigen")
+PRECISIONS = ("float64", "longdouble", "float32")
+EPS32 = float(np.finfo(np.float32).eps)
+EPS64 = float(np.finfo(np.float64).eps)
+EPSLD = float(np.finfo(np.longdouble).eps)
+BARS = {"float64": 1e-12, "longdouble": 1e-15, "float32": 4 * EPS32}
+OUT_EPS = {"float64": EPS64, "longdouble": EPSLD, "float32": EPS32}
+ULPS = 8          # closest points: ulps of the scene scale allowed off their shapes
+LINEAR = ("point", "line", "ray", "segment")
+ROUND = ("circle", "disk")
+KIND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
+    ("bezier", "circle"), ("bezier", "disk"), ("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
+LD = np.longdouble
+
+
+def combos(solvers=SOLVERS, precisions=PRECISIONS):
+    return [(s, p) for p in precisions for s in solvers]
+
+
+def _load(name):
+    """A helper module next to this file (reference.py, reference_round.py), loaded by path."""
+    if name in sys.modules:
+        return sys.modules[name]
+    spec = importlib.util.spec_from_file_location(name, os.path.join(HERE, name + ".py"))
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[name] = mod
+    spec.loader.exec_module(mod)
+    return mod
+
+
+# =============================================================================================
+# 1. case families
+# =============================================================================================
+def _unit(rng):
+    v = rng.normal(size=3)
+    return v / np.linalg.norm(v)
+
+
+def _perp(rng, n):
+    """A random unit vector orthogonal to the unit vector n."""
+    v = rng.normal(size=3)
+    v = v - np.dot(v, n) * n
+    return v / np.linalg.norm(v)
+
+
+def _rot(v, axis, angle):
+    """v rotated about the unit axis by angle (Rodrigues)."""
+    v, axis = np.asarray(v, float), np.asarray(axis, float)
+    return (v * math.cos(angle) + np.cross(axis, v) * math.sin(angle)
+            + axis * np.dot(axis, v) * (1 - math.cos(angle)))
+
+
+def _logu(rng, lo, hi):
+    return float(10 ** rng.uniform(lo, hi))
+
+
+def _tiny(rng, lo=-16, hi=-4, zero=0.3):
+    """0 with probability `zero`, else +-10^U(lo, hi)."""
+    if rng.random() < zero:
+        return 0.0
+    return float(rng.choice([-1.0, 1.0])) * _logu(rng, lo, hi)
+
+
+EZ = np.array([0.0, 0.0, 1.0])
+
+
+class _Frame:
+    """Local coordinates (x, y, z) -> world C + x U + y V + z N.  Exact frames are signed axis
+    permutations with dyadic centres (so special geometry stays exact in binary64); the others are
+    random rotations (special geometry then holds up to rounding)."""
+
+    def __init__(self, rng, exact=None, scale=1.0):
+        self.rng = rng
+        self.exact = bool(rng.random() < 0.5) if exact is None else exact
+        if self.exact:
+            perm = rng.permutation(3)
+            signs = rng.choice([-1.0, 1.0], 3)
+            M = np.zeros((3, 3))
+            M[np.arange(3), perm] = signs
+            self.Q = M.T                       # columns U, V, N
+            self.C = rng.integers(-8, 9, 3) / 4.0 * scale
+            self.nlen = 2.0 ** int(rng.integers(-3, 4))
+        else:
+            Q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+            self.Q = Q
+            self.C = rng.normal(size=3) * scale
+            self.nlen = _logu(rng, -1, 1)
+
+    def pos(self, p):
+        return [float(x) for x in self.C + self.Q @ np.asarray(p, float)]
+
+    def dirv(self, d, length=1.0):
+        return [float(x) for x in (self.Q @ np.asarray(d, float)) * length]
+
+    def dlen(self):
+        return 2.0 ** int(self.rng.integers(-2, 3)) if self.exact else _logu(self.rng, -1, 1)
+
+    def param(self, lo, hi):
+        """A scalar in [lo, hi]: dyadic in exact frames."""
+        if self.exact:
+            return float(self.rng.integers(int(lo * 8), int(hi * 8) + 1)) / 8.0
+        return float(self.rng.uniform(lo, hi))
+
+    def round(self, c, n, r):
+        return self.pos(c) + self.dirv(np.asarray(n, float) / np.linalg.norm(n), self.nlen) + [float(r)]
+
+    def linear(self, kind, X, d, spread):
+        """A point/line/ray/segment through the local point X with local unit direction d."""
+        X, d = np.asarray(X, float), np.asarray(d, float)
+        if kind == "point":
+            return self.pos(X)
+        if kind == "line":
+            o = X + self.param(-2, 2) * spread * d
+            return self.pos(o) + self.dirv(d, self.dlen())
+        if kind == "ray":
+            o = X - self.param(-0.5, 3) * spread * d
+            return self.pos(o) + self.dirv(d, self.dlen())
+        s0, s1 = self.param(-0.5, 3) * spread, self.param(-0.5, 3) * spread
+        return self.pos(X - s0 * d) + self.pos(X + s1 * d)
+
+    def bezier(self, ctrl):
+        return [self.pos(p) for p in ctrl]
+
+
+def _radius(rng, exact):
+    return float(rng.choice([0.5, 0.75, 1.0, 1.5, 2.0])) if exact else _logu(rng, -0.5, 0.5)
+
+
+def _in_plane(rng, exact, r=1.0):
+    """(radial, tangent) in-plane unit vectors at a random (exact: axis) angle."""
+    th = 0.0 if exact else rng.uniform(0, 2 * math.pi)
+    return np.array([math.cos(th), math.sin(th), 0.0]), np.array([-math.sin(th), math.cos(th), 0.0])
+
+
+def _elevate(ctrl, k_total):
+    """Degree elevation of a Bezier control polygon to k_total control points (same curve up to
+    rounding)."""
+    P = [np.asarray(p, float) for p in ctrl]
+    while len(P) < k_total:
+        k = len(P)        # degree k-1 -> k
+        Q = [P[0]]
+        for i in range(1, k):
+            Q.append(i / k * P[i - 1] + (1 - i / k) * P[i])
+        Q.append(P[-1])
+        P = Q
+    return P
+
+
+def _bezier_through(rng, X, size, npts, t0=None):
+    """Random control points of extent `size` around X, shifted so that B(t0) = X."""
+    P = [X + size * rng.normal(size=3) for _ in range(npts)]
+    t0 = rng.uniform(0.1, 0.9) if t0 is None else t0
+    k = npts - 1
+    B = sum(math.comb(k, i) * t0 ** i * (1 - t0) ** (k - i) * P[i] for i in range(npts))
+    return [p + (X - B) for p in P]
+
+
+def _npts(rng):
+    return int(rng.integers(2, 9))
+
+
+# ---- round-round helpers (local frame of the first round: centre 0, normal +z) -------------
+def _tangent_round(rng, Ra, Rb, exact, phi=None):
+    """(centre, normal) of a round of radius Rb whose rim touches A's rim (centre 0, normal z,
+    radius Ra) at one point with a common tangent; phi = 0 internal coplanar, pi external
+    coplanar, pi/2 standing on the rim."""
+    r, t = _in_plane(rng, exact)
+    X = Ra * r
+    if phi is None:
+        phi = float(rng.choice([0.0, math.pi, math.pi / 2, rng.uniform(0, 2 * math.pi)]))
+    w = math.cos(phi) * (-r) + math.sin(phi) * EZ
+    return X + Rb * w, np.cross(t, w), w
+
+
+# ---- families --------------------------------------------------------------------------------
+def _fam_random(rng, ka, kb):
+    fr = _Frame(rng, exact=False)
+    Rb = _radius(rng, False)
+    b = fr.round(np.zeros(3), EZ, Rb)
+    if ka in ROUND:
+        Ra = _radius(rng, False)
+        a = fr.round(rng.normal(size=3) * 0.75 * (Ra + Rb), _unit(rng), Ra)
+    elif ka == "bezier":
+        a = fr.bezier([rng.normal(size=3) * 1.5 * Rb for _ in range(_npts(rng))])
+    else:
+        a = fr.linear(ka, rng.normal(size=3) * 1.5 * Rb, _unit(rng), Rb)
+    return a, b
+
+
+def _fam_tangent(rng, ka, kb):
+    fr = _Frame(rng)
+    ex = fr.exact
+    Rb = _radius(rng, ex)
+    if ka in ROUND:
+        Ra = _radius(rng, ex)
+        h = _tiny(rng, -16, -6) * max(Ra, Rb)
+        mode = int(rng.integers(0, 3 if "disk" in (ka, kb) else 2))
+        if mode == 2:
+            # a rim touching the disk's face at an interior point (the disk is local, centre 0)
+            disk_is_b = kb == "disk"
+            Rd, Rr = (Rb, Ra) if disk_is_b else (Ra, Rb)
+            r, t = _in_plane(rng, ex)
+            P = r * Rd * fr.param(0, 0.875)
+            e = _perp(rng, EZ) if not ex else np.array([1.0, 0.0, 0.0])
+            c, n = P + (Rr + abs(h)) * EZ, np.cross(EZ, e)
+            other = fr.round(c, n, Rr)
+            disk = fr.round(np.zeros(3), EZ, Rd)
+            return (other, disk) if disk_is_b else (disk, other)
+        c, n, w = _tangent_round(rng, Ra, Rb, ex)
+        return fr.round(np.zeros(3), EZ, Ra), fr.round(c + h * w, n, Rb)
+    b = fr.round(np.zeros(3), EZ, Rb)
+    r, t = _in_plane(rng, ex)
+    X = Rb * r
+    h = _tiny(rng) * Rb
+    mode = int(rng.integers(0, 4 if kb == "disk" else 3))
+    if ka == "point":
+        return fr.pos(X + h * (_unit(rng) if not ex else r)), b
+    if mode == 0:                               # in-plane tangent, moved radially by h
+        X, d = X + h * r, t
+    elif mode == 1:                             # tangent, lifted by |h|
+        X, d = X + abs(h) * EZ, t
+    elif mode == 2:                             # through the rim point, orthogonal to the radius
+        psi = rng.uniform(0.1, 1.4)
+        X, d = X + h * r, math.cos(psi) * t + math.sin(psi) * EZ
+    else:                                       # touching the disk's face from above
+        X = r * Rb * fr.param(0, 0.875) + abs(h) * EZ
+        d = t
+    if ka == "bezier":
+        npts = max(3, _npts(rng))
+        L = Rb * rng.uniform(0.3, 2)
+        away = EZ if mode in (1, 3) else (r if mode != 2 else r)
+        delta = away * Rb * rng.uniform(0.05, 1)
+        ctrl = _elevate([X - L * d + delta, X - delta, X + L * d + delta], npts)
+        return fr.bezier(ctrl), b
+    return fr.linear(ka, X, d, Rb), b
+
+
+_RHO_CHOICES = ("zero", "R", "R(1+e)", "inside", "outside", "tiny", "huge")
+
+
+def _fam_axis(rng, ka, kb):
+    """Lines, rays, segments on and nearly parallel to the axis (tilt 0 or 1e-16..1e-10 rad), at
+    any offset from the axis, including exactly at the radius; points on / near the axis."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    R = _radius(rng, ex)
+    b = fr.round(np.zeros(3), EZ, R)
+    kind = rng.choice(_RHO_CHOICES)
+    rho = {"zero": 0.0, "R": R, "R(1+e)": R * (1 + _tiny(rng, -16, -8, 0)),
+           "inside": R * rng.uniform(0, 1), "outside": R * rng.uniform(1, 3),
+           "tiny": R * _logu(rng, -12, -3), "huge": R * _logu(rng, 0, 3)}[kind]
+    beta = 0.0 if ex else rng.uniform(0, 2 * math.pi)
+    X = np.array([rho * math.cos(beta), rho * math.sin(beta), 0.0])
+    if ka == "point":
+        return fr.pos(X + fr.param(-2, 2) * R * EZ), b
+    psi = 0.0 if rng.random() < 0.35 else _logu(rng, -16, -10)
+    alpha = 0.0 if ex else rng.uniform(0, 2 * math.pi)
+    d = np.array([math.sin(psi) * math.cos(alpha), math.sin(psi) * math.sin(alpha), math.cos(psi)])
+    if rng.random() < 0.5:
+        d = -d
+    return fr.linear(ka, X, d, R), b
+
+
+def _fam_coplanar(rng, ka, kb):
+    fr = _Frame(rng)
+    ex = fr.exact
+    Rb = _radius(rng, ex)
+    b = fr.round(np.zeros(3), EZ, Rb)
+    r, t = _in_plane(rng, ex)
+    if ka in ROUND:
+        Ra = Rb * float(rng.choice([1.0, 0.5, 2.0])) if ex else Rb * rng.uniform(0.1, 3)
+        c = r * fr.param(0, 1.5) * (Ra + Rb)
+        n = EZ * float(rng.choice([-1.0, 1.0]))
+        return fr.round(c, n, Ra), b
+    X = r * fr.param(0, 2) * Rb
+    if ka == "bezier":
+        ctrl = [np.array([*(rng.normal(size=2) * 1.5 * Rb), 0.0]) for _ in range(_npts(rng))]
+        return fr.bezier(ctrl), b
+    return fr.linear(ka, X, t if rng.random() < 0.5 else _perp(rng, EZ), Rb), b
+
+
+def _tilted_normal(rng, exact):
+    psi = float(rng.choice([0.0, 1e-9, _logu(rng, -12, -1), rng.uniform(0, math.pi / 2), math.pi / 2]))
+    axis = np.array([1.0, 0.0, 0.0]) if exact else _perp(rng, EZ)
+    return _rot(EZ, axis, psi), psi
+
+
+def _fam_concentric(rng, ka, kb, offset=0.0):
+    fr = _Frame(rng)
+    ex = fr.exact and offset == 0.0
+    Rb = _radius(rng, ex)
+    b = fr.round(np.zeros(3), EZ, Rb)
+    off = offset * Rb * _unit(rng)
+    if ka in ROUND:
+        n, _ = _tilted_normal(rng, ex)
+        Ra = Rb * float(rng.choice([1.0, 1.0 + _tiny(rng, -15, -6, 0), rng.uniform(0.2, 3)]))
+        return fr.round(off, n, Ra), b
+    if ka == "point":
+        if not offset:
+            off = np.zeros(3) if rng.random() < 0.7 else _tiny(rng, -15, -6, 0) * Rb * _unit(rng)
+        return fr.pos(off), b
+    if ka == "bezier":
+        npts = _npts(rng)
+        half = [rng.normal(size=3) * Rb for _ in range((npts + 1) // 2)]
+        ctrl = half[: npts // 2] + ([np.zeros(3)] if npts % 2 else []) + [-p for p in reversed(half[: npts // 2])]
+        return fr.bezier([p + off for p in ctrl]), b
+    n, psi = _tilted_normal(rng, ex)
+    d = _rot(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), -psi) if ex else \
+        math.cos(psi) * _perp(rng, EZ) + math.sin(psi) * EZ
+    d = d / np.linalg.norm(d)
+    return fr.linear(ka, off - np.dot(off, d) * d, d, Rb), b
+
+
+def _fam_near_concentric(rng, ka, kb):
+    return _fam_concentric(rng, ka, kb, offset=_logu(rng, -15, -6))
+
+
+def _translate(kind, data, T):
+    if kind == "bezier":
+        return [[float(x) for x in np.asarray(p) + T] for p in data]
+    data = list(data)
+    npos = {"point": 3, "line": 3, "ray": 3, "segment": 6, "circle": 3, "disk": 3}[kind]
+    for i in range(npos):
+        data[i] = float(data[i] + T[i % 3])
+    return data
+
+
+_TRANSLATED_BASES = ("random", "tangent", "coplanar", "concentric", "axis", "near_touching", "parallel_height")
+
+
+def _fam_far_translated(rng, ka, kb):
+    bases = [f for f in _TRANSLATED_BASES if (ka, kb) in FAMILIES[f][0]]
+    base = str(rng.choice(bases))
+    a, b = FAMILIES[base][1](rng, ka, kb)
+    if rng.random() < 0.3:
+        T = np.zeros(3)
+        T[rng.integers(0, 3)] = float(rng.choice([-1.0, 1.0])) * _logu(rng, 6, 12)
+    else:
+        T = _unit(rng) * _logu(rng, 6, 12)
+    return _translate(ka, a, T), _translate(kb, b, T)
+
+
+def _interesting_line(rng, fr, R, kb):
+    """A local (X, d) near the round: random, tangent, near the axis or in the plane."""
+    mode = int(rng.integers(0, 4))
+    r, t = _in_plane(rng, fr.exact)
+    if mode == 0:
+        return rng.normal(size=3) * R, _unit(rng)
+    if mode == 1:
+        return R * r + _tiny(rng) * R * r, t
+    if mode == 2:
+        psi = 0.0 if rng.random() < 0.3 else _logu(rng, -16, -10)
+        return r * R * float(rng.choice([0.0, 1.0, rng.uniform(0, 2)])), _rot(EZ, t, psi)
+    return r * R * rng.uniform(0, 2), _perp(rng, EZ)
+
+
+def _fam_far_origin(rng, ka, kb):
+    """Line origins / segment ends 1e6..1e12 radii along the line."""
+    fr = _Frame(rng)
+    R = _radius(rng, fr.exact)
+    b = fr.round(np.zeros(3), EZ, R)
+    X, d = _interesting_line(rng, fr, R, kb)
+    d = d / np.linalg.norm(d)
+    far = _logu(rng, 6, 12) * R
+    sgn = float(rng.choice([-1.0, 1.0]))
+    if ka == "line":
+        return fr.pos(X - sgn * far * d) + fr.dirv(d, fr.dlen()), b
+    if ka == "ray":
+        if rng.random() < 0.8:
+            return fr.pos(X - far * d) + fr.dirv(d, fr.dlen()), b
+        return fr.pos(X + far * d) + fr.dirv(d, fr.dlen()), b
+    far2 = _logu(rng, 6, 12) * R if rng.random() < 0.5 else rng.uniform(-0.5, 2) * R
+    ends = [fr.pos(X - far * d), fr.pos(X + far2 * d)]
+    if rng.random() < 0.5:
+        ends.reverse()
+    return ends[0] + ends[1], b
+
+
+def _fam_radius_ratio(rng, ka, kb):
+    """Extreme radius ratios: 1e-9 and 1e9."""
+    fr = _Frame(rng, exact=False)
+    ratio = float(rng.choice([1e-9, 1e9]))
+    if ka in ROUND:
+        Ra = _logu(rng, -0.5, 0.5)
+        Rb = Ra * ratio * (1.0 if rng.random() < 0.5 else rng.uniform(0.5, 2))
+        big, small = max(Ra, Rb), min(Ra, Rb)
+        mode = int(rng.integers(0, 3))
+        nb = _unit(rng)
+        if mode == 0:       # the small one near the big one's rim
+            if Rb > Ra:
+                u = _perp(rng, nb)
+                cb = -Rb * u + small * rng.normal(size=3) * 2
+            else:
+                r, _ = _in_plane(rng, False)
+                cb = Ra * r + small * rng.normal(size=3) * 2
+        elif mode == 1:     # near the big one's centre
+            cb = small * rng.normal(size=3) * 2
+        else:               # anywhere at the big one's scale
+            cb = big * rng.normal(size=3)
+        return fr.round(np.zeros(3), EZ, Ra), fr.round(cb, nb, Rb)
+    R = ratio * (1.0 if rng.random() < 0.5 else rng.uniform(0.5, 2))
+    scale = R if rng.random() < 0.5 else 1.0
+    b = fr.round(np.zeros(3), EZ, R)
+    if ka == "bezier":
+        return fr.bezier([rng.normal(size=3) * 1.5 * scale for _ in range(_npts(rng))]), b
+    return fr.linear(ka, rng.normal(size=3) * scale, _unit(rng), scale), b
+
+
+def _fam_near_touching(rng, ka, kb):
+    """Rounds nearly touching: gap 1e-14..1e-9 x radius."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    Ra, Rb = _radius(rng, ex), _radius(rng, ex)
+    g = _logu(rng, -14, -9) * max(Ra, Rb)
+    modes = ["coplanar", "rims"] + (["face", "parallel"] if "disk" in (ka, kb) else [])
+    mode = str(rng.choice(modes))
+    A = fr.round(np.zeros(3), EZ, Ra)
+    r, t = _in_plane(rng, ex)
+    if mode == "coplanar":
+        return A, fr.round((Ra + Rb + g) * r, EZ * float(rng.choice([-1.0, 1.0])), Rb)
+    if mode == "rims":
+        c, n, w = _tangent_round(rng, Ra, Rb, ex, phi=float(rng.choice([math.pi, math.pi / 2, rng.uniform(0.3, 5.9)])))
+        return A, fr.round(c + g * w, n, Rb)
+    disk_is_b = kb == "disk"
+    Rd, Rr = (Rb, Ra) if disk_is_b else (Ra, Rb)
+    D = fr.round(np.zeros(3), EZ, Rd)
+    if mode == "face":
+        P = r * Rd * fr.param(0, 0.875)
+        e = np.array([1.0, 0.0, 0.0]) if ex else _perp(rng, EZ)
+        O = fr.round(P + (Rr + g) * EZ, np.cross(EZ, e), Rr)
+    else:
+        c = r * (Rd + Rr) * fr.param(0, 0.875) + g * EZ
+        O = fr.round(c, EZ, Rr)
+    return (O, D) if disk_is_b else (D, O)
+
+
+def _fam_parallel_height(rng, ka, kb):
+    """A circle (or disk) parallel to a disk (or circle) at heights 0 or 1e-16..1e-6."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    Rb = _radius(rng, ex)
+    B = fr.round(np.zeros(3), EZ, Rb)
+    Ra = Rb * float(rng.choice([rng.uniform(0.1, 0.9), 1.0, 1.0 + _tiny(rng, -15, -6, 0), rng.uniform(1.1, 3)]))
+    h = _tiny(rng, -16, -6, 0.15) * Rb
+    r, _ = _in_plane(rng, ex)
+    where = rng.choice(["centre", "inside", "rim", "outside"])
+    off = {"centre": 0.0, "inside": rng.uniform(0, 1) * abs(Rb - Ra),
+           "rim": Rb + rng.choice([-1.0, 1.0]) * Ra + _tiny(rng, -14, -6) * Rb,
+           "outside": Rb + Ra + rng.uniform(0, 2) * Rb}[where]
+    n = EZ * float(rng.choice([-1.0, 1.0]))
+    return fr.round(off * r + h * EZ, n, Ra), B
+
+
+def _fam_bezier_large(rng, ka, kb):
+    """Bezier curves 1e2..1e5 times larger than the round, passing near it."""
+    fr = _Frame(rng, exact=False)
+    R = _radius(rng, False)
+    b = fr.round(np.zeros(3), EZ, R)
+    r, t = _in_plane(rng, False)
+    X = [R * r, R * r * rng.uniform(0, 1) + _tiny(rng, -14, -6) * R * EZ, rng.normal(size=3) * 2 * R,
+         np.zeros(3)][int(rng.integers(0, 4))]
+    size = _logu(rng, 2, 5) * R
+    return fr.bezier(_bezier_through(rng, X, size, _npts(rng))), b
+
+
+def _fam_bezier_far_control(rng, ka, kb):
+    """One control point 1e6..1e12 radii away."""
+    fr = _Frame(rng, exact=False)
+    R = _radius(rng, False)
+    b = fr.round(np.zeros(3), EZ, R)
+    ctrl = [rng.normal(size=3) * 1.5 * R for _ in range(_npts(rng))]
+    ctrl[int(rng.integers(0, len(ctrl)))] = _unit(rng) * _logu(rng, 6, 12) * R
+    return fr.bezier(ctrl), b
+
+
+def _fam_bezier_plane(rng, ka, kb):
+    """A Bezier curve in a plane parallel to the round's at height 1e-9 (x radius), translated by
+    1e6."""
+    fr = _Frame(rng)
+    R = _radius(rng, fr.exact)
+    h = 1e-9 * R * float(rng.choice([-1.0, 1.0]))
+    b = fr.round(np.zeros(3), EZ, R)
+    ctrl = [np.array([*(rng.normal(size=2) * 1.2 * R), h]) for _ in range(_npts(rng))]
+    a = fr.bezier(ctrl)
+    T = (_unit(rng) if rng.random() < 0.7 else np.array([1.0, 0.0, 0.0])) * 1e6
+    return _translate("bezier", a, T), _translate(kb, b, T)
+
+
+def _fam_huge_circle(rng, ka, kb):
+    """A huge circle (radius 1e3..1e9) passing near a small disk or circle."""
+    fr = _Frame(rng, exact=False)
+    r_small = _logu(rng, -1, 0.3)
+    Rh = _logu(rng, 3, 9)
+    huge_is_a = not (ka == "circle" and kb == "disk" and rng.random() < 0.3)
+    r, t = _in_plane(rng, False)
+    mode = int(rng.integers(0, 4))
+    g = _tiny(rng, -12, 0, 0.3) * r_small
+    X = [r_small * r + g * _unit(rng), r * r_small * rng.uniform(0, 1) + abs(g) * EZ,
+         rng.normal(size=3) * 2 * r_small, g * _unit(rng)][mode]
+    nh = _unit(rng)
+    uh = _perp(rng, nh)
+    huge = fr.round(X - Rh * uh, nh, Rh)
+    small = fr.round(np.zeros(3), EZ, r_small)
+    return (huge, small) if huge_is_a else (small, huge)
+
+
+RR = [("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
+LR = [(lk, rk) for lk in LINEAR for rk in ROUND]
+LR3 = [(lk, rk) for lk in ("line", "ray", "segment") for rk in ROUND]
+BR = [("bezier", "circle"), ("bezier", "disk")]
+
+# name: (kind pairs, generator)
+FAMILIES = {
+    "random": (KIND_PAIRS, _fam_random),
+    "tangent": (KIND_PAIRS, _fam_tangent),
+    "axis": (LR, _fam_axis),
+    "coplanar": (KIND_PAIRS, _fam_coplanar),
+    "concentric": (KIND_PAIRS, _fam_concentric),
+    "near_concentric": (KIND_PAIRS, _fam_near_concentric),
+    "far_translated": (KIND_PAIRS, _fam_far_translated),
+    "far_origin": (LR3, _fam_far_origin),
+    "radius_ratio": (KIND_PAIRS, _fam_radius_ratio),
+    "near_touching": (RR, _fam_near_touching),
+    "parallel_height": (RR, _fam_parallel_height),
+    "bezier_large": (BR, _fam_bezier_large),
+    "bezier_far_control": (BR, _fam_bezier_far_control),
+    "bezier_plane": (BR, _fam_bezier_plane),
+    "huge_circle": (RR, _fam_huge_circle),
+}
+
+
+def _plain(data):
+    if isinstance(data, (list, tuple)) and data and isinstance(data[0], (list, tuple, np.ndarray)):
+        return [[float(x) for x in p] for p in data]
+    return [float(x) for x in data]
+
+
+def generate_one(family, seed, i):
+    """Case i of a family: kind pair i mod (number of pairs), drawn from
+    np.random.default_rng([seed, family index, i]) -- reproducible from its id alone."""
+    fam_pairs, gen = FAMILIES[family]
+    ka, kb = fam_pairs[i % len(fam_pairs)]
+    rng = np.random.default_rng([seed, list(FAMILIES).index(family), i])
+    a, b = gen(rng, ka, kb)
+    return {"family": family, "id": f"{family}/{seed}/{i}", "a": ka, "a_data": _plain(a), "b": kb,
+            "b_data": _plain(b)}
+
+
+def generate(family, n, seed, start=0):
+    """Cases start .. start+n-1 of one family (cycling through its kind pairs)."""
+    return [generate_one(family, seed, i) for i in range(start, start + n)]
+
+
+def case_from_id(case_id):
+    """The case named by an id "family/seed/i"."""
+    family, seed, i = case_id.split("/")
+    return generate_one(family, int(seed), int(i))
+
+
+def to_float32_case(case):
+    """The case with every input rounded to float32 (the scene a float32 query describes)."""
+    def r(data):
+        if data and isinstance(data[0], list):
+            return [[float(np.float32(x)) for x in p] for p in data]
+        return [float(np.float32(x)) for x in data]
+    out = dict(case)
+    out["a_data"], out["b_data"] = r(case["a_data"]), r(case["b_data"])
+    return out
+
+
+def largest_radius(case):
+    return max([case[k + "_data"][6] for k in ("a", "b") if case[k] in ROUND] + [0.0])
+
+
+def scene_scale(case):
+    """The largest input coordinate of a position (centres, points, origins, ends, control
+    points) or radius: the scale of the ulps the closest points may be off their shapes."""
+    vals = [0.0]
+    for k in ("a", "b"):
+        kind, data = case[k], case[k + "_data"]
+        if kind == "bezier":
+            vals += [abs(x) for p in data for x in p]
+        elif kind in ROUND:
+            vals += [abs(x) for x in data[:3]] + [abs(data[6])]
+        elif kind == "segment":
+            vals += [abs(x) for x in data[:6]]
+        else:
+            vals += [abs(x) for x in data[:3]]
+    return max(vals)
+
+
+# =============================================================================================
+# 2. the fast screen
+# =============================================================================================
+# ---- double-double helpers (float64 arrays), for offsets and the line anchor ------------------
+def _two_sum(a, b):
+    s = a + b
+    bb = s - a
+    return s, (a - (s - bb)) + (b - bb)
+
+
+def _quick(a, b):
+    s = a + b
+    return s, b - (s - a)
+
+
+def _split(a):
+    t = 134217729.0 * a
+    hi = t - (t - a)
+    return hi, a - hi
+
+
+def _two_prod(a, b):
+    p = a * b
+    ah, al = _split(a)
+    bh, bl = _split(b)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _dd_add(x, y):
+    s, e = _two_sum(x[0], y[0])
+    return _quick(s, e + x[1] + y[1])
+
+
+def _dd_mul(x, y):
+    p, e = _two_prod(x[0], y[0])
+    return _quick(p, e + (x[0] * y[1] + x[1] * y[0]))
+
+
+def _dd_neg(x):
+    return -x[0], -x[1]
+
+
+def _dd_div(x, y):
+    q1 = x[0] / y[0]
+    r = _dd_add(x, _dd_neg(_dd_mul((q1, np.zeros_like(q1)), y)))
+    q2 = r[0] / y[0]
+    r = _dd_add(r, _dd_neg(_dd_mul((q2, np.zeros_like(q2)), y)))
+    q3 = r[0] / y[0]
+    s = _quick(q1, q2)
+    return _dd_add(s, (q3, np.zeros_like(q3)))
+
+
+def _dd_dot(x, y):
+    """x, y: (hi, lo) pairs of (n, 3) arrays."""
+    acc = _dd_mul((x[0][:, 0], x[1][:, 0]), (y[0][:, 0], y[1][:, 0]))
+    for i in (1, 2):
+        acc = _dd_add(acc, _dd_mul((x[0][:, i], x[1][:, i]), (y[0][:, i], y[1][:, i])))
+    return acc
+
+
+def _ld(x):
+    return x[0].astype(LD) + x[1].astype(LD)
+
+
+def _diff_ld(p, q):
+    """p - q (float64 arrays) as long double, via the exact double-double difference."""
+    return _ld(_two_sum(np.asarray(p, float), -np.asarray(q, float)))
+
+
+def _ld_frame(N):
+    """Unit normal n and in-plane U, V (long double): U from the coordinate axis least aligned with
+    n (Gram-Schmidt), V = n x U -- the construction of the references, built independently."""
+    Nl = N.astype(LD)
+    Nl = Nl / np.max(np.abs(Nl), axis=1, keepdims=True)
+    n = Nl / np.sqrt(np.sum(Nl * Nl, axis=1, keepdims=True))
+    k = np.argmin(np.abs(n), axis=1)
+    e = np.zeros_like(n)
+    e[np.arange(len(k)), k] = 1
+    u = e - np.sum(e * n, axis=1, keepdims=True) * n
+    u = u / np.sqrt(np.sum(u * u, axis=1, keepdims=True))
+    return n, u, _cross(n, u)
+
+
+def _cross(a, b):
+    return np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+                     a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+                     a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
+
+
+def _dot(a, b):
+    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1] + a[..., 2] * b[..., 2]
+
+
+def _nrm(a):
+    return np.sqrt(_dot(a, a))
+
+
+# ---- closed forms (any float dtype; arrays broadcast (n, k, 3) against (n, 1, 3)) -------------
+def _round_dist(w, n, R, disk):
+    z = _dot(w, n)
+    a = w - z[..., None] * n
+    rho = _nrm(a)
+    e = rho - R
+    d = np.sqrt(z * z + e * e)
+    if disk:
+        d = np.where(rho <= R, np.abs(z), d)
+    return d
+
+
+def _lin_dist(w, m, mm, lo, hi):
+    with np.errstate(invalid="ignore", divide="ignore"):
+        s = np.where(mm > 0, _dot(w, m) / np.where(mm > 0, mm, 1), 0)
+    s = np.minimum(np.maximum(s, lo), hi)
+    return _nrm(w - s[..., None] * m)
+
+
+class _P:
+    """Per-case parameters of one formulation, in float64 and long double."""
+
+    def __init__(self, **arrays):
+        self.ld = {k: (np.asarray(v).astype(LD) if isinstance(v, np.ndarray) else v) for k, v in arrays.items()}
+        self.f64 = {k: (np.asarray(v).astype(np.float64) if isinstance(v, np.ndarray) else v)
+                    for k, v in arrays.items()}
+
+    def get(self, dtype):
+        return self.ld if dtype == LD else self.f64
+
+
+def _x1(a):
+    """(n, ...) -> (n, 1, ...) for broadcasting against (n, k) parameters."""
+    return a[:, None]
+
+
+class _Form:
+    """One formulation: distance = min over a parameter x in [lo, hi] (periodic or not) of
+    f(x), f evaluated as  target_closed_form(moving_point(x))."""
+
+    def __init__(self, name, moving, target, params, lo, hi, periodic, grid):
+        self.name, self.moving, self.target = name, moving, target
+        self.p = params
+        self.lo, self.hi, self.periodic, self.grid = lo, hi, periodic, grid
+
+    def points(self, x, P):
+        if self.moving == "rim":
+            c, s = np.cos(x), np.sin(x)
+            return _x1(P["D"]) + _x1(P["Ra"])[..., None] * (c[..., None] * _x1(P["Ua"]) + s[..., None] * _x1(P["Va"]))
+        if self.moving == "line":
+            return _x1(P["b0"]) + x[..., None] * _x1(P["m"])
+        # bezier: Bernstein sum of control points relative to the target centre
+        ctrl = P["ctrl"]                       # (n, K, 3)
+        k = ctrl.shape[1] - 1
+        t = x
+        s = 1 - t
+        tp, sp = [None, t], [None, s]
+        for _ in range(2, k + 1):
+            tp.append(tp[-1] * t)
+            sp.append(sp[-1] * s)
+        out = 0
+        for i in range(k + 1):
+            w = tp[i] if k == i else (sp[k - i] if i == 0 else tp[i] * sp[k - i])
+            c = math.comb(k, i)
+            out = out + ((w * c) if c != 1 else w)[..., None] * ctrl[:, None, i, :]
+        return out
+
+    def value(self, x, P):
+        X = self.points(x, P)
+        if self.target in ("circle", "disk"):
+            return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk")
+        return _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
+
+    def f(self, x):
+        P = self.p.get(x.dtype.type)
+        with np.errstate(invalid="ignore", over="ignore"):
+            v = self.value(x, P)
+        return np.where(np.isnan(v), np.inf, v)
+
+    def magnitude(self, x):
+        """Size of the quantities that cancel at x (for the rounding slack)."""
+        P = self.p.get(LD)
+        X = self.points(x[:, None], P)[:, 0]
+        mag = _nrm(X)
+        if self.target in ("circle", "disk"):
+            mag = mag + P["R"]
+        else:
+            mag = mag + _nrm(P["tb0"])
+        if self.moving == "rim":
+            mag = mag + _nrm(P["D"]) + P["Ra"]
+        elif self.moving == "line":
+            mag = mag + _nrm(P["b0"]) + np.abs(x) * _nrm(P["m"])
+        else:
+            ctrl = P["ctrl"]
+            k = ctrl.shape[1] - 1
+            t = x
+            mag = mag + sum(math.comb(k, i) * t ** i * (1 - t) ** (k - i) * _nrm(ctrl[:, i, :]) for i in range(k + 1))
+        return mag
+
+
+_THETA_GRID = np.arange(512) / 512.0
+
+
+def _bezier_grid():
+    """Normalised samples of a half curve [0, 1/2] (the grid is scaled by the interval): uniform,
+    plus samples clustered at the end the half is parametrised from."""
+    u = np.linspace(0, 1, 385)
+    ends = 10.0 ** -np.arange(1, 20.05, 0.1)
+    return np.unique(np.concatenate([u, ends]))
+
+
+_T_GRID = _bezier_grid()
+_S_GRID = np.linspace(0, 1, 513)
+
+
+def _beam(form, lo, hi, beam, levels, K, dtype, start=None):
+    """Nested re-sampling: keep the `beam` best sampled local minima per case, re-sample each
+    bracket at K+1 points per level.  start: (a, b) brackets (n, m) to begin from instead of the
+    grid.  Returns (best value, best x, final bracket centres (n, beam), their values)."""
+    n = lo.shape[0]
+    lo, hi = lo.astype(dtype), hi.astype(dtype)
+    w = hi - lo
+    inf = dtype(np.inf)
+    if start is None:
+        g = form.grid.astype(dtype)
+        X = lo[:, None] + g[None, :] * w[:, None]
+        if not form.periodic:
+            X[:, -1] = hi
+        F = form.f(X)
+        if form.periodic:
+            Fl, Fr = np.roll(F, 1, 1), np.roll(F, -1, 1)
+            Xl = np.concatenate([X[:, -1:] - w[:, None], X[:, :-1]], 1)
+            Xr = np.concatenate([X[:, 1:], X[:, :1] + w[:, None]], 1)
+        else:
+            pad = np.full((n, 1), inf, dtype=dtype)
+            Fl, Fr = np.concatenate([pad, F[:, :-1]], 1), np.concatenate([F[:, 1:], pad], 1)
+            Xl = np.concatenate([X[:, :1], X[:, :-1]], 1)
+            Xr = np.concatenate([X[:, 1:], X[:, -1:]], 1)
+        # sampled local minima; a run of equal samples counts once (strict on the right), so that
+        # plateaus (a curve's end point sampled at clustered parameters, a flat function) do not
+        # fill the beam; a row without any (a flat periodic function) keeps its smallest sample
+        lm = (F <= Fl) & (F < Fr)
+        none = ~lm.any(axis=1)
+        lm[none, np.argmin(F[none], axis=1)] = True
+        Fm = np.where(lm, F, inf)
+        idx = np.argsort(Fm, axis=1, kind="stable")[:, :beam]
+        a = np.take_along_axis(Xl, idx, 1)
+        b = np.take_along_axis(Xr, idx, 1)
+        va = np.take_along_axis(Fm, idx, 1)
+        j = np.argmin(F, axis=1)
+        best_v = F[np.arange(n), j]
+        best_x = X[np.arange(n), j]
+        centres = np.take_along_axis(X, idx, 1)
+    else:
+        a, b = start
+        a, b = a.astype(dtype), b.astype(dtype)
+        va = np.zeros(a.shape, dtype=dtype)
+        best_v = np.full(n, inf, dtype=dtype)
+        best_x = a[:, 0].copy()
+        centres = (a + b) / 2
+    tt = np.linspace(0, 1, K + 1).astype(dtype)
+    m = a.shape[1]
+    for _ in range(levels):
+        h = (b - a) / K
+        P = a[..., None] + (b - a)[..., None] * tt
+        if not form.periodic:
+            P = np.minimum(np.maximum(P, lo[:, None, None]), hi[:, None, None])
+        V = form.f(P.reshape(n, -1)).reshape(n, m, K + 1)
+        V = np.where(np.isfinite(va)[..., None], V, inf)
+        padc = np.full((n, m, 1), inf, dtype=dtype)
+        lm = (V <= np.concatenate([padc, V[..., :-1]], 2)) & (V < np.concatenate([V[..., 1:], padc], 2))
+        Vm = np.where(lm, V, inf).reshape(n, -1)
+        flat = ~np.isfinite(Vm).any(axis=1)
+        if flat.any():
+            Vr = V.reshape(n, -1)
+            Vm[flat, np.argmin(Vr[flat], axis=1)] = Vr[flat].min(axis=1)
+        jj = np.argsort(Vm, axis=1, kind="stable")[:, :beam]
+        bi, kk = np.divmod(jj, K + 1)
+        Pf = P.reshape(n, -1)
+        hb = np.take_along_axis(h, bi, 1)
+        centres = np.take_along_axis(Pf, jj, 1)
+        lo_i = np.where(kk > 0, np.take_along_axis(Pf, np.maximum(jj - 1, 0), 1), centres - hb)
+        hi_i = np.where(kk < K, np.take_along_axis(Pf, np.minimum(jj + 1, Pf.shape[1] - 1), 1), centres + hb)
+        a, b = lo_i, hi_i
+        if not form.periodic:
+            a = np.maximum(a, lo[:, None])
+            b = np.minimum(b, hi[:, None])
+        va = np.take_along_axis(Vm, jj, 1)
+        m = a.shape[1]
+        j = np.argmin(V.reshape(n, -1), axis=1)
+        v = V.reshape(n, -1)[np.arange(n), j]
+        better = v < best_v
+        best_v = np.where(better, v, best_v)
+        best_x = np.where(better, Pf[np.arange(n), j], best_x)
+    return best_v, best_x, centres, va
+
+
+def _minimize(form, lo, hi, beam=5, levels=14, ld_levels=30, K=8, use_ld=True):
+    """Float64 beam search from the grid, then (use_ld) long-double levels around the two best
+    final brackets.  Returns (value (long double), x (long double))."""
+    v64, x64, centres, vals = _beam(form, lo, hi, beam, levels, K, np.float64)
+    xl = x64.astype(LD)
+    vl = form.f(xl[:, None])[:, 0] if use_ld else v64.astype(LD)
+    if not use_ld:
+        return vl, xl
+    width = (hi - lo).astype(LD)
+    hw = np.maximum(width * LD(1e-7), LD(0))[:, None]
+    order = np.argsort(vals, axis=1, kind="stable")[:, :2]
+    cx = np.take_along_axis(centres, order, 1).astype(LD)
+    a, b = cx - hw, cx + hw
+    vv, xx, _, _ = _beam(form, lo.astype(LD), hi.astype(LD), 2, ld_levels, K, LD, start=(a, b))
+    better = vv < vl
+    return np.where(better, vv, vl), np.where(better, xx, xl)
+
+
+def _sub_bezier_dd(ctrl_dd, a, b):
+    """Control points (long double) of the piece of the curve on [a, b] (a, b: float64 arrays):
+    Q_j = blossom(a, .., a, b, .., b) (k - j a's, j b's) by de Casteljau steps in double-double,
+    so the piece is the same curve up to ~1e-32 of the control points' size."""
+    hi, lo = ctrl_dd
+    k = hi.shape[1] - 1
+    out = []
+    for j in range(k + 1):
+        ph, pl = hi, lo
+        for tau in [a] * (k - j) + [b] * j:
+            t = np.broadcast_to(tau[:, None, None], ph[:, 1:].shape)
+            d = _dd_add((ph[:, 1:], pl[:, 1:]), (-ph[:, :-1], -pl[:, :-1]))
+            d = _dd_mul(d, (t, np.zeros(t.shape)))
+            ph, pl = _dd_add((ph[:, :-1], pl[:, :-1]), d)
+        out.append(_ld((ph[:, 0], pl[:, 0])))
+    return np.stack(out, axis=1)
+
+
+def _lipschitz(dP, a, b):
+    """Bound on |B'(t)| for t in [a, b] (arrays (n, m)): B' = k sum_i b_{i,k-1}(t) (P_{i+1} - P_i),
+    and each Bernstein basis function is unimodal with its maximum at i/(k-1), so
+    |B'| <= k sum_i |P_{i+1} - P_i| max_[a,b] b_{i,k-1}."""
+    k = dP.shape[1]
+    if k == 1:
+        return np.broadcast_to(dP[:, :1], a.shape)
+    out = 0
+    for i in range(k):
+        t = np.clip(i / (k - 1), a, b)
+        out = out + dP[:, i:i + 1] * (math.comb(k - 1, i) * t ** i * (1 - t) ** (k - 1 - i))
+    return k * out * (1 + 1e-9)
+
+
+def _bnb(form, lo, hi, dP, levels=8, K=8, M=32):
+    """Branch and bound on a 1-D grid (float64): f = dist(B(t), round) is L-Lipschitz on an
+    interval (L from the hodograph, _lipschitz), so an interval of width h whose end values are
+    fa, fb holds nothing below (fa + fb)/2 - L h/2; every level re-samples the (at most M per
+    case) intervals with the smallest such bound that can still beat the best sample.  Returns
+    (best value, best x, centres of the two best final intervals)."""
+    n = lo.shape[0]
+    w = hi - lo
+    g = form.grid
+    X = lo[:, None] + g[None, :] * w[:, None]
+    X[:, -1] = hi
+    F = form.f(X)
+    j = np.argmin(F, axis=1)
+    best_v, best_x = F[np.arange(n), j], X[np.arange(n), j]
+    a, b = X[:, :-1], X[:, 1:]
+    fa, fb = F[:, :-1], F[:, 1:]
+    for _ in range(levels + 1):
+        lb = (fa + fb) / 2 - _lipschitz(dP, a, b) * (b - a) / 2
+        lb = np.where(np.isfinite(lb) & (lb <= best_v[:, None]), lb, np.inf)
+        keep = np.argsort(lb, axis=1, kind="stable")[:, :M]
+        a, b = np.take_along_axis(a, keep, 1), np.take_along_axis(b, keep, 1)
+        valid = np.isfinite(np.take_along_axis(lb, keep, 1))
+        if _ == levels:
+            break
+        tt = np.linspace(0, 1, K + 1)
+        P = a[..., None] + (b - a)[..., None] * tt
+        V = form.f(P.reshape(n, -1)).reshape(P.shape)
+        V = np.where(valid[..., None], V, np.inf)
+        Vf, Pf = V.reshape(n, -1), P.reshape(n, -1)
+        j = np.argmin(Vf, axis=1)
+        v = Vf[np.arange(n), j]
+        better = v < best_v
+        best_v, best_x = np.where(better, v, best_v), np.where(better, Pf[np.arange(n), j], best_x)
+        a, b = P[..., :-1].reshape(n, -1), P[..., 1:].reshape(n, -1)
+        fa, fb = V[..., :-1].reshape(n, -1), V[..., 1:].reshape(n, -1)
+    # the two best final intervals by their better end value
+    score = np.where(valid, np.minimum(form.f(a), form.f(b)), np.inf)
+    order = np.argsort(score, axis=1, kind="stable")[:, :2]
+    centres = np.take_along_axis((a + b) / 2, order, 1)
+    return best_v, best_x, centres
+
+
+def _minimize_bezier(form, ctrl_dd, nb, Rbl, kb, ld_levels=30, K=8):
+    """A half curve: float64 beam search and branch and bound on t in [0, 1/2], then a long-double
+    search on the pieces [t - 5e-8, t + 5e-8] around the five best candidates, each re-parametrised on
+    [0, 1] with its control points computed in double-double: a curve 1e5 times larger than the
+    round is then resolved to ~1e-19 of the round, not of the curve.  Returns (value, a, b, u,
+    magnitude) with the best point at t = a + u (b - a)."""
+    n = ctrl_dd[0].shape[0]
+    lo, hi = np.zeros(n), np.full(n, 0.5)
+    P64 = ctrl_dd[0] + ctrl_dd[1]
+    dP = np.linalg.norm(np.diff(P64, axis=1), axis=2)                   # (n, k) hodograph norms
+    # two searches, the best of both: a value-driven beam (follows the sampled minima: curves with
+    # a far control point, whose global Lipschitz constant is useless) and the Lipschitz branch
+    # and bound (does not lose a narrow basin: curves much larger than the round)
+    # (several crossings of a rim by a curve in a plane just above it are near-ties: the beam is
+    # wider, and the long-double stage refines five candidates)
+    vb, xb, bcentres, bvals = _beam(form, lo, hi, 8, 14, K, np.float64)
+    v64, x64, centres = _bnb(form, lo, hi, dP)
+    border = np.argsort(bvals, axis=1, kind="stable")
+    cands = [xb, x64, centres[:, 1] if centres.shape[1] > 1 else x64]
+    cands += [np.take_along_axis(bcentres, border[:, q:q + 1], 1)[:, 0] for q in (1, 2) if q < border.shape[1]]
+    best = np.full(n, LD(np.inf), dtype=LD)
+    ba, bb, bu, bm = np.zeros(n), np.ones(n), np.zeros(n, dtype=LD), np.zeros(n, dtype=LD)
+    for tc in cands:
+        a = np.maximum(tc - 5e-8, 0.0)
+        b = np.minimum(tc + 5e-8, 0.5)
+        Q = _sub_bezier_dd(ctrl_dd, a, b)
+        sub = _Form(form.name, "bezier", kb, _P(ctrl=Q, n=nb, R=Rbl), np.zeros(n), np.ones(n), False, _S_GRID)
+        zero, one = np.zeros((n, 1)), np.ones((n, 1))
+        vv, uu, _, _ = _beam(sub, np.zeros(n, dtype=LD), np.ones(n, dtype=LD), 2, ld_levels, K, LD,
+                             start=(zero, one))
+        u0 = ((tc - a) / np.where(b > a, b - a, 1)).astype(LD)
+        v0 = sub.f(u0[:, None])[:, 0]
+        take0 = v0 < vv
+        vv, uu = np.where(take0, v0, vv), np.where(take0, u0, uu)
+        mag = sub.magnitude(uu)
+        better = vv < best
+        best = np.where(better, vv, best)
+        ba, bb = np.where(better, a, ba), np.where(better, b, bb)
+        bu, bm = np.where(better, uu, bu), np.where(better, mag, bm)
+    return best, ba, bb, bu, bm
+
+
+def _stack(case_list, key):
+    return np.array([c[key] for c in case_list], dtype=float)
+
+
+def _anchor(kind, data, C):
+    """A linear shape relative to the centre C, anchored at its point nearest C (double-double):
+    returns long-double b0, m, lo, hi with S = {b0 + s m : s in [lo, hi]}."""
+    n = data.shape[0]
+    zeros = np.zeros((n, 3))
+    b = _two_sum(data[:, :3], -C)
+    if kind == "point":
+        return _ld(b), np.zeros((n, 3), dtype=LD), np.zeros(n, dtype=LD), np.zeros(n, dtype=LD)
+    if kind == "segment":
+        m = _two_sum(data[:, 3:6], -data[:, :3])
+    else:
+        m = (data[:, 3:6].copy(), zeros)
+    # scale m to moderate length exactly (a power of two) so that squares neither overflow nor underflow
+    sc = 2.0 ** -np.floor(np.log2(np.maximum(np.max(np.abs(m[0]), axis=1), 1e-300)))
+    m = (m[0] * sc[:, None], m[1] * sc[:, None])
+    mm = _dd_dot(m, m)
+    bm = _dd_dot(b, m)
+    ok = mm[0] > 0
+    safe = (np.where(ok, mm[0], 1.0), np.where(ok, mm[1], 0.0))
+    tc = _dd_neg(_dd_div(bm, safe))
+    tc = (np.where(ok, tc[0], 0.0), np.where(ok, tc[1], 0.0))
+    b0 = tuple(np.stack(c, axis=1) for c in zip(*[
+        _dd_add((b[0][:, i], b[1][:, i]), _dd_mul(tc, (m[0][:, i], m[1][:, i]))) for i in range(3)]))
+    lo_raw = {"line": -np.inf, "ray": 0.0, "segment": 0.0}[kind]
+    hi_raw = {"line": np.inf, "ray": np.inf, "segment": 1.0}[kind]
+    tcl = _ld(tc)
+    lo = (LD(lo_raw) / LD(1)) * np.ones(n, dtype=LD)
+    hi = LD(hi_raw) * np.ones(n, dtype=LD)
+    if kind == "segment":
+        hi = hi / sc.astype(LD)
+    lo = lo - tcl
+    hi = hi - tcl
+    return _ld(b0), _ld(m), lo, hi
+
+
+def _linear_target(kind, data, C):
+    b0, m, lo, hi = _anchor(kind, data, C)
+    return dict(tb0=b0, tm=m, tmm=np.sum(m * m, axis=1), tlo=lo, thi=hi)
+
+
+def _window(b0, m, lo, hi, R):
+    """Parameter window holding every minimiser of s -> dist(b0 + s m, round)."""
+    mm = np.sum(m * m, axis=1)
+    s0 = np.minimum(np.maximum(LD(0), lo), hi)
+    dref = _nrm(b0 + s0[:, None] * m)
+    b2 = np.sum(b0 * b0, axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        W = np.sqrt(np.maximum((dref + 2 * R) ** 2 - b2, 0) / np.where(mm > 0, mm, 1)) * LD(1.001)
+    W = np.where(mm > 0, W, 0) + LD(1e-30) * (1 + np.abs(s0))
+    wlo = np.minimum(np.maximum(-W, lo), hi)
+    whi = np.minimum(np.maximum(W, lo), hi)
+    return wlo, whi
+
+
+class ScreenResult:
+    """value: long-double upper bound per case; slack: its rounding allowance; how: (form name,
+    parameter as long double) of the best pair, for a 50-digit re-evaluation."""
+
+    def __init__(self, value, slack, forms, params):
+        self.value, self.slack, self.forms, self.params = value, slack, forms, params
+
+
+def screen(cases, use_ld=True):
+    """Screen upper bounds for cases of ONE kind pair (canonical order, same number of Bezier
+    control points).  use_ld=False (float32 scenes, whose bar is far coarser) skips the
+    long-double stage except for Bezier curves."""
+    with np.errstate(all="ignore"):
+        return _screen(cases, use_ld)
+
+
+def _screen(cases, use_ld):
+    ka, kb = cases[0]["a"], cases[0]["b"]
+    n = len(cases)
+    B = _stack(cases, "b_data")
+    Cb, Nb, Rb = B[:, :3], B[:, 3:6], B[:, 6]
+    nb, Ub, Vb = _ld_frame(Nb)
+    Rbl = Rb.astype(LD)
+    forms = []
+    if ka == "point":
+        A = _stack(cases, "a_data")
+        w = _diff_ld(A[:, :3], Cb)
+        v = _round_dist(w[:, None], nb[:, None], Rbl[:, None], kb == "disk")[:, 0]
+        slack = 16 * EPSLD * (_nrm(w) + Rbl)
+        return ScreenResult(v, slack.astype(float), ["point"] * n, [LD(0)] * n)
+    if ka in ("line", "ray", "segment"):
+        A = _stack(cases, "a_data")
+        tgt = _linear_target(ka, A, Cb)
+        # (1) the round's rim against the linear shape's closed form
+        p1 = _P(D=np.zeros((n, 3), dtype=LD), Ra=Rbl, Ua=Ub, Va=Vb, **tgt)
+        forms.append(_Form("rim|linear", "rim", "linear", p1, np.zeros(n), np.full(n, 2 * math.pi), True,
+                           _THETA_GRID))
+        # (2) the linear shape's parameter against the round's closed form
+        wlo, whi = _window(tgt["tb0"], tgt["tm"], tgt["tlo"], tgt["thi"], Rbl)
+        p2 = _P(b0=tgt["tb0"], m=tgt["tm"], n=nb, R=Rbl)
+        forms.append(_Form("line|round", "line", kb, p2, wlo, whi, False, _S_GRID))
+    elif ka == "bezier":
+        # two halves, each parametrised from its end (t on [0, 1/2], and s = 1 - t on [0, 1/2] with
+        # the control points reversed): parameters near an end keep their full relative precision,
+        # which a curve with a control point 1e12 away needs (there 1 ulp of t near 1 moves the
+        # point by 1e-4)
+        ctrl = np.array([c["a_data"] for c in cases], dtype=float)       # (n, K, 3)
+        rel_dd = _two_sum(ctrl, -Cb[:, None, :])                          # exact
+        best = np.full(n, LD(np.inf), dtype=LD)
+        names, params = [None] * n, [None] * n
+        slack = np.zeros(n)
+        for name, order in (("bezier|round", slice(None)), ("bezier_reversed|round", slice(None, None, -1))):
+            dd = (rel_dd[0][:, order, :].copy(), rel_dd[1][:, order, :].copy())
+            form = _Form(name, "bezier", kb, _P(ctrl=_ld(dd), n=nb, R=Rbl), np.zeros(n), np.full(n, 0.5), False,
+                         _T_GRID)
+            # (always refined in long double: a float32 scene of a curve 1e5 times larger than the
+            # round needs it for the float32 bar too)
+            v, a, b, u, mag = _minimize_bezier(form, dd, nb, Rbl, kb)
+            for j in np.flatnonzero(v < best):
+                best[j], names[j], params[j] = v[j], name, (float(a[j]), float(b[j]), LD(u[j]))
+                slack[j] = 16 * EPSLD * float(mag[j])
+        return ScreenResult(best, slack, names, params)
+    else:
+        A = _stack(cases, "a_data")
+        Ca, Na, Ra = A[:, :3], A[:, 3:6], A[:, 6]
+        na, Ua, Va = _ld_frame(Na)
+        Ral = Ra.astype(LD)
+        Dab = _diff_ld(Ca, Cb)
+        pa = _P(D=Dab, Ra=Ral, Ua=Ua, Va=Va, n=nb, R=Rbl)
+        forms.append(_Form("rim_a|b", "rim", kb, pa, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
+        pb = _P(D=-Dab, Ra=Rbl, Ua=Ub, Va=Vb, n=na, R=Ral)
+        forms.append(_Form("rim_b|a", "rim", ka, pb, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
+    best = np.full(n, LD(np.inf), dtype=LD)
+    best_x = np.zeros(n, dtype=LD)
+    best_f = np.zeros(n, dtype=int)
+    slack = np.zeros(n)
+    for fi, form in enumerate(forms):
+        v, x = _minimize(form, np.asarray(form.lo, dtype=LD), np.asarray(form.hi, dtype=LD), use_ld=use_ld)
+        better = v < best
+        best = np.where(better, v, best)
+        best_x = np.where(better, x, best_x)
+        best_f = np.where(better, fi, best_f)
+    for fi, form in enumerate(forms):
+        sel = best_f == fi
+        if sel.any():
+            mag = form.magnitude(best_x)
+            slack = np.where(sel, (16 * EPSLD if use_ld else 16 * EPS64) * mag.astype(float), slack)
+    return ScreenResult(best, slack, [forms[i].name for i in best_f], list(best_x))
+
+
+# ---- residuals: how far a point is from a shape (long double, offsets in double-double) -------
+def residuals(kind, data, pts, params=None):
+    """(distance of each point (n, 3) (float64 or long double) from its shape (n cases of `kind`),
+    a bound on the long-double evaluation error of that distance).  A Bezier point p is measured
+    against B(param) (its own parameter, which must lie in [0, 1]) as |sum_i b_i(t) (p - P_i)|,
+    error ~eps sum_i b_i |p - P_i|: small wherever p is near the curve, even for a control point
+    1e12 away or a curve translated by 1e12."""
+    pts = np.asarray(pts)
+    P = pts.astype(LD)
+    if kind == "bezier":
+        ctrl = np.asarray(data, dtype=float)
+        t = np.asarray(params, dtype=LD)
+        k = ctrl.shape[1] - 1
+        s = 1 - t
+        w, mag = 0, 0
+        for i in range(k + 1):
+            b = math.comb(k, i) * t ** i * s ** (k - i)
+            d = _pt_minus(P, ctrl[:, i, :])
+            w = w + b[:, None] * d
+            mag = mag + b * _nrm(d)
+        bad = ~((t >= 0) & (t <= 1))
+        return np.where(bad, LD(np.inf), _nrm(w)), 16 * LD(EPSLD) * mag
+    data = np.asarray(data, dtype=float)
+    if kind in ROUND:
+        n, _, _ = _ld_frame(data[:, 3:6])
+        w = _pt_minus(P, data[:, :3])
+        R = data[:, 6].astype(LD)
+        d = _round_dist(w[:, None], n[:, None], R[:, None], kind == "disk")[:, 0]
+        return d, 16 * LD(EPSLD) * (_nrm(w) + R)
+    C0 = data[:, :3]
+    w = _pt_minus(P, C0)
+    if kind == "point":
+        return _nrm(w), 16 * LD(EPSLD) * _nrm(w)
+    tgt = _linear_target(kind, data, C0)
+    d = _lin_dist(w[:, None] - tgt["tb0"][:, None], tgt["tm"][:, None], tgt["tmm"][:, None],
+                  tgt["tlo"][:, None], tgt["thi"][:, None])[:, 0]
+    return d, 16 * LD(EPSLD) * (_nrm(w) + _nrm(tgt["tb0"]))
+
+
+def _pt_minus(P, C):
+    """P (long double or float64 points) - C (float64), accurately."""
+    if P.dtype == LD:
+        hi = P.astype(np.float64)
+        lo = (P - hi.astype(LD)).astype(np.float64)
+        d = _two_sum(hi, -C)
+        return d[0].astype(LD) + (d[1].astype(LD) + lo.astype(LD))
+    return _diff_ld(P, C)
+
+
+# =============================================================================================
+# 3. the checker
+# =============================================================================================
+def _dtype(precision):
+    return {"float32": np.float32, "float64": np.float64, "longdouble": np.float64}[precision]
+
+
+def make_shape(cd, kind, data, dtype=np.float64):
+    """A circledist shape (scalar, or a batch when data has a leading batch axis)."""
+    arr = np.asarray(data, dtype=dtype)
+    if kind == "bezier":
+        return cd.Bezier(arr)
+    if kind == "point":
+        return cd.Point(arr[..., :3])
+    if kind in ("line", "ray"):
+        return getattr(cd, kind.capitalize())(arr[..., :3], arr[..., 3:6])
+    if kind == "segment":
+        return cd.Segment(arr[..., :3], arr[..., 3:6])
+    return getattr(cd, kind.capitalize())(arr[..., :3], arr[..., 3:6], arr[..., 6])
+
+
+def pair_scale(case):
+    """The pair's length scale of within()'s documented tolerance 64 eps (s + d) (effects.hpp:
+    the sizes and separation of the bounding balls; a line's distance from the round's centre)."""
+    def ball(kind, data):
+        d = np.asarray(data, float)
+        if kind == "point":
+            return d[:3], 0.0
+        if kind in ("line", "ray"):
+            return d[:3], math.inf
+        if kind == "segment":
+            return (d[:3] + d[3:6]) / 2, float(np.linalg.norm(d[3:6] - d[:3])) / 2
+        if kind in ROUND:
+            return d[:3], float(d[6])
+        lo, hi = d.min(axis=0), d.max(axis=0)
+        c = (lo + hi) / 2
+        return c, float(max(np.linalg.norm(p - c) for p in d))
+    ka, kb = case["a"], case["b"]
+    ca, ra = ball(ka, case["a_data"])
+    cb, rb = ball(kb, case["b_data"])
+    s = rb
+    if math.isfinite(ra):
+        s = max(s, ra, float(np.linalg.norm(ca - cb)))
+    else:
+        d = np.asarray(case["a_data"], float)
+        o, u = d[:3], d[3:6]
+        t = float(np.dot(cb - o, u) / np.dot(u, u))
+        if ka == "ray":
+            t = max(t, 0.0)
+        s = max(s, float(np.linalg.norm(o + t * u - cb)))
+    return s if s > 0 else 1.0
+
+
+def _eq(x, y):
+    """Bitwise-equal answers (NaN equal to NaN)."""
+    x, y = np.asarray(x), np.asarray(y)
+    return (x == y) | (np.isnan(x.astype(float)) & np.isnan(y.astype(float)))
+
+
+def _finding(check, case, solver, precision, order, entry, **info):
+    ka, kb = (case["a"], case["b"]) if order == "ab" else (case["b"], case["a"])
+    f = dict(check=check, family=case["family"], case_id=case["id"], pair=f"{case['a']}-{case['b']}",
+                kinds=[ka, kb], solver=solver, precision=precision, order=order, entry=entry)
+    f["a_data"] = case["a_data"] if order == "ab" else case["b_data"]
+    f["b_data"] = case["b_data"] if order == "ab" else case["a_data"]
+    for k, v in info.items():
+        f[k] = _jsonable(v)
+    return f
+
+
+def _jsonable(v):
+    if isinstance(v, np.longdouble) and np.finfo(np.longdouble).nmant > 52:
+        # full long-double digits (25 significant: exact to far below one ulp)
+        return np.format_float_scientific(v, unique=False, precision=24) if np.isfinite(v) else str(v)
+    if isinstance(v, (np.floating, float)):
+        return float(v) if np.isfinite(float(v)) else str(float(v))
+    if isinstance(v, (np.integer,)):
+        return int(v)
+    if isinstance(v, (np.bool_,)):
+        return bool(v)
+    if isinstance(v, np.ndarray):
+        return [_jsonable(x) for x in v]
+    if isinstance(v, (list, tuple)):
+        return [_jsonable(x) for x in v]
+    return v
+
+
+def _group(cases):
+    groups = {}
+    for i, c in enumerate(cases):
+        key = (c["a"], c["b"], len(c["a_data"]) if c["a"] == "bezier" else 0)
+        groups.setdefault(key, []).append(i)
+    return groups
+
+
+def _call(fn, *args, **kw):
+    try:
+        return fn(*args, **kw), None
+    except Exception as e:  # noqa: BLE001 - any exception is a finding
+        return None, f"{type(e).__name__}: {e}"
+
+
+def _run_batch(cd, ka, kb, A, Bd, solver, precision, n):
+    dt = _dtype(precision)
+    SA, SB = make_shape(cd, ka, A, dt), make_shape(cd, kb, Bd, dt)
+    kw = dict(solver=solver, precision=precision)
+    out = {}
+    for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
+        d, err = _call(cd.distance, x, y, **kw)
+        r, err2 = _call(cd.closest_points, x, y, **kw)
+        out[order] = dict(d=d, r=r, err=err or err2)
+    return out, SA, SB
+
+
+def _within_limits(D, s, eps, bar_abs):
+    """Limits just above and below D that the documented tolerance 64 eps (s + d) cannot blur."""
+    band = 4 * 64 * eps * (s + D)
+    hi = D + np.maximum(band, bar_abs)
+    lo = D - np.maximum(band, bar_abs)
+    return lo, hi, band
+
+
+def check_cases(cd, cases, combo_list=None, scalar=None, screens=None, within=True):
+    """Run every combination on `cases` (any mix of families and kinds), both orders, and return
+    (findings, stats).  scalar: indices of cases that also get scalar calls (default all);
+    screens: {case index: (value, slack, f32 value, f32 slack)} to reuse."""
+    combo_list = combo_list or combos()
+    if scalar is None:
+        scalar = set(range(len(cases)))
+    scalar = set(scalar)
+    findings = []
+    stats = {"queries": len(cases), "calls": 0}
+    screens = {} if screens is None else screens
+    for (ka, kb, _), idx in _group(cases).items():
+        group = [cases[i] for i in idx]
+        need64 = [j for j, i in enumerate(idx) if i not in screens]
+        if need64:
+            s64 = screen([group[j] for j in need64])
+            precs = {p for _, p in combo_list}
+            if "float32" in precs:
+                s32 = screen([to_float32_case(group[j]) for j in need64], use_ld=False)
+            for q, j in enumerate(need64):
+                screens[idx[j]] = dict(
+                    value=s64.value[q], slack=s64.slack[q], form=s64.forms[q], param=s64.params[q],
+                    value32=s32.value[q] if "float32" in precs else None,
+                    slack32=s32.slack[q] if "float32" in precs else None,
+                    form32=s32.forms[q] if "float32" in precs else None,
+                    param32=s32.params[q] if "float32" in precs else None)
+        findings += _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, stats)
+    return findings, stats
+
+
+def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, stats):
+    findings = []
+    n = len(group)
+    data = {"f64": (np.array([c["a_data"] for c in group], dtype=float),
+                    np.array([c["b_data"] for c in group], dtype=float))}
+    g32 = [to_float32_case(c) for c in group]
+    data["f32"] = (np.array([c["a_data"] for c in g32], dtype=float), np.array([c["b_data"] for c in g32], dtype=float))
+    radius = {"f64": np.array([largest_radius(c) for c in group]), "f32": np.array([largest_radius(c) for c in g32])}
+    sscale = {"f64": np.array([scene_scale(c) for c in group]), "f32": np.array([scene_scale(c) for c in g32])}
+    pscale = {"f64": np.array([pair_scale(c) for c in group]), "f32": np.array([pair_scale(c) for c in g32])}
+    U = {"f64": np.array([screens[i]["value"] for i in idx], dtype=LD),
+         "f32": np.array([screens[i]["value32"] if screens[i]["value32"] is not None else np.nan for i in idx],
+                         dtype=LD)}
+    slack = {"f64": np.array([screens[i]["slack"] for i in idx]),
+             "f32": np.array([screens[i]["slack32"] if screens[i]["slack32"] is not None else 0 for i in idx])}
+    runs = {}
+    # ---- batched calls and per-answer checks -----------------------------------------------
+    for solver, precision in combo_list:
+        scene = "f32" if precision == "float32" else "f64"
+        A, Bd = data[scene]
+        if ka == "bezier":
+            A = A.reshape(n, -1, 3)
+        res, SA, SB = _run_batch(cd, ka, kb, A, Bd, solver, precision, n)
+        stats["calls"] += 2 * n * 2
+        runs[(solver, precision)] = (res, SA, SB)
+    # verified pairs: upper bounds from every combination's closest points (per input scene)
+    upair = {"f64": np.full(n, LD(np.inf), dtype=LD), "f32": np.full(n, LD(np.inf), dtype=LD)}
+    resid = {}
+    for (solver, precision), (res, SA, SB) in runs.items():
+        scene = "f32" if precision == "float32" else "f64"
+        A, Bd = data[scene]
+        if ka == "bezier":
+            A = A.reshape(n, -1, 3)
+        for order in ("ab", "ba"):
+            r = res[order]["r"]
+            if r is None:
+                continue
+            pa, pb = np.asarray(r.point_a), np.asarray(r.point_b)
+            qa, qb = (pa, pb) if order == "ab" else (pb, pa)   # qa on shape a, qb on shape b
+            par = np.asarray(r.param_a if order == "ab" else r.param_b)
+            with np.errstate(all="ignore"):
+                ra_, ea = residuals(ka, A, qa, par[:, 0] if ka == "bezier" else None)
+                rb_, eb = residuals(kb, Bd, qb)
+                sep = _nrm(qa.astype(LD) - qb.astype(LD))
+            resid[(solver, precision, order)] = (ra_, rb_, sep)
+            # a genuine pair: the truth is at most its separation plus both points' distances off
+            # their shapes (each rounded up by its evaluation error, and the separation's)
+            bound = sep + ra_ + rb_ + ea + eb + 16 * LD(EPSLD) * sep
+            ok = np.isfinite(bound)
+            upair[scene] = np.where(ok, np.minimum(upair[scene], bound), upair[scene])
+    for (solver, precision), (res, SA, SB) in runs.items():
+        scene = "f32" if precision == "float32" else "f64"
+        bar = BARS[precision]
+        eps_out = OUT_EPS[precision]
+        Us, sl = U[scene], slack[scene]
+        Ub = np.minimum(Us, upair[scene])
+        scale_ = np.maximum(Ub.astype(float), radius[scene])
+        bar_abs = bar * scale_
+        ulps = ULPS * eps_out * sscale[scene]
+        gcases = g32 if scene == "f32" else group
+        d_orders = {}
+        inaccurate = {}
+        for order in ("ab", "ba"):
+            rr = res[order]
+            if rr["err"] is not None:
+                for j in range(n):
+                    findings.append(_finding("exception", gcases[j], solver, precision, order,
+                                             "distance/closest_points", error=rr["err"]))
+                continue
+            d = np.asarray(rr["d"])
+            r = rr["r"]
+            cdist = np.asarray(r.distance)
+            d_orders[order] = d
+            want = {"float32": np.float32, "float64": np.float64, "longdouble": np.longdouble}[precision]
+            if d.dtype != want or cdist.dtype != want:
+                findings.append(_finding("dtype", gcases[0], solver, precision, order, "distance",
+                                         got=str(d.dtype), expected=np.dtype(want).name))
+            dl, cl = d.astype(LD), cdist.astype(LD)
+            ra_, rb_, sep = resid[(solver, precision, order)]
+            acc_bad = inaccurate.setdefault(order, set())
+            for j in range(n):
+                c = gcases[j]
+                info = dict(screen=Us[j], screen_slack=sl[j], verified_pair_bound=upair[scene][j],
+                            bar_abs=bar_abs[j], largest_radius=radius[scene][j])
+                for entry, val in (("distance", dl[j]), ("closest_points", cl[j])):
+                    if not np.isfinite(val) or val < 0:
+                        findings.append(_finding("non_finite", c, solver, precision, order, entry, library=val))
+                        continue
+                    if val > Ub[j] + bar_abs[j] + sl[j]:
+                        findings.append(_finding("above_bound", c, solver, precision, order, entry, library=val,
+                                                 excess=(val - Ub[j]) / scale_[j], **info))
+                        acc_bad.add(j)
+                    elif val < Us[j] - bar_abs[j] - sl[j] and val < upair[scene][j] - bar_abs[j] - sl[j]:
+                        findings.append(_finding("below_bound", c, solver, precision, order, entry, library=val,
+                                                 excess=(val - Ub[j]) / scale_[j], **info))
+                        acc_bad.add(j)
+                # closest points on their shapes; separation equals the reported distance
+                if not (ra_[j] <= ulps[j] and rb_[j] <= ulps[j]):
+                    findings.append(_finding("point_off_shape", c, solver, precision, order, "closest_points",
+                                             off_a=ra_[j], off_b=rb_[j], allowed=ulps[j],
+                                             point_a=np.asarray(r.point_a)[j],
+                                             point_b=np.asarray(r.point_b)[j]))
+                if not abs(sep[j] - cl[j]) <= bar_abs[j] + ulps[j]:
+                    findings.append(_finding("separation", c, solver, precision, order, "closest_points",
+                                             separation=sep[j], library=cl[j], allowed=bar_abs[j] + ulps[j],
+                                             point_a=np.asarray(r.point_a)[j], point_b=np.asarray(r.point_b)[j]))
+                if not abs(dl[j] - cl[j]) <= 2 * bar_abs[j]:
+                    findings.append(_finding("distance_vs_closest_points", c, solver, precision, order, "both",
+                                             distance=dl[j], closest_points=cl[j], allowed=2 * bar_abs[j]))
+                if precision == "float32" and float(np.float32(d[j])) != float(d[j]):
+                    findings.append(_finding("float32_value", c, solver, precision, order, "distance", library=d[j]))
+        # symmetry: distance(a, b) == distance(b, a) (README; the closest points of a non-unique
+        # pair may legitimately differ between the orders, so only the distances are compared)
+        if len(d_orders) == 2:
+            r1, r2 = res["ab"]["r"], res["ba"]["r"]
+            same = _eq(d_orders["ab"], d_orders["ba"]) & _eq(np.asarray(r1.distance), np.asarray(r2.distance))
+            for j in np.flatnonzero(~same):
+                findings.append(_finding("asymmetric", gcases[j], solver, precision, "ab", "distance",
+                                         ab=d_orders["ab"][j], ba=d_orders["ba"][j],
+                                         cp_ab=np.asarray(r1.distance)[j], cp_ba=np.asarray(r2.distance)[j]))
+        # within / distance_if_within / intersects, batched
+        wres = {}
+        if within and d_orders:
+            fw, wres = _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, pscale[scene], bar_abs,
+                                     inaccurate)
+            findings += fw
+        # batched == scalar
+        sel = [j for j, i in enumerate(idx) if i in scalar]
+        if sel:
+            findings += _check_scalar(cd, ka, kb, res, d_orders, wres, sel, gcases, solver, precision, stats)
+    return findings
+
+
+def _d_array(x, precision):
+    return np.asarray(x, dtype={"float32": np.float32, "float64": np.float64, "longdouble": np.longdouble}[precision])
+
+
+def _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, ps, bar_abs, inaccurate):
+    """within / distance_if_within / intersects against the library's own distance D and the
+    documented rule  within(a, b, d) == (D <= d + 64 eps (s + d)):  probed at D +- 4x that
+    tolerance (at least the bar), where the rule leaves no latitude.  Where D itself failed the
+    accuracy check the finding is filed as "within_vs_inaccurate_distance" (a symptom)."""
+    out = []
+    wres = {}
+    kw = dict(solver=solver, precision=precision)
+    eps = OUT_EPS[precision]
+    for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
+        if order not in d_orders:
+            continue
+        dd = d_orders[order]
+        Df = dd.astype(float)
+        lo, hi, band = _within_limits(Df, ps, eps, bar_abs)
+        lo = np.maximum(lo, 0.0)
+        hi_a, lo_a = _d_array(hi, precision), _d_array(lo, precision)
+        w_hi, e1 = _call(cd.within, x, y, hi_a, **kw)
+        w_lo, e2 = _call(cd.within, x, y, lo_a, **kw)
+        b_hi, e3 = _call(cd.distance_if_within, x, y, hi_a, **kw)
+        b_lo, e4 = _call(cd.distance_if_within, x, y, lo_a, **kw)
+        it, e5 = _call(cd.intersects, x, y, **kw)
+        err = e1 or e2 or e3 or e4 or e5
+        if err:
+            out.append(_finding("exception", gcases[0], solver, precision, order, "within", error=err))
+            continue
+        w_hi, w_lo, it = np.asarray(w_hi), np.asarray(w_lo), np.asarray(it)
+        b_hi, b_lo = np.asarray(b_hi), np.asarray(b_lo)
+        wres[order] = (hi_a, lo_a, w_hi, w_lo, it)
+        for j in range(len(gcases)):
+            bad = []
+            if not w_hi[j]:
+                bad.append(f"within(d={float(hi[j])!r}) is False")
+            if lo[j] > 0 and w_lo[j]:
+                bad.append(f"within(d={float(lo[j])!r}) is True")
+            if not _eq(b_hi[j], dd[j]):
+                bad.append(f"distance_if_within(d={float(hi[j])!r}) = {b_hi[j]!r}")
+            if lo[j] > 0 and not np.isinf(b_lo[j]):
+                bad.append(f"distance_if_within(d={float(lo[j])!r}) = {b_lo[j]!r}")
+            if Df[j] == 0 and not it[j]:
+                bad.append("intersects is False at distance 0")
+            if Df[j] > 4 * 64 * eps * ps[j] and Df[j] > bar_abs[j] and it[j]:
+                bad.append("intersects is True")
+            if bad:
+                check = "within_vs_inaccurate_distance" if j in inaccurate.get(order, ()) else "within"
+                out.append(_finding(check, gcases[j], solver, precision, order, "within/intersects",
+                                    library=dd[j], problems=bad, pair_scale=ps[j]))
+    return out, wres
+
+
+def _check_scalar(cd, ka, kb, res, d_orders, wres, sel, gcases, solver, precision, stats):
+    """Scalar calls must give exactly the batch's answers (distance, closest points, within at
+    the batch's probe limits, intersects)."""
+    out = []
+    kw = dict(solver=solver, precision=precision)
+    dt = _dtype(precision)
+    for j in sel:
+        c = gcases[j]
+        sa = make_shape(cd, ka, c["a_data"], dt)
+        sb = make_shape(cd, kb, c["b_data"], dt)
+        for order, (x, y) in (("ab", (sa, sb)), ("ba", (sb, sa))):
+            if order not in d_orders:
+                continue
+            d, e1 = _call(cd.distance, x, y, **kw)
+            r, e2 = _call(cd.closest_points, x, y, **kw)
+            stats["calls"] += 2
+            if e1 or e2:
+                out.append(_finding("exception", c, solver, precision, order, "scalar", error=e1 or e2))
+                continue
+            rb = res[order]["r"]
+            problems = []
+            if not _eq(d, d_orders[order][j]):
+                problems.append(f"distance: scalar {d!r} batch {d_orders[order][j]!r}")
+            if not _eq(r.distance, np.asarray(rb.distance)[j]):
+                problems.append(f"closest_points.distance: scalar {r.distance!r} batch {np.asarray(rb.distance)[j]!r}")
+            if not (np.all(_eq(np.asarray(r.point_a), np.asarray(rb.point_a)[j]))
+                    and np.all(_eq(np.asarray(r.point_b), np.asarray(rb.point_b)[j]))):
+                problems.append("closest points differ: scalar %r %r batch %r %r" % (
+                    np.asarray(r.point_a), np.asarray(r.point_b), np.asarray(rb.point_a)[j], np.asarray(rb.point_b)[j]))
+            if order in wres:
+                hi_a, lo_a, w_hi, w_lo, it = wres[order]
+                for lim, wb in ((hi_a[j], w_hi[j]), (lo_a[j], w_lo[j])):
+                    ws, e3 = _call(cd.within, x, y, lim, **kw)
+                    if e3:
+                        problems.append(f"within raised {e3}")
+                    elif bool(ws) != bool(wb):
+                        problems.append(f"within(d={lim!r}): scalar {ws} batch {wb}")
+                its, e4 = _call(cd.intersects, x, y, **kw)
+                if e4 or bool(its) != bool(it[j]):
+                    problems.append(f"intersects: scalar {its} batch {it[j]} {e4 or ''}")
+                stats["calls"] += 3
+            if problems:
+                out.append(_finding("batch_scalar", c, solver, precision, order, "scalar", problems=problems))
+    return out
+
+
+# =============================================================================================
+# 4. confirmation with the 50-digit references
+# =============================================================================================
+_REF_CACHE = {}
+
+
+def _key(case):
+    def t(d):
+        return tuple(tuple(p) for p in d) if d and isinstance(d[0], list) else tuple(d)
+    return (case["a"], t(case["a_data"]), case["b"], t(case["b_data"]))
+
+
+def mp_reference(case):
+    """The 50-digit reference distance (mpf) of a case (canonical order), cached."""
+    key = _key(case)
+    if key in _REF_CACHE:
+        return _REF_CACHE[key]
+    L, R = _load("reference"), _load("reference_round")
+    ka, a, kb, b = key
+    if ka in LINEAR:
+        ref = L.reference(ka, a, kb, b).distance
+    elif ka == "bezier":
+        f = R.bezier_disk if kb == "disk" else R.bezier_circle
+        ref = f([list(p) for p in a], b[:3], b[3:6], b[6]).distance
+    else:
+        f = {("circle", "circle"): R.circle_circle, ("circle", "disk"): R.circle_disk,
+             ("disk", "disk"): R.disk_disk}[(ka, kb)]
+        ref = f(a[:3], a[3:6], a[6], b[:3], b[3:6], b[6]).distance
+    _REF_CACHE[key] = ref
+    return ref
+
+
+def _mpf_ld(x):
+    R = _load("reference_round")
+    p, q = np.longdouble(x).as_integer_ratio()
+    return R.mpf(p) / q
+
+
+def mp_screen_value(case, form, param):
+    """The screen's best pair re-evaluated at 50 digits: the exact distance between the genuine
+    point the screen's parameter names and the other shape (an upper bound of the truth)."""
+    L, R = _load("reference"), _load("reference_round")
+    ka, kb = case["a"], case["b"]
+    a, b = case["a_data"], case["b_data"]
+    x = _mpf_ld(param) if not isinstance(param, tuple) else None
+    ctx = R.ctx
+    if form == "point":
+        rnd = R.make_round(b[:3], b[3:6], b[6])
+        return R.point_disk(a[:3], rnd)[0] if kb == "disk" else R.point_circle(a[:3], rnd)[0]
+    if form == "rim|linear":
+        rnd = R.make_round(b[:3], b[3:6], b[6])
+        p = rnd.rim_point(x)
+        return L.Linear(ka, a).distance_to_point(tuple(L.mpf(ctx.nstr(c, 60)) for c in p))
+    if form == "line|round":
+        lin = L.Linear(ka, a)
+        rnd = R.make_round(b[:3], b[3:6], b[6])
+        Cb = L._v(b[:3])
+        if lin.mm == 0:
+            t = L.mpf(0)
+        else:
+            # the screen's parameter s is relative to the anchor (the point nearest the centre),
+            # in units of the direction scaled by the power of two sc of _anchor: t = tc + s sc
+            m = np.asarray(a[3:6], float)
+            if ka == "segment":
+                m = _two_sum(m, -np.asarray(a[:3], float))[0]
+            sc = 2.0 ** -math.floor(math.log2(max(float(np.max(np.abs(m))), 1e-300)))
+            tc = -L._dot(L._sub(lin.B, Cb), lin.m) / lin.mm
+            t = lin.clamp(tc + L.mpf(ctx.nstr(x, 60)) * L.mpf(sc))
+        p = lin.point(t)
+        pr = tuple(R.mpf(L.mp.nstr(c, 60)) for c in p)
+        return R.point_disk(pr, rnd)[0] if kb == "disk" else R.point_circle(pr, rnd)[0]
+    if form in ("bezier|round", "bezier_reversed|round"):
+        rnd = R.make_round(b[:3], b[3:6], b[6])
+        lo_, hi_, u = param
+        t = R.mpf(lo_) + _mpf_ld(u) * (R.mpf(hi_) - R.mpf(lo_))
+        p = R.bezier_point(a, t if form == "bezier|round" else 1 - t)
+        return R.point_disk(p, rnd)[0] if kb == "disk" else R.point_circle(p, rnd)[0]
+    A = R.make_round(a[:3], a[3:6], a[6])
+    Bn = R.make_round(b[:3], b[3:6], b[6])
+    if form == "rim_a|b":
+        p = A.rim_point(x)
+        return R.point_disk(p, Bn)[0] if kb == "disk" else R.point_circle(p, Bn)[0]
+    p = Bn.rim_point(x)
+    return R.point_disk(p, A)[0] if ka == "disk" else R.point_circle(p, A)[0]
+
+
+def confirm(finding, case, screen_info):
+    """Judge an accuracy finding (above_bound / below_bound / distance_vs_closest_points) against
+    the 50-digit reference.  Adds reference, reference_screen (the screen's pair at 50 digits),
+    reference_missed (the screen's pair beats the reference: the reference is wrong there),
+    error (relative) and confirmed."""
+    f32 = finding["precision"] == "float32"
+    c = to_float32_case(case) if f32 else case
+    ref = mp_reference(c)
+    form = screen_info["form32" if f32 else "form"]
+    param = screen_info["param32" if f32 else "param"]
+    try:
+        scr = mp_screen_value(c, form, param)
+    except Exception as e:  # noqa: BLE001
+        scr = None
+        finding["reference_screen_error"] = str(e)
+    best = ref
+    finding["basis"] = "mpmath reference"
+    if scr is not None:
+        finding["reference_screen"] = float(scr)
+        R = _load("reference_round")
+        scale_ = max(abs(ref), R.mpf(largest_radius(c)), R.mpf("1e-300"))
+        if scr < ref - R.mpf(MISS_REL) * scale_:
+            finding["reference_missed"] = True
+            finding["basis"] = "the screen's pair at 50 digits (the mpmath reference missed the minimum)"
+            best = scr
+    finding["reference"] = float(best)
+    scale_ = max(float(best), largest_radius(c))
+    bar = BARS[finding["precision"]] * scale_
+    vals = [finding[k] for k in ("library", "distance", "closest_points") if k in finding]
+    # long-double answers are stored as 25-digit text (exact far below their ulp)
+    errs = [abs(_mp_num(v) - best) for v in vals if not (isinstance(v, str) and v in ("nan", "inf"))]
+    finding["error"] = float(max(errs) / scale_) if errs and scale_ > 0 else None
+    finding["confirmed"] = bool(errs) and bool(max(errs) > bar)
+    return finding
+
+
+def confirm_point(finding, case):
+    """Re-measure point_off_shape at 50 digits (closed forms; Bezier: the 50-digit point-curve
+    distance by the reference's one-parameter minimisation)."""
+    L, R = _load("reference"), _load("reference_round")
+    ka, kb = finding["kinds"]
+    a, b = finding["a_data"], finding["b_data"]
+    offs = []
+    for kind, data, p in ((ka, a, finding["point_a"]), (kb, b, finding["point_b"])):
+        # points are stored exactly (long-double ones as 25-digit text)
+        if kind == "bezier":
+            offs.append(float(R.bezier_disk(data, list(p), (0.0, 0.0, 1.0), 0.0).distance))
+        else:
+            offs.append(float(L.distance_to_shape(tuple(L.mpf(x) for x in p), kind, tuple(data))))
+    finding["off_a_mp"], finding["off_b_mp"] = offs
+    finding["confirmed"] = max(offs) > finding["allowed"]
+    return finding
+
+
+ACCURACY_CHECKS = ("above_bound", "below_bound", "distance_vs_closest_points")
+# a genuine pair (the screen's, at 50 digits) below the reference by more than this (relative to
+# max(reference, largest radius)) means the reference missed the minimum: 1e-3 of the tightest bar
+MISS_REL = "1e-18"
+
+
+EXACT_CHECKS = ("within", "within_vs_inaccurate_distance", "asymmetric", "batch_scalar", "dtype", "float32_value",
+                "exception", "non_finite")
+
+
+def _mp_num(v):
+    R = _load("reference_round")
+    return R.mpf(v) if isinstance(v, str) else R.mpf(float(v))
+
+
+def confirm_separation(finding):
+    """Re-measure a separation mismatch at 50 digits from the stored points."""
+    R = _load("reference_round")
+    pa = [_mp_num(x) for x in finding["point_a"]]
+    pb = [_mp_num(x) for x in finding["point_b"]]
+    sep = R.norm(R.sub(tuple(pa), tuple(pb)))
+    finding["separation_mp"] = float(sep)
+    finding["confirmed"] = bool(abs(sep - _mp_num(finding["library"])) > _mp_num(finding["allowed"]))
+    return finding
+
+
+def confirm_finding(finding, case, screen_info):
+    """Confirm one finding: accuracy findings against the 50-digit reference, point findings by
+    50-digit residuals; the exact consistency checks (within, symmetry, batch == scalar, dtypes,
+    exceptions) need no reference and are confirmed as they stand."""
+    check = finding["check"]
+    if check in ACCURACY_CHECKS:
+        return confirm(finding, case, screen_info)
+    if check == "point_off_shape":
+        return confirm_point(finding, case)
+    if check == "separation":
+        return confirm_separation(finding)
+    finding["confirmed"] = True
+    return finding
+
+
+def finding_class(f):
+    """The class a finding is counted and reproduced under."""
+    return (f["check"], f["family"], f["pair"])
+
+
+def _lit(x):
+    return repr(float(x)) if not isinstance(x, str) else x
+
+
+def _ctor_text(kind, data, f32):
+    def vec(v):
+        body = ", ".join(_lit(x) for x in v)
+        return f"np.array([{body}], np.float32)" if f32 else f"[{body}]"
+    def scal(x):
+        return f"np.float32({_lit(x)})" if f32 else _lit(x)
+    if kind == "bezier":
+        rows = ", ".join("[" + ", ".join(_lit(x) for x in p) + "]" for p in data)
+        return f"cd.Bezier(np.array([{rows}]{', np.float32' if f32 else ''}))"
+    if kind == "point":
+        return f"cd.Point({vec(data[:3])})"
+    if kind == "segment":
+        return f"cd.Segment({vec(data[:3])}, {vec(data[3:6])})"
+    if kind in ("line", "ray"):
+        return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])})"
+    return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])}, {scal(data[6])})"
+
+
+def reproducer(f):
+    """A self-contained Python snippet reproducing one finding (exact float inputs)."""
+    f32 = f["precision"] == "float32"
+    ka, kb = f["kinds"]
+    kw = f'solver="{f["solver"]}", precision="{f["precision"]}"'
+    lines = ["import numpy as np, circledist as cd",
+             f"a = {_ctor_text(ka, f['a_data'], f32)}",
+             f"b = {_ctor_text(kb, f['b_data'], f32)}"]
+    check = f["check"]
+    if check in ("within", "within_vs_inaccurate_distance"):
+        lines.append(f"print(repr(cd.distance(a, b, {kw})))   # library {f.get('library')}")
+        for p in f.get("problems", []):
+            lines.append(f"# {p}")
+        lines.append(f"print(cd.within(a, b, d, {kw}), cd.intersects(a, b, {kw}))  # d from the lines above")
+    elif check in ("point_off_shape", "separation"):
+        lines.append(f"r = cd.closest_points(a, b, {kw})")
+        lines.append("print(repr(r.distance), r.point_a, r.point_b)")
+    else:
+        entry = "closest_points(a, b, %s).distance" % kw if f.get("entry") == "closest_points" else \
+            "distance(a, b, %s)" % kw
+        lines.append(f"print(repr(cd.{entry}))")
+    note = {k: f[k] for k in ("library", "reference", "reference_screen", "error", "screen", "problems", "ab", "ba",
+                              "off_a", "off_b", "allowed", "separation", "distance", "closest_points", "error")
+            if k in f}
+    lines.append("# " + ", ".join(f"{k}={v}" for k, v in note.items()))
+    return "\n".join(lines)
+
+
+def reference_check(cd, cases, combo_list=None):
+    """Direct 50-digit comparison for a (small) set of cases: every combination, both orders,
+    distance() and closest_points().distance against mp_reference.  Returns (findings,
+    diagnostics) where diagnostics lists screen-vs-reference disagreements (a reference that
+    misses a pair the screen found, or a screen bound above the reference)."""
+    combo_list = combo_list or combos()
+    findings, diags = [], []
+    for case in cases:
+        for f32 in sorted({p == "float32" for _, p in combo_list}):
+            c = to_float32_case(case) if f32 else case
+            ref = mp_reference(c)
+            scr = screen([c], use_ld=not f32)
+            try:
+                scr_mp = mp_screen_value(c, scr.forms[0], scr.params[0])
+            except Exception as e:  # noqa: BLE001
+                scr_mp = None
+                diags.append(dict(case_id=case["id"], problem=f"screen point not re-evaluable: {e}"))
+            R = _load("reference_round")
+            best = ref
+            scale_ = max(float(ref), largest_radius(c))
+            if scr_mp is not None and scr_mp < ref - R.mpf(MISS_REL) * R.mpf(max(scale_, 1e-300)):
+                diags.append(dict(case_id=case["id"], family=case["family"], pair=f"{case['a']}-{case['b']}",
+                                  problem="reference missed the minimum", reference=float(ref),
+                                  screen_mp=float(scr_mp), float32=f32))
+                best = scr_mp
+            tol = (BARS["float32"] if f32 else 1e-15) * scale_ + float(scr.slack[0])
+            if float(scr.value[0]) > float(best) + tol:
+                diags.append(dict(case_id=case["id"], family=case["family"], pair=f"{case['a']}-{case['b']}",
+                                  problem="screen bound above the reference", reference=float(best),
+                                  screen=float(scr.value[0]), float32=f32))
+            sa = make_shape(cd, c["a"], c["a_data"], np.float32 if f32 else np.float64)
+            sb = make_shape(cd, c["b"], c["b_data"], np.float32 if f32 else np.float64)
+            for solver, precision in combo_list:
+                if (precision == "float32") != f32:
+                    continue
+                bar = BARS[precision] * scale_
+                for order, (x, y) in (("ab", (sa, sb)), ("ba", (sb, sa))):
+                    for entry in ("distance", "closest_points"):
+                        fn = cd.distance if entry == "distance" else cd.closest_points
+                        v, err = _call(fn, x, y, solver=solver, precision=precision)
+                        if err:
+                            findings.append(_finding("exception", c, solver, precision, order, entry, error=err))
+                            continue
+                        v = v if entry == "distance" else v.distance
+                        e = abs(_mp_num(_jsonable(np.longdouble(v)) if precision == "longdouble" else float(v)) - best)
+                        if e > bar:
+                            f = _finding("reference", c, solver, precision, order, entry, library=np.longdouble(v)
+                                         if precision == "longdouble" else float(v), reference=float(best),
+                                         error=float(e) / scale_)
+                            f["confirmed"] = True
+                            findings.append(f)
+    return findings, diags
+
+
+def check_and_confirm(cd, cases, combo_list=None, scalar=None, max_confirm=None, within=True):
+    """check_cases, then confirm_finding on the findings: all of them, or at most `max_confirm`
+    per (class, solver, precision) (the rest keep confirmed = None).  Returns (findings, stats)."""
+    screens = {}
+    findings, stats = check_cases(cd, cases, combo_list, scalar, screens, within)
+    index = {c["id"]: i for i, c in enumerate(cases)}
+    done = {}
+    for f in findings:
+        key = finding_class(f) + (f["solver"], f["precision"])
+        if max_confirm is not None and done.get(key, 0) >= max_confirm:
+            f["confirmed"] = None
+            continue
+        i = index[f["case_id"]]
+        confirm_finding(f, cases[i], screens[i])
+        done[key] = done.get(key, 0) + 1
+    stats["screens"] = screens
+    return findings, stats
+
+
+def check_case(cd, case, solver, precision, confirm_findings=True):
+    """One case, one (solver, precision) combination: both orders, every entry point, batch of one
+    and scalar; returns the findings (confirmed against the 50-digit references if asked)."""
+    if confirm_findings:
+        return check_and_confirm(cd, [case], [(solver, precision)])[0]
+    return check_cases(cd, [case], [(solver, precision)])[0]
