@@ -150,6 +150,15 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
   return true;
 }
 
+// Whether the line's ring minimum m is tied with its mirror image (b1 near 0): which of the two
+// lies on a piece, and whether a piece's closest pair is unique, is then the general path's call.
+template <class Real> bool tied_with_mirror(const Circle3<Real>& c, const LineRingMinimum<Real>& m) {
+  if (m.on_axis) return false;
+  const Real scale = std::max(c.radius, m.anchor.norm());
+  const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
+  return mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
+}
+
 // The closest points of a line's minimum over the ring (line_ring_minimum). `line` is the full
 // line through the piece (for a ray or a segment, the piece's own parametrization: t = param).
 template <class Real>
@@ -166,9 +175,8 @@ Result<Real> line_ring_result(const Line3<Real>& line, const Circle3<Real>& c, c
   // mirror-image minimum when b1 is (nearly) zero (the mirror point bounds it from above), or
   // a distance flat to rounding over the ring (a line within rounding of the center's axis).
   const Real scale = std::max(c.radius, m.anchor.norm());
-  const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
-  const bool tied = mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
-  r.unique = !m.on_axis && !(tied && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale));
+  r.unique = !m.on_axis &&
+             !(tied_with_mirror(c, m) && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale));
   return r;
 }
 
@@ -195,15 +203,6 @@ template <class Real>
 bool on_piece(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point, const Linear<Real>& piece) {
   const Real t = (point - (line.origin - center)).dot(line.direction) / line.direction.squaredNorm();
   return t >= piece.lo && t <= piece.hi;
-}
-
-// Whether the line's ring minimum m is tied with its mirror image (b1 near 0): which of the two
-// lies on a piece, and whether a piece's closest pair is unique, is then the general path's call.
-template <class Real> bool tied_with_mirror(const Circle3<Real>& c, const LineRingMinimum<Real>& m) {
-  if (m.on_axis) return false;
-  const Real scale = std::max(c.radius, m.anchor.norm());
-  const Real mirror_distance = (m.mirror - m.anchor).cross(m.unit_direction).norm();
-  return mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
 }
 
 // The line's minimum over the ring for a piece: false where the general path must answer.
