@@ -1113,10 +1113,14 @@ def _anchor(kind, data, C):
     tcl = _ld(tc)
     lo = (LD(lo_raw) / LD(1)) * np.ones(n, dtype=LD)
     hi = LD(hi_raw) * np.ones(n, dtype=LD)
-    if kind == "segment":
-        hi = hi / sc.astype(LD)
     lo = lo - tcl
-    hi = hi - tcl
+    if kind == "segment":
+        # The far end's parameter from its own offset, (p1 - C).m / m.m in double-double: as
+        # 1/sc - tc it cancelled to eps * 1e10 along a segment whose other end is 1e10 away.
+        th = _dd_div(_dd_dot(_two_sum(data[:, 3:6], -C), m), safe)
+        hi = np.where(ok, _ld(th), LD(0))
+    else:
+        hi = hi - tcl
     return _ld(b0), _ld(m), lo, hi
 
 

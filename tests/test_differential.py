@@ -84,17 +84,10 @@ def test_slice_covers_every_family_and_kind_pair(results):
 # Classes that still fail, each stated in the note on issue 14. Any other finding in the family
 # fails the test, and so does a known class that stops failing (remove it here then).
 KNOWN_FAILURES = {
-    ("near_concentric", "circle-circle"):
-        "nearly coincident circles (centers 1e-12 apart, normals tilted 4e-10): the octic is rounding "
-        "noise and polishing the eight sample angles does not yet reach the minimum (up to 1.2e-10 x radius)",
-    ("far_origin", "segment-disk"):
-        "a segment with one end 1e9 away and the other near the disk: answers too far (6.4e-9 x radius) and, "
-        "for a segment in the disk's plane 6e-12 outside the rim, too near (1.6e-10)",
-    ("parallel_height", "circle-circle"):
-        "parallel circles of equal radius, centers 1e-9 apart: up to 1.3e-9 x radius too far",
     ("bezier_large", "bezier-circle"):
-        "a septic curve 1e5 times larger than the circle: up to 9.8e-12 x radius too far in double, "
-        "1.8e-15 too near in long double",
+        "a septic curve 1e5 times larger than the circle: up to 1e-11 x radius off in double (the curve's "
+        "points near the circle are sums of control points 1e5 times larger, rounded to eps x 1e5 x radius: "
+        "needs the pieces' control points in compensated arithmetic), 1.8e-15 in long double",
 }
 
 

@@ -97,6 +97,34 @@ CASES = [
      (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25)),
     ("concentric-tilted-disk", "circle", (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25),
      "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
+    # class 1, nearly coincident circles (this session's differential findings): equal radii and
+    # centers, normals 1e-9 apart, crossing at two points (was 4.3e-10 for 0: the octic built from
+    # coordinates was rounding noise, Newton's slopes too).
+    ("coincident-tilted-1e-9", "circle",
+     (0.12750855989671986, 0.10261255696347438, -1.9517312279239007, 0.6340284494039545, 1.7910770082922698,
+      0.9309507724499886, 1.3555314658661317),
+     "circle", (0.12750855989671986, 0.10261255696347438, -1.9517312279239007, 0.6340284513171991,
+                1.7910770080701348, 0.9309507715743348, 1.3555314658661317)),
+    # centers 1e-14 apart, radii 2e-15 apart, normals 1e-11 apart (was 2.8e-13 for 5.4e-15).
+    ("near-coincident", "circle",
+     (-1.74547821380097, -1.4657723068379012, 1.2530721344667481, -1.5419364639385165, 0.5984487778812372,
+      5.186182052446005, 1.3794242348725156),
+     "circle", (-1.74547821380097, -1.4657723068378894, 1.2530721344667477, -1.5419364639476623,
+                0.5984487778926577, 5.186182052441968, 1.3794242348725134)),
+    # parallel circles 2e-16 apart, in-plane offset 4.8e-10, radii 1e-10 apart (was 1.0e-10).
+    ("parallel-offset-crossing", "circle", (0.7500000000000002, -1.0, 0.5000000004760804, 4.0, 0.0, 0.0,
+                                            0.4999999998990075),
+     "circle", (0.75, -1.0, 0.5, -4.0, 0.0, 0.0, 0.5)),
+    ("parallel-offset-crossing-disk", "circle", (0.7500000000000002, -1.0, 0.5000000004760804, 4.0, 0.0, 0.0,
+                                                 0.4999999998990075),
+     "disk", (0.75, -1.0, 0.5, -4.0, 0.0, 0.0, 0.5)),
+    # same center and radius, normals far apart: a V-shaped minimum at the crossings, which the
+    # bracketed polish located only to its tolerance (3.7e-14 in long double).
+    ("concentric-equal-tilted", "circle",
+     (1.2592478072399258, 0.14027546544875585, -0.9841590253828076, -0.020157603160997208, -0.16364105621647634,
+      0.07705977505769378, 3.050637383643485),
+     "circle", (1.2592478072399258, 0.14027546544875585, -0.9841590253828076, -0.1646635595550553,
+                0.04868799385030749, 0.06031852606184729, 3.050637383643485)),
     # class 2: a full line within rounding of parallel to the axis (was 0.50435 for 0.076247).
     ("line-near-axis", "line",
      (2.0700467755863365, -2.0815260920330347, 0.35595969593672966, 0.4563340808821868, 1.1910227438142138,
@@ -268,3 +296,62 @@ def test_longdouble_inputs_circle_gap(solver):
         batch = cd.Circle(np.zeros((2, 3), dtype=LD), np.array([0, 0, 1], dtype=LD), np.array([LD(1), LD(1) + gap]))
         expected = [cd.distance(inner, inner, solver=solver), cd.distance(outer, inner, solver=solver)]
         assert np.array_equal(cd.distance(batch, inner, solver=solver), np.array(expected, dtype=LD))
+
+
+# within() decided by bounds whose sample points had left their shape: parallel circles of equal
+# radius nearly on one axis (in-plane offset 2.7e-17, planes 1.88e-7 apart). The point of A
+# nearest B's center, scaled out to A's rim, was 1.7e-9 off A's plane, and in long double
+# within(d) said True 1.75e-9 below the distance. The truth (the planes' separation) is computed
+# here in mpmath.
+PARALLEL_COAXIAL = (
+    (-1.7049544532287482, -0.4196123492227376, -0.6174039345691138, 4.669208110269334, -0.9104412238263111,
+     -3.44955441916865, 2.0775529896862657),
+    (-1.7049546023051612, -0.41961232015457256, -0.6174038244332648, -4.669208110269334, 0.9104412238263111,
+     3.44955441916865, 2.0775529896862657),
+)
+
+
+@pytest.mark.parametrize("precision", sorted(BARS))
+@pytest.mark.parametrize("kinds", [("circle", "circle"), ("circle", "disk"), ("disk", "disk")])
+def test_within_parallel_nearly_coaxial(kinds, precision):
+    a, b = PARALLEL_COAXIAL
+    mp.dps = 50
+    n = [mpf(x) for x in a[3:6]]
+    norm = mp.sqrt(sum(x * x for x in n))
+    height = abs(sum((mpf(q) - mpf(p)) * x / norm for p, q, x in zip(a[:3], b[:3], n)))
+    sa, sb = make(kinds[0], a), make(kinds[1], b)
+    truth = float(height)
+    bar = BARS[precision] * a[6]
+    for x, y in ((sa, sb), (sb, sa)):
+        assert abs(float(cd.distance(x, y, precision=precision)) - truth) <= bar
+        assert cd.within(x, y, truth + 2 * bar, precision=precision)
+        assert not cd.within(x, y, truth - 2 * bar, precision=precision)
+        assert np.isinf(cd.distance_if_within(x, y, truth - 2 * bar, precision=precision))
+
+
+# Disks coplanar within rounding but not exactly (one 6.3e-15 above the other's plane, centers
+# 6.3e-15 apart along the normal): the contact point was put in B's plane, off A by 2 ulps of
+# the radius, and reported at distance 0. Closest points lie on both disks to a few ulps.
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_disks_coplanar_within_rounding_points_on_both(solver):
+    a = (-1.4156594408668646, 0.4715817383194796, -0.3749771405031259, -3.660440794139036, -4.569617412843425,
+         0.22856891273652835, 1.9878174268191156)
+    b = (-1.4156594408668686, 0.4715817383194747, -0.3749771405031257, -3.660440794139036, -4.569617412843425,
+         0.22856891273652835, 1.9878174268191156)
+    mp.dps = 50
+    n = [mpf(x) for x in a[3:6]]
+    norm = mp.sqrt(sum(x * x for x in n))
+    n = [x / norm for x in n]
+
+    def off_disk(p, d):  # distance of p from disk d, in mpmath
+        w = [mpf(float(x)) - mpf(c) for x, c in zip(p, d[:3])]
+        h = sum(x * y for x, y in zip(w, n))
+        radial = mp.sqrt(max(mpf(0), sum(x * x for x in w) - h * h))
+        return mp.sqrt(h * h + max(mpf(0), radial - mpf(d[6])) ** 2)
+
+    height = abs(sum((mpf(q) - mpf(p)) * x for p, q, x in zip(a[:3], b[:3], n)))
+    sa, sb = make("disk", a), make("disk", b)
+    for x, y, dx, dy in ((sa, sb, a, b), (sb, sa, b, a)):
+        r = cd.closest_points(x, y, solver=solver)
+        assert abs(r.distance - float(height)) <= 1e-12 * a[6]
+        assert off_disk(r.point_a, dx) <= 8 * EPS * 2 and off_disk(r.point_b, dy) <= 8 * EPS * 2

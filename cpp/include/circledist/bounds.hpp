@@ -194,17 +194,27 @@ void sample_round_points(const A& a, bool filled, const R& round, const Visit& v
   if (filled && rho <= ra) {
     visit(Vec3<Real>(a.center + in_plane));
   } else if (rho > 0) {
-    visit(Vec3<Real>(a.center + (ra / rho) * in_plane));
+    // in_plane keeps a normal component of eps |q|: for B's center nearly on A's axis
+    // (rho = 3e-17 |q|) its direction leaves A's plane by eps |q| / rho, and the point scaled to
+    // the rim was 1.7e-9 off A. Projected once more, the direction lies in A's plane.
+    const Vec3<Real> u = in_plane / rho;
+    visit(Vec3<Real>(a.center + ra * unit_vector(Vec3<Real>(u - m.dot(u) * m))));
   } else {
     visit(Vec3<Real>(a.center + ra * Frame<Real>(m).u));
   }
   // Heights over B's plane along A: h(alpha) = hc + ra s cos(alpha) with alpha measured from e1,
   // the direction of steepest ascent in A's plane (s = |e1 unnormalized| = sin of the angle).
+  // Planes parallel within rounding (g is then rounding noise, and g / s a direction that need
+  // not lie in A's plane: sample points off A gave upper bounds below the distance) have no
+  // crossing to sample. Otherwise e1 is made orthogonal to m again, so that every sample is a
+  // point of A whatever the rounding of g.
   const Plane<Real> plane(round);
   const Vec3<Real> g = plane.n - plane.n.dot(m) * m;
   const Real s = g.norm();
-  if (!(s > 0) || !(ra > 0)) return;
-  const Vec3<Real> e1 = g / s, e2 = m.cross(e1);
+  if (!(s > 64 * std::numeric_limits<Real>::epsilon()) || !(ra > 0)) return;
+  Vec3<Real> e1 = g / s;
+  e1 = unit_vector(Vec3<Real>(e1 - e1.dot(m) * m));
+  const Vec3<Real> e2 = m.cross(e1);
   const Real hc = plane.height(a.center);
   const Real x = -hc / s;  // the chord's offset along e1
   if (!(std::abs(x) <= ra)) return;

@@ -303,7 +303,18 @@ std::array<Real, A + B - 1> product(const std::array<Real, A>& a, const std::arr
   return out;
 }
 
-template <class Real> std::array<Real, 9> circle_ring_octic(const LocalCircle<Real>& c, Real radius, Real scale) {
+// p / 2^k with 2^k the largest coefficient's binade: exact, and the same roots.
+template <class Real, std::size_t N> std::array<Real, N> normalized(std::array<Real, N> p) {
+  Real largest = 0;
+  for (const Real& x : p) largest = std::max(largest, std::abs(x));
+  if (!(largest > 0) || !std::isfinite(largest)) return p;
+  const int e = std::ilogb(largest);
+  for (Real& x : p) x = std::ldexp(x, -e);
+  return p;
+}
+
+template <class Real>
+std::array<Real, 9> circle_ring_octic_from_coordinates(const LocalCircle<Real>& c, Real radius, Real scale) {
   const Real inv = 1 / scale;
   const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
   const Real x0 = c.center.x() * inv, x1 = c.e1.x() * inv, x2 = c.e2.x() * inv;
@@ -322,15 +333,6 @@ template <class Real> std::array<Real, 9> circle_ring_octic(const LocalCircle<Re
   const std::array<Real, 9> hh = product(h, h);
   for (int i = 0; i < 9; ++i) p[i] -= r * r * hh[i];
   return p;
-}
-
-// Its roots are searched only where the distance can be at most `bound`, a distance A reaches
-// (ring_search_intervals, which searches everywhere for an infinite bound; the margin of
-// 1e-4 scale dwarfs the rounding of its quadratics).
-template <class Roots, class Real, int N>
-void push_circle_ring_roots(const LocalCircle<Real>& c, Real radius, Real scale, Real bound, Candidates<Real, N>& out) {
-  const std::array<Real, 9> p = circle_ring_octic(c, radius, scale);
-  push_half_angle_roots<Roots>(p.data(), 8, ring_search_intervals(c, radius, bound + Real(1e-4) * scale), out);
 }
 
 // Candidates every circle query shares: t = pi (the half-angle substitution's blind spot) and
@@ -411,6 +413,19 @@ Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, 
       m = polish_newton(g, f, Real(0), width, below, above, abs_tol, screened.value[i]);
     } else {
       m = polish_minimum(f, Real(0), width, below, above, abs_tol);
+      // Where the shapes cross (h = 0), h is a V whose bottom the bracket locates only to its
+      // tolerance, and the value keeps slope x tolerance (3e-14 in long double); the squared
+      // distance is a smooth parabola there, and Newton steps on it, kept only while they lower
+      // h, land on the crossing.
+      for (int step = 0; step < 4; ++step) {
+        const Jet<Real> g = jet(t0 + m.x);
+        if (!(g.curvature > 0) || g.slope == 0) break;
+        const Real next = std::min(std::max(m.x - g.slope / g.curvature, below), above);
+        const Real value = f(next);
+        if (!(value < m.value)) break;
+        m.x = next;
+        m.value = value;
+      }
     }
     m.x = t0 + m.x;
     out.item[out.count++] = m;
@@ -449,6 +464,171 @@ template <class Real> Jet<Real> disk_jet_of(const Vec3<Real>& p, const Vec3<Real
     return {p.z() * p.z(), 2 * p.z() * p1.z(), 2 * (p1.z() * p1.z() + p.z() * p2.z())};
   }
   return ring_jet_of(p, p1, p2, radius);
+}
+
+// Circle A against the plane, cylinder and ring of round B (radius R), written with the small
+// quantities that decide near-degenerate pairs (docs/circle_circle.md, "Nearly coincident
+// circles"): the height z(t) and the radial excess s(t) = x^2 + y^2 - R^2 = rho^2 - R^2.
+// Both follow from first harmonics: z = z0 + z1 cos t + z2 sin t, and, as |E1| = |E2| = r (A's
+// radius) and E1.E2 = 0,
+//   |P|^2 - R^2 = q0 + q1 cos t + q2 sin t,  q0 = |O|^2 + (r - R)(r + R),  q1 = 2 O.E1,  q2 = 2 O.E2,
+// so s = q - z^2. The ring distance is then h^2 = z^2 + w^2 with w = rho - R = s / (rho + R).
+// For two circles nearly coincident (centers 1e-12 apart, normals 1e-9 apart, radii equal to
+// 1e-10) every one of these terms is small and computed to its own relative precision, where
+// x^2 + y^2 - R^2 from the coordinates cancels to noise of eps R^2: the octic built from them
+// was rounding noise and Newton's slopes pointed anywhere. For other pairs (a circle much larger
+// than the ring, far from it) the terms of the expansion are the larger ones, and the distance
+// from the coordinates is the accurate form: each query takes the form whose rounding bound is
+// the smaller (`expanded`), the expansion only for a circle near the ring all along.
+template <class Real> struct CircleOverRound {
+  const LocalCircle<Real>& c;
+  Real radius;  // R
+  Real z0, z1, z2, q0, q1, q2;
+  bool expanded;
+
+  CircleOverRound(const LocalCircle<Real>& circle, Real ring_radius) : c(circle), radius(ring_radius) {
+    z0 = c.center.z(), z1 = c.e1.z(), z2 = c.e2.z();
+    const Real r = c.radius;
+    q0 = c.center.squaredNorm() + (r - radius) * (r + radius);
+    q1 = 2 * c.center.dot(c.e1);
+    q2 = 2 * c.center.dot(c.e2);
+    // Rounding bounds of s near the cylinder (rho ~ R, where it decides), in units of eps: from
+    // the coordinates, x and y err by eps times the sizes of their terms and s = x^2 + y^2 - R^2
+    // by 2 rho (that) + R^2; the expansion errs by the sizes of its own terms. (A circle of
+    // radius 1e6 passing a ring of radius 1: terms of 1e12 in the expansion, 1e6 R from the
+    // coordinates.)
+    const auto size = [](Real v0, Real v1, Real v2) { return std::abs(v0) + std::abs(v1) + std::abs(v2); };
+    const Real x = size(c.center.x(), c.e1.x(), c.e2.x()), y = size(c.center.y(), c.e1.y(), c.e2.y());
+    const Real z = size(z0, z1, z2);
+    const Real from_coordinates = 2 * radius * (x + y) + radius * radius;
+    const Real from_harmonics = c.center.squaredNorm() + std::abs((r - radius) * (r + radius)) + std::abs(q1) +
+                                std::abs(q2) + z * z;
+    // And only where |s| <= R^2 / 4 on the whole circle: rho = sqrt(R^2 + s) must not cancel (a
+    // small circle near the center of a ring of radius 4e8 has s = -R^2 + O(1), and rho from it
+    // erred by sqrt(eps) R).
+    expanded = from_harmonics < from_coordinates && 4 * from_harmonics <= radius * radius;
+  }
+
+  // z, s and their first two t-derivatives at t (harmonics: f'' = -(f - f0)).
+  struct Terms {
+    Real z, z1, z2, s, s1, s2;
+  };
+  Terms terms(Real t) const {
+    const Real cs = std::cos(t), sn = std::sin(t);
+    Terms out;
+    const Real zw = z1 * cs + z2 * sn, qw = q1 * cs + q2 * sn;
+    out.z = z0 + zw;
+    out.z1 = z2 * cs - z1 * sn;
+    out.z2 = -zw;
+    const Real q = q0 + qw, dq = q2 * cs - q1 * sn;
+    out.s = q - out.z * out.z;
+    out.s1 = dq - 2 * out.z * out.z1;
+    out.s2 = -qw - 2 * (out.z1 * out.z1 + out.z * out.z2);
+    return out;
+  }
+
+  Real ring_distance(Real t) const {
+    if (!expanded) return ring_distance_local(c.at(t), radius);
+    const Terms v = terms(t);
+    return length2d(v.z, excess(v.s));
+  }
+
+  Real disk_distance(Real t) const {
+    if (!expanded) return disk_distance_local(c.at(t), radius);
+    const Terms v = terms(t);
+    return v.s <= 0 ? std::abs(v.z) : length2d(v.z, excess(v.s));
+  }
+
+  // The squared ring distance g = z^2 + w^2 and its derivatives, from w (rho + R) = s:
+  // w' (rho + R) + w rho' = s',  w'' (rho + R) + 2 w' rho' + w rho'' = s'',  2 rho rho' = s',
+  // rho'' = (s''/2 - rho'^2) / rho. On the axis (rho = 0) the curvature is NaN, as in ring_jet_of.
+  Jet<Real> ring_jet(Real t) const {
+    if (!expanded) return c.jet(t, radius, &ring_jet_of<Real>);
+    return ring_jet_from(terms(t));
+  }
+
+  Jet<Real> disk_jet(Real t) const {
+    if (!expanded) return c.jet(t, radius, &disk_jet_of<Real>);
+    const Terms v = terms(t);
+    if (v.s <= 0) return {v.z * v.z, 2 * v.z * v.z1, 2 * (v.z1 * v.z1 + v.z * v.z2)};
+    return ring_jet_from(v);
+  }
+
+ private:
+  Real rho(Real s) const { return std::sqrt(std::max(Real(0), (radius * radius + s))); }
+  Real excess(Real s) const {  // w = rho - R
+    const Real sum = rho(s) + radius;
+    return sum > 0 ? s / sum : Real(0);
+  }
+  Jet<Real> ring_jet_from(const Terms& v) const {
+    const Real p = rho(v.s), sum = p + radius;
+    const Real w = sum > 0 ? v.s / sum : Real(0);
+    const Real value = v.z * v.z + w * w;
+    if (!(p > 0)) return {value, 2 * v.z * v.z1, std::numeric_limits<Real>::quiet_NaN()};
+    const Real p1 = v.s1 / (2 * p), p2 = (v.s2 / 2 - p1 * p1) / p;
+    const Real w1 = (v.s1 - w * p1) / sum, w2 = (v.s2 - 2 * w1 * p1 - w * p2) / sum;
+    return {value, 2 * (v.z * v.z1 + w * w1), 2 * (v.z1 * v.z1 + v.z * v.z2 + w1 * w1 + w * w2)};
+  }
+};
+
+// The octic of circle_ring_octic_from_coordinates from the harmonics of CircleOverRound. With
+// D = P.P' = q'/2, G = x^2 + y^2 = R^2 + s and H = x x' + y y' = s'/2 (s' = q' - 2 z z'),
+//   4 (D^2 G - R^2 H^2) = q'^2 s + 4 R^2 z z' (q' - z z'),
+// the same polynomial with the cancelling R^2 q'^2 terms taken out symbolically. In u, with
+// Q, Q', Z, Z' the quadratics (1 + u^2) q, ... and (1 + u^2)^2 s = (1 + u^2) Q - Z^2:
+//   p(u) = Q'^2 ((1 + u^2) Q - Z^2) + 4 R^2 Z Z' ((1 + u^2) Q' - Z Z').
+// Scaled by a power of two so that its largest coefficient is about 1 (its terms can be 1e-36).
+template <class Real> std::array<Real, 9> circle_ring_octic(const CircleOverRound<Real>& v, Real scale) {
+  if (!v.expanded) return circle_ring_octic_from_coordinates(v.c, v.radius, scale);
+  const Real inv = 1 / scale, inv2 = inv * inv, r = v.radius * inv;
+  const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
+  const std::array<Real, 3> one_plus{1, 0, 1};
+  const std::array<Real, 3> z = quadratic(v.z0 * inv, v.z1 * inv, v.z2 * inv), dz = quadratic(0, v.z2 * inv, -v.z1 * inv);
+  const std::array<Real, 3> dq = quadratic(0, v.q2 * inv2, -v.q1 * inv2);
+  std::array<Real, 5> s = product(one_plus, quadratic(v.q0 * inv2, v.q1 * inv2, v.q2 * inv2));
+  std::array<Real, 5> t = product(one_plus, dq);
+  const std::array<Real, 5> zz = product(z, z), zdz = product(z, dz);
+  for (int i = 0; i < 5; ++i) {
+    s[i] -= zz[i];
+    t[i] -= zdz[i];
+  }
+  std::array<Real, 9> p = product(product(dq, dq), s);
+  const std::array<Real, 9> second = product(zdz, t);
+  for (int i = 0; i < 9; ++i) p[i] += 4 * r * r * second[i];
+  return normalized(p);
+}
+
+// (1 + u^2)^2 s(t) = (1 + u^2) Q - Z^2: where A's projection crosses the rim (circle_disk.hpp),
+// from the harmonics when they are the accurate form.
+template <class Real> std::array<Real, 5> circle_rim_quartic(const CircleOverRound<Real>& v, Real scale) {
+  const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
+  const Real inv = 1 / scale, inv2 = inv * inv;
+  std::array<Real, 5> s;
+  if (v.expanded) {
+    s = product(std::array<Real, 3>{1, 0, 1}, quadratic(v.q0 * inv2, v.q1 * inv2, v.q2 * inv2));
+    const std::array<Real, 3> z = quadratic(v.z0 * inv, v.z1 * inv, v.z2 * inv);
+    const std::array<Real, 5> zz = product(z, z);
+    for (int i = 0; i < 5; ++i) s[i] -= zz[i];
+  } else {
+    const LocalCircle<Real>& c = v.c;
+    const std::array<Real, 3> x = quadratic(c.center.x() * inv, c.e1.x() * inv, c.e2.x() * inv),
+                              y = quadratic(c.center.y() * inv, c.e1.y() * inv, c.e2.y() * inv);
+    s = product(x, x);
+    const std::array<Real, 5> yy = product(y, y);
+    const Real r = v.radius * inv;
+    const std::array<Real, 5> rr = product(std::array<Real, 3>{r, 0, r}, std::array<Real, 3>{r, 0, r});
+    for (int i = 0; i < 5; ++i) s[i] += yy[i] - rr[i];
+  }
+  return normalized(s);
+}
+
+// Its roots are searched only where the distance can be at most `bound`, a distance A reaches
+// (ring_search_intervals, which searches everywhere for an infinite bound; the margin of
+// 1e-4 scale dwarfs the rounding of its quadratics).
+template <class Roots, class Real, int N>
+void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale, Real bound, Candidates<Real, N>& out) {
+  const std::array<Real, 9> p = circle_ring_octic(v, scale);
+  push_half_angle_roots<Roots>(p.data(), 8, ring_search_intervals(v.c, v.radius, bound + Real(1e-4) * scale), out);
 }
 
 // Builds the Result for circle A against round B from the polished minima, as
@@ -496,20 +676,20 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
   template <class Roots>
   static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
                                               Real bound = std::numeric_limits<Real>::infinity()) {
+    const CircleOverRound<Real> view(c, radius);
     Starts starts;
     push_circle_candidates(starts);
     const auto squared = [&](const Vec3<Real>& p) { return ring_distance_squared(p, radius); };
     const SampledDistances<Real> samples = sampled_distances(c, squared);
-    push_circle_ring_roots<Roots>(c, radius, scale, std::min(bound, samples.best), starts);
-    // Nearly coincident circles (every sample within 1e-3 scale of the ring): the octic is
-    // rounding noise over the whole circle and its roots say nothing (two circles 1e-12 apart
-    // in center and 4e-10 in tilt were answered 30 times too far). The distance there is a
-    // trigonometric polynomial of low degree in t with few, wide minima, so the eight sample
-    // angles, polished on the exact distance, reach them.
+    push_circle_ring_roots<Roots>(view, scale, std::min(bound, samples.best), starts);
+    // Nearly coincident circles (every sample within 1e-3 scale of the ring): the distance is a
+    // trigonometric function of low degree in t with few, wide minima; the eight sample angles,
+    // polished on the exact distance, reach them too, whatever the roots policy makes of the
+    // octic there.
     if (samples.worst <= Real(1e-3) * scale)
       for (int k = -3; k <= 4; ++k) starts.push(k * pi_v<Real>() / 4);
-    const auto h = [&](Real t) { return ring_distance_local(c.at(t), radius); };
-    const auto jet = [&](Real t) { return c.jet(t, radius, &ring_jet_of<Real>); };
+    const auto h = [&](Real t) { return view.ring_distance(t); };
+    const auto jet = [&](Real t) { return view.ring_jet(t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 

@@ -12,14 +12,11 @@
 
 namespace circledist {
 
-// §4.1: x(t)^2 + y(t)^2 - R^2 = 0, trigonometric degree 2 (a quartic in u).
+// §4.1: x(t)^2 + y(t)^2 - R^2 = 0, trigonometric degree 2 (a quartic in u; circle_rim_quartic).
 template <class Roots, class Real, int N>
-void push_rim_partition(const LocalCircle<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
-  const Trig<Real, 1> x = c.coordinate(0, scale), y = c.coordinate(1, scale);
-  Trig<Real, 2> g = x * x + y * y;
-  const Real r = radius / scale;
-  g.c[0] -= r * r;
-  push_trig_roots<Roots>(g, out);
+void push_rim_partition(const CircleOverRound<Real>& v, Real scale, Candidates<Real, N>& out) {
+  const std::array<Real, 5> p = circle_rim_quartic(v, scale);
+  push_half_angle_roots<Roots>(p.data(), 4, Intervals<Real>::everywhere(), out);
 }
 
 // §4.2: z(t) = c0 + c1 cos t + c2 sin t = 0 and z'(t) = c2 cos t - c1 sin t = 0 (quadratics in u).
@@ -35,42 +32,56 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
   // 2 fixed + 8 (octic) + 4 (rim quartic) + 2 + 2 (height quadratics) = 18 at most.
   using Starts = Candidates<Real, 24>;
 
+  // The candidates every solve starts from: t = 0, t = pi and the height roots of §4.2.
+  using Heights = Candidates<Real, 8>;
+  template <class Roots> static Heights height_candidates(const LocalCircle<Real>& c, Real scale) {
+    Heights heights;
+    push_circle_candidates(heights);  // z' = 0 everywhere (a parallel circle) has no roots to push
+    push_height_roots<Roots>(c, scale, heights);
+    return heights;
+  }
+
   template <class Roots> static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale) {
+    return solve<Roots>(c, radius, scale, height_candidates<Roots>(c, scale));
+  }
+
+  template <class Roots>
+  static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
+                                              const Heights& heights) {
+    const CircleOverRound<Real> view(c, radius);
     Starts starts;
-    push_circle_candidates(starts);
-    push_rim_partition<Roots>(c, radius, scale, starts);
-    push_height_roots<Roots>(c, scale, starts);
+    for (int i = 0; i < heights.count; ++i) starts.push(heights.value[i]);
+    push_rim_partition<Roots>(view, scale, starts);
     // The octic's roots matter outside the cylinder only, where the disk distance is the ring's:
     // there the minimum is at most any disk distance A reaches (ring_search_intervals).
     const auto squared = [&](const Vec3<Real>& p) { return disk_distance_squared(p, radius); };
-    push_circle_ring_roots<Roots>(c, radius, scale, sampled_distance(c, squared), starts);
-    const auto h = [&](Real t) { return disk_distance_local(c.at(t), radius); };
-    const auto jet = [&](Real t) { return c.jet(t, radius, &disk_jet_of<Real>); };
+    push_circle_ring_roots<Roots>(view, scale, sampled_distance(c, squared), starts);
+    const auto h = [&](Real t) { return view.disk_distance(t); };
+    const auto jet = [&](Real t) { return view.disk_jet(t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
-  // The distance alone needs neither the rim partition nor, often, the octic (docs/circle_disk.md,
-  // "The distance alone"): it is the smaller of the circle-ring distance and |z| at the points
-  // over the disk where z = 0 or z' = 0. Those few points come first; where the best of them is
-  // as low as |z| gets anywhere on the circle (the circle crosses the disk, or its lowest point is
-  // over it), no ring point can be closer and the octic is skipped.
+  // The distance alone often needs no octic (docs/circle_disk.md, "The distance alone"): the
+  // points over the disk where z = 0 or z' = 0 come first; where the best of them is as low as
+  // |z| gets anywhere on the circle (the circle crosses the disk, or its lowest point is over
+  // it), no other point can be closer.
   template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& a, const Disk3<Real>& disk) {
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     const LocalCircle<Real> c(a, round);
     const Real scale = circle_round_scale(c, disk.radius);
-    Candidates<Real, 8> heights;
-    push_circle_candidates(heights);  // z' = 0 everywhere (a parallel circle) has no roots to push
-    push_height_roots<Roots>(c, scale, heights);
+    const Heights heights = height_candidates<Roots>(c, scale);
+    const CircleOverRound<Real> view(c, disk.radius);
     Real best = std::numeric_limits<Real>::infinity(), lowest = best;
     for (int i = 0; i < heights.count; ++i) {
-      const Vec3<Real> p = c.at(heights.value[i]);
-      best = std::min(best, disk_distance_local(p, disk.radius));
-      lowest = std::min(lowest, std::abs(p.z()));
+      best = std::min(best, view.disk_distance(heights.value[i]));
+      lowest = std::min(lowest, std::abs(c.at(heights.value[i]).z()));
     }
     if (best <= lowest + tie_tolerance(scale)) return best;
-    // Only rim points closer than `best` matter: the octic is searched where they can be.
-    return std::min(best,
-                    Query<Circle3<Real>, Circle3<Real>>::template solve<Roots>(c, disk.radius, scale, best).best.value);
+    // Otherwise the full solve, as closest() runs it: the ring's octic alone is not enough. For
+    // a circle 1e5 times larger than the disk its roots near the disk are a cluster 1e-5 wide
+    // that rounding blurs, and the minimum was missed (0.084 for 0.0138) where the rim crossings
+    // of the full solve start next to it.
+    return std::min(best, solve<Roots>(c, disk.radius, scale, heights).best.value);
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Disk3<Real>& disk) {

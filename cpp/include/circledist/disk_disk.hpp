@@ -2,8 +2,9 @@
 // frame: disk A meets B's plane in a chord (A's points at height 0), and the disks intersect
 // exactly when that chord meets disk B, a 1-D interval overlap along the chord. Coplanar disks
 // (A's heights all within rounding of 0) intersect when their centers are no farther apart than
-// the radii's sum. Otherwise a closest pair has a point on one of the rims, so the distance is
-// min(circle(A)-disk(B), circle(B)-disk(A)) (circle_disk.hpp).
+// the radii's sum (the rims confirm it unless they are exactly coplanar). Otherwise a closest
+// pair has a point on one of the rims, so the distance is min(circle(A)-disk(B),
+// circle(B)-disk(A)) (circle_disk.hpp).
 #pragma once
 
 #include "circle_disk.hpp"
@@ -45,6 +46,9 @@ template <class Real> DiskContact<Real> disk_contact(const Disk3<Real>& a, const
     const Real lo = std::max(-rb, d - ra), hi = std::min(rb, d + ra);
     const Real mid = (lo + hi) / 2;
     out.intersect = true;
+    // Not exactly coplanar: A may be a few ulps above B's plane, and the point in B's plane is
+    // then off A by more than its rounding; the rims decide (a gap of 6e-15 was reported as 0).
+    out.borderline = !(c == 0 && gx == 0 && gy == 0);
     out.point = Vec3<Real>(mid * dir.x(), mid * dir.y(), 0);
     // The common part: a lens whose common chord has half-length k, or the smaller disk.
     Real extent = hi - lo;

@@ -107,9 +107,10 @@ template <class Real> struct LocalLinear {
     const Real scaled_length = m.norm();
     length = std::ldexp(scaled_length, exponent);
     dir = m / scaled_length;
+    const ExactDifference<Real> exact_end(piece.has_end ? piece.end : piece.origin, round.center);
     Vec3<Real> w;
     if (piece.has_end) {
-      w = offset_cross(exact_origin, ExactDifference<Real>(piece.end, round.center));
+      w = offset_cross(exact_origin, exact_end);
       for (int i = 0; i < 3; ++i) w[i] = std::ldexp(w[i], -exponent);
     } else {
       w = offset_cross(exact_origin, direction);
@@ -117,9 +118,14 @@ template <class Real> struct LocalLinear {
     anchor_world = direction.cross(w) / direction.squaredNorm();
     dir_world = direction / direction.norm();
     anchor = round.frame.to_local(anchor_world);
-    shift = -origin.dot(dir_world);
+    // A point's tau is its offset from the center along the line, (x - c).dir, from the exact
+    // difference: accurate relative to the point's own distance from the center. (A segment's
+    // near end as length - shift, with its far end 1e9 away, erred by 1e9 eps = 1e-7 along the
+    // line.)
+    const auto tau_of = [&](const ExactDifference<Real>& x) { return x.hi.dot(dir_world) + x.lo.dot(dir_world); };
+    shift = -tau_of(exact_origin);
     lo = std::isfinite(piece.lo) ? piece.lo * length - shift : piece.lo;
-    hi = std::isfinite(piece.hi) ? piece.hi * length - shift : piece.hi;
+    hi = piece.has_end ? tau_of(exact_end) : std::isfinite(piece.hi) ? piece.hi * length - shift : piece.hi;
   }
 
   Vec3<Real> at(Real tau) const { return anchor + tau * dir; }

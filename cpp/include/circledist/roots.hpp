@@ -32,7 +32,8 @@ namespace circledist {
 
 // How candidates are moved to a local minimum of the exact distance (minimize.hpp):
 //   Newton: Newton steps on the exact squared distance, a bracketed search only where they fail;
-//   Bracketed: a bracketed (Brent) minimization of the exact distance around every candidate.
+//   Bracketed: a bracketed (Brent) minimization of the exact distance around every candidate,
+//     finished by the Newton steps that lower it (a crossing, distance 0, is a V in the distance).
 enum class Polish { Newton, Bracketed };
 
 // Whether a policy returns every root to rounding (Roots::accurate_roots = true), so that a
