@@ -303,6 +303,11 @@ std::array<Real, A + B - 1> product(const std::array<Real, A>& a, const std::arr
   return out;
 }
 
+// (1 + u^2) times the first harmonic v0 + v1 cos t + v2 sin t, a quadratic in u = tan(t/2).
+template <class Real> std::array<Real, 3> harmonic_quadratic(Real v0, Real v1, Real v2) {
+  return {v0 + v1, 2 * v2, v0 - v1};
+}
+
 // p / 2^k with 2^k the largest coefficient's binade: exact, and the same roots.
 template <class Real, std::size_t N> std::array<Real, N> normalized(std::array<Real, N> p) {
   Real largest = 0;
@@ -316,12 +321,12 @@ template <class Real, std::size_t N> std::array<Real, N> normalized(std::array<R
 template <class Real>
 std::array<Real, 9> circle_ring_octic_from_coordinates(const LocalCircle<Real>& c, Real radius, Real scale) {
   const Real inv = 1 / scale;
-  const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
   const Real x0 = c.center.x() * inv, x1 = c.e1.x() * inv, x2 = c.e2.x() * inv;
   const Real y0 = c.center.y() * inv, y1 = c.e1.y() * inv, y2 = c.e2.y() * inv;
-  const std::array<Real, 3> x = quadratic(x0, x1, x2), y = quadratic(y0, y1, y2);
-  const std::array<Real, 3> dx = quadratic(0, x2, -x1), dy = quadratic(0, y2, -y1);
-  const std::array<Real, 3> d = quadratic(0, c.center.dot(c.e2) * inv * inv, -c.center.dot(c.e1) * inv * inv);
+  const std::array<Real, 3> x = harmonic_quadratic(x0, x1, x2), y = harmonic_quadratic(y0, y1, y2);
+  const std::array<Real, 3> dx = harmonic_quadratic(Real(0), x2, -x1), dy = harmonic_quadratic(Real(0), y2, -y1);
+  const std::array<Real, 3> d =
+      harmonic_quadratic(Real(0), c.center.dot(c.e2) * inv * inv, -c.center.dot(c.e1) * inv * inv);
   std::array<Real, 5> g = product(x, x), h = product(x, dx);
   const std::array<Real, 5> yy = product(y, y), ydy = product(y, dy);
   for (int i = 0; i < 5; ++i) {
@@ -571,6 +576,18 @@ template <class Real> struct CircleOverRound {
   }
 };
 
+// (1 + u^2)^2 s(t) = (1 + u^2) Q - Z^2 from the harmonics (Q, Z: the quadratics of q and z), in
+// units of `scale`: the radial excess that the octic and the rim quartic share.
+template <class Real> std::array<Real, 5> excess_quartic(const CircleOverRound<Real>& v, Real scale) {
+  const Real inv = 1 / scale, inv2 = inv * inv;
+  std::array<Real, 5> s =
+      product(std::array<Real, 3>{1, 0, 1}, harmonic_quadratic(v.q0 * inv2, v.q1 * inv2, v.q2 * inv2));
+  const std::array<Real, 3> z = harmonic_quadratic(v.z0 * inv, v.z1 * inv, v.z2 * inv);
+  const std::array<Real, 5> zz = product(z, z);
+  for (int i = 0; i < 5; ++i) s[i] -= zz[i];
+  return s;
+}
+
 // The octic of circle_ring_octic_from_coordinates from the harmonics of CircleOverRound. With
 // D = P.P' = q'/2, G = x^2 + y^2 = R^2 + s and H = x x' + y y' = s'/2 (s' = q' - 2 z z'),
 //   4 (D^2 G - R^2 H^2) = q'^2 s + 4 R^2 z z' (q' - z z'),
@@ -581,38 +598,30 @@ template <class Real> struct CircleOverRound {
 template <class Real> std::array<Real, 9> circle_ring_octic(const CircleOverRound<Real>& v, Real scale) {
   if (!v.expanded) return circle_ring_octic_from_coordinates(v.c, v.radius, scale);
   const Real inv = 1 / scale, inv2 = inv * inv, r = v.radius * inv;
-  const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
-  const std::array<Real, 3> one_plus{1, 0, 1};
-  const std::array<Real, 3> z = quadratic(v.z0 * inv, v.z1 * inv, v.z2 * inv), dz = quadratic(0, v.z2 * inv, -v.z1 * inv);
-  const std::array<Real, 3> dq = quadratic(0, v.q2 * inv2, -v.q1 * inv2);
-  std::array<Real, 5> s = product(one_plus, quadratic(v.q0 * inv2, v.q1 * inv2, v.q2 * inv2));
-  std::array<Real, 5> t = product(one_plus, dq);
-  const std::array<Real, 5> zz = product(z, z), zdz = product(z, dz);
-  for (int i = 0; i < 5; ++i) {
-    s[i] -= zz[i];
-    t[i] -= zdz[i];
-  }
+  const std::array<Real, 3> z = harmonic_quadratic(v.z0 * inv, v.z1 * inv, v.z2 * inv),
+                            dz = harmonic_quadratic(Real(0), v.z2 * inv, -v.z1 * inv);
+  const std::array<Real, 3> dq = harmonic_quadratic(Real(0), v.q2 * inv2, -v.q1 * inv2);
+  const std::array<Real, 5> s = excess_quartic(v, scale);
+  std::array<Real, 5> t = product(std::array<Real, 3>{1, 0, 1}, dq);
+  const std::array<Real, 5> zdz = product(z, dz);
+  for (int i = 0; i < 5; ++i) t[i] -= zdz[i];
   std::array<Real, 9> p = product(product(dq, dq), s);
   const std::array<Real, 9> second = product(zdz, t);
   for (int i = 0; i < 9; ++i) p[i] += 4 * r * r * second[i];
   return normalized(p);
 }
 
-// (1 + u^2)^2 s(t) = (1 + u^2) Q - Z^2: where A's projection crosses the rim (circle_disk.hpp),
-// from the harmonics when they are the accurate form.
+// (1 + u^2)^2 s(t), s = x^2 + y^2 - R^2: where A's projection crosses the rim (circle_disk.hpp);
+// from the harmonics (excess_quartic) when they are the accurate form, else from x and y.
 template <class Real> std::array<Real, 5> circle_rim_quartic(const CircleOverRound<Real>& v, Real scale) {
-  const auto quadratic = [](Real v0, Real v1, Real v2) { return std::array<Real, 3>{v0 + v1, 2 * v2, v0 - v1}; };
-  const Real inv = 1 / scale, inv2 = inv * inv;
+  const Real inv = 1 / scale;
   std::array<Real, 5> s;
   if (v.expanded) {
-    s = product(std::array<Real, 3>{1, 0, 1}, quadratic(v.q0 * inv2, v.q1 * inv2, v.q2 * inv2));
-    const std::array<Real, 3> z = quadratic(v.z0 * inv, v.z1 * inv, v.z2 * inv);
-    const std::array<Real, 5> zz = product(z, z);
-    for (int i = 0; i < 5; ++i) s[i] -= zz[i];
+    s = excess_quartic(v, scale);
   } else {
     const LocalCircle<Real>& c = v.c;
-    const std::array<Real, 3> x = quadratic(c.center.x() * inv, c.e1.x() * inv, c.e2.x() * inv),
-                              y = quadratic(c.center.y() * inv, c.e1.y() * inv, c.e2.y() * inv);
+    const std::array<Real, 3> x = harmonic_quadratic(c.center.x() * inv, c.e1.x() * inv, c.e2.x() * inv),
+                              y = harmonic_quadratic(c.center.y() * inv, c.e1.y() * inv, c.e2.y() * inv);
     s = product(x, x);
     const std::array<Real, 5> yy = product(y, y);
     const Real r = v.radius * inv;
