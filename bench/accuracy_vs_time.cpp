@@ -137,7 +137,7 @@ template <template <class> class A, template <class> class B> struct Kind {
 
 template <class Real> using Point = Vec3<Real>;
 
-inline const char* policy_names[] = {"EigenCompanion", "EigenPolished", "Bracketing"};
+inline const char* policy_names[] = {"EigenCompanion", "EigenPolished", "Bracketing", "EigenPolynomialSolver"};
 inline const char* precision_names[] = {"float", "double", "longdouble"};
 
 struct Output {
@@ -216,6 +216,7 @@ void run_precision(const std::vector<const Case*>& cases, const std::string& kin
   run_one<K, Real, EigenCompanion>(cases, kind, 0, precision, min_time, out);
   run_one<K, Real, EigenPolished>(cases, kind, 1, precision, min_time, out);
   run_one<K, Real, Bracketing>(cases, kind, 2, precision, min_time, out);
+  run_one<K, Real, EigenPolynomialSolver>(cases, kind, 3, precision, min_time, out);
 }
 
 using Runner = void (*)(const std::vector<const Case*>&, const std::string&, int, double, Output&);

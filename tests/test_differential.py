@@ -83,12 +83,7 @@ def test_slice_covers_every_family_and_kind_pair(results):
 
 # Classes that still fail, each stated in the note on issue 14. Any other finding in the family
 # fails the test, and so does a known class that stops failing (remove it here then).
-KNOWN_FAILURES = {
-    ("bezier_large", "bezier-circle"):
-        "a septic curve 1e5 times larger than the circle: up to 1e-11 x radius off in double (the curve's "
-        "points near the circle are sums of control points 1e5 times larger, rounded to eps x 1e5 x radius: "
-        "needs the pieces' control points in compensated arithmetic), 1.8e-15 in long double",
-}
+KNOWN_FAILURES = {}
 
 
 @pytest.mark.parametrize("family", list(D.FAMILIES))

@@ -177,3 +177,36 @@ def test_float32_effects_past_float_squares():
     assert cd.distance(a, b) == np.float32(5e20)
     assert bool(cd.within(a, b, np.float32(6e20))) and not bool(cd.within(a, b, np.float32(4e20)))
     assert cd.distance_if_within(a, b, np.float32(6e20)) == np.float32(5e20)
+
+
+def test_float32_answers_beyond_float32_range_are_an_overflow_error():
+    """Inputs float32 holds can have answers it cannot: a closest point (or distance, or line
+    parameter) past 3.4e38 would round to inf. Found by the 10^7 crash fuzz (seed 3, case 2103976:
+    a circle of radius 2.1e38 centered 3.1e38 from the origin)."""
+    ring = cd.Circle([3.1e38, 0, 0], [0, 0, 1], 2.1e38)
+    probe = cd.Point([3.2e38, 0, 0])
+    # The closest point of the ring lies at x = 5.2e38 (exact reference: centre + radius).
+    with pytest.raises(OverflowError, match=r"closest_points: point_b is beyond float32's range"):
+        cd.closest_points(probe, ring, precision="float32")
+    with pytest.raises(OverflowError, match=r"closest_points: point_a is beyond float32's range"):
+        cd.closest_points(ring, probe, precision="float32")
+    # The same pair in float64 answers, and the distance alone fits float32.
+    r = cd.closest_points(probe, ring)
+    assert r.point_b[0] == pytest.approx(5.2e38, rel=1e-15) and r.distance == pytest.approx(2e38, rel=1e-15)
+    assert cd.distance(probe, ring, precision="float32") == pytest.approx(2e38, rel=1e-6)
+    # A distance past the range (two points 6e38 apart), scalar and in a batch (named by index).
+    with pytest.raises(OverflowError, match=r"distance: the distance is beyond float32's range"):
+        cd.distance(cd.Point([-3e38, 0, 0]), cd.Point([3e38, 0, 0]), precision="float32")
+    batch = cd.Point([[0, 0, 0], [0, 1, 0], [-3e38, 0, 0]])
+    with pytest.raises(OverflowError, match=r"distance: the distance\[2\] is beyond"):
+        cd.distance(batch, cd.Point([3e38, 0, 0]), precision="float32")
+    with pytest.raises(OverflowError, match=r"closest_points: distance\[2\] is beyond"):
+        cd.closest_points(batch, cd.Point([3e38, 0, 0]), precision="float32")
+    # A line parameter past the range: p = origin + t * direction with |direction| = 1e-30.
+    with pytest.raises(OverflowError, match=r"param_a is beyond float32's range"):
+        cd.closest_points(cd.Line([3e38, 0, 0], [1e-30, 0, 0]), cd.Point([0, 1, 0]), precision="float32")
+    # Answers inside the range are unaffected, and float32 stays float32.
+    r = cd.closest_points(cd.Point(np.float32([1e38, 0, 0])), cd.Circle(np.float32([3.1e38, 0, 0]), np.float32([0, 0, 1]), np.float32(2.1e38)))
+    assert r.point_b.dtype == np.float32 and np.all(np.isfinite(r.point_b))
+    # distance_if_within's inf means "beyond the limit", which a distance past float32 always is.
+    assert cd.distance_if_within(cd.Point([-3e38, 0, 0]), cd.Point([3e38, 0, 0]), 1.0, precision="float32") == math.inf

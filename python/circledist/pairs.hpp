@@ -7,6 +7,7 @@
 #include <circledist/effects.hpp>
 
 #include <array>
+#include <stdexcept>
 #include <type_traits>
 
 namespace circledist::python {
@@ -189,6 +190,22 @@ template <class Roots, class A, class B, class Real> struct PairOf {
     }
   }
 
+  // float32 answers are solved in double and rounded: a distance, point or parameter beyond
+  // float32's range would come back as inf, a number that is not the answer. That is an
+  // OverflowError naming the entry point, the output and its index, as inputs beyond the range
+  // are a ValueError (pybind11 maps std::overflow_error to OverflowError).
+  static void check_output_range(const char* entry, const char* output, const Real* v, Index count, int width,
+                                 const BatchShape& shape) {
+    if constexpr (std::is_same_v<Real, float>) {
+      for (Index i = 0; i < count * width; ++i) {
+        if (!std::isfinite(v[i]))
+          throw std::overflow_error(std::string(entry) + ": " + output + index_text(i / width, shape) +
+                                    " is beyond float32's range (precision='float32'); ask for "
+                                    "precision='float64'");
+      }
+    }
+  }
+
   static bool unswept(const Shape& s) {
     const Field& sweep = s.fields.back();
     return sweep.batch.empty() && *sweep.data() == 0;
@@ -203,7 +220,9 @@ template <class Roots, class A, class B, class Real> struct PairOf {
       for (const Field& x : b.fields) f[k++] = x.template data_as<T>();
       ++stats().distances;
       const Layout at(a, b);
-      return scalar<Real>(circledist::distance<Roots>(at.first(f.data()), at.second(f.data())));
+      const Real d = circledist::distance<Roots>(at.first(f.data()), at.second(f.data()));
+      check_output_range("distance", "the distance", &d, 1, 1, {});
+      return scalar<Real>(d);
     }
     const Broadcast bc(a, b);
     const Layout at(a, b);
@@ -222,6 +241,7 @@ template <class Roots, class A, class B, class Real> struct PairOf {
       }
     }
     stats().distances += std::uint64_t(bc.size);
+    check_output_range("distance", "the distance", o, bc.size, 1, bc.shape);
     return std::move(out);
   }
 
@@ -283,6 +303,11 @@ template <class Roots, class A, class B, class Real> struct PairOf {
       });
     }
     stats().closest_points += std::uint64_t(bc.size);
+    check_output_range("closest_points", "distance", d, bc.size, 1, bc.shape);
+    check_output_range("closest_points", "point_a", xa, bc.size, 3, bc.shape);
+    check_output_range("closest_points", "point_b", xb, bc.size, 3, bc.shape);
+    check_output_range("closest_points", "param_a", ua, bc.size, 2, bc.shape);
+    check_output_range("closest_points", "param_b", ub, bc.size, 2, bc.shape);
     if (bc.shape.empty())
       return {scalar<Real>(d[0]), std::move(pa), std::move(pb), std::move(ta), std::move(tb), py::bool_(u[0])};
     return {std::move(dist), std::move(pa), std::move(pb), std::move(ta), std::move(tb), std::move(unique)};

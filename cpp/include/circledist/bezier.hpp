@@ -10,6 +10,7 @@
 #pragma once
 
 #include "circle_circle.hpp"
+#include "detail/double_double.hpp"
 
 #include <array>
 #include <type_traits>
@@ -129,24 +130,6 @@ template <class Real> struct LocalBezier {
 
   Vec3<Real> at(Real t) const { return casteljau(q, n, t); }
 
-  // The control points of the piece t in [t0, t1], by blossoming: the k-th is the polar form at
-  // (t0 x (n - k), t1 x k), de Casteljau's steps with t0 then t1. Computed from the whole
-  // curve's points at once (not by repeated halving, whose midpoints would carry the rounding
-  // of a far control point into a piece next to the round), so a piece near an end of the
-  // curve is as accurate as the curve's own points there.
-  LocalBezier piece(Real t0, Real t1) const {
-    std::array<Vec3<Real>, kMaxBezierDegree + 1> out{};
-    for (int k = 0; k <= n; ++k) {
-      std::array<Vec3<Real>, kMaxBezierDegree + 1> p = q;
-      for (int level = 0; level < n; ++level) {
-        const Real t = level < n - k ? t0 : t1;
-        for (int i = 0; i + level < n; ++i) p[i] = (1 - t) * p[i] + t * p[i + 1];
-      }
-      out[k] = p[0];
-    }
-    return LocalBezier(out, n);
-  }
-
   template <class JetOf> Jet<Real> jet(Real t, Real radius, const JetOf& jet_of) const {
     const Vec3<Real> p1 = n >= 1 ? casteljau(d1, n - 1, t) : Vec3<Real>::Zero();
     const Vec3<Real> p2 = n >= 2 ? casteljau(d2, n - 2, t) : Vec3<Real>::Zero();
@@ -172,6 +155,88 @@ template <class Real> struct LocalBezier {
     }
     return out;
   }
+};
+
+// The curve's local control points in double-double, and its pieces. A curve far larger than
+// the round (1e5 times, or one control point 1e10 away) is solved piece by piece
+// (CurveRoundBase::solve_pieces); a piece next to the round has control points of the round's
+// size, but computed in plain arithmetic they would carry eps times the curve's farthest control
+// point (1e-11 radii for a curve 1e5 times larger), above the bar. Here the control points are
+// moved into the round's frame in double-double (the difference from the center exactly, the
+// rotation with exact products) and each piece is cut from them in double-double, so a piece's
+// points, and the polynomials built from them, are as accurate as a small curve's.
+template <class Real> struct PreciseBezier {
+  using DD = detail::DoubleDouble<Real>;
+  using Point = std::array<DD, 3>;
+  int n = 0;
+  std::array<Point, kMaxBezierDegree + 1> q{};
+
+  PreciseBezier() = default;
+  PreciseBezier(const BezierCurve3<Real>& b, const Round<Real>& round) : n(std::max(b.degree(), 0)) {
+    const Frame<Real>& f = round.frame;
+    const Vec3<Real>* axes[3] = {&f.u, &f.v, &f.n};
+    for (int i = 0; i <= n; ++i) {
+      Point offset;  // P_i - center, exactly
+      for (int j = 0; j < 3; ++j) offset[j] = DD::two_sum(b.control(j, i), -round.center[j]);
+      for (int k = 0; k < 3; ++k) {
+        DD sum;
+        Real small = 0;  // the rotation of the difference's low parts: plain arithmetic suffices
+        for (int j = 0; j < 3; ++j) {
+          sum = sum + DD::two_product((*axes[k])[j], offset[j].hi);
+          small += (*axes[k])[j] * offset[j].lo;
+        }
+        q[i][k] = sum + DD(small);
+      }
+    }
+  }
+
+  // The piece t in [t0, t1] by blossoming: its k-th control point is the polar form at
+  // (t0 x (n - k), t1 x k), de Casteljau's steps with t0 then t1, each from the whole curve's
+  // points (repeated halving would carry a far control point's rounding into every piece).
+  PreciseBezier piece(Real t0, Real t1) const {
+    PreciseBezier out;
+    out.n = n;
+    for (int k = 0; k <= n; ++k) {
+      std::array<Point, kMaxBezierDegree + 1> p = q;
+      for (int level = 0; level < n; ++level) {
+        const Real t = level < n - k ? t0 : t1;
+        for (int i = 0; i + level < n; ++i) p[i] = lerp(p[i], p[i + 1], t);
+      }
+      out.q[k] = p[0];
+    }
+    return out;
+  }
+
+  Vec3<Real> at(Real t) const {
+    std::array<Point, kMaxBezierDegree + 1> p = q;
+    for (int k = n; k > 0; --k) {
+      for (int i = 0; i < k; ++i) p[i] = lerp(p[i], p[i + 1], t);
+    }
+    return rounded(p[0]);
+  }
+
+  std::array<Vec3<Real>, kMaxBezierDegree + 1> rounded() const {
+    std::array<Vec3<Real>, kMaxBezierDegree + 1> out{};
+    for (int i = 0; i <= n; ++i) out[i] = rounded(q[i]);
+    return out;
+  }
+
+ private:
+  static Point lerp(const Point& a, const Point& b, Real t) {
+    Point out;
+    for (int j = 0; j < 3; ++j) out[j] = a[j] + (b[j] - a[j]) * t;
+    return out;
+  }
+  static Vec3<Real> rounded(const Point& p) { return Vec3<Real>(p[0].value(), p[1].value(), p[2].value()); }
+};
+
+// Where the best minimum of a curve solved in pieces lies: its piece and the piece's parameter,
+// so that its point is evaluated there (at the curve's t, rounded to Real, a point 1e10 radii
+// along the curve per unit of t would move by 1e-6 radii per ulp).
+template <class Real> struct BestPiece {
+  PreciseBezier<Real> piece;
+  Real s = 0;
+  bool valid = false;
 };
 
 template <class Real> Real bezier_round_scale(const LocalBezier<Real>& c, Real radius) {
@@ -230,14 +295,16 @@ void push_curve_disk_roots(const LocalBezier<Real>& c, Real radius, Real scale, 
 }
 
 // As circle_round_result, for a curve parameter t in [0, 1].
+// A curve solved in pieces reports its point from the best piece (`where`), in local and in world
+// coordinates: plain evaluation at t errs by eps times its farthest control point.
 template <class Real, int N, class RoundPoint, class RoundParam>
 Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
-                                const Minima<Real, N>& minima, Real scale, const RoundPoint& round_point,
-                                const RoundParam& round_param) {
+                                const BestPiece<Real>& where, const Minima<Real, N>& minima, Real scale,
+                                const RoundPoint& round_point, const RoundParam& round_param) {
   Result<Real> r;
   const Minimum<Real>& best = minima.best;
   bool ambiguous = false;
-  const Vec3<Real> pa = c.at(best.x);
+  const Vec3<Real> pa = where.valid ? where.piece.at(where.s) : c.at(best.x);
   const Vec3<Real> pb = round_point(pa, ambiguous);
   const Real tie = tie_tolerance(std::max(scale, best.value));
   const Real apart_a = distinct_points_tolerance(std::min(scale, c.size));
@@ -251,7 +318,7 @@ Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<R
     if ((qa - pa).norm() > apart_a || (qb - pb).norm() > apart_b) ambiguous = true;
   }
   r.distance = best.value;
-  r.point_a = b.at(best.x);
+  r.point_a = where.valid ? round.world(pa) : b.at(best.x);
   r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(best.x, 0);
   r.param_b = round_param(pb);
@@ -295,10 +362,14 @@ template <class Real> struct CurveRoundBase {
   // its distance from below, and pieces that cannot beat an end point already seen are dropped.
   // A curve of the round's size is one piece: the whole curve, solved as before.
   // `distance_of(p)` is the exact distance of a local point; `solve_piece(piece, scale)` the
-  // minima over one piece (parameter s in [0, 1], mapped here to t = t0 + s (t1 - t0)).
+  // minima over one piece (parameter s in [0, 1], mapped here to t = t0 + s (t1 - t0)). The
+  // pieces are cut from the curve in double-double (PreciseBezier); `where` (optional) receives
+  // the piece and parameter of the best minimum.
   template <class DistanceOf, class SolvePiece>
-  static Found solve_pieces(const LocalBezier<Real>& c, Real radius, Real scale, const DistanceOf& distance_of,
-                            const SolvePiece& solve_piece) {
+  static Found solve_pieces(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round,
+                            Real scale, const DistanceOf& distance_of, const SolvePiece& solve_piece,
+                            BestPiece<Real>* where) {
+    const Real radius = round.radius;
     // Halving stops where t no longer splits (about 1075 levels next to t = 0: a control point
     // 1e300 times farther than the round is reached in about 1000). At most 64 pieces are
     // solved; past that every remaining piece is solved as it is.
@@ -319,7 +390,8 @@ template <class Real> struct CurveRoundBase {
     };
     Vec3<Real> center;
     const Real whole = ball(c, center);
-    if (!(whole > kPieceRatio * std::max(radius, distance_of(center) - whole))) return solve_piece(c, scale, 0, 1);
+    if (!(whole > kPieceRatio * std::max(radius, distance_of(center) - whole))) return solve_piece(c, scale);
+    const PreciseBezier<Real> precise(b, round);
     Found out;
     Real upper = std::min(distance_of(c.q[0]), distance_of(c.q[c.n]));
     std::vector<Span> stack{{Real(0), Real(1)}};  // on the heap: deep for extreme curves only
@@ -327,7 +399,8 @@ template <class Real> struct CurveRoundBase {
     while (!stack.empty()) {
       const Span span = stack.back();
       stack.pop_back();
-      const LocalBezier<Real> piece = c.piece(span.t0, span.t1);
+      const PreciseBezier<Real> precise_piece = precise.piece(span.t0, span.t1);
+      const LocalBezier<Real> piece(precise_piece.rounded(), c.n);
       const Real r = ball(piece, center);
       const Real lower = distance_of(center) - r;
       if (lower > upper + tie_tolerance(std::max(scale, upper))) continue;
@@ -339,9 +412,11 @@ template <class Real> struct CurveRoundBase {
         continue;
       }
       ++pieces;
-      const Found found = solve_piece(piece, bezier_round_scale(piece, radius), span.t0, span.t1);
-      for (int i = 0; i < found.count; ++i) out.add(found.item[i]);
-      if (found.best.value < out.best.value) out.best = found.best;
+      const Found found = solve_piece(piece, bezier_round_scale(piece, radius));
+      if (found.best.value < out.best.value && where) *where = {precise_piece, found.best.x, true};
+      const Found on_curve = on_span(found, span.t0, span.t1);
+      for (int i = 0; i < on_curve.count; ++i) out.add(on_curve.item[i]);
+      if (on_curve.best.value < out.best.value) out.best = on_curve.best;
     }
     return out;
   }
@@ -351,9 +426,12 @@ template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRound
   static constexpr bool defined = true;
   using Base = CurveRoundBase<Real>;
 
-  template <class Roots> static auto solve(const LocalBezier<Real>& c, Real radius, Real scale) {
+  template <class Roots>
+  static auto solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round, Real scale,
+                    BestPiece<Real>* where = nullptr) {
+    const Real radius = round.radius;
     const auto distance_of = [&](const Vec3<Real>& p) { return disk_distance_local(p, radius); };
-    return Base::solve_pieces(c, radius, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s, Real t0, Real t1) {
+    return Base::solve_pieces(c, b, round, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s) {
       typename Base::Starts starts;
       starts.push(Real(0));
       starts.push(Real(1));
@@ -361,15 +439,15 @@ template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRound
       push_curve_ring_roots<Roots>(piece, radius, s, starts);
       const auto h = [&](Real t) { return disk_distance_local(piece.at(t), radius); };
       const auto jet = [&](Real t) { return piece.jet(t, radius, &disk_jet_of<Real>); };
-      return Base::on_span(Base::template polish<Roots>(piece, starts, s, h, jet), t0, t1);
-    });
+      return Base::template polish<Roots>(piece, starts, s, h, jet);
+    }, where);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
     if (b.control.cols() == 0) return std::numeric_limits<Real>::infinity();
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     const LocalBezier<Real> c(b, round);
-    return solve<Roots>(c, disk.radius, bezier_round_scale(c, disk.radius)).best.value;
+    return solve<Roots>(c, b, round, bezier_round_scale(c, disk.radius)).best.value;
   }
 
   template <class Roots = DefaultRoots>
@@ -378,9 +456,10 @@ template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRound
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     const LocalBezier<Real> c(b, round);
     const Real scale = bezier_round_scale(c, disk.radius);
-    const auto minima = solve<Roots>(c, disk.radius, scale);
+    BestPiece<Real> where;
+    const auto minima = solve<Roots>(c, b, round, scale, &where);
     return curve_round_result(
-        b, c, round, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
+        b, c, round, where, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
         &Round<Real>::disk_param);
   }
 };
@@ -389,9 +468,12 @@ template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRou
   static constexpr bool defined = true;
   using Base = CurveRoundBase<Real>;
 
-  template <class Roots> static auto solve(const LocalBezier<Real>& c, Real radius, Real scale) {
+  template <class Roots>
+  static auto solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round, Real scale,
+                    BestPiece<Real>* where = nullptr) {
+    const Real radius = round.radius;
     const auto distance_of = [&](const Vec3<Real>& p) { return ring_distance_local(p, radius); };
-    return Base::solve_pieces(c, radius, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s, Real t0, Real t1) {
+    return Base::solve_pieces(c, b, round, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s) {
       typename Base::Starts starts;
       starts.push(Real(0));
       starts.push(Real(1));
@@ -406,15 +488,15 @@ template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRou
       }
       const auto h = [&](Real t) { return ring_distance_local(piece.at(t), radius); };
       const auto jet = [&](Real t) { return piece.jet(t, radius, &ring_jet_of<Real>); };
-      return Base::on_span(Base::template polish<Roots>(piece, starts, s, h, jet), t0, t1);
-    });
+      return Base::template polish<Roots>(piece, starts, s, h, jet);
+    }, where);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {
     if (b.control.cols() == 0) return std::numeric_limits<Real>::infinity();
     const Round<Real> round(circle.center, circle.normal, circle.radius);
     const LocalBezier<Real> c(b, round);
-    return solve<Roots>(c, circle.radius, bezier_round_scale(c, circle.radius)).best.value;
+    return solve<Roots>(c, b, round, bezier_round_scale(c, circle.radius)).best.value;
   }
 
   template <class Roots = DefaultRoots>
@@ -423,9 +505,10 @@ template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRou
     const Round<Real> round(circle.center, circle.normal, circle.radius);
     const LocalBezier<Real> c(b, round);
     const Real scale = bezier_round_scale(c, circle.radius);
-    const auto minima = solve<Roots>(c, circle.radius, scale);
+    BestPiece<Real> where;
+    const auto minima = solve<Roots>(c, b, round, scale, &where);
     return curve_round_result(
-        b, c, round, minima, scale,
+        b, c, round, where, minima, scale,
         [&](const Vec3<Real>& p, bool& ambiguous) { return round.ring_point(p, scale, ambiguous); },
         &Round<Real>::ring_param);
   }

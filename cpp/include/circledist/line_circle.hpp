@@ -5,6 +5,8 @@
 #include <type_traits>
 
 #include "linear.hpp"
+#include "point_circle.hpp"
+#include "point_disk.hpp"
 #include "query.hpp"
 
 namespace circledist {
@@ -59,7 +61,20 @@ template <class Real> struct LineRingMinimum {
                       // neighbor when b1 is small (the two minima differ by 4 R^2 |b1 z1|)
   Vec3<Real> anchor, unit_direction, unit_normal;  // a, m and n
   bool on_axis = false;  // a line along the axis: every ring point is closest
+  // The secular equation's data, for the line's other local minimum (other_line_minimum): b1,
+  // b2^2, s^2 (s2 = 0 for a line parallel to the axis to within eps, whose distance has one
+  // minimum), and the anchor's in-plane parts along m_xy and across it.
+  Real b1 = 0, b2_squared = 0, s2 = 0;
+  Vec3<Real> a_parallel = Vec3<Real>::Zero(), a_across = Vec3<Real>::Zero(), m_xy = Vec3<Real>::Zero();
 };
+
+// The line's point closest to ring point `ring_point` (relative to the center), and their
+// distance, from the anchor a and unit direction m.
+template <class Real> void complete_line_minimum(LineRingMinimum<Real>& out) {
+  const Vec3<Real> offset = out.ring_point - out.anchor;
+  out.distance = offset.cross(out.unit_direction).norm();
+  out.line_point = out.anchor + offset.dot(out.unit_direction) * out.unit_direction;
+}
 
 // False when the line is too extreme for the direct method (a zero or huge direction, a zero
 // radius, non-finite input): LinearCircleQuery then answers.
@@ -113,6 +128,12 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     const Work inverse_radius = 1 / Work(radius), t2 = Work(s2);
     const Work b1 = Work(along) * inverse_radius / Work(s);
     const Work b2_squared = Work(a_across.squaredNorm()) * (inverse_radius * inverse_radius);
+    out.b1 = Real(b1);
+    out.b2_squared = Real(b2_squared);
+    out.s2 = s2;
+    out.a_parallel = a_parallel;
+    out.a_across = a_across;
+    out.m_xy = m_xy;
     const Work b_norm = std::sqrt(b1 * b1 + b2_squared);
     const Work lo = std::max(std::abs(b1), b_norm - t2), hi = b_norm;
     const Work c[5] = {-b1 * b1 * t2 * t2, -2 * b1 * b1 * t2, (t2 - b_norm) * (t2 + b_norm), 2 * t2, 1};
@@ -141,13 +162,62 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     out.ring_point = (radius / length) * direction;
     out.mirror = out.ring_point - (2 * out.ring_point.dot(m_xy) * inverse_s2) * m_xy;
   }
-  const Vec3<Real> offset = out.ring_point - a;
-  out.distance = offset.cross(m).norm();
-  out.line_point = a + offset.dot(m) * m;
   out.anchor = a;
   out.unit_direction = m;
   out.unit_normal = n;
+  complete_line_minimum(out);
   return true;
+}
+
+// The line's other local minimum over the ring, besides the global one m. A ray or segment is
+// closest at an end point or at a local minimum of the line's distance that it holds, and those
+// are local minima over the ring of the distance to the line, the quadratic
+// R^2 (s^2 z2^2 - 2 b.z) above. Besides the global minimum (mu >= 0) it has at most one more on
+// the circle (Martinez 1994: the local-nonglobal minimizer of a trust-region subproblem), at the
+// larger root mu in (-s^2, 0) of
+//   phi(mu) = b1^2 / mu^2 + b2^2 / (mu + s^2)^2 - 1,
+// which is convex there, least at mu0 = -s^2 / (1 + k), k = |b2 / b1|^(2/3), where
+//   phi(mu0) = (|b1|^(2/3) + |b2|^(2/3))^3 / s^4 - 1.
+// So it exists only inside the astroid |b1|^(2/3) + |b2|^(2/3) < s^(4/3) (the line passing over
+// the circle's evolute, near the axis), as the root of the quartic P in (mu0, -|b1|), where
+// P = -phi mu^2 (mu + s^2)^2 changes sign (P(mu0) > 0 > P(-|b1|) = -b1^2 b2^2).
+// Returns 0 when there is none (`second` unset), 1 when `second` holds it, and -1 where the
+// rounding of b1, b2 (absolute eps (|a| / R + 1)) and s leaves the astroid test open, or |b1|
+// is too small to bracket the root (the mirror-image case): the general path answers those.
+// A line parallel to the axis has the distance sqrt(z(t)^2 + const), convex: no second one.
+template <class Roots, class Real>
+int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMinimum<Real>& second) {
+  if (m.s2 == 0) return m.on_axis ? -1 : 0;
+  using Work = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
+  const Work eps = std::numeric_limits<Real>::epsilon();
+  const Work b1 = Work(m.b1), b1_squared = b1 * b1, b2_squared = Work(m.b2_squared), t2 = Work(m.s2);
+  const Work b_error = 16 * eps * (Work(m.anchor.norm()) / Work(radius) + 1);
+  // The astroid lies in the disk |b| <= s^2 (its cusps on the circle): outside it, no cube roots.
+  const Work b_norm_squared = b1_squared + b2_squared;
+  if (b_norm_squared - t2 * t2 > Work(1e-6) * t2 * t2 + 4 * std::sqrt(b_norm_squared) * b_error) return 0;
+  const Work b1_part = std::cbrt(b1_squared), b2_part = std::cbrt(b2_squared), s_part = std::cbrt(t2 * t2);
+  const Work margin = std::max(Work(1e-6), 64 * eps) * (b1_part + b2_part + s_part) + 2 * std::cbrt(b_error * b_error);
+  const Work excess = b1_part + b2_part - s_part;
+  if (excess > margin) return 0;
+  if (excess > -margin || !(std::abs(b1) > std::sqrt(eps) * t2)) return -1;
+  // mu0 = -s^2 |b1|^(2/3) / (|b1|^(2/3) + |b2|^(2/3)); P(mu0) = -phi(mu0) mu0^2 (mu0 + s^2)^2.
+  const Work sum = b1_part + b2_part;
+  const Work mu0 = -t2 * b1_part / sum, hi = -std::abs(b1);
+  if (!(mu0 < hi)) return -1;
+  // -P, rising through the bracket as bracketed_root asks.
+  const Work q_lo = (sum * sum * sum / (t2 * t2) - 1) * (mu0 * mu0) * ((mu0 + t2) * (mu0 + t2));
+  const Work q_hi = b1_squared * b2_squared;
+  const Work c[5] = {b1_squared * t2 * t2, 2 * b1_squared * t2, b_norm_squared - t2 * t2, -2 * t2, -1};
+  if (!(q_lo < 0)) return -1;
+  const Real mu = Real(Roots::bracketed_root(c, 4, mu0, hi, q_lo, q_hi));
+  // z = (b1 / mu, b2 / (mu + s^2)), scaled by mu (mu + s^2) < 0: hence the sign.
+  const Vec3<Real> direction = -(m.a_parallel * (mu + m.s2) + m.a_across * mu);
+  const Real length = direction.norm();
+  if (!(length > 0) || !std::isfinite(length)) return -1;
+  second = m;
+  second.ring_point = (radius / length) * direction;
+  complete_line_minimum(second);
+  return 1;
 }
 
 // Whether the line's ring minimum m is tied with its mirror image (b1 near 0): which of the two
@@ -197,23 +267,48 @@ template <class Real> PieceLine<Real> piece_line(const Segment3<Real>& s, Real r
   return {{s.p0, d}, d.squaredNorm() <= 4096 * radius * radius};
 }
 
-// Whether `point` (relative to `center`) of `line` lies on the piece: its parameter on the line,
-// which is the piece's own parametrization, within [lo, hi].
+// The parameter on `line` of its `point` (relative to `center`): for a ray or segment, the piece's
+// own parametrization.
+template <class Real> Real line_param(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point) {
+  return (point - (line.origin - center)).dot(line.direction) / line.direction.squaredNorm();
+}
+
+// Whether `point` (relative to `center`) of `line` lies on the piece: its parameter within [lo, hi].
 template <class Real>
 bool on_piece(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point, const Linear<Real>& piece) {
-  const Real t = (point - (line.origin - center)).dot(line.direction) / line.direction.squaredNorm();
+  const Real t = line_param(line, center, point);
   return t >= piece.lo && t <= piece.hi;
 }
 
-// The line's minimum over the ring for a piece: false where the general path must answer.
-// `for_closest` also leaves out ties (the piece may hold one of the pair, so be unique).
-template <class Roots, class Piece, class Real>
-bool piece_ring_minimum(const Piece& piece, const Circle3<Real>& c, Line3<Real>& line, LineRingMinimum<Real>& m,
-                        bool for_closest) {
-  const PieceLine<Real> pl = piece_line(piece, c.radius);
-  line = pl.line;
-  return pl.usable && line_ring_minimum<Roots>(line, c, m) && on_piece(line, c.center, m.line_point, as_linear(piece)) &&
-         !(for_closest && tied_with_mirror(c, m));
+// A ray's or segment's end point at parameter t (the origin of a ray; p0 or p1 exactly, not
+// p0 + (p1 - p0)), for the end-point answers of the pieces.
+template <class Real> Vec3<Real> piece_end(const Line3<Real>& l, Real) { return l.origin; }  // never asked
+template <class Real> Vec3<Real> piece_end(const Ray3<Real>& r, Real) { return r.origin; }
+template <class Real> Vec3<Real> piece_end(const Segment3<Real>& s, Real t) { return t > 0 ? s.p1 : s.p0; }
+
+// A piece's end point as a candidate: its distance to the round by point-circle's (point-disk's)
+// closed form from the line's unit normal n (height z = n.(p - c), rho from the axis), and its
+// closest points (the distance kept the same, so distance() and closest() agree).
+template <class Real> Real end_point_distance(const Vec3<Real>& p, const Circle3<Real>& c, const Vec3<Real>& n) {
+  const Vec3<Real> d = p - c.center;
+  const Real z = n.dot(d);
+  return length2d(z, (d - z * n).norm() - c.radius);
+}
+template <class Real> Real end_point_distance(const Vec3<Real>& p, const Disk3<Real>& disk, const Vec3<Real>& n) {
+  const Vec3<Real> d = p - disk.center;
+  const Real z = n.dot(d);
+  const Real rho = (d - z * n).norm();
+  return rho <= disk.radius ? std::abs(z) : length2d(z, rho - disk.radius);
+}
+template <class Piece, class Round>
+auto end_point_result(const Piece& piece, decltype(Round::radius) t, const Round& round,
+                      const Vec3<decltype(Round::radius)>& n) {
+  using Real = decltype(Round::radius);
+  const Vec3<Real> p = piece_end(piece, t);
+  Result<Real> r = Query<Vec3<Real>, Round>::closest(p, round);
+  r.distance = end_point_distance(p, round, n);
+  r.param_a = Vec2<Real>(t, 0);
+  return r;
 }
 
 template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
@@ -233,21 +328,81 @@ template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
   }
 };
 
-// Rays and segments: the full line's answer where piece_ring_minimum allows, else the general path.
+// Rays and segments. A ray's or segment's distance is the least of its end points' and of the
+// line's local minima that it holds: the global one m (line_ring_minimum) and, inside the
+// astroid, the other (other_line_minimum). End points by point-circle's closed form. Where the
+// other minimum is undecided, where a segment is too long for the line through it
+// (piece_line), or for closest points where a minimum is tied with its mirror image, the
+// general path answers. distance() and closest() pick the same candidate with the same formulas.
 template <class Real, class Piece> struct PieceCircleQuery : LinearCircleQuery<Real, Piece> {
   using General = LinearCircleQuery<Real, Piece>;
 
+  // The winning candidate: a line minimum (`line_minimum`) or the end at parameter `t`.
+  struct Choice {
+    LineRingMinimum<Real> line_minimum;
+    Vec3<Real> unit_normal;
+    Real t = 0, value = std::numeric_limits<Real>::infinity();
+    bool at_end = false;
+  };
+
+  // False where the general path must answer.
+  template <class Roots> static bool choose(const Piece& piece, const Circle3<Real>& c, Line3<Real>& line,
+                                            Choice& out, bool for_closest) {
+    const PieceLine<Real> pl = piece_line(piece, c.radius);
+    line = pl.line;
+    LineRingMinimum<Real> m, second;
+    if (!pl.usable || !line_ring_minimum<Roots>(line, c, m)) return false;
+    out.unit_normal = m.unit_normal;
+    const Linear<Real> linear = as_linear(piece);
+    if (on_piece(line, c.center, m.line_point, linear)) {
+      // The global minimum on the piece answers, unless it is tied with its mirror image.
+      if (for_closest && tied_with_mirror(c, m)) return false;
+      out.line_minimum = m;
+      out.value = m.distance;
+      return true;
+    }
+    const int other = other_line_minimum<Roots>(m, c.radius, second);
+    if (other < 0) return false;
+    if (other == 0) {
+      // One minimum, off the piece: the distance falls toward it, so the nearer end answers.
+      out.t = line_param(line, c.center, m.line_point) < linear.lo ? linear.lo : linear.hi;
+      out.value = end_point_distance(piece_end(piece, out.t), c, m.unit_normal);
+      out.at_end = true;
+      return true;
+    }
+    if (on_piece(line, c.center, second.line_point, linear)) {
+      out.line_minimum = second;
+      out.value = second.distance;
+    }
+    for (const Real t : {linear.lo, linear.hi}) {
+      if (!std::isfinite(t)) continue;
+      const Real value = end_point_distance(piece_end(piece, t), c, m.unit_normal);
+      // A tie between an end and a line minimum, or between both ends (a segment symmetric about
+      // the axis), is two distinct closest pairs: the general path judges `unique`.
+      if (for_closest && std::abs(value - out.value) <= tie_tolerance(std::max(c.radius, value))) return false;
+      if (value < out.value) {
+        out.value = value;
+        out.t = t;
+        out.at_end = true;
+      }
+    }
+    return true;
+  }
+
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Circle3<Real>& c) {
     Line3<Real> line;
-    LineRingMinimum<Real> m;
-    if (piece_ring_minimum<Roots>(piece, c, line, m, false)) return m.distance;
+    Choice choice;
+    if (choose<Roots>(piece, c, line, choice, false)) return choice.value;
     return General::template distance<Roots>(piece, c);
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Circle3<Real>& c) {
     Line3<Real> line;
-    LineRingMinimum<Real> m;
-    if (piece_ring_minimum<Roots>(piece, c, line, m, true)) return line_ring_result(line, c, m);
+    Choice choice;
+    if (choose<Roots>(piece, c, line, choice, true)) {
+      if (choice.at_end) return end_point_result(piece, choice.t, c, choice.unit_normal);
+      return line_ring_result(line, c, choice.line_minimum);
+    }
     return General::template closest<Roots>(piece, c);
   }
 };

@@ -97,18 +97,30 @@ bool line_disk_minimum(const Piece& piece, const Disk3<Real>& disk, LineDiskMini
   return true;
 }
 
+// The line's distance to the disk is convex (the distance to a convex set, along a line), so a
+// ray or segment that does not hold the line's minimum is closest at its end nearer that
+// minimum: point-disk's closed form there (strictly closest: a convex function falls strictly
+// toward its minimum, so the pair is unique).
 template <class Real, class Piece> struct PieceDiskQuery : LinearDiskQuery<Real, Piece> {
   using General = LinearDiskQuery<Real, Piece>;
+
+  // The line's minimum (the crossing, or the line's point closest to the rim) as a parameter of
+  // the piece: inside [lo, hi] the line's answer holds; outside, the end at `t` answers.
+  static bool end_answers(const LineDiskMinimum<Real>& m, const Disk3<Real>& disk, const Linear<Real>& linear,
+                          Real& t) {
+    const Real at = line_param(m.line, disk.center, m.crosses ? m.crossing : m.ring.line_point);
+    if (!(at < linear.lo || at > linear.hi)) return false;
+    t = at < linear.lo ? linear.lo : linear.hi;
+    return true;
+  }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Disk3<Real>& disk) {
     LineDiskMinimum<Real> m;
     if (line_disk_minimum<Roots>(piece, disk, m)) {
       const Linear<Real> linear = as_linear(piece);
-      if (m.crosses) {
-        if (on_piece(m.line, disk.center, m.crossing, linear)) return Real(0);
-      } else if (on_piece(m.line, disk.center, m.ring.line_point, linear)) {
-        return m.ring.distance;
-      }
+      Real t = 0;
+      if (end_answers(m, disk, linear, t)) return end_point_distance(piece_end(piece, t), disk, m.ring.unit_normal);
+      return m.crosses ? Real(0) : m.ring.distance;
     }
     return General::template distance<Roots>(piece, disk);
   }
@@ -121,19 +133,18 @@ template <class Real, class Piece> struct PieceDiskQuery : LinearDiskQuery<Real,
     if (line_disk_minimum<Roots>(piece, disk, m) &&
         std::abs(m.ring.unit_direction.dot(m.ring.unit_normal)) > std::sqrt(std::numeric_limits<Real>::epsilon())) {
       const Linear<Real> linear = as_linear(piece);
+      Real t = 0;
+      if (end_answers(m, disk, linear, t)) return end_point_result(piece, t, disk, m.ring.unit_normal);
       if (m.crosses) {
-        if (on_piece(m.line, disk.center, m.crossing, linear)) {
-          // One common point: the line meets the plane once.
-          Result<Real> r;
-          r.distance = 0;
-          r.point_a = r.point_b = disk.center + m.crossing;
-          r.param_a = Vec2<Real>((m.crossing - (m.line.origin - disk.center)).dot(m.line.direction) /
-                                     m.line.direction.squaredNorm(),
-                                 0);
-          r.param_b = Round<Real>::disk_param(Frame<Real>(disk.normal).to_local(m.crossing));
-          return r;
-        }
-      } else if (on_piece(m.line, disk.center, m.ring.line_point, linear) && !tied_with_mirror(rim, m.ring)) {
+        // One common point: the line meets the plane once.
+        Result<Real> r;
+        r.distance = 0;
+        r.point_a = r.point_b = disk.center + m.crossing;
+        r.param_a = Vec2<Real>(line_param(m.line, disk.center, m.crossing), 0);
+        r.param_b = Round<Real>::disk_param(Frame<Real>(disk.normal).to_local(m.crossing));
+        return r;
+      }
+      if (!tied_with_mirror(rim, m.ring)) {
         Result<Real> r = line_ring_result(m.line, rim, m.ring);
         r.param_b = Vec2<Real>(disk.radius, r.param_b.x());
         return r;

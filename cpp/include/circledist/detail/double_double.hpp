@@ -1,0 +1,51 @@
+// Double-double arithmetic: a value as an unevaluated sum hi + lo of two Reals, |lo| <= ulp(hi)/2,
+// about twice Real's precision (Dekker 1971; Shewchuk 1997 for the error-free transformations).
+// Used where a quantity is a small difference of large terms that plain arithmetic cannot hold:
+// a point of a Bezier curve 1e5 times larger than the round it passes, evaluated from control
+// points 1e5 radii away (bezier.hpp, PreciseLocalCurve).
+#pragma once
+
+#include <cmath>
+
+namespace circledist::detail {
+
+template <class Real> struct DoubleDouble {
+  Real hi = 0, lo = 0;
+
+  DoubleDouble() = default;
+  DoubleDouble(Real h, Real l = 0) : hi(h), lo(l) {}
+
+  // a + b exactly, as s + e (Knuth's TwoSum: no assumption on the magnitudes).
+  static DoubleDouble two_sum(Real a, Real b) {
+    const Real s = a + b;
+    const Real bb = s - a;
+    return {s, (a - (s - bb)) + (b - bb)};
+  }
+  // a + b exactly when |a| >= |b| (Dekker's FastTwoSum), to renormalize.
+  static DoubleDouble fast_two_sum(Real a, Real b) {
+    const Real s = a + b;
+    return {s, b - (s - a)};
+  }
+  // a * b exactly (the fused multiply-add gives the product's rounding error).
+  static DoubleDouble two_product(Real a, Real b) {
+    const Real p = a * b;
+    return {p, std::fma(a, b, -p)};
+  }
+
+  Real value() const { return hi + lo; }
+
+  friend DoubleDouble operator+(const DoubleDouble& a, const DoubleDouble& b) {
+    DoubleDouble s = two_sum(a.hi, b.hi);
+    s.lo += a.lo + b.lo;
+    return fast_two_sum(s.hi, s.lo);
+  }
+  friend DoubleDouble operator-(const DoubleDouble& a) { return {-a.hi, -a.lo}; }
+  friend DoubleDouble operator-(const DoubleDouble& a, const DoubleDouble& b) { return a + (-b); }
+  friend DoubleDouble operator*(const DoubleDouble& a, Real b) {
+    DoubleDouble p = two_product(a.hi, b);
+    p.lo += a.lo * b;
+    return fast_two_sum(p.hi, p.lo);
+  }
+};
+
+}  // namespace circledist::detail
