@@ -185,21 +185,32 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
 // rounding of b1, b2 (absolute eps (|a| / R + 1)) and s leaves the astroid test open, or |b1|
 // is too small to bracket the root (the mirror-image case): the general path answers those.
 // A line parallel to the axis has the distance sqrt(z(t)^2 + const), convex: no second one.
-template <class Roots, class Real>
-int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMinimum<Real>& second) {
+//
+// `may_hold(tau_max)` says whether the piece can hold the second minimum, which lies on the
+// other side of the anchor from the global one: its ring point has z1 = b1 / mu of the sign of
+// -b1 (mu < 0), and its line point is a + tau m with tau = R z.m = R s z1, so tau lies in
+// (0, R s] times the sign of -b1. Where the piece does not reach there, the root is not solved
+// (returns 2: a second minimum exists, off the piece).
+template <class Roots, class Real, class MayHold>
+int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMinimum<Real>& second,
+                       const MayHold& may_hold) {
   if (m.s2 == 0) return m.on_axis ? -1 : 0;
   using Work = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
   const Work eps = std::numeric_limits<Real>::epsilon();
   const Work b1 = Work(m.b1), b1_squared = b1 * b1, b2_squared = Work(m.b2_squared), t2 = Work(m.s2);
-  const Work b_error = 16 * eps * (Work(m.anchor.norm()) / Work(radius) + 1);
-  // The astroid lies in the disk |b| <= s^2 (its cusps on the circle): outside it, no cube roots.
+  // b's rounding, 16 eps (|a| / R + 1), bounded without square roots (x^2 + 2 > x + 1).
+  const Work a_over_r = Work(m.anchor.squaredNorm()) / (Work(radius) * Work(radius));
+  const Work b_error = 16 * eps * (a_over_r + 2);
+  // The astroid lies in the disk |b| <= s^2 (its cusps on the circle): outside it, no cube roots
+  // (2 |b| <= |b|^2 + 1 bounds the rounding of |b|^2).
   const Work b_norm_squared = b1_squared + b2_squared;
-  if (b_norm_squared - t2 * t2 > Work(1e-6) * t2 * t2 + 4 * std::sqrt(b_norm_squared) * b_error) return 0;
+  if (b_norm_squared - t2 * t2 > Work(1e-6) * t2 * t2 + 2 * (b_norm_squared + 1) * b_error) return 0;
   const Work b1_part = std::cbrt(b1_squared), b2_part = std::cbrt(b2_squared), s_part = std::cbrt(t2 * t2);
   const Work margin = std::max(Work(1e-6), 64 * eps) * (b1_part + b2_part + s_part) + 2 * std::cbrt(b_error * b_error);
   const Work excess = b1_part + b2_part - s_part;
   if (excess > margin) return 0;
   if (excess > -margin || !(std::abs(b1) > std::sqrt(eps) * t2)) return -1;
+  if (!may_hold(std::copysign(radius * std::sqrt(m.s2), -m.b1))) return 2;
   // mu0 = -s^2 |b1|^(2/3) / (|b1|^(2/3) + |b2|^(2/3)); P(mu0) = -phi(mu0) mu0^2 (mu0 + s^2)^2.
   const Work sum = b1_part + b2_part;
   const Work mu0 = -t2 * b1_part / sum, hi = -std::abs(b1);
@@ -216,6 +227,7 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
   if (!(length > 0) || !std::isfinite(length)) return -1;
   second = m;
   second.ring_point = (radius / length) * direction;
+  second.mirror = second.ring_point;  // the global minimum's mirror is not this one's
   complete_line_minimum(second);
   return 1;
 }
@@ -273,11 +285,17 @@ template <class Real> Real line_param(const Line3<Real>& line, const Vec3<Real>&
   return (point - (line.origin - center)).dot(line.direction) / line.direction.squaredNorm();
 }
 
-// Whether `point` (relative to `center`) of `line` lies on the piece: its parameter within [lo, hi].
+// Where `point` (relative to `center`) of `line` lies against the piece: -1 before lo, 0 on
+// [lo, hi], 1 after hi (its parameter compared as t |d|^2, without the division).
+template <class Real>
+int piece_side(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point, const Linear<Real>& piece) {
+  const Real d2 = line.direction.squaredNorm();
+  const Real scaled = (point - (line.origin - center)).dot(line.direction);
+  return scaled < piece.lo * d2 ? -1 : scaled > piece.hi * d2 ? 1 : 0;
+}
 template <class Real>
 bool on_piece(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point, const Linear<Real>& piece) {
-  const Real t = line_param(line, center, point);
-  return t >= piece.lo && t <= piece.hi;
+  return piece_side(line, center, point, piece) == 0;
 }
 
 // A ray's or segment's end point at parameter t (the origin of a ray; p0 or p1 exactly, not
@@ -337,42 +355,53 @@ template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
 template <class Real, class Piece> struct PieceCircleQuery : LinearCircleQuery<Real, Piece> {
   using General = LinearCircleQuery<Real, Piece>;
 
-  // The winning candidate: a line minimum (`line_minimum`) or the end at parameter `t`.
+  // The candidates and the winner: the line's minima `global` and `second`, or the end at
+  // parameter `t`.
   struct Choice {
-    LineRingMinimum<Real> line_minimum;
-    Vec3<Real> unit_normal;
+    Line3<Real> line;  // the full line through the piece
+    LineRingMinimum<Real> global, second;
+    enum Winner { kGlobal, kSecond, kEnd } winner = kGlobal;
     Real t = 0, value = std::numeric_limits<Real>::infinity();
-    bool at_end = false;
   };
 
   // False where the general path must answer.
-  template <class Roots> static bool choose(const Piece& piece, const Circle3<Real>& c, Line3<Real>& line,
-                                            Choice& out, bool for_closest) {
+  template <class Roots> static bool choose(const Piece& piece, const Circle3<Real>& c, Choice& out, bool for_closest) {
     const PieceLine<Real> pl = piece_line(piece, c.radius);
-    line = pl.line;
-    LineRingMinimum<Real> m, second;
-    if (!pl.usable || !line_ring_minimum<Roots>(line, c, m)) return false;
-    out.unit_normal = m.unit_normal;
+    out.line = pl.line;
+    const LineRingMinimum<Real>& m = out.global;
+    if (!pl.usable || !line_ring_minimum<Roots>(out.line, c, out.global)) return false;
     const Linear<Real> linear = as_linear(piece);
-    if (on_piece(line, c.center, m.line_point, linear)) {
+    const int side = piece_side(out.line, c.center, m.line_point, linear);
+    if (side == 0) {
       // The global minimum on the piece answers, unless it is tied with its mirror image.
       if (for_closest && tied_with_mirror(c, m)) return false;
-      out.line_minimum = m;
       out.value = m.distance;
       return true;
     }
-    const int other = other_line_minimum<Roots>(m, c.radius, second);
+    // The piece's extent along the line as offsets tau from the anchor (a.m = 0), and whether it
+    // reaches the second minimum's side, (0, tau_max] or [tau_max, 0) (other_line_minimum).
+    const auto tau_of = [&](Real t) {
+      return std::isfinite(t) ? (piece_end(piece, t) - c.center).dot(m.unit_direction) : t;
+    };
+    const auto may_hold = [&](Real tau_max) {
+      const Real lo = tau_of(linear.lo), hi = tau_of(linear.hi);
+      const Real slack = 64 * std::numeric_limits<Real>::epsilon() * (std::abs(tau_max) + m.anchor.norm() +
+                                                                        (std::isfinite(lo) ? std::abs(lo) : Real(0)) +
+                                                                        (std::isfinite(hi) ? std::abs(hi) : Real(0)));
+      return tau_max > 0 ? hi >= -slack && lo <= tau_max + slack : lo <= slack && hi >= tau_max - slack;
+    };
+    const int other = other_line_minimum<Roots>(m, c.radius, out.second, may_hold);
     if (other < 0) return false;
+    out.winner = Choice::kEnd;
     if (other == 0) {
       // One minimum, off the piece: the distance falls toward it, so the nearer end answers.
-      out.t = line_param(line, c.center, m.line_point) < linear.lo ? linear.lo : linear.hi;
+      out.t = side < 0 ? linear.lo : linear.hi;
       out.value = end_point_distance(piece_end(piece, out.t), c, m.unit_normal);
-      out.at_end = true;
       return true;
     }
-    if (on_piece(line, c.center, second.line_point, linear)) {
-      out.line_minimum = second;
-      out.value = second.distance;
+    if (other == 1 && on_piece(out.line, c.center, out.second.line_point, linear)) {
+      out.winner = Choice::kSecond;
+      out.value = out.second.distance;
     }
     for (const Real t : {linear.lo, linear.hi}) {
       if (!std::isfinite(t)) continue;
@@ -383,27 +412,23 @@ template <class Real, class Piece> struct PieceCircleQuery : LinearCircleQuery<R
       if (value < out.value) {
         out.value = value;
         out.t = t;
-        out.at_end = true;
+        out.winner = Choice::kEnd;
       }
     }
     return true;
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Circle3<Real>& c) {
-    Line3<Real> line;
     Choice choice;
-    if (choose<Roots>(piece, c, line, choice, false)) return choice.value;
+    if (choose<Roots>(piece, c, choice, false)) return choice.value;
     return General::template distance<Roots>(piece, c);
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Circle3<Real>& c) {
-    Line3<Real> line;
     Choice choice;
-    if (choose<Roots>(piece, c, line, choice, true)) {
-      if (choice.at_end) return end_point_result(piece, choice.t, c, choice.unit_normal);
-      return line_ring_result(line, c, choice.line_minimum);
-    }
-    return General::template closest<Roots>(piece, c);
+    if (!choose<Roots>(piece, c, choice, true)) return General::template closest<Roots>(piece, c);
+    if (choice.winner == Choice::kEnd) return end_point_result(piece, choice.t, c, choice.global.unit_normal);
+    return line_ring_result(choice.line, c, choice.winner == Choice::kSecond ? choice.second : choice.global);
   }
 };
 

@@ -108,9 +108,9 @@ template <class Real, class Piece> struct PieceDiskQuery : LinearDiskQuery<Real,
   // the piece: inside [lo, hi] the line's answer holds; outside, the end at `t` answers.
   static bool end_answers(const LineDiskMinimum<Real>& m, const Disk3<Real>& disk, const Linear<Real>& linear,
                           Real& t) {
-    const Real at = line_param(m.line, disk.center, m.crosses ? m.crossing : m.ring.line_point);
-    if (!(at < linear.lo || at > linear.hi)) return false;
-    t = at < linear.lo ? linear.lo : linear.hi;
+    const int side = piece_side(m.line, disk.center, m.crosses ? m.crossing : m.ring.line_point, linear);
+    if (side == 0) return false;
+    t = side < 0 ? linear.lo : linear.hi;
     return true;
   }
 
