@@ -196,6 +196,26 @@ def test_points_on_shapes(lib, kinds):
     check()
 
 
+@pytest.mark.parametrize("round_kind", ["circle", "disk"])
+@pytest.mark.parametrize("precision", ["float64", "longdouble"])
+def test_point_distance_is_closest_points_distance(lib, round_kind, precision):
+    """A point's distance() and closest_points().distance come from the same height and radial
+    offset: equal to the bit, and the closest point lies in the shape's plane."""
+    @given(scene("point", round_kind))
+    def check(sc):
+        _, ld, rk, rd = sc
+        a, b = _make(lib, "point", ld), _make(lib, rk, rd)
+        for x, y in ((a, b), (b, a)):
+            res = lib.closest_points(x, y, precision=precision)
+            assert res.distance == lib.distance(x, y, precision=precision)
+        res = lib.closest_points(a, b)
+        u, v, n = _frame(rd[3:6])
+        height = abs(float(np.dot(np.asarray(res.point_b, float) - np.asarray(rd[:3]), n)))
+        assert height <= 8 * EPS * max(float(np.linalg.norm(np.asarray(ld[:3]) - np.asarray(rd[:3]))), rd[6], 1.0)
+
+    check()
+
+
 def _samples_linear(lk, ld, center, reach, rng, n=200):
     ld = np.asarray(ld, float)
     if lk == "point":

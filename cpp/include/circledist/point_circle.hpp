@@ -18,18 +18,29 @@ template <class Real> struct Query<Vec3<Real>, Circle3<Real>> {
     return length2d(z, rho - c.radius);
   }
 
+  // The distance from the same height and radial offset as distance() (so the two agree to the
+  // bit); the ring point from the in-plane coordinates (x, y) = (u.d, v.d), so that it lies in
+  // the plane (scaling d - z n by R / rho would carry its rounding, eps |z|, out of the plane
+  // R / rho times over for a point high above the axis); the angle atan2(y, x).
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Circle3<Real>& c) {
-    const Round<Real> round(c.center, c.normal, c.radius);
-    const Vec3<Real> local = round.local(p);
+    const Frame<Real> frame(c.normal);
+    const Vec3<Real> d = p - c.center;
+    const Real z = frame.n.dot(d);
     Result<Real> r;
-    const Real scale = std::max(c.radius, local.norm());
-    bool ambiguous = false;
-    const Vec3<Real> q = round.ring_point(local, scale, ambiguous);
-    r.distance = ring_distance_local(local, c.radius);
+    r.distance = length2d(z, (d - z * frame.n).norm() - c.radius);
     r.point_a = p;
-    r.point_b = round.world(q);
-    r.param_b = Round<Real>::ring_param(q);
-    r.unique = !ambiguous;
+    const Real x = frame.u.dot(d), y = frame.v.dot(d);
+    const Real rho = length2d(x, y);
+    // A point on the axis (rho within rounding of 0) is as close to every ring point: the one at
+    // angle 0, and `unique` false.
+    if (rho <= 8 * std::numeric_limits<Real>::epsilon() * std::max(c.radius, d.norm())) {
+      r.point_b = c.center + c.radius * frame.u;
+      r.unique = !(c.radius > 0);
+      return r;
+    }
+    const Real scale = c.radius / rho;
+    r.point_b = c.center + (scale * x) * frame.u + (scale * y) * frame.v;
+    r.param_b = Vec2<Real>(std::atan2(y, x), 0);
     return r;
   }
 };
