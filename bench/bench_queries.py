@@ -406,8 +406,9 @@ def run_distance3d(rows, budget):
 # --------------------------------------------------------------------------------------------
 # Peak memory of a batch of 10^7 point-circle queries, in a fresh interpreter.
 # --------------------------------------------------------------------------------------------
-def memory_child(n):
-    """Runs in the subprocess: prints one line of key=value pairs."""
+def memory_child(n, copy=False):
+    """Runs in the subprocess: prints one line of key=value pairs. copy=False: the shapes refer
+    to the arrays (the memory-lean path); copy=True: the default, each shape keeps its own copy."""
     import circledist as cd
 
     def peak():  # bytes; Linux reports ru_maxrss in KiB
@@ -435,7 +436,7 @@ def memory_child(n):
     inputs = p.nbytes + c.nbytes + nrm.nbytes + r.nbytes
     before = peak()
     t0 = clock()
-    points, circles = cd.Point(p), cd.Circle(c, nrm, r)
+    points, circles = cd.Point(p, copy=copy), cd.Circle(c, nrm, r, copy=copy)
     t1 = clock()
     d = cd.distance(points, circles)
     t2 = clock()
@@ -444,12 +445,13 @@ def memory_child(n):
           f"outputs={d.nbytes} construct_s={t1 - t0:.4f} call_s={t2 - t1:.4f}")
 
 
-def run_memory(n):
+def run_memory(n, copy=False):
     """ru_maxrss survives fork + exec: a child exec'd straight from this process would start
     with this process's resident size as its peak. Going through a shell that forks (it does
     not exec its last command when another follows) starts the child from the shell's size."""
     print(f"== peak memory, {n:.0e} point-circle queries in a fresh interpreter", flush=True)
-    command = f'"{sys.executable}" "{Path(__file__).resolve()}" --memory-child {n}; exit $?'
+    flag = " --memory-copy" if copy else ""
+    command = f'"{sys.executable}" "{Path(__file__).resolve()}" --memory-child {n}{flag}; exit $?'
     proc = subprocess.run(["/bin/sh", "-c", command], capture_output=True, text=True)
     if proc.returncode != 0:
         print(proc.stdout, proc.stderr)
@@ -650,14 +652,17 @@ def report(rows, info, mem, d3d_version, n, wall):
         parts.append("")
     if mem:
         parts += [
-            "Peak memory of one batch of 10^7 point–circle queries (10^7 points against 10^7 circles) in a "
-            "fresh interpreter, from `ru_maxrss`: inputs "
+            "Peak memory of one batch of 10^7 point–circle queries (10^7 points against 10^7 circles, shapes "
+            "built with `copy=False`, which refer to the arrays) in a fresh interpreter, from `ru_maxrss`: inputs "
             f"{mem['inputs'] / mib:.0f} MiB + outputs {mem['outputs'] / mib:.0f} MiB = {mem['io'] / mib:.0f} MiB; "
             f"peak above the interpreter's baseline (after importing NumPy and circledist) "
             f"{mem['peak_over_baseline'] / mib:.0f} MiB, overhead **{100 * mem['overhead']:+.1f} %**; the call "
             f"(shape construction + `cd.distance`) raised the peak by {(mem['after'] - mem['before']) / mib:.0f} MiB "
             f"for its {mem['outputs'] / mib:.0f} MiB output. Building the shapes took {mem['construct_s']:.2f} s, "
-            f"the call {mem['call_s']:.2f} s ({mem['call_s'] / mem['n'] * 1e9:.0f} ns/query).",
+            f"the call {mem['call_s']:.2f} s ({mem['call_s'] / mem['n'] * 1e9:.0f} ns/query)."
+            + (f" With the default `copy=True` each shape keeps its own copy of its inputs (a shape is a value): "
+               f"peak {mem['copied_peak'] / mib:.0f} MiB, overhead {100 * mem['copied_overhead']:+.1f} %, the inputs "
+               "once more, by design." if "copied_peak" in mem else ""),
             "",
         ]
     tgt = targets(rows, mem)
@@ -677,14 +682,20 @@ def main():
     parser.add_argument("--no-memory", action="store_true")
     parser.add_argument("--no-report", action="store_true", help="do not write docs/benchmark.md")
     parser.add_argument("--memory-child", type=int, default=0, help=argparse.SUPPRESS)
+    parser.add_argument("--memory-copy", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.memory_child:
-        memory_child(args.memory_child)
+        memory_child(args.memory_child, copy=args.memory_copy)
         return
 
     start = time.perf_counter()
     # First, while this process is small (see run_memory).
     mem = None if args.no_memory else run_memory(args.memory_n)
+    if mem:
+        copied = run_memory(args.memory_n, copy=True)
+        if copied:
+            mem["copied_overhead"] = copied["overhead"]
+            mem["copied_peak"] = copied["peak_over_baseline"]
     import circledist as cd
 
     kinds = KINDS

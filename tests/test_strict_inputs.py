@@ -54,6 +54,33 @@ def test_fields_are_read_only_copies(kind):
             field[...] = 0
 
 
+def test_copy_false_refers_to_the_callers_arrays():
+    """copy=False (as cKDTree's copy_data=False): a float64 C-contiguous field is a read-only view
+    of the caller's array, not a copy; the caller promises not to change it. Other inputs are
+    converted (a copy is then unavoidable); the default keeps its own copy."""
+    p = np.zeros((1000, 3))
+    c, n, r = np.zeros((1000, 3)), np.tile([0.0, 0.0, 1.0], (1000, 1)), np.ones(1000)
+    shared = cd.Circle(c, n, r, copy=False)
+    assert np.shares_memory(shared.center, c) and np.shares_memory(shared.radius, r)
+    own = cd.Circle(c, n, r)
+    assert not np.shares_memory(own.center, c)
+    points = cd.Point(p, copy=False)
+    assert np.shares_memory(points.p, p)
+    np.testing.assert_array_equal(cd.distance(points, shared), np.ones(1000))
+    with pytest.raises(ValueError, match="read-only"):
+        shared.center[0, 0] = 1.0  # the view is read-only, the caller's array is not
+    c[0, 2] = 3.0  # the caller changes its array: the shared shape sees it, the copy does not
+    origin = cd.Point([0.0, 0.0, 0.0])
+    assert cd.distance(origin, shared)[0] == pytest.approx(math.sqrt(10), rel=1e-15)
+    assert cd.distance(origin, own)[0] == 1.0
+    # Validation still happens at construction.
+    with pytest.raises(ValueError, match="NaN or inf"):
+        cd.Point(np.array([[0.0, np.nan, 0.0]]), copy=False)
+    # float32 / int inputs are converted, so nothing is shared.
+    q = np.zeros((4, 3), dtype=np.float32)
+    assert not np.shares_memory(cd.Point(q, copy=False).p, q)
+
+
 def test_batch_fields_do_not_alias():
     a = np.zeros((2, 3))
     p = cd.Point(a)

@@ -92,11 +92,11 @@ py::tuple batch_tuple(py::handle self) {
 template <int K, size_t... I> void bind_shape(py::module_& m, const char* doc, std::index_sequence<I...>) {
   static const FieldSpec* spec = kFieldSpecs[K];
   py::class_<ShapeOf<K>, Shape> cls(m, kind_name(K), doc);
-  cls.def(py::init([](decltype((void)I, py::handle())... values, py::handle sweep) {
-            return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check)...,
-                                  sweep_field(kind_name(K), sweep)});
+  cls.def(py::init([](decltype((void)I, py::handle())... values, py::handle sweep, bool copy) {
+            return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check, copy)...,
+                                  sweep_field(kind_name(K), sweep, copy)});
           }),
-          py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none());
+          py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none(), py::arg("copy") = true);
   (cls.def_property_readonly(spec[I].name, [](py::handle s) { return constructed(s).fields[I].value(); }), ...);
   cls.def_property_readonly(kSweepField.name, [](py::handle s) { return constructed(s).fields.back().value(); },
                             "Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).");

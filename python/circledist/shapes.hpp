@@ -118,14 +118,20 @@ inline bool is_real_array(const py::object& given) {
 }
 
 // A shape is a value: its fields are private read-only copies, so neither the caller's array nor
-// the shape's own attributes can change a validated shape afterwards.
-inline py::object frozen_copy(const py::module_& numpy, const py::object& given, const char* dtype) {
-  py::object out = numpy.attr("array")(given, py::arg("dtype") = dtype, py::arg("order") = "C", py::arg("copy") = true);
+// the shape's own attributes can change a validated shape afterwards. With copy=False (as
+// scipy.spatial.cKDTree's copy_data=False) a field given as a C-contiguous array of the
+// field's dtype is referred to, not copied: a read-only view of the caller's array, which the
+// caller promises not to change (a batch then costs no memory beyond its inputs).
+inline py::object frozen_copy(const py::module_& numpy, const py::object& given, const char* dtype, bool copy = true) {
+  py::object out = copy ? numpy.attr("array")(given, py::arg("dtype") = dtype, py::arg("order") = "C",
+                                              py::arg("copy") = true)
+                        : numpy.attr("ascontiguousarray")(given, py::arg("dtype") = dtype).attr("view")();
   out.attr("setflags")(py::arg("write") = false);
   return out;
 }
 
-inline Field make_field(const char* owner, const char* name, py::handle value, Index width, Check check) {
+inline Field make_field(const char* owner, const char* name, py::handle value, Index width, Check check,
+                        bool copy = true) {
   Field f{name, {}, {}, width};
   py::object converted;
   bool real = false;
@@ -138,8 +144,8 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
       // np.longdouble is kept as it is where it is wider than float64 (x86's 80-bit format).
       if (py::object(given.attr("dtype")).equal(numpy.attr("dtype")("longdouble")) &&
           std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
-        f.wide = Field::Wide::ensure(frozen_copy(numpy, given, "longdouble")), f.is_wide = true;
-      converted = frozen_copy(numpy, given, "float64");
+        f.wide = Field::Wide::ensure(frozen_copy(numpy, given, "longdouble", copy)), f.is_wide = true;
+      converted = frozen_copy(numpy, given, "float64", copy);
     }
   } catch (py::error_already_set&) {
     real = false;
@@ -334,9 +340,9 @@ inline Field default_sweep() {
   return f;
 }
 
-inline Field sweep_field(const char* owner, py::handle value) {
+inline Field sweep_field(const char* owner, py::handle value, bool copy = true) {
   if (value.is_none()) return default_sweep();
-  return make_field(owner, kSweepField.name, value, kSweepField.width, kSweepField.check);
+  return make_field(owner, kSweepField.name, value, kSweepField.width, kSweepField.check, copy);
 }
 
 inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields, kSegmentFields,
