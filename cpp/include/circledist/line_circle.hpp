@@ -205,18 +205,22 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
   // (2 |b| <= |b|^2 + 1 bounds the rounding of |b|^2).
   const Work b_norm_squared = b1_squared + b2_squared;
   if (b_norm_squared - t2 * t2 > Work(1e-6) * t2 * t2 + 2 * (b_norm_squared + 1) * b_error) return 0;
-  const Work b1_part = std::cbrt(b1_squared), b2_part = std::cbrt(b2_squared), s_part = std::cbrt(t2 * t2);
-  const Work margin = std::max(Work(1e-6), 64 * eps) * (b1_part + b2_part + s_part) + 2 * std::cbrt(b_error * b_error);
-  const Work excess = b1_part + b2_part - s_part;
-  if (excess > margin) return 0;
-  if (excess > -margin || !(std::abs(b1) > std::sqrt(eps) * t2)) return -1;
+  if (!(std::abs(b1) > std::sqrt(eps) * t2)) return -1;
+  // With k = |b2 / b1|^(2/3) (one cube root): phi(mu0) + 1 = (1 + k)^3 b1^2 / s^4 =: rho and
+  // mu0 = -s^2 / (1 + k). rho's rounding: b2's absolute error e moves |b2|^(2/3) by at most
+  // 2 e^(2/3), so rho (whose cube root is about s^(4/3) where it matters) by at most
+  // 6 (e / s^2)^(2/3) <= 6 max(sqrt(x), x), x = e / s^2.
+  const Work k = std::cbrt(b2_squared / b1_squared), one_k = 1 + k;
+  const Work rho = b1_squared * (one_k * one_k * one_k) / (t2 * t2);
+  const Work x = b_error / t2;
+  const Work margin = 3 * std::max(Work(1e-6), 64 * eps) + 6 * (x < 1 ? std::sqrt(x) : x);
+  if (rho > 1 + margin) return 0;
+  if (rho > 1 - margin) return -1;
   if (!may_hold(std::copysign(radius * std::sqrt(m.s2), -m.b1))) return 2;
-  // mu0 = -s^2 |b1|^(2/3) / (|b1|^(2/3) + |b2|^(2/3)); P(mu0) = -phi(mu0) mu0^2 (mu0 + s^2)^2.
-  const Work sum = b1_part + b2_part;
-  const Work mu0 = -t2 * b1_part / sum, hi = -std::abs(b1);
+  const Work mu0 = -t2 / one_k, hi = -std::abs(b1);
   if (!(mu0 < hi)) return -1;
   // -P, rising through the bracket as bracketed_root asks.
-  const Work q_lo = (sum * sum * sum / (t2 * t2) - 1) * (mu0 * mu0) * ((mu0 + t2) * (mu0 + t2));
+  const Work q_lo = (rho - 1) * (mu0 * mu0) * ((mu0 + t2) * (mu0 + t2));
   const Work q_hi = b1_squared * b2_squared;
   const Work c[5] = {b1_squared * t2 * t2, 2 * b1_squared * t2, b_norm_squared - t2 * t2, -2 * t2, -1};
   if (!(q_lo < 0)) return -1;
