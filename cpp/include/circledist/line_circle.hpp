@@ -65,7 +65,7 @@ template <class Real> struct LineRingMinimum {
   // b2^2, s^2 (s2 = 0 for a line parallel to the axis to within eps, whose distance has one
   // minimum), and the anchor's in-plane parts along m_xy and across it.
   Real b1 = 0, b2_squared = 0, s2 = 0;
-  Vec3<Real> a_parallel = Vec3<Real>::Zero(), a_across = Vec3<Real>::Zero(), m_xy = Vec3<Real>::Zero();
+  Vec3<Real> a_parallel = Vec3<Real>::Zero(), a_across = Vec3<Real>::Zero();
 };
 
 // The line's point closest to ring point `ring_point` (relative to the center), and their
@@ -133,7 +133,6 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     out.s2 = s2;
     out.a_parallel = a_parallel;
     out.a_across = a_across;
-    out.m_xy = m_xy;
     const Work b_norm = std::sqrt(b1 * b1 + b2_squared);
     const Work lo = std::max(std::abs(b1), b_norm - t2), hi = b_norm;
     const Work c[5] = {-b1 * b1 * t2 * t2, -2 * b1 * b1 * t2, (t2 - b_norm) * (t2 + b_norm), 2 * t2, 1};
@@ -245,6 +244,12 @@ template <class Real> bool tied_with_mirror(const Circle3<Real>& c, const LineRi
   return mirror_distance <= m.distance + tie_tolerance(std::max(scale, m.distance));
 }
 
+// The parameter on `line` of its `point` (relative to `center`): for a ray or segment, the piece's
+// own parametrization.
+template <class Real> Real line_param(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point) {
+  return (point - (line.origin - center)).dot(line.direction) / line.direction.squaredNorm();
+}
+
 // The closest points of a line's minimum over the ring (line_ring_minimum). `line` is the full
 // line through the piece (for a ray or a segment, the piece's own parametrization: t = param).
 template <class Real>
@@ -253,8 +258,7 @@ Result<Real> line_ring_result(const Line3<Real>& line, const Circle3<Real>& c, c
   r.distance = m.distance;
   r.point_a = c.center + m.line_point;
   r.point_b = c.center + m.ring_point;
-  const Real d2 = line.direction.squaredNorm();
-  r.param_a = Vec2<Real>((m.line_point - (line.origin - c.center)).dot(line.direction) / d2, 0);
+  r.param_a = Vec2<Real>(line_param(line, c.center, m.line_point), 0);
   const Frame<Real> frame(c.normal);
   r.param_b = Round<Real>::ring_param(frame.to_local(m.ring_point));
   // Another pair at the same distance within rounding: the whole ring (a line on the axis), the
@@ -281,12 +285,6 @@ template <class Real> PieceLine<Real> piece_line(const Ray3<Real>& r, Real) { re
 template <class Real> PieceLine<Real> piece_line(const Segment3<Real>& s, Real radius) {
   const Vec3<Real> d = s.p1 - s.p0;
   return {{s.p0, d}, d.squaredNorm() <= 4096 * radius * radius};
-}
-
-// The parameter on `line` of its `point` (relative to `center`): for a ray or segment, the piece's
-// own parametrization.
-template <class Real> Real line_param(const Line3<Real>& line, const Vec3<Real>& center, const Vec3<Real>& point) {
-  return (point - (line.origin - center)).dot(line.direction) / line.direction.squaredNorm();
 }
 
 // Where `point` (relative to `center`) of `line` lies against the piece: -1 before lo, 0 on

@@ -2,6 +2,7 @@
 // machinery shared by every linear-vs-round query (line_circle.hpp, line_disk.hpp).
 #pragma once
 
+#include "detail/double_double.hpp"
 #include "minimize.hpp"
 #include "planar.hpp"
 
@@ -52,9 +53,9 @@ template <class Real> struct ExactDifference {
   Vec3<Real> hi, lo;
   ExactDifference(const Vec3<Real>& x, const Vec3<Real>& y) {
     for (int i = 0; i < 3; ++i) {
-      hi[i] = x[i] - y[i];
-      const Real back = hi[i] - x[i];
-      lo[i] = (x[i] - (hi[i] - back)) - (y[i] + back);
+      const detail::DoubleDouble<Real> d = detail::DoubleDouble<Real>::two_sum(x[i], -y[i]);
+      hi[i] = d.hi;
+      lo[i] = d.lo;
     }
   }
 };

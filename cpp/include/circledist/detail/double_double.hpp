@@ -1,8 +1,9 @@
 // Double-double arithmetic: a value as an unevaluated sum hi + lo of two Reals, |lo| <= ulp(hi)/2,
 // about twice Real's precision (Dekker 1971; Shewchuk 1997 for the error-free transformations).
 // Used where a quantity is a small difference of large terms that plain arithmetic cannot hold:
-// a point of a Bezier curve 1e5 times larger than the round it passes, evaluated from control
-// points 1e5 radii away (bezier.hpp, PreciseLocalCurve).
+// the pieces of a Bezier curve 1e5 times larger than the round it passes, cut from control
+// points 1e5 radii away (bezier.hpp, PreciseBezier), and a line's origin far from a round's
+// center (linear.hpp, ExactDifference).
 #pragma once
 
 #include <cmath>
