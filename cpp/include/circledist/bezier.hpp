@@ -42,6 +42,13 @@ template <class Real> struct BezierCurve3 {
   }
 };
 
+// The order of same-kind queries (primitives.hpp): by degree, then control point by point.
+template <class Real> bool precedes(const BezierCurve3<Real>& x, const BezierCurve3<Real>& y) {
+  if (x.control.cols() != y.control.cols()) return x.control.cols() < y.control.cols();
+  return std::lexicographical_compare(x.control.data(), x.control.data() + x.control.size(), y.control.data(),
+                                      y.control.data() + y.control.size());
+}
+
 // As for the other primitives (primitives.hpp): the curve scaled by 2^e, its largest
 // coordinate, and the same curve in double.
 template <class Real> BezierCurve3<Real> scaled(const BezierCurve3<Real>& b, int e) {

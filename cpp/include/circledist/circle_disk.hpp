@@ -70,28 +70,46 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     const LocalCircle<Real> c(a, round);
     const Real scale = circle_round_scale(c, disk.radius);
     const Heights heights = height_candidates<Roots>(c, scale);
-    const CircleOverRound<Real> view(c, disk.radius);
+    const HeightVerdict early = height_verdict(c, disk.radius, scale, heights);
+    if (early.decided) return early.best;
+    // Otherwise the full solve, as closest() runs it: the ring's octic alone is not enough. For
+    // a circle 1e5 times larger than the disk its roots near the disk are a cluster 1e-5 wide
+    // that rounding blurs, and the minimum was missed (0.084 for 0.0138) where the rim crossings
+    // of the full solve start next to it.
+    return std::min(early.best, solve<Roots>(c, disk.radius, scale, heights).best.value);
+  }
+
+  // The closest pair of the full solve, reporting the distance distance() returns (the two never
+  // disagree: the best height candidate, unpolished, may lie an ulp above the polished minimum).
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Disk3<Real>& disk) {
+    const Round<Real> round(disk.center, disk.normal, disk.radius);
+    const LocalCircle<Real> c(a, round);
+    const Real scale = circle_round_scale(c, disk.radius);
+    const Heights heights = height_candidates<Roots>(c, scale);
+    const auto minima = solve<Roots>(c, disk.radius, scale, heights);
+    Result<Real> r = circle_round_result(
+        a, c, round, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
+        &Round<Real>::disk_param);
+    const HeightVerdict early = height_verdict(c, disk.radius, scale, heights);
+    r.distance = early.decided ? early.best : std::min(early.best, minima.best.value);
+    return r;
+  }
+
+ private:
+  // distance()'s shortcut: the best of the points over the disk where z = 0 or z' = 0, decided
+  // when it is as low as |z| gets anywhere on the circle.
+  struct HeightVerdict {
+    Real best;
+    bool decided;
+  };
+  static HeightVerdict height_verdict(const LocalCircle<Real>& c, Real radius, Real scale, const Heights& heights) {
+    const CircleOverRound<Real> view(c, radius);
     Real best = std::numeric_limits<Real>::infinity(), lowest = best;
     for (int i = 0; i < heights.count; ++i) {
       best = std::min(best, view.disk_distance(heights.value[i]));
       lowest = std::min(lowest, std::abs(c.at(heights.value[i]).z()));
     }
-    if (best <= lowest + tie_tolerance(scale)) return best;
-    // Otherwise the full solve, as closest() runs it: the ring's octic alone is not enough. For
-    // a circle 1e5 times larger than the disk its roots near the disk are a cluster 1e-5 wide
-    // that rounding blurs, and the minimum was missed (0.084 for 0.0138) where the rim crossings
-    // of the full solve start next to it.
-    return std::min(best, solve<Roots>(c, disk.radius, scale, heights).best.value);
-  }
-
-  template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Disk3<Real>& disk) {
-    const Round<Real> round(disk.center, disk.normal, disk.radius);
-    const LocalCircle<Real> c(a, round);
-    const Real scale = circle_round_scale(c, disk.radius);
-    const auto minima = solve<Roots>(c, disk.radius, scale);
-    return circle_round_result(
-        a, c, round, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
-        &Round<Real>::disk_param);
+    return {best, best <= lowest + tie_tolerance(scale)};
   }
 };
 

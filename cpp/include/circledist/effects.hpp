@@ -177,6 +177,9 @@ constexpr bool scalable_pair_v = scalable<core_t<A>>::value && scalable<core_t<B
 template <class Roots = DefaultRoots, class A, class B>
 scalar_t<core_t<A>> distance_if_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
   using Real = scalar_t<core_t<A>>;
+  if constexpr (detail::ordered_v<A, B>) {  // one order for shapes of one kind (query.hpp)
+    if (precedes(b, a)) return distance_if_within<Roots>(b, a, d);
+  }
   if constexpr (detail::promotable_pair_v<A, B>) {
     return Real(distance_if_within<Roots>(detail::promoted_shape(a), detail::promoted_shape(b), double(d)));
   } else {
@@ -193,6 +196,9 @@ scalar_t<core_t<A>> distance_if_within(const A& a, const B& b, scalar_t<core_t<A
 
 // distance(a, b) <= d + tol, deciding by bounds where they suffice.
 template <class Roots = DefaultRoots, class A, class B> bool within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+  if constexpr (detail::ordered_v<A, B>) {  // one order for shapes of one kind (query.hpp)
+    if (precedes(b, a)) return within<Roots>(b, a, d);
+  }
   if constexpr (detail::promotable_pair_v<A, B>) {
     return within<Roots>(detail::promoted_shape(a), detail::promoted_shape(b), double(d));
   } else {

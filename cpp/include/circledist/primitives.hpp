@@ -51,6 +51,36 @@ template <class Real> struct Segment3 {
   Vec3<Real> p0, p1;
 };
 
+// A strict order on the shapes of one kind, lexicographic on their numbers. A query between two
+// shapes of one kind is answered in this order whichever way it is asked (query.hpp), so that
+// distance(a, b) and distance(b, a) agree to the bit.
+template <class Real> bool precedes(const Vec3<Real>& x, const Vec3<Real>& y) {
+  return std::lexicographical_compare(x.data(), x.data() + 3, y.data(), y.data() + 3);
+}
+namespace detail {
+template <class Real> bool precedes_pair(const Vec3<Real>& x0, const Vec3<Real>& x1, const Vec3<Real>& y0,
+                                         const Vec3<Real>& y1) {
+  return precedes(x0, y0) || (!precedes(y0, x0) && precedes(x1, y1));
+}
+}  // namespace detail
+template <class Real> bool precedes(const Line3<Real>& x, const Line3<Real>& y) {
+  return detail::precedes_pair(x.origin, x.direction, y.origin, y.direction);
+}
+template <class Real> bool precedes(const Ray3<Real>& x, const Ray3<Real>& y) {
+  return detail::precedes_pair(x.origin, x.direction, y.origin, y.direction);
+}
+template <class Real> bool precedes(const Segment3<Real>& x, const Segment3<Real>& y) {
+  return detail::precedes_pair(x.p0, x.p1, y.p0, y.p1);
+}
+template <class Real> bool precedes(const Circle3<Real>& x, const Circle3<Real>& y) {
+  if (detail::precedes_pair(x.center, x.normal, y.center, y.normal)) return true;
+  return !detail::precedes_pair(y.center, y.normal, x.center, x.normal) && x.radius < y.radius;
+}
+template <class Real> bool precedes(const Disk3<Real>& x, const Disk3<Real>& y) {
+  if (detail::precedes_pair(x.center, x.normal, y.center, y.normal)) return true;
+  return !detail::precedes_pair(y.center, y.normal, x.center, x.normal) && x.radius < y.radius;
+}
+
 // What closest_points() returns. Parameters, per shape kind:
 //   point: (0, 0); line, ray, segment: (t, 0) as in the definitions above;
 //   circle: (theta, 0), the angle in the canonical frame (see Frame);

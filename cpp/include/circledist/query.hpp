@@ -37,6 +37,14 @@ template <class Roots, class A, class B> auto direct_closest_points(const A& a, 
   }
 }
 
+// Two shapes of one kind, which the front end answers in the order `precedes` gives
+// (primitives.hpp): both argument orders then agree to the bit.
+template <class A, class B, class = void> struct ordered : std::false_type {};
+template <class A>
+struct ordered<A, A, std::void_t<decltype(precedes(std::declval<const A&>(), std::declval<const A&>()))>>
+    : std::true_type {};
+template <class A, class B> constexpr bool ordered_v = ordered<A, B>::value;
+
 // Shapes the front end can promote to double (float primitives) and scale (every primitive):
 // found by argument-dependent lookup where the shape is defined (primitives.hpp, bezier.hpp).
 template <class A, class = void> struct promotable : std::false_type {};
@@ -105,25 +113,45 @@ template <class Roots, class A, class B> auto ranged_closest_points(const A& a, 
 
 }  // namespace detail
 
-// The distance only: no closest points are built. float shapes are solved in double and the
-// answer rounded (primitives.hpp, promoted()).
+namespace detail {
+
+// The front end's own steps: float shapes are solved in double and the answer rounded
+// (primitives.hpp, promoted()); scenes out of the moderate range are scaled.
+template <class Roots, class A, class B> CIRCLEDIST_INLINE auto promoted_distance(const A& a, const B& b) {
+  if constexpr (promotable<A>::value && promotable<B>::value) {
+    return float(ranged_distance<Roots>(promoted(a), promoted(b)));
+  } else {
+    return ranged_distance<Roots>(a, b);
+  }
+}
+
+template <class Roots, class A, class B> auto promoted_closest_points(const A& a, const B& b) {
+  if constexpr (promotable<A>::value && promotable<B>::value) {
+    return ranged_closest_points<Roots>(promoted(a), promoted(b)).template cast<float>();
+  } else {
+    return ranged_closest_points<Roots>(a, b);
+  }
+}
+
+}  // namespace detail
+
+// The distance only: no closest points are built. Two shapes of one kind are answered in one
+// order whichever way they are given (detail::ordered_v).
 template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto distance(const A& a, const B& b) {
   static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
-  if constexpr (detail::promotable<A>::value && detail::promotable<B>::value) {
-    return float(detail::ranged_distance<Roots>(promoted(a), promoted(b)));
-  } else {
-    return detail::ranged_distance<Roots>(a, b);
+  if constexpr (detail::ordered_v<A, B>) {
+    if (precedes(b, a)) return detail::promoted_distance<Roots>(b, a);
   }
+  return detail::promoted_distance<Roots>(a, b);
 }
 
 // Distance, closest points on a and b, their parameters and the `unique` flag.
 template <class Roots = DefaultRoots, class A, class B> auto closest_points(const A& a, const B& b) {
   static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
-  if constexpr (detail::promotable<A>::value && detail::promotable<B>::value) {
-    return detail::ranged_closest_points<Roots>(promoted(a), promoted(b)).template cast<float>();
-  } else {
-    return detail::ranged_closest_points<Roots>(a, b);
+  if constexpr (detail::ordered_v<A, B>) {
+    if (precedes(b, a)) return detail::promoted_closest_points<Roots>(b, a).swapped();
   }
+  return detail::promoted_closest_points<Roots>(a, b);
 }
 
 }  // namespace circledist

@@ -51,6 +51,11 @@ template <class S> Swept<S> swept(const S& shape, scalar_t<S> sweep) { return Sw
 
 template <class S> Swept<S> swept(const Swept<S>& s, scalar_t<S> more) { return Swept<S>{s.shape, s.sweep + more}; }
 
+// The order of same-kind queries (primitives.hpp): by the shape, then by the sweep.
+template <class S> bool precedes(const Swept<S>& x, const Swept<S>& y) {
+  return precedes(x.shape, y.shape) || (!precedes(y.shape, x.shape) && x.sweep < y.sweep);
+}
+
 template <class T> struct is_swept : std::false_type {};
 template <class S> struct is_swept<Swept<S>> : std::true_type {};
 template <class T> constexpr bool is_swept_v = is_swept<T>::value;
@@ -71,7 +76,8 @@ template <class S> scalar_t<S> sweep_of(const Swept<S>& s) { return s.sweep; }
 
 // max(0, d - ra - rb), with a NaN core distance passed on.
 template <class Real> Real swept_distance(Real d, Real ra, Real rb) {
-  const Real gap = (d - ra) - rb;
+  // The larger radius first: as accurate as either order, and the same whichever shape is a.
+  const Real gap = (d - std::max(ra, rb)) - std::min(ra, rb);
   return gap > 0 || gap != gap ? gap : Real(0);
 }
 

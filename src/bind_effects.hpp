@@ -1,7 +1,7 @@
 // Python bindings of the requested effects (cpp/include/circledist/effects.hpp): intersects,
 // within, distance_if_within over broadcast batches, and the work counters. Every pair goes
 // through the one PairOf template (pairs.hpp), like distance and closest_points.
-// Included by _core.cpp after its helpers (pairs(), lookup(), Argument, precision/solver names).
+// Included by _core.cpp after its helpers (pairs(), run_within()).
 #pragma once
 
 #include "pairs.hpp"
@@ -13,12 +13,6 @@ namespace {
 // The limits d of within(), a batch of scalars >= 0 broadcast with both shapes.
 Shape limit_shape(const char* owner, py::handle d) {
   return Shape(kPoint, {make_field(owner, "d", d, 1, Check::NonNegative)});
-}
-
-py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
-                      const py::object& solver) {
-  const Argument x(a), y(b);
-  return lookup(&PairTable::within, *x.shape, *y.shape, precision, solver)(*x.shape, *y.shape, limit, want_distance);
 }
 
 py::dict stats_dict() {

@@ -1,5 +1,6 @@
 // The compiled part of circledist: shape classes, and distance / closest_points over every
 // registered pair of kinds. Thin by design: the math lives in cpp/include/circledist.
+#include "float32.hpp"
 #include "pairs.hpp"
 
 namespace py = pybind11;
@@ -15,9 +16,9 @@ template <int K> struct ShapeOf : Shape {
 const PairTables& pairs() {
   static const PairTables tables = [] {
     PairTables t;
-    register_float(t);
-    register_double(t);
-    register_long_double(t);
+#define CIRCLEDIST_REGISTER_PAIR_UNIT(REAL, ROOTS) register_pairs<REAL, ROOTS>(t);
+    CIRCLEDIST_PAIR_UNITS(CIRCLEDIST_REGISTER_PAIR_UNIT)
+#undef CIRCLEDIST_REGISTER_PAIR_UNIT
     return t;
   }();
   return tables;
@@ -71,15 +72,52 @@ struct Argument {
   }
 };
 
+// A query's precision and solver, resolved from the call's arguments.
+struct Choice {
+  int precision, solver;
+  Choice(const py::object& precision_name, const py::object& solver_name, const Shape& a, const Shape& b)
+      : precision(precision_of(precision_name, a, b)), solver(solver_of(solver_name)) {}
+  bool single() const { return precision == kFloat; }
+};
+
+// The entry of a pair: float32 runs the double one (float32.hpp).
 template <class Fn>
-Fn lookup(Fn const (PairTable::*table)[kKindCount][kKindCount], const Shape& a, const Shape& b, const py::object& precision,
-          const py::object& solver) {
-  const PairTable& t = pairs().table[precision_of(precision, a, b)][solver_of(solver)];
+Fn lookup(Fn const (PairTable::*table)[kKindCount][kKindCount], const Shape& a, const Shape& b, const Choice& c) {
+  const PairTable& t = pairs().table[c.single() ? kDouble : c.precision][c.solver];
   Fn fn = (t.*table)[a.kind][b.kind];
   if (!fn)
     throw py::type_error(std::string("circledist has no query between a ") + kind_name(a.kind) + " and a " +
                          kind_name(b.kind));
   return fn;
+}
+
+py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver) {
+  const Argument x(a), y(b);
+  const Choice c(precision, solver, *x.shape, *y.shape);
+  const DistanceFn fn = lookup(&PairTable::distance, *x.shape, *y.shape, c);
+  if (!c.single()) return fn(*x.shape, *y.shape);
+  return to_float32(fn(rounded_to_float(*x.shape), rounded_to_float(*y.shape)), "distance", "the distance", 1);
+}
+
+ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver) {
+  const Argument x(a), y(b);
+  const Choice c(precision, solver, *x.shape, *y.shape);
+  const ClosestFn fn = lookup(&PairTable::closest, *x.shape, *y.shape, c);
+  if (!c.single()) return fn(*x.shape, *y.shape);
+  return to_float32(fn(rounded_to_float(*x.shape), rounded_to_float(*y.shape)));
+}
+
+// within() (a bool per element) or, with `want_distance`, distance_if_within() (the distance,
+// inf beyond the limit d), over the broadcast of a, b and `limit`.
+py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
+                      const py::object& solver) {
+  const Argument x(a), y(b);
+  const Choice c(precision, solver, *x.shape, *y.shape);
+  const WithinFn fn = lookup(&PairTable::within, *x.shape, *y.shape, c);
+  if (!c.single()) return fn(*x.shape, *y.shape, limit, want_distance);
+  const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
+  const Shape fd(limit.kind, {rounded_to_float("within", limit.fields[0])});
+  return to_float32(fn(fa, fb, fd, want_distance), "distance_if_within", "the distance", 1, false);
 }
 
 py::tuple batch_tuple(py::handle self) {
@@ -156,16 +194,14 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "distance",
       [](py::handle a, py::handle b, py::object precision, py::object solver) {
-        const Argument x(a), y(b);
-        return lookup(&PairTable::distance, *x.shape, *y.shape, precision, solver)(*x.shape, *y.shape);
+        return run_distance(a, b, precision, solver);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
       "Distance between a and b: a float for two single shapes, an array of the broadcast batch shape otherwise.");
   m.def(
       "closest_points",
       [](py::handle a, py::handle b, py::object precision, py::object solver) {
-        const Argument x(a), y(b);
-        return lookup(&PairTable::closest, *x.shape, *y.shape, precision, solver)(*x.shape, *y.shape);
+        return run_closest(a, b, precision, solver);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(), "Distance, closest points on a and b, their parameters and the unique flag.");
 
