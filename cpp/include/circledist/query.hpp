@@ -38,10 +38,14 @@ template <class Roots, class A, class B> auto direct_closest_points(const A& a, 
 }
 
 // Two shapes of one kind, which the front end answers in the order `precedes` gives
-// (primitives.hpp): both argument orders then agree to the bit.
+// (primitives.hpp): both argument orders then agree to the bit. Two points need no order:
+// |a - b| is the same number computed either way round.
+template <class A> struct needs_order : std::true_type {};
+template <class Real> struct needs_order<Vec3<Real>> : std::false_type {};
 template <class A, class B, class = void> struct ordered : std::false_type {};
 template <class A>
-struct ordered<A, A, std::void_t<decltype(precedes(std::declval<const A&>(), std::declval<const A&>()))>>
+struct ordered<A, A, std::enable_if_t<needs_order<A>::value,
+                                      std::void_t<decltype(precedes(std::declval<const A&>(), std::declval<const A&>()))>>>
     : std::true_type {};
 template <class A, class B> constexpr bool ordered_v = ordered<A, B>::value;
 
