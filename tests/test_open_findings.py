@@ -79,18 +79,3 @@ TANGENT = (cd.Circle([-1.0, -0.5, -0.25], [0.0, 0.0, 0.25], 1.5),
 @pytest.mark.xfail(strict=True, reason="issue 14: internally tangent coplanar rings, bracketing in long double")
 def test_internally_tangent_rings_long_double():
     _check(*TANGENT[:2], "bracketing", "longdouble", *TANGENT[2:])
-
-
-# A straight far-reaching curve (degree 1, control points 2e4 away) passing a ring: long double
-# answers to double's accuracy (5.9e-13 off), as if the far pieces were cut in double.
-FAR_LINEAR_BEZIER = (
-    cd.Bezier(np.array([[-7368.294710182142, 18594.025607135212, 12799.26449390628],
-                        [6887.627156622108, -17377.097254714514, -11960.388731637753]])),
-    cd.Circle([1.5206618395599336, -1.792796825287908, -0.6143671334034062],
-              [-0.5078534011677034, 0.1960660034195697, 0.13630414481520362], 0.7799682209376687),
-    0.5345388680515343, 0.7799682209376687)
-
-
-@pytest.mark.xfail(strict=True, reason="issue 14: far-reaching Bezier in long double keeps double's accuracy")
-def test_far_reaching_bezier_long_double():
-    _check(*FAR_LINEAR_BEZIER[:2], "companion", "longdouble", *FAR_LINEAR_BEZIER[2:])

@@ -376,3 +376,28 @@ def test_disks_coplanar_within_rounding_points_on_both(solver):
         r = cd.closest_points(x, y, solver=solver)
         assert abs(r.distance - float(height)) <= 1e-12 * a[6]
         assert off_disk(r.point_a, dx) <= 8 * EPS * 2 and off_disk(r.point_b, dy) <= 8 * EPS * 2
+
+
+# The long differential run reported a far-reaching degree-1 curve passing a ring as answered to
+# double's accuracy in long double (5.9e-13 above its reference). The reference was the one
+# wrong: the distance along the curve has two local minima 2.5e-5 apart in t whose values differ
+# by 5.9e-13, and the reference refined the higher one. Both minima, found by a dense scan of
+# t (4e6 points around the closest approach of a 2e6-point scan of [0, 1]) and refined in
+# 50-digit mpmath: 0.5345388680515342338549768 at t = 0.51695282638890 and
+# 0.5345388680509443148992182 at t = 0.51697755578901, the global one.
+FAR_CURVE_CONTROL = np.array([[-7368.294710182142, 18594.025607135212, 12799.26449390628],
+                              [6887.627156622108, -17377.097254714514, -11960.388731637753]])
+FAR_CURVE_RING = ([1.5206618395599336, -1.792796825287908, -0.6143671334034062],
+                  [-0.5078534011677034, 0.1960660034195697, 0.13630414481520362], 0.7799682209376687)
+FAR_CURVE_DISTANCE = mpf("0.5345388680509443148992182")
+
+
+@pytest.mark.parametrize("precision, bar", [("float64", 1e-12), ("longdouble", 1e-15)])
+@pytest.mark.parametrize("kind", ["Bezier", "Segment"])
+def test_far_curve_near_tied_minima(cd, kind, precision, bar):
+    shape = cd.Bezier(FAR_CURVE_CONTROL) if kind == "Bezier" else cd.Segment(*FAR_CURVE_CONTROL)
+    ring = cd.Circle(*FAR_CURVE_RING)
+    for solver in ("companion", "polished", "bracketing", "eigen"):
+        for got in (cd.distance(shape, ring, precision=precision, solver=solver),
+                    cd.closest_points(ring, shape, precision=precision, solver=solver).distance):
+            assert abs(mpf(str(got)) - FAR_CURVE_DISTANCE) <= bar * FAR_CURVE_RING[2], (solver, got)
