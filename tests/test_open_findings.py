@@ -30,23 +30,6 @@ def _check(a, b, solver, precision, reference, radius):
         assert abs(got - reference) <= _bar(precision, reference, radius), (got, reference)
 
 
-# Two rings of equal radius whose centers differ by 1e-14 and whose planes are tilted: they cross
-# at two points (distance ~1e-14). The raw eigenvalue policies (companion, eigen) answer 0.505,
-# the size of the rings; polished and bracketing are right.
-NEAR_CONCENTRIC = (
-    cd.Circle([-0.6647478320178631, -0.1478456243803689, 0.5419060141101574],
-              [1.2516289029374994, 1.918050346932966, -2.020965388079425], 0.39345072874537984),
-    cd.Circle([-0.6647478320178529, -0.14784562438033882, 0.5419060141101185],
-              [0.09078177042049894, 2.543035662455498, 1.689532903938856], 0.39345072874537984),
-    1.0925491132860966e-14, 0.39345072874537984)
-
-
-@pytest.mark.xfail(strict=True, reason="issue 14: near-concentric crossing rings, raw eigenvalue policies")
-@pytest.mark.parametrize("solver", ["companion", "eigen"])
-def test_near_concentric_crossing_rings(solver):
-    _check(*NEAR_CONCENTRIC[:2], solver, "float64", *NEAR_CONCENTRIC[2:])
-
-
 # A degree-6 Bezier curve whose middle control point is the ring's center: the companion policy
 # answers 0.1713 for 0.1601 (in float32 and float64).
 _BEZIER = np.array([[-0.7396453022956848, -0.739128053188324, -1.4231096506118774],

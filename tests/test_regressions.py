@@ -401,3 +401,26 @@ def test_far_curve_near_tied_minima(cd, kind, precision, bar):
         for got in (cd.distance(shape, ring, precision=precision, solver=solver),
                     cd.closest_points(ring, shape, precision=precision, solver=solver).distance):
             assert abs(mpf(str(got)) - FAR_CURVE_DISTANCE) <= bar * FAR_CURVE_RING[2], (solver, got)
+
+
+# Two rings of equal radius whose centers differ by 1e-14 and whose planes are tilted cross at two
+# points. The raw eigenvalue policies answered 0.505 (the rings' size): the octic's roots were too
+# far off to lead the polish there; the points where one ring crosses the other's plane are now
+# starts too. Reference: 50-digit mpmath minimization over the angle (the long differential
+# run, docs/differential_report.md), 1.0925491132860966e-14.
+NEAR_CONCENTRIC_RINGS = (
+    ([-0.6647478320178631, -0.1478456243803689, 0.5419060141101574],
+     [1.2516289029374994, 1.918050346932966, -2.020965388079425], 0.39345072874537984),
+    ([-0.6647478320178529, -0.14784562438033882, 0.5419060141101185],
+     [0.09078177042049894, 2.543035662455498, 1.689532903938856], 0.39345072874537984))
+
+
+@pytest.mark.parametrize("solver", ["companion", "polished", "bracketing", "eigen"])
+@pytest.mark.parametrize("precision, bar", [("float64", 1e-12), ("longdouble", 1e-15)])
+def test_near_concentric_crossing_rings(cd, solver, precision, bar):
+    a, b = (cd.Circle(*x) for x in NEAR_CONCENTRIC_RINGS)
+    reference, radius = 1.0925491132860966e-14, NEAR_CONCENTRIC_RINGS[0][2]
+    for x, y in ((a, b), (b, a)):
+        got = float(cd.distance(x, y, solver=solver, precision=precision))
+        assert abs(got - reference) <= bar * radius, (got, reference)
+        assert cd.within(x, y, 2 * reference, solver=solver, precision=precision)

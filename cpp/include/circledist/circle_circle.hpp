@@ -691,6 +691,13 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     const auto squared = [&](const Vec3<Real>& p) { return ring_distance_squared(p, radius); };
     const SampledDistances<Real> samples = sampled_distances(c, squared);
     push_circle_ring_roots<Roots>(view, scale, std::min(bound, samples.best), starts);
+    // Where the circle crosses the ring's plane (z = 0, the height roots of circle_disk.hpp):
+    // rings that cross lie there. For rings of equal radius whose centers are 1e-14 apart, the
+    // octic is so ill-conditioned that the eigenvalue policies' roots led the polish to 0.505
+    // for a distance of 1e-14 (tests/test_regressions.py, near-concentric crossing rings).
+    // Policies that refine every root to rounding find them from the octic (and skip these
+    // starts' cost: 18 % of a circle-circle query).
+    if constexpr (!has_accurate_roots<Roots>::value) push_trig_roots<Roots>(c.coordinate(2, scale), starts);
     // Nearly coincident circles (every sample within 1e-3 scale of the ring): the distance is a
     // trigonometric function of low degree in t with few, wide minima; the eight sample angles,
     // polished on the exact distance, reach them too, whatever the roots policy makes of the
