@@ -24,8 +24,9 @@ namespace circledist::python {
 #define CIRCLEDIST_GLUE
 #endif
 // CIRCLEDIST_GLUE: the Python-facing steps shared by every pair (building arrays and results,
-// broadcasting) stay out of line, compiled once per unit rather than once per pair and entry
-// point (most of the build's time went there).
+// broadcasting) stay out of line, one copy per unit instead of one per pair and entry point.
+// (Measured: this alone changed neither a unit's compile time nor its size by more than 2 %;
+// the time is in the queries themselves.)
 
 constexpr int kMaxFields = 12;  // two shapes of up to 5 fields (with the sweep), and a limit
 
@@ -158,7 +159,7 @@ template <class T> CIRCLEDIST_GLUE py::array_t<T> new_array(const BatchShape& ba
   return py::array_t<T>(shape);
 }
 
-// A single result: a Python float in float and double, a NumPy long double otherwise.
+// A single result: a Python float in double, a NumPy long double in long double.
 template <class Real> CIRCLEDIST_GLUE py::object scalar(Real value) {
   if constexpr (std::is_same_v<Real, long double>) {
     auto out = new_array<long double>({}, 0);
@@ -222,17 +223,15 @@ template <class Real> struct ClosestArrays {
   }
 };
 
-// The values a query of precision Real reads: float64 for double, long double for long double.
-// (float32 queries are double queries on inputs rounded to float32: see float32.hpp.)
-template <class Real> using Storage = Real;
-
 // Evaluation of one pair of C++ primitive types (of scalar Real: double or long double) with one
 // root policy. The other argument order runs the same code with `reversed` set: the shapes come
 // in as (A, B) and the answers go out in the caller's order, so one instantiation serves both
 // orders and the two orders agree to the bit by construction (circledist::distance(b, a) calls
 // the (A, B) query too, query.hpp).
 template <class Roots, class A, class B, class Real> struct PairOf {
-  using T = Storage<Real>;
+  // The values an element reads: float64 for double, long double for long double (float32
+  // queries are double queries on inputs rounded to float32: float32.hpp).
+  using T = Real;
   using Broadcast = circledist::python::Broadcast<T>;
   // Fields of both shapes, each with its sweep (within() adds the limit after them).
   static constexpr int kFields =

@@ -72,13 +72,18 @@ template <class Real> bool precedes(const Ray3<Real>& x, const Ray3<Real>& y) {
 template <class Real> bool precedes(const Segment3<Real>& x, const Segment3<Real>& y) {
   return detail::precedes_pair(x.p0, x.p1, y.p0, y.p1);
 }
+namespace detail {
+// Circles and disks: center, then normal, then radius.
+template <class Round> bool precedes_round(const Round& x, const Round& y) {
+  if (precedes_pair(x.center, x.normal, y.center, y.normal)) return true;
+  return !precedes_pair(y.center, y.normal, x.center, x.normal) && x.radius < y.radius;
+}
+}  // namespace detail
 template <class Real> bool precedes(const Circle3<Real>& x, const Circle3<Real>& y) {
-  if (detail::precedes_pair(x.center, x.normal, y.center, y.normal)) return true;
-  return !detail::precedes_pair(y.center, y.normal, x.center, x.normal) && x.radius < y.radius;
+  return detail::precedes_round(x, y);
 }
 template <class Real> bool precedes(const Disk3<Real>& x, const Disk3<Real>& y) {
-  if (detail::precedes_pair(x.center, x.normal, y.center, y.normal)) return true;
-  return !detail::precedes_pair(y.center, y.normal, x.center, x.normal) && x.radius < y.radius;
+  return detail::precedes_round(x, y);
 }
 
 // What closest_points() returns. Parameters, per shape kind:
