@@ -51,14 +51,3 @@ CONCENTRIC_BEZIER = (
 @pytest.mark.parametrize("precision", ["float32", "float64"])
 def test_bezier_through_the_center_companion(precision):
     _check(*CONCENTRIC_BEZIER[:2], "companion", precision, *CONCENTRIC_BEZIER[2:])
-
-
-# Coplanar rings, internally tangent (radii 1.5 and 0.5, centers 1 + 2.9e-15 apart): the
-# bracketing policy in long double answers 2.4e-15 for ~0 (1.6e-15 of the radius).
-TANGENT = (cd.Circle([-1.0, -0.5, -0.25], [0.0, 0.0, 0.25], 1.5),
-           cd.Circle([2.886579864025407e-15, -0.5, -0.25], [0.0, 0.0, 0.25], 0.5), 0.0, 1.5)
-
-
-@pytest.mark.xfail(strict=True, reason="issue 14: internally tangent coplanar rings, bracketing in long double")
-def test_internally_tangent_rings_long_double():
-    _check(*TANGENT[:2], "bracketing", "longdouble", *TANGENT[2:])

@@ -424,3 +424,65 @@ def test_near_concentric_crossing_rings(cd, solver, precision, bar):
         got = float(cd.distance(x, y, solver=solver, precision=precision))
         assert abs(got - reference) <= bar * radius, (got, reference)
         assert cd.within(x, y, 2 * reference, solver=solver, precision=precision)
+
+
+# Coplanar rings that cross by a few ulps next to a tangency (internal or external), and a ring
+# crossing a coplanar disk's rim the same way. The distance along the parametrized ring is a W:
+# zeros about sqrt(overlap) rad either side of a bump as high as the overlap. The octic's roots
+# there are lost to rounding (its values near the cluster are ~overlap^(3/2), below eps); in long
+# double, bracketing answered 2.4e-15 for 0 (radii 1.5 and 0.5, overlap 13 ulps): the polish
+# started on the bump's flank, where the squared distance is concave, and Brent's parabolas kept
+# the bump (the long differential run). Newton's fallback now walks downhill first
+# (minimize.hpp, downhill_bracket). Reference: the in-plane geometry in 50-digit mpmath: rings at
+# center distance d are min(|d - (Ra + Rb)|, ...) apart, 0 when |Ra - Rb| <= d <= Ra + Rb; a ring
+# and a disk 0 when |d - Ra| <= Rb, else |d - Ra| - Rb. Not from circledist.
+def _coplanar_round_cases():
+    rng = np.random.default_rng(14)
+    cases = []
+    # The finding itself and its neighbours (overlaps of 1 to 40 ulps of the center distance).
+    for k in range(1, 41):
+        cases.append(("circle", [-1.0, -0.5, -0.25], [k * EPS, -0.5, -0.25], [0.0, 0.0, 0.25], 1.5, 0.5))
+    for i in range(48):
+        axis = np.zeros(3)
+        axis[i % 3] = (0.25, 1.0, -3.0)[i % 3]
+        angle = rng.uniform(0, 2 * np.pi) if i % 4 else (i // 4 % 8) * np.pi / 4
+        u = np.zeros(3)
+        u[(i + 1) % 3], u[(i + 2) % 3] = np.cos(angle), np.sin(angle)
+        ra = float(rng.choice([1.5, 1.0, rng.uniform(0.5, 2.0)]))
+        rb = float(ra * rng.choice([1 / 3, rng.uniform(0.05, 0.95)]))
+        center = rng.integers(-2, 3, size=3) * 0.25
+        kind = "circle" if i % 3 else "disk"
+        for precision_eps in (EPS, np.finfo(np.longdouble).eps):
+            overlap = float(rng.integers(1, 300) * precision_eps)
+            external = i % 2 == 0
+            d = (ra + rb - overlap) if external else (ra - rb + overlap)
+            if kind == "disk":  # the ring of radius ra crossing the rim of the disk of radius rb
+                d = (ra + rb - overlap) if external else (ra - rb - overlap)
+            cases.append((kind, list(center), list(center + d * u), list(axis), ra, rb))
+    return cases
+
+
+def _coplanar_round_reference(kind, ca, cb, ra, rb):
+    d = mp.sqrt(sum((mpf(x) - mpf(y)) ** 2 for x, y in zip(ca, cb)))
+    ra, rb = mpf(ra), mpf(rb)
+    if kind == "disk":
+        return max(mpf(0), abs(d - ra) - rb)
+    return max(mpf(0), d - ra - rb, abs(ra - rb) - d)
+
+
+@pytest.mark.parametrize("precision", sorted(BARS))
+def test_coplanar_rings_crossing_near_tangency(cd, precision):
+    mp.dps = 50
+    failures = []
+    for kind, ca, cb, axis, ra, rb in _coplanar_round_cases():
+        ring = cd.Circle(ca, axis, ra)
+        other = getattr(cd, kind.capitalize())(cb, axis, rb)
+        truth = _coplanar_round_reference(kind, ca, cb, ra, rb)
+        bar = BARS[precision] * max(float(truth), ra, rb)
+        for solver in SOLVERS:
+            for x, y in ((ring, other), (other, ring)):
+                for got in (cd.distance(x, y, solver=solver, precision=precision),
+                            cd.closest_points(x, y, solver=solver, precision=precision).distance):
+                    if not abs(mpf(str(got)) - truth) <= bar:
+                        failures.append((kind, ca, cb, axis, ra, rb, solver, str(got), float(truth)))
+    assert not failures, failures[:5]

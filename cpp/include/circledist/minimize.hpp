@@ -113,6 +113,36 @@ template <class Real> struct Jet {
   Real value, slope, curvature;
 };
 
+// On a concave stretch of the squared distance g whose features are far narrower than the
+// bracket [a, b] (two rings crossing 1e-7 rad either side of a bump of height 1e-15, the octic's
+// roots there lost to rounding), Brent's parabolas through the bump keep it as the best point
+// and it stalls there. Walking downhill first finds the valley: steps in `direction` from m.x,
+// the first g / |g'| long (where g would reach 0 at its present slope), doubled while the
+// distance keeps falling. When it fell at least once, m is the lowest point and [a, b] the
+// bracket of its two neighbours on the walk, for Brent to finish; otherwise nothing changes (a
+// kink, or a slope of rounding noise: the whole bracket is Brent's). Stays within [a, b].
+template <class Real, class F>
+void downhill_bracket(const F& distance, Real step, int direction, Real& a, Real& b, Minimum<Real>& m) {
+  const Real start = m.x, end = direction > 0 ? b : a;
+  Real behind = m.x, ahead = end;
+  for (int k = 0; k < 64 && step > 0; ++k, step *= 2) {
+    Real next = m.x + direction * step;
+    if (direction > 0 ? !(next < end) : !(next > end)) next = end;
+    if (next == m.x) break;
+    const Real value = distance(next);
+    if (!(value < m.value)) {
+      ahead = next;
+      break;
+    }
+    behind = m.x;
+    m = {next, value};
+    if (next == end) break;
+  }
+  if (m.x == start) return;
+  a = std::min(behind, ahead);
+  b = std::max(behind, ahead);
+}
+
 // Newton steps on the exact squared distance g from x0 (g' = 0 with g'' > 0), each one kept only
 // if g decreases; `distance(x)` is the exact distance. Falls back to the bracketed search when a
 // step fails (a kink, a concave region) before it has converged. Never returns a worse point
@@ -159,7 +189,9 @@ Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width
   // Newton could not continue: a concave stretch (an extraneous root of the squared equation,
   // a local maximum) or a kink. A short bracketed search settles it without widening.
   Minimum<Real> m{x, distance(x)};
-  const Real a = std::max(lo, x - width), b = std::min(hi, x + width);
+  Real a = std::max(lo, x - width), b = std::min(hi, x + width);
+  if (g.slope != 0 && g.value > 0 && std::isfinite(g.value) && std::isfinite(g.slope))
+    downhill_bracket(distance, g.value / std::abs(g.slope), g.slope < 0 ? 1 : -1, a, b, m);
   if (b > a) m.x = brent_minimize(distance, a, b, m.x, m.value, abs_tol);
   return m;
 }
