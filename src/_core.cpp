@@ -73,10 +73,14 @@ struct Argument {
 };
 
 // A query's precision and solver, resolved from the call's arguments.
+// While it lives, the calling thread's SelectedEigenPolicy runs the chosen eigenvalue policy.
 struct Choice {
   int precision, solver;
+  SelectedEigenPolicy::Use eigen_policy;
   Choice(const py::object& precision_name, const py::object& solver_name, const Shape& a, const Shape& b)
-      : precision(precision_of(precision_name, a, b)), solver(solver_of(solver_name)) {}
+      : precision(precision_of(precision_name, a, b)),
+        solver(solver_of(solver_name)),
+        eigen_policy(selected_eigen_policy(solver)) {}
   bool single() const { return precision == kFloat; }
 };
 
@@ -163,6 +167,7 @@ std::string repr(py::handle self) {
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points";
+  m.attr("__version__") = CIRCLEDIST_VERSION;  // CMakeLists.txt's project() version
 
   py::class_<Shape> shape(m, "Shape", "Base class of every shape: a single shape or a batch of them.");
   shape.def_property_readonly("batch_shape", &batch_tuple, "Leading batch dimensions; () for a single shape.")

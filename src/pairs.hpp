@@ -428,18 +428,32 @@ template <class Real, class Visitor> void for_each_pair(Visitor&& v) {
 // Every pair of one precision and root policy: one translation unit each (pair_unit.cpp, built
 // once per precision and policy by CMakeLists.txt), so that both cores stay busy. Counted<>:
 // every polynomial solve is counted in circledist::stats() (effects.hpp).
+// The three eigenvalue policies are one unit, SelectedEigenPolicy (roots.hpp), whose entries fill
+// the three solvers' tables; the query's Choice (_core.cpp) selects among them for the call.
 template <class Real, class Roots> void register_pairs(PairTables& t) {
   constexpr int precision = std::is_same_v<Real, long double> ? kLongDouble : kDouble;
-  for_each_pair<Real>(PairRegistrar<Counted<Roots>, Real>{t.table[precision][solver_index<Roots>()]});
+  if constexpr (std::is_same_v<Roots, SelectedEigenPolicy>) {
+    for (const int solver : {kCompanion, kPolished, kEigen})
+      for_each_pair<Real>(PairRegistrar<Counted<Roots>, Real>{t.table[precision][solver]});
+  } else {
+    for_each_pair<Real>(PairRegistrar<Counted<Roots>, Real>{t.table[precision][solver_index<Roots>()]});
+  }
+}
+
+// What SelectedEigenPolicy runs for a table's solver (the default policy has a unit of its own).
+inline SelectedEigenPolicy::Which selected_eigen_policy(int solver) {
+  if (solver == kPolished) return SelectedEigenPolicy::Which::Polished;
+  if (solver == kEigen) return SelectedEigenPolicy::Which::PolynomialSolver;
+  return SelectedEigenPolicy::Which::Companion;
 }
 
 // The units, listed once: X(Real, Roots) for each precision and policy. Each is compiled by
 // pair_unit.cpp alone (CMakeLists.txt builds it once per entry, with the same list); the module
-// sees the declarations only, and registers each unit once.
+// sees the declarations only, and registers each unit once. The default policy, Bracketing, has
+// its own unit, so its path pays no switch.
 #define CIRCLEDIST_PAIR_UNITS(X)                                                        \
-  X(double, EigenCompanion) X(double, EigenPolished) X(double, Bracketing)              \
-  X(double, EigenPolynomialSolver) X(long double, EigenCompanion)                       \
-  X(long double, EigenPolished) X(long double, Bracketing) X(long double, EigenPolynomialSolver)
+  X(double, Bracketing) X(double, SelectedEigenPolicy)                                  \
+  X(long double, Bracketing) X(long double, SelectedEigenPolicy)
 #define CIRCLEDIST_DECLARE_PAIR_UNIT(REAL, ROOTS) extern template void register_pairs<REAL, ROOTS>(PairTables&);
 CIRCLEDIST_PAIR_UNITS(CIRCLEDIST_DECLARE_PAIR_UNIT)
 #undef CIRCLEDIST_DECLARE_PAIR_UNIT

@@ -948,8 +948,40 @@ template <class P, class Real> void run_policy(const Sets<Real>& sets) {
   degenerate<P, Real>();
 }
 
+// SelectedEigenPolicy (the Python module's one unit for the three eigenvalue policies) is the
+// chosen policy to the bit: the same candidates, the same bracketed roots, the same polish.
+template <class Fixed, class Real> void selected_matches(SelectedEigenPolicy::Which which, const Sets<Real>& sets) {
+  const SelectedEigenPolicy::Use use(which);
+  CHECK(SelectedEigenPolicy::polish() == Fixed::polish());
+  for (const auto* set : {&sets.simple, &sets.multiple, &sets.clusters, &sets.leads, &sets.ranges}) {
+    for (const Problem<Real>& problem : *set) {
+      const int degree = int(problem.c.size()) - 1;
+      const Real inf = std::numeric_limits<Real>::infinity();
+      Candidates<Real> fixed, selected, counted;
+      Fixed::roots(problem.c.data(), degree, -inf, inf, fixed);
+      SelectedEigenPolicy::roots(problem.c.data(), degree, -inf, inf, selected);
+      const SolveCount<Counted<SelectedEigenPolicy>> solves;
+      Counted<SelectedEigenPolicy>::roots(problem.c.data(), degree, -inf, inf, counted);
+      solves.check();
+      bool same = fixed.count == selected.count && fixed.count == counted.count;
+      for (int i = 0; same && i < fixed.count; ++i)
+        same = fixed.value[i] == selected.value[i] && fixed.value[i] == counted.value[i];
+      CHECK(same);
+    }
+  }
+  // -(x - 1)(x - 2)(x - 3): the one root in [1.5, 2.5], rising from p(1.5) < 0 to p(2.5) > 0.
+  const Real c[4] = {6, -11, 6, -1};
+  const Real root = SelectedEigenPolicy::bracketed_root(c, 3, Real(1.5), Real(2.5), Real(-0.375), Real(0.375));
+  CHECK(root == Fixed::bracketed_root(c, 3, Real(1.5), Real(2.5), Real(-0.375), Real(0.375)));
+  CHECK_NEAR(root, 2, 1e-12);
+}
+
 template <class Real> void run_precision() {
   const Sets<Real> sets;
+  selected_matches<EigenCompanion>(SelectedEigenPolicy::Which::Companion, sets);
+  selected_matches<EigenPolished>(SelectedEigenPolicy::Which::Polished, sets);
+  selected_matches<EigenPolynomialSolver>(SelectedEigenPolicy::Which::PolynomialSolver, sets);
+  CHECK(SelectedEigenPolicy::selected() == SelectedEigenPolicy::Which::Companion);  // the guards restored it
   run_policy<EigenCompanion>(sets);
   run_policy<EigenPolished>(sets);
   run_policy<EigenPolynomialSolver>(sets);

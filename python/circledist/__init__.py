@@ -11,6 +11,7 @@ from ._core import (
     Ray,
     Segment,
     Shape,
+    __version__,
     closest_points,
     distance,
     distance_if_within,
@@ -20,8 +21,6 @@ from ._core import (
     within,
 )
 from .scene import Scene
-
-__version__ = "0.1.0"
 
 __all__ = [
     "Bezier",

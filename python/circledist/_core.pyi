@@ -9,6 +9,8 @@ ArrayLike = npt.ArrayLike
 Precision = Optional[Literal["float32", "float64", "longdouble"]]
 Solver = Optional[Literal["default", "companion", "polished", "bracketing", "eigen"]]
 
+__version__: str
+
 class Shape:
     @property
     def batch_shape(self) -> tuple[int, ...]: ...

@@ -532,7 +532,13 @@ def _parser() -> argparse.ArgumentParser:
                         "when PATH is omitted or '-')")
     p.add_argument("--plot", metavar="PATH", help="draw the scene and its closest points to PATH (PNG, matplotlib)")
     p.add_argument("--no-plot", action="store_true", help="do not draw the demo scene")
+    p.add_argument("--version", action="version", version=f"circledist {_version()}")
     return p
+
+
+def _version() -> str:
+    from . import __version__
+    return __version__
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -413,7 +413,7 @@ Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, 
     const auto f = [&](Real d) { return h(t0 + d); };
     const Real below = std::max(lo - t0, -reach), above = std::min(hi - t0, reach);
     Minimum<Real> m;
-    if constexpr (Roots::polish == Polish::Newton) {
+    if (Roots::polish() == Polish::Newton) {
       const auto g = [&](Real d) { return jet(t0 + d); };
       m = polish_newton(g, f, Real(0), width, below, above, abs_tol, screened.value[i]);
     } else {

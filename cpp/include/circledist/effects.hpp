@@ -49,7 +49,7 @@ inline void reset_stats() { stats() = Stats{}; }
 
 // A root policy that counts its calls in stats().solves and otherwise is `Roots`.
 template <class Roots> struct Counted {
-  static constexpr Polish polish = Roots::polish;
+  static constexpr Polish polish() { return Roots::polish(); }
   static constexpr bool accurate_roots = has_accurate_roots<Roots>::value;
   using Inner = Roots;
 

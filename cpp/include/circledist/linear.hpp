@@ -217,7 +217,7 @@ Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& 
   const Real width = Real(1e-3) * scale;
   const Real abs_tol = Real(0.1) * std::sqrt(std::numeric_limits<Real>::epsilon()) * scale;
   Minima<Real> out;
-  if constexpr (Roots::polish == Polish::Newton) {
+  if (Roots::polish() == Polish::Newton) {
     // Squaring note 000's condition (P.M) = R (Q-C).M / |Q-C| let in the roots of the other
     // branch, (P.M) = -R (...): those are no stationary points of the distance, so they are
     // evaluated but not polished (Newton would fail on them and fall back to a slow search).

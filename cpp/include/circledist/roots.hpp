@@ -34,6 +34,8 @@ namespace circledist {
 //   Newton: Newton steps on the exact squared distance, a bracketed search only where they fail;
 //   Bracketed: a bracketed (Brent) minimization of the exact distance around every candidate,
 //     finished by the Newton steps that lower it (a crossing, distance 0, is a V in the distance).
+// A policy says which by `Policy::polish()`, a constant for every policy but
+// SelectedEigenPolicy, which reads the calling thread's choice.
 enum class Polish { Newton, Bracketed };
 
 // Whether a policy returns every root to rounding (Roots::accurate_roots = true), so that a
@@ -222,7 +224,7 @@ template <class Real> Real newton_on_polynomial(const Real* c, int n, Real x) {
 // near-real: a quadruple root (a line whose projection is tangent to the circle) comes back as
 // two complex pairs with imaginary parts around eps^(1/4), and `realRoots()` would drop them.
 struct EigenCompanion {
-  static constexpr Polish polish = Polish::Newton;
+  static constexpr Polish polish() { return Polish::Newton; }
 
   // Relative imaginary part still taken as a real root (covers multiplicity up to 4 in double).
   template <class Real> static Real near_real_tolerance() {
@@ -302,7 +304,7 @@ struct EigenCompanion {
 // comes back with imaginary parts near eps^(1/4) = 1e-4 and would be lost, so the near-real
 // filter of EigenCompanion (relative, up to multiplicity 4) is applied to roots() instead.
 struct EigenPolynomialSolver {
-  static constexpr Polish polish = Polish::Newton;
+  static constexpr Polish polish() { return Polish::Newton; }
 
   template <class Real, int Capacity>
   static void roots(const Real* coefficients, int degree, Real /*lo*/, Real /*hi*/, Candidates<Real, Capacity>& out) {
@@ -329,7 +331,7 @@ struct EigenPolynomialSolver {
 // EigenCompanion's roots, each refined by Newton steps on the polynomial, then polished by a
 // bracketed minimization of the exact distance: the most careful, and the slowest.
 struct EigenPolished {
-  static constexpr Polish polish = Polish::Bracketed;
+  static constexpr Polish polish() { return Polish::Bracketed; }
 
   template <class Real, int Capacity>
   static void roots(const Real* coefficients, int degree, Real lo, Real hi, Candidates<Real, Capacity>& out) {
@@ -654,7 +656,7 @@ template <class Real> Real root_bound(const Real* c, int n) {
 // An even-multiplicity root (a tangency) shows no sign change, but it is a critical point where
 // p vanishes within rounding: such critical points are kept, so a double root is never missed.
 struct Bracketing {
-  static constexpr Polish polish = Polish::Newton;
+  static constexpr Polish polish() { return Polish::Newton; }
   // Every root to rounding (a relative 2 eps): candidates can be screened by their start values.
   static constexpr bool accurate_roots = true;
 
@@ -706,6 +708,62 @@ struct Bracketing {
     return detail::halley_bisection(c, degree, lo, hi, p_lo, x, 2 * std::numeric_limits<Real>::epsilon(), Real(0));
   }
 };
+// The three eigenvalue policies behind one switch read at run time. Every solver is a template
+// on its policy, and these three differ only in roots() and polish(), so a program that offers
+// all of them (the Python module) compiles each solver once for the three instead of three
+// times, at the price of a switch per polynomial solve. None of them has accurate roots, so the
+// solvers take the same branches for each. The choice belongs to the calling thread (`Use`, an
+// RAII guard; EigenCompanion until one is made): a thread that answers queries for another must
+// make the caller's choice its own.
+struct SelectedEigenPolicy {
+  enum class Which { Companion, Polished, PolynomialSolver };
+
+  static Which& selected() {
+    static thread_local Which which = Which::Companion;
+    return which;
+  }
+
+  // The calling thread's choice for the guard's lifetime.
+  class Use {
+   public:
+    explicit Use(Which which) : previous_(selected()) { selected() = which; }
+    ~Use() { selected() = previous_; }
+    Use(const Use&) = delete;
+    Use& operator=(const Use&) = delete;
+
+   private:
+    Which previous_;
+  };
+
+  static Polish polish() { return selected() == Which::Polished ? Polish::Bracketed : Polish::Newton; }
+
+  template <class Real, int Capacity>
+  static void roots(const Real* coefficients, int degree, Real lo, Real hi, Candidates<Real, Capacity>& out) {
+    switch (selected()) {
+      case Which::Polished: return EigenPolished::roots(coefficients, degree, lo, hi, out);
+      case Which::PolynomialSolver: return EigenPolynomialSolver::roots(coefficients, degree, lo, hi, out);
+      default: return EigenCompanion::roots(coefficients, degree, lo, hi, out);
+    }
+  }
+
+  template <class Real, int Capacity>
+  static void roots_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
+    switch (selected()) {
+      case Which::Polished: return EigenPolished::roots_in(c, degree, intervals, out);
+      case Which::PolynomialSolver: return EigenPolynomialSolver::roots_in(c, degree, intervals, out);
+      default: return EigenCompanion::roots_in(c, degree, intervals, out);
+    }
+  }
+
+  template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
+    switch (selected()) {
+      case Which::Polished: return EigenPolished::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
+      case Which::PolynomialSolver: return EigenPolynomialSolver::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
+      default: return EigenCompanion::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
+    }
+  }
+};
+
 // The default policy of every solver, chosen by bench/accuracy_vs_time.py (see the README):
 // Bracketing and EigenCompanion are equally accurate on every hard case in every precision, and
 // Bracketing is the faster (about 3x on the geometric mean of the kinds).
