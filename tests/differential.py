@@ -19,11 +19,16 @@ long mode) drive it.  Three parts:
    line's parameter against the round and the round's angle against the line, a Bezier curve's
    t against the round (each half from its own end, so parameters near an end keep their full
    precision).  Dense sampling, then a vectorised beam search (nested re-sampling around the
-   best few sampled local minima) in float64, then long-double levels around the best; Bezier
-   curves also get a Lipschitz branch and bound (hodograph bounds, so a basin narrower than the
-   sampling step is not lost) and their long-double stage works on pieces [t - 5e-8, t + 5e-8]
-   whose control points are computed in double-double (a curve 1e5 times larger than the round
-   is resolved to ~1e-19 of the round).  Coordinates are taken relative to the round's centre;
+   best few sampled local minima) in float64, then long-double levels around the best.  Where
+   the sampling step is long for the target round's features (a curve or a huge circle passing a
+   much smaller round) a Lipschitz zoom (``_zoom``: hodograph or radius bounds on the point's
+   speed) re-samples every interval that could hold a value below the best sample until a step
+   moves the point by at most max(R, rho)/8 (rho: distance from the round's axis), and EVERY
+   sampled local minimum it leaves is refined in long double on its own, the least kept: two
+   near-tied minima (5.9e-13 apart on a curve 2e4 long, below float64's resolution there) are
+   both refined, not one chosen by a float64 ranking.  Bezier curves' long-double stage works
+   on pieces around each candidate whose control points are computed in double-double (a curve
+   1e5 times larger than the round is resolved to ~1e-19 of the round).  Coordinates are taken relative to the round's centre;
    offsets between inputs (B - C, p1 - p0, P_i - C) and the anchoring of a line at its point
    nearest the centre are computed in double-double, so far-translated scenes and far line
    origins lose nothing.  Every value is the distance between two genuine points (up to the
@@ -53,6 +58,7 @@ reported distance within the bar plus those ulps.
 
 from __future__ import annotations
 
+import collections
 import importlib.util
 import math
 import os
@@ -79,6 +85,17 @@ LD = np.longdouble
 
 def combos(solvers=SOLVERS, precisions=PRECISIONS):
     return [(s, p) for p in precisions for s in solvers]
+
+
+# library answers check_cases asks for per case, combination and argument order, batched:
+# distance, closest_points, within and distance_if_within at two probes each, intersects
+BATCH_ANSWERS = {"distance": 1, "closest_points": 1, "within": 2, "distance_if_within": 2, "intersects": 1}
+
+
+def answers_per_case(n_combos, within=True):
+    """Batched library answers per case (both orders); the scalar sample adds a few more."""
+    per_order = sum(BATCH_ANSWERS.values()) if within else BATCH_ANSWERS["distance"] + BATCH_ANSWERS["closest_points"]
+    return n_combos * 2 * per_order
 
 
 def _load(name):
@@ -751,7 +768,9 @@ def _nrm(a):
 
 
 # ---- closed forms (any float dtype; arrays broadcast (n, k, 3) against (n, 1, 3)) -------------
-def _round_dist(w, n, R, disk):
+def _round_dist(w, n, R, disk, with_rho=False):
+    """Distance of the points w (relative to the centre) from the round; with_rho: also their
+    distance rho from its axis."""
     z = _dot(w, n)
     a = w - z[..., None] * n
     rho = _nrm(a)
@@ -759,7 +778,7 @@ def _round_dist(w, n, R, disk):
     d = np.sqrt(z * z + e * e)
     if disk:
         d = np.where(rho <= R, np.abs(z), d)
-    return d
+    return (d, rho) if with_rho else d
 
 
 def _lin_dist(w, m, mm, lo, hi):
@@ -780,6 +799,13 @@ class _P:
     def get(self, dtype):
         return self.ld if dtype == LD else self.f64
 
+    def take(self, idx):
+        """The parameters of cases idx (repeats allowed): one row per candidate of a flat batch."""
+        out = _P.__new__(_P)
+        out.ld = {k: (v[idx] if isinstance(v, np.ndarray) else v) for k, v in self.ld.items()}
+        out.f64 = {k: (v[idx] if isinstance(v, np.ndarray) else v) for k, v in self.f64.items()}
+        return out
+
 
 def _x1(a):
     """(n, ...) -> (n, 1, ...) for broadcasting against (n, k) parameters."""
@@ -794,6 +820,11 @@ class _Form:
         self.name, self.moving, self.target = name, moving, target
         self.p = params
         self.lo, self.hi, self.periodic, self.grid = lo, hi, periodic, grid
+
+    def take(self, idx):
+        """This formulation for cases idx (one row per candidate)."""
+        return _Form(self.name, self.moving, self.target, self.p.take(idx), np.asarray(self.lo)[idx],
+                     np.asarray(self.hi)[idx], self.periodic, self.grid)
 
     def points(self, x, P):
         if self.moving == "rim":
@@ -828,6 +859,13 @@ class _Form:
         with np.errstate(invalid="ignore", over="ignore"):
             v = self.value(x, P)
         return np.where(np.isnan(v), np.inf, v)
+
+    def f_rho(self, x):
+        """f and the points' distance from the (round) target's axis, for the zoom."""
+        P = self.p.get(x.dtype.type)
+        with np.errstate(invalid="ignore", over="ignore"):
+            v, rho = _round_dist(self.points(x, P), _x1(P["n"]), _x1(P["R"]), self.target == "disk", True)
+        return np.where(np.isnan(v), np.inf, v), rho
 
     def magnitude(self, x):
         """Size of the quantities that cancel at x (for the rounding slack)."""
@@ -947,10 +985,162 @@ def _beam(form, lo, hi, beam, levels, K, dtype, start=None):
     return best_v, best_x, centres, va
 
 
-def _minimize(form, lo, hi, beam=5, levels=14, ld_levels=30, K=8, use_ld=True):
+# The zoom: a uniform scan of a shape far larger than the other one (a curve 2e4 long passing a
+# ring of radius 0.8, a huge circle passing a small disk) has steps much longer than the other
+# shape, so two local minima a fraction of its size apart fall between the same two samples and a
+# search from the best sample finds one of them, possibly the higher (5.9e-13 higher for the far
+# curve of tests/test_regressions.py::test_far_curve_near_tied_minima, below float64's resolution
+# of a point 2e4 away, so no float64 ranking can choose between them).  The zoom re-samples, in
+# float64, every interval that could hold a value below the best sample until one step moves the
+# point by at most max(R, rho) / ZOOM_FRACTION (R the target round's radius, rho the distance from
+# its axis: the scale on which the distance to the round can have distinct local minima, see
+# reference_round._feature_scale), and hands EVERY sampled local minimum (the ZOOM_KEEP lowest
+# per case) to the long-double stage, each refined on its own.
+ZOOM_FRACTION = 8     # resolution: max(R, rho) / this
+ZOOM_SPLIT = 8        # pieces per split interval and pass
+ZOOM_PASSES = 24      # 8^24: from a grid step to ~1e-22 of it
+ZOOM_CAP = 2048       # intervals split per case and pass (lowest bounds first; reached only by
+                      # curves with a control point 1e6+ away, which the value-driven beam covers)
+ZOOM_KEEP = 6         # sampled local minima per case refined in long double
+
+
+def _zoom(form, lo, hi, lip, R):
+    """Lipschitz zoom of form on [lo, hi] (float64 arrays (n,)).  lip(c, a, b): a bound on the
+    point's speed |dX/dx| on the intervals [a, b] of cases c (flat arrays); R (n,): the target
+    round's radius.  f is 1-Lipschitz in the moving point, so nothing on [a, b] lies below
+    (f(a) + f(b))/2 - L (b - a)/2: intervals above the best sample are dropped, the others split
+    until L (b - a) <= max(R, rho) / ZOOM_FRACTION (rho: a lower bound of the distance from the
+    target's axis on [a, b]).  Returns flat candidates (case, x, half-width h, value): the
+    ZOOM_KEEP lowest sampled local minima of each case (h: the step around it; the minimum lies
+    in [x - h, x + h]), and zoomed (n,): whether a case needed any split."""
+    n = lo.shape[0]
+    w = hi - lo
+    X = lo[:, None] + form.grid[None, :] * w[:, None]
+    if form.periodic:  # the interval that wraps round, closed by the first sample one period on
+        X = np.concatenate([X, X[:, :1] + w[:, None]], 1)
+    else:
+        X[:, -1] = hi
+    F, RHO = form.f_rho(X)
+    RHO = RHO.astype(float)
+    best = F.min(axis=1)
+    G = X.shape[1]
+    c = np.repeat(np.arange(n), G - 1)
+    a, b = X[:, :-1].ravel(), X[:, 1:].ravel()
+    fa, fb = F[:, :-1].ravel(), F[:, 1:].ravel()
+    ra, rb = RHO[:, :-1].ravel(), RHO[:, 1:].ravel()
+    zoomed = np.zeros(n, dtype=bool)
+    done = []
+    tt = np.arange(1, ZOOM_SPLIT) / ZOOM_SPLIT
+    for pass_ in range(ZOOM_PASSES + 1):
+        lh = lip(c, a, b) * (b - a)
+        lb = (fa + fb - lh) / 2
+        alive = lb <= best[c]
+        res = np.maximum(R[c], np.minimum(ra, rb) - lh / 2) / ZOOM_FRACTION
+        split = alive & (lh > res) & (pass_ < ZOOM_PASSES)
+        fin = alive & ~split
+        done.append((c[fin], a[fin], b[fin], fa[fin], fb[fin], lb[fin]))
+        if not split.any():
+            break
+        c, a, b, fa, fb, ra, rb, lb = (v[split] for v in (c, a, b, fa, fb, ra, rb, lb))
+        zoomed[c] = True
+        # at most ZOOM_CAP per case, the lowest bounds first (c is sorted: intervals stay in order)
+        order = np.lexsort((lb, c))
+        rank = np.empty(len(c), dtype=np.int64)
+        rank[order] = np.arange(len(c)) - np.searchsorted(c[order], c[order])
+        keep = rank < ZOOM_CAP
+        c, a, b, fa, fb, ra, rb = (v[keep] for v in (c, a, b, fa, fb, ra, rb))
+        P = a[:, None] + (b - a)[:, None] * tt
+        V, RH = form.take(c).f_rho(P)
+        np.minimum.at(best, c, V.min(axis=1))
+        XX = np.concatenate([a[:, None], P, b[:, None]], 1)
+        FF = np.concatenate([fa[:, None], V, fb[:, None]], 1)
+        RR = np.concatenate([ra[:, None], RH.astype(float), rb[:, None]], 1)
+        c = np.repeat(c, ZOOM_SPLIT)
+        a, b = XX[:, :-1].ravel(), XX[:, 1:].ravel()
+        fa, fb = FF[:, :-1].ravel(), FF[:, 1:].ravel()
+        ra, rb = RR[:, :-1].ravel(), RR[:, 1:].ravel()
+    c, a, b, fa, fb, lb = (np.concatenate(v) for v in zip(*done))
+    live = lb <= best[c]       # the best sample kept falling: drop what it now excludes
+    c, a, b, fa, fb = (v[live] for v in (c, a, b, fa, fb))
+    # the samples (both ends of the intervals kept), in order per case, each with its step
+    h = b - a
+    cc, xx, ff, hh = np.concatenate([c, c]), np.concatenate([a, b]), np.concatenate([fa, fb]), np.concatenate([h, h])
+    if form.periodic:
+        xx = np.where(xx >= hi[cc], xx - w[cc], xx)
+    order = np.lexsort((xx, cc))
+    cc, xx, ff, hh = cc[order], xx[order], ff[order], hh[order]
+    first = np.ones(len(cc), dtype=bool)
+    first[1:] = (cc[1:] != cc[:-1]) | (xx[1:] != xx[:-1])
+    starts = np.flatnonzero(first)
+    hh = np.maximum.reduceat(hh, starts)      # a sample between a fine and a coarse interval: both sides
+    cc, xx, ff = cc[starts], xx[starts], ff[starts]
+    # sampled local minima; a run of equal samples counts once (strict on the right); at the ends
+    # of a case's samples the neighbour is the other end (periodic) or nothing
+    m = len(cc)
+    gs = np.ones(m, dtype=bool)
+    gs[1:] = cc[1:] != cc[:-1]
+    ge = np.ones(m, dtype=bool)
+    ge[:-1] = cc[1:] != cc[:-1]
+    gstart = np.maximum.accumulate(np.where(gs, np.arange(m), 0))
+    gend = np.minimum.accumulate(np.where(ge, np.arange(m), m)[::-1])[::-1]
+    prev = np.where(gs, gend, np.arange(m) - 1)
+    nxt = np.where(ge, gstart, np.arange(m) + 1)
+    fprev = np.where(gs & (not form.periodic), np.inf, ff[prev])
+    fnext = np.where(ge & (not form.periodic), np.inf, ff[nxt])
+    lm = (ff <= fprev) & (ff < fnext)
+    has = np.zeros(n, dtype=bool)
+    has[cc[lm]] = True
+    lm |= ~has[cc] & (ff == best[cc])           # a flat case: its best sample
+    cc, xx, ff, hh = cc[lm], xx[lm], ff[lm], hh[lm]
+    order = np.lexsort((ff, cc))
+    cc, xx, ff, hh = cc[order], xx[order], ff[order], hh[order]
+    rank = np.arange(len(cc)) - np.searchsorted(cc, cc)
+    keep = rank < ZOOM_KEEP
+    return (cc[keep], xx[keep], hh[keep], ff[keep]), zoomed
+
+
+def _refine_ld(form, cc, a, b, ld_levels, K):
+    """Long-double beam search of form on the brackets [a, b] of cases cc (flat: one row per
+    candidate, each refined on its own).  Returns (value, x) per row."""
+    sub = form.take(cc)
+    lo, hi = np.asarray(sub.lo, dtype=LD), np.asarray(sub.hi, dtype=LD)
+    vv, xx, _, _ = _beam(sub, lo, hi, 2, ld_levels, K, LD, start=(a[:, None], b[:, None]))
+    return vv, xx
+
+
+def _least(n, cc, v, *cols):
+    """Per case (0..n-1) the row of cc with the least v: (has a row, v, cols...) per case."""
+    order = np.lexsort((v, cc))
+    cc_s = cc[order]
+    first = np.ones(len(cc_s), dtype=bool)
+    first[1:] = cc_s[1:] != cc_s[:-1]
+    pick = order[first]
+    has = np.zeros(n, dtype=bool)
+    has[cc[pick]] = True
+    outs = []
+    for col in (v,) + cols:
+        o = np.zeros(n, dtype=col.dtype)
+        o[cc[pick]] = col[pick]
+        outs.append(o)
+    return (has, *outs)
+
+
+def _minimize(form, lo, hi, beam=5, levels=14, ld_levels=30, K=8, use_ld=True, lip=None, R=None):
     """Float64 beam search from the grid, then (use_ld) long-double levels around the two best
-    final brackets.  Returns (value (long double), x (long double))."""
+    final brackets; with lip/R (see _zoom) the cases whose grid is too coarse for R are zoomed
+    too and each of their sampled local minima is refined in long double on its own.  Returns
+    (value (long double), x (long double))."""
+    n = lo.shape[0]
     v64, x64, centres, vals = _beam(form, lo, hi, beam, levels, K, np.float64)
+    zc = None
+    if lip is not None:
+        (zc, zx, zh, zf), zoomed = _zoom(form, lo.astype(float), hi.astype(float), lip, R)
+        sel = zoomed[zc]
+        zc, zx, zh, zf = zc[sel], zx[sel], zh[sel], zf[sel]
+        if not use_ld and len(zc):
+            has, zv, zxx = _least(n, zc, zf, zx)
+            better = has & (zv < v64)
+            v64, x64 = np.where(better, zv, v64), np.where(better, zxx, x64)
     xl = x64.astype(LD)
     vl = form.f(xl[:, None])[:, 0] if use_ld else v64.astype(LD)
     if not use_ld:
@@ -962,7 +1152,13 @@ def _minimize(form, lo, hi, beam=5, levels=14, ld_levels=30, K=8, use_ld=True):
     a, b = cx - hw, cx + hw
     vv, xx, _, _ = _beam(form, lo.astype(LD), hi.astype(LD), 2, ld_levels, K, LD, start=(a, b))
     better = vv < vl
-    return np.where(better, vv, vl), np.where(better, xx, xl)
+    vl, xl = np.where(better, vv, vl), np.where(better, xx, xl)
+    if zc is not None and len(zc):
+        zv, zxx = _refine_ld(form, zc, (zx - zh).astype(LD), (zx + zh).astype(LD), ld_levels, K)
+        has, zv, zxx = _least(n, zc, zv, zxx)
+        better = has & (zv < vl)
+        vl, xl = np.where(better, zv, vl), np.where(better, zxx, xl)
+    return vl, xl
 
 
 def _sub_bezier_dd(ctrl_dd, a, b):
@@ -997,87 +1193,45 @@ def _lipschitz(dP, a, b):
     return k * out * (1 + 1e-9)
 
 
-def _bnb(form, lo, hi, dP, levels=8, K=8, M=32):
-    """Branch and bound on a 1-D grid (float64): f = dist(B(t), round) is L-Lipschitz on an
-    interval (L from the hodograph, _lipschitz), so an interval of width h whose end values are
-    fa, fb holds nothing below (fa + fb)/2 - L h/2; every level re-samples the (at most M per
-    case) intervals with the smallest such bound that can still beat the best sample.  Returns
-    (best value, best x, centres of the two best final intervals)."""
-    n = lo.shape[0]
-    w = hi - lo
-    g = form.grid
-    X = lo[:, None] + g[None, :] * w[:, None]
-    X[:, -1] = hi
-    F = form.f(X)
-    j = np.argmin(F, axis=1)
-    best_v, best_x = F[np.arange(n), j], X[np.arange(n), j]
-    a, b = X[:, :-1], X[:, 1:]
-    fa, fb = F[:, :-1], F[:, 1:]
-    for _ in range(levels + 1):
-        lb = (fa + fb) / 2 - _lipschitz(dP, a, b) * (b - a) / 2
-        lb = np.where(np.isfinite(lb) & (lb <= best_v[:, None]), lb, np.inf)
-        keep = np.argsort(lb, axis=1, kind="stable")[:, :M]
-        a, b = np.take_along_axis(a, keep, 1), np.take_along_axis(b, keep, 1)
-        valid = np.isfinite(np.take_along_axis(lb, keep, 1))
-        if _ == levels:
-            break
-        tt = np.linspace(0, 1, K + 1)
-        P = a[..., None] + (b - a)[..., None] * tt
-        V = form.f(P.reshape(n, -1)).reshape(P.shape)
-        V = np.where(valid[..., None], V, np.inf)
-        Vf, Pf = V.reshape(n, -1), P.reshape(n, -1)
-        j = np.argmin(Vf, axis=1)
-        v = Vf[np.arange(n), j]
-        better = v < best_v
-        best_v, best_x = np.where(better, v, best_v), np.where(better, Pf[np.arange(n), j], best_x)
-        a, b = P[..., :-1].reshape(n, -1), P[..., 1:].reshape(n, -1)
-        fa, fb = V[..., :-1].reshape(n, -1), V[..., 1:].reshape(n, -1)
-    # the two best final intervals by their better end value
-    score = np.where(valid, np.minimum(form.f(a), form.f(b)), np.inf)
-    order = np.argsort(score, axis=1, kind="stable")[:, :2]
-    centres = np.take_along_axis((a + b) / 2, order, 1)
-    return best_v, best_x, centres
-
-
 def _minimize_bezier(form, ctrl_dd, nb, Rbl, kb, ld_levels=30, K=8):
-    """A half curve: float64 beam search and branch and bound on t in [0, 1/2], then a long-double
-    search on the pieces [t - 5e-8, t + 5e-8] around the five best candidates, each re-parametrised on
-    [0, 1] with its control points computed in double-double: a curve 1e5 times larger than the
-    round is then resolved to ~1e-19 of the round, not of the curve.  Returns (value, a, b, u,
-    magnitude) with the best point at t = a + u (b - a)."""
+    """A half curve: float64 value-driven beam search and zoom (_zoom) on t in [0, 1/2], then a
+    long-double search of every candidate on its own piece of the curve, re-parametrised on
+    [0, 1] with its control points computed in double-double (a curve 1e5 times larger than the
+    round is then resolved to ~1e-19 of the round, not of the curve): the pieces [t - h, t + h]
+    around the zoom's sampled local minima (h its step there) and [t - 5e-8, t + 5e-8] around the
+    beam's three best.  Returns (value, a, b, u, magnitude) with the best point at t = a + u (b - a)."""
     n = ctrl_dd[0].shape[0]
     lo, hi = np.zeros(n), np.full(n, 0.5)
     P64 = ctrl_dd[0] + ctrl_dd[1]
     dP = np.linalg.norm(np.diff(P64, axis=1), axis=2)                   # (n, k) hodograph norms
-    # two searches, the best of both: a value-driven beam (follows the sampled minima: curves with
-    # a far control point, whose global Lipschitz constant is useless) and the Lipschitz branch
-    # and bound (does not lose a narrow basin: curves much larger than the round)
+    # two searches: a value-driven beam (follows the sampled minima: curves with a far control
+    # point, whose Lipschitz bound is useless away from the ends) and the zoom (keeps every local
+    # minimum: curves much larger than the round)
     # (several crossings of a rim by a curve in a plane just above it are near-ties: the beam is
-    # wider, and the long-double stage refines five candidates)
+    # wider, and keeps its three best)
     vb, xb, bcentres, bvals = _beam(form, lo, hi, 8, 14, K, np.float64)
-    v64, x64, centres = _bnb(form, lo, hi, dP)
+    (zc, zx, zh, _), _ = _zoom(form, lo, hi, lambda c, a, b: _lipschitz(dP[c], a[:, None], b[:, None])[:, 0],
+                               np.asarray(Rbl, dtype=float))
     border = np.argsort(bvals, axis=1, kind="stable")
-    cands = [xb, x64, centres[:, 1] if centres.shape[1] > 1 else x64]
-    cands += [np.take_along_axis(bcentres, border[:, q:q + 1], 1)[:, 0] for q in (1, 2) if q < border.shape[1]]
-    best = np.full(n, LD(np.inf), dtype=LD)
-    ba, bb, bu, bm = np.zeros(n), np.ones(n), np.zeros(n, dtype=LD), np.zeros(n, dtype=LD)
-    for tc in cands:
-        a = np.maximum(tc - 5e-8, 0.0)
-        b = np.minimum(tc + 5e-8, 0.5)
-        Q = _sub_bezier_dd(ctrl_dd, a, b)
-        sub = _Form(form.name, "bezier", kb, _P(ctrl=Q, n=nb, R=Rbl), np.zeros(n), np.ones(n), False, _S_GRID)
-        zero, one = np.zeros((n, 1)), np.ones((n, 1))
-        vv, uu, _, _ = _beam(sub, np.zeros(n, dtype=LD), np.ones(n, dtype=LD), 2, ld_levels, K, LD,
-                             start=(zero, one))
-        u0 = ((tc - a) / np.where(b > a, b - a, 1)).astype(LD)
-        v0 = sub.f(u0[:, None])[:, 0]
-        take0 = v0 < vv
-        vv, uu = np.where(take0, v0, vv), np.where(take0, u0, uu)
-        mag = sub.magnitude(uu)
-        better = vv < best
-        best = np.where(better, vv, best)
-        ba, bb = np.where(better, a, ba), np.where(better, b, bb)
-        bu, bm = np.where(better, uu, bu), np.where(better, mag, bm)
+    beam_x = [xb] + [np.take_along_axis(bcentres, border[:, q:q + 1], 1)[:, 0] for q in (1, 2)
+                     if q < border.shape[1]]
+    cc = np.concatenate([zc] + [np.arange(n)] * len(beam_x))
+    tc = np.concatenate([zx] + beam_x)
+    hw = np.concatenate([np.maximum(zh, 5e-8)] + [np.full(n, 5e-8)] * len(beam_x))
+    a = np.maximum(tc - hw, 0.0)
+    b = np.minimum(tc + hw, 0.5)
+    Q = _sub_bezier_dd((ctrl_dd[0][cc], ctrl_dd[1][cc]), a, b)
+    m = len(cc)
+    sub = _Form(form.name, "bezier", kb, _P(ctrl=Q, n=nb[cc], R=Rbl[cc]), np.zeros(m), np.ones(m), False, _S_GRID)
+    vv, uu, _, _ = _beam(sub, np.zeros(m, dtype=LD), np.ones(m, dtype=LD), 2, ld_levels, K, LD,
+                         start=(np.zeros((m, 1)), np.ones((m, 1))))
+    # the candidate itself (a sampled end point can be the best point seen)
+    u0 = ((tc - a) / np.where(b > a, b - a, 1)).astype(LD)
+    v0 = sub.f(u0[:, None])[:, 0]
+    take0 = v0 < vv
+    vv, uu = np.where(take0, v0, vv), np.where(take0, u0, uu)
+    mag = sub.magnitude(uu)
+    _, best, ba, bb, bu, bm = _least(n, cc, vv, a, b, uu, mag)
     return best, ba, bb, bu, bm
 
 
@@ -1184,6 +1338,9 @@ def _screen(cases, use_ld):
         wlo, whi = _window(tgt["tb0"], tgt["tm"], tgt["tlo"], tgt["thi"], Rbl)
         p2 = _P(b0=tgt["tb0"], m=tgt["tm"], n=nb, R=Rbl)
         forms.append(_Form("line|round", "line", kb, p2, wlo, whi, False, _S_GRID))
+        # (the point moves by |m| per unit of s; the rim's own form is sampled at 1/80 of its radius)
+        speed = np.sqrt(tgt["tmm"].astype(float))
+        zooms = [None, (lambda c, a, b: speed[c], Rb)]
     elif ka == "bezier":
         # two halves, each parametrised from its end (t on [0, 1/2], and s = 1 - t on [0, 1/2] with
         # the control points reversed): parameters near an end keep their full relative precision,
@@ -1215,12 +1372,16 @@ def _screen(cases, use_ld):
         forms.append(_Form("rim_a|b", "rim", kb, pa, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
         pb = _P(D=-Dab, Ra=Rbl, Ua=Ub, Va=Vb, n=na, R=Ral)
         forms.append(_Form("rim_b|a", "rim", ka, pb, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
+        # a rim point moves by its radius per radian (a huge circle passing a small round)
+        zooms = [(lambda c, a, b: Ra[c], Rb), (lambda c, a, b: Rb[c], Ra)]
     best = np.full(n, LD(np.inf), dtype=LD)
     best_x = np.zeros(n, dtype=LD)
     best_f = np.zeros(n, dtype=int)
     slack = np.zeros(n)
     for fi, form in enumerate(forms):
-        v, x = _minimize(form, np.asarray(form.lo, dtype=LD), np.asarray(form.hi, dtype=LD), use_ld=use_ld)
+        lip, R = zooms[fi] or (None, None)
+        v, x = _minimize(form, np.asarray(form.lo, dtype=LD), np.asarray(form.hi, dtype=LD), use_ld=use_ld,
+                         lip=lip, R=R)
         better = v < best
         best = np.where(better, v, best)
         best_x = np.where(better, x, best_x)
@@ -1413,7 +1574,9 @@ def check_cases(cd, cases, combo_list=None, scalar=None, screens=None, within=Tr
         scalar = set(range(len(cases)))
     scalar = set(scalar)
     findings = []
-    stats = {"queries": len(cases), "calls": 0}
+    # answers: every value the library returned for one query, per entry point (a batched call of
+    # n cases gives n; each within / distance_if_within probe is one)
+    stats = {"cases": len(cases), "answers": collections.Counter()}
     screens = {} if screens is None else screens
     for (ka, kb, _), idx in _group(cases).items():
         group = [cases[i] for i in idx]
@@ -1457,7 +1620,9 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
         if ka == "bezier":
             A = A.reshape(n, -1, 3)
         res, SA, SB = _run_batch(cd, ka, kb, A, Bd, solver, precision, n)
-        stats["calls"] += 2 * n * 2
+        for order in res.values():
+            stats["answers"]["distance"] += n if order["d"] is not None else 0
+            stats["answers"]["closest_points"] += n if order["r"] is not None else 0
         runs[(solver, precision)] = (res, SA, SB)
     # verified pairs: upper bounds from every combination's closest points (per input scene)
     upair = {"f64": np.full(n, LD(np.inf), dtype=LD), "f32": np.full(n, LD(np.inf), dtype=LD)}
@@ -1558,7 +1723,7 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
         wres = {}
         if within and d_orders:
             fw, wres = _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, pscale[scene], bar_abs,
-                                     inaccurate)
+                                     inaccurate, stats)
             findings += fw
         # batched == scalar
         sel = [j for j, i in enumerate(idx) if i in scalar]
@@ -1571,7 +1736,7 @@ def _d_array(x, precision):
     return np.asarray(x, dtype={"float32": np.float32, "float64": np.float64, "longdouble": np.longdouble}[precision])
 
 
-def _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, ps, bar_abs, inaccurate):
+def _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, ps, bar_abs, inaccurate, stats):
     """within / distance_if_within / intersects against the library's own distance D and the
     documented rule  within(a, b, d) == (D <= d + 64 eps (s + d)):  probed at D +- 4x that
     tolerance (at least the bar), where the rule leaves no latitude.  Where D itself failed the
@@ -1593,6 +1758,10 @@ def _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, ps, bar_
         b_hi, e3 = _call(cd.distance_if_within, x, y, hi_a, **kw)
         b_lo, e4 = _call(cd.distance_if_within, x, y, lo_a, **kw)
         it, e5 = _call(cd.intersects, x, y, **kw)
+        n = len(gcases)
+        for entry, v in (("within", w_hi), ("within", w_lo), ("distance_if_within", b_hi),
+                         ("distance_if_within", b_lo), ("intersects", it)):
+            stats["answers"][entry] += n if v is not None else 0
         err = e1 or e2 or e3 or e4 or e5
         if err:
             out.append(_finding("exception", gcases[0], solver, precision, order, "within", error=err))
@@ -1636,7 +1805,8 @@ def _check_scalar(cd, ka, kb, res, d_orders, wres, sel, gcases, solver, precisio
                 continue
             d, e1 = _call(cd.distance, x, y, **kw)
             r, e2 = _call(cd.closest_points, x, y, **kw)
-            stats["calls"] += 2
+            stats["answers"]["scalar distance"] += not e1
+            stats["answers"]["scalar closest_points"] += not e2
             if e1 or e2:
                 out.append(_finding("exception", c, solver, precision, order, "scalar", error=e1 or e2))
                 continue
@@ -1654,14 +1824,15 @@ def _check_scalar(cd, ka, kb, res, d_orders, wres, sel, gcases, solver, precisio
                 hi_a, lo_a, w_hi, w_lo, it = wres[order]
                 for lim, wb in ((hi_a[j], w_hi[j]), (lo_a[j], w_lo[j])):
                     ws, e3 = _call(cd.within, x, y, lim, **kw)
+                    stats["answers"]["scalar within"] += not e3
                     if e3:
                         problems.append(f"within raised {e3}")
                     elif bool(ws) != bool(wb):
                         problems.append(f"within(d={lim!r}): scalar {ws} batch {wb}")
                 its, e4 = _call(cd.intersects, x, y, **kw)
+                stats["answers"]["scalar intersects"] += not e4
                 if e4 or bool(its) != bool(it[j]):
                     problems.append(f"intersects: scalar {its} batch {it[j]} {e4 or ''}")
-                stats["calls"] += 3
             if problems:
                 out.append(_finding("batch_scalar", c, solver, precision, order, "scalar", problems=problems))
     return out

@@ -10,7 +10,10 @@ minimisation of a *closed-form* point-to-shape distance over one real parameter:
 Both are exact, so minimising them over a compact one-parameter shape (a circle's angle, a Bezier
 curve's t) gives the exact shape-to-shape distance: the minimiser exists and is found by dense
 sampling followed by golden-section refinement of every sampled local minimum (exactly tied
-samples on a continuum of minimisers excepted, see minimize_1d).  Every value ever
+samples on a continuum of minimisers excepted, see minimize_1d).  Where the moving shape is far
+larger than the target round, the scan is first zoomed (Lipschitz bounds on the moving point's
+speed) until every interval that could hold the minimum is sampled finely for the round's
+features, so that near-tied local minima closer than the uniform step are refined each.  Every value ever
 evaluated is the distance between a genuine point of one shape and the genuine closest point of the
 other, hence an upper bound of the true distance; the reference keeps the smallest.
 
@@ -43,6 +46,9 @@ CURVE_SAMPLES = 600    # intervals of a Bezier parameter over [0, 1] (end points
 PARAM_TOL = mpf("1e-40")  # golden-section bracket width at which refinement stops
 TIE_TOL = mpf("1e-40")  # sampled values this close (relative) count as tied (see minimize_1d)
 MAX_REFINED = 64       # safety cap on refinements per minimisation (never reached in the tests)
+ZOOM_FRACTION = 8      # zoom: re-sample until one step moves the point by at most target radius / this
+ZOOM_SPLIT = 8         # zoom: pieces an interval is cut into per pass
+MAX_ZOOM_SAMPLES = 40000  # zoom: safety cap on added samples per minimisation (see minimize_1d)
 _INVPHI = (ctx.sqrt(5) - 1) / 2
 _TWO_PI = 2 * ctx.pi
 _RN = _lm.round_nearest
@@ -252,11 +258,69 @@ def _sample_grid(lo, hi, intervals: int, periodic: bool):
     return xs, h
 
 
-def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool) -> List[LocalMin]:
-    """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first."""
+def _zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, best):
+    """Re-sample, ZOOM_SPLIT pieces at a time, every interval between neighbouring samples that
+    could hold a value below the best sample and on which one step can still move the point by
+    more than resolution(a, b, L (b - a)).  f is L-Lipschitz on [a, b] (L = lipschitz(a, b)), so
+    nothing on [a, b] lies below (f(a) + f(b))/2 - L (b - a)/2: intervals above the best sample
+    are dropped.  pts: sorted [x, f(x)] lists, extended in place.  The intervals are taken
+    lowest bound first, so a zoom stopped by MAX_ZOOM_SAMPLES has spent them where the minimum is."""
+    added = 0
+    while added < MAX_ZOOM_SAMPLES:
+        todo = []
+        for i, ((a, fa), (b, fb)) in enumerate(zip(pts, pts[1:])):
+            lh = lipschitz(a, b) * (b - a)
+            if (fa + fb - lh) / 2 <= best and lh > resolution(a, b, lh):
+                todo.append(((fa + fb - lh) / 2, i))
+        if not todo:
+            break
+        todo.sort(key=lambda x: x[0])
+        new = {}
+        for _, i in todo[:(MAX_ZOOM_SAMPLES - added) // (ZOOM_SPLIT - 1)]:
+            (a, _fa), (b, _fb) = pts[i], pts[i + 1]
+            step = (b - a) / ZOOM_SPLIT
+            new[i] = [[a + j * step, None] for j in range(1, ZOOM_SPLIT)]
+            for q in new[i]:
+                q[1] = f(q[0])
+                best = min(best, q[1])
+            added += ZOOM_SPLIT - 1
+        if not new:
+            break
+        out = []
+        for i, q in enumerate(pts):
+            out.append(q)
+            out += new.get(i, [])
+        pts[:] = out
+    return pts
+
+
+def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: Optional[Callable] = None,
+                resolution=None) -> List[LocalMin]:
+    """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first.
+
+    lipschitz(a, b) (optional): a bound on |f'| over [a, b]; with resolution(a, b, step) (the
+    length, in space, to which the target's features around [a, b] must be resolved) the uniform
+    scan is zoomed (_zoom) until every interval that could hold a value below the best sample is
+    sampled at steps moving the point by at most that much.  Why: a uniform scan of
+    a shape far larger than the other one (a curve 2e4 long passing a ring of radius 0.8, a huge
+    circle passing a small disk) has steps much longer than the other shape, so two local minima
+    a fraction of its size apart fall between the same two samples, and golden section then finds
+    only one of them, possibly the higher (5.9e-13 higher for the far curve of
+    tests/test_regressions.py::test_far_curve_near_tied_minima).  After the zoom each of them is
+    a sampled local minimum of its own, and every one is refined."""
     xs, h = _sample_grid(lo, hi, intervals, periodic)
-    n = len(xs)
     fs = [f(x) for x in xs]
+    if lipschitz is not None and resolution is not None:
+        pts = [[x, v] for x, v in zip(xs, fs)]
+        if periodic:  # the interval that wraps round, closed by the first sample one period on
+            x_end = to_mp(hi) + (xs[0] - to_mp(lo))
+            pts.append([x_end, f(x_end)])
+        _zoom(f, pts, lipschitz, resolution, min(fs))
+        if periodic:
+            pts.pop()
+        xs, fs = [p[0] for p in pts], [p[1] for p in pts]
+    n = len(xs)
+    period = to_mp(hi) - to_mp(lo)
     cand = []
     for i in range(n):
         nb = []
@@ -279,9 +343,14 @@ def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool) -> List[Loc
         if sum(1 for v in chosen if abs(v[0] - c[0]) <= tie) < 2:
             chosen.append(c)
     out = []
+    zoomed = n != len(_sample_grid(lo, hi, intervals, periodic)[0])
     for fi, i, rise in chosen[:MAX_REFINED]:
-        if periodic:
+        if periodic and not zoomed:
             a, b = xs[i] - h, xs[i] + h
+        elif periodic:
+            # the neighbouring samples, across the wrap
+            a = xs[i - 1] - (period if i == 0 else 0)
+            b = xs[(i + 1) % n] + (period if i == n - 1 else 0)
         else:
             a = xs[i - 1] if i > 0 else xs[i]
             b = xs[i + 1] if i < n - 1 else xs[i]
@@ -313,8 +382,9 @@ class _Against:
         self.terms = [(zj._mpf_, aj[0]._mpf_, aj[1]._mpf_, aj[2]._mpf_) for zj, aj in zip(z, a)]
         self.r = target.radius._mpf_
 
-    def raw(self, coefs):
-        """coefs: raw libmp values, or None for an exact 1.  Returns the raw distance."""
+    def raw(self, coefs, axis=None):
+        """coefs: raw libmp values, or None for an exact 1.  Returns the raw distance; axis (a
+        list, optional) receives the point's distance from the target's axis (raw)."""
         P, RN = ctx.prec, _RN
         z = ax = ay = az = _lm.fzero
         for c, (zj, a0, a1, a2) in zip(coefs, self.terms):
@@ -327,6 +397,8 @@ class _Against:
                 az = _add(az, _mul(c, a2, P, RN), P, RN)
         rho2 = _add(_add(_mul(ax, ax, P, RN), _mul(ay, ay, P, RN), P, RN), _mul(az, az, P, RN), P, RN)
         rho = _lm.mpf_sqrt(rho2, P, RN)
+        if axis is not None:
+            axis.append(rho)
         if self.disk and _lm.mpf_le(rho, self.r):
             return _lm.mpf_abs(z)
         e = _lm.mpf_sub(rho, self.r, P, RN)
@@ -377,17 +449,43 @@ _GRID_COS_SIN = {x._mpf_: _lm.mpf_cos_sin(x._mpf_, ctx.prec, _RN)
                  for x in _sample_grid(0, _TWO_PI, CIRCLE_SAMPLES, True)[0]}
 
 
+def _feature_scale(target: Round, axis: dict) -> Callable:
+    """The zoom's resolution around [a, b]: 1/ZOOM_FRACTION of the scale on which the distance to
+    the target can have distinct local minima.  The distance to a circle is smooth on the scale of
+    the point's distance rho from the circle's axis (its focal set; the distance to a disk is
+    smooth there too, and its kinks at rho = R and on its plane lie within R of the axis), so it
+    is max(R, rho) (a lower bound of rho on [a, b] from the samples, rho being 1-Lipschitz): R near
+    the round (two crossings of a ring's axis region R apart, the far curve's minima 1.4 R apart),
+    coarser far from it (a round 1e-9 the size of the curve is zoomed only where the curve passes
+    its axis).  axis: the samples' rho (f records it); None for a point target (R = 0: the
+    uniform scan, no zoom)."""
+    R = target.radius
+
+    def res(a, b, lh):
+        rho = min(axis[a._mpf_], axis[b._mpf_]) - lh / 2
+        return max(R, rho) / ZOOM_FRACTION
+
+    return res if R > 0 else None
+
+
 def _rim_minima(a: Round, target: Round, disk: bool) -> List[LocalMin]:
     rel = [sub(a.center, target.center), scale(a.radius, a.u), scale(a.radius, a.v)]
     g = _Against(rel, target, disk)
+    axis = {}
 
     def f(theta):
         cs = _GRID_COS_SIN.get(theta._mpf_)
         if cs is None:
             cs = _lm.mpf_cos_sin(theta._mpf_, ctx.prec, _RN)
-        return ctx.make_mpf(g.raw((None,) + cs))
+        rho = []
+        v = ctx.make_mpf(g.raw((None,) + cs, rho))
+        axis[theta._mpf_] = ctx.make_mpf(rho[0])
+        return v
 
-    return minimize_1d(f, 0, _TWO_PI, CIRCLE_SAMPLES, periodic=True)
+    # the rim point moves by a.radius per radian; zoomed where one step is long for the target's
+    # features (a huge circle passing a small disk)
+    return minimize_1d(f, 0, _TWO_PI, CIRCLE_SAMPLES, periodic=True, lipschitz=lambda lo, hi: a.radius,
+                       resolution=_feature_scale(target, axis))
 
 
 def _pairs_from_rim(a: Round, target: Round, disk: bool, swap: bool) -> List[Pair]:
@@ -511,13 +609,48 @@ def disk_disk(ca, na, ra, cb, nb, rb) -> Reference:
     return Reference(pairs[0].value, pairs, scl, False, None, False)
 
 
+def _speed_bound(ctrl) -> Callable:
+    """lipschitz(a, b) >= max |B'(t)| over [a, b].  B' = k sum_i b_{i,k-1}(t) (P_{i+1} - P_i) and
+    each Bernstein function b_{i,k-1} is unimodal with its peak at i/(k-1), so
+    |B'| <= k sum_i |P_{i+1} - P_i| max_[a,b] b_{i,k-1}.  Evaluated in binary64 on [a, b] widened
+    by a rounding of each end, the sum enlarged by 1e-9 for the rounding of the terms: an upper
+    bound.  (Far tighter than the global k max |P_{i+1} - P_i| near the ends of a curve with a
+    far control point, where that bound would keep every interval alive.)"""
+    pts = [vec(p) for p in ctrl]
+    k = len(pts) - 1
+    legs = [float(norm(sub(pts[i + 1], pts[i]))) for i in range(k)]
+    if k <= 1:
+        speed = (legs[0] if legs else 0.0) * (1 + 1e-9)
+        return lambda a, b: speed
+
+    def bound(a, b):
+        lo, hi = float(a), float(b)
+        lo, hi = lo - 2.3e-16 * abs(lo), hi + 2.3e-16 * abs(hi)
+        s = 0.0
+        for i, leg in enumerate(legs):
+            t = min(max(i / (k - 1), lo), hi)
+            s += leg * math.comb(k - 1, i) * t ** i * (1 - t) ** (k - 1 - i)
+        return mpf(k * s * (1 + 1e-9))
+
+    return bound
+
+
 def _curve_minima(ctrl, target: Round, disk: bool) -> List[LocalMin]:
     pts = [vec(p) for p in ctrl]
     k = len(pts) - 1
     rel = [sub(p, target.center) for p in pts]
     g = _Against(rel, target, disk)
-    return minimize_1d(lambda t: ctx.make_mpf(g.raw(_raw_bernstein(k, t._mpf_))), 0, 1, CURVE_SAMPLES,
-                       periodic=False)
+    axis = {}
+
+    def f(t):
+        rho = []
+        v = ctx.make_mpf(g.raw(_raw_bernstein(k, t._mpf_), rho))
+        axis[t._mpf_] = ctx.make_mpf(rho[0])
+        return v
+
+    # zoomed where one step is long for the target's features: a curve far larger than the round
+    return minimize_1d(f, 0, 1, CURVE_SAMPLES, periodic=False, lipschitz=_speed_bound(ctrl),
+                       resolution=_feature_scale(target, axis))
 
 
 def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:

@@ -1,17 +1,25 @@
 #!/usr/bin/env python3
 """Long mode of the differential accuracy test (issue 14, "keep it closed").
 
-    python tools/differential.py --queries 10000000 --seed 1 --report docs/differential_report.json
+    python tools/differential.py --answers 10000000 --seed 1 --report docs/differential_report.json
 
-runs N queries (cases: one kind pair instance each, spread evenly over the case families of
-tests/differential.py and, within a family, over its kind pairs) through every solver x precision
-combination, both argument orders, distance / closest_points / within / distance_if_within /
-intersects, batched (plus a scalar sample per batch that must give exactly the batch's answers),
-judged by the fast NumPy screen and by the returned closest points.  Accuracy findings are
-confirmed against the 50-digit mpmath references (at most --max-confirm per finding class,
-solver and precision; the rest are counted as candidates).  Prints counts per family, kind pair,
-solver and precision and one reproducer per finding class, writes the JSON report, and exits 1
-when any finding is confirmed.
+Sizes are counted in library ANSWERS, as the issue counts its "queries": every value the library
+returns for one query, i.e. per case every solver x precision combination, both argument orders,
+and every entry point -- distance, closest_points, within and distance_if_within (each probed at
+two limits), intersects -- batched: 2 x 7 = 14 answers per combination, 168 per case with the 12
+combinations (differential.answers_per_case), plus the scalar sample (scalar calls that must
+give exactly the batch's answers).  --answers N runs ceil(N / answers per case) cases;
+--cases N (alias --queries, its old name) sets the cases directly.  The report gives both, and
+the answers per entry point.
+
+The cases (one kind pair instance each, "family/seed/index") are spread evenly over the case
+families of tests/differential.py and, within a family, over its kind pairs; every chunk holds a
+share of every family (one library batch per kind pair and chunk: large batches, and a partial
+run sees every family).  Answers are judged by the fast NumPy screen and by the returned closest
+points.  Accuracy findings are confirmed against the 50-digit mpmath references (at most
+--max-confirm per finding class, solver, precision and chunk; the rest are counted as
+candidates).  Prints counts per family, kind pair, solver and precision and one reproducer per
+finding class, writes the JSON report, and exits 1 when any finding is confirmed.
 
 Every case is reproducible from its id "family/seed/index" (differential.case_from_id).
 """
@@ -59,23 +67,21 @@ def library_info(cd):
     return info
 
 
-def plan(D, families, queries, batch):
-    """Chunks (family, start, count): N queries split evenly over the families."""
-    per = [queries // len(families) + (1 if i < queries % len(families) else 0) for i in range(len(families))]
+def plan(D, families, cases, batch):
+    """Chunks, each a list of parts (family, start, count): `cases` split evenly over the
+    families, and every chunk of about `batch` cases holding an even share of each family."""
+    per = [cases // len(families) + (1 if i < cases % len(families) else 0) for i in range(len(families))]
+    n_chunks = max(1, -(-cases // batch))
     chunks = []
-    for fam, n in zip(families, per):
-        for start in range(0, n, batch):
-            chunks.append((fam, start, min(batch, n - start)))
-    # interleave families so that partial runs see all of them
-    by_fam = collections.defaultdict(list)
-    for c in chunks:
-        by_fam[c[0]].append(c)
-    out = []
-    while any(by_fam.values()):
-        for fam in families:
-            if by_fam[fam]:
-                out.append(by_fam[fam].pop(0))
-    return out
+    for j in range(n_chunks):
+        parts = []
+        for fam, n in zip(families, per):
+            lo, hi = n * j // n_chunks, n * (j + 1) // n_chunks
+            if hi > lo:
+                parts.append((fam, lo, hi - lo))
+        if parts:
+            chunks.append(parts)
+    return chunks
 
 
 def _size(f):
@@ -98,10 +104,10 @@ def pick_examples(fs, keep):
 
 def run_chunk(job):
     """One chunk in a worker: check, confirm (bounded), and summarise."""
-    fam, start, count, seed, combo_list, scalar_n, max_confirm, keep = job
+    parts, seed, combo_list, scalar_n, max_confirm, keep = job
     D = load_differential()
     import circledist as cd
-    cases = D.generate(fam, count, seed, start=start)
+    cases = [c for fam, start, count in parts for c in D.generate(fam, count, seed, start=start)]
     step = max(1, len(cases) // max(scalar_n, 1)) if scalar_n else None
     scalar = set(range(0, len(cases), step)) if scalar_n else set()
     t0 = time.perf_counter()
@@ -129,13 +135,14 @@ def run_chunk(job):
         c["examples"] = pick_examples(c["examples"], keep)
         c["n_cases"] = len(c["cases"])
         c["cases"] = sorted(c["cases"])[:keep * 4]
-    return dict(family=fam, count=count, pairs=dict(pairs), calls=stats["calls"], seconds=seconds, classes=classes)
+    return dict(count=len(cases), by_family=dict(collections.Counter(c["family"] for c in cases)), pairs=dict(pairs),
+                answers=dict(stats["answers"]), seconds=seconds, classes=classes)
 
 
 def merge(total, part):
-    total["queries"] += part["count"]
-    total["calls"] += part["calls"]
-    total["by_family"][part["family"]] += part["count"]
+    total["cases"] += part["count"]
+    total["answers"].update(part["answers"])
+    total["by_family"].update(part["by_family"])
     for p, n in part["pairs"].items():
         total["by_pair"][p] += n
     for key, c in part["classes"].items():
@@ -153,7 +160,10 @@ def merge(total, part):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--queries", type=int, default=100000, help="number of cases (default 1e5; 1e7 intended)")
+    size = ap.add_mutually_exclusive_group()
+    size.add_argument("--answers", type=int, help="library answers to check (the issue asks for 1e7); "
+                      "runs ceil(answers / answers per case) cases")
+    size.add_argument("--cases", "--queries", dest="cases", type=int, help="number of cases (default 1e5)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--report", default=os.path.join(ROOT, "docs", "differential_report.json"))
     ap.add_argument("--batch", type=int, default=2000, help="cases per chunk (one library batch per kind pair)")
@@ -175,16 +185,24 @@ def main(argv=None):
     solvers = D.SOLVERS if args.solvers == "all" else tuple(args.solvers.split(","))
     precisions = D.PRECISIONS if args.precisions == "all" else tuple(args.precisions.split(","))
     combo_list = D.combos(solvers, precisions)
-    chunks = plan(D, families, args.queries, args.batch)
-    jobs = [(f, s, n, args.seed, combo_list, args.scalar, args.max_confirm, 3) for f, s, n in chunks]
+    per_case = D.answers_per_case(len(combo_list))
+    if args.answers is not None:
+        n_cases = -(-args.answers // per_case)
+    else:
+        n_cases = args.cases if args.cases is not None else 100000
+    chunks = plan(D, families, n_cases, args.batch)
+    jobs = [(parts, args.seed, combo_list, args.scalar, args.max_confirm, 3) for parts in chunks]
 
     import circledist as cd
     lib = library_info(cd)
     if not args.quiet:
         print(f"library: {lib.get('module')} built {lib.get('extension_mtime')} (HEAD {lib.get('git_head', '?')[:10]})",
               flush=True)
-    total = {"queries": 0, "calls": 0, "by_family": collections.Counter(), "by_pair": collections.Counter(),
-             "classes": {}}
+    if not args.quiet:
+        print(f"{n_cases} cases x {per_case} batched answers each (+ the scalar sample)"
+              + (f" for --answers {args.answers}" if args.answers is not None else ""), flush=True)
+    total = {"cases": 0, "answers": collections.Counter(), "by_family": collections.Counter(),
+             "by_pair": collections.Counter(), "classes": {}}
     t0 = time.perf_counter()
     if args.workers > 1:
         import multiprocessing as mp
@@ -201,7 +219,7 @@ def main(argv=None):
             last = now
             conf = sum(c["confirmed"] for c in total["classes"].values())
             cand = sum(c["candidates"] for c in total["classes"].values())
-            print(f"[{now:7.0f} s] {total['queries']:>9}/{args.queries} queries, {total['calls']} calls, "
+            print(f"[{now:7.0f} s] {total['cases']:>9}/{n_cases} cases, {sum(total['answers'].values())} answers, "
                   f"{cand} candidate / {conf} confirmed findings", flush=True)
     if pool is not None:
         pool.close()
@@ -219,12 +237,15 @@ def main(argv=None):
         by_precision.update(c["by_precision"])
         by_family_f[fam] += c["confirmed"]
         by_pair_f[pair] += c["confirmed"]
-    lines = [f"circledist differential run: {total['queries']} queries, {len(combo_list)} solver x precision "
-             f"combinations, both orders, {total['calls']} library calls, {seconds:.0f} s "
-             f"({1e3 * seconds / max(total['queries'], 1):.2f} ms/query), seed {args.seed}",
-             "", "queries / confirmed findings per family:"]
+    n_answers = sum(total["answers"].values())
+    lines = [f"circledist differential run: {total['cases']} cases, {n_answers} library answers "
+             f"({len(combo_list)} solver x precision combinations, both orders, every entry point), {seconds:.0f} s "
+             f"({1e3 * seconds / max(total['cases'], 1):.2f} ms/case, {n_answers / max(seconds, 1e-9):.0f} answers/s), "
+             f"seed {args.seed}",
+             "answers per entry point: " + ", ".join(f"{k} {v}" for k, v in sorted(total["answers"].items())),
+             "", "cases / confirmed findings per family:"]
     lines += [f"  {fam:20s} {total['by_family'][fam]:>9} {by_family_f[fam]:>7}" for fam in families]
-    lines += ["", "queries / confirmed findings per kind pair:"]
+    lines += ["", "cases / confirmed findings per kind pair:"]
     lines += [f"  {p:20s} {n:>9} {by_pair_f[p]:>7}" for p, n in sorted(total["by_pair"].items())]
     lines += ["", "confirmed findings per solver: " + ", ".join(f"{s} {by_solver[s]}" for s in solvers),
               "confirmed findings per precision: " + ", ".join(f"{p} {by_precision[p]}" for p in precisions), ""]
@@ -245,9 +266,11 @@ def main(argv=None):
 
     report = {
         "command": " ".join(sys.argv),
-        "queries": total["queries"], "seconds": seconds, "seed": args.seed, "calls": total["calls"],
+        "cases": total["cases"], "answers": n_answers, "answers_by_entry": dict(total["answers"]),
+        "answers_per_case_batched": per_case, "seconds": seconds, "ms_per_case": 1e3 * seconds / max(total["cases"], 1),
+        "answers_per_second": n_answers / max(seconds, 1e-9), "seed": args.seed,
         "combos": [list(c) for c in combo_list], "families": families,
-        "bars": D.BARS, "queries_by_family": dict(total["by_family"]), "queries_by_pair": dict(total["by_pair"]),
+        "bars": D.BARS, "cases_by_family": dict(total["by_family"]), "cases_by_pair": dict(total["by_pair"]),
         "confirmed_by_solver": dict(by_solver), "confirmed_by_precision": dict(by_precision),
         "confirmed_by_family": dict(by_family_f), "confirmed_by_pair": dict(by_pair_f),
         "classes": {k: {**{x: c[x] for x in ("candidates", "confirmed", "refuted", "unchecked", "reference_missed",

@@ -5,7 +5,8 @@
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
 #                            mode over N cases (default 10^7; docs/fuzz_report.json), then the
-#                            differential accuracy test's long mode over N queries
+#                            differential accuracy test's long mode over N library answers (every
+#                            solver x precision x entry point, both orders; 168 per case)
 #                            (docs/differential_report.json)
 # Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
 # from apt when missing; Python packages go into ./.venv (which sees the system's site-packages).
@@ -79,7 +80,7 @@ case "$task" in
     status=0
     "$py" tools/fuzz_crash.py --cases "${2:-10000000}" --chunk 200000 --batched --timeout 1800 \
       --report docs/fuzz_report.json || status=$?
-    "$py" tools/differential.py --queries "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
+    "$py" tools/differential.py --answers "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
     exit $status
     ;;
   bench)
