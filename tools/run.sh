@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # circledist's one entry point for people and CI:
 #   bash tools/run.sh demo   install what is missing, build the package, run the demo
-#   bash tools/run.sh test   install what is missing, build the package, run pytest and the C++ tests (ctest)
+#   bash tools/run.sh test   install what is missing, build the package, run pytest and the C++ tests (ctest),
+#                            and one C++ test built against cmeel-eigen's Eigen (the fallback)
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
 #                            mode over N cases (default 10^7; docs/fuzz_report.json), then the
@@ -9,7 +10,8 @@
 #                            solver x precision x entry point, both orders; 168 per case)
 #                            (docs/differential_report.json)
 # Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
-# from apt when missing; Python packages go into ./.venv (which sees the system's site-packages).
+# from apt when missing; the Python packages pyproject.toml lists (build requires, dependencies,
+# the task's extras) go into ./.venv (which sees the system's site-packages).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 task="${1:-test}"
@@ -37,17 +39,57 @@ py=.venv/bin/python
 export PATH="$PWD/.venv/bin:$PATH"
 
 pip_install() { "$py" -m pip install -q --disable-pip-version-check "$@"; }
-have() { "$py" -c "import $1" >/dev/null 2>&1; }
-need=()
-for req in numpy:numpy pybind11:pybind11 scikit_build_core:scikit-build-core cmake:cmake ninja:ninja; do
-  have "${req%%:*}" || need+=("${req#*:}")
-done
+# What .venv needs is read from pyproject.toml, the one list: its build requires (the build below
+# runs without pip's build isolation, so .venv gets what an isolated build would install,
+# cmeel-eigen too: the Eigen CMake takes where the system has none), the package's dependencies
+# and the task's extras; then the tools this script runs itself (after --). Prints the ones not
+# installed yet, or installed in a version that does not satisfy pyproject.toml.
+missing_requirements() {  # missing_requirements EXTRA... -- TOOL...
+  "$py" - "$@" <<'PY'
+import sys
+from importlib import metadata
+
+try:
+    import tomllib
+except ImportError:  # Python < 3.11: pip's own copy
+    from pip._vendor import tomli as tomllib
+try:
+    from packaging.requirements import Requirement
+except ImportError:
+    from pip._vendor.packaging.requirements import Requirement
+
+args = sys.argv[1:]
+cut = args.index("--") if "--" in args else len(args)
+with open("pyproject.toml", "rb") as f:
+    pyproject = tomllib.load(f)
+wanted = pyproject["build-system"]["requires"] + pyproject["project"]["dependencies"]
+for extra in args[:cut]:
+    wanted += pyproject["project"]["optional-dependencies"][extra]
+missing = []
+for text in wanted + args[cut + 1:]:
+    req = Requirement(text)
+    if req.marker is not None and not req.marker.evaluate({"extra": ""}):
+        continue
+    try:
+        ok = req.specifier.contains(metadata.version(req.name), prereleases=True)
+    except metadata.PackageNotFoundError:
+        ok = False
+    spec = req.name + ("[" + ",".join(sorted(req.extras)) + "]" if req.extras else "") + str(req.specifier)
+    if not ok and spec not in missing:
+        missing.append(spec)
+print(" ".join(missing))
+PY
+}
 case "$task" in
-  demo) have matplotlib || need+=(matplotlib) ;;
-  test) for req in pytest:pytest hypothesis:hypothesis mpmath:mpmath matplotlib:matplotlib; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
-  bench) for req in mpmath:mpmath matplotlib:matplotlib distance3d:distance3d; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
-  fuzz) for req in mpmath:mpmath; do have "${req%%:*}" || need+=("${req#*:}"); done ;;
+  demo) extras=(plot) ;;
+  test) extras=(test plot) ;;
+  fuzz) extras=(test) ;;  # the fuzz and the differential test check against the tests' mpmath references
+  bench) extras=(bench) ;;
+  *) extras=() ;;
 esac
+# cmake 3.23 for CMAKE_IGNORE_PREFIX_PATH (the test task's Eigen fallback build).
+need_text=$(missing_requirements "${extras[@]}" -- "cmake>=3.23" ninja)
+read -ra need <<<"$need_text"
 [ ${#need[@]} -eq 0 ] || { echo "== installing from PyPI: ${need[*]}"; pip_install "${need[@]}"; }
 
 echo "== building the circledist package"
@@ -56,6 +98,28 @@ pip_install --no-build-isolation .
 cpp_build() {  # cpp_build [extra cmake definitions]
   cmake -S . -B build/cpp -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON "$@" >/dev/null
   cmake --build build/cpp -j 2
+}
+
+# Eigen from cmeel-eigen, as a machine without Debian's libeigen3-dev gets it: with the system prefix
+# /usr hidden from CMake, configure must take Eigen from the cmeel-eigen wheel on .venv's Python
+# (the lookup an isolated pip build makes with its own Python); then the smallest C++ test is built
+# and run. Fails unless the Eigen headers the compiler read are cmeel's and none is /usr's.
+eigen_fallback() {
+  local dir=build/eigen-fallback object=cpp/tests/CMakeFiles/test_linear.dir/test_linear.cpp.o found deps
+  rm -rf "$dir"
+  found=$(cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON \
+    -DCMAKE_IGNORE_PREFIX_PATH=/usr -DPython_EXECUTABLE="$PWD/$py" | grep "circledist: Eigen") || return 1
+  echo "$found"
+  [[ "$found" == *cmeel.prefix* ]] || { echo "!! CMake did not take cmeel-eigen's Eigen"; return 1; }
+  cmake --build "$dir" --target test_linear || return 1
+  deps=$(ninja -C "$dir" -t deps "$object") || return 1
+  if ! grep -q "cmeel.prefix/include/eigen3/Eigen/Core" <<<"$deps" || grep -q "/usr/include/eigen3" <<<"$deps"; then
+    echo "!! the Eigen fallback build did not compile against cmeel-eigen's Eigen:"
+    grep -i "eigen" <<<"$deps" | head -5
+    return 1
+  fi
+  echo "Eigen headers of $object: $(grep -c "cmeel.prefix/include/eigen3/" <<<"$deps") from cmeel-eigen, none from /usr"
+  ctest --test-dir "$dir" -R '^test_linear$' --output-on-failure
 }
 
 case "$task" in
@@ -74,6 +138,8 @@ case "$task" in
       -DCMAKE_CXX_FLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" >/dev/null
     cmake --build build/sanitize -j 2
     timeout 600 ctest --test-dir build/sanitize -E consumer --output-on-failure || status=1
+    echo "== C++ test against cmeel-eigen's Eigen (the fallback where the system has none)"
+    eigen_fallback || status=1
     exit $status
     ;;
   fuzz)
