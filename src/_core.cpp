@@ -1,7 +1,7 @@
 // The compiled part of circledist: shape classes, and distance / closest_points over every
 // registered pair of kinds. Thin by design: the math lives in cpp/include/circledist.
 #include "float32.hpp"
-#include "pairs.hpp"
+#include "calls.hpp"
 
 namespace py = pybind11;
 using namespace circledist;
@@ -84,31 +84,29 @@ struct Choice {
   bool single() const { return precision == kFloat; }
 };
 
-// The entry of a pair: float32 runs the double one (float32.hpp).
-template <class Fn>
-Fn lookup(Fn const (PairTable::*table)[kKindCount][kKindCount], const Shape& a, const Shape& b, const Choice& c) {
-  const PairTable& t = pairs().table[c.single() ? kDouble : c.precision][c.solver];
-  Fn fn = (t.*table)[a.kind][b.kind];
-  if (!fn)
-    throw py::type_error(std::string("circledist has no query between a ") + kind_name(a.kind) + " and a " +
-                         kind_name(b.kind));
-  return fn;
+// Runs `query` (a Call<Real> -> result) on the table of the choice: float32 runs the double one
+// (float32.hpp).
+template <class Query> auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query) {
+  if (c.precision == kLongDouble) return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit});
+  return query(Call<double>{pairs().of<double>(c.solver), a, b, limit});
 }
 
 py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver) {
   const Argument x(a), y(b);
   const Choice c(precision, solver, *x.shape, *y.shape);
-  const DistanceFn fn = lookup(&PairTable::distance, *x.shape, *y.shape, c);
-  if (!c.single()) return fn(*x.shape, *y.shape);
-  return to_float32(fn(rounded_to_float(*x.shape), rounded_to_float(*y.shape)), "distance", "the distance", 1);
+  auto distance = [](const auto& call) { return call.distance(); };
+  if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, distance);
+  const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
+  return to_float32(with_call(fa, fb, nullptr, c, distance), "distance", "the distance", 1);
 }
 
 ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver) {
   const Argument x(a), y(b);
   const Choice c(precision, solver, *x.shape, *y.shape);
-  const ClosestFn fn = lookup(&PairTable::closest, *x.shape, *y.shape, c);
-  if (!c.single()) return fn(*x.shape, *y.shape);
-  return to_float32(fn(rounded_to_float(*x.shape), rounded_to_float(*y.shape)));
+  auto closest = [](const auto& call) { return call.closest(); };
+  if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, closest);
+  const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
+  return to_float32(with_call(fa, fb, nullptr, c, closest));
 }
 
 // within() (a bool per element) or, with `want_distance`, distance_if_within() (the distance,
@@ -117,11 +115,11 @@ py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_
                       const py::object& solver) {
   const Argument x(a), y(b);
   const Choice c(precision, solver, *x.shape, *y.shape);
-  const WithinFn fn = lookup(&PairTable::within, *x.shape, *y.shape, c);
-  if (!c.single()) return fn(*x.shape, *y.shape, limit, want_distance);
+  auto within = [want_distance](const auto& call) { return want_distance ? call.distance() : call.within(); };
+  if (!c.single()) return with_call(*x.shape, *y.shape, &limit, c, within);
   const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
   const Shape fd(limit.kind, {rounded_to_float("within", limit.fields[0])});
-  return to_float32(fn(fa, fb, fd, want_distance), "distance_if_within", "the distance", 1, false);
+  return to_float32(with_call(fa, fb, &fd, c, within), "distance_if_within", "the distance", 1, false);
 }
 
 py::tuple batch_tuple(py::handle self) {

@@ -1,10 +1,10 @@
 // Python bindings of the requested effects (cpp/include/circledist/effects.hpp): intersects,
 // within, distance_if_within over broadcast batches, and the work counters. Every pair goes
-// through the one PairOf template (pairs.hpp), like distance and closest_points.
+// through the one PairKernels template (pairs.hpp), like distance and closest_points.
 // Included by _core.cpp after its helpers (pairs(), run_within()).
 #pragma once
 
-#include "pairs.hpp"
+#include "calls.hpp"
 
 #include <string>
 
@@ -65,7 +65,7 @@ inline void bind_effects(py::module_& m) {
   m.def(
       "_query_kinds",
       [] {
-        const PairTable& t = pairs().table[kDouble][pairs().default_solver];
+        const PairTable<double>& t = pairs().of<double>(pairs().default_solver);
         py::list out;
         for (int a = 0; a < kKindCount; ++a)
           for (int b = 0; b < kKindCount; ++b)

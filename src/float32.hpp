@@ -3,7 +3,7 @@
 // promoted()), so float32 runs the double tables' entries and needs no instantiation of its own.
 #pragma once
 
-#include "pairs.hpp"
+#include "calls.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -2,7 +2,8 @@
 // the per-kind traits that turn one batch element into a C++ primitive. No geometry here.
 #pragma once
 
-#include <circledist/circledist.hpp>
+#include "batch.hpp"
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -19,39 +20,6 @@
 namespace circledist::python {
 
 namespace py = pybind11;
-using Index = py::ssize_t;
-using BatchShape = std::vector<Index>;
-
-enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kBezier, kKindCount };
-
-inline const char* kind_name(int kind) {
-  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"};
-  return names[kind];
-}
-
-inline std::string shape_text(const BatchShape& shape) {
-  std::ostringstream s;
-  s << '(';
-  for (size_t i = 0; i < shape.size(); ++i) s << shape[i] << (shape.size() == 1 ? "," : (i + 1 < shape.size() ? ", " : ""));
-  s << ')';
-  return s.str();
-}
-
-// "[i]" or "[i, j]" for a flat index into a batch, "" for an unbatched field.
-inline std::string index_text(Index flat, const BatchShape& batch) {
-  if (batch.empty()) return "";
-  std::vector<Index> idx(batch.size());
-  for (size_t d = batch.size(); d-- > 0;) {
-    idx[d] = flat % batch[d];
-    flat /= batch[d];
-  }
-  std::ostringstream s;
-  s << '[';
-  for (size_t d = 0; d < idx.size(); ++d) s << (d ? ", " : "") << idx[d];
-  s << ']';
-  return s.str();
-}
-
 // A field: `width` values per batch element (3 for vectors, 1 for scalars), as float64, and as
 // long double too when it was given as np.longdouble (which float64 would round: a long-double
 // query then reads those values; the other precisions read the float64 ones).
@@ -213,20 +181,6 @@ inline void check_float_range(const char* owner, const Field& f) {
   }
 }
 
-// NumPy broadcasting of two batch shapes; `ok` is false when they do not broadcast.
-inline BatchShape broadcast_shapes(const BatchShape& a, const BatchShape& b, bool& ok) {
-  ok = true;
-  const size_t n = std::max(a.size(), b.size());
-  BatchShape out(n, 1);
-  for (size_t i = 0; i < n; ++i) {
-    const Index da = i < a.size() ? a[a.size() - 1 - i] : 1;
-    const Index db = i < b.size() ? b[b.size() - 1 - i] : 1;
-    if (da != db && da != 1 && db != 1) ok = false;
-    out[n - 1 - i] = da == 1 ? db : da;
-  }
-  return out;
-}
-
 // A batch of one kind of shape. Fields broadcast against each other (a scalar radius with
 // (N, 3) centers is N circles).
 struct Shape {
@@ -263,45 +217,6 @@ struct Shape {
 inline void check_float_range(const Shape& s) {
   for (const Field& f : s.fields) check_float_range(kind_name(s.kind), f);
 }
-
-// One C++ primitive per kind, built from pointers to one batch element of each field.
-template <class S> struct ShapeTraits;
-
-template <class Real, class T> Vec3<Real> vec(const T* p) { return Vec3<Real>(Real(p[0]), Real(p[1]), Real(p[2])); }
-
-template <class Real> struct ShapeTraits<Vec3<Real>> {
-  static constexpr int kind = kPoint;
-  template <class T> static Vec3<Real> make(const T* const* f, int) { return vec<Real>(f[0]); }
-};
-template <class Real> struct ShapeTraits<Line3<Real>> {
-  static constexpr int kind = kLine;
-  template <class T> static Line3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
-};
-template <class Real> struct ShapeTraits<Ray3<Real>> {
-  static constexpr int kind = kRay;
-  template <class T> static Ray3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
-};
-template <class Real> struct ShapeTraits<Segment3<Real>> {
-  static constexpr int kind = kSegment;
-  template <class T> static Segment3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
-};
-template <class Real> struct ShapeTraits<Circle3<Real>> {
-  static constexpr int kind = kCircle;
-  template <class T> static Circle3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
-};
-template <class Real> struct ShapeTraits<Disk3<Real>> {
-  static constexpr int kind = kDisk;
-  template <class T> static Disk3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
-};
-template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
-  static constexpr int kind = kBezier;
-  template <class T> static BezierCurve3<Real> make(const T* const* f, int points) {
-    BezierCurve3<Real> curve;
-    curve.control.resize(3, points);
-    for (int i = 0; i < points; ++i) curve.control.col(i) = vec<Real>(f[0] + 3 * i);
-    return curve;
-  }
-};
 
 }  // namespace circledist::python
 
@@ -347,6 +262,5 @@ inline Field sweep_field(const char* owner, py::handle value, bool copy = true) 
 
 inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields, kSegmentFields,
                                                              kRoundFields,   kRoundFields,  kBezierFields};
-inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1};
 
 }  // namespace circledist::python

@@ -121,3 +121,36 @@ def test_gathered_broadcast_equals_the_tiled_batch(pair):
     _same(cd.distance(a, b), cd.distance(a_full, b_full).reshape(n, m))
     _same(cd.distance_if_within(a, b, d), cd.distance_if_within(a_full, b_full, d.ravel()).reshape(n, m))
     _same(cd.within(a, b, d), cd.within(a_full, b_full, d.ravel()).reshape(n, m))
+
+
+CLOSED_FORMS = {("Point", "Circle"), ("Point", "Disk")} | {
+    tuple(sorted((x, y))) for x in ("Point", "Line", "Ray", "Segment") for y in ("Point", "Line", "Ray", "Segment")}
+
+
+@pytest.mark.parametrize("pair", _pairs(), ids="-".join)
+def test_single_queries_are_the_batch_elements(pair):
+    """A single query (answered without an array, the GIL held) is, to the bit, the element the
+    same shapes give in a batch; and the closed-form pairs, compiled once for every solver, give
+    the same bits whichever solver is asked."""
+    rng = np.random.default_rng(13 + _seed(pair))
+    fa, fb = _fields(pair[0], N, rng, True), _fields(pair[1], N, rng, True)
+    a, b = _make(pair[0], *fa), _make(pair[1], *fb)
+    d = rng.uniform(0.0, 2.0, N)
+    for precision in PRECISIONS:
+        answers = {}
+        for solver in SOLVERS:
+            opts = dict(solver=solver, precision=precision)
+            batch = (cd.distance(a, b, **opts), cd.within(a, b, d, **opts), cd.distance_if_within(a, b, d, **opts))
+            for i in range(N):
+                ai = _make(pair[0], [x[i] for x in fa[0]], {k: v[i] for k, v in fa[1].items()})
+                bi = _make(pair[1], [x[i] for x in fb[0]], {k: v[i] for k, v in fb[1].items()})
+                single = (cd.distance(ai, bi, **opts), cd.within(ai, bi, d[i], **opts),
+                          cd.distance_if_within(ai, bi, d[i], **opts))
+                assert type(single[1]) is bool
+                for got, want in zip(single, batch):
+                    _same(np.asarray(got, dtype=np.asarray(want).dtype), np.asarray(want)[i])
+            answers[solver] = batch
+        if tuple(sorted(pair)) in CLOSED_FORMS:
+            for solver in SOLVERS:
+                for got, want in zip(answers[solver], answers["bracketing"]):
+                    _same(got, want)

@@ -45,3 +45,44 @@ def test_sdist_holds_nothing_else(sdist_names):
 def test_installed_package_has_no_binding_sources():
     names = [p.name for p in resources.files("circledist").iterdir()]
     assert not [n for n in names if n.endswith((".cpp", ".hpp", ".h"))], names
+
+
+def test_compiled_module_is_at_most_6_mb():
+    module = [p for p in resources.files("circledist").iterdir()
+              if p.name.startswith("_core.") and p.name.endswith((".so", ".pyd"))]
+    assert len(module) == 1, module
+    size = os.path.getsize(str(module[0]))
+    assert size <= 6 * 1024 * 1024, f"{module[0].name}: {size / 2**20:.1f} MB"
+
+
+def _local_includes(path, seen):
+    """The files of src/ and cpp/include/ that `path` includes, transitively."""
+    import re
+    if path in seen:
+        return seen
+    seen.add(path)
+    with open(path) as f:
+        for line in f:
+            m = re.match(r'\s*#\s*include\s*[<"]([^>"]+)[>"]', line)
+            if not m:
+                continue
+            name = m.group(1)
+            for base in (os.path.dirname(path), os.path.join(ROOT, "cpp", "include")):
+                candidate = os.path.normpath(os.path.join(base, name))
+                if os.path.isfile(candidate):
+                    _local_includes(candidate, seen)
+                    break
+            else:
+                seen.add(name)  # a system or dependency header, kept by name
+    return seen
+
+
+def test_pair_units_do_not_include_pybind11():
+    """The pair units (src/pair_unit.cpp, compiled once per precision and root policy) hold the
+    queries only: pybind11's headers would add about 7 s to each of them (the build's time)."""
+    unit = os.path.join(ROOT, "src", "pair_unit.cpp")
+    if not os.path.isfile(unit):
+        pytest.skip("no sources here")
+    included = _local_includes(unit, set())
+    assert not [n for n in included if "pybind11" in n or n.endswith("Python.h")], sorted(included)
+    assert os.path.join(ROOT, "src", "pairs.hpp") in included

@@ -1,0 +1,255 @@
+// The pybind11-free side of a batched query: shape kinds, batch shapes and their broadcasting,
+// and the C++ primitive of one batch element. The pair units (pair_unit.cpp) include this and
+// pairs.hpp only, not pybind11: a unit then compiles its queries and nothing else (pybind11's
+// headers cost each unit about 7 s of a 2-core build).
+#pragma once
+
+#include <circledist/circledist.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace circledist::python {
+
+using Index = std::ptrdiff_t;
+using BatchShape = std::vector<Index>;
+
+enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kBezier, kKindCount };
+
+inline const char* kind_name(int kind) {
+  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"};
+  return names[kind];
+}
+
+inline std::string shape_text(const BatchShape& shape) {
+  std::ostringstream s;
+  s << '(';
+  for (size_t i = 0; i < shape.size(); ++i) s << shape[i] << (shape.size() == 1 ? "," : (i + 1 < shape.size() ? ", " : ""));
+  s << ')';
+  return s.str();
+}
+
+// "[i]" or "[i, j]" for a flat index into a batch, "" for an unbatched field.
+inline std::string index_text(Index flat, const BatchShape& batch) {
+  if (batch.empty()) return "";
+  std::vector<Index> idx(batch.size());
+  for (size_t d = batch.size(); d-- > 0;) {
+    idx[d] = flat % batch[d];
+    flat /= batch[d];
+  }
+  std::ostringstream s;
+  s << '[';
+  for (size_t d = 0; d < idx.size(); ++d) s << (d ? ", " : "") << idx[d];
+  s << ']';
+  return s.str();
+}
+
+inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1};
+
+// NumPy broadcasting of two batch shapes; `ok` is false when they do not broadcast.
+inline BatchShape broadcast_shapes(const BatchShape& a, const BatchShape& b, bool& ok) {
+  ok = true;
+  const size_t n = std::max(a.size(), b.size());
+  BatchShape out(n, 1);
+  for (size_t i = 0; i < n; ++i) {
+    const Index da = i < a.size() ? a[a.size() - 1 - i] : 1;
+    const Index db = i < b.size() ? b[b.size() - 1 - i] : 1;
+    if (da != db && da != 1 && db != 1) ok = false;
+    out[n - 1 - i] = da == 1 ? db : da;
+  }
+  return out;
+}
+
+// One C++ primitive per kind, built from pointers to one batch element of each field.
+template <class S> struct ShapeTraits;
+
+template <class Real, class T> Vec3<Real> vec(const T* p) { return Vec3<Real>(Real(p[0]), Real(p[1]), Real(p[2])); }
+
+template <class Real> struct ShapeTraits<Vec3<Real>> {
+  static constexpr int kind = kPoint;
+  template <class T> static Vec3<Real> make(const T* const* f, int) { return vec<Real>(f[0]); }
+};
+template <class Real> struct ShapeTraits<Line3<Real>> {
+  static constexpr int kind = kLine;
+  template <class T> static Line3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+};
+template <class Real> struct ShapeTraits<Ray3<Real>> {
+  static constexpr int kind = kRay;
+  template <class T> static Ray3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+};
+template <class Real> struct ShapeTraits<Segment3<Real>> {
+  static constexpr int kind = kSegment;
+  template <class T> static Segment3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1])}; }
+};
+template <class Real> struct ShapeTraits<Circle3<Real>> {
+  static constexpr int kind = kCircle;
+  template <class T> static Circle3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+};
+template <class Real> struct ShapeTraits<Disk3<Real>> {
+  static constexpr int kind = kDisk;
+  template <class T> static Disk3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+};
+template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
+  static constexpr int kind = kBezier;
+  template <class T> static BezierCurve3<Real> make(const T* const* f, int points) {
+    BezierCurve3<Real> curve;
+    curve.control.resize(3, points);
+    for (int i = 0; i < points; ++i) curve.control.col(i) = vec<Real>(f[0] + 3 * i);
+    return curve;
+  }
+};
+
+// A shape batch as a query reads it: per field, its values in the storage type T of the query's
+// precision (double, or long double), its width (values per element) and its batch shape. The
+// module makes it from a Shape (shapes.hpp) with the GIL held; it borrows the Shape's storage.
+constexpr int kMaxShapeFields = 4;  // a round shape's center, normal, radius, and the sweep
+template <class T> struct FieldRef {
+  const char* name;
+  const T* data;
+  Index width;
+  const BatchShape* batch;
+};
+template <class T> struct Operand {
+  int kind;
+  int points;  // control points per Bezier curve
+  const BatchShape* batch;
+  int count = 0;
+  std::array<FieldRef<T>, kMaxShapeFields> fields{};
+};
+
+constexpr int kMaxFields = 2 * kMaxShapeFields + 1;  // two shapes, and within()'s limit
+
+// Offsets (in values of the storage type T: double, or long double for long-double queries) of
+// every field of both shapes for each element of the broadcast batch. Fields that are full-size
+// in the result's layout or constant step linearly (the fast path); others (e.g. (N, 1) against
+// (M,)) walk an odometer.
+template <class T> class Broadcast {
+ public:
+  BatchShape shape;
+  Index size = 1;
+
+  // `limit` (optional): a third batch, the distances of within(), broadcast with both shapes.
+  // `reversed`: the caller gave b first (the pair tables' order, pairs.hpp), which the message keeps.
+  Broadcast(const Operand<T>& a, const Operand<T>& b, const Operand<T>* limit = nullptr, bool reversed = false) {
+    if (a.batch->empty() && b.batch->empty() && (!limit || limit->batch->empty())) {  // a single query
+      for (const Operand<T>* s : {&a, &b, limit})
+        for (int k = 0; s && k < s->count; ++k, ++count_) {
+          base_[count_] = s->fields[size_t(k)].data;  // step 0: the one element
+          width_[count_] = s->fields[size_t(k)].width;
+        }
+      return;
+    }
+    bool ok = true;
+    shape = broadcast_shapes(*a.batch, *b.batch, ok);
+    if (!ok) {
+      const Operand<T>& first = reversed ? b : a;
+      const Operand<T>& second = reversed ? a : b;
+      throw std::invalid_argument(std::string("batch shapes ") + shape_text(*first.batch) + " of the " +
+                            kind_name(first.kind) + " and " + shape_text(*second.batch) + " of the " +
+                            kind_name(second.kind) + " do not broadcast");
+    }
+    if (limit) {
+      const BatchShape joined = broadcast_shapes(shape, *limit->batch, ok);
+      if (!ok)
+        throw std::invalid_argument(std::string(limit->fields[0].name) + " of batch shape " + shape_text(*limit->batch) +
+                              " does not broadcast with the shapes' batch shape " + shape_text(shape));
+      shape = joined;
+    }
+    for (Index d : shape) size *= d;
+    add(a);
+    add(b);
+    if (limit) add(*limit);
+  }
+
+  // Calls fn(flat_index, field_pointers) for every element. `Count`: the pair's field count (a
+  // constant of the pair, PairOf::kFields), so that the pointers stay in registers and advance by
+  // a fixed step (most of the loop's own cost on the point queries), in one copy of the loop.
+  template <int Count, class Fn> void for_each(Fn&& fn) const {
+    static_assert(Count <= kMaxFields, "kMaxFields");
+    if (count_ != Count) throw std::logic_error("circledist: a pair's field count disagrees with its shapes");
+    if (linear_) return run<Count>(fn, base_.data(), step_.data(), 0, size);
+    // Other broadcasts (e.g. (N, 1) against (M,)) walk an odometer that gathers each chunk of
+    // elements into contiguous scratch, over which the same loop runs: the query is compiled
+    // into one loop only (the build's time), and the gathering costs little beside it.
+    constexpr Index kChunk = 256;
+    std::array<std::vector<T>, kMaxFields> scratch;
+    std::array<const T*, kMaxFields> base{};
+    std::array<Index, kMaxFields> step{}, offset{};
+    for (int f = 0; f < count_; ++f) {
+      scratch[f].resize(size_t(kChunk * width_[f]));
+      base[f] = scratch[f].data();
+      step[f] = width_[f];
+    }
+    const size_t nd = shape.size();
+    std::vector<Index> idx(nd, 0);
+    for (Index start = 0; start < size; start += kChunk) {
+      const Index n = std::min(kChunk, size - start);
+      for (Index j = 0; j < n; ++j) {
+        for (int f = 0; f < count_; ++f)
+          std::copy_n(base_[f] + offset[f], width_[f], scratch[f].data() + j * width_[f]);
+        for (size_t d = nd; d-- > 0;) {
+          ++idx[d];
+          for (int f = 0; f < count_; ++f) offset[f] += stride_[size_t(f) * nd + d];
+          if (idx[d] < shape[d]) break;
+          for (int f = 0; f < count_; ++f) offset[f] -= stride_[size_t(f) * nd + d] * shape[d];
+          idx[d] = 0;
+        }
+      }
+      run<Count>(fn, base.data(), step.data(), start, n);
+    }
+  }
+
+ private:
+  // fn(start + i, pointers) for i in [0, n), each field's pointer advancing by its step.
+  template <int N, class Fn>
+  void run(Fn& fn, const T* const* base, const Index* step, Index start, Index n) const {
+    std::array<const T*, N> ptr{};
+    std::array<Index, N> st{};
+    for (int f = 0; f < N; ++f) ptr[f] = base[f], st[f] = step[f];
+    for (Index i = 0; i < n; ++i) {
+      fn(start + i, ptr.data());
+      for (int f = 0; f < N; ++f) ptr[f] += st[f];
+    }
+  }
+
+  int count_ = 0;
+  bool linear_ = true;
+  std::array<const T*, kMaxFields> base_{};
+  std::array<Index, kMaxFields> step_{}, width_{};
+  std::vector<Index> stride_;  // field f's step along batch dimension d at [f * nd + d] (none for a single query)
+
+  void add(const Operand<T>& s) {
+    const size_t nd = shape.size();
+    for (int k = 0; k < s.count; ++k) {
+      const FieldRef<T>& field = s.fields[size_t(k)];
+      const int f = count_++;
+      base_[f] = field.data;
+      width_[f] = field.width;
+      stride_.resize(size_t(count_) * nd, 0);
+      Index* st = stride_.data() + size_t(f) * nd;
+      Index step = field.width;
+      bool full = field.batch->size() == nd;
+      for (size_t k = 0; k < field.batch->size(); ++k) {
+        const size_t d = nd - 1 - k;
+        const Index extent = (*field.batch)[field.batch->size() - 1 - k];
+        if (extent != shape[d]) full = false;
+        st[d] = extent == 1 ? 0 : step;
+        step *= extent;
+      }
+      if (field.batch->empty() || step == field.width) {
+        step_[f] = 0;  // one element repeated
+      } else if (full) {
+        step_[f] = field.width;
+      } else {
+        linear_ = false;
+      }
+    }
+  }
+};
+
+}  // namespace circledist::python
