@@ -86,3 +86,29 @@ def test_pair_units_do_not_include_pybind11():
     included = _local_includes(unit, set())
     assert not [n for n in included if "pybind11" in n or n.endswith("Python.h")], sorted(included)
     assert os.path.join(ROOT, "src", "pairs.hpp") in included
+
+
+def test_installed_distribution_holds_the_package_only():
+    """What the wheel installed (its RECORD): the compiled module, the Python files, the stub, the
+    demo scene; no sources, no build outputs."""
+    import importlib.metadata
+    files = [str(f) for f in importlib.metadata.files("circledist") or []]
+    if not files:
+        pytest.skip("circledist is not installed from a wheel here")
+    package = [f for f in files if f.startswith("circledist/")]
+    for needed in ("circledist/__init__.py", "circledist/scene.py", "circledist/cli.py", "circledist/py.typed",
+                   "circledist/_core.pyi", "circledist/scenes/demo.json"):
+        assert needed in package, needed
+    assert [f for f in package if f.startswith("circledist/_core.") and f.endswith((".so", ".pyd"))]
+    assert not [f for f in files if f.endswith((".cpp", ".hpp", ".h", ".o", ".cmake"))], files
+
+
+@pytest.mark.skipif(not os.environ.get("CIRCLEDIST_WHEEL_ALONE"), reason="tools/run.sh's wheel_alone step only")
+def test_wheel_alone_has_no_compiler_and_no_build_requirements():
+    """The wheel_alone step of tools/run.sh runs these tests where a user without a compiler or
+    Eigen would: this checks that it does (else its passing would prove nothing)."""
+    import importlib.util
+    import shutil
+    assert not [c for c in ("c++", "g++", "gcc", "cc", "clang++", "cmake") if shutil.which(c)]
+    for module in ("pybind11", "cmeel", "scikit_build_core"):
+        assert importlib.util.find_spec(module) is None, module

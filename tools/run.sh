@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # circledist's one entry point for people and CI:
 #   bash tools/run.sh demo   install what is missing, build the package, run the demo
-#   bash tools/run.sh test   install what is missing, build the package, run pytest and the C++ tests (ctest),
-#                            and one C++ test built against cmeel-eigen's Eigen (the fallback)
+#   bash tools/run.sh test   install what is missing, build the package's wheel and install it, run pytest and
+#                            the C++ tests (ctest), one C++ test built against cmeel-eigen's Eigen (the
+#                            fallback), and the wheel's tests in a venv of its own with no compiler on PATH
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
 #                            mode over N cases (default 10^7; docs/fuzz_report.json), then the
@@ -92,8 +93,36 @@ need_text=$(missing_requirements "${extras[@]}" -- "cmake>=3.23" ninja)
 read -ra need <<<"$need_text"
 [ ${#need[@]} -eq 0 ] || { echo "== installing from PyPI: ${need[*]}"; pip_install "${need[@]}"; }
 
-echo "== building the circledist package"
-pip_install --no-build-isolation .
+# The package is built as a wheel, which is installed: the tests then run on what a user installs.
+echo "== building the circledist wheel, and installing it"
+rm -rf build/wheel
+"$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps -w build/wheel .
+pip_install --force-reinstall --no-deps build/wheel/circledist-*.whl
+
+# The wheel on a machine without a compiler, Eigen or any build requirement: a fresh venv (not
+# seeing the system's site-packages) gets the wheel and the test extra only, and runs the tests
+# cibuildwheel runs on every wheel (pyproject.toml) with nothing but that venv on PATH.
+wheel_alone() {
+  local venv=build/wheel-alone wheel test_files
+  wheel=$(ls build/wheel/circledist-*.whl)
+  rm -rf "$venv"
+  "$python" -m venv "$venv" || return 1
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check "$wheel[test]" || return 1
+  test_files=$("$py" - <<'PY'
+try:
+    import tomllib
+except ImportError:  # Python < 3.11: pip's own copy
+    from pip._vendor import tomli as tomllib
+import re
+with open("pyproject.toml", "rb") as f:
+    command = tomllib.load(f)["tool"]["cibuildwheel"]["test-command"]
+print(" ".join(re.findall(r"tests/\w+\.py", command)))
+PY
+  ) || return 1
+  (cd "$venv" && env -i HOME="$HOME" PATH="$PWD/bin" CIRCLEDIST_WHEEL_ALONE=1 bin/python -m pytest -q \
+    -p no:cacheprovider -c "$OLDPWD/pyproject.toml" --rootdir "$OLDPWD" \
+    $(for t in $test_files tests/test_packaging.py; do echo "$OLDPWD/$t"; done))
+}
 
 cpp_build() {  # cpp_build [extra cmake definitions]
   cmake -S . -B build/cpp -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON "$@" >/dev/null
@@ -140,6 +169,8 @@ case "$task" in
     timeout 600 ctest --test-dir build/sanitize -E consumer --output-on-failure || status=1
     echo "== C++ test against cmeel-eigen's Eigen (the fallback where the system has none)"
     eigen_fallback || status=1
+    echo "== the wheel alone: a fresh venv with the wheel and the test extra, no compiler or Eigen on PATH"
+    wheel_alone || status=1
     exit $status
     ;;
   fuzz)
