@@ -1,13 +1,10 @@
-// circledist: every query of the library. Include a family header alone to compile less.
+// circledist: the whole library. Every query family (queries.hpp), swept shapes (sweep.hpp), the
+// cheap distance bounds (bounds.hpp) and the effects within, intersects and distance_if_within
+// with their work counters (effects.hpp). Include a family header alone to compile less: each
+// public header compiles on its own (cpp/tests/CMakeLists.txt checks that).
 #pragma once
 
-#include "primitives.hpp"
-#include "query.hpp"
-#include "point_circle.hpp"
-#include "point_disk.hpp"
-#include "line_circle.hpp"
-#include "line_disk.hpp"
-#include "circle_circle.hpp"
-#include "circle_disk.hpp"
-#include "disk_disk.hpp"
-#include "bezier.hpp"
+#include "queries.hpp"
+#include "sweep.hpp"
+#include "bounds.hpp"
+#include "effects.hpp"

@@ -20,8 +20,7 @@
 // Sweeps of zero give back the core's result bit for bit.
 #pragma once
 
-#include "circledist.hpp"
-#include "linear_linear.hpp"
+#include "queries.hpp"
 
 #include <algorithm>
 #include <limits>
