@@ -47,6 +47,13 @@ int solver_of(const py::object& name) {
                         "'");
 }
 
+// workers=: SciPy's convention, a positive thread count or -1 for every core.
+int workers_of(int workers) {
+  if (workers == -1) return int(std::max(1u, std::thread::hardware_concurrency()));
+  if (workers < 1) throw py::value_error("workers must be a positive integer or -1 (every core), got " + std::to_string(workers));
+  return workers;
+}
+
 // A shape argument: a Shape object, or an array-like of points.
 // The Shape of a Python object, checked to have been built by its constructor: one made by
 // Circle.__new__(Circle) alone has unconstructed storage, which must never be read.
@@ -75,11 +82,13 @@ struct Argument {
 // A query's precision and solver, resolved from the call's arguments.
 // While it lives, the calling thread's SelectedEigenPolicy runs the chosen eigenvalue policy.
 struct Choice {
-  int precision, solver;
+  int precision, solver, workers;
   SelectedEigenPolicy::Use eigen_policy;
-  Choice(const py::object& precision_name, const py::object& solver_name, const Shape& a, const Shape& b)
+  Choice(const py::object& precision_name, const py::object& solver_name, const Shape& a, const Shape& b,
+         int workers_given)
       : precision(precision_of(precision_name, a, b)),
         solver(solver_of(solver_name)),
+        workers(workers_of(workers_given)),
         eigen_policy(selected_eigen_policy(solver)) {}
   bool single() const { return precision == kFloat; }
 };
@@ -87,22 +96,25 @@ struct Choice {
 // Runs `query` (a Call<Real> -> result) on the table of the choice: float32 runs the double one
 // (float32.hpp).
 template <class Query> auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query) {
-  if (c.precision == kLongDouble) return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit});
-  return query(Call<double>{pairs().of<double>(c.solver), a, b, limit});
+  if (c.precision == kLongDouble)
+    return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit, c.workers});
+  return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers});
 }
 
-py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver) {
+py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
+                        int workers) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape);
+  const Choice c(precision, solver, *x.shape, *y.shape, workers);
   auto distance = [](const auto& call) { return call.distance(); };
   if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, distance);
   const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
   return to_float32(with_call(fa, fb, nullptr, c, distance), "distance", "the distance", 1);
 }
 
-ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver) {
+ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
+                          int workers) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape);
+  const Choice c(precision, solver, *x.shape, *y.shape, workers);
   auto closest = [](const auto& call) { return call.closest(); };
   if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, closest);
   const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
@@ -112,9 +124,9 @@ ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precisio
 // within() (a bool per element) or, with `want_distance`, distance_if_within() (the distance,
 // inf beyond the limit d), over the broadcast of a, b and `limit`.
 py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
-                      const py::object& solver) {
+                      const py::object& solver, int workers) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape);
+  const Choice c(precision, solver, *x.shape, *y.shape, workers);
   auto within = [want_distance](const auto& call) { return want_distance ? call.distance() : call.within(); };
   if (!c.single()) return with_call(*x.shape, *y.shape, &limit, c, within);
   const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
@@ -196,17 +208,22 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "distance",
-      [](py::handle a, py::handle b, py::object precision, py::object solver) {
-        return run_distance(a, b, precision, solver);
+      [](py::handle a, py::handle b, py::object precision, py::object solver, int workers) {
+        return run_distance(a, b, precision, solver, workers);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
-      "Distance between a and b: a float for two single shapes, an array of the broadcast batch shape otherwise.");
+      py::arg("workers") = 1,
+      "Distance between a and b: a float for two single shapes, an array of the broadcast batch shape otherwise. "
+      "workers: threads for a batch (-1: every core); the answers are the same for any number.");
   m.def(
       "closest_points",
-      [](py::handle a, py::handle b, py::object precision, py::object solver) {
-        return run_closest(a, b, precision, solver);
+      [](py::handle a, py::handle b, py::object precision, py::object solver, int workers) {
+        return run_closest(a, b, precision, solver, workers);
       },
-      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(), "Distance, closest points on a and b, their parameters and the unique flag.");
+      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
+      py::arg("workers") = 1,
+      "Distance, closest points on a and b, their parameters and the unique flag. workers: threads for a batch "
+      "(-1: every core).");
 
   bind_effects(m);
 }

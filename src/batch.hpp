@@ -166,13 +166,18 @@ template <class T> class Broadcast {
     if (limit) add(*limit);
   }
 
-  // Calls fn(flat_index, field_pointers) for every element. `Count`: the pair's field count (a
-  // constant of the pair, PairOf::kFields), so that the pointers stay in registers and advance by
-  // a fixed step (most of the loop's own cost on the point queries), in one copy of the loop.
-  template <int Count, class Fn> void for_each(Fn&& fn) const {
+  // Calls fn(flat_index, field_pointers) for every element of [begin, end) (a chunk of the batch:
+  // threads run disjoint chunks, src/calls.hpp). `Count`: the pair's field count (a constant of
+  // the pair, PairKernels::kFields), so that the pointers stay in registers and advance by a fixed
+  // step (most of the loop's own cost on the point queries), in one copy of the loop.
+  template <int Count, class Fn> void for_each(Fn&& fn, Index begin, Index end) const {
     static_assert(Count <= kMaxFields, "kMaxFields");
     if (count_ != Count) throw std::logic_error("circledist: a pair's field count disagrees with its shapes");
-    if (linear_) return run<Count>(fn, base_.data(), step_.data(), 0, size);
+    if (linear_) {
+      std::array<const T*, kMaxFields> base{};
+      for (int f = 0; f < count_; ++f) base[f] = base_[f] + begin * step_[f];
+      return run<Count>(fn, base.data(), step_.data(), begin, end - begin);
+    }
     // Other broadcasts (e.g. (N, 1) against (M,)) walk an odometer that gathers each chunk of
     // elements into contiguous scratch, over which the same loop runs: the query is compiled
     // into one loop only (the build's time), and the gathering costs little beside it.
@@ -187,8 +192,13 @@ template <class T> class Broadcast {
     }
     const size_t nd = shape.size();
     std::vector<Index> idx(nd, 0);
-    for (Index start = 0; start < size; start += kChunk) {
-      const Index n = std::min(kChunk, size - start);
+    for (size_t d = nd, rest = size_t(begin); d-- > 0;) {  // the odometer at `begin`
+      idx[d] = Index(rest % size_t(shape[d]));
+      rest /= size_t(shape[d]);
+      for (int f = 0; f < count_; ++f) offset[f] += idx[d] * stride_[size_t(f) * nd + d];
+    }
+    for (Index start = begin; start < end; start += kChunk) {
+      const Index n = std::min(kChunk, end - start);
       for (Index j = 0; j < n; ++j) {
         for (int f = 0; f < count_; ++f)
           std::copy_n(base_[f] + offset[f], width_[f], scratch[f].data() + j * width_[f]);

@@ -32,29 +32,30 @@ py::dict stats_dict() {
 inline void bind_effects(py::module_& m) {
   m.def(
       "intersects",
-      [](py::handle a, py::handle b, py::object precision, py::object solver) {
+      [](py::handle a, py::handle b, py::object precision, py::object solver, int workers) {
         static const Shape* zero = new Shape(kPoint, {default_sweep()});  // d = 0 (a shared 0-d zero)
-        return run_within(a, b, *zero, false, precision, solver);
+        return run_within(a, b, *zero, false, precision, solver, workers);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
+      py::arg("workers") = 1,
       "Whether a and b touch or overlap (sweeps included): within(a, b, 0). Cheap exact bounds decide first; "
       "the polynomial solver runs only where they cannot. A bool, or a bool array of the broadcast batch shape.");
   m.def(
       "within",
-      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver) {
-        return run_within(a, b, limit_shape("within", d), false, precision, solver);
+      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver, int workers) {
+        return run_within(a, b, limit_shape("within", d), false, precision, solver, workers);
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(),
+      py::arg("solver") = py::none(), py::arg("workers") = 1,
       "Whether distance(a, b) <= d (d >= 0, up to a rounding tolerance of 64 eps times the pair's size). Cheap "
       "exact bounds decide first; the polynomial solver runs only where they cannot. d broadcasts with a and b.");
   m.def(
       "distance_if_within",
-      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver) {
-        return run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver);
+      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver, int workers) {
+        return run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver, workers);
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(),
+      py::arg("solver") = py::none(), py::arg("workers") = 1,
       "distance(a, b) where within(a, b, d) holds, inf elsewhere; the distance is only computed where the bounds "
       "cannot show that it exceeds d.");
   m.def("stats", &stats_dict,

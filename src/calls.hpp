@@ -3,8 +3,10 @@
 #pragma once
 
 #include "pairs.hpp"
+#include "parallel.hpp"
 #include "shapes.hpp"
 
+#include <chrono>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -52,6 +54,7 @@ template <class Real> struct Call {
   const Shape& a;
   const Shape& b;
   const Shape* limit = nullptr;
+  int workers = 1;  // threads for a batch (run_in_chunks)
 
   bool reversed() const { return table.reversed[a.kind][b.kind]; }
   Request<Real> request() const {
@@ -68,9 +71,24 @@ template <class Real> struct Call {
                            kind_name(b.kind));
     return fn;
   }
-  static void run(KernelFn<Real> fn, const Request<Real>& r) {
-    py::gil_scoped_release release;
-    fn(r);
+  // The batch in chunks on `workers` threads, the GIL released; Ctrl-C (a signal Python has seen,
+  // checked every 50 ms between the caller's chunks) stops it and raises KeyboardInterrupt.
+  void run(KernelFn<Real> fn, const Request<Real>& r) const {
+    bool complete;
+    {
+      py::gil_scoped_release release;
+      auto checked = std::chrono::steady_clock::now();
+      complete = run_in_chunks(
+          r.elements.size, workers, [&](Index begin, Index end) { fn(r, begin, end); },
+          [&] {
+            const auto now = std::chrono::steady_clock::now();
+            if (now - checked < std::chrono::milliseconds(50)) return false;
+            checked = now;
+            py::gil_scoped_acquire gil;
+            return PyErr_CheckSignals() != 0;
+          });
+    }
+    if (!complete) throw py::error_already_set();
   }
 
   // distance(), or distance_if_within() with a limit. A single query (every batch shape empty)
@@ -81,7 +99,7 @@ template <class Real> struct Call {
     if (r.elements.shape.empty()) {
       Real value;
       r.distance = &value;
-      fn(r);
+      fn(r, 0, 1);
       return scalar<Real>(value);
     }
     auto out = new_array<Real>(r.elements.shape, 0);
@@ -96,7 +114,7 @@ template <class Real> struct Call {
     if (r.elements.shape.empty()) {
       bool value;
       r.flag = &value;
-      fn(r);
+      fn(r, 0, 1);
       return py::bool_(value);
     }
     auto out = new_array<bool>(r.elements.shape, 0);

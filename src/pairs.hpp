@@ -75,43 +75,44 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
   static Swept<A> first(const Request<Real>& r, Fields f) { return {first_core(r, f), *f[r.b_at - 1]}; }
   static Swept<B> second(const Request<Real>& r, Fields f) { return {second_core(r, f), *f[r.limit_at - 1]}; }
 
-  static void distance(const Request<Real>& r) {
+  // Each kernel answers the elements [begin, end) of the request's batch.
+  static void distance(const Request<Real>& r, Index begin, Index end) {
     Real* out = r.distance;
     if (!r.swept) {
       r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
         out[i] = circledist::distance<Roots>(first_core(r, f), second_core(r, f));
-      });
+      }, begin, end);
     } else {
       r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
         out[i] = circledist::distance<Roots>(first(r, f), second(r, f));
-      });
+      }, begin, end);
     }
-    stats().distances += std::uint64_t(r.elements.size);
+    stats().distances += std::uint64_t(end - begin);
   }
 
   // effects.hpp over the broadcast of a, b and the limits d.
-  static void within(const Request<Real>& r) {
+  static void within(const Request<Real>& r, Index begin, Index end) {
     bool* out = r.flag;
     r.elements.template for_each<kFields + 1>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
       out[i] = circledist::within<Roots>(first(r, f), second(r, f), *f[r.limit_at]);
-    });
+    }, begin, end);
   }
-  static void distance_if_within(const Request<Real>& r) {
+  static void distance_if_within(const Request<Real>& r, Index begin, Index end) {
     Real* out = r.distance;
     r.elements.template for_each<kFields + 1>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
       out[i] = circledist::distance_if_within<Roots>(first(r, f), second(r, f), *f[r.limit_at]);
-    });
+    }, begin, end);
   }
 
-  static void closest(const Request<Real>& r) {
+  static void closest(const Request<Real>& r, Index begin, Index end) {
     r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
       r.store(i, circledist::closest_points<Roots>(first(r, f), second(r, f)));
-    });
-    stats().closest_points += std::uint64_t(r.elements.size);
+    }, begin, end);
+    stats().closest_points += std::uint64_t(end - begin);
   }
 };
 
-template <class Real> using KernelFn = void (*)(const Request<Real>&);
+template <class Real> using KernelFn = void (*)(const Request<Real>&, Index begin, Index end);
 
 // The pairs of one precision and root policy, indexed by the kinds of both arguments in the
 // caller's order; `reversed` where the entry is the (B, A) kernel's, run with the operands swapped.

@@ -40,6 +40,27 @@ struct Stats {
   std::uint64_t culled = 0;
 };
 
+// Counters add up: a program that answers on several threads adds each thread's counts (the
+// difference of its stats() after and before) to the caller's.
+inline Stats& operator+=(Stats& a, const Stats& b) {
+  a.solves += b.solves;
+  a.distances += b.distances;
+  a.closest_points += b.closest_points;
+  a.within += b.within;
+  a.decided_by_bounds += b.decided_by_bounds;
+  a.culled += b.culled;
+  return a;
+}
+inline Stats operator-(Stats a, const Stats& b) {
+  a.solves -= b.solves;
+  a.distances -= b.distances;
+  a.closest_points -= b.closest_points;
+  a.within -= b.within;
+  a.decided_by_bounds -= b.decided_by_bounds;
+  a.culled -= b.culled;
+  return a;
+}
+
 // The calling thread's counters.
 inline Stats& stats() {
   static thread_local Stats s;

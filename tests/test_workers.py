@@ -1,0 +1,127 @@
+"""Batches on several threads (workers=): the same answers to the bit for every worker count,
+counters that add up, Ctrl-C that stops a long batch, and a clear error for a bad count."""
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import zlib
+
+import numpy as np
+import pytest
+
+cd = pytest.importorskip("circledist")
+
+N = 3000  # several chunks per thread (chunks hold 256 elements at least)
+WORKERS = (2, 3, -1)
+
+
+def _fields(kind, n, rng):
+    if kind == "Point":
+        return [rng.normal(size=(n, 3))]
+    if kind in ("Line", "Ray", "Segment"):
+        return [rng.normal(size=(n, 3)), rng.normal(size=(n, 3))]
+    if kind in ("Circle", "Disk"):
+        return [rng.normal(size=(n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 2.0, n)]
+    return [rng.normal(size=(n, 4, 3))]
+
+
+def _pairs():
+    return sorted(tuple(p) for p in cd._core._query_kinds() if p[0] <= p[1])
+
+
+def _same(x, y):
+    x, y = np.asarray(x), np.asarray(y)
+    assert x.dtype == y.dtype and x.shape == y.shape
+    assert np.array_equal(x, y, equal_nan=True)
+
+
+def _answers(a, b, d, **opts):
+    r = cd.closest_points(a, b, **opts)
+    return [cd.distance(a, b, **opts), cd.within(a, b, d, **opts), cd.distance_if_within(a, b, d, **opts),
+            cd.intersects(a, b, **opts), r.distance, r.point_a, r.point_b, r.param_a, r.param_b, r.unique]
+
+
+@pytest.mark.parametrize("pair", _pairs(), ids="-".join)
+def test_every_worker_count_gives_the_same_bits(pair):
+    rng = np.random.default_rng(zlib.crc32("-".join(pair).encode()))
+    n = N if "Bezier" not in pair else N // 4
+    a = getattr(cd, pair[0])(*_fields(pair[0], n, rng), sweep=rng.uniform(0, 0.2, n))
+    b = getattr(cd, pair[1])(*_fields(pair[1], n, rng))
+    d = rng.uniform(0.0, 2.0, n)
+    for solver in (None, "companion", "polished", "eigen"):
+        for precision in ("float32", "float64", "longdouble") if solver is None else ("float64",):
+            one = _answers(a, b, d, solver=solver, precision=precision)
+            for workers in WORKERS:
+                for got, want in zip(_answers(a, b, d, solver=solver, precision=precision, workers=workers), one):
+                    _same(got, want)
+
+
+def test_gathered_broadcast_on_several_threads():
+    """An (n, 1) against (m,) broadcast walks an odometer that each thread starts mid-batch."""
+    rng = np.random.default_rng(5)
+    n, m = 37, 211  # chunks start at odd places of the odometer
+    lines = cd.Line(rng.normal(size=(n, 1, 3)), rng.normal(size=(n, 1, 3)))
+    rings = cd.Circle(rng.normal(size=(m, 3)), rng.normal(size=(m, 3)), rng.uniform(0.5, 2, m))
+    full_lines = cd.Line(np.repeat(lines.origin, m, axis=1), np.repeat(lines.direction, m, axis=1))
+    want = cd.distance(full_lines, rings)  # every field full size: the linear path, one thread
+    for workers in (1, 2, 5):
+        _same(cd.distance(lines, rings, workers=workers), want)
+        got, ref = cd.closest_points(lines, rings, workers=workers), cd.closest_points(full_lines, rings)
+        _same(got.point_a, ref.point_a)
+        _same(got.param_b, ref.param_b)
+
+
+def test_counters_add_up_across_threads():
+    rng = np.random.default_rng(6)
+    a = cd.Circle(rng.normal(size=(N, 3)), rng.normal(size=(N, 3)), rng.uniform(0.5, 2, N))
+    b = cd.Disk(rng.normal(size=(N, 3)), rng.normal(size=(N, 3)), rng.uniform(0.5, 2, N))
+    counts = []
+    for workers in (1, 2, -1):
+        cd.reset_stats()
+        cd.distance(a, b, workers=workers)
+        cd.closest_points(a, b, workers=workers)
+        cd.within(a, b, 0.5, workers=workers)
+        counts.append(cd.stats())
+    assert counts[0]["distances"] > N and counts[0]["closest_points"] == N and counts[0]["within"] == N
+    assert counts[0]["solves"] > 0
+    assert counts[1] == counts[0] and counts[2] == counts[0]
+
+
+@pytest.mark.parametrize("workers", [0, -2, -10])
+def test_bad_worker_count_is_a_value_error(workers):
+    p = cd.Point(np.zeros((10, 3)))
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    for call in (lambda: cd.distance(p, ring, workers=workers), lambda: cd.closest_points(p, ring, workers=workers),
+                 lambda: cd.within(p, ring, 1.0, workers=workers), lambda: cd.intersects(p, ring, workers=workers),
+                 lambda: cd.distance_if_within(p, ring, 1.0, workers=workers)):
+        with pytest.raises(ValueError, match=f"workers must be a positive integer or -1.*got {workers}"):
+            call()
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
+@pytest.mark.parametrize("workers", [1, 2])
+def test_ctrl_c_stops_a_long_batch(workers):
+    """SIGINT 0.3 s into a batch of many seconds: KeyboardInterrupt within half a second."""
+    script = textwrap.dedent(f"""
+        import os, signal, threading, time
+        import numpy as np
+        import circledist as cd
+        rng = np.random.default_rng(1)
+        n = 400_000  # Bezier-disk: about 10 us each, seconds of work on any core count here
+        curves = cd.Bezier(rng.normal(size=(n, 4, 3)))
+        disks = cd.Disk(rng.normal(size=(n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.5, 2, n))
+        threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        start = time.perf_counter()
+        try:
+            cd.distance(curves, disks, workers={workers})
+            print("finished", time.perf_counter() - start)
+        except KeyboardInterrupt:
+            print("interrupted", time.perf_counter() - start)
+    """)
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    outcome, seconds = out.stdout.split()
+    assert outcome == "interrupted", out.stdout
+    assert float(seconds) < 0.3 + 0.5, out.stdout
