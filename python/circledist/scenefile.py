@@ -139,6 +139,10 @@ class SceneFile:
         """name -> library shape, a batch as one batched shape under the batch's name."""
         return {e.name: e.shape() for e in self.entries}
 
+    def queries_as_written(self) -> list:
+        """The queries as a file states them (no absent keys): for write_scene."""
+        return [{k: v for k, v in q.items() if v is not None} for q in self.queries]
+
     def lookup(self, reference: str):
         """(entry, index) for 'name' (index None) or 'name[i]'; KeyError if there is no such shape."""
         m = _REFERENCE.match(reference)
@@ -293,6 +297,14 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
             for key in ("a", "b", "k"):
                 if key in spec:
                     raise fail(key, "not expected: pairs_within takes no shapes and no k")
+            kinds = sorted({e.class_name for e in entries})
+            for i_kind, ka in enumerate(kinds):
+                for kb in kinds[i_kind:]:
+                    single = ka == kb and sum(1 if e.count is None else e.count
+                                              for e in entries if e.class_name == ka) < 2
+                    if not single and (ka, kb) not in supported:
+                        raise fail("effects", f"expected a scene whose every pair of kinds has a query: none "
+                                              f"exists between a {ka} and a {kb}")
         else:
             if "a" not in spec:
                 raise fail(None, "missing field 'a' (the shape the query is about)")
@@ -441,7 +453,7 @@ def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where:
     if bad.any():
         at = np.unravel_index(int(np.argmax(bad)), bad.shape) if bad.ndim else ()
         what = "a finite number >= 0" if role == "length" else "a finite number"
-        raise _error(file, _npz_index(where, at), f"expected {what}, got {array[at]!r}")
+        raise _error(file, _npz_index(where, at), f"expected {what}, got {float(array[at])!r}")
     if role == "direction":
         _check_directions(array, file, where, _npz_index)
     return _column(array, role, count, file, where, "rows")
@@ -451,82 +463,89 @@ def scene_from_npz(path: str, file: Optional[str] = None) -> SceneFile:
     """Validates a .npz scene; `file` is the name messages give (default: path)."""
     file = path if file is None else file
     try:
-        npz = np.load(path, allow_pickle=False)
+        handle = open(path, "rb")  # ours to close: np.load leaks the file it opens when it is no zip
     except OSError as e:
-        raise SceneFileError(f"{file}: cannot read the scene file: {e.strerror or e}") from None
-    except (ValueError, zipfile.BadZipFile, EOFError) as e:
-        raise SceneFileError(f"{file}: not a NumPy .npz file: {e}") from None
-    if not isinstance(npz, np.lib.npyio.NpzFile):
-        raise SceneFileError(f"{file}: not a NumPy .npz file: it holds one array, not named arrays")
-    with npz:
-        names = set(npz.files)
-        arrays = _LazyArrays(npz, file)
-        fmt = _npz_string(arrays, "format", file)
-        if fmt != FORMAT:
-            raise _error(file, "array 'format'", f"expected \"{FORMAT}\", got {shown(fmt)}")
-        version = _npz_integer(arrays, "version", file)
-        if version is None:
-            raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads version {VERSION})")
-        if version > VERSION:
-            raise _error(file, "array 'version'", f"version {version} is newer than this circledist reads "
-                                                  f"(version {VERSION}): upgrade circledist")
-        if version != VERSION:
-            raise _error(file, "array 'version'", f"expected {VERSION}, got {version}")
-        description = _npz_string(arrays, "description", file, required=False) or ""
-        if "shapes" not in names:
-            raise _error(file, "array 'shapes'", "missing (a 1-d string array of the shapes' names, in order)")
-        order = arrays["shapes"]
-        if order.dtype.kind != "U" or order.ndim != 1 or len(order) == 0:
-            raise _error(file, "array 'shapes'", f"expected a non-empty 1-d string array of names, "
-                                                 f"got dtype {order.dtype} shape {order.shape}")
-        order = [str(n) for n in order]
-        name_error = _validator().first_error
-        for i, n in enumerate(order):
-            if name_error(n, {"$ref": "#/$defs/name"}):
-                raise _error(file, f"array 'shapes' at index {i}",
-                             f"expected a non-empty name without '[', ']' or '/', got {shown(n)}")
-        _check_names(order, file, lambda i: f"array 'shapes' at index {i}")
-        known = set(_NPZ_TOP)
-        entries = []
-        for name in order:
-            kind = _npz_string(arrays, f"{name}/kind", file)
-            if kind not in KINDS:
-                raise _error(file, f"array '{name}/kind'", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
-            count = _npz_integer(arrays, f"{name}/count", file)
-            if count is not None and count < 1:
-                raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
-            roles = dict(KINDS[kind][1], sweep="length")
-            known |= {f"{name}/kind", f"{name}/count"} | {f"{name}/{f}" for f in roles}
-            fields = {}
-            for f, role in roles.items():
-                key = f"{name}/{f}"
-                if key not in names:
-                    if f != "sweep":
-                        raise _error(file, f"array {key!r}", f"missing (a {kind} needs {', '.join(KINDS[kind][1])})")
-                    fields[f] = np.zeros(()) if count is None else np.zeros(count)
-                    continue
-                fields[f] = _npz_field(arrays[key], role, count, file, f"array {key!r}")
-            entry = ShapeEntry(name, kind, count, fields)
-            try:
-                entry.shape()
-            except ValueError as e:
-                raise _error(file, f"arrays '{name}/...'", str(e)) from None
-            entries.append(entry)
-        for key in sorted(names - known):
-            raise _error(file, f"array {key!r}", "unknown: not a field of a shape listed in 'shapes' nor one of "
-                                                 + ", ".join(_NPZ_TOP))
-        queries = []
-        text = _npz_string(arrays, "queries", file, required=False)
-        if text is not None:
-            where = "array 'queries'"
-            try:
-                specs = json.loads(text, parse_constant=_not_json_constant)
-            except ValueError as e:
-                raise _error(file, where, f"expected the JSON text of a list of queries: {e}") from None
-            error = _validator().first_error({"queries": specs}, {"properties": schema()["properties"]})
-            if error:
-                raise _error(file, f"{where}: {error[0]}", error[1])
-            queries = _check_queries(specs, entries, file, prefix=f"{where}: ")
+        raise SceneFileError(f"{file}: cannot read the scene file: {e.strerror}") from None
+    with handle:
+        try:
+            npz = np.load(handle, allow_pickle=False)
+        except (ValueError, OSError, zipfile.BadZipFile, EOFError) as e:
+            raise SceneFileError(f"{file}: not a NumPy .npz file: {e}") from None
+        if not isinstance(npz, np.lib.npyio.NpzFile):
+            raise SceneFileError(f"{file}: not a NumPy .npz file: it holds one array, not named arrays")
+        with npz:
+            return _scene_from_npz(npz, file)
+
+
+def _scene_from_npz(npz, file: str) -> SceneFile:
+    names = set(npz.files)
+    arrays = _LazyArrays(npz, file)
+    fmt = _npz_string(arrays, "format", file)
+    if fmt != FORMAT:
+        raise _error(file, "array 'format'", f"expected \"{FORMAT}\", got {shown(fmt)}")
+    version = _npz_integer(arrays, "version", file)
+    if version is None:
+        raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads version {VERSION})")
+    if version > VERSION:
+        raise _error(file, "array 'version'", f"version {version} is newer than this circledist reads "
+                                              f"(version {VERSION}): upgrade circledist")
+    if version != VERSION:
+        raise _error(file, "array 'version'", f"expected {VERSION}, got {version}")
+    description = _npz_string(arrays, "description", file, required=False) or ""
+    if "shapes" not in names:
+        raise _error(file, "array 'shapes'", "missing (a 1-d string array of the shapes' names, in order)")
+    order = arrays["shapes"]
+    if order.dtype.kind != "U" or order.ndim != 1 or len(order) == 0:
+        raise _error(file, "array 'shapes'", f"expected a non-empty 1-d string array of names, "
+                                             f"got dtype {order.dtype} shape {order.shape}")
+    order = [str(n) for n in order]
+    name_error = _validator().first_error
+    for i, n in enumerate(order):
+        if name_error(n, {"$ref": "#/$defs/name"}):
+            raise _error(file, f"array 'shapes' at index {i}",
+                         f"expected a non-empty name without '[', ']' or '/', got {shown(n)}")
+    _check_names(order, file, lambda i: f"array 'shapes' at index {i}")
+    known = set(_NPZ_TOP)
+    entries = []
+    for name in order:
+        kind = _npz_string(arrays, f"{name}/kind", file)
+        if kind not in KINDS:
+            raise _error(file, f"array '{name}/kind'", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
+        count = _npz_integer(arrays, f"{name}/count", file)
+        if count is not None and count < 1:
+            raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
+        roles = dict(KINDS[kind][1], sweep="length")
+        known |= {f"{name}/kind", f"{name}/count"} | {f"{name}/{f}" for f in roles}
+        fields = {}
+        for f, role in roles.items():
+            key = f"{name}/{f}"
+            if key not in names:
+                if f != "sweep":
+                    raise _error(file, f"array {key!r}", f"missing (a {kind} needs {', '.join(KINDS[kind][1])})")
+                fields[f] = np.zeros(()) if count is None else np.zeros(count)
+                continue
+            fields[f] = _npz_field(arrays[key], role, count, file, f"array {key!r}")
+        entry = ShapeEntry(name, kind, count, fields)
+        try:
+            entry.shape()
+        except ValueError as e:
+            raise _error(file, f"arrays '{name}/...'", str(e)) from None
+        entries.append(entry)
+    for key in sorted(names - known):
+        raise _error(file, f"array {key!r}", "unknown: not a field of a shape listed in 'shapes' nor one of "
+                                             + ", ".join(_NPZ_TOP))
+    queries = []
+    text = _npz_string(arrays, "queries", file, required=False)
+    if text is not None:
+        where = "array 'queries'"
+        try:
+            specs = json.loads(text, parse_constant=_not_json_constant)
+        except ValueError as e:
+            raise _error(file, where, f"expected the JSON text of a list of queries: {e}") from None
+        error = _validator().first_error({"queries": specs}, {"properties": schema()["properties"]})
+        if error:
+            raise _error(file, f"{where}: {error[0]}", error[1])
+        queries = _check_queries(specs, entries, file, prefix=f"{where}: ")
     return SceneFile(file, description, entries, queries)
 
 
@@ -585,8 +604,11 @@ def _entries_of(shapes, file: str) -> list:
         for f, role in dict(KINDS[kind][1], sweep="length").items():
             a = np.asarray(getattr(shape, f), dtype=np.float64)
             trailing = a.shape[a.ndim - _TRAILING_DIMS[role]:] if _TRAILING_DIMS[role] else ()
-            if count is not None and a.ndim > len(trailing):  # a column: one row per shape, C order
+            if count is not None:  # a column: one row per shape, C order; one value if all rows agree
                 a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
+                bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
+                if (bits == bits[:1]).all():
+                    a = a[0]
             fields[f] = a
         if not np.any(fields["sweep"]):
             del fields["sweep"]
