@@ -385,3 +385,20 @@ def test_million_shape_npz_scene(tmp_path):
     print(f"10^6 points: write {written - start:.2f} s, read {read - written:.2f} s, "
           f"CLI read + answer {answered - read:.2f} s")
     assert read - written < 2.0  # vectorized checks: no per-shape Python work
+
+
+def test_plot_draws_batches_and_refuses_huge_scenes(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    path = tmp_path / "batches.json"
+    path.write_text(json.dumps(BATCH_SCENE))
+    png = tmp_path / "batches.png"
+    assert cli.main([str(path), "--plot", str(png)]) == 0
+    assert png.read_bytes()[:4] == b"\x89PNG"
+    big = tmp_path / "big.npz"
+    sf.write_scene(big, {"dust": cd.Point(np.arange(3.0 * (cli.PICTURE_LIMIT + 1)).reshape(-1, 3))})
+    capsys.readouterr()
+    assert cli.main([str(big), "--plot", str(tmp_path / "big.png")]) == 1
+    err = capsys.readouterr().err
+    assert err == (f"circledist: --plot draws at most {cli.PICTURE_LIMIT} shapes, {big} holds "
+                   f"{cli.PICTURE_LIMIT + 1}; use --no-plot\n")
+    assert not (tmp_path / "big.png").exists()

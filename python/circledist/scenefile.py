@@ -358,12 +358,12 @@ def _check_format(data: dict, file: str, prefix: str = "$") -> None:
     """The format marker and version, checked before the schema: a newer version is reported as
     such, not as whatever its new content breaks in version 1."""
     fmt, version = data.get("format"), data.get("version")
-    if fmt is None:
+    if "format" not in data:
         raise _error(file, prefix, f"missing field 'format': a circledist scene starts with "
                                    f"\"format\": \"{FORMAT}\", \"version\": {VERSION}")
     if fmt != FORMAT:
         raise _error(file, member(prefix, "format"), f"expected \"{FORMAT}\", got {shown(fmt)}")
-    if version is None:
+    if "version" not in data:
         raise _error(file, prefix, f"missing field 'version' (this circledist reads version {VERSION})")
     if isinstance(version, (int, float)) and not isinstance(version, bool) and version > VERSION \
             and float(version).is_integer():
