@@ -402,3 +402,29 @@ def test_plot_draws_batches_and_refuses_huge_scenes(tmp_path, capsys):
     assert err == (f"circledist: --plot draws at most {cli.PICTURE_LIMIT} shapes, {big} holds "
                    f"{cli.PICTURE_LIMIT + 1}; use --no-plot\n")
     assert not (tmp_path / "big.png").exists()
+
+
+def test_installed_package_holds_every_file_of_the_source_package():
+    """The wheel packages python/circledist whole: the schema and the demo scene are read through
+    importlib.resources from wherever circledist is installed."""
+    import os
+
+    source = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python", "circledist")
+    if not os.path.isdir(source):
+        pytest.skip("no source tree next to the tests")
+    wanted = set()
+    for folder, dirs, files in os.walk(source):
+        dirs[:] = [d for d in dirs if d != "__pycache__"]
+        wanted |= {os.path.relpath(os.path.join(folder, f), source) for f in files if not f.endswith((".so", ".pyc"))}
+    installed = set()
+
+    def walk(node, prefix=""):
+        for child in node.iterdir():
+            if child.is_dir():
+                walk(child, f"{prefix}{child.name}/")
+            else:
+                installed.add(prefix + child.name)
+
+    walk(resources.files("circledist"))
+    assert {"scene.schema.json", "_schema.py", "scenefile.py", os.path.join("scenes", "demo.json")} <= wanted
+    assert wanted <= installed, sorted(wanted - installed)
