@@ -93,31 +93,39 @@ class Validator:
     def __init__(self, schema: dict):
         check_keywords(schema)
         self.root = schema
+        self._resolved: dict = {}
 
     def _resolve(self, ref: str) -> Any:
+        if ref in self._resolved:
+            return self._resolved[ref]
         if not ref.startswith("#/"):
             raise ValueError(f"only local $ref are implemented, got {ref!r}")
         node = self.root
         for part in ref[2:].split("/"):
             node = node[part.replace("~1", "/").replace("~0", "~")]
+        self._resolved[ref] = node
         return node
 
     def first_error(self, value: Any, schema: Any = None, path: str = "$") -> Optional[Error]:
         """The first violation of `schema` (default: the root) by `value`, or None."""
         return self._check(value, self.root if schema is None else schema, path)
 
-    def _check(self, value: Any, schema: Any, path: str) -> Optional[Error]:
+    def _check(self, value: Any, schema: Any, path: str, explain: bool = True) -> Optional[Error]:
+        """The first violation; explain=False (an "if" only asks whether there is one) skips
+        composing the message."""
         if schema is True:
             return None
         if schema is False:
             return path, "not allowed here"
 
         def expected(generic: str) -> Error:
+            if not explain:
+                return path, ""
             what = schema.get("title") or generic
             return path, f"expected {what}, got {shown(value)}"
 
         if "$ref" in schema:
-            error = self._check(value, self._resolve(schema["$ref"]), path)
+            error = self._check(value, self._resolve(schema["$ref"]), path, explain)
             if error:
                 return error
         if "type" in schema:
@@ -140,7 +148,7 @@ class Validator:
                 return expected(f"an array of at most {schema['maxItems']} items")
             if "items" in schema:
                 for i, item in enumerate(value):
-                    error = self._check(item, schema["items"], f"{path}[{i}]")
+                    error = self._check(item, schema["items"], f"{path}[{i}]", explain)
                     if error:
                         return error
             if schema.get("uniqueItems"):
@@ -157,7 +165,7 @@ class Validator:
             properties = schema.get("properties", {})
             for key, sub in properties.items():
                 if key in value:
-                    error = self._check(value[key], sub, member(path, key))
+                    error = self._check(value[key], sub, member(path, key), explain)
                     if error:
                         return error
             if "additionalProperties" in schema:
@@ -167,17 +175,17 @@ class Validator:
                         continue
                     if extra is False:
                         return member(path, key), f"unknown field (allowed: {', '.join(properties)})"
-                    error = self._check(value[key], extra, member(path, key))
+                    error = self._check(value[key], extra, member(path, key), explain)
                     if error:
                         return error
         for sub in schema.get("allOf", ()):
-            error = self._check(value, sub, path)
+            error = self._check(value, sub, path, explain)
             if error:
                 return error
         if "if" in schema:
-            branch = "then" if self._check(value, schema["if"], path) is None else "else"
+            branch = "then" if self._check(value, schema["if"], path, explain=False) is None else "else"
             if branch in schema:
-                error = self._check(value, schema[branch], path)
+                error = self._check(value, schema[branch], path, explain)
                 if error:
                     return error
         return None
