@@ -385,6 +385,17 @@ def test_million_shape_npz_scene(tmp_path):
     print(f"10^6 points: write {written - start:.2f} s, read {read - written:.2f} s, "
           f"CLI read + answer {answered - read:.2f} s")
     assert read - written < 2.0  # vectorized checks: no per-shape Python work
+    # A bad value deep in a column is found, with its index, as fast.
+    with np.load(path) as npz:
+        arrays = dict(npz)
+    arrays["dust/p"] = arrays["dust/p"].copy()
+    arrays["dust/p"][765432, 1] = np.inf
+    bad = _npz(tmp_path, arrays, "bad.npz")
+    start = time.perf_counter()
+    with pytest.raises(sf.SceneFileError) as error:
+        sf.read_scene(bad)
+    assert time.perf_counter() - start < 2.0
+    assert str(error.value) == f"{bad}: array 'dust/p' at index 765432, 1: expected a finite number, got inf"
 
 
 def test_plot_draws_batches_and_refuses_huge_scenes(tmp_path, capsys):

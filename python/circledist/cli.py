@@ -50,7 +50,7 @@ FORMAT_HELP = """scene files, format version 1; JSON Schema: {schema}
   scene: nearest ("k", default 1), within ("d"), intersects. {{"effects": ["pairs_within"],
   "d": ...}} lists every pair of shapes within d.
 
-  .npz scenes (numpy.savez; circledist.scenefile.write_scene writes both forms) hold the same:
+  .npz scenes (numpy.savez; circledist.write_scene writes both forms) hold the same content:
   format (0-d str), version (0-d int), description (0-d str, optional), shapes (1-d str: the
   entries' names in order), per entry <name>/kind (0-d str), <name>/count (0-d int, batches
   only) and <name>/<field> (float arrays: [count or 1 rows] + (3,) for vectors, () for numbers,
