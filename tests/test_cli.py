@@ -14,6 +14,8 @@ cd = pytest.importorskip("circledist")
 cli = pytest.importorskip("circledist.cli")
 
 SCENE = {
+    "format": "circledist-scene",
+    "version": 1,
     "description": "test scene",
     "shapes": [
         {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
@@ -96,50 +98,101 @@ def test_plot(tmp_path):
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000
 
 
+HEAD = {"format": "circledist-scene", "version": 1}
+# (label, file content, the JSON path, what was expected): each must appear in the one-line message.
 BAD = [
-    ("not json", "{", "not valid JSON"),
-    ("no shapes", {"queries": []}, "field 'shapes'"),
-    ("bad radius", {"shapes": [{"name": "r", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
-                                "radius": -1}]}, "shape 'r': field 'radius': must be >= 0"),
-    ("missing field", {"shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "radius": 1}]},
-     "shape 'r': field 'normal': missing"),
-    ("zero normal", {"shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, 0],
-                                 "radius": 1}]}, "shape 'r': field 'normal': must not be the zero vector"),
-    ("unknown kind", {"shapes": [{"name": "x", "kind": "torus"}]}, "shape 'x': field 'kind'"),
-    ("unknown field", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "colour": "red"}]},
-     "shape 'p': field 'colour': unknown"),
-    ("short vector", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0]}]},
-     "shape 'p': field 'p': must be a list of 3 numbers"),
-    ("negative sweep", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "sweep": -2}]},
-     "shape 'p': field 'sweep'"),
-    ("duplicate name", {"shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0]},
-                                   {"name": "p", "kind": "point", "p": [1, 0, 0]}]}, "shape 'p': field 'name'"),
-    ("bad bezier", {"shapes": [{"name": "c", "kind": "bezier", "control_points": [[0, 0, 0]]}]},
-     "shape 'c': field 'control_points'"),
-    ("unknown shape in query", {"shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "nope",
-                                                                        "effects": ["distance"]}]},
-     "queries[0]: field 'b': no shape named \"nope\""),
-    ("unknown effect", {"shapes": SCENE["shapes"], "queries": [{"name": "q", "a": "ring", "b": "rail",
-                                                                "effects": ["volume"]}]},
-     "query 'q': field 'effects': 'volume'"),
-    ("within without d", {"shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "rail", "effects": ["within"]}]},
-     "queries[0]: field 'd': missing"),
-    ("no query for the pair", {"shapes": SCENE["shapes"], "queries": [{"a": "cable", "b": "probe",
-                                                                       "effects": ["distance"]}]},
-     "queries[0]: field 'b': circledist has no query between a Bezier and a Segment"),
-    ("bad k", {"shapes": SCENE["shapes"], "queries": [{"a": "ring", "effects": ["nearest"], "k": 0}]},
-     "queries[0]: field 'k'"),
+    ("not json", "{", "", "not valid JSON: Expecting property name"),
+    ("NaN is not JSON", '{"format": "circledist-scene", "version": 1, "x": NaN}', "", "NaN is not a JSON number"),
+    ("not an object", "[1, 2]", "$", "expected an object"),
+    ("no format", {"shapes": SCENE["shapes"]}, "$", "missing field 'format'"),
+    ("wrong format", {"format": "scene", "version": 1, "shapes": SCENE["shapes"]}, "$.format",
+     'expected "circledist-scene", got "scene"'),
+    ("no version", {"format": "circledist-scene", "shapes": SCENE["shapes"]}, "$",
+     "missing field 'version' (this circledist reads version 1)"),
+    ("newer version", {**HEAD, "version": 2, "shapes": SCENE["shapes"]}, "$.version",
+     "version 2 is newer than this circledist reads (version 1): upgrade circledist"),
+    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version", 'expected 1, got "1"'),
+    ("no shapes", {**HEAD, "queries": []}, "$", "missing field 'shapes'"),
+    ("bad radius", {**HEAD, "shapes": [{"name": "r", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
+                                        "radius": -1}]}, "$.shapes[0].radius (shape 'r')",
+     "expected a number >= 0, got -1"),
+    ("missing field", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "radius": 1}]},
+     "$.shapes[0] (shape 'r')", "missing field 'normal'"),
+    ("zero normal", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, 0],
+                                         "radius": 1}]}, "$.shapes[0].normal", "expected a non-zero vector"),
+    ("unknown kind", {**HEAD, "shapes": [{"name": "x", "kind": "torus"}]}, "$.shapes[0].kind (shape 'x')",
+     'expected one of "point", "line", "ray", "segment", "circle", "disk", "bezier", got "torus"'),
+    ("unknown field", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "colour": "red"}]},
+     "$.shapes[0].colour (shape 'p')", "unknown field (allowed: name, kind, count, p, sweep)"),
+    ("short vector", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0]}]},
+     "$.shapes[0].p (shape 'p')", "expected a vector of 3 numbers [x, y, z], got [0, 0]"),
+    ("string in vector", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, "1", 0]}]},
+     "$.shapes[0].p[1] (shape 'p')", 'expected a number, got "1"'),
+    ("overflowing number", '{"format": "circledist-scene", "version": 1, "shapes": [{"name": "p", "kind": "point", '
+                           '"p": [0, 1e400, 0]}]}', "$.shapes[0].p[1]", "expected a finite number"),
+    ("negative sweep", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "sweep": -2}]},
+     "$.shapes[0].sweep (shape 'p')", "expected a number >= 0, got -2"),
+    ("duplicate name", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0]},
+                                           {"name": "p", "kind": "point", "p": [1, 0, 0]}]}, "$.shapes[1].name",
+     'expected a name of its own, got "p"'),
+    ("bracket in name", {**HEAD, "shapes": [{"name": "p[0]", "kind": "point", "p": [0, 0, 0]}]},
+     "$.shapes[0].name", "expected a name: a non-empty string without '[', ']' or '/'"),
+    ("bad bezier", {**HEAD, "shapes": [{"name": "c", "kind": "bezier", "control_points": [[0, 0, 0]]}]},
+     "$.shapes[0].control_points (shape 'c')", "expected 2 to 8 control points"),
+    ("batch column too short", {**HEAD, "shapes": [{"name": "beads", "kind": "point", "count": 3,
+                                                    "p": [[0, 0, 0], [1, 0, 0]]}]},
+     "$.shapes[0].p", "expected 3 vectors (the batch's count) or 1, got 2"),
+    ("batch column not a column", {**HEAD, "shapes": [{"name": "beads", "kind": "point", "count": 2, "p": 5}]},
+     "$.shapes[0].p (shape 'beads')", "expected a vector [x, y, z] (one for all) or an array of count vectors, got 5"),
+    ("batch radius", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "count": 2, "center": [0, 0, 0],
+                                          "normal": [0, 0, 1], "radius": -1}]},
+     "$.shapes[0].radius (shape 'r')", "expected a number >= 0 (one for all) or an array of count of them, got -1"),
+    ("batch zero normal", {**HEAD, "shapes": [{"name": "rings", "kind": "circle", "count": 2, "center": [0, 0, 0],
+                                               "normal": [[0, 0, 1], [0, 0, 0]], "radius": 1}]},
+     "$.shapes[0].normal[1]", "expected a non-zero vector"),
+    ("batch curves of two degrees", {**HEAD, "shapes": [{"name": "c", "kind": "bezier", "count": 2, "control_points": [
+        [[0, 0, 0], [1, 0, 0]], [[0, 0, 0], [1, 0, 0], [2, 1, 0]]]}]},
+     "$.shapes[0].control_points[1]", "expected 2 control points as curve 0 has"),
+    ("bad count", {**HEAD, "shapes": [{"name": "b", "kind": "point", "count": 0, "p": [0, 0, 0]}]},
+     "$.shapes[0].count (shape 'b')", "expected the number of shapes in the batch: an integer >= 1, got 0"),
+    ("unknown shape in query", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "nope",
+                                                                                "effects": ["distance"]}]},
+     "$.queries[0].b", 'expected the name of a shape of the scene, got "nope"'),
+    ("whole batch in query", {**HEAD, "shapes": SCENE["shapes"] + [
+        {"name": "beads", "kind": "point", "count": 2, "p": [[0, 0, 0], [1, 0, 0]]}],
+        "queries": [{"a": "beads", "b": "ring", "effects": ["distance"]}]},
+     "$.queries[0].a", "expected one shape: 'beads' is a batch of 2, name one as beads[i] with i from 0 to 1"),
+    ("batch index out of range", {**HEAD, "shapes": SCENE["shapes"] + [
+        {"name": "beads", "kind": "point", "count": 2, "p": [[0, 0, 0], [1, 0, 0]]}],
+        "queries": [{"a": "beads[2]", "b": "ring", "effects": ["distance"]}]},
+     "$.queries[0].a", "expected an index from 0 to 1 (batch 'beads' has 2 shapes), got 2"),
+    ("unknown effect", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"name": "q", "a": "ring", "b": "rail",
+                                                                        "effects": ["volume"]}]},
+     "$.queries[0].effects[0]", 'expected one of "intersects"'),
+    ("scene effect on a pair", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "rail",
+                                                                                "effects": ["nearest"]}]},
+     "$.queries[0].effects", "expected effects against a pair (with 'b'): intersects, within, distance, "
+                             'closest_points; got "nearest"'),
+    ("within without d", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "rail",
+                                                                          "effects": ["within"]}]},
+     "$.queries[0]", "missing field 'd'"),
+    ("no query for the pair", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "cable", "b": "probe",
+                                                                               "effects": ["distance"]}]},
+     "$.queries[0].b", "none exists between a Bezier and a Segment"),
+    ("bad k", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "effects": ["nearest"], "k": 0}]},
+     "$.queries[0].k", "expected an integer >= 1, got 0"),
 ]
 
 
-@pytest.mark.parametrize("label,data,message", BAD, ids=[b[0] for b in BAD])
-def test_bad_scene_files(tmp_path, capsys, label, data, message):
+@pytest.mark.parametrize("label,data,where,message", BAD, ids=[b[0] for b in BAD])
+def test_bad_scene_files(tmp_path, capsys, label, data, where, message):
     path = write(tmp_path, data)
     out_json, out_png = tmp_path / "answers.json", tmp_path / "picture.png"
     status = cli.main([path, "--json", str(out_json), "--plot", str(out_png)])
     err = capsys.readouterr().err
     assert status == 2
-    assert path in err and message in err, err
+    assert err.startswith(f"circledist: error: {path}: {where}") and message in err, err
+    assert err.count("\n") == 1, err  # one line
     assert not out_json.exists() and not out_png.exists()
     assert sorted(os.listdir(tmp_path)) == ["scene.json"]  # nothing partial, no temporary files
 

@@ -21,6 +21,7 @@ from ._core import (
     within,
 )
 from .scene import Scene
+from .scenefile import SceneFileError, read_scene, write_scene
 
 __all__ = [
     "Bezier",
@@ -31,6 +32,7 @@ __all__ = [
     "Point",
     "Ray",
     "Scene",
+    "SceneFileError",
     "Segment",
     "Shape",
     "__version__",
@@ -38,7 +40,9 @@ __all__ = [
     "distance",
     "distance_if_within",
     "intersects",
+    "read_scene",
     "reset_stats",
     "stats",
     "within",
+    "write_scene",
 ]

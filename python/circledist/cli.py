@@ -1,40 +1,10 @@
 """circledist's command line: answer the queries of a scene file.
 
-    python -m circledist [scene.json] [--json [PATH]] [--plot PATH | --no-plot]
-    circledist [scene.json] ...                       (the same, as a console script)
+    python -m circledist [scene.json | scene.npz] [--json [PATH]] [--plot PATH | --no-plot]
+    circledist [scene] ...                            (the same, as a console script)
 
 Without a scene file it runs the demo scene shipped in the package and draws it to
-circledist_demo.png (or the --plot path).
-
-Scene file (JSON):
-
-    {
-      "description": "optional text",
-      "shapes": [
-        {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1,
-         "sweep": 0.05},
-        {"name": "rail", "kind": "line", "origin": [-3, 1, 0.5], "direction": [1, 0, 0]},
-        ...
-      ],
-      "queries": [
-        {"a": "rail", "b": "ring", "effects": ["intersects", "within", "distance", "closest_points"],
-         "d": 0.6},
-        {"a": "ring", "effects": ["nearest"], "k": 2},
-        {"a": "ring", "effects": ["within"], "d": 0.5},
-        {"effects": ["pairs_within"], "d": 0.25}
-      ]
-    }
-
-Shape kinds and fields: point (p), line and ray (origin, direction), segment (p0, p1), circle and
-disk (center, normal, radius), bezier (control_points: 2 to 8 points); every kind takes an
-optional sweep >= 0 (a ball, capsule, cylinder, torus, rounded disk, tube).
-Queries: with "b", the effects intersects, within (needs "d"), distance and closest_points of
-the pair a-b, each computed on its own with only the work it needs. Without "b", against the
-rest of the scene: nearest ("k", default 1), within ("d"), intersects. {"effects":
-["pairs_within"], "d": ...} lists every pair of shapes within d.
-
-Errors in the file name the file, the shape or query and the field; nothing is written then,
-and the exit status is 2.
+circledist_demo.png (or the --plot path). The scene format: FORMAT_HELP below (--help prints it).
 """
 
 from __future__ import annotations
@@ -42,39 +12,59 @@ from __future__ import annotations
 import argparse
 import io
 import json
-import math
 import os
 import sys
 import tempfile
 from dataclasses import dataclass, field
 from importlib import resources
-from typing import Any
 
 import numpy as np
 
 from . import _core
-from .scene import Scene
+from .scenefile import SCHEMA_RESOURCE, SceneFile, SceneFileError, read_scene
+
+FORMAT_HELP = """scene files, format version 1; JSON Schema: {schema}
+
+  {{"format": "circledist-scene", "version": 1, "description": "optional text",
+   "shapes": [
+     {{"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1,
+      "sweep": 0.05}},
+     {{"name": "rail", "kind": "line", "origin": [-3, 1, 0.5], "direction": [1, 0, 0]}},
+     {{"name": "beads", "kind": "point", "count": 3, "p": [[0, 0, 2], [1, 0, 2], [2, 0, 2]],
+      "sweep": 0.1}}],
+   "queries": [
+     {{"a": "rail", "b": "ring", "effects": ["intersects", "within", "distance", "closest_points"],
+      "d": 0.6}},
+     {{"a": "beads[2]", "effects": ["nearest"], "k": 2}},
+     {{"a": "ring", "effects": ["within"], "d": 0.5}},
+     {{"effects": ["pairs_within"], "d": 0.25}}]}}
+
+  "format" and "version" are required (a file without them is refused: add the two fields).
+  Kinds and fields: point (p), line and ray (origin, direction), segment (p0, p1), circle and
+  disk (center, normal, radius), bezier (control_points: 2 to 8 points); every kind takes an
+  optional sweep >= 0 (a ball, capsule, cylinder, torus, rounded disk, tube).
+  A batch: an entry with "count": n whose fields are columns of n rows, or one value for all
+  (NumPy broadcasting); its shapes are named name[0] .. name[n-1] in queries and answers.
+  Queries: with "b", the effects intersects, within (needs "d"), distance and closest_points of
+  the pair a-b, each computed with only the work it needs. Without "b", against the rest of the
+  scene: nearest ("k", default 1), within ("d"), intersects. {{"effects": ["pairs_within"],
+  "d": ...}} lists every pair of shapes within d.
+
+  .npz scenes (numpy.savez; circledist.write_scene writes both forms) hold the same content:
+  format (0-d str), version (0-d int), description (0-d str, optional), shapes (1-d str: the
+  entries' names in order), per entry <name>/kind (0-d str), <name>/count (0-d int, batches
+  only) and <name>/<field> (float arrays: [count or 1 rows] + (3,) for vectors, () for numbers,
+  (m, 3) for control points), queries (0-d str: the JSON text of the query list).
+
+  A bad file: one line on stderr naming the file, the JSON path (or array and index) and what
+  was expected; nothing is written; exit status 2. Newer format versions are refused.
+"""
 
 DEMO_PICTURE = "circledist_demo.png"
 
-# kind -> (class name, required vector fields, required scalar fields)
-KINDS = {
-    "point": ("Point", ("p",), ()),
-    "line": ("Line", ("origin", "direction"), ()),
-    "ray": ("Ray", ("origin", "direction"), ()),
-    "segment": ("Segment", ("p0", "p1"), ()),
-    "circle": ("Circle", ("center", "normal"), ("radius",)),
-    "disk": ("Disk", ("center", "normal"), ("radius",)),
-    "bezier": ("Bezier", (), ()),
-}
-NONZERO = ("normal", "direction")
-PAIR_EFFECTS = ("intersects", "within", "distance", "closest_points")
-SCENE_EFFECTS = ("nearest", "within", "intersects")
-QUERY_KEYS = ("name", "a", "b", "effects", "d", "k")
-
-
-class SceneError(Exception):
-    """A problem with a scene file; the message names the file, the shape or query and the field."""
+# Bad files raise this; the message names the file, the JSON path (or .npz array) and what was expected.
+SceneError = SceneFileError
+PICTURE_LIMIT = 2000  # shapes --plot draws at most
 
 
 @dataclass
@@ -88,198 +78,36 @@ class Query:
     answers: dict = field(default_factory=dict)
 
 
-@dataclass
-class LoadedScene:
-    path: str
-    description: str
-    shapes: dict          # name -> circledist shape
-    specs: dict           # name -> validated JSON object of the shape
-    queries: list
+def _queries(scene: SceneFile) -> list[Query]:
+    out = []
+    for q in scene.queries:
+        if q["effects"] == ["pairs_within"]:
+            label = q["name"] or "pairs within"
+        else:
+            label = q["name"] or (f"{q['a']} ~ {q['b']}" if q["b"] is not None else f"{q['a']} ~ scene")
+        out.append(Query(label=label, a=q["a"], b=q["b"], effects=q["effects"], d=q["d"], k=q["k"] or 1))
+    return out
 
 
-# ------------------------------------------------------------------------------------------
-# loading and validation
-# ------------------------------------------------------------------------------------------
-def _number(value, where: str, *, minimum: float | None = None) -> float:
-    try:  # an integer literal of 400 digits is a Python int that no float holds
-        finite = not isinstance(value, bool) and isinstance(value, (int, float)) and math.isfinite(float(value))
-    except OverflowError:
-        finite = False
-    if not finite:
-        shown = json.dumps(value) if not isinstance(value, int) or abs(value) < 10**30 else f"an integer of {len(str(abs(value)))} digits"
-        raise SceneError(f"{where}: must be a finite number, got {shown}")
-    if minimum is not None and value < minimum:
-        raise SceneError(f"{where}: must be >= {minimum:g}, got {json.dumps(value)}")
-    return float(value)
-
-
-def _vector(value, where: str, *, nonzero: bool = False) -> list[float]:
-    if not isinstance(value, list) or len(value) != 3:
-        raise SceneError(f"{where}: must be a list of 3 numbers, got {json.dumps(value)}")
-    v = [_number(x, where) for x in value]
-    if nonzero and not any(v):
-        raise SceneError(f"{where}: must not be the zero vector")
-    return v
-
-
-def _shape(spec, index: int, path: str, names: set):
-    where = f"{path}: shapes[{index}]"
-    if not isinstance(spec, dict):
-        raise SceneError(f"{where}: must be an object with a name, a kind and its fields")
-    name = spec.get("name")
-    if not isinstance(name, str) or not name:
-        raise SceneError(f"{where}: field 'name': must be a non-empty string, got {json.dumps(name)}")
-    where = f"{path}: shape {name!r}"
-    if name in names:
-        raise SceneError(f"{where}: field 'name': the name is used by another shape")
-    kind = spec.get("kind")
-    if not isinstance(kind, str) or kind.lower() not in KINDS:
-        raise SceneError(f"{where}: field 'kind': must be one of {', '.join(KINDS)}, got {json.dumps(kind)}")
-    kind = kind.lower()
-    cls_name, vectors, scalars = KINDS[kind]
-    expected = {"name", "kind", "sweep", *vectors, *scalars} | ({"control_points"} if kind == "bezier" else set())
-    for key in spec:
-        if key not in expected:
-            raise SceneError(f"{where}: field {key!r}: unknown for a {kind} (its fields: "
-                             f"{', '.join(sorted(expected - {'name', 'kind'}))})")
-    args = []
-    for key in vectors:
-        if key not in spec:
-            raise SceneError(f"{where}: field {key!r}: missing")
-        args.append(_vector(spec[key], f"{where}: field {key!r}", nonzero=key in NONZERO))
-    for key in scalars:
-        if key not in spec:
-            raise SceneError(f"{where}: field {key!r}: missing")
-        args.append(_number(spec[key], f"{where}: field {key!r}", minimum=0))
-    if kind == "bezier":
-        cp = spec.get("control_points")
-        if not isinstance(cp, list) or not 2 <= len(cp) <= 8:
-            raise SceneError(f"{where}: field 'control_points': must be a list of 2 to 8 points, "
-                             f"got {json.dumps(cp)}")
-        args.append([_vector(p, f"{where}: field 'control_points'[{i}]") for i, p in enumerate(cp)])
-    sweep = _number(spec.get("sweep", 0), f"{where}: field 'sweep'", minimum=0)
-    try:
-        return getattr(_core, cls_name)(*args, sweep=sweep)
-    except ValueError as e:  # anything the library still refuses
-        raise SceneError(f"{where}: {e}") from None
-
-
-def _query(spec, index: int, path: str, shapes: dict, supported: set) -> Query:
-    where = f"{path}: queries[{index}]"
-    if not isinstance(spec, dict):
-        raise SceneError(f"{where}: must be an object with effects")
-    if "name" in spec:
-        if not isinstance(spec["name"], str):
-            raise SceneError(f"{where}: field 'name': must be a string, got {json.dumps(spec['name'])}")
-        where = f"{path}: query {spec['name']!r}"
-    for key in spec:
-        if key not in QUERY_KEYS:
-            raise SceneError(f"{where}: field {key!r}: unknown (query fields: {', '.join(QUERY_KEYS)})")
-    effects = spec.get("effects")
-    if not isinstance(effects, list) or not effects or not all(isinstance(e, str) for e in effects):
-        raise SceneError(f"{where}: field 'effects': must be a non-empty list of effect names, "
-                         f"got {json.dumps(effects)}")
-    if len(set(effects)) != len(effects):
-        raise SceneError(f"{where}: field 'effects': lists an effect twice")
-    a, b = spec.get("a"), spec.get("b")
-    for key, value in (("a", a), ("b", b)):
-        if value is not None and (not isinstance(value, str) or value not in shapes):
-            raise SceneError(f"{where}: field {key!r}: no shape named {json.dumps(value)} in the scene")
-    if effects == ["pairs_within"]:
-        if a is not None or b is not None:
-            raise SceneError(f"{where}: field {'a' if a is not None else 'b'!r}: pairs_within takes no shapes")
-        label = spec.get("name", "pairs within")
-    else:
-        if "pairs_within" in effects:
-            raise SceneError(f"{where}: field 'effects': pairs_within must be a query's only effect")
-        if a is None:
-            raise SceneError(f"{where}: field 'a': missing")
-        allowed = PAIR_EFFECTS if b is not None else SCENE_EFFECTS
-        for e in effects:
-            if e not in allowed:
-                against = f"the pair {a} - {b}" if b is not None else "the rest of the scene (no 'b')"
-                raise SceneError(f"{where}: field 'effects': {e!r} is not an effect against {against}; "
-                                 f"use {', '.join(allowed)}")
-        label = spec.get("name", f"{a} ~ {b}" if b is not None else f"{a} ~ scene")
-        ka = shapes[a].kind
-        others = [shapes[b].kind] if b is not None else [s.kind for n, s in shapes.items() if n != a]
-        for kb in others:
-            if (ka, kb) not in supported:
-                raise SceneError(f"{where}: field {'b' if b is not None else 'a'!r}: circledist has no query "
-                                 f"between a {ka} and a {kb}")
-    needs_d = "within" in effects or "pairs_within" in effects
-    d = None
-    if needs_d:
-        if "d" not in spec:
-            raise SceneError(f"{where}: field 'd': missing (the distance of within / pairs_within)")
-        d = _number(spec["d"], f"{where}: field 'd'", minimum=0)
-    elif "d" in spec:
-        raise SceneError(f"{where}: field 'd': only within and pairs_within take a distance")
-    k = 1
-    if "k" in spec:
-        if "nearest" not in effects:
-            raise SceneError(f"{where}: field 'k': only nearest takes k")
-        k = spec["k"]
-        if isinstance(k, bool) or not isinstance(k, int) or k < 1:
-            raise SceneError(f"{where}: field 'k': must be an integer >= 1, got {json.dumps(k)}")
-    return Query(label=label, a=a, b=b, effects=list(effects), d=d, k=k)
-
-
-def load_scene(path: str, text: str | None = None) -> LoadedScene:
-    """Reads and validates a scene file (or its text); raises SceneError."""
-    if text is None:
-        try:
-            with open(path, encoding="utf-8") as f:
-                text = f.read()
-        except OSError as e:
-            raise SceneError(f"{path}: cannot read the scene file: {e.strerror}") from None
-        except UnicodeDecodeError as e:
-            raise SceneError(f"{path}: not a UTF-8 text file (byte {e.start}: {e.reason})") from None
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as e:
-        raise SceneError(f"{path}: not valid JSON: {e.msg} at line {e.lineno}, column {e.colno}") from None
-    except RecursionError:
-        raise SceneError(f"{path}: not a scene: JSON nested too deeply") from None
-    except ValueError as e:  # e.g. an integer literal past Python's digit limit
-        raise SceneError(f"{path}: not valid JSON: {e}") from None
-    if not isinstance(data, dict):
-        raise SceneError(f"{path}: the scene must be a JSON object with 'shapes' and 'queries'")
-    for key in data:
-        if key not in ("description", "shapes", "queries"):
-            raise SceneError(f"{path}: field {key!r}: unknown (scene fields: description, shapes, queries)")
-    description = data.get("description", "")
-    if not isinstance(description, str):
-        raise SceneError(f"{path}: field 'description': must be a string")
-    specs = data.get("shapes")
-    if not isinstance(specs, list) or not specs:
-        raise SceneError(f"{path}: field 'shapes': must be a non-empty list of shapes")
-    shapes, by_name = {}, {}
-    for i, spec in enumerate(specs):
-        shape = _shape(spec, i, path, set(shapes))
-        shapes[spec["name"]] = shape
-        by_name[spec["name"]] = spec
-    qspecs = data.get("queries", [])
-    if not isinstance(qspecs, list):
-        raise SceneError(f"{path}: field 'queries': must be a list of queries")
-    supported = {tuple(p) for p in _core._query_kinds()}
-    queries = [_query(q, i, path, shapes, supported) for i, q in enumerate(qspecs)]
-    return LoadedScene(path, description, shapes, by_name, queries)
+def load_scene(path: str, text: str | None = None) -> SceneFile:
+    """Reads and validates a scene file, JSON or .npz (or JSON text); raises SceneError."""
+    return read_scene(path, text)
 
 
 # ------------------------------------------------------------------------------------------
 # answering
 # ------------------------------------------------------------------------------------------
-def answer(scene: LoadedScene) -> list[Query]:
+def answer(scene: SceneFile) -> list[Query]:
     """Computes each query's effects, each with its own call (and only the work it needs)."""
-    world = Scene(scene.shapes)
-    for q in scene.queries:
+    world = scene.scene()
+    queries = _queries(scene)
+    for q in queries:
         if q.effects == ["pairs_within"]:
             q.answers["pairs_within"] = [list(p) for p in world.pairs_within(q.d)]
             continue
-        A = scene.shapes[q.a]
+        A = scene.shape(q.a)
         if q.b is not None:
-            B = scene.shapes[q.b]
+            B = scene.shape(q.b)
             for e in q.effects:
                 if e == "intersects":
                     q.answers[e] = bool(_core.intersects(A, B))
@@ -305,7 +133,7 @@ def answer(scene: LoadedScene) -> list[Query]:
                     q.answers[e] = world.within(q.a, q.d)
                 elif e == "intersects":
                     q.answers[e] = world.within(q.a, 0.0)
-    return scene.queries
+    return queries
 
 
 def _fmt(x: float) -> str:
@@ -316,7 +144,7 @@ def _point(p) -> str:
     return "(" + ", ".join(_fmt(v) for v in p) + ")"
 
 
-def table(scene: LoadedScene, queries: list[Query]) -> str:
+def table(scene: SceneFile, queries: list[Query]) -> str:
     rows = [("query", "effect", "answer")]
     for q in queries:
         for e in q.effects:
@@ -351,7 +179,7 @@ def table(scene: LoadedScene, queries: list[Query]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def as_json(scene: LoadedScene, queries: list[Query]) -> str:
+def as_json(scene: SceneFile, queries: list[Query]) -> str:
     out = {"scene": scene.path, "answers": []}
     for q in queries:
         item = {"query": q.label}
@@ -411,7 +239,17 @@ def _clip(origin, direction, lo, hi, ray: bool):
     return np.array([o + t0 * d, o + t1 * d])
 
 
-def picture(scene: LoadedScene, queries: list[Query]) -> bytes:
+def _specs(scene: SceneFile) -> dict:
+    """name -> {"kind", field: plain values} of every shape (batches element by element)."""
+    out = {}
+    for e in scene.entries:
+        for i, name in enumerate(e.element_names()):
+            values = {f: (a if e.count is None else a[i]) for f, a in e.fields.items()}
+            out[name] = {"kind": e.kind, **{f: np.asarray(a).tolist() for f, a in values.items()}}
+    return out
+
+
+def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     """The scene drawn in 3D (PNG bytes): shapes, and a segment between each pair of closest points."""
     import matplotlib
 
@@ -419,7 +257,7 @@ def picture(scene: LoadedScene, queries: list[Query]) -> bytes:
     import matplotlib.pyplot as plt
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    specs = scene.specs
+    specs = _specs(scene)
     # The view: every bounded shape and every closest point, plus the lines' origins.
     pts = []
     for s in specs.values():
@@ -523,10 +361,12 @@ def demo_scene_text() -> str:
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="circledist",
-        description="Answer the queries of a circledist scene file (JSON): intersects, within, distance, "
-                    "closest_points, nearest, pairs_within. Without a file: the shipped demo scene, drawn "
-                    f"to {DEMO_PICTURE}.")
-    p.add_argument("scene", nargs="?", help="scene file (JSON); default: the demo scene in the package")
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Answer the queries of a circledist scene file (JSON or .npz): intersects, within,\n"
+                    "distance, closest_points, nearest, pairs_within. Without a file: the shipped demo\n"
+                    f"scene, drawn to {DEMO_PICTURE}.",
+        epilog=FORMAT_HELP.format(schema=resources.files("circledist").joinpath(SCHEMA_RESOURCE)))
+    p.add_argument("scene", nargs="?", help="scene file (.json or .npz); default: the demo scene in the package")
     p.add_argument("--json", nargs="?", const="-", metavar="PATH",
                    help="write the answers as JSON to PATH (to standard output, instead of the table, "
                         "when PATH is omitted or '-')")
@@ -553,6 +393,10 @@ def main(argv: list[str] | None = None) -> int:
             scene = load_scene("circledist/scenes/demo.json", demo_scene_text())
         else:
             scene = load_scene(args.scene)
+        if plot is not None and scene.count > PICTURE_LIMIT:
+            print(f"circledist: --plot draws at most {PICTURE_LIMIT} shapes, {scene.path} holds {scene.count}; "
+                  "use --no-plot", file=sys.stderr)
+            return 1
         if plot is not None:
             try:
                 import matplotlib  # noqa: F401

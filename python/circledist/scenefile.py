@@ -1,0 +1,674 @@
+"""Scene files: JSON (``.json``) and NumPy (``.npz``), read and written.
+
+A scene file holds named shapes, each a single shape or a batch of one kind whose fields are
+columns (NumPy broadcasting: a column holds one row per shape, or one value for all), and
+queries naming the effects they want. The JSON form is specified by the JSON Schema shipped in
+the package (``circledist/scene.schema.json``, see ``schema_text()``); the ``.npz`` form holds
+the same content as arrays, for scenes of millions of shapes. ``python -m circledist --help``
+summarizes both; README.md shows their use.
+
+Format version 1. The version goes up with any change to what a valid file may hold or to what
+it means (a new kind, field, effect or array, a changed default); a reader refuses files of a
+newer version with a message saying so instead of misreading them, and keeps reading older ones.
+Files must say ``"format": "circledist-scene"`` and ``"version"``: without them a JSON file is
+refused (the message says which two fields to add), so that a file is never read under a version
+it was not written for.
+
+Every error is a SceneFileError with a one-line message naming the file, where in it (a JSON
+path such as ``$.shapes[3].radius``, or an array of the .npz and an index) and what was expected.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import tempfile
+import zipfile
+from dataclasses import dataclass, field
+from importlib import resources
+from typing import Any, Iterable, Mapping, Optional
+
+import numpy as np
+
+from . import _core
+from ._schema import Validator, member, shown
+
+__all__ = ["FORMAT", "VERSION", "SceneFileError", "SceneFile", "ShapeEntry", "read_scene", "write_scene",
+           "schema", "schema_text", "SCHEMA_RESOURCE"]
+
+FORMAT = "circledist-scene"
+VERSION = 1
+SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
+
+# kind -> (class name, {field: role}); roles: vector, direction (a non-zero vector), length (>= 0),
+# control_points. The sweep (a length, default 0) comes on top of every kind.
+KINDS = {
+    "point": ("Point", {"p": "vector"}),
+    "line": ("Line", {"origin": "vector", "direction": "direction"}),
+    "ray": ("Ray", {"origin": "vector", "direction": "direction"}),
+    "segment": ("Segment", {"p0": "vector", "p1": "vector"}),
+    "circle": ("Circle", {"center": "vector", "normal": "direction", "radius": "length"}),
+    "disk": ("Disk", {"center": "vector", "normal": "direction", "radius": "length"}),
+    "bezier": ("Bezier", {"control_points": "control_points"}),
+}
+_TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "control_points": 2}
+PAIR_EFFECTS = ("intersects", "within", "distance", "closest_points")
+SCENE_EFFECTS = ("nearest", "within", "intersects")
+_REFERENCE = re.compile(r"^([^\[\]/]+)(?:\[(0|[1-9][0-9]*)\])?$")
+_NPZ_TOP = ("format", "version", "description", "shapes", "queries")
+
+
+class SceneFileError(ValueError):
+    """A bad scene file; the one-line message names the file, where in it, and what was expected."""
+
+
+def schema_text() -> str:
+    """The JSON Schema (draft 2020-12) of JSON scene files, as shipped in the package."""
+    return resources.files("circledist").joinpath(SCHEMA_RESOURCE).read_text(encoding="utf-8")
+
+
+_VALIDATOR: Optional[Validator] = None
+
+
+def schema() -> dict:
+    return _validator().root
+
+
+def _validator() -> Validator:
+    global _VALIDATOR
+    if _VALIDATOR is None:
+        _VALIDATOR = Validator(json.loads(schema_text()))
+    return _VALIDATOR
+
+
+# ------------------------------------------------------------------------------------------
+# the content, whatever the file type
+# ------------------------------------------------------------------------------------------
+@dataclass
+class ShapeEntry:
+    """One entry of a scene: a single shape (count None) or a batch of count shapes of one kind.
+    fields: float64 arrays, sweep included; for a batch each has a leading axis of count rows
+    (broadcast views where the file gave one value for all)."""
+
+    name: str
+    kind: str
+    count: Optional[int]
+    fields: dict
+
+    @property
+    def class_name(self) -> str:
+        return KINDS[self.kind][0]
+
+    def shape(self):
+        """The library shape: single, or batched with batch shape (count,)."""
+        names = list(KINDS[self.kind][1])
+        return getattr(_core, self.class_name)(*(self.fields[n] for n in names), sweep=self.fields["sweep"])
+
+    def element(self, index: int):
+        """Shape `index` of a batch, as a single shape."""
+        names = list(KINDS[self.kind][1])
+        return getattr(_core, self.class_name)(*(self.fields[n][index] for n in names),
+                                                sweep=self.fields["sweep"][index])
+
+    def element_names(self) -> list:
+        return [self.name] if self.count is None else [f"{self.name}[{i}]" for i in range(self.count)]
+
+
+@dataclass
+class SceneFile:
+    """A validated scene file: its entries in file order, its queries (dicts with the keys name,
+    a, b, effects, d, k; absent ones None) and its description."""
+
+    path: str
+    description: str
+    entries: list
+    queries: list = field(default_factory=list)
+
+    def __post_init__(self):
+        self._by_name = {e.name: e for e in self.entries}
+
+    @property
+    def count(self) -> int:
+        """The number of shapes (a batch counts its shapes)."""
+        return sum(1 if e.count is None else e.count for e in self.entries)
+
+    @property
+    def shapes(self) -> dict:
+        """name -> library shape, a batch as one batched shape under the batch's name."""
+        return {e.name: e.shape() for e in self.entries}
+
+    def queries_as_written(self) -> list:
+        """The queries as a file states them (no absent keys): for write_scene."""
+        return [{k: v for k, v in q.items() if v is not None} for q in self.queries]
+
+    def lookup(self, reference: str):
+        """(entry, index) for 'name' (index None) or 'name[i]'; KeyError if there is no such shape."""
+        m = _REFERENCE.match(reference)
+        entry = self._by_name.get(m.group(1)) if m else None
+        if entry is None:
+            raise KeyError(f"no shape named {reference!r}")
+        index = None if m.group(2) is None else int(m.group(2))
+        if (index is None) != (entry.count is None) or (index is not None and index >= entry.count):
+            raise KeyError(f"no shape named {reference!r}")
+        return entry, index
+
+    def shape(self, reference: str):
+        """The single shape named `reference` ('name' or 'name[i]' for shape i of a batch)."""
+        entry, index = self.lookup(reference)
+        return entry.shape() if index is None else entry.element(index)
+
+    def scene(self):
+        """A circledist.Scene of every shape, in file order; shape i of batch b is named 'b[i]'."""
+        from .scene import Scene
+
+        world = Scene()
+        for e in self.entries:
+            if e.count is None:
+                world.add(e.name, e.shape())
+            else:
+                world.extend(e.element_names(), e.shape())
+        return world
+
+
+def _error(path: str, where: str, message: str) -> SceneFileError:
+    return SceneFileError(f"{path}: {where}: {message}")
+
+
+def _finite_array(value: Any, file: str, where: str) -> np.ndarray:
+    """A JSON value (numbers, nested lists, already schema-checked) as float64; the first number
+    that is not a finite double is reported with its path."""
+    try:
+        array = np.asarray(value, dtype=np.float64)
+    except OverflowError:  # an integer literal too large for a double
+        array = None
+    if array is not None and np.isfinite(array).all():
+        return array
+
+    def first_bad(v, at):
+        if isinstance(v, list):
+            for i, item in enumerate(v):
+                found = first_bad(item, f"{at}[{i}]")
+                if found:
+                    return found
+            return None
+        try:
+            return None if math.isfinite(float(v)) else (at, v)
+        except OverflowError:
+            return at, v
+
+    at, v = first_bad(value, where)
+    raise _error(file, at, f"expected a finite number (within a double's range), got {shown(v)}")
+
+
+def _check_directions(array: np.ndarray, file: str, where: str, index_text) -> None:
+    zero = ~np.any(array != 0, axis=-1)
+    if zero.any():
+        at = np.unravel_index(int(np.argmax(zero)), zero.shape) if zero.ndim else ()
+        raise _error(file, index_text(where, at), "expected a non-zero vector, got [0, 0, 0]")
+
+
+def _json_index(where: str, at) -> str:
+    return where + "".join(f"[{i}]" for i in at)
+
+
+def _column(array: np.ndarray, role: str, count: Optional[int], file: str, where: str, rows_word: str):
+    """Checks a batch column's rows (count or 1, or none: one value for all) and broadcasts it to
+    (count, ...); a single shape's field as is."""
+    trailing = _TRAILING_DIMS[role]
+    if count is None:
+        return array
+    if array.ndim == trailing + 1:
+        rows = array.shape[0]
+        if rows not in (count, 1):
+            raise _error(file, where, f"expected {count} {rows_word} (the batch's count) or 1, got {rows}")
+        trailing_shape = array.shape[1:]
+    else:
+        trailing_shape = array.shape
+        array = array[None]
+    return np.broadcast_to(array, (count,) + trailing_shape)
+
+
+def _entry_from_json(spec: dict, i: int, file: str) -> ShapeEntry:
+    kind = spec["kind"]
+    count = None if "count" not in spec else int(spec["count"])
+    roles = dict(KINDS[kind][1], sweep="length")
+    base = f"$.shapes[{i}]"
+    fields = {}
+    for name, role in roles.items():
+        where = member(base, name)
+        value = spec.get(name, 0)
+        if role == "control_points" and count is not None and isinstance(value[0][0], list):
+            sizes = [len(cp) for cp in value]
+            for j, size in enumerate(sizes):
+                if size != sizes[0]:
+                    raise _error(file, f"{where}[{j}]", f"expected {sizes[0]} control points as curve 0 has "
+                                 f"(a batch's curves have one degree), got {size}")
+        array = _finite_array(value, file, where)
+        if role == "direction":
+            _check_directions(array, file, where, _json_index)
+        rows_word = {"length": "numbers", "control_points": "curves"}.get(role, "vectors")
+        fields[name] = _column(array, role, count, file, where, rows_word)
+    entry = ShapeEntry(spec["name"], kind, count, fields)
+    try:
+        entry.shape()
+    except ValueError as e:  # anything the library still refuses
+        raise _error(file, base, str(e)) from None
+    return entry
+
+
+# ------------------------------------------------------------------------------------------
+# queries (the same in both file types)
+# ------------------------------------------------------------------------------------------
+def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> list:
+    """Semantic checks of schema-valid queries; returns them as dicts with every key."""
+    by_name = {e.name: e for e in entries}
+    supported = {tuple(p) for p in _core._query_kinds()}
+    out = []
+    for i, spec in enumerate(specs):
+        base = f"{prefix}$.queries[{i}]"
+
+        def fail(key, message):
+            return _error(file, member(base, key) if key else base, message)
+
+        refs = {}
+        for key in ("a", "b"):
+            if key not in spec:
+                continue
+            m = _REFERENCE.match(spec[key])
+            entry = by_name.get(m.group(1))
+            if entry is None:
+                raise fail(key, f"expected the name of a shape of the scene, got {shown(spec[key])}")
+            index = None if m.group(2) is None else int(m.group(2))
+            if entry.count is not None and index is None:
+                raise fail(key, f"expected one shape: {entry.name!r} is a batch of {entry.count}, name one "
+                                f"as {entry.name}[i] with i from 0 to {entry.count - 1}")
+            if entry.count is None and index is not None:
+                raise fail(key, f"expected a shape's name: {entry.name!r} is a single shape, not a batch")
+            if index is not None and index >= entry.count:
+                raise fail(key, f"expected an index from 0 to {entry.count - 1} (batch {entry.name!r} has "
+                                f"{entry.count} shapes), got {index}")
+            refs[key] = (entry, index)
+        effects = spec["effects"]
+        if "pairs_within" in effects:
+            if effects != ["pairs_within"]:
+                raise fail("effects", "expected pairs_within alone (it is a query of its own)")
+            for key in ("a", "b", "k"):
+                if key in spec:
+                    raise fail(key, "not expected: pairs_within takes no shapes and no k")
+            kinds = sorted({e.class_name for e in entries})
+            for i_kind, ka in enumerate(kinds):
+                for kb in kinds[i_kind:]:
+                    single = ka == kb and sum(1 if e.count is None else e.count
+                                              for e in entries if e.class_name == ka) < 2
+                    if not single and (ka, kb) not in supported:
+                        raise fail("effects", f"expected a scene whose every pair of kinds has a query: none "
+                                              f"exists between a {ka} and a {kb}")
+        else:
+            if "a" not in spec:
+                raise fail(None, "missing field 'a' (the shape the query is about)")
+            allowed = PAIR_EFFECTS if "b" in spec else SCENE_EFFECTS
+            for e in effects:
+                if e not in allowed:
+                    against = "a pair (with 'b')" if "b" in spec else "the rest of the scene (without 'b')"
+                    raise fail("effects", f"expected effects against {against}: {', '.join(allowed)}; "
+                                          f"got {shown(e)}")
+            a_entry, a_index = refs["a"]
+            if "b" in spec:
+                others = [refs["b"][0].class_name]
+            else:  # every kind in the scene but the query's own shape
+                others = {e.class_name for e in entries
+                          if e is not a_entry or (e.count is not None and e.count > 1)}
+            for kb in sorted(others):
+                if (a_entry.class_name, kb) not in supported:
+                    raise fail("b" if "b" in spec else "a", f"expected shapes circledist has a query between: "
+                                                              f"none exists between a {a_entry.class_name} and a {kb}")
+            if "k" in spec and "nearest" not in effects:
+                raise fail("k", "not expected: only nearest takes k")
+        needs_d = "within" in effects or "pairs_within" in effects
+        if needs_d and "d" not in spec:
+            raise fail(None, "missing field 'd' (the distance of within / pairs_within)")
+        if not needs_d and "d" in spec:
+            raise fail("d", "not expected: only within and pairs_within take a distance")
+        d = None
+        if "d" in spec:
+            d = float(_finite_array(spec["d"], file, member(base, "d")))
+        out.append({"name": spec.get("name"), "a": spec.get("a"), "b": spec.get("b"), "effects": list(effects),
+                    "d": d, "k": int(spec["k"]) if "k" in spec else None})
+    return out
+
+
+def _check_names(names: Iterable[str], file: str, where) -> None:
+    seen = set()
+    for i, name in enumerate(names):
+        if name in seen:
+            raise _error(file, where(i), f"expected a name of its own, got {shown(name)}, used by an earlier shape")
+        seen.add(name)
+
+
+# ------------------------------------------------------------------------------------------
+# JSON
+# ------------------------------------------------------------------------------------------
+def _not_json_constant(name: str):
+    raise ValueError(f"{name} is not a JSON number")
+
+
+def _check_format(data: dict, file: str, prefix: str = "$") -> None:
+    """The format marker and version, checked before the schema: a newer version is reported as
+    such, not as whatever its new content breaks in version 1."""
+    fmt, version = data.get("format"), data.get("version")
+    if "format" not in data:
+        raise _error(file, prefix, f"missing field 'format': a circledist scene starts with "
+                                   f"\"format\": \"{FORMAT}\", \"version\": {VERSION}")
+    if fmt != FORMAT:
+        raise _error(file, member(prefix, "format"), f"expected \"{FORMAT}\", got {shown(fmt)}")
+    if "version" not in data:
+        raise _error(file, prefix, f"missing field 'version' (this circledist reads version {VERSION})")
+    if isinstance(version, (int, float)) and not isinstance(version, bool) and version > VERSION \
+            and float(version).is_integer():
+        raise _error(file, member(prefix, "version"), f"version {int(version)} is newer than this circledist "
+                                                      f"reads (version {VERSION}): upgrade circledist")
+
+
+def _parse_json(text: str, file: str) -> Any:
+    try:
+        return json.loads(text, parse_constant=_not_json_constant)
+    except json.JSONDecodeError as e:
+        raise SceneFileError(f"{file}: not valid JSON: {e.msg} at line {e.lineno}, column {e.colno}") from None
+    except RecursionError:
+        raise SceneFileError(f"{file}: not a scene: JSON nested too deeply") from None
+    except ValueError as e:  # NaN / Infinity, an integer literal past Python's digit limit
+        raise SceneFileError(f"{file}: not valid JSON: {e}") from None
+
+
+def scene_from_json(data: Any, file: str) -> SceneFile:
+    """Validates parsed JSON (schema, then what a schema cannot say) into a SceneFile."""
+    if not isinstance(data, dict):
+        raise _error(file, "$", f"expected an object with \"format\": \"{FORMAT}\", \"version\" and \"shapes\", "
+                                f"got {shown(data)}")
+    _check_format(data, file)
+    error = _validator().first_error(data)
+    if error:
+        where, message = error
+        m = re.match(r"^\$\.shapes\[(\d+)\]", where)
+        if m:  # the shape's name helps find it in a long file
+            spec = data["shapes"][int(m.group(1))]
+            if isinstance(spec, dict) and isinstance(spec.get("name"), str) and where != m.group(0) + ".name":
+                where += f" (shape {spec['name']!r})"
+        raise _error(file, where, message)
+    shapes = data["shapes"]
+    _check_names((s["name"] for s in shapes), file, lambda i: f"$.shapes[{i}].name")
+    entries = [_entry_from_json(spec, i, file) for i, spec in enumerate(shapes)]
+    queries = _check_queries(data.get("queries", []), entries, file)
+    return SceneFile(file, data.get("description", ""), entries, queries)
+
+
+# ------------------------------------------------------------------------------------------
+# npz
+# ------------------------------------------------------------------------------------------
+def _npz_string(arrays, name: str, file: str, required: bool = True) -> Optional[str]:
+    if name not in arrays:
+        if required:
+            raise _error(file, f"array {name!r}", "missing (a 0-d string array)")
+        return None
+    a = arrays[name]
+    if a.dtype.kind != "U" or a.ndim != 0:
+        raise _error(file, f"array {name!r}", f"expected a 0-d string array, got dtype {a.dtype} shape {a.shape}")
+    return str(a[()])
+
+
+def _npz_integer(arrays, name: str, file: str) -> Optional[int]:
+    if name not in arrays:
+        return None
+    a = arrays[name]
+    if a.dtype.kind not in "iu" or a.ndim != 0:
+        raise _error(file, f"array {name!r}", f"expected a 0-d integer array, got dtype {a.dtype} shape {a.shape}")
+    return int(a[()])
+
+
+def _npz_index(where: str, at) -> str:
+    return where + (" at index " + ", ".join(str(int(i)) for i in at) if len(at) else "")
+
+
+def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where: str) -> np.ndarray:
+    trailing = _TRAILING_DIMS[role]
+    if a.dtype.kind not in "fiu":
+        raise _error(file, where, f"expected an array of real numbers (float or integer), got dtype {a.dtype}")
+    ndims = (trailing,) if count is None else (trailing, trailing + 1)
+    shape_ok = a.ndim in ndims
+    inner = a.shape[a.ndim - trailing:] if trailing else ()
+    if role in ("vector", "direction"):
+        shape_ok = shape_ok and inner == (3,)
+    if role == "control_points":
+        shape_ok = shape_ok and inner[1:] == (3,) and 2 <= inner[0] <= 8
+    if not shape_ok:
+        rows = "" if count is None else "[rows (count or 1)] + "
+        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()", "control_points": "(m, 3), m from 2 to 8"}[role]
+        raise _error(file, where, f"expected shape {rows}{wanted}, got {a.shape}")
+    array = a.astype(np.float64, copy=False)
+    bad = ~np.isfinite(array)
+    if role == "length":
+        bad |= array < 0
+    if bad.any():
+        at = np.unravel_index(int(np.argmax(bad)), bad.shape) if bad.ndim else ()
+        what = "a finite number >= 0" if role == "length" else "a finite number"
+        raise _error(file, _npz_index(where, at), f"expected {what}, got {float(array[at])!r}")
+    if role == "direction":
+        _check_directions(array, file, where, _npz_index)
+    return _column(array, role, count, file, where, "rows")
+
+
+def scene_from_npz(path: str, file: Optional[str] = None) -> SceneFile:
+    """Validates a .npz scene; `file` is the name messages give (default: path)."""
+    file = path if file is None else file
+    try:
+        handle = open(path, "rb")  # ours to close: np.load leaks the file it opens when it is no zip
+    except OSError as e:
+        raise SceneFileError(f"{file}: cannot read the scene file: {e.strerror}") from None
+    with handle:
+        try:
+            npz = np.load(handle, allow_pickle=False)
+        except (ValueError, OSError, zipfile.BadZipFile, EOFError) as e:
+            raise SceneFileError(f"{file}: not a NumPy .npz file: {e}") from None
+        if not isinstance(npz, np.lib.npyio.NpzFile):
+            raise SceneFileError(f"{file}: not a NumPy .npz file: it holds one array, not named arrays")
+        with npz:
+            return _scene_from_npz(npz, file)
+
+
+def _scene_from_npz(npz, file: str) -> SceneFile:
+    names = set(npz.files)
+    arrays = _LazyArrays(npz, file)
+    fmt = _npz_string(arrays, "format", file)
+    if fmt != FORMAT:
+        raise _error(file, "array 'format'", f"expected \"{FORMAT}\", got {shown(fmt)}")
+    version = _npz_integer(arrays, "version", file)
+    if version is None:
+        raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads version {VERSION})")
+    if version > VERSION:
+        raise _error(file, "array 'version'", f"version {version} is newer than this circledist reads "
+                                              f"(version {VERSION}): upgrade circledist")
+    if version != VERSION:
+        raise _error(file, "array 'version'", f"expected {VERSION}, got {version}")
+    description = _npz_string(arrays, "description", file, required=False) or ""
+    if "shapes" not in names:
+        raise _error(file, "array 'shapes'", "missing (a 1-d string array of the shapes' names, in order)")
+    order = arrays["shapes"]
+    if order.dtype.kind != "U" or order.ndim != 1 or len(order) == 0:
+        raise _error(file, "array 'shapes'", f"expected a non-empty 1-d string array of names, "
+                                             f"got dtype {order.dtype} shape {order.shape}")
+    order = [str(n) for n in order]
+    name_error = _validator().first_error
+    for i, n in enumerate(order):
+        if name_error(n, {"$ref": "#/$defs/name"}):
+            raise _error(file, f"array 'shapes' at index {i}",
+                         f"expected a non-empty name without '[', ']' or '/', got {shown(n)}")
+    _check_names(order, file, lambda i: f"array 'shapes' at index {i}")
+    known = set(_NPZ_TOP)
+    entries = []
+    for name in order:
+        kind = _npz_string(arrays, f"{name}/kind", file)
+        if kind not in KINDS:
+            raise _error(file, f"array '{name}/kind'", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
+        count = _npz_integer(arrays, f"{name}/count", file)
+        if count is not None and count < 1:
+            raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
+        roles = dict(KINDS[kind][1], sweep="length")
+        known |= {f"{name}/kind", f"{name}/count"} | {f"{name}/{f}" for f in roles}
+        fields = {}
+        for f, role in roles.items():
+            key = f"{name}/{f}"
+            if key not in names:
+                if f != "sweep":
+                    raise _error(file, f"array {key!r}", f"missing (a {kind} needs {', '.join(KINDS[kind][1])})")
+                fields[f] = np.zeros(()) if count is None else np.zeros(count)
+                continue
+            fields[f] = _npz_field(arrays[key], role, count, file, f"array {key!r}")
+        entry = ShapeEntry(name, kind, count, fields)
+        try:
+            entry.shape()
+        except ValueError as e:
+            raise _error(file, f"arrays '{name}/...'", str(e)) from None
+        entries.append(entry)
+    for key in sorted(names - known):
+        raise _error(file, f"array {key!r}", "unknown: not a field of a shape listed in 'shapes' nor one of "
+                                             + ", ".join(_NPZ_TOP))
+    queries = []
+    text = _npz_string(arrays, "queries", file, required=False)
+    if text is not None:
+        where = "array 'queries'"
+        try:
+            specs = json.loads(text, parse_constant=_not_json_constant)
+        except ValueError as e:
+            raise _error(file, where, f"expected the JSON text of a list of queries: {e}") from None
+        error = _validator().first_error({"queries": specs}, {"properties": schema()["properties"]})
+        if error:
+            raise _error(file, f"{where}: {error[0]}", error[1])
+        queries = _check_queries(specs, entries, file, prefix=f"{where}: ")
+    return SceneFile(file, description, entries, queries)
+
+
+class _LazyArrays:
+    """npz members read on first use, errors (say a pickled object array) reported by name."""
+
+    def __init__(self, npz, file):
+        self.npz, self.file, self.cache = npz, file, {}
+
+    def __contains__(self, key):
+        return key in self.npz.files
+
+    def __getitem__(self, key):
+        if key not in self.cache:
+            try:
+                self.cache[key] = self.npz[key]
+            except (ValueError, OSError, zipfile.BadZipFile, EOFError) as e:
+                raise _error(self.file, f"array {key!r}", f"expected a plain NumPy array: {e}") from None
+        return self.cache[key]
+
+
+# ------------------------------------------------------------------------------------------
+# reading and writing
+# ------------------------------------------------------------------------------------------
+def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
+    """Reads and validates a scene file: .npz (a zip) or JSON; `text` gives JSON content directly
+    (path then only names it in messages). Raises SceneFileError."""
+    if text is None:
+        try:
+            with open(path, "rb") as f:
+                head = f.read(4)
+        except OSError as e:
+            raise SceneFileError(f"{path}: cannot read the scene file: {e.strerror}") from None
+        if head.startswith(b"PK") or str(path).endswith(".npz"):
+            return scene_from_npz(path)
+        try:
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
+        except OSError as e:
+            raise SceneFileError(f"{path}: cannot read the scene file: {e.strerror}") from None
+        except UnicodeDecodeError as e:
+            raise SceneFileError(f"{path}: not a UTF-8 text file (byte {e.start}: {e.reason})") from None
+    return scene_from_json(_parse_json(text, path), path)
+
+
+def _entries_of(shapes, file: str) -> list:
+    items = shapes.items() if isinstance(shapes, Mapping) else shapes
+    entries = []
+    for name, shape in items:
+        if not isinstance(shape, _core.Shape):
+            raise TypeError(f"write_scene: {name!r} must be a circledist shape, got {type(shape).__name__}")
+        kind = shape.kind.lower()
+        batch = tuple(shape.batch_shape)
+        count = None if batch == () else int(np.prod(batch, dtype=np.int64))
+        fields = {}
+        for f, role in dict(KINDS[kind][1], sweep="length").items():
+            a = np.asarray(getattr(shape, f), dtype=np.float64)
+            trailing = a.shape[a.ndim - _TRAILING_DIMS[role]:] if _TRAILING_DIMS[role] else ()
+            if count is not None:  # a column: one row per shape, C order; one value if all rows agree
+                a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
+                bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
+                if (bits == bits[:1]).all():
+                    a = a[0]
+            fields[f] = a
+        if not np.any(fields["sweep"]):
+            del fields["sweep"]
+        entries.append((str(name), kind, count, fields))
+    return entries
+
+
+def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description: str = "") -> None:
+    """Writes a scene file, JSON or .npz by the path's suffix. `shapes`: a mapping (or pairs) of
+    name -> circledist shape; a batched shape becomes a batch (flattened in C order: its shape i is
+    'name[i]' in queries and answers), with fields that are one value for all kept as one value.
+    `queries`: dicts as in the JSON format. The content is validated as a reader would, and the
+    file is replaced atomically."""
+    path = os.fspath(path)
+    if not (path.endswith(".json") or path.endswith(".npz")):
+        raise ValueError(f"write_scene: {path}: expected a path ending in .json or .npz")
+    entries = _entries_of(shapes, path)
+    queries = [dict(q) for q in queries]
+    if path.endswith(".json"):
+        data = {"format": FORMAT, "version": VERSION}
+        if description:
+            data["description"] = description
+        data["shapes"] = []
+        for name, kind, count, fields in entries:
+            spec = {"name": name, "kind": kind}
+            if count is not None:
+                spec["count"] = count
+            spec.update({f: a.tolist() for f, a in fields.items()})
+            data["shapes"].append(spec)
+        if queries:
+            data["queries"] = queries
+        scene_from_json(json.loads(json.dumps(data)), path)  # what is written must read back
+        payload = (json.dumps(data, indent=1) + "\n").encode("utf-8")
+        _write_atomically(path, lambda f: f.write(payload))
+        return
+    arrays = {"format": np.array(FORMAT), "version": np.array(VERSION, dtype=np.int64),
+              "shapes": np.array([e[0] for e in entries], dtype=str)}
+    if description:
+        arrays["description"] = np.array(description)
+    for name, kind, count, fields in entries:
+        arrays[f"{name}/kind"] = np.array(kind)
+        if count is not None:
+            arrays[f"{name}/count"] = np.array(count, dtype=np.int64)
+        arrays.update({f"{name}/{f}": a for f, a in fields.items()})
+    if queries:
+        arrays["queries"] = np.array(json.dumps(queries))
+    # What is written must read back: checked before it replaces anything (a bad name or query raises).
+    _write_atomically(path, lambda f: np.savez(f, **arrays), check=lambda tmp: scene_from_npz(tmp, path))
+
+
+def _write_atomically(path: str, write, check=None) -> None:
+    directory = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(prefix=".circledist-", dir=directory)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            write(f)
+        if check is not None:
+            check(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
