@@ -123,9 +123,9 @@ py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_
   return to_float32(with_call(fa, fb, &fd, c, within), "distance_if_within", "the distance", 1, false);
 }
 
-py::tuple batch_tuple(py::handle self) {
+py::typing::Tuple<py::int_, py::ellipsis> batch_tuple(py::handle self) {
   const Shape& s = constructed(self);
-  py::tuple out(s.batch.size());
+  py::typing::Tuple<py::int_, py::ellipsis> out(s.batch.size());
   for (size_t i = 0; i < s.batch.size(); ++i) out[i] = py::int_(s.batch[i]);
   return out;
 }

@@ -82,7 +82,8 @@ PY
 }
 case "$task" in
   demo) extras=(plot) ;;
-  test) extras=(test plot) ;;
+  test) extras=(test plot docs) ;;  # docs: the stubs' check (tests/test_stubs.py)
+  docs) extras=(docs) ;;
   fuzz) extras=(test) ;;  # the fuzz and the differential test check against the tests' mpmath references
   bench) extras=(bench) ;;
   *) extras=() ;;
