@@ -139,11 +139,8 @@ template <int K, size_t... I> void bind_shape(py::module_& m, const std::string&
           }),
           py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none(), py::arg("copy") = true);
   (cls.def_property_readonly(
-       spec[I].name, [](py::handle s) { return Array(constructed(s).fields[I].value()); },
-       "The field as stored: a read-only array with the field's own batch dimensions."),
+       spec[I].name, [](py::handle s) { return Array(constructed(s).fields[I].value()); }, doc::field(spec[I].name)),
    ...);
-  cls.def_property_readonly(kSweepField.name, [](py::handle s) { return Array(constructed(s).fields.back().value()); },
-                            "Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).");
 }
 
 template <int K> void bind_shape(py::module_& m, const std::string& doc) {
@@ -168,13 +165,18 @@ std::string repr(py::handle self) {
 #include "bind_effects.hpp"
 
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points";
+  m.doc() =
+      "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and "
+      "Bezier curves in 3D";
   m.attr("__version__") = CIRCLEDIST_VERSION;  // CMakeLists.txt's project() version
 
   py::class_<Shape> shape(m, "Shape", doc::kShape);
   shape.def_property_readonly("batch_shape", &batch_tuple, "Leading batch dimensions; () for a single shape.")
       .def_property_readonly(
           "kind", [](py::handle s) { return kind_name(constructed(s).kind); }, "The class name, e.g. 'Circle'.")
+      .def_property_readonly(
+          kSweepField.name, [](py::handle s) { return Array(constructed(s).fields.back().value()); },
+          doc::field(kSweepField.name))
       .def("__repr__", &repr);
 
   bind_shape<kPoint>(m, doc::point());

@@ -44,6 +44,21 @@ CIRCLEDIST_TYPED_OBJECT(Flags, "bool | numpy.ndarray")
 
 namespace doc {
 
+// The docstring of a shape's field property, by the field's name (shapes.hpp's FieldSpec).
+inline const char* field(const std::string& name) {
+  if (name == "p") return "The coordinates, shape (..., 3): a read-only array, as stored.";
+  if (name == "origin") return "The origin (t = 0), shape (..., 3): a read-only array, as stored.";
+  if (name == "direction") return "The direction as given (not normalized), shape (..., 3): a read-only array.";
+  if (name == "p0") return "The end point at t = 0, shape (..., 3): a read-only array, as stored.";
+  if (name == "p1") return "The end point at t = 1, shape (..., 3): a read-only array, as stored.";
+  if (name == "center") return "The center, shape (..., 3): a read-only array, as stored.";
+  if (name == "normal") return "The normal as given (not normalized), shape (..., 3): a read-only array.";
+  if (name == "radius") return "The radius, of the radius's own batch shape (0-d for one): a read-only array.";
+  if (name == "control_points") return "The control points, shape (..., k + 1, 3): a read-only array, as stored.";
+  if (name == "sweep") return "The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).";
+  return "A field of the shape: a read-only array, as stored.";
+}
+
 // ---- pieces shared by the shape classes -------------------------------------------------------
 
 inline const char* const kShapeParameters = R"(

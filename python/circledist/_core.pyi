@@ -1,5 +1,5 @@
 """
-circledist: exact distances and closest points between circles, disks, lines, rays, segments, points
+circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and Bezier curves in 3D
 """
 from __future__ import annotations
 import numpy
@@ -41,6 +41,11 @@ class Shape:
     def kind(self) -> str:
         """
         The class name, e.g. 'Circle'.
+        """
+    @property
+    def sweep(self) -> numpy.ndarray:
+        """
+        The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).
         """
 class Point(Shape):
     """
@@ -101,12 +106,7 @@ class Point(Shape):
     @property
     def p(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
-        """
-    @property
-    def sweep(self) -> numpy.ndarray:
-        """
-        Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).
+        The coordinates, shape (..., 3): a read-only array, as stored.
         """
 class Line(Shape):
     """
@@ -164,17 +164,12 @@ class Line(Shape):
     @property
     def direction(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
+        The direction as given (not normalized), shape (..., 3): a read-only array.
         """
     @property
     def origin(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
-        """
-    @property
-    def sweep(self) -> numpy.ndarray:
-        """
-        Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).
+        The origin (t = 0), shape (..., 3): a read-only array, as stored.
         """
 class Ray(Shape):
     """
@@ -231,17 +226,12 @@ class Ray(Shape):
     @property
     def direction(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
+        The direction as given (not normalized), shape (..., 3): a read-only array.
         """
     @property
     def origin(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
-        """
-    @property
-    def sweep(self) -> numpy.ndarray:
-        """
-        Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).
+        The origin (t = 0), shape (..., 3): a read-only array, as stored.
         """
 class Segment(Shape):
     """
@@ -295,17 +285,12 @@ class Segment(Shape):
     @property
     def p0(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
+        The end point at t = 0, shape (..., 3): a read-only array, as stored.
         """
     @property
     def p1(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
-        """
-    @property
-    def sweep(self) -> numpy.ndarray:
-        """
-        Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).
+        The end point at t = 1, shape (..., 3): a read-only array, as stored.
         """
 class Circle(Shape):
     """
@@ -375,22 +360,17 @@ class Circle(Shape):
     @property
     def center(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
+        The center, shape (..., 3): a read-only array, as stored.
         """
     @property
     def normal(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
+        The normal as given (not normalized), shape (..., 3): a read-only array.
         """
     @property
     def radius(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
-        """
-    @property
-    def sweep(self) -> numpy.ndarray:
-        """
-        Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).
+        The radius, of the radius's own batch shape (0-d for one): a read-only array.
         """
 class Disk(Shape):
     """
@@ -454,22 +434,17 @@ class Disk(Shape):
     @property
     def center(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
+        The center, shape (..., 3): a read-only array, as stored.
         """
     @property
     def normal(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
+        The normal as given (not normalized), shape (..., 3): a read-only array.
         """
     @property
     def radius(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
-        """
-    @property
-    def sweep(self) -> numpy.ndarray:
-        """
-        Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).
+        The radius, of the radius's own batch shape (0-d for one): a read-only array.
         """
 class Bezier(Shape):
     """
@@ -525,12 +500,7 @@ class Bezier(Shape):
     @property
     def control_points(self) -> numpy.ndarray:
         """
-        The field as stored: a read-only array with the field's own batch dimensions.
-        """
-    @property
-    def sweep(self) -> numpy.ndarray:
-        """
-        Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).
+        The control points, shape (..., k + 1, 3): a read-only array, as stored.
         """
 class ClosestPoints:
     """
