@@ -21,6 +21,41 @@ def sections(doc):
     return {title.strip() for title, rule in zip(lines, lines[1:]) if rule.strip() and set(rule.strip()) == {"-"}}
 
 
+def documented_parameters(doc):
+    """The names the Parameters section lists ('a, b : ...' lists two)."""
+    text = inspect.cleandoc(doc)
+    match = re.search(r"^Parameters\n-+\n(.*?)(?:\n\n\w[\w ]*\n-+\n|\Z)", text, flags=re.S | re.M)
+    if not match:
+        return []
+    names = []
+    for line in match.group(1).splitlines():
+        entry = re.match(r"^(\w+(?:, \w+)*) :", line)
+        if entry:
+            names += entry.group(1).split(", ")
+    return names
+
+
+def signature_parameters(obj):
+    """The parameter names of a function, method or class constructor, in order. pybind11's
+    objects carry their signature as the docstring's first line: name(a: type, *, b: type = x)."""
+    target = obj.__init__ if inspect.isclass(obj) else obj
+    try:
+        parameters = inspect.signature(target).parameters
+        return [name for name in parameters if name != "self"]
+    except ValueError:  # a pybind11 function: read its signature line
+        line = target.__doc__.splitlines()[0]
+        inside = line[line.index("(") + 1:line.rindex(") ->")]
+        names, depth, start = [], 0, 0
+        for i, char in enumerate(inside + ","):
+            depth += char in "[(" and 1 or char in "])" and -1 or 0
+            if char == "," and depth == 0:
+                name = inside[start:i].split(":")[0].strip()
+                if name not in ("self", "*", ""):
+                    names.append(name)
+                start = i + 1
+        return names
+
+
 def public_methods(cls):
     """Methods and properties defined on cls itself whose names do not start with '_'."""
     return [name for name, value in vars(cls).items() if not name.startswith("_") and
@@ -104,3 +139,21 @@ def test_documented_choices_are_the_accepted_ones(name):
     assert set(re.findall(r"'(\w+)'", solvers)) == accepted
     for solver in accepted:
         assert circledist.distance([0, 0, 0], [1, 0, 0], solver=solver) == 1.0
+
+
+def documented_callables():
+    for name in PUBLIC:
+        obj = getattr(circledist, name)
+        if name in ("Shape", "ClosestPoints"):
+            continue  # not built by users: no constructor parameters to document
+        yield name, obj
+        if inspect.isclass(obj):
+            for method in public_methods(obj):
+                if not isinstance(vars(obj)[method], property):
+                    yield f"{name}.{method}", getattr(obj, method)
+
+
+@pytest.mark.parametrize("name, obj", list(documented_callables()), ids=lambda v: v if isinstance(v, str) else "")
+def test_documented_parameters_are_the_signature(name, obj):
+    """The Parameters section lists exactly the parameters the signature has, in order."""
+    assert documented_parameters(obj.__doc__) == signature_parameters(obj), name
