@@ -42,6 +42,7 @@ def test_reference_documents_every_public_object(html):
         if name != "__version__":
             assert f"circledist.{name}" in index, name
     assert "precision: Literal['float32', 'float64', 'longdouble'] | None = None" in index
+    assert "circledist.Circle(center: numpy.typing.ArrayLike, normal: numpy.typing.ArrayLike" in index
     for section in ("Parameters", "Returns", "Raises", "Examples"):
         assert section in index
 

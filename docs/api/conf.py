@@ -21,6 +21,8 @@ exclude_patterns = ["_build"]
 
 # The signatures pybind11 writes as each docstring's first line carry the types.
 autodoc_docstring_signature = True
+# A class takes its signature from its __init__ (whose docstring is the signature line alone).
+autoclass_content = "both"
 autodoc_member_order = "bysource"
 autodoc_default_options = {"members": True, "undoc-members": False}
 # The classes' Attributes sections document the properties; no autosummary tables of them.
@@ -38,3 +40,15 @@ if not (DOCS / "line_disk.png").exists():
 
 html_theme = "alabaster"
 html_title = f"circledist {release}"
+
+
+def _without_self(app, what, name, obj, options, signature, return_annotation):
+    """pybind11's constructor signatures start with `self: circledist._core.Circle`: not an
+    argument a caller passes."""
+    if signature and signature.startswith("(self"):
+        signature = "(" + signature.partition(", ")[2] if ", " in signature else "()"
+    return signature, return_annotation
+
+
+def setup(app):
+    app.connect("autodoc-process-signature", _without_self)
