@@ -303,7 +303,8 @@ inline const char* const kQueryParameters = R"(a, b : Shape or array_like
     batch shapes broadcast like NumPy's.
 )";
 inline const char* const kLimitParameter = R"(d : array_like
-    Distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a and b.
+    Finite distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a
+    and b.
 )";
 inline const char* const kChoiceParameters = R"(precision : {None, 'float32', 'float64', 'longdouble'}, optional
     Keyword only. The arithmetic of the query. None follows the inputs: long double when any
@@ -429,7 +430,7 @@ Returns
 bool or numpy.ndarray
     A bool when a, b and d are single, otherwise a bool array of their broadcast shape.
 
-)" + kQueryRaises + R"(    Also ValueError when d is negative, NaN or not a real number.
+)" + kQueryRaises + R"(    Also ValueError when d is negative, NaN, inf or not a real number.
 
 Examples
 --------
@@ -454,7 +455,7 @@ Returns
 float or numpy.ndarray
     As `distance`, with inf where the distance exceeds d.
 
-)" + kQueryRaises + R"(    Also ValueError when d is negative, NaN or not a real number.
+)" + kQueryRaises + R"(    Also ValueError when d is negative, NaN, inf or not a real number.
 
 Examples
 --------

@@ -701,7 +701,8 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
         The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
         batch shapes broadcast like NumPy's.
     d : array_like
-        Distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a and b.
+        Finite distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a
+        and b.
     precision : {None, 'float32', 'float64', 'longdouble'}, optional
         Keyword only. The arithmetic of the query. None follows the inputs: long double when any
         field was given as ``numpy.longdouble``, float32 when every one was float32, float64
@@ -729,7 +730,7 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
         disks only).
-        Also ValueError when d is negative, NaN or not a real number.
+        Also ValueError when d is negative, NaN, inf or not a real number.
     
     Examples
     --------
@@ -840,7 +841,8 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
         The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
         batch shapes broadcast like NumPy's.
     d : array_like
-        Distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a and b.
+        Finite distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a
+        and b.
     precision : {None, 'float32', 'float64', 'longdouble'}, optional
         Keyword only. The arithmetic of the query. None follows the inputs: long double when any
         field was given as ``numpy.longdouble``, float32 when every one was float32, float64
@@ -868,7 +870,7 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
         disks only).
-        Also ValueError when d is negative, NaN or not a real number.
+        Also ValueError when d is negative, NaN, inf or not a real number.
     
     Examples
     --------
