@@ -84,9 +84,10 @@ ValueError
 Notes
 -----
 Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-(float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-them unrounded).
+and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+(float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+``precision='longdouble'`` reads them unrounded.
 )";
 
 inline std::string shape_doc(const char* summary, const char* parameters, const char* attributes,

@@ -86,9 +86,10 @@ class Point(Shape):
     Notes
     -----
     Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-    and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-    (float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-    them unrounded).
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
     
     Examples
     --------
@@ -148,9 +149,10 @@ class Line(Shape):
     Notes
     -----
     Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-    and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-    (float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-    them unrounded).
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
     
     Examples
     --------
@@ -210,9 +212,10 @@ class Ray(Shape):
     Notes
     -----
     Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-    and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-    (float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-    them unrounded).
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
     
     Examples
     --------
@@ -269,9 +272,10 @@ class Segment(Shape):
     Notes
     -----
     Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-    and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-    (float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-    them unrounded).
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
     
     Examples
     --------
@@ -336,9 +340,10 @@ class Circle(Shape):
     Notes
     -----
     Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-    and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-    (float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-    them unrounded).
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
     
     Examples
     --------
@@ -416,9 +421,10 @@ class Disk(Shape):
     Notes
     -----
     Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-    and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-    (float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-    them unrounded).
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
     
     Examples
     --------
@@ -484,9 +490,10 @@ class Bezier(Shape):
     Notes
     -----
     Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
-    and queries broadcast it against the other argument's like NumPy. Fields are stored as given
-    (float64, or ``numpy.longdouble`` when given as such, so that ``precision='longdouble'`` reads
-    them unrounded).
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
     
     Examples
     --------
