@@ -2,6 +2,7 @@
 // registered pair of kinds. Thin by design: the math lives in cpp/include/circledist.
 #include "float32.hpp"
 #include "calls.hpp"
+#include "help.hpp"
 
 namespace py = pybind11;
 using namespace circledist;
@@ -134,27 +135,27 @@ py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_
   return to_float32(with_call(fa, fb, &fd, c, within), "distance_if_within", "the distance", 1, false);
 }
 
-py::tuple batch_tuple(py::handle self) {
+py::typing::Tuple<py::int_, py::ellipsis> batch_tuple(py::handle self) {
   const Shape& s = constructed(self);
-  py::tuple out(s.batch.size());
+  py::typing::Tuple<py::int_, py::ellipsis> out(s.batch.size());
   for (size_t i = 0; i < s.batch.size(); ++i) out[i] = py::int_(s.batch[i]);
   return out;
 }
 
-template <int K, size_t... I> void bind_shape(py::module_& m, const char* doc, std::index_sequence<I...>) {
+template <int K, size_t... I> void bind_shape(py::module_& m, const std::string& doc, std::index_sequence<I...>) {
   static const FieldSpec* spec = kFieldSpecs[K];
-  py::class_<ShapeOf<K>, Shape> cls(m, kind_name(K), doc);
-  cls.def(py::init([](decltype((void)I, py::handle())... values, py::handle sweep, bool copy) {
+  py::class_<ShapeOf<K>, Shape> cls(m, kind_name(K), doc.c_str());
+  cls.def(py::init([](decltype((void)I, ArrayLike())... values, OptionalArrayLike sweep, bool copy) {
             return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check, copy)...,
                                   sweep_field(kind_name(K), sweep, copy)});
           }),
           py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none(), py::arg("copy") = true);
-  (cls.def_property_readonly(spec[I].name, [](py::handle s) { return constructed(s).fields[I].value(); }), ...);
-  cls.def_property_readonly(kSweepField.name, [](py::handle s) { return constructed(s).fields.back().value(); },
-                            "Sweep radius (>= 0): the shape grown by it (a capsule, a torus, a tube, ...).");
+  (cls.def_property_readonly(
+       spec[I].name, [](py::handle s) { return Array(constructed(s).fields[I].value()); }, doc::field(spec[I].name)),
+   ...);
 }
 
-template <int K> void bind_shape(py::module_& m, const char* doc) {
+template <int K> void bind_shape(py::module_& m, const std::string& doc) {
   bind_shape<K>(m, doc, std::make_index_sequence<kFieldCounts[K]>());
 }
 
@@ -176,29 +177,42 @@ std::string repr(py::handle self) {
 #include "bind_effects.hpp"
 
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points";
+  m.doc() =
+      "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and "
+      "Bezier curves in 3D";
   m.attr("__version__") = CIRCLEDIST_VERSION;  // CMakeLists.txt's project() version
 
-  py::class_<Shape> shape(m, "Shape", "Base class of every shape: a single shape or a batch of them.");
+  py::class_<Shape> shape(m, "Shape", doc::kShape);
   shape.def_property_readonly("batch_shape", &batch_tuple, "Leading batch dimensions; () for a single shape.")
-      .def_property_readonly("kind", [](py::handle s) { return kind_name(constructed(s).kind); })
+      .def_property_readonly(
+          "kind", [](py::handle s) { return kind_name(constructed(s).kind); }, "The class name, e.g. 'Circle'.")
+      .def_property_readonly(
+          kSweepField.name, [](py::handle s) { return Array(constructed(s).fields.back().value()); },
+          doc::field(kSweepField.name))
       .def("__repr__", &repr);
 
-  bind_shape<kPoint>(m, "A point, or a batch of points of shape (..., 3).");
-  bind_shape<kLine>(m, "The line origin + t * direction, t real (direction of any nonzero length).");
-  bind_shape<kRay>(m, "The ray origin + t * direction, t >= 0.");
-  bind_shape<kSegment>(m, "The segment p0 + t * (p1 - p0), t in [0, 1]; p0 == p1 is a point.");
-  bind_shape<kCircle>(m, "The circle (ring) of a center, a normal (any nonzero length) and a radius >= 0.");
-  bind_shape<kDisk>(m, "The filled disk of a center, a normal (any nonzero length) and a radius >= 0.");
-  bind_shape<kBezier>(m, "The Bezier curve of control points (k + 1, 3), degree k from 1 to 7, t in [0, 1].");
+  bind_shape<kPoint>(m, doc::point());
+  bind_shape<kLine>(m, doc::linear("Line"));
+  bind_shape<kRay>(m, doc::linear("Ray"));
+  bind_shape<kSegment>(m, doc::segment());
+  bind_shape<kCircle>(m, doc::round_shape("Circle"));
+  bind_shape<kDisk>(m, doc::round_shape("Disk"));
+  bind_shape<kBezier>(m, doc::bezier());
 
-  py::class_<ClosestPoints>(m, "ClosestPoints", "Distance, closest points, parameters and uniqueness of a query.")
-      .def_readonly("distance", &ClosestPoints::distance)
-      .def_readonly("point_a", &ClosestPoints::point_a)
-      .def_readonly("point_b", &ClosestPoints::point_b)
-      .def_readonly("param_a", &ClosestPoints::param_a)
-      .def_readonly("param_b", &ClosestPoints::param_b)
-      .def_readonly("unique", &ClosestPoints::unique)
+  // Properties rather than def_readonly, so that signatures and stubs name the result types.
+  py::class_<ClosestPoints>(m, "ClosestPoints", doc::kClosestPoints)
+      .def_property_readonly("distance", [](const ClosestPoints& r) { return Distances(r.distance); },
+                             "The distance, as distance() gives it.")
+      .def_property_readonly("point_a", [](const ClosestPoints& r) { return Array(r.point_a); },
+                             "A closest point on the first argument, shape (..., 3).")
+      .def_property_readonly("point_b", [](const ClosestPoints& r) { return Array(r.point_b); },
+                             "A closest point on the second argument, shape (..., 3).")
+      .def_property_readonly("param_a", [](const ClosestPoints& r) { return Array(r.param_a); },
+                             "point_a's parameters, shape (..., 2): (t, 0), (theta, 0) on circles, (s, theta) on disks.")
+      .def_property_readonly("param_b", [](const ClosestPoints& r) { return Array(r.param_b); },
+                             "point_b's parameters, shape (..., 2).")
+      .def_property_readonly("unique", [](const ClosestPoints& r) { return Flags(r.unique); },
+                             "False when another distinct pair is as close.")
       .def("__repr__", [](const ClosestPoints& r) {
         return "ClosestPoints(distance=" + py::repr(r.distance).cast<std::string>() +
                ", point_a=" + py::repr(r.point_a).cast<std::string>() +
@@ -208,22 +222,18 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "distance",
-      [](py::handle a, py::handle b, py::object precision, py::object solver, int workers) {
-        return run_distance(a, b, precision, solver, workers);
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers) {
+        return Distances(run_distance(a, b, precision, solver, workers));
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
-      py::arg("workers") = 1,
-      "Distance between a and b: a float for two single shapes, an array of the broadcast batch shape otherwise. "
-      "workers: threads for a batch (-1: every core); the answers are the same for any number.");
+      py::arg("workers") = 1, doc::kDistance());
   m.def(
       "closest_points",
-      [](py::handle a, py::handle b, py::object precision, py::object solver, int workers) {
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers) {
         return run_closest(a, b, precision, solver, workers);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
-      py::arg("workers") = 1,
-      "Distance, closest points on a and b, their parameters and the unique flag. workers: threads for a batch "
-      "(-1: every core).");
+      py::arg("workers") = 1, doc::kClosest());
 
   bind_effects(m);
 }

@@ -6,6 +6,8 @@
 
 #include "calls.hpp"
 
+#include <pybind11/typing.h>
+
 #include <string>
 
 namespace {
@@ -15,9 +17,9 @@ Shape limit_shape(const char* owner, py::handle d) {
   return Shape(kPoint, {make_field(owner, "d", d, 1, Check::NonNegative)});
 }
 
-py::dict stats_dict() {
+py::typing::Dict<py::str, py::int_> stats_dict() {
   const Stats& s = stats();
-  py::dict out;
+  py::typing::Dict<py::str, py::int_> out;
   out["solves"] = s.solves;
   out["distances"] = s.distances;
   out["closest_points"] = s.closest_points;
@@ -32,42 +34,34 @@ py::dict stats_dict() {
 inline void bind_effects(py::module_& m) {
   m.def(
       "intersects",
-      [](py::handle a, py::handle b, py::object precision, py::object solver, int workers) {
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers) {
         static const Shape* zero = new Shape(kPoint, {default_sweep()});  // d = 0 (a shared 0-d zero)
-        return run_within(a, b, *zero, false, precision, solver, workers);
+        return Flags(run_within(a, b, *zero, false, precision, solver, workers));
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
-      py::arg("workers") = 1,
-      "Whether a and b touch or overlap (sweeps included): within(a, b, 0). Cheap exact bounds decide first; "
-      "the polynomial solver runs only where they cannot. A bool, or a bool array of the broadcast batch shape.");
+      py::arg("workers") = 1, doc::kIntersects());
   m.def(
       "within",
-      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver, int workers) {
-        return run_within(a, b, limit_shape("within", d), false, precision, solver, workers);
+      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, int workers) {
+        return Flags(run_within(a, b, limit_shape("within", d), false, precision, solver, workers));
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(), py::arg("workers") = 1,
-      "Whether distance(a, b) <= d (d >= 0, up to a rounding tolerance of 64 eps times the pair's size). Cheap "
-      "exact bounds decide first; the polynomial solver runs only where they cannot. d broadcasts with a and b.");
+      py::arg("solver") = py::none(), py::arg("workers") = 1, doc::kWithin());
   m.def(
       "distance_if_within",
-      [](py::handle a, py::handle b, py::handle d, py::object precision, py::object solver, int workers) {
-        return run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver, workers);
+      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, int workers) {
+        return Distances(run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver, workers));
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(), py::arg("workers") = 1,
-      "distance(a, b) where within(a, b, d) holds, inf elsewhere; the distance is only computed where the bounds "
-      "cannot show that it exceeds d.");
+      py::arg("solver") = py::none(), py::arg("workers") = 1, doc::kDistanceIfWithin());
   m.def("stats", &stats_dict,
-        "The calling thread's work counters: solves (polynomial solves), distances (exact distance evaluations), "
-        "closest_points, within (within/intersects pair tests), decided_by_bounds (of those, decided without "
-        "a solve), culled (pairs a Scene's broadphase skipped).");
-  m.def("reset_stats", &reset_stats, "Sets every counter of stats() to 0.");
+        doc::kStats);
+  m.def("reset_stats", &reset_stats, doc::kResetStats);
   m.def(
       "_query_kinds",
       [] {
         const PairTable<double>& t = pairs().of<double>(pairs().default_solver);
-        py::list out;
+        py::typing::List<py::typing::Tuple<py::str, py::str>> out;
         for (int a = 0; a < kKindCount; ++a)
           for (int b = 0; b < kKindCount; ++b)
             if (t.distance[a][b]) out.append(py::make_tuple(kind_name(a), kind_name(b)));

@@ -5,6 +5,8 @@
 #                            the C++ tests (ctest), one C++ test built against cmeel-eigen's Eigen (the
 #                            fallback), and the wheel's tests in a venv of its own with no compiler on PATH
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
+#   bash tools/run.sh docs   install what is missing, build the package, build the API reference
+#                            (docs/api, Sphinx) into build/docs/index.html, warnings as errors
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
 #                            mode over N cases (default 10^7; docs/fuzz_report.json), then the
 #                            differential accuracy test's long mode over N library answers (every
@@ -83,7 +85,8 @@ PY
 }
 case "$task" in
   demo) extras=(plot) ;;
-  test) extras=(test plot) ;;
+  test) extras=(test plot docs) ;;  # docs: the stubs' check and the docs build (tests/test_stubs.py, test_docs.py)
+  docs) extras=(docs) ;;
   fuzz) extras=(test) ;;  # the fuzz and the differential test check against the tests' mpmath references
   bench) extras=(bench) ;;
   *) extras=() ;;
@@ -180,6 +183,11 @@ case "$task" in
     "$py" tools/differential.py --answers "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
     exit $status
     ;;
+  docs)
+    # Read from the package just installed: its docstrings are the reference. -E: no stale pages.
+    "$py" -m sphinx -W --keep-going -E -q -b html docs/api build/docs
+    echo "API reference: build/docs/index.html"
+    ;;
   bench)
     cpp_build -DCIRCLEDIST_BUILD_BENCH=ON
     cmake --build build/cpp --target accuracy_vs_time
@@ -189,7 +197,7 @@ case "$task" in
     "$py" bench/figures.py                # docs/line_disk.png
     ;;
   *)
-    echo "usage: bash tools/run.sh demo|test|bench|fuzz [N]" >&2
+    echo "usage: bash tools/run.sh demo|test|bench|docs|fuzz [N]" >&2
     exit 2
     ;;
 esac

@@ -1,105 +1,892 @@
-"""Type stubs for circledist._core (the compiled module)."""
-
-from typing import Literal, Optional, Union
-
-import numpy as np
-import numpy.typing as npt
-
-ArrayLike = npt.ArrayLike
-Precision = Optional[Literal["float32", "float64", "longdouble"]]
-Solver = Optional[Literal["default", "companion", "polished", "bracketing", "eigen"]]
-
-__version__: str
-
+"""
+circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and Bezier curves in 3D
+"""
+from __future__ import annotations
+import numpy
+import numpy.typing
+import typing
+__all__: list[str] = ['Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'reset_stats', 'stats', 'within']
 class Shape:
+    """
+    Base class of every shape: a single shape or a batch of them.
+    
+    Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk` or
+    `Bezier`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
+    
+    Attributes
+    ----------
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    kind : str
+        The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``
+        or ``'Bezier'``.
+    sweep : numpy.ndarray
+        The sweep radius.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> s = cd.Disk([0, 0, 0], [0, 0, 1], [1.0, 2.0, 3.0])
+    >>> isinstance(s, cd.Shape), s.kind, s.batch_shape
+    (True, 'Disk', (3,))
+    """
+    def __repr__(self) -> str:
+        ...
     @property
-    def batch_shape(self) -> tuple[int, ...]: ...
+    def batch_shape(self) -> tuple[int, ...]:
+        """
+        Leading batch dimensions; () for a single shape.
+        """
     @property
-    def kind(self) -> str: ...
+    def kind(self) -> str:
+        """
+        The class name, e.g. 'Circle'.
+        """
     @property
-    def sweep(self) -> np.ndarray: ...
-
+    def sweep(self) -> numpy.ndarray:
+        """
+        The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).
+        """
 class Point(Shape):
-    def __init__(self, p: ArrayLike, *, sweep: Optional[ArrayLike] = None, copy: bool = True) -> None: ...
+    """
+    A point, or a batch of points.
+    
+    Wherever a query takes a shape, a plain array of shape ``(3,)`` or ``(..., 3)`` is taken as
+    ``Point(array)``.
+    
+    Parameters
+    ----------
+    p : array_like, shape (3,) or (..., 3)
+        Coordinates.
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    p : numpy.ndarray, shape (..., 3)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> p = cd.Point([1, 2, 3])
+    >>> p
+    Point(p=array([1., 2., 3.]))
+    >>> cd.Point([[0, 0, 0], [1, 0, 0]]).batch_shape
+    (2,)
+    >>> cd.distance(cd.Point([0, 0, 5], sweep=1.0), [0, 0, 0])
+    4.0
+    """
+    def __init__(self, p: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
     @property
-    def p(self) -> np.ndarray: ...
-
+    def p(self) -> numpy.ndarray:
+        """
+        The coordinates, shape (..., 3): a read-only array, as stored.
+        """
 class Line(Shape):
-    def __init__(self, origin: ArrayLike, direction: ArrayLike, *, sweep: Optional[ArrayLike] = None, copy: bool = True) -> None: ...
+    """
+    The line ``origin + t * direction``, t real.
+    
+    Parameters
+    ----------
+    origin : array_like, shape (3,) or (..., 3)
+        A point on the line, the parameter origin (t = 0).
+    direction : array_like, shape (3,) or (..., 3)
+        Direction, of any finite nonzero length (it is normalized internally; parameters t of
+        `closest_points` are in units of this vector as given).
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    origin : numpy.ndarray, shape (..., 3)
+    direction : numpy.ndarray, shape (..., 3)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])
+    >>> cd.distance(line, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+    0.5
+    """
+    def __init__(self, origin: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
     @property
-    def origin(self) -> np.ndarray: ...
+    def direction(self) -> numpy.ndarray:
+        """
+        The direction as given (not normalized), shape (..., 3): a read-only array.
+        """
     @property
-    def direction(self) -> np.ndarray: ...
-
+    def origin(self) -> numpy.ndarray:
+        """
+        The origin (t = 0), shape (..., 3): a read-only array, as stored.
+        """
 class Ray(Shape):
-    def __init__(self, origin: ArrayLike, direction: ArrayLike, *, sweep: Optional[ArrayLike] = None, copy: bool = True) -> None: ...
+    """
+    The ray ``origin + t * direction``, t >= 0.
+    
+    Parameters
+    ----------
+    origin : array_like, shape (3,) or (..., 3)
+        The ray's start (t = 0).
+    direction : array_like, shape (3,) or (..., 3)
+        Direction, of any finite nonzero length.
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    origin : numpy.ndarray, shape (..., 3)
+    direction : numpy.ndarray, shape (..., 3)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ray = cd.Ray([0, 0, 2], [0, 0, 1])
+    >>> cd.distance(ray, [0, 0, 0])  # the point lies behind the start
+    2.0
+    """
+    def __init__(self, origin: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
     @property
-    def origin(self) -> np.ndarray: ...
+    def direction(self) -> numpy.ndarray:
+        """
+        The direction as given (not normalized), shape (..., 3): a read-only array.
+        """
     @property
-    def direction(self) -> np.ndarray: ...
-
+    def origin(self) -> numpy.ndarray:
+        """
+        The origin (t = 0), shape (..., 3): a read-only array, as stored.
+        """
 class Segment(Shape):
-    def __init__(self, p0: ArrayLike, p1: ArrayLike, *, sweep: Optional[ArrayLike] = None, copy: bool = True) -> None: ...
+    """
+    The segment ``p0 + t * (p1 - p0)``, t in [0, 1]; ``p0 == p1`` is a point.
+    
+    Parameters
+    ----------
+    p0, p1 : array_like, shape (3,) or (..., 3)
+        End points.
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    p0, p1 : numpy.ndarray, shape (..., 3)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> capsule = cd.Segment([0, 0, 0], [1, 0, 0], sweep=0.1)
+    >>> round(cd.distance(capsule, [0.5, 0, 1]), 12)
+    0.9
+    """
+    def __init__(self, p0: numpy.typing.ArrayLike, p1: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
     @property
-    def p0(self) -> np.ndarray: ...
+    def p0(self) -> numpy.ndarray:
+        """
+        The end point at t = 0, shape (..., 3): a read-only array, as stored.
+        """
     @property
-    def p1(self) -> np.ndarray: ...
-
+    def p1(self) -> numpy.ndarray:
+        """
+        The end point at t = 1, shape (..., 3): a read-only array, as stored.
+        """
 class Circle(Shape):
-    def __init__(self, center: ArrayLike, normal: ArrayLike, radius: ArrayLike, *, sweep: Optional[ArrayLike] = None, copy: bool = True) -> None: ...
+    """
+    The circle (ring) of a center, a normal and a radius.
+    
+    `closest_points` reports a circle point by its angle: ``param = (theta, 0)``.
+    
+    Parameters
+    ----------
+    center : array_like, shape (3,) or (..., 3)
+        Center.
+    normal : array_like, shape (3,) or (..., 3)
+        Normal of the plane, of any finite nonzero length.
+    radius : array_like, shape () or (...)
+        Radius >= 0.
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    center : numpy.ndarray, shape (..., 3)
+    normal : numpy.ndarray, shape (..., 3)
+    radius : numpy.ndarray, shape (...)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> ring
+    Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(1.))
+    >>> cd.distance(ring, [0, 0, 0])  # every ring point is 1 from the center
+    1.0
+    >>> rings = cd.Circle([[0, 0, 0], [0, 0, 2]], [0, 0, 1], [1.0, 2.0])  # a batch of two
+    >>> rings.batch_shape
+    (2,)
+    >>> torus = cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.25)
+    >>> cd.distance(torus, [0, 0, 0])
+    0.75
+    """
+    def __init__(self, center: numpy.typing.ArrayLike, normal: numpy.typing.ArrayLike, radius: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
     @property
-    def center(self) -> np.ndarray: ...
+    def center(self) -> numpy.ndarray:
+        """
+        The center, shape (..., 3): a read-only array, as stored.
+        """
     @property
-    def normal(self) -> np.ndarray: ...
+    def normal(self) -> numpy.ndarray:
+        """
+        The normal as given (not normalized), shape (..., 3): a read-only array.
+        """
     @property
-    def radius(self) -> np.ndarray: ...
-
+    def radius(self) -> numpy.ndarray:
+        """
+        The radius, of the radius's own batch shape (0-d for one): a read-only array.
+        """
 class Disk(Shape):
-    def __init__(self, center: ArrayLike, normal: ArrayLike, radius: ArrayLike, *, sweep: Optional[ArrayLike] = None, copy: bool = True) -> None: ...
+    """
+    The filled disk of a center, a normal and a radius.
+    
+    `closest_points` reports a disk point by polar coordinates: ``param = (s, theta)``.
+    
+    Parameters
+    ----------
+    center : array_like, shape (3,) or (..., 3)
+        Center.
+    normal : array_like, shape (3,) or (..., 3)
+        Normal of the plane, of any finite nonzero length.
+    radius : array_like, shape () or (...)
+        Radius >= 0.
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    center : numpy.ndarray, shape (..., 3)
+    normal : numpy.ndarray, shape (..., 3)
+    radius : numpy.ndarray, shape (...)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> coin = cd.Disk([0, 0, 0], [0, 0, 1], 1.0)
+    >>> cd.distance(coin, [0.5, 0, 2])  # above the disk: the height
+    2.0
+    >>> cd.distance(coin, [3, 0, 0])  # beside it: the distance to the rim
+    2.0
+    """
+    def __init__(self, center: numpy.typing.ArrayLike, normal: numpy.typing.ArrayLike, radius: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
     @property
-    def center(self) -> np.ndarray: ...
+    def center(self) -> numpy.ndarray:
+        """
+        The center, shape (..., 3): a read-only array, as stored.
+        """
     @property
-    def normal(self) -> np.ndarray: ...
+    def normal(self) -> numpy.ndarray:
+        """
+        The normal as given (not normalized), shape (..., 3): a read-only array.
+        """
     @property
-    def radius(self) -> np.ndarray: ...
-
+    def radius(self) -> numpy.ndarray:
+        """
+        The radius, of the radius's own batch shape (0-d for one): a read-only array.
+        """
 class Bezier(Shape):
-    def __init__(self, control_points: ArrayLike, *, sweep: Optional[ArrayLike] = None, copy: bool = True) -> None: ...
+    """
+    The Bezier curve of k + 1 control points, degree k from 1 to 7, t in [0, 1].
+    
+    Queries exist between Bezier curves and circles or disks.
+    
+    Parameters
+    ----------
+    control_points : array_like, shape (k + 1, 3) or (..., k + 1, 3)
+        Control points, 2 to 8 of them.
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    control_points : numpy.ndarray, shape (..., k + 1, 3)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cable = cd.Bezier([[-2, 0, 0.5], [0, 0, 0.5], [2, 0, 0.5]])  # a straight piece at height 0.5
+    >>> cd.distance(cable, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+    0.5
+    """
+    def __init__(self, control_points: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
     @property
-    def control_points(self) -> np.ndarray: ...
-
+    def control_points(self) -> numpy.ndarray:
+        """
+        The control points, shape (..., k + 1, 3): a read-only array, as stored.
+        """
 class ClosestPoints:
+    """
+    The answer of `closest_points`: the distance, a closest pair and its parameters.
+    
+    For single shapes the distance is a float (a ``numpy.longdouble`` in long double) and the flag
+    a bool; for batches each attribute is an array of the broadcast batch shape (with a trailing
+    axis of 3 for points and of 2 for parameters).
+    
+    Attributes
+    ----------
+    distance : float or numpy.ndarray
+        The distance, as `distance` gives it.
+    point_a, point_b : numpy.ndarray, shape (..., 3)
+        A closest point on the first and on the second argument.
+    param_a, param_b : numpy.ndarray, shape (..., 2)
+        Their parameters: ``(t, 0)`` on points, lines, rays, segments and curves, ``(theta, 0)``
+        on circles, ``(s, theta)`` on disks (angles in the shape's own frame about its normal).
+    unique : bool or numpy.ndarray
+        False when another distinct pair is as close (a line on a circle's axis, concentric
+        coplanar circles).
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r = cd.closest_points(cd.Line([-3, 1, 0.5], [1, 0, 0]), cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+    >>> r.distance, r.unique
+    (0.5, True)
+    >>> print(r.point_a, r.point_b)
+    [0.  1.  0.5] [0. 1. 0.]
+    """
+    def __repr__(self) -> str:
+        ...
     @property
-    def distance(self) -> Union[float, np.ndarray]: ...
+    def distance(self) -> float | numpy.longdouble | numpy.ndarray:
+        """
+        The distance, as distance() gives it.
+        """
     @property
-    def point_a(self) -> np.ndarray: ...
+    def param_a(self) -> numpy.ndarray:
+        """
+        point_a's parameters, shape (..., 2): (t, 0), (theta, 0) on circles, (s, theta) on disks.
+        """
     @property
-    def point_b(self) -> np.ndarray: ...
+    def param_b(self) -> numpy.ndarray:
+        """
+        point_b's parameters, shape (..., 2).
+        """
     @property
-    def param_a(self) -> np.ndarray: ...
+    def point_a(self) -> numpy.ndarray:
+        """
+        A closest point on the first argument, shape (..., 3).
+        """
     @property
-    def param_b(self) -> np.ndarray: ...
+    def point_b(self) -> numpy.ndarray:
+        """
+        A closest point on the second argument, shape (..., 3).
+        """
     @property
-    def unique(self) -> Union[bool, np.ndarray]: ...
-
-ShapeLike = Union[Shape, ArrayLike]
-
-def distance(
-    a: ShapeLike, b: ShapeLike, *, precision: Precision = None, solver: Solver = None
-) -> Union[float, np.ndarray]: ...
-def closest_points(
-    a: ShapeLike, b: ShapeLike, *, precision: Precision = None, solver: Solver = None
-) -> ClosestPoints: ...
-def intersects(
-    a: ShapeLike, b: ShapeLike, *, precision: Precision = None, solver: Solver = None
-) -> Union[bool, np.ndarray]: ...
-def within(
-    a: ShapeLike, b: ShapeLike, d: ArrayLike, *, precision: Precision = None, solver: Solver = None
-) -> Union[bool, np.ndarray]: ...
-def distance_if_within(
-    a: ShapeLike, b: ShapeLike, d: ArrayLike, *, precision: Precision = None, solver: Solver = None
-) -> Union[float, np.ndarray]: ...
-def stats() -> dict[str, int]: ...
-def reset_stats() -> None: ...
-def _query_kinds() -> list[tuple[str, str]]: ...
-def _count_culled(n: int) -> None: ...
+    def unique(self) -> bool | numpy.ndarray:
+        """
+        False when another distinct pair is as close.
+        """
+def _count_culled(n: typing.SupportsInt | typing.SupportsIndex) -> None:
+    """
+    Adds n to stats()['culled'] (used by circledist.Scene).
+    """
+def _query_kinds() -> list[tuple[str, str]]:
+    """
+    The (kind, kind) pairs that have a query (used by circledist.Scene).
+    """
+def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> ClosestPoints:
+    """
+    Distance, closest points on a and b, their parameters and whether they are unique.
+    
+    ``closest_points(b, a)`` is ``closest_points(a, b)`` with the points and parameters exchanged.
+    
+    Parameters
+    ----------
+    a, b : Shape or array_like
+        The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+        batch shapes broadcast like NumPy's.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    
+    Returns
+    -------
+    ClosestPoints
+        ``distance``, ``point_a``, ``point_b``, ``param_a``, ``param_b`` and ``unique``: scalars and
+        single points for two single shapes, arrays of the broadcast batch shape otherwise.
+    
+    Raises
+    ------
+    ValueError
+        For an unknown precision or solver, batch shapes that do not broadcast, an invalid
+        array-like given as a point, or (float32) an input beyond float32's range.
+    TypeError
+        When there is no query between the two kinds (Bezier curves have queries with circles and
+        disks only).
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> r = cd.closest_points(cd.Line([-3, 1, 0.5], [1, 0, 0]), ring)
+    >>> r
+    ClosestPoints(distance=0.5, point_a=array([0. , 1. , 0.5]), point_b=array([0., 1., 0.]), unique=True)
+    >>> print(r.param_a)  # t on the line: origin + 3 * direction
+    [3. 0.]
+    >>> cd.closest_points(cd.Line([0, 0, -1], [0, 0, 1]), ring).unique  # on the axis: every ring point
+    False
+    """
+def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> float | numpy.longdouble | numpy.ndarray:
+    """
+    Distance between a and b.
+    
+    Does no closest-point work. Both argument orders agree to the bit.
+    
+    Parameters
+    ----------
+    a, b : Shape or array_like
+        The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+        batch shapes broadcast like NumPy's.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    
+    Returns
+    -------
+    float or numpy.ndarray
+        A float for two single shapes (a ``numpy.longdouble`` in long double); otherwise an array of
+        the broadcast batch shape (dtype float64, float32 or longdouble, by precision).
+    
+    Raises
+    ------
+    ValueError
+        For an unknown precision or solver, batch shapes that do not broadcast, an invalid
+        array-like given as a point, or (float32) an input beyond float32's range.
+    TypeError
+        When there is no query between the two kinds (Bezier curves have queries with circles and
+        disks only).
+    
+    See Also
+    --------
+    closest_points : the closest points as well.
+    distance_if_within : the distance only where it is at most a limit.
+    
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])  # passes 0.5 above the rim
+    >>> cd.distance(line, ring)
+    0.5
+    >>> cd.distance(line, ring, precision="longdouble", solver="companion") == 0.5
+    np.True_
+    >>> cd.distance([[2, 0, 0], [0, 0, 3]], ring)  # two points against one ring
+    array([1.        , 3.16227766])
+    >>> rings = cd.Circle(np.zeros((3, 3)), [0, 0, 1], [1.0, 2.0, 3.0])
+    >>> cd.distance(cd.Point(np.zeros((2, 1, 3))), rings).shape  # (2, 1) with (3,) broadcast
+    (2, 3)
+    >>> cd.distance(line, ring, solver="newton")
+    Traceback (most recent call last):
+    ...
+    ValueError: solver must be None, 'default', 'companion', 'polished', 'bracketing' or 'eigen', got 'newton'
+    """
+def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> float | numpy.longdouble | numpy.ndarray:
+    """
+    ``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.
+    
+    The distance is only computed where the bounds cannot show that it exceeds d.
+    
+    Parameters
+    ----------
+    a, b : Shape or array_like
+        The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+        batch shapes broadcast like NumPy's.
+    d : array_like
+        Finite distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a
+        and b.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    
+    Returns
+    -------
+    float or numpy.ndarray
+        As `distance`, with inf where the distance exceeds d.
+    
+    Raises
+    ------
+    ValueError
+        For an unknown precision or solver, batch shapes that do not broadcast, an invalid
+        array-like given as a point, or (float32) an input beyond float32's range.
+    TypeError
+        When there is no query between the two kinds (Bezier curves have queries with circles and
+        disks only).
+        Also ValueError when d is negative, NaN, inf or not a real number.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])
+    >>> cd.distance_if_within(line, ring, [0.4, 0.6])
+    array([inf, 0.5])
+    """
+def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> bool | numpy.ndarray:
+    """
+    Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.
+    
+    Cheap exact bounds decide first; the polynomial solver runs only where they cannot.
+    
+    Parameters
+    ----------
+    a, b : Shape or array_like
+        The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+        batch shapes broadcast like NumPy's.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    
+    Returns
+    -------
+    bool or numpy.ndarray
+        A bool for two single shapes, a bool array of the broadcast batch shape otherwise.
+    
+    Raises
+    ------
+    ValueError
+        For an unknown precision or solver, batch shapes that do not broadcast, an invalid
+        array-like given as a point, or (float32) an input beyond float32's range.
+    TypeError
+        When there is no query between the two kinds (Bezier curves have queries with circles and
+        disks only).
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> cd.intersects(ring, cd.Disk([0, 0, 0], [1, 0, 0], 2.0))  # the disk cuts through the ring
+    True
+    >>> cd.intersects(ring, [[0, 0, 0], [1, 0, 0]])
+    array([False,  True])
+    """
+def reset_stats() -> None:
+    """
+    Sets every counter of `stats` to 0 (the calling thread's).
+    
+    Returns
+    -------
+    None
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> _ = cd.distance([0, 0, 0], [1, 0, 0])
+    >>> cd.reset_stats()
+    >>> set(cd.stats().values())
+    {0}
+    """
+def stats() -> dict[str, int]:
+    """
+    The calling thread's work counters since the last `reset_stats`.
+    
+    Returns
+    -------
+    dict of str to int
+        ``solves`` (polynomial solves), ``distances`` (exact distance evaluations),
+        ``closest_points``, ``within`` (within and intersects pair tests), ``decided_by_bounds``
+        (of those, decided by cheap bounds without an exact distance) and ``culled`` (pairs a
+        `Scene`'s hierarchy skipped).
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> cd.reset_stats()
+    >>> cd.intersects(ring, cd.Circle([5, 5, 5], [0, 0, 1], 1.0))  # far apart: the bounds decide
+    False
+    >>> cd.intersects(ring, cd.Circle([0.5, 0, 0], [0, 1, 1], 1.0))  # close: an octic is solved
+    False
+    >>> s = cd.stats()
+    >>> s["within"], s["decided_by_bounds"], s["distances"], s["solves"]
+    (2, 1, 1, 1)
+    """
+def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> bool | numpy.ndarray:
+    """
+    Whether distance(a, b) <= d.
+    
+    Up to a rounding tolerance of 64 eps times the pair's size. Cheap exact bounds decide first; the polynomial solver runs only where they cannot.
+    
+    Parameters
+    ----------
+    a, b : Shape or array_like
+        The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+        batch shapes broadcast like NumPy's.
+    d : array_like
+        Finite distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a
+        and b.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    
+    Returns
+    -------
+    bool or numpy.ndarray
+        A bool when a, b and d are single, otherwise a bool array of their broadcast shape.
+    
+    Raises
+    ------
+    ValueError
+        For an unknown precision or solver, batch shapes that do not broadcast, an invalid
+        array-like given as a point, or (float32) an input beyond float32's range.
+    TypeError
+        When there is no query between the two kinds (Bezier curves have queries with circles and
+        disks only).
+        Also ValueError when d is negative, NaN, inf or not a real number.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])  # 0.5 from the ring
+    >>> cd.within(line, ring, 0.5)
+    True
+    >>> cd.within(line, ring, [0.4, 0.6])
+    array([False,  True])
+    """
+__version__: str

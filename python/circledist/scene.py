@@ -252,12 +252,37 @@ class _Query:
 class Scene:
     """Named shapes of any kinds (each a single shape) and culled queries over them.
 
+    A bounding-volume hierarchy skips the shapes a query cannot reach; every answer is the one
+    brute force over `circledist.within` and `circledist.distance` gives.
+
+    Parameters
+    ----------
+    shapes : mapping or iterable of (str, Shape) pairs, optional
+        Initial shapes by name, added in order with `add`.
+
+    Attributes
+    ----------
+    names : list of str
+        The shapes' names, in insertion order.
+    last_stats : dict
+        Of the last query: ``shapes`` (in the scene), ``tested`` (exact tests run) and
+        ``culled`` (shapes the hierarchy skipped).
+
+    Raises
+    ------
+    TypeError, ValueError
+        As `add` does for each initial shape.
+
+    Examples
+    --------
     >>> import circledist as cd
     >>> s = cd.Scene()
     >>> s.add("ring", cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
     >>> s.add("coin", cd.Disk([3, 0, 0], [1, 0, 0], 0.5, sweep=0.1))
     >>> s.nearest(cd.Line([-5, 1, 0.5], [1, 0, 0]))
     [('ring', 0.5)]
+    >>> len(s), "coin" in s, s.names
+    (2, True, ['ring', 'coin'])
     """
 
     def __init__(self, shapes=None):
@@ -282,10 +307,38 @@ class Scene:
 
     @property
     def names(self) -> list[str]:
+        """The shapes' names, in insertion order (a new list)."""
         return list(self._names)
 
     def add(self, name: str, shape) -> None:
-        """Adds one (unbatched) shape under a new name."""
+        """Adds one (unbatched) shape under a new name.
+
+        Parameters
+        ----------
+        name : str
+            A name not yet in the scene.
+        shape : Shape
+            A single shape (batch shape ``()``).
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        TypeError
+            When `shape` is not a circledist shape or `name` not a string.
+        ValueError
+            When `shape` is a batch (use `extend`) or `name` is taken.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene()
+        >>> s.add("probe", cd.Point([0, 0, 1]))
+        >>> s["probe"]
+        Point(p=array([0., 0., 1.]))
+        """
         if not isinstance(shape, _core.Shape):
             raise TypeError(f"Scene.add: {name!r} must be a circledist shape, got {type(shape).__name__}")
         if shape.batch_shape != ():
@@ -294,8 +347,35 @@ class Scene:
         self._insert([name], shape)
 
     def extend(self, names, batch) -> None:
-        """Adds every shape of a batch: `names` is a sequence of new names (one per element, in
-        C order) or a prefix string (names prefix0, prefix1, ...)."""
+        """Adds every shape of a batch.
+
+        Parameters
+        ----------
+        names : str or sequence of str
+            New names, one per element of the batch in C order, or a prefix string: the names
+            are then prefix0, prefix1, ...
+        batch : Shape
+            A shape of any batch shape.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        TypeError
+            When `batch` is not a circledist shape or a name is not a string.
+        ValueError
+            When the number of names differs from the batch's size, or a name is taken.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene()
+        >>> s.extend("disk", cd.Disk([[0, 0, 0], [4, 0, 0]], [0, 0, 1], 1.0))
+        >>> s.names
+        ['disk0', 'disk1']
+        """
         if not isinstance(batch, _core.Shape):
             raise TypeError(f"Scene.extend: expected a circledist shape, got {type(batch).__name__}")
         count = int(np.prod(batch.batch_shape, dtype=np.int64))
@@ -334,7 +414,30 @@ class Scene:
         self._built = None
 
     def shape(self, name: str):
-        """The shape stored under `name`."""
+        """The shape stored under `name` (also ``scene[name]``).
+
+        Parameters
+        ----------
+        name : str
+            The shape's name.
+
+        Returns
+        -------
+        Shape
+            A single shape equal to the one added.
+
+        Raises
+        ------
+        KeyError
+            When no shape has that name.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene({"ring": cd.Circle([0, 0, 0], [0, 0, 1], 2.0)})
+        >>> s.shape("ring").radius
+        array(2.)
+        """
         b = self._build()
         i = self._lookup(name)
         return b.groups[b.group[i]].single(b.row[i])
@@ -484,9 +587,44 @@ class Scene:
 
     # ---- queries ---------------------------------------------------------------------------
     def nearest(self, shape, k: int = 1, *, exclude: Sequence[str] = ()) -> list[tuple[str, float]]:
-        """The k scene shapes nearest to `shape` (a shape, or the name of a scene shape, which is
-        then left out), as (name, distance) pairs sorted by distance then insertion order: the
-        same as sorting every distance (brute force)."""
+        """The k scene shapes nearest to `shape`.
+
+        Parameters
+        ----------
+        shape : Shape, array_like or str
+            A single shape, a point as an array of shape (3,), or the name of a scene shape
+            (which is then left out of its own answer).
+        k : int, default 1
+            How many shapes to return (fewer when the scene holds fewer).
+        exclude : sequence of str, optional
+            Keyword only. Names of scene shapes to leave out.
+
+        Returns
+        -------
+        list of (str, float)
+            (name, distance) pairs sorted by distance, then by insertion order: the same as
+            sorting every distance (brute force).
+
+        Raises
+        ------
+        KeyError
+            When `shape` or a name in `exclude` is not a scene shape's name.
+        TypeError
+            When k is not an integer, or there is no query between `shape`'s kind and a kind
+            in the scene.
+        ValueError
+            When k < 1 or `shape` is a batch.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene()
+        >>> s.extend("ball", cd.Point([[0, 0, 0], [2, 0, 0], [5, 0, 0]], sweep=0.5))
+        >>> s.nearest([1.5, 0, 0], k=2)
+        [('ball1', 0.0), ('ball0', 1.0)]
+        >>> s.nearest("ball0")
+        [('ball1', 1.0)]
+        """
         shape, skip = self._resolve(shape)
         skip |= {self._lookup(n) for n in exclude}
         if isinstance(k, (bool, np.bool_)) or not isinstance(k, (int, np.integer)):
@@ -569,8 +707,37 @@ class Scene:
         return items[np.argsort(bound, kind="stable")[:k + 2]]
 
     def within(self, shape, d: float) -> list[str]:
-        """Names of the scene shapes within distance d of `shape` (a shape, or the name of a scene
-        shape, then left out), in insertion order: those for which circledist.within holds."""
+        """Names of the scene shapes within distance d of `shape`.
+
+        Parameters
+        ----------
+        shape : Shape, array_like or str
+            A single shape, a point, or the name of a scene shape (then left out).
+        d : float
+            Distance limit >= 0.
+
+        Returns
+        -------
+        list of str
+            In insertion order: the shapes for which ``circledist.within(shape, s, d)`` holds.
+
+        Raises
+        ------
+        KeyError
+            When `shape` is a name not in the scene.
+        TypeError
+            When d is not a real number, or there is no query between the kinds.
+        ValueError
+            When d is negative or NaN, or `shape` is a batch.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene()
+        >>> s.extend("ball", cd.Point([[0, 0, 0], [2, 0, 0], [5, 0, 0]], sweep=0.5))
+        >>> s.within(cd.Segment([0, 1, 0], [3, 1, 0]), 0.5)
+        ['ball0', 'ball1']
+        """
         shape, skip = self._resolve(shape)
         d = _limit("Scene.within", d)
         b = self._build()
@@ -585,8 +752,34 @@ class Scene:
         return [self._names[i] for i in items[hit]]
 
     def pairs_within(self, d: float) -> list[tuple[str, str]]:
-        """Every pair of scene shapes within distance d of each other, as (name_i, name_j) with i
-        added before j, sorted by (i, j): the pairs for which circledist.within holds."""
+        """Every pair of scene shapes within distance d of each other.
+
+        Parameters
+        ----------
+        d : float
+            Distance limit >= 0.
+
+        Returns
+        -------
+        list of (str, str)
+            (name_i, name_j) with i added before j, sorted by (i, j): the pairs for which
+            `circledist.within` holds.
+
+        Raises
+        ------
+        TypeError
+            When d is not a real number, or the scene holds two kinds without a query.
+        ValueError
+            When d is negative or NaN.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene()
+        >>> s.extend("ball", cd.Point([[0, 0, 0], [2, 0, 0], [5, 0, 0]], sweep=0.5))
+        >>> s.pairs_within(1.0)
+        [('ball0', 'ball1')]
+        """
         d = _limit("Scene.pairs_within", d)
         b = self._build()
         supported = _supported()
@@ -665,8 +858,35 @@ class Scene:
         return ca[ok], cb[ok]
 
     def distance_matrix(self, a_names: Sequence[str], b_names: Sequence[str]) -> np.ndarray:
-        """The distances between every named shape of a_names (rows) and of b_names (columns);
-        no culling (every entry is asked for) and no closest-point work."""
+        """The distances between every named shape of a_names (rows) and of b_names (columns).
+
+        No culling (every entry is asked for) and no closest-point work.
+
+        Parameters
+        ----------
+        a_names, b_names : sequence of str
+            Names of scene shapes.
+
+        Returns
+        -------
+        numpy.ndarray, shape (len(a_names), len(b_names))
+            ``circledist.distance`` of each pair.
+
+        Raises
+        ------
+        KeyError
+            When a name is not in the scene.
+        TypeError
+            When there is no query between two of the kinds.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene()
+        >>> s.extend("ball", cd.Point([[0, 0, 0], [2, 0, 0], [5, 0, 0]], sweep=0.5))
+        >>> s.distance_matrix(["ball0"], ["ball1", "ball2"])
+        array([[1., 4.]])
+        """
         b = self._build()
         ia = np.array([self._lookup(n) for n in a_names], dtype=int)
         ib = np.array([self._lookup(n) for n in b_names], dtype=int)

@@ -1,0 +1,518 @@
+// What help(), the Sphinx reference and the generated stubs (python/circledist/_core.pyi) show of
+// the compiled module: the Python types of the arguments and results, and NumPy-style docstrings
+// whose examples run as doctests (tests/test_docstrings.py). No behaviour lives here.
+#pragma once
+
+#include <pybind11/pybind11.h>
+#include <pybind11/typing.h>
+
+#include <string>
+
+namespace circledist::python {
+
+namespace py = pybind11;
+
+inline bool accepts_any_object(PyObject*) { return true; }
+
+// py::object under another name in signatures: the bindings take and return Python objects
+// (array-likes, None, strings; floats or arrays depending on the batch), which pybind11 would
+// show as `object`. Each alias accepts every object; the checks stay where they were.
+#define CIRCLEDIST_TYPED_OBJECT(NAME, PYTHON_TYPE)                                  \
+  class NAME : public py::object {                                                  \
+   public:                                                                          \
+    PYBIND11_OBJECT_DEFAULT(NAME, py::object, accepts_any_object)                   \
+  };                                                                                \
+  }                                                                                 \
+  namespace pybind11::detail {                                                      \
+  template <> struct handle_type_name<circledist::python::NAME> {                   \
+    static constexpr auto name = const_name(PYTHON_TYPE);                           \
+  };                                                                                \
+  }                                                                                 \
+  namespace circledist::python {
+
+CIRCLEDIST_TYPED_OBJECT(ShapeLike, "circledist._core.Shape | numpy.typing.ArrayLike")
+CIRCLEDIST_TYPED_OBJECT(ArrayLike, "numpy.typing.ArrayLike")
+CIRCLEDIST_TYPED_OBJECT(OptionalArrayLike, "numpy.typing.ArrayLike | None")
+CIRCLEDIST_TYPED_OBJECT(PrecisionName, "typing.Literal['float32', 'float64', 'longdouble'] | None")
+CIRCLEDIST_TYPED_OBJECT(SolverName,
+                        "typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None")
+CIRCLEDIST_TYPED_OBJECT(Array, "numpy.ndarray")
+CIRCLEDIST_TYPED_OBJECT(Distances, "float | numpy.longdouble | numpy.ndarray")
+CIRCLEDIST_TYPED_OBJECT(Flags, "bool | numpy.ndarray")
+
+#undef CIRCLEDIST_TYPED_OBJECT
+
+namespace doc {
+
+// The docstring of a shape's field property, by the field's name (shapes.hpp's FieldSpec).
+inline const char* field(const std::string& name) {
+  if (name == "p") return "The coordinates, shape (..., 3): a read-only array, as stored.";
+  if (name == "origin") return "The origin (t = 0), shape (..., 3): a read-only array, as stored.";
+  if (name == "direction") return "The direction as given (not normalized), shape (..., 3): a read-only array.";
+  if (name == "p0") return "The end point at t = 0, shape (..., 3): a read-only array, as stored.";
+  if (name == "p1") return "The end point at t = 1, shape (..., 3): a read-only array, as stored.";
+  if (name == "center") return "The center, shape (..., 3): a read-only array, as stored.";
+  if (name == "normal") return "The normal as given (not normalized), shape (..., 3): a read-only array.";
+  if (name == "radius") return "The radius, of the radius's own batch shape (0-d for one): a read-only array.";
+  if (name == "control_points") return "The control points, shape (..., k + 1, 3): a read-only array, as stored.";
+  if (name == "sweep") return "The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).";
+  return "A field of the shape: a read-only array, as stored.";
+}
+
+// ---- pieces shared by the shape classes -------------------------------------------------------
+
+inline const char* const kShapeParameters = R"(
+sweep : array_like, optional
+    Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+    capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+copy : bool, default True
+    Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+    arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+    copying them (a read-only view, validated once, of arrays the caller promises not to
+    change); other dtypes and layouts are still converted, which copies.
+)";
+
+inline const char* const kShapeRaises = R"(
+Raises
+------
+ValueError
+    When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+    inf, when a direction or normal has zero length, a radius or sweep is negative, or the
+    fields' batch shapes do not broadcast. The message names the class, the field and the first
+    offending batch index, e.g. ``Circle: radius[1] is negative``.
+
+Notes
+-----
+Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+(float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+``precision='longdouble'`` reads them unrounded.
+)";
+
+inline std::string shape_doc(const char* summary, const char* parameters, const char* attributes,
+                             const char* examples) {
+  return std::string(summary) + "\n\nParameters\n----------" + parameters + kShapeParameters +
+         "\nAttributes\n----------" + attributes +
+         "sweep : numpy.ndarray\n    The sweep radius, of the sweep's batch shape.\n"
+         "batch_shape : tuple of int\n    Leading batch dimensions; ``()`` for a single shape.\n" +
+         kShapeRaises + "\nExamples\n--------" + examples;
+}
+
+inline const std::string& point() {
+  static const std::string text = shape_doc(
+      "A point, or a batch of points.\n\n"
+      "Wherever a query takes a shape, a plain array of shape ``(3,)`` or ``(..., 3)`` is taken as\n"
+      "``Point(array)``.",
+      R"(
+p : array_like, shape (3,) or (..., 3)
+    Coordinates.)",
+      R"(
+p : numpy.ndarray, shape (..., 3)
+)",
+      R"(
+>>> import circledist as cd
+>>> p = cd.Point([1, 2, 3])
+>>> p
+Point(p=array([1., 2., 3.]))
+>>> cd.Point([[0, 0, 0], [1, 0, 0]]).batch_shape
+(2,)
+>>> cd.distance(cd.Point([0, 0, 5], sweep=1.0), [0, 0, 0])
+4.0
+)");
+  return text;
+}
+
+inline const std::string& linear(const char* kind) {
+  static const std::string line = shape_doc(
+      "The line ``origin + t * direction``, t real.",
+      R"(
+origin : array_like, shape (3,) or (..., 3)
+    A point on the line, the parameter origin (t = 0).
+direction : array_like, shape (3,) or (..., 3)
+    Direction, of any finite nonzero length (it is normalized internally; parameters t of
+    `closest_points` are in units of this vector as given).)",
+      R"(
+origin : numpy.ndarray, shape (..., 3)
+direction : numpy.ndarray, shape (..., 3)
+)",
+      R"(
+>>> import circledist as cd
+>>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])
+>>> cd.distance(line, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+0.5
+)");
+  static const std::string ray = shape_doc(
+      "The ray ``origin + t * direction``, t >= 0.",
+      R"(
+origin : array_like, shape (3,) or (..., 3)
+    The ray's start (t = 0).
+direction : array_like, shape (3,) or (..., 3)
+    Direction, of any finite nonzero length.)",
+      R"(
+origin : numpy.ndarray, shape (..., 3)
+direction : numpy.ndarray, shape (..., 3)
+)",
+      R"(
+>>> import circledist as cd
+>>> ray = cd.Ray([0, 0, 2], [0, 0, 1])
+>>> cd.distance(ray, [0, 0, 0])  # the point lies behind the start
+2.0
+)");
+  return std::string(kind) == "Line" ? line : ray;
+}
+
+inline const std::string& segment() {
+  static const std::string text = shape_doc(
+      "The segment ``p0 + t * (p1 - p0)``, t in [0, 1]; ``p0 == p1`` is a point.",
+      R"(
+p0, p1 : array_like, shape (3,) or (..., 3)
+    End points.)",
+      R"(
+p0, p1 : numpy.ndarray, shape (..., 3)
+)",
+      R"(
+>>> import circledist as cd
+>>> capsule = cd.Segment([0, 0, 0], [1, 0, 0], sweep=0.1)
+>>> round(cd.distance(capsule, [0.5, 0, 1]), 12)
+0.9
+)");
+  return text;
+}
+
+inline const std::string& round_shape(const char* kind) {
+  static const char* const parameters = R"(
+center : array_like, shape (3,) or (..., 3)
+    Center.
+normal : array_like, shape (3,) or (..., 3)
+    Normal of the plane, of any finite nonzero length.
+radius : array_like, shape () or (...)
+    Radius >= 0.)";
+  static const char* const attributes = R"(
+center : numpy.ndarray, shape (..., 3)
+normal : numpy.ndarray, shape (..., 3)
+radius : numpy.ndarray, shape (...)
+)";
+  static const std::string circle = shape_doc(
+      "The circle (ring) of a center, a normal and a radius.\n\n"
+      "`closest_points` reports a circle point by its angle: ``param = (theta, 0)``.",
+      parameters, attributes,
+      R"(
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> ring
+Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(1.))
+>>> cd.distance(ring, [0, 0, 0])  # every ring point is 1 from the center
+1.0
+>>> rings = cd.Circle([[0, 0, 0], [0, 0, 2]], [0, 0, 1], [1.0, 2.0])  # a batch of two
+>>> rings.batch_shape
+(2,)
+>>> torus = cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.25)
+>>> cd.distance(torus, [0, 0, 0])
+0.75
+)");
+  static const std::string disk = shape_doc(
+      "The filled disk of a center, a normal and a radius.\n\n"
+      "`closest_points` reports a disk point by polar coordinates: ``param = (s, theta)``.",
+      parameters, attributes,
+      R"(
+>>> import circledist as cd
+>>> coin = cd.Disk([0, 0, 0], [0, 0, 1], 1.0)
+>>> cd.distance(coin, [0.5, 0, 2])  # above the disk: the height
+2.0
+>>> cd.distance(coin, [3, 0, 0])  # beside it: the distance to the rim
+2.0
+)");
+  return std::string(kind) == "Circle" ? circle : disk;
+}
+
+inline const std::string& bezier() {
+  static const std::string text = shape_doc(
+      "The Bezier curve of k + 1 control points, degree k from 1 to 7, t in [0, 1].\n\n"
+      "Queries exist between Bezier curves and circles or disks.",
+      R"(
+control_points : array_like, shape (k + 1, 3) or (..., k + 1, 3)
+    Control points, 2 to 8 of them.)",
+      R"(
+control_points : numpy.ndarray, shape (..., k + 1, 3)
+)",
+      R"(
+>>> import circledist as cd
+>>> cable = cd.Bezier([[-2, 0, 0.5], [0, 0, 0.5], [2, 0, 0.5]])  # a straight piece at height 0.5
+>>> cd.distance(cable, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+0.5
+)");
+  return text;
+}
+
+inline const char* const kShape = R"(Base class of every shape: a single shape or a batch of them.
+
+Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk` or
+`Bezier`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
+
+Attributes
+----------
+batch_shape : tuple of int
+    Leading batch dimensions; ``()`` for a single shape.
+kind : str
+    The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``
+    or ``'Bezier'``.
+sweep : numpy.ndarray
+    The sweep radius.
+
+Examples
+--------
+>>> import circledist as cd
+>>> s = cd.Disk([0, 0, 0], [0, 0, 1], [1.0, 2.0, 3.0])
+>>> isinstance(s, cd.Shape), s.kind, s.batch_shape
+(True, 'Disk', (3,))
+)";
+
+inline const char* const kClosestPoints = R"(The answer of `closest_points`: the distance, a closest pair and its parameters.
+
+For single shapes the distance is a float (a ``numpy.longdouble`` in long double) and the flag
+a bool; for batches each attribute is an array of the broadcast batch shape (with a trailing
+axis of 3 for points and of 2 for parameters).
+
+Attributes
+----------
+distance : float or numpy.ndarray
+    The distance, as `distance` gives it.
+point_a, point_b : numpy.ndarray, shape (..., 3)
+    A closest point on the first and on the second argument.
+param_a, param_b : numpy.ndarray, shape (..., 2)
+    Their parameters: ``(t, 0)`` on points, lines, rays, segments and curves, ``(theta, 0)``
+    on circles, ``(s, theta)`` on disks (angles in the shape's own frame about its normal).
+unique : bool or numpy.ndarray
+    False when another distinct pair is as close (a line on a circle's axis, concentric
+    coplanar circles).
+
+Examples
+--------
+>>> import circledist as cd
+>>> r = cd.closest_points(cd.Line([-3, 1, 0.5], [1, 0, 0]), cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
+>>> r.distance, r.unique
+(0.5, True)
+>>> print(r.point_a, r.point_b)
+[0.  1.  0.5] [0. 1. 0.]
+)";
+
+// ---- functions --------------------------------------------------------------------------------
+
+inline const char* const kQueryParameters = R"(a, b : Shape or array_like
+    The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+    batch shapes broadcast like NumPy's.
+)";
+inline const char* const kLimitParameter = R"(d : array_like
+    Finite distance limits >= 0, a scalar or an array broadcasting with the batch shapes of a
+    and b.
+)";
+inline const char* const kChoiceParameters = R"(precision : {None, 'float32', 'float64', 'longdouble'}, optional
+    Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+    field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+    otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+    ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+    ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+    are accepted as aliases.)
+solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+    Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+    'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+    companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+    bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+    pairs give the same answer with every solver.
+workers : int, optional
+    Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+    convention): a positive count, or -1 for every core; default 1. The answers are the same
+    bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+    (KeyboardInterrupt).
+)";
+inline const char* const kQueryRaises = R"(Raises
+------
+ValueError
+    For an unknown precision or solver, batch shapes that do not broadcast, an invalid
+    array-like given as a point, (float32) an input beyond float32's range, or a worker count
+    that is neither positive nor -1.
+TypeError
+    When there is no query between the two kinds (Bezier curves have queries with circles and
+    disks only).
+)";
+
+inline const char* kDistance() {
+  static const std::string text = std::string() + "Distance between a and b.\n\n"
+                                     "Does no closest-point work. Both argument orders agree to the bit.\n\n"
+                                     "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + R"(
+Returns
+-------
+float or numpy.ndarray
+    A float for two single shapes (a ``numpy.longdouble`` in long double); otherwise an array of
+    the broadcast batch shape (dtype float64, float32 or longdouble, by precision).
+
+)" + kQueryRaises + R"(
+See Also
+--------
+closest_points : the closest points as well.
+distance_if_within : the distance only where it is at most a limit.
+
+Examples
+--------
+>>> import numpy as np
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])  # passes 0.5 above the rim
+>>> cd.distance(line, ring)
+0.5
+>>> cd.distance(line, ring, precision="longdouble", solver="companion") == 0.5
+np.True_
+>>> cd.distance([[2, 0, 0], [0, 0, 3]], ring)  # two points against one ring
+array([1.        , 3.16227766])
+>>> rings = cd.Circle(np.zeros((3, 3)), [0, 0, 1], [1.0, 2.0, 3.0])
+>>> cd.distance(cd.Point(np.zeros((2, 1, 3))), rings).shape  # (2, 1) with (3,) broadcast
+(2, 3)
+>>> cd.distance(line, ring, solver="newton")
+Traceback (most recent call last):
+...
+ValueError: solver must be None, 'default', 'companion', 'polished', 'bracketing' or 'eigen', got 'newton'
+)";
+  return text.c_str();
+}
+
+inline const char* kClosest() {
+  static const std::string text = std::string() + "Distance, closest points on a and b, their parameters and whether they are unique.\n\n"
+                                    "``closest_points(b, a)`` is ``closest_points(a, b)`` with the points and parameters "
+                                    "exchanged.\n\n"
+                                    "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + R"(
+Returns
+-------
+ClosestPoints
+    ``distance``, ``point_a``, ``point_b``, ``param_a``, ``param_b`` and ``unique``: scalars and
+    single points for two single shapes, arrays of the broadcast batch shape otherwise.
+
+)" + kQueryRaises + R"(
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> r = cd.closest_points(cd.Line([-3, 1, 0.5], [1, 0, 0]), ring)
+>>> r
+ClosestPoints(distance=0.5, point_a=array([0. , 1. , 0.5]), point_b=array([0., 1., 0.]), unique=True)
+>>> print(r.param_a)  # t on the line: origin + 3 * direction
+[3. 0.]
+>>> cd.closest_points(cd.Line([0, 0, -1], [0, 0, 1]), ring).unique  # on the axis: every ring point
+False
+)";
+  return text.c_str();
+}
+
+inline const char* kIntersects() {
+  static const std::string text = std::string() + "Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.\n\n"
+                                       "Cheap exact bounds decide first; the polynomial solver runs only where they "
+                                       "cannot.\n\n"
+                                       "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + R"(
+Returns
+-------
+bool or numpy.ndarray
+    A bool for two single shapes, a bool array of the broadcast batch shape otherwise.
+
+)" + kQueryRaises + R"(
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> cd.intersects(ring, cd.Disk([0, 0, 0], [1, 0, 0], 2.0))  # the disk cuts through the ring
+True
+>>> cd.intersects(ring, [[0, 0, 0], [1, 0, 0]])
+array([False,  True])
+)";
+  return text.c_str();
+}
+
+inline const char* kWithin() {
+  static const std::string text = std::string() + "Whether distance(a, b) <= d.\n\n"
+                                   "Up to a rounding tolerance of 64 eps times the pair's size. Cheap exact bounds "
+                                   "decide first; the polynomial solver runs only where they cannot.\n\n"
+                                   "Parameters\n----------\n" + kQueryParameters + kLimitParameter +
+                                       + kChoiceParameters + R"(
+Returns
+-------
+bool or numpy.ndarray
+    A bool when a, b and d are single, otherwise a bool array of their broadcast shape.
+
+)" + kQueryRaises + R"(    Also ValueError when d is negative, NaN, inf or not a real number.
+
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])  # 0.5 from the ring
+>>> cd.within(line, ring, 0.5)
+True
+>>> cd.within(line, ring, [0.4, 0.6])
+array([False,  True])
+)";
+  return text.c_str();
+}
+
+inline const char* kDistanceIfWithin() {
+  static const std::string text = std::string() +
+    "``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.\n\n"
+    "The distance is only computed where the bounds cannot show that it exceeds d.\n\n"
+    "Parameters\n----------\n" + kQueryParameters + kLimitParameter + kChoiceParameters + R"(
+Returns
+-------
+float or numpy.ndarray
+    As `distance`, with inf where the distance exceeds d.
+
+)" + kQueryRaises + R"(    Also ValueError when d is negative, NaN, inf or not a real number.
+
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])
+>>> cd.distance_if_within(line, ring, [0.4, 0.6])
+array([inf, 0.5])
+)";
+  return text.c_str();
+}
+
+inline const char* const kStats = R"(The calling thread's work counters since the last `reset_stats`.
+
+Returns
+-------
+dict of str to int
+    ``solves`` (polynomial solves), ``distances`` (exact distance evaluations),
+    ``closest_points``, ``within`` (within and intersects pair tests), ``decided_by_bounds``
+    (of those, decided by cheap bounds without an exact distance) and ``culled`` (pairs a
+    `Scene`'s hierarchy skipped).
+
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> cd.reset_stats()
+>>> cd.intersects(ring, cd.Circle([5, 5, 5], [0, 0, 1], 1.0))  # far apart: the bounds decide
+False
+>>> cd.intersects(ring, cd.Circle([0.5, 0, 0], [0, 1, 1], 1.0))  # close: an octic is solved
+False
+>>> s = cd.stats()
+>>> s["within"], s["decided_by_bounds"], s["distances"], s["solves"]
+(2, 1, 1, 1)
+)";
+
+inline const char* const kResetStats = R"(Sets every counter of `stats` to 0 (the calling thread's).
+
+Returns
+-------
+None
+
+Examples
+--------
+>>> import circledist as cd
+>>> _ = cd.distance([0, 0, 0], [1, 0, 0])
+>>> cd.reset_stats()
+>>> set(cd.stats().values())
+{0}
+)";
+
+}  // namespace doc
+}  // namespace circledist::python
