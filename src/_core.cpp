@@ -159,6 +159,56 @@ template <int K> void bind_shape(py::module_& m, const std::string& doc) {
   bind_shape<K>(m, doc, std::make_index_sequence<kFieldCounts[K]>());
 }
 
+// The constructor's arguments as arrays, by name: float32 fields as float32 (the values they were
+// read from, exactly), np.longdouble ones as long double, the others float64; read-only. The
+// sweep is left out when none was given (the default, whose dtype would otherwise decide the
+// precision of a rebuilt shape).
+py::dict to_arrays(py::handle self) {
+  const Shape& s = constructed(self);
+  py::dict out;
+  for (size_t i = 0; i < s.fields.size(); ++i) {
+    const Field& f = s.fields[i];
+    if (i + 1 == s.fields.size() && is_default_sweep(f)) break;
+    py::object value = f.value();
+    if (f.single && !f.is_wide) {
+      value = value.attr("astype")("float32");
+      value.attr("setflags")(py::arg("write") = false);
+    }
+    out[f.name] = value;
+  }
+  return out;
+}
+
+// cls(**arrays, copy=copy) for a shape class, with the names checked first (a missing or unknown
+// one is a TypeError naming it and the expected ones).
+py::object from_arrays(const py::type& cls, const py::dict& arrays, bool copy) {
+  const std::string name = py::str(cls.attr("__name__"));
+  int kind = -1;
+  for (int k = 0; k < kKindCount; ++k)
+    if (name == kind_name(k)) kind = k;
+  if (kind < 0 || PyObject_IsSubclass(cls.ptr(), py::type::of<Shape>().ptr()) != 1)
+    throw py::type_error("from_arrays is called on a shape class, e.g. circledist.Circle.from_arrays(arrays)");
+  std::string expected;
+  py::list args;
+  for (size_t i = 0; i < kFieldCounts[kind]; ++i) {
+    const char* field = kFieldSpecs[kind][i].name;
+    expected += std::string(field) + ", ";
+    if (!arrays.contains(field)) throw py::type_error(name + ".from_arrays: no array '" + field + "'");
+    args.append(arrays[field]);
+  }
+  expected += std::string(kSweepField.name) + " (optional)";
+  for (auto item : arrays) {
+    const std::string key = py::str(item.first);
+    bool known = key == kSweepField.name;
+    for (size_t i = 0; i < kFieldCounts[kind]; ++i) known = known || key == kFieldSpecs[kind][i].name;
+    if (!known) throw py::type_error(name + ".from_arrays: unknown array '" + key + "'; expected " + expected);
+  }
+  py::dict options;
+  if (arrays.contains(kSweepField.name)) options[kSweepField.name] = arrays[kSweepField.name];
+  options["copy"] = py::bool_(copy);
+  return cls(*args, **options);
+}
+
 std::string repr(py::handle self) {
   const Shape& s = constructed(self);
   std::string out = kind_name(s.kind);
@@ -189,7 +239,22 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly(
           kSweepField.name, [](py::handle s) { return Array(constructed(s).fields.back().value()); },
           doc::field(kSweepField.name))
-      .def("__repr__", &repr);
+      .def("__repr__", &repr)
+      .def("to_arrays", &to_arrays, doc::kToArrays)
+      // A shape pickles, copies and deep-copies as its arrays (to_arrays), rebuilt by its class.
+      .def("__reduce__", [](py::handle self) -> py::tuple {
+        const py::object rebuild = py::module_::import("circledist._core").attr("_from_arrays");
+        const py::object cls = py::type::of(self);
+        return py::make_tuple(rebuild, py::make_tuple(cls, to_arrays(self), false));
+      });
+  shape.attr("from_arrays") = py::reinterpret_steal<py::object>(PyClassMethod_New(
+      py::cpp_function(
+          [](const py::type& cls, const py::dict& arrays, bool copy) { return from_arrays(cls, arrays, copy); },
+          py::name("from_arrays"), py::is_method(shape), py::arg("arrays"), py::kw_only(), py::arg("copy") = true,
+          doc::kFromArrays)
+          .ptr()));
+  m.def("_from_arrays", &from_arrays, py::arg("cls"), py::arg("arrays"), py::arg("copy"),
+        "cls.from_arrays(arrays, copy=copy): how pickle rebuilds a shape.");
 
   bind_shape<kPoint>(m, doc::point());
   bind_shape<kLine>(m, doc::linear("Line"));

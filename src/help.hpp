@@ -268,6 +268,58 @@ Examples
 (True, 'Disk', (3,))
 )";
 
+inline const char* const kToArrays = R"(The constructor's arguments, as NumPy arrays.
+
+Returns
+-------
+dict of str to numpy.ndarray
+    Keyed by the constructor's argument names (``center``, ``normal``, ``radius``, ...), and
+    ``sweep`` when one was given; read-only arrays. Each keeps the dtype it was given in:
+    float32, ``numpy.longdouble`` (unrounded), or float64 for everything else. ``from_arrays``
+    rebuilds the shape, and ``numpy.savez(path, **shape.to_arrays())`` stores a batch.
+
+Examples
+--------
+>>> import numpy as np
+>>> import circledist as cd
+>>> rings = cd.Circle(np.zeros((2, 3)), [0, 0, 1], np.float32([1.0, 2.5]))
+>>> arrays = rings.to_arrays()
+>>> sorted(arrays), arrays["radius"].dtype
+(['center', 'normal', 'radius'], dtype('float32'))
+)";
+
+inline const char* const kFromArrays = R"(The shape of this class built from ``to_arrays()``'s arrays.
+
+Parameters
+----------
+arrays : mapping of str to array_like
+    The constructor's arguments by name (``sweep`` optional), as ``to_arrays`` gives them or
+    as read back from an ``.npz`` file.
+copy : bool, optional
+    Keyword only. As the constructor's ``copy``.
+
+Returns
+-------
+Shape
+    An instance of the class it is called on; the same values and dtypes as the shape the
+    arrays came from, so it answers every query with the same bits.
+
+Raises
+------
+TypeError
+    When an argument is missing or an array's name is not one of the constructor's.
+ValueError
+    As the constructor, for invalid values.
+
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.1)
+>>> again = cd.Circle.from_arrays(ring.to_arrays())
+>>> cd.distance(again, [0, 0, 3]) == cd.distance(ring, [0, 0, 3])
+True
+)";
+
 inline const char* const kClosestPoints = R"(The answer of `closest_points`: the distance, a closest pair and its parameters.
 
 For single shapes the distance is a float (a ``numpy.longdouble`` in long double) and the flag

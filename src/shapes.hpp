@@ -93,7 +93,7 @@ inline bool is_real_array(const py::object& given) {
 inline py::object frozen_copy(const py::module_& numpy, const py::object& given, const char* dtype, bool copy = true) {
   py::object out = copy ? numpy.attr("array")(given, py::arg("dtype") = dtype, py::arg("order") = "C",
                                               py::arg("copy") = true)
-                        : numpy.attr("ascontiguousarray")(given, py::arg("dtype") = dtype).attr("view")();
+                        : numpy.attr("asarray")(given, py::arg("dtype") = dtype, py::arg("order") = "C").attr("view")();  // asarray: keeps 0-d (ascontiguousarray makes it 1-d)
   out.attr("setflags")(py::arg("write") = false);
   return out;
 }
@@ -254,6 +254,9 @@ inline Field default_sweep() {
   f.single = true;
   return f;
 }
+
+// Whether a field is the default sweep (the shape was built without one).
+inline bool is_default_sweep(const Field& f) { return f.array.ptr() == default_sweep().array.ptr(); }
 
 inline Field sweep_field(const char* owner, py::handle value, bool copy = true) {
   if (value.is_none()) return default_sweep();

@@ -30,8 +30,64 @@ class Shape:
     >>> isinstance(s, cd.Shape), s.kind, s.batch_shape
     (True, 'Disk', (3,))
     """
+    def __reduce__(self) -> tuple:
+        ...
     def __repr__(self) -> str:
         ...
+    def from_arrays(self: type, arrays: dict, *, copy: bool = True) -> typing.Any:
+        """
+        The shape of this class built from ``to_arrays()``'s arrays.
+        
+        Parameters
+        ----------
+        arrays : mapping of str to array_like
+            The constructor's arguments by name (``sweep`` optional), as ``to_arrays`` gives them or
+            as read back from an ``.npz`` file.
+        copy : bool, optional
+            Keyword only. As the constructor's ``copy``.
+        
+        Returns
+        -------
+        Shape
+            An instance of the class it is called on; the same values and dtypes as the shape the
+            arrays came from, so it answers every query with the same bits.
+        
+        Raises
+        ------
+        TypeError
+            When an argument is missing or an array's name is not one of the constructor's.
+        ValueError
+            As the constructor, for invalid values.
+        
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.1)
+        >>> again = cd.Circle.from_arrays(ring.to_arrays())
+        >>> cd.distance(again, [0, 0, 3]) == cd.distance(ring, [0, 0, 3])
+        True
+        """
+    def to_arrays(self) -> dict:
+        """
+        The constructor's arguments, as NumPy arrays.
+        
+        Returns
+        -------
+        dict of str to numpy.ndarray
+            Keyed by the constructor's argument names (``center``, ``normal``, ``radius``, ...), and
+            ``sweep`` when one was given; read-only arrays. Each keeps the dtype it was given in:
+            float32, ``numpy.longdouble`` (unrounded), or float64 for everything else. ``from_arrays``
+            rebuilds the shape, and ``numpy.savez(path, **shape.to_arrays())`` stores a batch.
+        
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import circledist as cd
+        >>> rings = cd.Circle(np.zeros((2, 3)), [0, 0, 1], np.float32([1.0, 2.5]))
+        >>> arrays = rings.to_arrays()
+        >>> sorted(arrays), arrays["radius"].dtype
+        (['center', 'normal', 'radius'], dtype('float32'))
+        """
     @property
     def batch_shape(self) -> tuple[int, ...]:
         """
@@ -575,11 +631,15 @@ def _count_culled(n: typing.SupportsInt | typing.SupportsIndex) -> None:
     """
     Adds n to stats()['culled'] (used by circledist.Scene).
     """
+def _from_arrays(cls: type, arrays: dict, copy: bool) -> typing.Any:
+    """
+    cls.from_arrays(arrays, copy=copy): how pickle rebuilds a shape.
+    """
 def _query_kinds() -> list[tuple[str, str]]:
     """
     The (kind, kind) pairs that have a query (used by circledist.Scene).
     """
-def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> ClosestPoints:
+def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> ClosestPoints:
     """
     Distance, closest points on a and b, their parameters and whether they are unique.
     
@@ -603,6 +663,11 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
         companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
         bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
         pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count, or -1 for every core; default 1. The answers are the same
+        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+        (KeyboardInterrupt).
     
     Returns
     -------
@@ -614,7 +679,8 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
     ------
     ValueError
         For an unknown precision or solver, batch shapes that do not broadcast, an invalid
-        array-like given as a point, or (float32) an input beyond float32's range.
+        array-like given as a point, (float32) an input beyond float32's range, or a worker count
+        that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
         disks only).
@@ -631,7 +697,7 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
     >>> cd.closest_points(cd.Line([0, 0, -1], [0, 0, 1]), ring).unique  # on the axis: every ring point
     False
     """
-def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> float | numpy.longdouble | numpy.ndarray:
+def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> float | numpy.longdouble | numpy.ndarray:
     """
     Distance between a and b.
     
@@ -655,6 +721,11 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
         companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
         bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
         pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count, or -1 for every core; default 1. The answers are the same
+        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+        (KeyboardInterrupt).
     
     Returns
     -------
@@ -666,7 +737,8 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
     ------
     ValueError
         For an unknown precision or solver, batch shapes that do not broadcast, an invalid
-        array-like given as a point, or (float32) an input beyond float32's range.
+        array-like given as a point, (float32) an input beyond float32's range, or a worker count
+        that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
         disks only).
@@ -696,7 +768,7 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
     ...
     ValueError: solver must be None, 'default', 'companion', 'polished', 'bracketing' or 'eigen', got 'newton'
     """
-def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> float | numpy.longdouble | numpy.ndarray:
+def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> float | numpy.longdouble | numpy.ndarray:
     """
     ``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.
     
@@ -723,6 +795,11 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
         companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
         bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
         pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count, or -1 for every core; default 1. The answers are the same
+        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+        (KeyboardInterrupt).
     
     Returns
     -------
@@ -733,7 +810,8 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
     ------
     ValueError
         For an unknown precision or solver, batch shapes that do not broadcast, an invalid
-        array-like given as a point, or (float32) an input beyond float32's range.
+        array-like given as a point, (float32) an input beyond float32's range, or a worker count
+        that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
         disks only).
@@ -747,7 +825,7 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
     >>> cd.distance_if_within(line, ring, [0.4, 0.6])
     array([inf, 0.5])
     """
-def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> bool | numpy.ndarray:
+def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> bool | numpy.ndarray:
     """
     Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.
     
@@ -771,6 +849,11 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
         companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
         bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
         pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count, or -1 for every core; default 1. The answers are the same
+        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+        (KeyboardInterrupt).
     
     Returns
     -------
@@ -781,7 +864,8 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
     ------
     ValueError
         For an unknown precision or solver, batch shapes that do not broadcast, an invalid
-        array-like given as a point, or (float32) an input beyond float32's range.
+        array-like given as a point, (float32) an input beyond float32's range, or a worker count
+        that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
         disks only).
@@ -836,7 +920,7 @@ def stats() -> dict[str, int]:
     >>> s["within"], s["decided_by_bounds"], s["distances"], s["solves"]
     (2, 1, 1, 1)
     """
-def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None) -> bool | numpy.ndarray:
+def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> bool | numpy.ndarray:
     """
     Whether distance(a, b) <= d.
     
@@ -863,6 +947,11 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
         companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
         bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
         pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count, or -1 for every core; default 1. The answers are the same
+        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+        (KeyboardInterrupt).
     
     Returns
     -------
@@ -873,7 +962,8 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
     ------
     ValueError
         For an unknown precision or solver, batch shapes that do not broadcast, an invalid
-        array-like given as a point, or (float32) an input beyond float32's range.
+        array-like given as a point, (float32) an input beyond float32's range, or a worker count
+        that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
         disks only).

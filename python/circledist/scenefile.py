@@ -61,7 +61,34 @@ _NPZ_TOP = ("format", "version", "description", "shapes", "queries")
 
 
 class SceneFileError(ValueError):
-    """A bad scene file; the one-line message names the file, where in it, and what was expected."""
+    """A bad scene file: its one-line message names the file, where in it (a JSON path such as
+    ``$.shapes[3].radius``, or an ``.npz`` array and index), and what was expected.
+
+    A ValueError, raised by `read_scene` and `write_scene`; the command line prints its message
+    and exits with status 2.
+
+    Parameters
+    ----------
+    message : str
+        The one-line message.
+
+    Attributes
+    ----------
+    args : tuple
+        ``(message,)``, as for every exception.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> try:
+    ...     cd.read_scene("scene.json", text='{"shapes": []}')
+    ... except cd.SceneFileError as e:
+    ...     print(str(e).split(":")[0])
+    scene.json
+    """
+
+    def __init__(self, message: str):
+        super().__init__(message)
 
 
 def schema_text() -> str:
@@ -571,8 +598,40 @@ class _LazyArrays:
 # reading and writing
 # ------------------------------------------------------------------------------------------
 def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
-    """Reads and validates a scene file: .npz (a zip) or JSON; `text` gives JSON content directly
-    (path then only names it in messages). Raises SceneFileError."""
+    """Reads and validates a scene file, JSON or ``.npz``.
+
+    The format (``circledist --help``, and the JSON Schema ``scene.schema.json`` in the package):
+    ``"format": "circledist-scene"``, ``"version": 1``, the shapes (single or batches) and the
+    queries.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file: an ``.npz`` (a zip) is read as one, anything else as JSON.
+    text : str, optional
+        JSON content given directly; `path` then only names it in messages.
+
+    Returns
+    -------
+    SceneFile
+        Its ``entries`` (shapes and batches in file order), ``queries``, ``description``;
+        ``shapes`` maps each name to a circledist shape (a batch to one batched shape).
+
+    Raises
+    ------
+    SceneFileError
+        For a file that cannot be read or is not a valid scene, naming the file, the place in
+        it and what was expected.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = '{"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1}'
+    >>> scene = cd.read_scene("ring.json", text='{"format": "circledist-scene", "version": 1, '
+    ...                                         '"shapes": [' + ring + ']}')
+    >>> scene.shapes["ring"]
+    Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(1.))
+    """
     if text is None:
         try:
             with open(path, "rb") as f:
@@ -617,11 +676,45 @@ def _entries_of(shapes, file: str) -> list:
 
 
 def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description: str = "") -> None:
-    """Writes a scene file, JSON or .npz by the path's suffix. `shapes`: a mapping (or pairs) of
-    name -> circledist shape; a batched shape becomes a batch (flattened in C order: its shape i is
-    'name[i]' in queries and answers), with fields that are one value for all kept as one value.
-    `queries`: dicts as in the JSON format. The content is validated as a reader would, and the
-    file is replaced atomically."""
+    """Writes a scene file, JSON or ``.npz`` by the path's suffix.
+
+    The content is validated as `read_scene` would validate it, before the file is replaced
+    (atomically): what is written can be read.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Ends in ``.json`` or ``.npz`` (for large batches: arrays, no text).
+    shapes : mapping or iterable of (str, Shape)
+        Name -> circledist shape. A batched shape becomes a batch, flattened in C order (its
+        shape i is ``name[i]`` in queries and answers); fields that hold one value for all are
+        written once.
+    queries : iterable of dict, optional
+        As in the JSON format: ``{"a": ..., "b": ..., "effects": [...], "d": ..., "k": ...}``.
+    description : str, optional
+        Free text.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    ValueError
+        For a path with another suffix; SceneFileError (a ValueError) for content no reader
+        would accept.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> rings = cd.Circle(np.zeros((3, 3)), [0, 0, 1], [1.0, 2.0, 3.0])
+    >>> path = os.path.join(tempfile.mkdtemp(), "rings.npz")
+    >>> cd.write_scene(path, {"rings": rings}, [{"a": "rings[0]", "effects": ["nearest"]}])
+    >>> cd.read_scene(path).count
+    3
+    """
     path = os.fspath(path)
     if not (path.endswith(".json") or path.endswith(".npz")):
         raise ValueError(f"write_scene: {path}: expected a path ending in .json or .npz")
