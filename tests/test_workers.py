@@ -11,30 +11,12 @@ import zlib
 import numpy as np
 import pytest
 
+from test_bindings import _fields, _pairs, _same  # the random shapes and bit-equality of the dispatch tests
+
 cd = pytest.importorskip("circledist")
 
 N = 3000  # several chunks per thread (chunks hold 256 elements at least)
 WORKERS = (2, 3, -1)
-
-
-def _fields(kind, n, rng):
-    if kind == "Point":
-        return [rng.normal(size=(n, 3))]
-    if kind in ("Line", "Ray", "Segment"):
-        return [rng.normal(size=(n, 3)), rng.normal(size=(n, 3))]
-    if kind in ("Circle", "Disk"):
-        return [rng.normal(size=(n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 2.0, n)]
-    return [rng.normal(size=(n, 4, 3))]
-
-
-def _pairs():
-    return sorted(tuple(p) for p in cd._core._query_kinds() if p[0] <= p[1])
-
-
-def _same(x, y):
-    x, y = np.asarray(x), np.asarray(y)
-    assert x.dtype == y.dtype and x.shape == y.shape
-    assert np.array_equal(x, y, equal_nan=True)
 
 
 def _answers(a, b, d, **opts):
@@ -47,8 +29,8 @@ def _answers(a, b, d, **opts):
 def test_every_worker_count_gives_the_same_bits(pair):
     rng = np.random.default_rng(zlib.crc32("-".join(pair).encode()))
     n = N if "Bezier" not in pair else N // 4
-    a = getattr(cd, pair[0])(*_fields(pair[0], n, rng), sweep=rng.uniform(0, 0.2, n))
-    b = getattr(cd, pair[1])(*_fields(pair[1], n, rng))
+    a = getattr(cd, pair[0])(*_fields(pair[0], n, rng, False)[0], sweep=rng.uniform(0, 0.2, n))
+    b = getattr(cd, pair[1])(*_fields(pair[1], n, rng, False)[0])
     d = rng.uniform(0.0, 2.0, n)
     for solver in (None, "companion", "polished", "eigen"):
         for precision in ("float32", "float64", "longdouble") if solver is None else ("float64",):
