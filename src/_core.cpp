@@ -55,23 +55,38 @@ int workers_of(int workers) {
   return workers;
 }
 
-// A shape argument: a Shape object, or an array-like of points.
-// The Shape of a Python object, checked to have been built by its constructor: one made by
-// Circle.__new__(Circle) alone has unconstructed storage, which must never be read.
-const Shape& constructed(py::handle value) {
-  auto* instance = reinterpret_cast<py::detail::instance*>(value.ptr());
-  for (const auto& holder : py::detail::values_and_holders(instance))
-    if (!holder.holder_constructed())
-      throw py::type_error(std::string(Py_TYPE(value.ptr())->tp_name) +
-                           " was not initialized: build shapes with their constructor, e.g. Circle(center, normal, radius)");
-  return value.cast<const Shape&>();
+// The Shape base class's Python type, looked up once. Queries test their arguments against it with
+// PyType_IsSubtype: py::isinstance goes through the metaclass's __instancecheck__ (a bound method
+// made and dropped per call), which cost as much as a whole line-circle query.
+PyTypeObject* shape_type() {
+  static PyTypeObject* const type = reinterpret_cast<PyTypeObject*>(py::type::of<Shape>().ptr());
+  return type;
 }
 
+bool is_shape(py::handle value) { return PyType_IsSubtype(Py_TYPE(value.ptr()), shape_type()) != 0; }
+
+// Every shape class holds one C++ object, a ShapeOf<K>: a Shape with nothing added, so the two
+// share their address (standard layout) and the first value slot of the instance is the Shape.
+static_assert(std::is_standard_layout_v<ShapeOf<kCircle>>, "a ShapeOf<K> must be pointer-interconvertible with its Shape");
+
+// The Shape of a Python object, checked to be a shape built by its constructor: one made by
+// Circle.__new__(Circle) alone has unconstructed storage, which must never be read.
+const Shape& constructed(py::handle value) {
+  if (!is_shape(value))
+    throw py::type_error(std::string("expected a circledist shape, got ") + Py_TYPE(value.ptr())->tp_name);
+  const auto storage = reinterpret_cast<py::detail::instance*>(value.ptr())->get_value_and_holder();
+  if (!storage.holder_constructed())
+    throw py::type_error(std::string(Py_TYPE(value.ptr())->tp_name) +
+                         " was not initialized: build shapes with their constructor, e.g. Circle(center, normal, radius)");
+  return *reinterpret_cast<const Shape*>(storage.value_ptr());
+}
+
+// A shape argument: a Shape object, or an array-like of points (made a Point).
 struct Argument {
   py::object keep;
   const Shape* shape;
   explicit Argument(py::handle value) {
-    if (py::isinstance<Shape>(value)) {
+    if (is_shape(value)) {
       keep = py::reinterpret_borrow<py::object>(value);
     } else {
       keep = py::module_::import("circledist._core").attr("Point")(value);
