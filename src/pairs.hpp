@@ -105,9 +105,15 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
   }
 
   static void closest(const Request<Real>& r, Index begin, Index end) {
-    r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-      r.store(i, circledist::closest_points<Roots>(first(r, f), second(r, f)));
-    }, begin, end);
+    if (!r.swept) {
+      r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
+        r.store(i, circledist::closest_points<Roots>(first_core(r, f), second_core(r, f)));
+      }, begin, end);
+    } else {
+      r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
+        r.store(i, circledist::closest_points<Roots>(first(r, f), second(r, f)));
+      }, begin, end);
+    }
     stats().closest_points += std::uint64_t(end - begin);
   }
 };

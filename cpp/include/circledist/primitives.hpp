@@ -243,21 +243,33 @@ template <class Real> CIRCLEDIST_INLINE Vec3<Real> unit_vector(const Vec3<Real>&
 }
 
 // The right-handed orthonormal frame {U, V, N} of a circle or disk, built the same way everywhere
-// so that angles mean the same thing in C++ and Python:
-//   N = normal / |normal|;
-//   U = (-N.z, 0, N.x) / |.| when |N.x| > |N.y|, else (0, N.z, -N.y) / |.|;   V = N x U.
+// so that angles mean the same thing in C++ and Python (W the normal as given):
+//   N = W / |W|;
+//   U = (-W.z, 0, W.x) / |.| when |W.x| > |W.y|, else (0, W.z, -W.y) / |.|;   V = N x U.
+// U is normalized from W itself, not from N: the same direction, and its square root and reciprocal
+// run beside N's instead of after them (the frame is most of a point query's closest_points).
+// The pair holds W.z and the larger of W.x, W.y, so its squared length is at least |W|^2 / 2:
+// within range whenever |W|^2 is (the fast path's test).
 template <class Real> struct Frame {
   Vec3<Real> u, v, n;
 
-  explicit Frame(const Vec3<Real>& normal) {
-    n = unit_vector(normal);
-    // The pair holds N.z and the larger of N.x, N.y, so the largest component of the unit N:
-    // its squared length is at least 1/3 and needs no hypot against underflow.
-    if (std::abs(n.x()) > std::abs(n.y())) {
-      u = Vec3<Real>(-n.z(), Real(0), n.x()) / std::sqrt(n.x() * n.x() + n.z() * n.z());
+  CIRCLEDIST_INLINE explicit Frame(const Vec3<Real>& normal) {
+    constexpr Real eps = std::numeric_limits<Real>::epsilon();
+    constexpr Real tiny = std::numeric_limits<Real>::min() / (eps * eps);
+    // N exactly as unit_vector() makes it (distance() and closest_points() must agree to the bit).
+    Vec3<Real> w = normal;
+    const Real n2 = w.squaredNorm();
+    if (detail::strictly_between(n2, tiny, std::numeric_limits<Real>::max())) {
+      n = w / std::sqrt(n2);
     } else {
-      u = Vec3<Real>(Real(0), n.z(), -n.y()) / std::sqrt(n.y() * n.y() + n.z() * n.z());
+      n = w = detail::unit_vector_scaled(normal);  // rescaled into range (NaN stays NaN)
     }
+    const Real x = w.x(), y = w.y(), z = w.z();
+    const bool x_major = std::abs(normal.x()) > std::abs(normal.y());  // on W as given: no rounding
+    const Real major = x_major ? x : y;
+    const Real inv_u = Real(1) / std::sqrt(major * major + z * z);
+    const Real uz = z * inv_u, um = major * inv_u;
+    u = x_major ? Vec3<Real>(-uz, Real(0), um) : Vec3<Real>(Real(0), uz, -um);
     v = n.cross(u);
   }
 
