@@ -81,6 +81,17 @@ const Shape& constructed(py::handle value) {
   return *reinterpret_cast<const Shape*>(storage.value_ptr());
 }
 
+// progress=: None or False for none; True for a progress bar (circledist._progress: tqdm when it
+// is installed, else a line on stderr), shown once the work has taken a second; or a callable.
+py::object progress_of(const py::object& given) {
+  if (given.is_none() || given.ptr() == Py_False) return py::none();
+  if (given.ptr() == Py_True) return py::module_::import("circledist._progress").attr("ProgressBar")();
+  if (!PyCallable_Check(given.ptr()))
+    throw py::type_error(std::string("progress must be None, True or a callable progress(done, total), got ") +
+                         Py_TYPE(given.ptr())->tp_name);
+  return given;
+}
+
 // A shape argument: a Shape object, or an array-like of points (made a Point).
 struct Argument {
   py::object keep;
@@ -99,12 +110,14 @@ struct Argument {
 // While it lives, the calling thread's SelectedEigenPolicy runs the chosen eigenvalue policy.
 struct Choice {
   int precision, solver, workers;
+  py::object progress;
   SelectedEigenPolicy::Use eigen_policy;
   Choice(const py::object& precision_name, const py::object& solver_name, const Shape& a, const Shape& b,
-         int workers_given)
+         int workers_given, const py::object& progress_given)
       : precision(precision_of(precision_name, a, b)),
         solver(solver_of(solver_name)),
         workers(workers_of(workers_given)),
+        progress(progress_of(progress_given)),
         eigen_policy(selected_eigen_policy(solver)) {}
   bool single() const { return precision == kFloat; }
 };
@@ -113,14 +126,14 @@ struct Choice {
 // (float32.hpp).
 template <class Query> auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query) {
   if (c.precision == kLongDouble)
-    return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit, c.workers});
-  return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers});
+    return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit, c.workers, c.progress});
+  return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers, c.progress});
 }
 
 py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
-                        int workers) {
+                        int workers, const py::object& progress) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape, workers);
+  const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
   auto distance = [](const auto& call) { return call.distance(); };
   if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, distance);
   const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
@@ -128,9 +141,9 @@ py::object run_distance(py::handle a, py::handle b, const py::object& precision,
 }
 
 ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
-                          int workers) {
+                          int workers, const py::object& progress) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape, workers);
+  const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
   auto closest = [](const auto& call) { return call.closest(); };
   if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, closest);
   const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
@@ -140,9 +153,9 @@ ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precisio
 // within() (a bool per element) or, with `want_distance`, distance_if_within() (the distance,
 // inf beyond the limit d), over the broadcast of a, b and `limit`.
 py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
-                      const py::object& solver, int workers) {
+                      const py::object& solver, int workers, const py::object& progress) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape, workers);
+  const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
   auto within = [want_distance](const auto& call) { return want_distance ? call.distance() : call.within(); };
   if (!c.single()) return with_call(*x.shape, *y.shape, &limit, c, within);
   const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
@@ -302,18 +315,18 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "distance",
-      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers) {
-        return Distances(run_distance(a, b, precision, solver, workers));
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers, ProgressLike progress) {
+        return Distances(run_distance(a, b, precision, solver, workers, progress));
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
-      py::arg("workers") = 1, doc::kDistance());
+      py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kDistance());
   m.def(
       "closest_points",
-      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers) {
-        return run_closest(a, b, precision, solver, workers);
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers, ProgressLike progress) {
+        return run_closest(a, b, precision, solver, workers, progress);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
-      py::arg("workers") = 1, doc::kClosest());
+      py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kClosest());
 
   bind_effects(m);
 }

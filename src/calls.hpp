@@ -55,6 +55,7 @@ template <class Real> struct Call {
   const Shape& b;
   const Shape* limit = nullptr;
   int workers = 1;  // threads for a batch (run_in_chunks)
+  py::handle progress = py::none();  // None, or a callable progress(done, total) (_core.cpp resolves True)
 
   bool reversed() const { return table.reversed[a.kind][b.kind]; }
   Request<Real> request() const {
@@ -71,24 +72,41 @@ template <class Real> struct Call {
                            kind_name(b.kind));
     return fn;
   }
-  // The batch in chunks on `workers` threads, the GIL released; Ctrl-C (a signal Python has seen,
-  // checked every 50 ms between the caller's chunks) stops it and raises KeyboardInterrupt.
+  // progress(done, total), with the GIL held; false (the Python error set) when it raised.
+  bool report(Index done, Index total) const {
+    if (progress.is_none()) return true;
+    try {
+      progress(done, total);
+    } catch (py::error_already_set& e) {
+      e.restore();
+      return false;
+    }
+    return true;
+  }
+  // The batch in chunks on `workers` threads, the GIL released. Every 50 ms between the caller's
+  // chunks: Ctrl-C (a signal Python has seen) stops it and raises KeyboardInterrupt, and every
+  // 100 ms progress(done, total) is called; an exception it raises stops the batch likewise. It is
+  // called once more with (total, total) at the end.
   void run(KernelFn<Real> fn, const Request<Real>& r) const {
     bool complete;
+    const Index total = r.elements.size;
     {
       py::gil_scoped_release release;
-      auto checked = std::chrono::steady_clock::now();
+      auto checked = std::chrono::steady_clock::now(), reported = checked;
       complete = run_in_chunks(
-          r.elements.size, workers, [&](Index begin, Index end) { fn(r, begin, end); },
-          [&] {
+          total, workers, [&](Index begin, Index end) { fn(r, begin, end); },
+          [&](Index done) {
             const auto now = std::chrono::steady_clock::now();
             if (now - checked < std::chrono::milliseconds(50)) return false;
             checked = now;
             py::gil_scoped_acquire gil;
-            return PyErr_CheckSignals() != 0;
+            if (PyErr_CheckSignals() != 0) return true;
+            if (now - reported < std::chrono::milliseconds(100) || done >= total) return false;
+            reported = now;
+            return !report(done, total);
           });
     }
-    if (!complete) throw py::error_already_set();
+    if (!complete || !report(total, total)) throw py::error_already_set();
   }
 
   // distance(), or distance_if_within() with a limit. A single query (every batch shape empty)
@@ -100,6 +118,7 @@ template <class Real> struct Call {
       Real value;
       r.distance = &value;
       fn(r, 0, 1);
+      if (!report(1, 1)) throw py::error_already_set();
       return scalar<Real>(value);
     }
     auto out = new_array<Real>(r.elements.shape, 0);
@@ -115,6 +134,7 @@ template <class Real> struct Call {
       bool value;
       r.flag = &value;
       fn(r, 0, 1);
+      if (!report(1, 1)) throw py::error_already_set();
       return py::bool_(value);
     }
     auto out = new_array<bool>(r.elements.shape, 0);

@@ -36,6 +36,7 @@ CIRCLEDIST_TYPED_OBJECT(OptionalArrayLike, "numpy.typing.ArrayLike | None")
 CIRCLEDIST_TYPED_OBJECT(PrecisionName, "typing.Literal['float32', 'float64', 'longdouble'] | None")
 CIRCLEDIST_TYPED_OBJECT(SolverName,
                         "typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None")
+CIRCLEDIST_TYPED_OBJECT(ProgressLike, "bool | collections.abc.Callable[[int, int], object] | None")
 CIRCLEDIST_TYPED_OBJECT(Array, "numpy.ndarray")
 CIRCLEDIST_TYPED_OBJECT(Distances, "float | numpy.longdouble | numpy.ndarray")
 CIRCLEDIST_TYPED_OBJECT(Flags, "bool | numpy.ndarray")
@@ -377,6 +378,12 @@ workers : int, optional
     convention): a positive count, or -1 for every core; default 1. The answers are the same
     bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
     (KeyboardInterrupt).
+progress : bool or callable, optional
+    Keyword only. None or False (the default): no report. True: a progress bar on stderr
+    (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+    as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+    batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+    an exception it raises stops the work and propagates.
 )";
 inline const char* const kQueryRaises = R"(Raises
 ------
@@ -386,7 +393,7 @@ ValueError
     that is neither positive nor -1.
 TypeError
     When there is no query between the two kinds (Bezier curves have queries with circles and
-    disks only).
+    disks only), or `progress` is neither None, a bool nor a callable.
 )";
 
 inline const char* kDistance() {

@@ -26,13 +26,14 @@ inline Index chunk_size(Index size, int workers) {
 
 // Runs work(begin, end) over disjoint chunks covering [0, size), on `workers` threads. Worker
 // threads adopt the caller's SelectedEigenPolicy choice, and their counters (stats()) are added to
-// the caller's. `interrupted()` is asked by the caller's thread after each of its chunks: when it
-// answers true, no new chunk is started and run_in_chunks returns false once the running ones end.
+// the caller's. `interrupted(done)` is asked by the caller's thread after each of its chunks, with
+// the count of elements answered so far by every thread (for progress reports): when it answers
+// true, no new chunk is started and run_in_chunks returns false once the running ones end.
 // An exception in any thread stops the others likewise and is rethrown here.
 template <class Work, class Interrupted> bool run_in_chunks(Index size, int workers, Work&& work, Interrupted&& interrupted) {
   const Index chunk = chunk_size(size, workers);
   const int threads = int(std::min<Index>(std::max(workers, 1), (size + chunk - 1) / chunk));
-  std::atomic<Index> next{0};
+  std::atomic<Index> next{0}, done{0};
   std::atomic<bool> stop{false};
   bool was_interrupted = false;
   std::mutex mutex;
@@ -43,8 +44,10 @@ template <class Work, class Interrupted> bool run_in_chunks(Index size, int work
       while (!stop.load(std::memory_order_relaxed)) {
         const Index begin = next.fetch_add(chunk);
         if (begin >= size) return;
-        work(begin, std::min(size, begin + chunk));
-        if (caller && interrupted()) {
+        const Index end = std::min(size, begin + chunk);
+        work(begin, end);
+        const Index answered = done.fetch_add(end - begin, std::memory_order_relaxed) + (end - begin);
+        if (caller && interrupted(answered)) {
           was_interrupted = true;
           stop = true;
         }

@@ -2,6 +2,7 @@
 circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and Bezier curves in 3D
 """
 from __future__ import annotations
+import collections.abc
 import numpy
 import numpy.typing
 import typing
@@ -639,7 +640,7 @@ def _query_kinds() -> list[tuple[str, str]]:
     """
     The (kind, kind) pairs that have a query (used by circledist.Scene).
     """
-def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> ClosestPoints:
+def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> ClosestPoints:
     """
     Distance, closest points on a and b, their parameters and whether they are unique.
     
@@ -668,6 +669,12 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
         convention): a positive count, or -1 for every core; default 1. The answers are the same
         bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
         (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+        batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+        an exception it raises stops the work and propagates.
     
     Returns
     -------
@@ -683,7 +690,7 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
         that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
-        disks only).
+        disks only), or `progress` is neither None, a bool nor a callable.
     
     Examples
     --------
@@ -697,7 +704,7 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
     >>> cd.closest_points(cd.Line([0, 0, -1], [0, 0, 1]), ring).unique  # on the axis: every ring point
     False
     """
-def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> float | numpy.longdouble | numpy.ndarray:
+def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> float | numpy.longdouble | numpy.ndarray:
     """
     Distance between a and b.
     
@@ -726,6 +733,12 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
         convention): a positive count, or -1 for every core; default 1. The answers are the same
         bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
         (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+        batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+        an exception it raises stops the work and propagates.
     
     Returns
     -------
@@ -741,7 +754,7 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
         that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
-        disks only).
+        disks only), or `progress` is neither None, a bool nor a callable.
     
     See Also
     --------
@@ -768,7 +781,7 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
     ...
     ValueError: solver must be None, 'default', 'companion', 'polished', 'bracketing' or 'eigen', got 'newton'
     """
-def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> float | numpy.longdouble | numpy.ndarray:
+def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> float | numpy.longdouble | numpy.ndarray:
     """
     ``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.
     
@@ -800,6 +813,12 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
         convention): a positive count, or -1 for every core; default 1. The answers are the same
         bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
         (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+        batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+        an exception it raises stops the work and propagates.
     
     Returns
     -------
@@ -814,7 +833,7 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
         that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
-        disks only).
+        disks only), or `progress` is neither None, a bool nor a callable.
         Also ValueError when d is negative, NaN, inf or not a real number.
     
     Examples
@@ -825,7 +844,7 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
     >>> cd.distance_if_within(line, ring, [0.4, 0.6])
     array([inf, 0.5])
     """
-def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> bool | numpy.ndarray:
+def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> bool | numpy.ndarray:
     """
     Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.
     
@@ -854,6 +873,12 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
         convention): a positive count, or -1 for every core; default 1. The answers are the same
         bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
         (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+        batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+        an exception it raises stops the work and propagates.
     
     Returns
     -------
@@ -868,7 +893,7 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
         that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
-        disks only).
+        disks only), or `progress` is neither None, a bool nor a callable.
     
     Examples
     --------
@@ -920,7 +945,7 @@ def stats() -> dict[str, int]:
     >>> s["within"], s["decided_by_bounds"], s["distances"], s["solves"]
     (2, 1, 1, 1)
     """
-def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> bool | numpy.ndarray:
+def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> bool | numpy.ndarray:
     """
     Whether distance(a, b) <= d.
     
@@ -952,6 +977,12 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
         convention): a positive count, or -1 for every core; default 1. The answers are the same
         bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
         (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+        batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+        an exception it raises stops the work and propagates.
     
     Returns
     -------
@@ -966,7 +997,7 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
         that is neither positive nor -1.
     TypeError
         When there is no query between the two kinds (Bezier curves have queries with circles and
-        disks only).
+        disks only), or `progress` is neither None, a bool nor a callable.
         Also ValueError when d is negative, NaN, inf or not a real number.
     
     Examples
