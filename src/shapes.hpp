@@ -72,13 +72,46 @@ inline bool all_finite(const double* p, Index n) {
   return (carry >> 63) == 0;
 }
 
+// NumPy's functions and the keyword sets that make_field calls them with, made once: looking them
+// up and building the keywords per field was most of a shape constructor's time.
+struct NumpyCalls {
+  py::object asarray, array;
+  py::dict copy_double, copy_wide, view_double, view_wide;
+};
+inline const NumpyCalls& numpy_calls() {
+  static const NumpyCalls* const calls = [] {  // never freed: it must outlive the interpreter's exit
+    auto* c = new NumpyCalls;
+    const py::module_ numpy = py::module_::import("numpy");
+    c->asarray = numpy.attr("asarray");
+    c->array = numpy.attr("array");
+    for (const bool copy : {true, false})
+      for (const char* dtype : {"float64", "longdouble"}) {
+        py::dict& kwargs = copy ? (dtype[0] == 'f' ? c->copy_double : c->copy_wide)
+                                : (dtype[0] == 'f' ? c->view_double : c->view_wide);
+        kwargs["dtype"] = py::str(dtype);
+        kwargs["order"] = py::str("C");
+        if (copy) kwargs["copy"] = py::bool_(true);
+      }
+    return c;
+  }();
+  return *calls;
+}
+
+// fn(arg, **kwargs) with a ready-made keyword dict (pybind11's call syntax would build one).
+inline py::object call_with(const py::object& fn, py::handle arg, const py::dict& kwargs) {
+  const py::tuple args = py::make_tuple(py::reinterpret_borrow<py::object>(arg));
+  PyObject* out = PyObject_Call(fn.ptr(), args.ptr(), kwargs.ptr());
+  if (!out) throw py::error_already_set();
+  return py::reinterpret_steal<py::object>(out);
+}
+
 // Real numbers only: NumPy would turn complex values (dropping the imaginary part), datetime64
 // values and numeric strings into float64 without a word. Object arrays are accepted when every
 // element is a real number (numbers.Real: Fractions, mpmath numbers); None is not.
-inline bool is_real_array(const py::object& given) {
-  const std::string kind = py::str(given.attr("dtype").attr("kind"));
-  if (kind == "f" || kind == "i" || kind == "u") return true;
-  if (kind != "O") return false;
+inline bool is_real_array(const py::array& given) {
+  const char kind = given.dtype().kind();
+  if (kind == 'f' || kind == 'i' || kind == 'u') return true;
+  if (kind != 'O') return false;
   const py::object real = py::module_::import("numbers").attr("Real");
   for (py::handle x : given.attr("flat"))
     if (!py::isinstance(x, real)) return false;
@@ -90,11 +123,12 @@ inline bool is_real_array(const py::object& given) {
 // scipy.spatial.cKDTree's copy_data=False) a field given as a C-contiguous array of the
 // field's dtype is referred to, not copied: a read-only view of the caller's array, which the
 // caller promises not to change (a batch then costs no memory beyond its inputs).
-inline py::object frozen_copy(const py::module_& numpy, const py::object& given, const char* dtype, bool copy = true) {
-  py::object out = copy ? numpy.attr("array")(given, py::arg("dtype") = dtype, py::arg("order") = "C",
-                                              py::arg("copy") = true)
-                        : numpy.attr("asarray")(given, py::arg("dtype") = dtype, py::arg("order") = "C").attr("view")();  // asarray: keeps 0-d (ascontiguousarray makes it 1-d)
-  out.attr("setflags")(py::arg("write") = false);
+inline py::object frozen_copy(const py::object& given, bool wide, bool copy = true) {
+  const NumpyCalls& np = numpy_calls();
+  py::object out = copy ? call_with(np.array, given, wide ? np.copy_wide : np.copy_double)
+                        // asarray keeps 0-d (ascontiguousarray would make it 1-d)
+                        : call_with(np.asarray, given, wide ? np.view_wide : np.view_double).attr("view")();
+  py::detail::array_proxy(out.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return out;
 }
 
@@ -104,16 +138,18 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
   py::object converted;
   bool real = false;
   try {
-    const py::module_ numpy = py::module_::import("numpy");
-    const py::object given = numpy.attr("asarray")(value);
+    PyObject* as_array = PyObject_CallOneArg(numpy_calls().asarray.ptr(), value.ptr());
+    if (!as_array) throw py::error_already_set();
+    const py::array given = py::reinterpret_steal<py::array>(as_array);
     real = is_real_array(given);
     if (real) {
-      f.single = py::object(given.attr("dtype")).equal(numpy.attr("dtype")("float32"));
+      const int type = given.dtype().num();
+      f.single = type == py::detail::npy_api::NPY_FLOAT_;
       // np.longdouble is kept as it is where it is wider than float64 (x86's 80-bit format).
-      if (py::object(given.attr("dtype")).equal(numpy.attr("dtype")("longdouble")) &&
+      if (type == py::detail::npy_api::NPY_LONGDOUBLE_ &&
           std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
-        f.wide = Field::Wide::ensure(frozen_copy(numpy, given, "longdouble", copy)), f.is_wide = true;
-      converted = frozen_copy(numpy, given, "float64", copy);
+        f.wide = Field::Wide::ensure(frozen_copy(given, true, copy)), f.is_wide = true;
+      converted = frozen_copy(given, false, copy);
     }
   } catch (py::error_already_set&) {
     real = false;
