@@ -109,38 +109,34 @@ template <class Real> struct Call {
     if (!complete || !report(total, total)) throw py::error_already_set();
   }
 
-  // distance(), or distance_if_within() with a limit. A single query (every batch shape empty)
-  // answers in a local, with the GIL held: no array, no thread switch (most of a scalar call's cost).
-  py::object distance() const {
-    const KernelFn<Real> fn = entry(limit ? &PairTable<Real>::distance_if_within : &PairTable<Real>::distance);
+  // One answer per element into the Request's `slot` (distance or flag): a single query (every
+  // batch shape empty) answers in a local, with the GIL held: no array, no thread switch (most of
+  // a scalar call's cost), and `single` makes it a Python object.
+  template <class T, class Single>
+  py::object answers(KernelFn<Real> fn, T* Request<Real>::*slot, Single&& single) const {
     Request<Real> r = request();
     if (r.elements.shape.empty()) {
-      Real value;
-      r.distance = &value;
+      T value;
+      r.*slot = &value;
       fn(r, 0, 1);
       if (!report(1, 1)) throw py::error_already_set();
-      return scalar<Real>(value);
+      return single(value);
     }
-    auto out = new_array<Real>(r.elements.shape, 0);
-    r.distance = out.mutable_data();
+    auto out = new_array<T>(r.elements.shape, 0);
+    r.*slot = out.mutable_data();
     run(fn, r);
     return std::move(out);
   }
 
+  // distance(), or distance_if_within() with a limit.
+  py::object distance() const {
+    return answers(entry(limit ? &PairTable<Real>::distance_if_within : &PairTable<Real>::distance),
+                   &Request<Real>::distance, [](Real value) { return scalar<Real>(value); });
+  }
+
   py::object within() const {
-    const KernelFn<Real> fn = entry(&PairTable<Real>::within);
-    Request<Real> r = request();
-    if (r.elements.shape.empty()) {
-      bool value;
-      r.flag = &value;
-      fn(r, 0, 1);
-      if (!report(1, 1)) throw py::error_already_set();
-      return py::bool_(value);
-    }
-    auto out = new_array<bool>(r.elements.shape, 0);
-    r.flag = out.mutable_data();
-    run(fn, r);
-    return std::move(out);
+    return answers(entry(&PairTable<Real>::within), &Request<Real>::flag,
+                   [](bool value) { return py::object(py::bool_(value)); });
   }
 
   // A single query's distance and flag are a Python float (a NumPy long double) and bool.
