@@ -27,7 +27,7 @@ import time
 
 import pytest
 
-import differential as D
+from circledist_cases import differential as D
 
 cd = pytest.importorskip("circledist")
 

@@ -30,8 +30,9 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-import reference as ref
-import scenes
+from circledist_cases import reference as ref
+from circledist_cases import scenes
+from circledist_cases.shapes import make_shape
 
 REL = 1e-12
 EPS = float(np.finfo(float).eps)
@@ -48,8 +49,8 @@ def _scale(r):
 
 
 def _shapes(cd, case, order):
-    lin = scenes.make_lin(cd, case.lin_kind, case.lin_data)
-    rnd = scenes.make_round(cd, case.round_kind, case.round_data)
+    lin = make_shape(cd, case.lin_kind, case.lin_data)
+    rnd = make_shape(cd, case.round_kind, case.round_data)
     return (lin, rnd) if order == "lin_first" else (rnd, lin)
 
 

@@ -18,8 +18,8 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-import reference as L
-import reference_round as R
+from circledist_cases import reference as L
+from circledist_cases import reference_round as R
 
 cd = pytest.importorskip("circledist")
 

@@ -21,7 +21,7 @@ from typing import Optional, Tuple
 import numpy as np
 import pytest
 
-import reference_round as R
+from circledist_cases import reference_round as R
 
 try:
     import circledist as cd

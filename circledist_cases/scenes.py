@@ -10,6 +10,7 @@ normal +z and radius 1.  They are then placed in the world with an orientation
 generic rotation, so every coordinate is a rounded float) and a translation
 (0, 1e6, 1e8 times a fixed unit-ish vector added to every POSITION; directions
 are not translated).  The references are always computed from the final floats.
+Library shapes of both layouts: shapes.make_shape.
 """
 
 import math
@@ -235,24 +236,4 @@ def all_cases():
         out.extend(random_cases(lk, rk))
         out.extend(hard_cases(lk, rk))
     return out
-
-
-# ----------------------------------------------------------------------------
-# library shape construction
-# ----------------------------------------------------------------------------
-def make_lin(cd, kind, data):
-    data = np.asarray(data, float)
-    if kind == "point":
-        return data[:3].copy()
-    if kind == "line":
-        return cd.Line(data[:3], data[3:6])
-    if kind == "ray":
-        return cd.Ray(data[:3], data[3:6])
-    return cd.Segment(data[:3], data[3:6])
-
-
-def make_round(cd, kind, data):
-    data = np.asarray(data, float)
-    ctor = cd.Circle if kind == "circle" else cd.Disk
-    return ctor(data[:3], data[3:6], float(data[6]))
 
