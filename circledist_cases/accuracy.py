@@ -24,6 +24,7 @@ from mpmath import mp, mpf
 
 from . import reference as LREF  # linear shapes vs circle / disk
 from . import reference_round as RREF  # circle, disk and Bezier kinds
+from .scenes import SHARED_LINES, SHARED_POINTS, SHARED_RAYS, SHARED_SEGMENTS
 
 mp.dps = 50
 
@@ -153,47 +154,20 @@ UNIT_CIRCLE = ("circle", ORIGIN, Z, 1.0)
 UNIT_DISK = ("disk", ORIGIN, Z, 1.0)
 T9 = 1e-9
 
-# Lines against the unit circle / disk (center 0, normal +z): (origin, direction).
+# Lines against the unit circle / disk (center 0, normal +z): (origin, direction). The scenes the
+# accuracy tests run too are scenes.py's SHARED_*; these are the benchmark's own on top.
 LINE_SCENES = {
-    "tangent in plane": ((1, 0, 0), (0, 1, 0)),
-    "tangent lifted 1e-3": ((1, 0, 1e-3), (0, 1, 0)),
-    "tangent lifted 1e-6": ((1, 0, 1e-6), (0, 1, 0)),
-    "tangent lifted 1e-9": ((1, 0, 1e-9), (0, 1, 0)),
-    "on the axis": ((0, 0, 0.5), (0, 0, 1)),
-    "axis offset 1e-8": ((1e-8, 0, 0.5), (0, 0, 1)),
-    "axis offset 1e-12": ((1e-12, 0, 0.5), (0, 0, 1)),
+    **SHARED_LINES,
     "axis tilted 1e-8": ((0, 0, 0.5), (math.sin(1e-8), 0, math.cos(1e-8))),
     "axis tilted 1e-12": ((0, 0, 0.5), (math.sin(1e-12), 0, math.cos(1e-12))),
-    "near-parallel 1e-9 at 1e-3": ((0, 0.5, 1e-3), (1, 0, math.tan(1e-9))),
-    "near-parallel 1e-9 tangent at 1e-6": ((0, 1, 1e-6), (1, 0, math.tan(1e-9))),
-    "crosses the plane on the rim": ((1, 0, 0), (0.375, 0.5, 0.75)),
     "crosses 1e-9 inside the rim": ((1 - T9, 0, 0), (0.375, 0.5, 0.75)),
     "crosses 1e-9 outside the rim": ((1 + T9, 0, 0), (0.375, 0.5, 0.75)),
-    "in plane through the center": ((0, 0, 0), (1, 0.3, 0)),
     "in plane 1e-9 outside tangent": ((0, 1 + T9, 0), (1, 0, 0)),
-    "parallel over the interior": ((0, 0.5, 0.25), (1, 0, 0)),
-    "generic": ((2.5, -1, 1.25), (0.3, 0.8, -0.5)),
 }
 # Rays and segments: around every line scene, from its special point, and a few of their own.
-RAY_EXTRA = {
-    "starts over the interior, up": ((0.25, 0.125, 0.5), (0.1, 0.2, 1)),
-    "starts over the interior, down": ((0.25, 0.125, 0.5), (0.1, 0.2, -1)),
-    "starts on the rim, outward": ((1, 0, 0), (1, 0, 0.5)),
-    "starts on the rim, up": ((1, 0, 0), (0, 0, 1)),
-}
-SEGMENT_EXTRA = {
-    "zero length on the axis": ((0, 0, 0.75), (0, 0, 0.75)),
-    "zero length on the rim": ((1, 0, 0), (1, 0, 0)),
-    "in plane inside": ((-0.25, 0.125, 0), (0.5, -0.25, 0)),
-    "parallel over the interior, partly": ((0.5, 0, 0.25), (1.5, 0.25, 0.25)),
-    "ends on the rim": ((1, 0, 0), (1.5, 0.25, 0.75)),
-}
-POINT_SCENES = {
-    "on the axis": (0, 0, 0.75), "center": (0, 0, 0), "on the rim": (1, 0, 0),
-    "near the axis 1e-12": (1e-12, 0, 0.5), "over the rim 1e-9": (1, 0, 1e-9),
-    "in plane 1e-9 outside": (1 + T9, 0, 0), "in plane inside": (0.5, 0.25, 0),
-    "over the interior": (0.25, 0.5, 0.5), "generic": (1.5, -0.5, 0.75), "far": (30, 20, -10),
-}
+RAY_EXTRA = SHARED_RAYS
+SEGMENT_EXTRA = SHARED_SEGMENTS
+POINT_SCENES = {**SHARED_POINTS, "over the rim 1e-9": (1, 0, T9), "in plane 1e-9 outside": (1 + T9, 0, 0)}
 RADIUS_SCENES = ["tangent in plane", "tangent lifted 1e-6", "on the axis", "crosses the plane on the rim",
                  "generic"]
 # (scale of the whole scene, local radius)
@@ -398,7 +372,7 @@ def _flat(shape, data):
 
 
 def differential_cases(kinds, per_pair=2, seed=2026):
-    """The adversarial families of the standing differential test (tests/differential.py: the
+    """The adversarial families of the standing differential test (circledist_cases/differential.py: the
     classes the exactness issue listed and those found since: nearly coincident circles, lines
     nearly along the axis, far origins, extreme radius ratios, near-touching disks, huge
     circles, far-reaching Bezier curves, ...), `per_pair` cases per kind pair of each family,

@@ -1,7 +1,7 @@
-"""Accuracy of circledist against the independent 50-digit references (tests/reference.py).
+"""Accuracy of circledist against the independent 50-digit references (circledist_cases/reference.py).
 
 Kinds: point, line, ray and segment against circle and disk.  Each kind has 40 seeded
-random cases and every hard scene of tests/scenes.py (tangent, near-tangent at heights
+random cases and every hard scene of circledist_cases/scenes.py (tangent, near-tangent at heights
 1e-3/1e-6/1e-9, along / near the axis, tilted through the centre, in-plane, near-parallel,
 crossing or ending exactly on the rim, parallel above the disk, zero-length segments), in
 two orientations, translated by 0, 1e6 and 1e8, plus radius 1e-9 / 1e9 (scene scaled or
