@@ -13,7 +13,7 @@ from .scenefile import KINDS, SCHEMA_RESOURCE, SceneFile, SceneFileError, read_s
 # Bad files raise this; the message names the file, the JSON path (or .npz array) and what was expected.
 SceneError = SceneFileError
 
-FORMAT_HELP = """scene files, format version 1; JSON Schema: {schema}
+_FORMAT_TEMPLATE = """scene files, format version 1; JSON Schema: {schema}
 
   {{"format": "circledist-scene", "version": 1, "description": "optional text",
    "shapes": [
@@ -65,9 +65,14 @@ def kinds_help() -> str:
     return textwrap.fill(text, width=96, initial_indent="  ", subsequent_indent="  ", break_on_hyphens=False)
 
 
+# The format's help with the kinds filled in; "{schema}" is left for format_help (the path where
+# the package is installed).
+FORMAT_HELP = _FORMAT_TEMPLATE.replace("{kinds}", kinds_help())
+
+
 def format_help() -> str:
     """The scene format, as --help prints it after the options."""
-    return FORMAT_HELP.format(schema=resources.files("circledist").joinpath(SCHEMA_RESOURCE), kinds=kinds_help())
+    return FORMAT_HELP.format(schema=resources.files("circledist").joinpath(SCHEMA_RESOURCE))
 
 
 @dataclass
