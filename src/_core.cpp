@@ -250,6 +250,31 @@ std::string repr(py::handle self) {
   return out + ")";
 }
 
+// A field's role, the word the Python side (scene files, the command line, Scene) reads it by:
+// "vector" (3 values), "direction" (3 values, not all zero), "length" (one value >= 0) or
+// "control_points" (k + 1 rows of 3). Derived from the FieldSpec, so that the field table of
+// shapes.hpp is the only place a field is described.
+const char* field_role(const FieldSpec& f) {
+  if (f.width == kControlPoints) return "control_points";
+  if (f.width == 3) return f.check == Check::NonzeroVector ? "direction" : "vector";
+  if (f.width == 1 && f.check == Check::NonNegative) return "length";
+  throw std::logic_error(std::string("field '") + f.name + "' has no role: give it one in field_role");
+}
+
+using FieldPair = py::typing::Tuple<py::str, py::str>;
+
+// kind -> its constructor's fields in order, as (name, role): shapes.hpp's table, for Python.
+py::typing::Dict<py::str, py::typing::Tuple<FieldPair, py::ellipsis>> shape_fields() {
+  py::typing::Dict<py::str, py::typing::Tuple<FieldPair, py::ellipsis>> out;
+  for (int k = 0; k < kKindCount; ++k) {
+    py::tuple fields(kFieldCounts[k]);
+    for (size_t i = 0; i < kFieldCounts[k]; ++i)
+      fields[i] = py::make_tuple(kFieldSpecs[k][i].name, field_role(kFieldSpecs[k][i]));
+    out[kind_name(k)] = fields;
+  }
+  return out;
+}
+
 }  // namespace
 
 #include "bind_effects.hpp"
@@ -329,4 +354,11 @@ PYBIND11_MODULE(_core, m) {
       py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kClosest());
 
   bind_effects(m);
+  m.def("_shape_fields", &shape_fields,
+        "Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' "
+        "(shape (3,), not zero), 'length' (a number >= 0) or 'control_points' (shape (k + 1, 3)). Read by the scene "
+        "files, the command line and circledist.Scene.");
+  m.def(
+      "_sweep_field", [] { return FieldPair(py::make_tuple(kSweepField.name, field_role(kSweepField))); },
+      "The (name, role) of the optional keyword field every kind takes after its own fields.");
 }

@@ -1,19 +1,16 @@
 """Shared pytest configuration for the circledist reference suite.
 
-* makes the helper modules next to this file (reference.py, scenes.py) importable;
 * registers the hypothesis profile "circledist" (deadline off, 60 examples,
   derandomized so that every run checks the same examples, no shrinking).  Select another
   profile with HYPOTHESIS_PROFILE=<name> (e.g. "circledist-long", 600 examples).
+
+The shared cases and references are the package circledist_cases (the repository's root is on
+pytest's pythonpath, pyproject.toml).
 """
 
 import os
-import sys
 
 import pytest
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-if HERE not in sys.path:
-    sys.path.insert(0, HERE)
 
 try:
     from hypothesis import HealthCheck, Phase, settings

@@ -13,6 +13,8 @@ import zlib
 import numpy as np
 import pytest
 
+from circledist_cases.shapes import query_pairs, random_fields, same_bits
+
 cd = pytest.importorskip("circledist")
 
 SOLVERS = ("companion", "polished", "bracketing", "eigen")
@@ -21,21 +23,12 @@ N = 5
 
 
 def _fields(kind, n, rng, sweep):
-    """Constructor arguments of n shapes of a kind (plus a sweep where asked)."""
-    if kind == "Point":
-        args = [rng.normal(size=(n, 3))]
-    elif kind in ("Line", "Ray", "Segment"):
-        args = [rng.normal(size=(n, 3)), rng.normal(size=(n, 3))]
-    elif kind in ("Circle", "Disk"):
-        args = [rng.normal(size=(n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 2.0, n)]
-    else:
-        args = [rng.normal(size=(n, 4, 3))]
-    kwargs = {"sweep": rng.uniform(0.0, 0.3, n)} if sweep else {}
-    return args, kwargs
+    """{field: array} of n random shapes of a kind (plus a sweep where asked)."""
+    return random_fields(cd, kind, rng, (n,), sweep=sweep)
 
 
-def _make(kind, args, kwargs, transform=lambda x: x):
-    return getattr(cd, kind)(*[transform(x) for x in args], **{k: transform(v) for k, v in kwargs.items()})
+def _make(kind, fields, transform=lambda x: x):
+    return getattr(cd, kind)(**{k: transform(v) for k, v in fields.items()})
 
 
 def _seed(pair):
@@ -43,22 +36,18 @@ def _seed(pair):
 
 
 def _pairs():
-    kinds = {tuple(p) for p in cd._core._query_kinds()}
-    return sorted(p for p in kinds if p[0] <= p[1])
+    return query_pairs(cd)
 
 
-def _same(x, y):
-    x, y = np.asarray(x), np.asarray(y)
-    assert x.dtype == y.dtype and x.shape == y.shape
-    assert np.array_equal(x, y, equal_nan=True)
+_same = same_bits
 
 
 @pytest.mark.parametrize("pair", _pairs(), ids="-".join)
 @pytest.mark.parametrize("sweep", [False, True], ids=["bare", "swept"])
 def test_both_orders_give_the_same_answers(pair, sweep):
     rng = np.random.default_rng(_seed(pair))
-    a = _make(pair[0], *_fields(pair[0], N, rng, sweep))
-    b = _make(pair[1], *_fields(pair[1], N, rng, sweep))
+    a = _make(pair[0], _fields(pair[0], N, rng, sweep))
+    b = _make(pair[1], _fields(pair[1], N, rng, sweep))
     d = rng.uniform(0.0, 2.0, N)
     for solver in SOLVERS:
         for precision in PRECISIONS:
@@ -85,8 +74,8 @@ def test_float32_is_the_double_query_on_rounded_inputs(pair):
     rng = np.random.default_rng(7 + _seed(pair))
     fa, fb = _fields(pair[0], N, rng, True), _fields(pair[1], N, rng, True)
     d = rng.uniform(0.0, 2.0, N)
-    a, b = _make(pair[0], *fa), _make(pair[1], *fb)  # float64 inputs, asked in float32
-    ra, rb = _make(pair[0], *fa, transform=_to_float32), _make(pair[1], *fb, transform=_to_float32)
+    a, b = _make(pair[0], fa), _make(pair[1], fb)  # float64 inputs, asked in float32
+    ra, rb = _make(pair[0], fa, transform=_to_float32), _make(pair[1], fb, transform=_to_float32)
     for solver in SOLVERS:
         single, double = dict(solver=solver, precision="float32"), dict(solver=solver, precision="float64")
         _same(cd.distance(a, b, **single), cd.distance(ra, rb, **double).astype(np.float32))
@@ -98,8 +87,8 @@ def test_float32_is_the_double_query_on_rounded_inputs(pair):
             _same(getattr(got, name), getattr(want, name).astype(np.float32))
         _same(got.unique, want.unique)
     # A single query's distance is a Python float holding the float32 value.
-    one = cd.distance(_make(pair[0], [x[0] for x in fa[0]], {}), _make(pair[1], [x[0] for x in fb[0]], {}),
-                      precision="float32")
+    first = [{k: v[0] for k, v in f.items() if k != "sweep"} for f in (fa, fb)]
+    one = cd.distance(_make(pair[0], first[0]), _make(pair[1], first[1]), precision="float32")
     assert type(one) is float and one == float(np.float32(one))
 
 
@@ -107,11 +96,11 @@ def test_float32_is_the_double_query_on_rounded_inputs(pair):
 def test_gathered_broadcast_equals_the_tiled_batch(pair):
     rng = np.random.default_rng(11 + _seed(pair))
     n, m = 3, 100  # 300 elements: more than one gathered chunk is not needed, several rows are
-    (aa, ak), (ba, bk) = _fields(pair[0], n, rng, True), _fields(pair[1], m, rng, True)
-    a = _make(pair[0], [x[:, None] for x in aa], {k: v[:, None] for k, v in ak.items()})
-    b = _make(pair[1], ba, bk)
-    a_full = _make(pair[0], [np.repeat(x, m, axis=0) for x in aa], {k: np.repeat(v, m) for k, v in ak.items()})
-    b_full = _make(pair[1], [np.tile(x, (n,) + (1,) * (x.ndim - 1)) for x in ba], {k: np.tile(v, n) for k, v in bk.items()})
+    fa, fb = _fields(pair[0], n, rng, True), _fields(pair[1], m, rng, True)
+    a = _make(pair[0], fa, transform=lambda x: x[:, None])
+    b = _make(pair[1], fb)
+    a_full = _make(pair[0], fa, transform=lambda x: np.repeat(x, m, axis=0))
+    b_full = _make(pair[1], fb, transform=lambda x: np.tile(x, (n,) + (1,) * (x.ndim - 1)))
     d = rng.uniform(0.0, 2.0, (n, m))
     got = cd.closest_points(a, b)
     want = cd.closest_points(a_full, b_full)
@@ -134,7 +123,7 @@ def test_single_queries_are_the_batch_elements(pair):
     the same bits whichever solver is asked."""
     rng = np.random.default_rng(13 + _seed(pair))
     fa, fb = _fields(pair[0], N, rng, True), _fields(pair[1], N, rng, True)
-    a, b = _make(pair[0], *fa), _make(pair[1], *fb)
+    a, b = _make(pair[0], fa), _make(pair[1], fb)
     d = rng.uniform(0.0, 2.0, N)
     for precision in PRECISIONS:
         answers = {}
@@ -142,8 +131,8 @@ def test_single_queries_are_the_batch_elements(pair):
             opts = dict(solver=solver, precision=precision)
             batch = (cd.distance(a, b, **opts), cd.within(a, b, d, **opts), cd.distance_if_within(a, b, d, **opts))
             for i in range(N):
-                ai = _make(pair[0], [x[i] for x in fa[0]], {k: v[i] for k, v in fa[1].items()})
-                bi = _make(pair[1], [x[i] for x in fb[0]], {k: v[i] for k, v in fb[1].items()})
+                ai = _make(pair[0], fa, transform=lambda x: x[i])
+                bi = _make(pair[1], fb, transform=lambda x: x[i])
                 single = (cd.distance(ai, bi, **opts), cd.within(ai, bi, d[i], **opts),
                           cd.distance_if_within(ai, bi, d[i], **opts))
                 assert type(single[1]) is bool

@@ -1,12 +1,12 @@
 """The CI slice of the standing differential accuracy test (issue 14, "keep it closed").
 
-A fixed seed; every case family of tests/differential.py with every kind pair it applies to;
+A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to;
 every solver ("bracketing", "companion", "polished", "eigen") x precision (float64, long double,
 float32); both argument orders; distance(), closest_points(), within(), distance_if_within() and
 intersects(), batched and scalar.  Each answer is judged by the fast NumPy screen (an independent
 one-parameter minimisation, an upper bound from genuine points) and by the closest points the
 library returns (on their shapes, separation == distance); every accuracy finding is confirmed
-against the 50-digit mpmath references of tests/reference.py and tests/reference_round.py before
+against the 50-digit mpmath references of circledist_cases/reference.py and circledist_cases/reference_round.py before
 it counts.  The first case of every (family, kind pair) is also compared with those references
 directly, for every combination.
 
@@ -17,7 +17,7 @@ float64, 1e-15 in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs.
 counts) and 120 direct references: about 58 s of CPU on one core of the project's 2-core machine
 (2026-11-25; the library's answers take most of it). With scalar calls on every case it was 75 s,
 ~197,000 answers.  A failure lists one reproducer per finding class;
-`python tools/differential.py` runs the same checks on millions of cases.
+`python -m tools.differential` runs the same checks on millions of cases.
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ import time
 
 import pytest
 
-import differential as D
+from circledist_cases import differential as D
 
 cd = pytest.importorskip("circledist")
 

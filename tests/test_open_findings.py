@@ -3,7 +3,7 @@ not fixed yet, kept as strict expected failures: each one turns into an error (X
 class is fixed, and must then move to test_regressions.py.
 
 The references are the differential test's own: 50-digit mpmath minimization over one parameter
-(tests/reference_round.py), agreeing with its dense-sampling screen; none comes from circledist.
+(circledist_cases/reference_round.py), agreeing with its dense-sampling screen; none comes from circledist.
 The bar is the project's: |error| <= 1e-12 (double), 1e-15 (long double) times
 max(true distance, largest radius); float32 answers are double answers rounded, so their bar is
 the double one plus the rounding of the answer (4 float32 ulps).

@@ -1,6 +1,6 @@
 """What ships: the sdist holds the sources that build, test and document the package and nothing
-else (no build outputs, benchmarks, run reports or pictures); the installed package holds no
-binding sources."""
+else (no build outputs, benchmarks, shared test cases, run reports or pictures); the installed
+package holds no binding sources."""
 
 import os
 import tarfile
@@ -37,7 +37,7 @@ def test_sdist_holds_the_sources(sdist_names):
 
 def test_sdist_holds_nothing_else(sdist_names):
     unwanted = [n for n in sdist_names
-                if n.startswith((".ci/", "bench/", "build/", ".venv/", "dist/"))
+                if n.startswith((".ci/", "bench/", "circledist_cases/", "build/", ".venv/", "dist/"))
                 or n.endswith((".so", ".o", ".pyc", ".png", ".json")) and not n.startswith("python/")]
     assert not unwanted, unwanted[:10]
 
@@ -101,6 +101,7 @@ def test_installed_distribution_holds_the_package_only():
         assert needed in package, needed
     assert [f for f in package if f.startswith("circledist/_core.") and f.endswith((".so", ".pyd"))]
     assert not [f for f in files if f.endswith((".cpp", ".hpp", ".h", ".o", ".cmake"))], files
+    assert not [f for f in files if f.startswith("circledist_cases")], files  # the tests' cases stay home
 
 
 @pytest.mark.skipif(not os.environ.get("CIRCLEDIST_WHEEL_ALONE"), reason="tools/run.sh's wheel_alone step only")

@@ -9,23 +9,11 @@ import pickle
 import numpy as np
 import pytest
 
+from circledist_cases.shapes import random_fields, random_sweep
+
 cd = pytest.importorskip("circledist")
 
 KINDS = ("Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier")
-
-
-def _args(kind, rng, batch, dtype):
-    def v(*shape):
-        return rng.normal(size=batch + shape).astype(dtype)
-    if kind == "Point":
-        return {"p": v(3)}
-    if kind in ("Line", "Ray"):
-        return {"origin": v(3), "direction": v(3)}
-    if kind == "Segment":
-        return {"p0": v(3), "p1": v(3)}
-    if kind in ("Circle", "Disk"):
-        return {"center": v(3), "normal": v(3), "radius": np.abs(v()) + dtype(0.5)}
-    return {"control_points": v(4, 3)}
 
 
 def _shapes():
@@ -33,9 +21,9 @@ def _shapes():
     for kind in KINDS:
         for batch in ((), (5,), (2, 3)):
             for dtype in (np.float64, np.float32, np.longdouble):
-                args = _args(kind, rng, batch, dtype)
+                args = random_fields(cd, kind, rng, batch, dtype)
                 yield kind, getattr(cd, kind)(**args)
-                yield kind, getattr(cd, kind)(**args, sweep=np.abs(rng.normal(size=batch)).astype(dtype))
+                yield kind, getattr(cd, kind)(**args, sweep=random_sweep(rng, batch, dtype))
 
 
 def _same_shape(x, y):
@@ -73,7 +61,7 @@ def test_to_arrays_names_the_constructor_arguments_and_keeps_dtypes():
     rng = np.random.default_rng(4)
     for kind in KINDS:
         for dtype in (np.float64, np.float32, np.longdouble):
-            args = _args(kind, rng, (4,), dtype)
+            args = random_fields(cd, kind, rng, (4,), dtype)
             shape = getattr(cd, kind)(**args)
             arrays = shape.to_arrays()
             assert list(arrays) == list(args)  # no sweep given: none listed (the default stays the default)
@@ -87,7 +75,7 @@ def test_to_arrays_names_the_constructor_arguments_and_keeps_dtypes():
 
 def test_from_arrays_through_npz():
     rng = np.random.default_rng(5)
-    rings = cd.Circle(**_args("Circle", rng, (100,), np.float64), sweep=rng.uniform(0, 0.1, 100))
+    rings = cd.Circle(**random_fields(cd, "Circle", rng, (100,), np.float64), sweep=rng.uniform(0, 0.1, 100))
     buffer = io.BytesIO()
     np.savez(buffer, **rings.to_arrays())
     buffer.seek(0)

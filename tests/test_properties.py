@@ -23,7 +23,8 @@ import pytest
 from hypothesis import given, note
 from hypothesis import strategies as st
 
-import reference as ref
+from circledist_cases import reference as ref
+from circledist_cases.shapes import make_shape
 
 EPS = float(np.finfo(float).eps)
 KIND_PAIRS = [(lk, rk) for rk in ("circle", "disk") for lk in ("point", "line", "ray", "segment")]
@@ -83,20 +84,6 @@ def scene(draw, lin_kind, round_kind):
     return lin_kind, lin, round_kind, rnd
 
 
-def _make(cd, kind, data):
-    data = np.asarray(data, float)
-    if kind == "point":
-        return data[:3].copy()
-    if kind == "line":
-        return cd.Line(data[:3], data[3:6])
-    if kind == "ray":
-        return cd.Ray(data[:3], data[3:6])
-    if kind == "segment":
-        return cd.Segment(data[:3], data[3:6])
-    ctor = cd.Circle if kind == "circle" else cd.Disk
-    return ctor(data[:3], data[3:6], float(data[6]))
-
-
 def _scene_size(sc):
     lk, ld, rk, rd = sc
     c = np.asarray(rd[:3])
@@ -116,7 +103,7 @@ def test_symmetry(lib, kinds):
     @given(scene(*kinds))
     def check(sc):
         lk, ld, rk, rd = sc
-        a, b = _make(lib, lk, ld), _make(lib, rk, rd)
+        a, b = make_shape(lib, lk, ld), make_shape(lib, rk, rd)
         d_ab, d_ba = lib.distance(a, b), lib.distance(b, a)
         assert d_ab == d_ba, f"distance(a, b) = {d_ab!r} != distance(b, a) = {d_ba!r}"
         r1, r2 = lib.closest_points(a, b), lib.closest_points(b, a)
@@ -163,8 +150,8 @@ def test_rigid_motion_invariance(lib, kinds):
     def check(sc, q, t):
         Q = _random_rotation(q)
         sc2 = _move(sc, Q, np.asarray(t, float))
-        d1 = lib.distance(_make(lib, sc[0], sc[1]), _make(lib, sc[2], sc[3]))
-        d2 = lib.distance(_make(lib, sc2[0], sc2[1]), _make(lib, sc2[2], sc2[3]))
+        d1 = lib.distance(make_shape(lib, sc[0], sc[1]), make_shape(lib, sc[2], sc[3]))
+        d2 = lib.distance(make_shape(lib, sc2[0], sc2[1]), make_shape(lib, sc2[2], sc2[3]))
         size = _scene_size(sc)
         note(f"d1={d1!r} d2={d2!r} size={size}")
         assert abs(d1 - d2) <= 1e-10 * size
@@ -177,7 +164,7 @@ def test_points_on_shapes(lib, kinds):
     @given(scene(*kinds), st.booleans())
     def check(sc, swap):
         lk, ld, rk, rd = sc
-        a, b = _make(lib, lk, ld), _make(lib, rk, rd)
+        a, b = make_shape(lib, lk, ld), make_shape(lib, rk, rd)
         res = lib.closest_points(b, a) if swap else lib.closest_points(a, b)
         p_lin = np.asarray(res.point_b if swap else res.point_a, float)
         p_rnd = np.asarray(res.point_a if swap else res.point_b, float)
@@ -204,7 +191,7 @@ def test_point_distance_is_closest_points_distance(lib, round_kind, precision):
     @given(scene("point", round_kind))
     def check(sc):
         _, ld, rk, rd = sc
-        a, b = _make(lib, "point", ld), _make(lib, rk, rd)
+        a, b = make_shape(lib, "point", ld), make_shape(lib, rk, rd)
         for x, y in ((a, b), (b, a)):
             res = lib.closest_points(x, y, precision=precision)
             assert res.distance == lib.distance(x, y, precision=precision)
@@ -254,7 +241,7 @@ def test_no_sampled_pair_is_closer(lib, kinds):
     @given(scene(*kinds), st.integers(0, 2 ** 32 - 1))
     def check(sc, seed):
         lk, ld, rk, rd = sc
-        d = lib.distance(_make(lib, lk, ld), _make(lib, rk, rd))
+        d = lib.distance(make_shape(lib, lk, ld), make_shape(lib, rk, rd))
         rng = np.random.default_rng(seed)
         c = np.asarray(rd[:3], float)
         reach = d + 2 * rd[6] + 1.0

@@ -1,7 +1,7 @@
-"""Accuracy of circledist against the independent 50-digit references (tests/reference.py).
+"""Accuracy of circledist against the independent 50-digit references (circledist_cases/reference.py).
 
 Kinds: point, line, ray and segment against circle and disk.  Each kind has 40 seeded
-random cases and every hard scene of tests/scenes.py (tangent, near-tangent at heights
+random cases and every hard scene of circledist_cases/scenes.py (tangent, near-tangent at heights
 1e-3/1e-6/1e-9, along / near the axis, tilted through the centre, in-plane, near-parallel,
 crossing or ending exactly on the rim, parallel above the disk, zero-length segments), in
 two orientations, translated by 0, 1e6 and 1e8, plus radius 1e-9 / 1e9 (scene scaled or
@@ -30,8 +30,9 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-import reference as ref
-import scenes
+from circledist_cases import reference as ref
+from circledist_cases import scenes
+from circledist_cases.shapes import make_shape
 
 REL = 1e-12
 EPS = float(np.finfo(float).eps)
@@ -48,8 +49,8 @@ def _scale(r):
 
 
 def _shapes(cd, case, order):
-    lin = scenes.make_lin(cd, case.lin_kind, case.lin_data)
-    rnd = scenes.make_round(cd, case.round_kind, case.round_data)
+    lin = make_shape(cd, case.lin_kind, case.lin_data)
+    rnd = make_shape(cd, case.round_kind, case.round_data)
     return (lin, rnd) if order == "lin_first" else (rnd, lin)
 
 

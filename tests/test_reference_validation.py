@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-import reference as ref
-import scenes
+from circledist_cases import reference as ref
+from circledist_cases import scenes
 
 # ----------------------------------------------------------------------------
 # 1. analytic cases

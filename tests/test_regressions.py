@@ -1,5 +1,5 @@
 """Regression cases for the accuracy and crash reports of issues 14 and 15, each against an
-independent 50-digit reference (tests/reference.py and tests/reference_round.py: one-parameter
+independent 50-digit reference (circledist_cases/reference.py and circledist_cases/reference_round.py: one-parameter
 minimization in mpmath, no polynomial roots), under every solver policy, in both argument orders,
 through distance(), closest_points() and a batch.
 
@@ -18,8 +18,8 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-import reference as L
-import reference_round as R
+from circledist_cases import reference as L
+from circledist_cases import reference_round as R
 
 cd = pytest.importorskip("circledist")
 
@@ -183,7 +183,7 @@ CASES = [
      (0.0, 0.0, 2.0, 1.0, 1e-170, 0.0, 1.0)),
 ] + far_cases() + near_axis_piece_cases()
 
-# The references' line searches are scaled by |direction| (tests/reference.py), so these cases
+# The references' line searches are scaled by |direction| (circledist_cases/reference.py), so these cases
 # are referenced through the same line with a direction of moderate length (the same point set).
 REFERENCE_INPUTS = {
     "line-circle-huge-direction": (0.0, 0.5, -3.0, 0.0, 0.0, 1.0),

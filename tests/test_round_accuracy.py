@@ -1,7 +1,7 @@
 """Accuracy of circledist's round-shape queries against independent 50-digit references.
 
 Kinds: circle-circle (cc), circle-disk (cd), disk-disk (dd), Bezier-disk (bd), Bezier-circle (bc).
-References come from tests/reference_round.py (mpmath, no polynomial roots).  Each kind has seeded
+References come from circledist_cases/reference_round.py (mpmath, no polynomial roots).  Each kind has seeded
 random cases plus the hard configurations (coplanar, concentric, coaxial, linked, touching,
 near-coplanar, translated far away, extreme radius ratios, ...), each run in both argument orders.
 
@@ -21,7 +21,7 @@ from typing import Optional, Tuple
 import numpy as np
 import pytest
 
-import reference_round as R
+from circledist_cases import reference_round as R
 
 try:
     import circledist as cd

@@ -1,26 +1,21 @@
 """Stability sweeps toward each degeneracy, through the Python API with the default root policy.
 
-The families live in bench/sweeps.py (shared with bench/accuracy_vs_time.py, which plots every
-policy into docs/stability_sweeps.png):
+The families live in circledist_cases/sweeps.py (shared with bench/accuracy_vs_time.py, which
+plots every policy into docs/stability_sweeps.png):
   axis-tilt     a line tilted from the circle's axis by 10^-k rad, k = 0..16
   tangent-lift  the tangent line lifted by h = 10^-k, k = 0..16 (distance exactly h)
   offset        fixed scenes translated by 10^k (1, -0.7, 0.4), k = 0..9
   circle-tilt   a circle / disk tilted from coplanar by 10^-k rad, k = 0..16
 Bar (never loosened): |d - d_ref| <= 1e-12 * max(d_ref, largest radius of the query), in double.
 References are of the exact float inputs: the analytic distance where there is one, else a
-50-digit one-parameter minimisation of a closed form (tests/reference.py, reference_round.py).
+50-digit one-parameter minimisation of a closed form (circledist_cases/reference.py,
+reference_round.py).
 """
 
-import os
-import sys
-
 import pytest
+from mpmath import mp, mpf
 
-BENCH = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "bench")
-if BENCH not in sys.path:
-    sys.path.insert(0, BENCH)
-
-import sweeps  # noqa: E402
+from circledist_cases import sweeps
 
 BAR = 1e-12
 CASES = sweeps.sweep_cases()
@@ -37,7 +32,7 @@ def test_tangent_lift_reference_is_the_height():
     for c in CASES:
         if c.family == "tangent-lift" and c.exact is not None and c.k in (0, 6, 16):
             ref = sweeps._mp_reference(c.kind, c.values)
-            assert abs(ref - sweeps.avt.mpf(c.exact)) <= sweeps.avt.mpf("1e-30") * max(ref, 1)
+            assert abs(ref - mpf(c.exact)) <= mpf("1e-30") * max(ref, 1)
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.label.replace(" ", "_") for c in CASES])
@@ -46,5 +41,5 @@ def test_default_policy_within_bar(cd, case):
     d = float(cd.distance(a, b))
     err, ref, radius = sweeps.relative_error(d, case)
     assert err <= BAR, (
-        f"{case.label}: distance {d!r}, reference {sweeps.avt.mp.nstr(ref, 20)}, largest radius {radius}, "
+        f"{case.label}: distance {d!r}, reference {mp.nstr(ref, 20)}, largest radius {radius}, "
         f"relative error {err:.3e} > {BAR:.0e}")

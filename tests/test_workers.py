@@ -11,7 +11,7 @@ import zlib
 import numpy as np
 import pytest
 
-from test_bindings import _fields, _pairs, _same  # the random shapes and bit-equality of the dispatch tests
+from circledist_cases.shapes import query_pairs, random_fields, same_bits
 
 cd = pytest.importorskip("circledist")
 
@@ -25,19 +25,19 @@ def _answers(a, b, d, **opts):
             cd.intersects(a, b, **opts), r.distance, r.point_a, r.point_b, r.param_a, r.param_b, r.unique]
 
 
-@pytest.mark.parametrize("pair", _pairs(), ids="-".join)
+@pytest.mark.parametrize("pair", query_pairs(cd), ids="-".join)
 def test_every_worker_count_gives_the_same_bits(pair):
     rng = np.random.default_rng(zlib.crc32("-".join(pair).encode()))
     n = N if "Bezier" not in pair else N // 4
-    a = getattr(cd, pair[0])(*_fields(pair[0], n, rng, False)[0], sweep=rng.uniform(0, 0.2, n))
-    b = getattr(cd, pair[1])(*_fields(pair[1], n, rng, False)[0])
+    a = getattr(cd, pair[0])(**random_fields(cd, pair[0], rng, (n,)), sweep=rng.uniform(0, 0.2, n))
+    b = getattr(cd, pair[1])(**random_fields(cd, pair[1], rng, (n,)))
     d = rng.uniform(0.0, 2.0, n)
     for solver in (None, "companion", "polished", "eigen"):
         for precision in ("float32", "float64", "longdouble") if solver is None else ("float64",):
             one = _answers(a, b, d, solver=solver, precision=precision)
             for workers in WORKERS:
                 for got, want in zip(_answers(a, b, d, solver=solver, precision=precision, workers=workers), one):
-                    _same(got, want)
+                    same_bits(got, want)
 
 
 def test_gathered_broadcast_on_several_threads():
@@ -49,10 +49,10 @@ def test_gathered_broadcast_on_several_threads():
     full_lines = cd.Line(np.repeat(lines.origin, m, axis=1), np.repeat(lines.direction, m, axis=1))
     want = cd.distance(full_lines, rings)  # every field full size: the linear path, one thread
     for workers in (1, 2, 5):
-        _same(cd.distance(lines, rings, workers=workers), want)
+        same_bits(cd.distance(lines, rings, workers=workers), want)
         got, ref = cd.closest_points(lines, rings, workers=workers), cd.closest_points(full_lines, rings)
-        _same(got.point_a, ref.point_a)
-        _same(got.param_b, ref.param_b)
+        same_bits(got.point_a, ref.point_a)
+        same_bits(got.param_b, ref.param_b)
 
 
 def test_counters_add_up_across_threads():

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Long mode of the differential accuracy test (issue 14, "keep it closed").
 
-    python tools/differential.py --answers 10000000 --seed 1 --report docs/differential_report.json
+    python -m tools.differential --answers 10000000 --seed 1 --report docs/differential_report.json
+
+(from the repository's root: a module run, so that the shared cases, circledist_cases, import.)
 
 Sizes are counted in library ANSWERS, as the issue counts its "queries": every value the library
 returns for one query, i.e. per case every solver x precision combination, both argument orders,
@@ -13,7 +15,7 @@ give exactly the batch's answers).  --answers N runs ceil(N / answers per case) 
 the answers per entry point.
 
 The cases (one kind pair instance each, "family/seed/index") are spread evenly over the case
-families of tests/differential.py and, within a family, over its kind pairs; every chunk holds a
+families of circledist_cases/differential.py and, within a family, over its kind pairs; every chunk holds a
 share of every family (one library batch per kind pair and chunk: large batches, and a partial
 run sees every family).  Answers are judged by the fast NumPy screen and by the returned closest
 points.  Accuracy findings are confirmed against the 50-digit mpmath references (at most
@@ -28,7 +30,6 @@ from __future__ import annotations
 
 import argparse
 import collections
-import importlib.util
 import json
 import os
 import sys
@@ -38,14 +39,14 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def load_differential():
-    """tests/differential.py, imported by path (no sys.path edits)."""
-    if "differential" in sys.modules:
-        return sys.modules["differential"]
-    spec = importlib.util.spec_from_file_location("differential", os.path.join(ROOT, "tests", "differential.py"))
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["differential"] = mod
-    spec.loader.exec_module(mod)
-    return mod
+    """The differential test's library module (circledist_cases/differential.py)."""
+    try:
+        from circledist_cases import differential
+    except ModuleNotFoundError as e:
+        if e.name != "circledist_cases":
+            raise
+        sys.exit("tools/differential.py: run it from the repository's root as python -m tools.differential")
+    return differential
 
 
 def library_info(cd):

@@ -180,7 +180,7 @@ case "$task" in
     status=0
     "$py" tools/fuzz_crash.py --cases "${2:-10000000}" --chunk 200000 --batched --timeout 1800 \
       --report docs/fuzz_report.json || status=$?
-    "$py" tools/differential.py --answers "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
+    "$py" -m tools.differential --answers "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
     exit $status
     ;;
   docs)
@@ -192,7 +192,7 @@ case "$task" in
     cpp_build -DCIRCLEDIST_BUILD_BENCH=ON
     cmake --build build/cpp --target accuracy_vs_time
     "$py" bench/bench_queries.py          # docs/benchmark.md
-    "$py" bench/accuracy_vs_time.py       # docs/accuracy_vs_time.md, .png, docs/stability_sweeps.png
+    "$py" -m bench.accuracy_vs_time       # docs/accuracy_vs_time.md, .png, docs/stability_sweeps.png
     "$py" bench/bench_scene.py            # docs/scene_scaling.md, .png
     "$py" bench/figures.py                # docs/line_disk.png
     ;;

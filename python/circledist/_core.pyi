@@ -640,6 +640,14 @@ def _query_kinds() -> list[tuple[str, str]]:
     """
     The (kind, kind) pairs that have a query (used by circledist.Scene).
     """
+def _shape_fields() -> dict[str, tuple[tuple[str, str], ...]]:
+    """
+    Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' (shape (3,), not zero), 'length' (a number >= 0) or 'control_points' (shape (k + 1, 3)). Read by the scene files, the command line and circledist.Scene.
+    """
+def _sweep_field() -> tuple[str, str]:
+    """
+    The (name, role) of the optional keyword field every kind takes after its own fields.
+    """
 def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> ClosestPoints:
     """
     Distance, closest points on a and b, their parameters and whether they are unique.

@@ -26,16 +26,9 @@ from . import _core
 
 __all__ = ["Scene"]
 
-# The constructor arguments of each kind, in order (the sweep comes on top as a keyword).
-KIND_FIELDS = {
-    "Point": ("p",),
-    "Line": ("origin", "direction"),
-    "Ray": ("origin", "direction"),
-    "Segment": ("p0", "p1"),
-    "Circle": ("center", "normal", "radius"),
-    "Disk": ("center", "normal", "radius"),
-    "Bezier": ("control_points",),
-}
+# The constructor arguments of each kind, in order (the sweep comes on top as a keyword), from
+# the module's one table of fields (src/shapes.hpp).
+KIND_FIELDS = {kind: tuple(name for name, _ in fields) for kind, fields in _core._shape_fields().items()}
 # Trailing dimensions of a field per element (the rest is batch).
 _TRAILING = {"p": 1, "origin": 1, "direction": 1, "p0": 1, "p1": 1, "center": 1, "normal": 1,
              "radius": 0, "control_points": 2, "sweep": 0}

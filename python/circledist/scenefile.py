@@ -42,18 +42,19 @@ FORMAT = "circledist-scene"
 VERSION = 1
 SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
 
-# kind -> (class name, {field: role}); roles: vector, direction (a non-zero vector), length (>= 0),
-# control_points. The sweep (a length, default 0) comes on top of every kind.
-KINDS = {
-    "point": ("Point", {"p": "vector"}),
-    "line": ("Line", {"origin": "vector", "direction": "direction"}),
-    "ray": ("Ray", {"origin": "vector", "direction": "direction"}),
-    "segment": ("Segment", {"p0": "vector", "p1": "vector"}),
-    "circle": ("Circle", {"center": "vector", "normal": "direction", "radius": "length"}),
-    "disk": ("Disk", {"center": "vector", "normal": "direction", "radius": "length"}),
-    "bezier": ("Bezier", {"control_points": "control_points"}),
-}
+# kind -> (class name, {field: role}), read from the module's one table of fields (src/shapes.hpp);
+# roles: vector, direction (a non-zero vector), length (>= 0), control_points. The sweep (a length,
+# default 0) comes on top of every kind.
+KINDS = {kind.lower(): (kind, dict(fields)) for kind, fields in _core._shape_fields().items()}
+_SWEEP, _SWEEP_ROLE = _core._sweep_field()
 _TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "control_points": 2}
+
+
+def _roles(kind: str) -> dict:
+    """{field: role} of a kind's fields, the sweep last."""
+    return {**KINDS[kind][1], _SWEEP: _SWEEP_ROLE}
+
+
 PAIR_EFFECTS = ("intersects", "within", "distance", "closest_points")
 SCENE_EFFECTS = ("nearest", "within", "intersects")
 _REFERENCE = re.compile(r"^([^\[\]/]+)(?:\[(0|[1-9][0-9]*)\])?$")
@@ -131,13 +132,13 @@ class ShapeEntry:
     def shape(self):
         """The library shape: single, or batched with batch shape (count,)."""
         names = list(KINDS[self.kind][1])
-        return getattr(_core, self.class_name)(*(self.fields[n] for n in names), sweep=self.fields["sweep"])
+        return getattr(_core, self.class_name)(*(self.fields[n] for n in names), sweep=self.fields[_SWEEP])
 
     def element(self, index: int):
         """Shape `index` of a batch, as a single shape."""
         names = list(KINDS[self.kind][1])
         return getattr(_core, self.class_name)(*(self.fields[n][index] for n in names),
-                                                sweep=self.fields["sweep"][index])
+                                                sweep=self.fields[_SWEEP][index])
 
     def element_names(self) -> list:
         return [self.name] if self.count is None else [f"{self.name}[{i}]" for i in range(self.count)]
@@ -260,7 +261,7 @@ def _column(array: np.ndarray, role: str, count: Optional[int], file: str, where
 def _entry_from_json(spec: dict, i: int, file: str) -> ShapeEntry:
     kind = spec["kind"]
     count = None if "count" not in spec else int(spec["count"])
-    roles = dict(KINDS[kind][1], sweep="length")
+    roles = _roles(kind)
     base = f"$.shapes[{i}]"
     fields = {}
     for name, role in roles.items():
@@ -541,13 +542,13 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
         count = _npz_integer(arrays, f"{name}/count", file)
         if count is not None and count < 1:
             raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
-        roles = dict(KINDS[kind][1], sweep="length")
+        roles = _roles(kind)
         known |= {f"{name}/kind", f"{name}/count"} | {f"{name}/{f}" for f in roles}
         fields = {}
         for f, role in roles.items():
             key = f"{name}/{f}"
             if key not in names:
-                if f != "sweep":
+                if f != _SWEEP:
                     raise _error(file, f"array {key!r}", f"missing (a {kind} needs {', '.join(KINDS[kind][1])})")
                 fields[f] = np.zeros(()) if count is None else np.zeros(count)
                 continue
@@ -660,7 +661,7 @@ def _entries_of(shapes, file: str) -> list:
         batch = tuple(shape.batch_shape)
         count = None if batch == () else int(np.prod(batch, dtype=np.int64))
         fields = {}
-        for f, role in dict(KINDS[kind][1], sweep="length").items():
+        for f, role in _roles(kind).items():
             a = np.asarray(getattr(shape, f), dtype=np.float64)
             trailing = a.shape[a.ndim - _TRAILING_DIMS[role]:] if _TRAILING_DIMS[role] else ()
             if count is not None:  # a column: one row per shape, C order; one value if all rows agree
@@ -669,8 +670,8 @@ def _entries_of(shapes, file: str) -> list:
                 if (bits == bits[:1]).all():
                     a = a[0]
             fields[f] = a
-        if not np.any(fields["sweep"]):
-            del fields["sweep"]
+        if not np.any(fields[_SWEEP]):
+            del fields[_SWEEP]
         entries.append((str(name), kind, count, fields))
     return entries
 

@@ -10,6 +10,7 @@ normal +z and radius 1.  They are then placed in the world with an orientation
 generic rotation, so every coordinate is a rounded float) and a translation
 (0, 1e6, 1e8 times a fixed unit-ish vector added to every POSITION; directions
 are not translated).  The references are always computed from the final floats.
+Library shapes of both layouts: shapes.make_shape.
 """
 
 import math
@@ -20,66 +21,77 @@ import numpy as np
 # ----------------------------------------------------------------------------
 # hard scenes in the local frame (C = 0, N = +z, R = 1)
 # ----------------------------------------------------------------------------
+# Scenes both the accuracy tests (below) and the benchmark's cases (accuracy.py) run: lines and
+# rays (origin, direction), segments (p0, p1), points.
+SHARED_LINES = {
+    "tangent in plane": ((1, 0, 0), (0, 1, 0)),
+    "tangent lifted 1e-3": ((1, 0, 1e-3), (0, 1, 0)),
+    "tangent lifted 1e-6": ((1, 0, 1e-6), (0, 1, 0)),
+    "tangent lifted 1e-9": ((1, 0, 1e-9), (0, 1, 0)),
+    "on the axis": ((0, 0, 0.5), (0, 0, 1)),
+    "axis offset 1e-8": ((1e-8, 0, 0.5), (0, 0, 1)),
+    "axis offset 1e-12": ((1e-12, 0, 0.5), (0, 0, 1)),
+    "near-parallel 1e-9 at 1e-3": ((0, 0.5, 1e-3), (1, 0, math.tan(1e-9))),
+    "near-parallel 1e-9 tangent at 1e-6": ((0, 1, 1e-6), (1, 0, math.tan(1e-9))),
+    "crosses the plane on the rim": ((1, 0, 0), (0.375, 0.5, 0.75)),
+    "in plane through the center": ((0, 0, 0), (1, 0.3, 0)),
+    "parallel over the interior": ((0, 0.5, 0.25), (1, 0, 0)),
+    "generic": ((2.5, -1, 1.25), (0.3, 0.8, -0.5)),
+}
+SHARED_RAYS = {
+    "starts over the interior, up": ((0.25, 0.125, 0.5), (0.1, 0.2, 1)),
+    "starts over the interior, down": ((0.25, 0.125, 0.5), (0.1, 0.2, -1)),
+    "starts on the rim, outward": ((1, 0, 0), (1, 0, 0.5)),
+    "starts on the rim, up": ((1, 0, 0), (0, 0, 1)),
+}
+SHARED_SEGMENTS = {
+    "zero length on the axis": ((0, 0, 0.75), (0, 0, 0.75)),
+    "zero length on the rim": ((1, 0, 0), (1, 0, 0)),
+    "in plane inside": ((-0.25, 0.125, 0), (0.5, -0.25, 0)),
+    "parallel over the interior, partly": ((0.5, 0, 0.25), (1.5, 0.25, 0.25)),
+    "ends on the rim": ((1, 0, 0), (1.5, 0.25, 0.75)),
+}
+SHARED_POINTS = {
+    "on the axis": (0, 0, 0.75), "center": (0, 0, 0), "on the rim": (1, 0, 0),
+    "near the axis 1e-12": (1e-12, 0, 0.5), "in plane inside": (0.5, 0.25, 0),
+    "over the interior": (0.25, 0.5, 0.5), "generic": (1.5, -0.5, 0.75), "far": (30, 20, -10),
+}
+
+# The tests' own, on top of the shared ones.
 LINE_SCENES = {
-    "tangent_in_plane": ((1, 0, 0), (0, 1, 0)),
-    "parallel_tangent_h1e-3": ((1, 0, 1e-3), (0, 1, 0)),
-    "parallel_tangent_h1e-6": ((1, 0, 1e-6), (0, 1, 0)),
-    "parallel_tangent_h1e-9": ((1, 0, 1e-9), (0, 1, 0)),
-    "along_axis": ((0, 0, 0.5), (0, 0, 1)),
-    "parallel_axis_off1e-8": ((1e-8, 0, 0.5), (0, 0, 1)),
-    "parallel_axis_off1e-12": ((1e-12, 0, 0.5), (0, 0, 1)),
-    "center_tilt1e-8": ((0, 0, 0), (math.sin(1e-8), 0, math.cos(1e-8))),
-    "center_tilt1e-12": ((0, 0, 0), (math.sin(1e-12), 0, math.cos(1e-12))),
-    "in_plane_through_center": ((0, 0, 0), (1, 0.3, 0)),
-    "near_parallel_1e-9_h1e-9": ((0, 0.5, 1e-9), (1, 0, math.tan(1e-9))),
-    "near_parallel_1e-9_h1e-3": ((0, 0.5, 1e-3), (1, 0, math.tan(1e-9))),
-    "near_parallel_1e-9_h0.5": ((0, 0.5, 0.5), (1, 0, math.tan(1e-9))),
-    "near_parallel_1e-9_tangent_h1e-6": ((0, 1, 1e-6), (1, 0, math.tan(1e-9))),
+    **SHARED_LINES,
+    "through the center, tilted 1e-8": ((0, 0, 0), (math.sin(1e-8), 0, math.cos(1e-8))),
+    "through the center, tilted 1e-12": ((0, 0, 0), (math.sin(1e-12), 0, math.cos(1e-12))),
+    "near-parallel 1e-9 at 1e-9": ((0, 0.5, 1e-9), (1, 0, math.tan(1e-9))),
+    "near-parallel 1e-9 at 0.5": ((0, 0.5, 0.5), (1, 0, math.tan(1e-9))),
     # A tilt whose squares underflow: b1 ~ 1e-251 must not be squared into the subnormals.
-    "near_parallel_1e-250_h0.25": ((0, 0.5, 0.25), (1, 0, 1e-250)),
-    "crosses_rim": ((1, 0, 0), (0.375, 0.5, 0.75)),
-    "parallel_over_interior_h0.25": ((0, 0.5, 0.25), (1, 0, 0)),
-    "generic_far": ((2.5, -1, 1.25), (0.3, 0.8, -0.5)),
-    "in_plane_outside": ((0, 2, 0), (1, 0.2, 0)),
+    "near-parallel 1e-250 at 0.25": ((0, 0.5, 0.25), (1, 0, 1e-250)),
+    "in plane outside": ((0, 2, 0), (1, 0.2, 0)),
 }
 
 RAY_SCENES = {
-    "starts_above_interior_away": ((0.25, 0.125, 0.5), (0.1, 0.2, 1)),
-    "starts_above_interior_toward": ((0.25, 0.125, 0.5), (0.1, 0.2, -1)),
-    "starts_on_rim_outward": ((1, 0, 0), (1, 0, 0.5)),
-    "starts_on_rim_up": ((1, 0, 0), (0, 0, 1)),
-    "parallel_over_interior_from_center": ((0, 0, 0.3), (1, 0.2, 0)),
-    "axis_up": ((0, 0, 0.4), (0, 0, 1)),
-    "tangent_in_plane_start_before": ((1, -1, 0), (0, 1, 0)),
-    "tangent_in_plane_start_after": ((1, 0.5, 0), (0, 1, 0)),
+    **SHARED_RAYS,
+    "parallel over the interior, from the axis": ((0, 0, 0.3), (1, 0.2, 0)),
+    "up the axis": ((0, 0, 0.4), (0, 0, 1)),
+    "tangent in plane, starts before": ((1, -1, 0), (0, 1, 0)),
+    "tangent in plane, starts after": ((1, 0.5, 0), (0, 1, 0)),
 }
 
 SEGMENT_SCENES = {
-    "crosses_disk_at_rim": ((0.75, -0.25, -0.5), (1.25, 0.25, 0.5)),
-    "ends_on_rim": ((1, 0, 0), (1.5, 0.25, 0.75)),
-    "ends_on_rim_in_plane_inward": ((1, 0, 0), (0.5, 0.25, 0)),
-    "above_parallel_inside": ((-0.25, 0.125, 0.25), (0.5, -0.25, 0.25)),
-    "above_parallel_partial": ((0.5, 0, 0.25), (1.5, 0.25, 0.25)),
-    "in_plane_inside": ((-0.25, 0.125, 0), (0.5, -0.25, 0)),
-    "zero_length_generic": ((0.5, 0.25, 0.75), (0.5, 0.25, 0.75)),
-    "zero_length_on_axis": ((0, 0, 0.75), (0, 0, 0.75)),
-    "zero_length_on_rim": ((1, 0, 0), (1, 0, 0)),
-    "generic_crossing": ((0.2, 0.1, -0.5), (-0.1, 0.3, 0.6)),
-    "near_parallel_1e-9": ((-2, 0.5, 1e-9), (2, 0.5, 1e-9 + 4 * math.tan(1e-9))),
-    "along_axis_through_center": ((0, 0, -0.5), (0, 0, 0.75)),
+    **SHARED_SEGMENTS,
+    "crosses the disk at the rim": ((0.75, -0.25, -0.5), (1.25, 0.25, 0.5)),
+    "ends on the rim, in plane, inward": ((1, 0, 0), (0.5, 0.25, 0)),
+    "parallel over the interior, inside": ((-0.25, 0.125, 0.25), (0.5, -0.25, 0.25)),
+    "zero length": ((0.5, 0.25, 0.75), (0.5, 0.25, 0.75)),
+    "crosses the plane": ((0.2, 0.1, -0.5), (-0.1, 0.3, 0.6)),
+    "near-parallel 1e-9": ((-2, 0.5, 1e-9), (2, 0.5, 1e-9 + 4 * math.tan(1e-9))),
+    "along the axis through the center": ((0, 0, -0.5), (0, 0, 0.75)),
 }
 
 POINT_SCENES = {
-    "on_axis": (0, 0, 0.75),
-    "at_center": (0, 0, 0),
-    "on_rim": (1, 0, 0),
-    "near_axis_1e-12": (1e-12, 0, 0.5),
-    "in_plane_inside": (0.5, 0.25, 0),
-    "in_plane_outside": (2, 0.5, 0),
-    "above_interior": (0.25, 0.5, 0.5),
-    "above_rim": (1, 0, 0.5),
-    "generic": (1.5, -0.5, 0.75),
-    "far": (30, 20, -10),
+    **SHARED_POINTS,
+    "in plane outside": (2, 0.5, 0),
+    "over the rim": (1, 0, 0.5),
 }
 
 
@@ -87,7 +99,7 @@ def _ray_scenes():
     out = {k: v for k, v in RAY_SCENES.items()}
     for name, (o, d) in LINE_SCENES.items():
         o, d = np.array(o, float), np.array(d, float)
-        out["from_line_" + name] = (tuple(o - 2 * d), tuple(d))
+        out["through: " + name] = (tuple(o - 2 * d), tuple(d))
     return out
 
 
@@ -95,7 +107,7 @@ def _segment_scenes():
     out = {k: v for k, v in SEGMENT_SCENES.items()}
     for name, (o, d) in LINE_SCENES.items():
         o, d = np.array(o, float), np.array(d, float)
-        out["from_line_" + name] = (tuple(o - 2 * d), tuple(o + 2 * d))
+        out["over: " + name] = (tuple(o - 2 * d), tuple(o + 2 * d))
     return out
 
 
@@ -112,15 +124,15 @@ def local_scenes(lin_kind):
 
 # scenes re-used with extreme radii
 RADIUS_SCENES = {
-    "point": ["on_axis", "above_interior", "generic", "on_rim"],
-    "line": ["tangent_in_plane", "parallel_tangent_h1e-6", "along_axis", "crosses_rim",
-             "generic_far", "parallel_over_interior_h0.25"],
+    "point": ["on the axis", "over the interior", "generic", "on the rim"],
+    "line": ["tangent in plane", "tangent lifted 1e-6", "on the axis", "crosses the plane on the rim",
+             "generic", "parallel over the interior"],
     # On the axis with a tiny radius and tilted: the rounded line passes ~1e-17 from the center,
     # an offset that must survive (the anchor is computed before rotating into the frame).
-    "ray": ["starts_above_interior_away", "starts_on_rim_outward", "from_line_tangent_in_plane",
-            "axis_up", "from_line_along_axis"],
-    "segment": ["ends_on_rim", "above_parallel_partial", "zero_length_generic",
-                "crosses_disk_at_rim", "along_axis_through_center", "from_line_along_axis"],
+    "ray": ["starts over the interior, up", "starts on the rim, outward", "through: tangent in plane",
+            "up the axis", "through: on the axis"],
+    "segment": ["ends on the rim", "parallel over the interior, partly", "zero length",
+                "crosses the disk at the rim", "along the axis through the center", "over: on the axis"],
 }
 RADIUS_VARIANTS = {
     # name: (scene scale s, radius)
@@ -235,24 +247,4 @@ def all_cases():
         out.extend(random_cases(lk, rk))
         out.extend(hard_cases(lk, rk))
     return out
-
-
-# ----------------------------------------------------------------------------
-# library shape construction
-# ----------------------------------------------------------------------------
-def make_lin(cd, kind, data):
-    data = np.asarray(data, float)
-    if kind == "point":
-        return data[:3].copy()
-    if kind == "line":
-        return cd.Line(data[:3], data[3:6])
-    if kind == "ray":
-        return cd.Ray(data[:3], data[3:6])
-    return cd.Segment(data[:3], data[3:6])
-
-
-def make_round(cd, kind, data):
-    data = np.asarray(data, float)
-    ctor = cd.Circle if kind == "circle" else cd.Disk
-    return ctor(data[:3], data[3:6], float(data[6]))
 

@@ -1,7 +1,7 @@
 """Differential accuracy testing of circledist (issue 14, "keep it closed"): a library module.
 
 Nothing here is a test; tests/test_differential.py (the CI slice) and tools/differential.py (the
-long mode) drive it.  Three parts:
+long mode, ``python -m tools.differential``) drive it.  Three parts:
 
 1. Case families.  ``generate(family, n, seed)`` returns ``n`` JSON-able cases
    ``{"family", "id", "a", "a_data", "b", "b_data"}`` (kind names and plain floats; a Bezier's
@@ -45,7 +45,7 @@ long mode) drive it.  Three parts:
    The bound an answer is held against is the screen's, or lower: the separation (plus the
    measured distances off their shapes) of any combination's closest points, a genuine pair too.
    ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
-   tests/reference.py and tests/reference_round.py (and evaluates the screen's own best pair
+   circledist_cases/reference.py and reference_round.py (and evaluates the screen's own best pair
    at 50 digits, so a reference that missed the minimum is caught, not trusted).
 
 Bars: |d - d_true| <= bar * max(d_true, largest radius in the query), bar 1e-12 in float64,
@@ -59,14 +59,10 @@ reported distance within the bar plus those ulps.
 from __future__ import annotations
 
 import collections
-import importlib.util
+import importlib
 import math
-import os
-import sys
 
 import numpy as np
-
-HERE = os.path.dirname(os.path.abspath(__file__))
 
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
 PRECISIONS = ("float64", "longdouble", "float32")
@@ -99,14 +95,9 @@ def answers_per_case(n_combos, within=True):
 
 
 def _load(name):
-    """A helper module next to this file (reference.py, reference_round.py), loaded by path."""
-    if name in sys.modules:
-        return sys.modules[name]
-    spec = importlib.util.spec_from_file_location(name, os.path.join(HERE, name + ".py"))
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[name] = mod
-    spec.loader.exec_module(mod)
-    return mod
+    """A reference module of this package (reference, reference_round), imported on first use:
+    mpmath is needed only to confirm findings."""
+    return importlib.import_module(f"{__package__}.{name}")
 
 
 # =============================================================================================

@@ -1,0 +1,64 @@
+"""Random shapes of every kind, built from the module's table of fields (_core._shape_fields), so
+that a new kind or field is drawn without a change here."""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def random_fields(cd, kind: str, rng, batch=(), dtype=np.float64, sweep: bool = False) -> dict:
+    """{field: array} for a batch of random shapes of `kind` (batch shape `batch`, values of
+    `dtype`), drawn field by field in the table's order: vectors and directions standard normal,
+    lengths (radii) uniform in [0.2, 2), control points four standard normal points (a cubic);
+    with `sweep`, a sweep uniform in [0, 0.3) drawn last."""
+    batch = tuple(batch)
+    out = {}
+    for name, role in cd._core._shape_fields()[kind]:
+        if role in ("vector", "direction"):
+            value = rng.normal(size=batch + (3,))
+        elif role == "length":
+            value = rng.uniform(0.2, 2.0, batch)
+        elif role == "control_points":
+            value = rng.normal(size=batch + (4, 3))
+        else:
+            raise ValueError(f"no random values for role {role!r} of {kind}.{name}")
+        out[name] = np.asarray(value).astype(dtype)
+    if sweep:
+        out[cd._core._sweep_field()[0]] = random_sweep(rng, batch, dtype)
+    return out
+
+
+def random_sweep(rng, batch=(), dtype=np.float64):
+    """Sweep radii uniform in [0, 0.3) of batch shape `batch`."""
+    return np.asarray(rng.uniform(0.0, 0.3, tuple(batch))).astype(dtype)
+
+
+def query_pairs(cd) -> list:
+    """The (kind, kind) pairs that have a query, each once (sorted, the first kind <= the second)."""
+    kinds = {tuple(p) for p in cd._core._query_kinds()}
+    return sorted(p for p in kinds if p[0] <= p[1])
+
+
+def same_bits(x, y) -> None:
+    """Asserts that two answers are the same to the bit: dtype, shape and values (NaN where NaN)."""
+    x, y = np.asarray(x), np.asarray(y)
+    assert x.dtype == y.dtype and x.shape == y.shape
+    assert np.array_equal(x, y, equal_nan=True)
+
+
+def make_shape(cd, kind: str, values):
+    """The library shape of a flat value layout (accuracy.py's, and bench/accuracy_vs_time.cpp's):
+    point (x, y, z), given as a plain array (the library makes it a Point); line, ray (origin,
+    direction); segment (p0, p1); circle, disk (center, normal, radius); bezier (k, then k
+    control points)."""
+    v = np.asarray(values, dtype=float)
+    if kind == "point":
+        return v[:3].copy()
+    if kind in ("line", "ray", "segment"):
+        return getattr(cd, kind.capitalize())(v[:3], v[3:6])
+    if kind in ("circle", "disk"):
+        return getattr(cd, kind.capitalize())(v[:3], v[3:6], float(v[6]))
+    if kind == "bezier":
+        k = int(v[0])
+        return cd.Bezier(v[1:1 + 3 * k].reshape(k, 3))
+    raise ValueError(kind)

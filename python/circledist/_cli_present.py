@@ -1,0 +1,223 @@
+"""The command line's last step: the answers as a text table or JSON, and the scene drawn in 3D
+(matplotlib) with a segment between each pair of closest points."""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+
+import numpy as np
+
+from ._cli_load import Query
+from .scenefile import _SWEEP, KINDS, SceneFile, _write_atomically
+
+PICTURE_LIMIT = 2000  # shapes --plot draws at most
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.6g}"
+
+
+def _point(p) -> str:
+    return "(" + ", ".join(_fmt(v) for v in p) + ")"
+
+
+def table(scene: SceneFile, queries: list[Query]) -> str:
+    rows = [("query", "effect", "answer")]
+    for q in queries:
+        for e in q.effects:
+            v = q.answers[e]
+            if e == "intersects" and q.b is not None:
+                text = "yes" if v else "no"
+            elif e == "within" and q.b is not None:
+                effect, text = f"within {_fmt(q.d)}", "yes" if v else "no"
+            elif e == "distance":
+                text = _fmt(v)
+            elif e == "closest_points":
+                text = (f"{_fmt(v['distance'])} between {_point(v['point_a'])} and {_point(v['point_b'])}"
+                        + ("" if v["unique"] else " (not unique)"))
+            elif e == "nearest":
+                text = ", ".join(f"{x['name']} {_fmt(x['distance'])}" for x in v) or "-"
+            elif e == "pairs_within":
+                text = ", ".join(f"{a}-{b}" for a, b in v) or "none"
+            else:  # within / intersects against the scene: names
+                text = ", ".join(v) or "none"
+            effect = {"within": f"within {_fmt(q.d) if q.d is not None else ''}",
+                      "nearest": f"nearest k={q.k}",
+                      "pairs_within": f"pairs within {_fmt(q.d) if q.d is not None else ''}"}.get(e, e)
+            rows.append((q.label, effect, text))
+    widths = [max(len(r[i]) for r in rows) for i in range(2)]
+    lines = []
+    if scene.description:
+        lines.append(scene.description)
+    for i, r in enumerate(rows):
+        lines.append(f"{r[0]:<{widths[0]}}  {r[1]:<{widths[1]}}  {r[2]}")
+        if i == 0:
+            lines.append(f"{'-' * widths[0]}  {'-' * widths[1]}  {'-' * 6}")
+    return "\n".join(lines) + "\n"
+
+
+def as_json(scene: SceneFile, queries: list[Query]) -> str:
+    out = {"scene": scene.path, "answers": []}
+    for q in queries:
+        item = {"query": q.label}
+        if q.a is not None:
+            item["a"] = q.a
+        if q.b is not None:
+            item["b"] = q.b
+        if q.d is not None:
+            item["d"] = q.d
+        if "nearest" in q.effects:
+            item["k"] = q.k
+        item.update(q.answers)
+        out["answers"].append(item)
+    return json.dumps(out, indent=2) + "\n"
+
+
+def write_output(path: str, data: bytes) -> None:
+    """Writes a whole output file or nothing (a temporary file renamed into place)."""
+    _write_atomically(path, lambda f: f.write(data))
+
+
+# ------------------------------------------------------------------------------------------
+# the picture
+# ------------------------------------------------------------------------------------------
+def _frame(normal):
+    n = np.asarray(normal, float)
+    n = n / np.linalg.norm(n)
+    helper = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
+    u = np.cross(n, helper)
+    u /= np.linalg.norm(u)
+    return u, np.cross(n, u)
+
+
+def _ring(center, normal, radius, count=120):
+    u, v = _frame(normal)
+    t = np.linspace(0, 2 * np.pi, count)
+    return np.asarray(center, float) + radius * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+
+
+def _bezier(points, count=100):
+    p = np.asarray(points, float)
+    t = np.linspace(0, 1, count)[:, None, None]
+    q = np.broadcast_to(p, (count,) + p.shape).copy()
+    for k in range(len(p) - 1, 0, -1):
+        q = (1 - t) * q[:, :k] + t * q[:, 1:k + 1]
+    return q[:, 0]
+
+
+def _clip(origin, direction, lo, hi, ray: bool):
+    """The part of a line (or ray) inside the box [lo, hi], or None."""
+    o, d = np.asarray(origin, float), np.asarray(direction, float)
+    t0, t1 = (0.0 if ray else -np.inf), np.inf
+    for i in range(3):
+        if d[i] == 0:
+            if not lo[i] <= o[i] <= hi[i]:
+                return None
+            continue
+        a, b = (lo[i] - o[i]) / d[i], (hi[i] - o[i]) / d[i]
+        t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
+    if t0 > t1:
+        return None
+    return np.array([o + t0 * d, o + t1 * d])
+
+
+def _specs(scene: SceneFile) -> dict:
+    """name -> (kind, the kind's field values in the table's order, sweep) of every shape (batches
+    element by element). Drawing knows each kind's geometry, not its field names."""
+    out = {}
+    for e in scene.entries:
+        names = list(KINDS[e.kind][1])
+        for i, name in enumerate(e.element_names()):
+            values = [np.asarray(e.fields[f] if e.count is None else e.fields[f][i], float) for f in names + [_SWEEP]]
+            out[name] = (e.kind, values[:-1], float(values[-1]))
+    return out
+
+
+def _outline(kind: str, values) -> list:
+    """Points the view must hold: every bounded shape's, the origins of lines and rays."""
+    if kind in ("point", "line", "ray"):
+        return [values[0]]
+    if kind == "segment":
+        return list(values)
+    if kind in ("circle", "disk"):
+        return list(_ring(*values, 16))
+    return list(values[0])  # bezier: its control points
+
+
+def picture(scene: SceneFile, queries: list[Query]) -> bytes:
+    """The scene drawn in 3D (PNG bytes): shapes, and a segment between each pair of closest points."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    specs = _specs(scene)
+    # The view: every bounded shape and every closest point, plus the lines' origins.
+    pts = []
+    for kind, values, _ in specs.values():
+        pts += _outline(kind, values)
+    for q in queries:
+        if "closest_points" in q.answers:
+            pts += [q.answers["closest_points"]["point_a"], q.answers["closest_points"]["point_b"]]
+    pts = np.asarray(pts, float)
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9) * 1.15
+    lo, hi = mid - half, mid + half
+
+    fig = plt.figure(figsize=(8, 7), dpi=110)
+    ax = fig.add_subplot(projection="3d")
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for i, (name, (k, values, sweep)) in enumerate(specs.items()):
+        c = colors[i % len(colors)]
+        width = 1.6 + (4.0 if sweep > 0 else 0.0)
+        label = name + (f" (sweep {sweep:g})" if sweep > 0 else "")
+        alpha = 0.55 if sweep > 0 else 1.0
+        if k == "point":
+            ax.scatter(*values[0], color=c, s=30 + (120 if sweep else 0), label=label)
+            anchor = values[0]
+        elif k in ("line", "ray"):
+            seg = _clip(*values, lo, hi, k == "ray")
+            if seg is None:
+                continue
+            ax.plot(*seg.T, color=c, lw=width, alpha=alpha, label=label)
+            anchor = seg.mean(axis=0)
+        elif k == "segment":
+            seg = np.array(values, float)
+            ax.plot(*seg.T, color=c, lw=width, alpha=alpha, solid_capstyle="round", label=label)
+            anchor = seg.mean(axis=0)
+        elif k in ("circle", "disk"):
+            ring = _ring(*values)
+            if k == "disk":
+                ax.add_collection3d(Poly3DCollection([ring], facecolor=c, alpha=0.35, edgecolor="none"))
+            ax.plot(*ring.T, color=c, lw=width, alpha=alpha, label=label)
+            anchor = ring[0]
+        else:
+            curve = _bezier(values[0])
+            ax.plot(*curve.T, color=c, lw=width, alpha=alpha, label=label)
+            anchor = curve[len(curve) // 2]
+        ax.text(*anchor, f" {name}", color=c, fontsize=9)
+    for q in queries:
+        r = q.answers.get("closest_points")
+        if r is None:
+            continue
+        seg = np.array([r["point_a"], r["point_b"]])
+        ax.plot(*seg.T, color="crimson", lw=1.4, ls="--")
+        ax.scatter(*seg.T, color="crimson", s=14)
+        ax.text(*seg.mean(axis=0), f" {r['distance']:.3g}", color="crimson", fontsize=8)
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_zlim(lo[2], hi[2])
+    ax.set_box_aspect((1, 1, 1))
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z")
+    title = scene.description or os.path.basename(scene.path)
+    ax.set_title(title + "\n(dashed: closest points)", fontsize=10)
+    ax.legend(loc="upper left", fontsize=8)
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", bbox_inches="tight")
+    plt.close(fig)
+    return buf.getvalue()
