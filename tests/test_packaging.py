@@ -1,6 +1,6 @@
-"""What ships: the sdist holds the sources that build, test and document the package and nothing
-else (no build outputs, benchmarks, shared test cases, run reports or pictures); the installed
-package holds no binding sources."""
+"""What ships: the sdist holds the sources that build, test and document the package (the tests'
+shared cases included) and nothing else (no build outputs, benchmarks, run reports or pictures);
+the installed package holds no binding sources and no test cases."""
 
 import os
 import tarfile
@@ -31,13 +31,14 @@ def test_sdist_holds_the_sources(sdist_names):
     for needed in ("pyproject.toml", "CMakeLists.txt", "LICENSE", "README.md", "src/_core.cpp",
                    "src/pair_unit.cpp", "cpp/include/circledist/circledist.hpp",
                    "cpp/cmake/circledistConfig.cmake", "python/circledist/__init__.py",
-                   "tests/conftest.py", "docs/circle_disk.md"):
+                   "tests/conftest.py", "circledist_cases/__init__.py", "circledist_cases/scenes.py",
+                   "docs/circle_disk.md"):
         assert needed in sdist_names, needed
 
 
 def test_sdist_holds_nothing_else(sdist_names):
     unwanted = [n for n in sdist_names
-                if n.startswith((".ci/", "bench/", "circledist_cases/", "build/", ".venv/", "dist/"))
+                if n.startswith((".ci/", "bench/", "build/", ".venv/", "dist/"))
                 or n.endswith((".so", ".o", ".pyc", ".png", ".json")) and not n.startswith("python/")]
     assert not unwanted, unwanted[:10]
 
