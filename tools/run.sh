@@ -47,41 +47,8 @@ pip_install() { "$py" -m pip install -q --disable-pip-version-check "$@"; }
 # cmeel-eigen too: the Eigen CMake takes where the system has none), the package's dependencies
 # and the task's extras; then the tools this script runs itself (after --). Prints the ones not
 # installed yet, or installed in a version that does not satisfy pyproject.toml.
-missing_requirements() {  # missing_requirements EXTRA... -- TOOL...
-  "$py" - "$@" <<'PY'
-import sys
-from importlib import metadata
-
-try:
-    import tomllib
-except ImportError:  # Python < 3.11: pip's own copy
-    from pip._vendor import tomli as tomllib
-try:
-    from packaging.requirements import Requirement
-except ImportError:
-    from pip._vendor.packaging.requirements import Requirement
-
-args = sys.argv[1:]
-cut = args.index("--") if "--" in args else len(args)
-with open("pyproject.toml", "rb") as f:
-    pyproject = tomllib.load(f)
-wanted = pyproject["build-system"]["requires"] + pyproject["project"]["dependencies"]
-for extra in args[:cut]:
-    wanted += pyproject["project"]["optional-dependencies"][extra]
-missing = []
-for text in wanted + args[cut + 1:]:
-    req = Requirement(text)
-    if req.marker is not None and not req.marker.evaluate({"extra": ""}):
-        continue
-    try:
-        ok = req.specifier.contains(metadata.version(req.name), prereleases=True)
-    except metadata.PackageNotFoundError:
-        ok = False
-    spec = req.name + ("[" + ",".join(sorted(req.extras)) + "]" if req.extras else "") + str(req.specifier)
-    if not ok and spec not in missing:
-        missing.append(spec)
-print(" ".join(missing))
-PY
+missing_requirements() {  # missing_requirements EXTRA... -- TOOL... (tools/pyproject.py)
+  "$py" tools/pyproject.py missing "$@"
 }
 case "$task" in
   demo) extras=(plot) ;;
@@ -111,17 +78,7 @@ wheel_alone() {
   rm -rf "$venv"
   "$python" -m venv "$venv" || return 1
   "$venv/bin/python" -m pip install -q --disable-pip-version-check "$wheel[test]" || return 1
-  test_files=$("$py" - <<'PY'
-try:
-    import tomllib
-except ImportError:  # Python < 3.11: pip's own copy
-    from pip._vendor import tomli as tomllib
-import re
-with open("pyproject.toml", "rb") as f:
-    command = tomllib.load(f)["tool"]["cibuildwheel"]["test-command"]
-print(" ".join(re.findall(r"tests/\w+\.py", command)))
-PY
-  ) || return 1
+  test_files=$("$py" tools/pyproject.py wheel-tests) || return 1
   (cd "$venv" && env -i HOME="$HOME" PATH="$PWD/bin" CIRCLEDIST_WHEEL_ALONE=1 bin/python -m pytest -q \
     -p no:cacheprovider -c "$OLDPWD/pyproject.toml" --rootdir "$OLDPWD" \
     $(for t in $test_files tests/test_packaging.py; do echo "$OLDPWD/$t"; done))
