@@ -9,7 +9,7 @@
 // polished) on the exact point-round distance, never on the polynomial.
 #pragma once
 
-#include "circle_circle.hpp"
+#include "detail/circle_over_round.hpp"
 #include "detail/double_double.hpp"
 
 #include <array>

@@ -3,12 +3,12 @@
 // angle range is cut where the projection crosses the rim (§4.1). Inside the rim the distance is
 // the height |z(t)|, minimal where z = 0 or z' = 0 (§4.2); outside it is the distance to the rim
 // circle, stationary at the roots of the octic of §4.3, which is the circle-circle equation
-// (circle_circle.hpp). All equations are taken through the half-angle substitution
+// (detail/local_circle.hpp). All equations are taken through the half-angle substitution
 // u = tan(t/2) (one root <-> one angle, no extraneous sign of sin t, no acos near +-1); the
 // cut points, t = 0 and t = pi join the candidates and the exact point-disk distance judges.
 #pragma once
 
-#include "circle_circle.hpp"
+#include "detail/circle_over_round.hpp"
 
 namespace circledist {
 

@@ -39,7 +39,7 @@ namespace circledist {
 enum class Polish { Newton, Bracketed };
 
 // Whether a policy returns every root to rounding (Roots::accurate_roots = true), so that a
-// candidate's start value tells how low it can lead (screening_margin, circle_circle.hpp).
+// candidate's start value tells how low it can lead (screening_margin, detail/angle_polish.hpp).
 // Policies that do not say are taken as not accurate.
 template <class Roots, class = void> struct has_accurate_roots : std::false_type {};
 template <class Roots>
