@@ -24,9 +24,9 @@
 // about 2 ms; samples are repeated for --min-time seconds (at least 5) and the median (and the
 // smallest) time per query is reported. Single-threaded: one core.
 //
-// Built as one translation unit (the CMake target), or split to compile in parallel: with
-// -DCDB_PART=0, 1, 2 a unit holds the float, double, long double runners, with -DCDB_PART=3 the
-// driver (accuracy_vs_time.py does that when it compiles the program itself).
+// Built as one translation unit, or split to compile in parallel (the CMake target does, in
+// bench/CMakeLists.txt): with -DCDB_PART=0, 1, 2 a unit holds the float, double, long double
+// runners, with -DCDB_PART=3 the driver.
 #include <circledist/primitives.hpp>
 #include <circledist/query.hpp>
 #include <circledist/roots.hpp>

@@ -17,8 +17,8 @@
    references of its own float-rounded inputs; the long double run's inputs are the doubles
    extended exactly, so it shares the double references. References are cached in
    build/accuracy_vs_time/references.json (keyed by the reference modules' contents).
-3. Runs bench/accuracy_vs_time.cpp (the CMake target `accuracy_vs_time` when built and up to
-   date, else compiled here into build/accuracy_vs_time/), which computes every distance in
+3. Runs bench/accuracy_vs_time.cpp (the CMake target `accuracy_vs_time` in build/cpp, which
+   this script has CMake configure and build when it is missing or stale), which computes every distance in
    float, double and long double with the three root policies, and times them.
 4. Prints one table per kind x policy x precision (ns/query, max and median relative error on
    the random and on the hard cases), writes docs/accuracy_vs_time.md with the recommended
@@ -130,7 +130,7 @@ def compute_references(jobs_list, jobs, log=print):
 # ------------------------------------------------------------------------------------------------
 def _sources():
     src = ROOT / "bench" / "accuracy_vs_time.cpp"
-    headers = sorted((ROOT / "cpp" / "include" / "circledist").glob("*.hpp"))
+    headers = sorted((ROOT / "cpp" / "include" / "circledist").rglob("*.hpp"))
     return src, headers
 
 
@@ -139,53 +139,23 @@ def _newest_source_time():
     return max(p.stat().st_mtime for p in [src] + headers)
 
 
-def _eigen_flags():
-    try:
-        out = subprocess.run(["pkg-config", "--cflags", "eigen3"], capture_output=True, text=True, check=True)
-        flags = out.stdout.split()
-        if flags:
-            return flags
-    except (OSError, subprocess.CalledProcessError):
-        pass
-    return ["-I/usr/include/eigen3"]
-
-
 def ensure_binary(explicit=None, jobs=2, log=print):
-    """The benchmark program: --binary, else the CMake target if up to date, else compiled here."""
+    """The benchmark program: --binary, else the CMake target bench/accuracy_vs_time in build/cpp,
+    configured and built first when it is missing or older than its sources (the one build
+    system: the project's CMake, with the flags of bench/CMakeLists.txt)."""
     if explicit:
         return Path(explicit)
-    newest = _newest_source_time()
-    cmake_bin = ROOT / "build" / "cpp" / "bench" / "accuracy_vs_time"
-    if cmake_bin.exists() and cmake_bin.stat().st_mtime >= newest:
-        return cmake_bin
-    own = BUILD / "accuracy_vs_time"
-    if own.exists() and own.stat().st_mtime >= newest:
-        return own
-    BUILD.mkdir(parents=True, exist_ok=True)
-    cxx = os.environ.get("CXX", "g++")
-    src, _ = _sources()
-    flags = ["-std=c++17", "-O3", "-DNDEBUG", f"-I{ROOT / 'cpp' / 'include'}"] + _eigen_flags()
-    log(f"== compiling {src.relative_to(ROOT)} ({cxx} -O3, 4 parts, {jobs} at a time)")
+    build = ROOT / "build" / "cpp"
+    binary = build / "bench" / "accuracy_vs_time"
+    if binary.exists() and binary.stat().st_mtime >= _newest_source_time():
+        return binary
+    log(f"== building {binary.relative_to(ROOT)} with CMake ({jobs} jobs)")
     t0 = time.time()
-    # One translation unit per precision plus the driver (CDB_PART), compiled in parallel.
-    objects, pending = [], []
-    for part in range(4):
-        obj = BUILD / f"accuracy_vs_time.part{part}.o"
-        objects.append(obj)
-        cmd = [cxx] + flags + [f"-DCDB_PART={part}", "-c", str(src), "-o", str(obj)]
-        pending.append(cmd)
-    running = []
-    while pending or running:
-        while pending and len(running) < max(1, jobs):
-            running.append(subprocess.Popen(pending.pop(0)))
-        proc = running.pop(0)
-        if proc.wait() != 0:
-            raise SystemExit("accuracy_vs_time: compilation failed")
-    tmp = BUILD / "accuracy_vs_time.tmp"
-    subprocess.run([cxx] + [str(o) for o in objects] + ["-o", str(tmp)], check=True)
-    tmp.replace(own)
-    log(f"   compiled in {time.time() - t0:.0f} s")
-    return own
+    subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
+                    "-DCIRCLEDIST_BUILD_TESTS=ON", "-DCIRCLEDIST_BUILD_BENCH=ON"], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["cmake", "--build", str(build), "--target", "accuracy_vs_time", "-j", str(max(1, jobs))], check=True)
+    log(f"   built in {time.time() - t0:.0f} s")
+    return binary
 
 
 def run_binary(binary, cases, min_time, log=print):
