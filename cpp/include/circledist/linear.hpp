@@ -260,16 +260,9 @@ Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Re
   bool ambiguous = false;
   const Vec3<Real> pa = line.at(best.x);
   const Vec3<Real> pb = round_point(pa, ambiguous);
-  const Real tie = tie_tolerance(std::max(scale, best.value));
   const Real apart = distinct_points_tolerance(scale);
-  for (int i = 0; i < minima.count && !ambiguous; ++i) {
-    const Minimum<Real>& m = minima.item[i];
-    if (!(m.value <= best.value + tie)) continue;
-    bool unused = false;
-    const Vec3<Real> qa = line.at(m.x);
-    const Vec3<Real> qb = round_point(qa, unused);
-    if ((qa - pa).norm() > apart || (qb - pb).norm() > apart) ambiguous = true;
-  }
+  ambiguous = ambiguous ||
+              another_closest_pair(minima, scale, [&](Real x) { return line.at(x); }, round_point, pa, pb, apart, apart);
   // The point on the piece: an end point exactly when the minimum sits there; otherwise from the
   // world anchor (accurate relative to its distance from the center, where origin + t direction
   // would err by eps |origin - center| across the line).

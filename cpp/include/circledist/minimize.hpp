@@ -4,8 +4,10 @@
 // (multiple roots known only to eps^(1/4)) and degenerate polynomials accurate.
 #pragma once
 
+#include "primitives.hpp"
 #include "roots.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -213,6 +215,26 @@ template <class Real> Real tie_tolerance(Real scale) {
 // only located to about eps^(1/4) * scale, so anything finer would split one pair into two.
 template <class Real> Real distinct_points_tolerance(Real scale) {
   return std::max(Real(1e-3), Real(4) * std::pow(std::numeric_limits<Real>::epsilon(), Real(0.25))) * scale;
+}
+
+// Whether the polished minima hold a second closest pair: a minimum within the tie tolerance of the
+// best whose point on the parametrized shape (`at(x)`) lies farther than `apart_a` from the best
+// one's, `pa`, or whose closest point on the other shape (`other_point(q, ambiguous)`) lies
+// farther than `apart_b` from `pb`. Every query that polishes candidates reports `unique` by it.
+template <class Real, int N, class At, class OtherPoint>
+bool another_closest_pair(const Minima<Real, N>& minima, Real scale, const At& at, const OtherPoint& other_point,
+                          const Vec3<Real>& pa, const Vec3<Real>& pb, Real apart_a, Real apart_b) {
+  const Minimum<Real>& best = minima.best;
+  const Real tie = tie_tolerance(std::max(scale, best.value));
+  for (int i = 0; i < minima.count; ++i) {
+    const Minimum<Real>& m = minima.item[i];
+    if (!(m.value <= best.value + tie)) continue;
+    bool unused = false;
+    const Vec3<Real> qa = at(m.x);
+    const Vec3<Real> qb = other_point(qa, unused);
+    if ((qa - pa).norm() > apart_a || (qb - pb).norm() > apart_b) return true;
+  }
+  return false;
 }
 
 }  // namespace circledist

@@ -199,17 +199,9 @@ Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>
   bool ambiguous = false;
   const Vec3<Real> pa = c.at(best.x);
   const Vec3<Real> pb = round_point(pa, ambiguous);
-  const Real tie = tie_tolerance(std::max(scale, best.value));
-  const Real apart_a = distinct_points_tolerance(std::min(scale, c.radius));
-  const Real apart_b = distinct_points_tolerance(scale);
-  for (int i = 0; i < minima.count && !ambiguous; ++i) {
-    const Minimum<Real>& m = minima.item[i];
-    if (!(m.value <= best.value + tie)) continue;
-    bool unused = false;
-    const Vec3<Real> qa = c.at(m.x);
-    const Vec3<Real> qb = round_point(qa, unused);
-    if ((qa - pa).norm() > apart_a || (qb - pb).norm() > apart_b) ambiguous = true;
-  }
+  ambiguous = ambiguous || another_closest_pair(minima, scale, [&](Real x) { return c.at(x); }, round_point, pa, pb,
+                                                distinct_points_tolerance(std::min(scale, c.radius)),
+                                                distinct_points_tolerance(scale));
   r.distance = best.value;
   r.point_a = a.center + c.radius * (std::cos(best.x) * c.frame.u + std::sin(best.x) * c.frame.v);
   r.point_b = round.world(pb);
