@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <mutex>
 #include <system_error>
@@ -17,12 +18,19 @@
 
 namespace circledist::python {
 
-// Elements per chunk: enough chunks for the threads to share unevenly priced elements (a batch
-// mixes tangencies with easy cases), each large enough that taking it costs nothing beside it, and
-// small enough that the caller sees Ctrl-C soon (it checks between its chunks).
+// Elements per chunk at most: enough chunks for the threads to share unevenly priced elements (a
+// batch mixes tangencies with easy cases), each large enough that taking it costs nothing beside
+// it.
 inline Index chunk_size(Index size, int workers) {
   return std::clamp<Index>(size / (Index(workers) * 16), 256, 16384);
 }
+
+// And in time: the caller's first chunk is small (kFirstChunk elements) and timed, and the chunks
+// after it are sized to take about kChunkTime, so that the caller, which checks for Ctrl-C and
+// reports progress between its chunks, does so every few milliseconds however dear the elements
+// (16384 Bezier-disk queries took a fifth of a second, more on a busy machine).
+constexpr Index kFirstChunk = 64;
+constexpr std::chrono::microseconds kChunkTime{10000};
 
 // Runs work(begin, end) over disjoint chunks covering [0, size), on `workers` threads. Worker
 // threads adopt the caller's SelectedEigenPolicy choice, and their counters (stats()) are added to
@@ -31,9 +39,10 @@ inline Index chunk_size(Index size, int workers) {
 // true, no new chunk is started and run_in_chunks returns false once the running ones end.
 // An exception in any thread stops the others likewise and is rethrown here.
 template <class Work, class Interrupted> bool run_in_chunks(Index size, int workers, Work&& work, Interrupted&& interrupted) {
-  const Index chunk = chunk_size(size, workers);
-  const int threads = int(std::min<Index>(std::max(workers, 1), (size + chunk - 1) / chunk));
-  std::atomic<Index> next{0}, done{0};
+  const Index largest = chunk_size(size, workers);
+  const int threads = int(std::min<Index>(std::max(workers, 1), (size + largest - 1) / largest));
+  std::atomic<Index> next{0}, done{0}, chunk{std::min(kFirstChunk, largest)};
+  bool sized = false;  // the caller has timed its first chunk
   std::atomic<bool> stop{false};
   bool was_interrupted = false;
   std::mutex mutex;
@@ -42,10 +51,20 @@ template <class Work, class Interrupted> bool run_in_chunks(Index size, int work
   auto take_chunks = [&](bool caller) {
     try {
       while (!stop.load(std::memory_order_relaxed)) {
-        const Index begin = next.fetch_add(chunk);
+        const Index step = chunk.load(std::memory_order_relaxed);
+        const Index begin = next.fetch_add(step);
         if (begin >= size) return;
-        const Index end = std::min(size, begin + chunk);
+        const Index end = std::min(size, begin + step);
+        const bool timed = caller && !sized;
+        const auto started = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
         work(begin, end);
+        if (timed) {
+          sized = true;
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+          const double per_element = seconds / double(end - begin);
+          const double wanted = std::chrono::duration<double>(kChunkTime).count() / std::max(per_element, 1e-12);
+          chunk.store(Index(std::clamp<double>(wanted, double(kFirstChunk), double(largest))), std::memory_order_relaxed);
+        }
         const Index answered = done.fetch_add(end - begin, std::memory_order_relaxed) + (end - begin);
         if (caller && interrupted(answered)) {
           was_interrupted = true;
