@@ -1,0 +1,376 @@
+// A broadphase: which pairs of shapes can be within a distance d of each other, and which shapes
+// can be nearest to a query, from bounding volumes alone (no query solved). Candidates are the
+// pairs whose lower bound on the distance is at most d plus a margin; the exact test of each is
+// the caller's (distance(), within(), ...).
+//
+// Each shape is summarized by a Volume:
+//   - bounded shapes: a box and a ball (bounds.hpp's bounding_ball), both holding the shape grown
+//     by its sweep. Two of them are at least max(box gap, |c_a - c_b| - r_a - r_b) apart;
+//   - lines and rays (unbounded): the line piece and its sweep. Against a ball they are at least
+//     the closed-form point-line distance to its center less the radii apart (bounds.hpp); two
+//     of them are always candidates (no cheap bound is kept for them);
+//   - shapes whose volume overflowed (coordinates near the largest double): always candidates.
+// A lower bound that rounding made NaN is no bound: the pair stays a candidate.
+//
+// BoundingVolumeHierarchy holds the bounded shapes of a set in a binary tree, each node with a box
+// and a ball holding those under it, built top down by median splits along the longest axis
+// (O(n log n), any input: duplicates and shapes at one spot split by count); the unbounded ones
+// are kept in a list every query visits. A node's bound never exceeds lower_bound() of a shape
+// under it, so a query visits the shapes brute force over lower_bound() keeps (up to a tie with
+// the limit that rounding decides differently: the margin covers such pairs anyway).
+//
+// Margin: the bounds are exact up to rounding (a few eps times the coordinates' size), and the
+// exact distances the caller compares with d are accurate to about as much. Culling keeps every
+// pair whose bound is within cull_limit(d, scale) = d + sqrt(eps) (d + 2 scale), scale the larger
+// of both sets' scale() (their shapes' reach from the origin): every pair at distance <= d, as
+// the caller's exact test computes it, is a candidate.
+#pragma once
+
+#include "bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace circledist {
+
+using BroadIndex = std::ptrdiff_t;
+
+// What the broadphase knows of one shape (sweep included).
+template <class Real> struct Volume {
+  enum class Kind { Bounded, Unbounded, Anywhere };
+  Kind kind = Kind::Anywhere;
+  Vec3<Real> lo = Vec3<Real>::Constant(-std::numeric_limits<Real>::infinity());  // box (Bounded)
+  Vec3<Real> hi = Vec3<Real>::Constant(std::numeric_limits<Real>::infinity());
+  Vec3<Real> center = Vec3<Real>::Zero();  // ball (Bounded); the line's origin (Unbounded)
+  Real radius = std::numeric_limits<Real>::infinity();
+  Vec3<Real> direction = Vec3<Real>::Zero();  // Unbounded: the line piece origin + t direction,
+  bool ray = false;                           // t >= 0 for a ray
+  Real sweep = 0;                             // Unbounded: the tube's radius
+
+  bool bounded() const { return kind == Kind::Bounded; }
+  // How far from the origin the shape reaches (lines: their origin), for the culling margin.
+  Real reach() const {
+    if (kind == Kind::Unbounded) return center.norm() + sweep;
+    return center.norm() + radius;
+  }
+  Linear<Real> piece() const {
+    const Real inf = std::numeric_limits<Real>::infinity();
+    return {center, direction, ray ? Real(0) : -inf, inf};
+  }
+};
+
+namespace detail {
+
+template <class Real> bool finite_box(const Vec3<Real>& lo, const Vec3<Real>& hi) {
+  return lo.allFinite() && hi.allFinite();
+}
+
+// A bounded shape's volume from its box and ball, grown by `sweep`; Anywhere when they overflowed.
+template <class Real> Volume<Real> bounded_volume(Vec3<Real> lo, Vec3<Real> hi, const Ball<Real>& ball, Real sweep) {
+  Volume<Real> v;
+  lo.array() -= sweep;
+  hi.array() += sweep;
+  const Real radius = ball.radius + sweep;
+  if (!finite_box(lo, hi) || !ball.center.allFinite() || !std::isfinite(radius)) return v;
+  v.kind = Volume<Real>::Kind::Bounded;
+  // The ball's box may be tighter than the shape's own on some axis (a Bezier curve's hull).
+  v.lo = lo.cwiseMax(Vec3<Real>(ball.center.array() - radius));
+  v.hi = hi.cwiseMin(Vec3<Real>(ball.center.array() + radius));
+  v.center = ball.center;
+  v.radius = radius;
+  return v;
+}
+
+template <class Real> Volume<Real> line_volume(const Vec3<Real>& origin, const Vec3<Real>& direction, bool ray,
+                                               Real sweep) {
+  Volume<Real> v;
+  if (!origin.allFinite() || !direction.allFinite() || !std::isfinite(sweep)) return v;
+  v.kind = Volume<Real>::Kind::Unbounded;
+  v.center = origin;
+  // Of unit length: point_linear_distance squares the direction, which overflows for 1e200.
+  v.direction = unit_vector(direction);
+  v.ray = ray;
+  v.sweep = sweep;
+  return v;
+}
+
+// A circle's or disk's box: along axis k it spans radius * sin(angle between the axis and the
+// normal) = radius * sqrt(1 - n_k^2) on either side of the center.
+template <class R> Volume<scalar_t<R>> round_volume(const R& round, scalar_t<R> sweep) {
+  using Real = scalar_t<R>;
+  const Vec3<Real> n = unit_vector(round.normal);
+  const Vec3<Real> reach = round.radius * (Vec3<Real>::Ones() - n.cwiseProduct(n)).cwiseMax(Real(0)).cwiseSqrt();
+  return bounded_volume<Real>(round.center - reach, round.center + reach, bounding_ball(round), sweep);
+}
+
+}  // namespace detail
+
+// The volume of a shape grown by `sweep` (the Swept overload passes its own).
+template <class Real> Volume<Real> volume(const Vec3<Real>& p, Real sweep = 0) {
+  return detail::bounded_volume<Real>(p, p, bounding_ball(p), sweep);
+}
+template <class Real> Volume<Real> volume(const Line3<Real>& l, Real sweep = 0) {
+  return detail::line_volume<Real>(l.origin, l.direction, false, sweep);
+}
+template <class Real> Volume<Real> volume(const Ray3<Real>& r, Real sweep = 0) {
+  return detail::line_volume<Real>(r.origin, r.direction, true, sweep);
+}
+template <class Real> Volume<Real> volume(const Segment3<Real>& s, Real sweep = 0) {
+  return detail::bounded_volume<Real>(s.p0.cwiseMin(s.p1), s.p0.cwiseMax(s.p1), bounding_ball(s), sweep);
+}
+template <class Real> Volume<Real> volume(const Circle3<Real>& c, Real sweep = 0) {
+  return detail::round_volume(c, sweep);
+}
+template <class Real> Volume<Real> volume(const Disk3<Real>& d, Real sweep = 0) {
+  return detail::round_volume(d, sweep);
+}
+// The curve lies in its control points' convex hull, so in their box.
+template <class Real> Volume<Real> volume(const BezierCurve3<Real>& b, Real sweep = 0) {
+  if (b.control.cols() == 0) return {};
+  const Vec3<Real> lo = b.control.rowwise().minCoeff(), hi = b.control.rowwise().maxCoeff();
+  return detail::bounded_volume<Real>(lo, hi, bounding_ball(b), sweep);
+}
+template <class S> Volume<scalar_t<S>> volume(const Swept<S>& s) { return volume(s.shape, s.sweep); }
+
+// The gap between two boxes (0 when they overlap).
+template <class Real>
+Real box_gap(const Vec3<Real>& lo_a, const Vec3<Real>& hi_a, const Vec3<Real>& lo_b, const Vec3<Real>& hi_b) {
+  return (lo_a - hi_b).cwiseMax(lo_b - hi_a).cwiseMax(Real(0)).norm();
+}
+
+// A lower bound on the distance between the shapes of two volumes; -inf when there is none.
+template <class Real> Real lower_bound(const Volume<Real>& a, const Volume<Real>& b) {
+  using Kind = typename Volume<Real>::Kind;
+  const Real none = -std::numeric_limits<Real>::infinity();
+  if (a.kind == Kind::Anywhere || b.kind == Kind::Anywhere) return none;
+  if (a.bounded() && b.bounded()) {
+    const Real bound = std::max(box_gap(a.lo, a.hi, b.lo, b.hi), (a.center - b.center).norm() - a.radius - b.radius);
+    return bound == bound ? bound : none;
+  }
+  if (!a.bounded() && !b.bounded()) return none;  // two lines or rays: always candidates
+  const Volume<Real>& line = a.bounded() ? b : a;
+  const Volume<Real>& ball = a.bounded() ? a : b;
+  const Real bound = point_linear_distance(ball.center, line.piece()) - ball.radius - line.sweep;
+  return bound == bound ? bound : none;
+}
+
+// The limit bounds are culled against for pairs within d (see the header comment): `scale` is
+// the larger of both sets' scale(), `relative` the margin per unit of size (sqrt(eps) by
+// default; a caller whose exact test is less accurate, e.g. in float, passes its own).
+template <class Real> Real cull_limit(Real d, Real scale, Real relative = std::sqrt(std::numeric_limits<Real>::epsilon())) {
+  return d + relative * (d + 2 * scale);
+}
+
+template <class Real> class BoundingVolumeHierarchy {
+ public:
+  BoundingVolumeHierarchy() = default;
+
+  // `leaf_size`: shapes per leaf at most.
+  explicit BoundingVolumeHierarchy(std::vector<Volume<Real>> volumes, int leaf_size = 4)
+      : volumes_(std::move(volumes)), leaf_size_(std::max(1, leaf_size)) {
+    std::vector<BroadIndex> bounded;
+    for (BroadIndex i = 0; i < BroadIndex(volumes_.size()); ++i) {
+      const Volume<Real>& v = volumes_[size_t(i)];
+      (v.bounded() ? bounded : unbounded_).push_back(i);
+      // NaN-free by construction; overflowed volumes (Anywhere) do not count.
+      if (v.kind != Volume<Real>::Kind::Anywhere) scale_ = std::max(scale_, v.reach());
+    }
+    order_ = std::move(bounded);
+    if (!order_.empty()) {
+      nodes_.reserve(2 * order_.size() / size_t(leaf_size_) + 1);
+      build(0, BroadIndex(order_.size()));
+    }
+  }
+
+  BroadIndex size() const { return BroadIndex(volumes_.size()); }
+  const Volume<Real>& volume(BroadIndex i) const { return volumes_[size_t(i)]; }
+  const std::vector<Volume<Real>>& volumes() const { return volumes_; }
+  // The largest reach from the origin of a shape of the set (0 for an empty set): for cull_limit.
+  Real scale() const { return scale_; }
+
+  // Calls visit(j, bound) for every shape j whose lower bound to q is <= limit (or unknown), the
+  // tree's shapes first, in no particular order.
+  template <class Visit> void visit_within(const Volume<Real>& q, Real limit, Visit&& visit) const {
+    if (!nodes_.empty()) {
+      std::vector<BroadIndex> stack{0};
+      while (!stack.empty()) {
+        const Node& node = nodes_[size_t(stack.back())];
+        const BroadIndex at = stack.back();
+        stack.pop_back();
+        if (node_bound(q, node) > limit) continue;
+        if (node.count > 0) {
+          for (BroadIndex k = node.first; k < node.first + node.count; ++k) {
+            const BroadIndex j = order_[size_t(k)];
+            const Real bound = lower_bound(q, volumes_[size_t(j)]);
+            if (!(bound > limit)) visit(j, bound);
+          }
+        } else {
+          stack.push_back(node.right);
+          stack.push_back(at + 1);
+        }
+      }
+    }
+    for (const BroadIndex j : unbounded_) {
+      const Real bound = lower_bound(q, volumes_[size_t(j)]);
+      if (!(bound > limit)) visit(j, bound);
+    }
+  }
+
+  // The k shapes of smallest lower bound to q (fewer when the set holds fewer), sorted by bound,
+  // then index (unknown bounds count as -inf). An upper bound on the k-th smallest distance is
+  // then the largest of their exact distances: every shape the caller must test is within it.
+  std::vector<std::pair<Real, BroadIndex>> nearest_by_bound(const Volume<Real>& q, BroadIndex k) const {
+    using Entry = std::pair<Real, BroadIndex>;
+    std::vector<Entry> best;  // a max-heap of the k best (bound, index)
+    if (k <= 0) return best;
+    const auto offer = [&](BroadIndex j) {
+      Real bound = lower_bound(q, volumes_[size_t(j)]);
+      if (bound != bound) bound = -std::numeric_limits<Real>::infinity();
+      const Entry e{bound, j};
+      if (BroadIndex(best.size()) < k) {
+        best.push_back(e);
+        std::push_heap(best.begin(), best.end());
+      } else if (e < best.front()) {
+        std::pop_heap(best.begin(), best.end());
+        best.back() = e;
+        std::push_heap(best.begin(), best.end());
+      }
+    };
+    for (const BroadIndex j : unbounded_) offer(j);
+    if (!nodes_.empty()) {
+      // Best first: nodes by their lower bound, stopping once no node can improve the k-th.
+      using NodeEntry = std::pair<Real, BroadIndex>;
+      std::priority_queue<NodeEntry, std::vector<NodeEntry>, std::greater<NodeEntry>> open;
+      open.push({node_bound(q, nodes_[0]), 0});
+      while (!open.empty()) {
+        const auto [bound, at] = open.top();
+        open.pop();
+        if (BroadIndex(best.size()) == k && bound > best.front().first) break;
+        const Node& node = nodes_[size_t(at)];
+        if (node.count > 0) {
+          for (BroadIndex i = node.first; i < node.first + node.count; ++i) offer(order_[size_t(i)]);
+        } else {
+          open.push({node_bound(q, nodes_[size_t(at + 1)]), at + 1});
+          open.push({node_bound(q, nodes_[size_t(node.right)]), node.right});
+        }
+      }
+    }
+    std::sort(best.begin(), best.end());
+    return best;
+  }
+
+ private:
+  struct Node {
+    Vec3<Real> lo, hi;      // the box of the boxes under the node
+    Vec3<Real> center;      // a ball holding the balls under the node
+    Real radius = 0;
+    BroadIndex first = 0, count = 0;  // a leaf: order_[first, first + count)
+    BroadIndex right = 0;             // an inner node: its children are the next node and `right`
+  };
+
+  std::vector<Volume<Real>> volumes_;
+  std::vector<BroadIndex> order_;     // the bounded shapes, in the leaves' order
+  std::vector<BroadIndex> unbounded_; // lines, rays and overflowed volumes
+  std::vector<Node> nodes_;           // depth first: a node's left child follows it
+  int leaf_size_ = 4;
+  Real scale_ = 0;
+
+  // A lower bound on the distance from q to the shapes under a node, from the node's box and
+  // ball, which hold every box and ball under it: never above lower_bound(q, v) for a volume v
+  // under the node (so the tree visits exactly the shapes brute force over lower_bound keeps).
+  Real node_bound(const Volume<Real>& q, const Node& node) const {
+    const Real none = -std::numeric_limits<Real>::infinity();
+    if (q.kind == Volume<Real>::Kind::Anywhere) return none;
+    Real bound;
+    if (q.bounded()) {
+      bound = std::max(box_gap(q.lo, q.hi, node.lo, node.hi), (q.center - node.center).norm() - node.radius - q.radius);
+    } else {
+      bound = point_linear_distance(node.center, q.piece()) - node.radius - q.sweep;
+    }
+    return bound == bound ? bound : none;
+  }
+
+  BroadIndex build(BroadIndex first, BroadIndex last) {
+    const BroadIndex at = BroadIndex(nodes_.size());
+    nodes_.emplace_back();
+    Vec3<Real> lo = Vec3<Real>::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
+    Vec3<Real> clo = lo, chi = hi;  // the box of the balls' centers: where to split
+    for (BroadIndex k = first; k < last; ++k) {
+      const Volume<Real>& v = volumes_[size_t(order_[size_t(k)])];
+      lo = lo.cwiseMin(v.lo);
+      hi = hi.cwiseMax(v.hi);
+      clo = clo.cwiseMin(v.center);
+      chi = chi.cwiseMax(v.center);
+    }
+    // The ball: around the box's center, out to the farthest ball under the node, rounded up a
+    // few ulps so that the rounding of the radius does not make the node's bound exceed a shape's.
+    const Vec3<Real> center = (lo + hi) / 2;
+    Real radius = 0;
+    for (BroadIndex k = first; k < last; ++k) {
+      const Volume<Real>& v = volumes_[size_t(order_[size_t(k)])];
+      radius = std::max(radius, (v.center - center).norm() + v.radius);
+    }
+    radius *= 1 + 8 * std::numeric_limits<Real>::epsilon();
+    Node& node = nodes_[size_t(at)];
+    node.lo = lo;
+    node.hi = hi;
+    node.center = center;
+    node.radius = radius;
+    if (last - first <= leaf_size_) {
+      nodes_[size_t(at)].first = first;
+      nodes_[size_t(at)].count = last - first;
+      return at;
+    }
+    int axis;
+    (chi - clo).maxCoeff(&axis);
+    const BroadIndex middle = first + (last - first) / 2;
+    // Ties broken by index: the tree (and every traversal) is the same on every platform.
+    std::nth_element(order_.begin() + first, order_.begin() + middle, order_.begin() + last,
+                     [&](BroadIndex x, BroadIndex y) {
+                       const Real cx = volumes_[size_t(x)].center[axis], cy = volumes_[size_t(y)].center[axis];
+                       return cx < cy || (cx == cy && x < y);
+                     });
+    build(first, middle);
+    const BroadIndex right = build(middle, last);
+    nodes_[size_t(at)].right = right;
+    return at;
+  }
+};
+
+// Candidate pairs (i, j), i of `queries` and j of `tree`, whose lower bound is <= limit: appended
+// to `out` for the queries [begin, end), sorted by (i, j). A caller splits the queries among
+// threads and concatenates the parts in order.
+template <class Real>
+void candidate_pairs(const std::vector<Volume<Real>>& queries, const BoundingVolumeHierarchy<Real>& tree, Real limit,
+                     BroadIndex begin, BroadIndex end, std::vector<std::pair<BroadIndex, BroadIndex>>& out) {
+  std::vector<BroadIndex> found;
+  for (BroadIndex i = begin; i < end; ++i) {
+    found.clear();
+    tree.visit_within(queries[size_t(i)], limit, [&](BroadIndex j, Real) { found.push_back(j); });
+    std::sort(found.begin(), found.end());
+    for (const BroadIndex j : found) out.emplace_back(i, j);
+  }
+}
+
+// Candidate pairs i < j within one set (the tree's own shapes), for i in [begin, end), sorted.
+template <class Real>
+void candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, Real limit, BroadIndex begin, BroadIndex end,
+                     std::vector<std::pair<BroadIndex, BroadIndex>>& out) {
+  std::vector<BroadIndex> found;
+  for (BroadIndex i = begin; i < end; ++i) {
+    found.clear();
+    tree.visit_within(tree.volume(i), limit, [&](BroadIndex j, Real) {
+      if (j > i) found.push_back(j);
+    });
+    std::sort(found.begin(), found.end());
+    for (const BroadIndex j : found) out.emplace_back(i, j);
+  }
+}
+
+}  // namespace circledist
