@@ -117,14 +117,18 @@ template <class Query> auto with_call(const Shape& a, const Shape& b, const Shap
   return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers});
 }
 
+// distance() of two shapes already read (also the all-pairs queries' kernel, bind_pairs.hpp).
+py::object shapes_distance(const Shape& a, const Shape& b, const Choice& c) {
+  auto distance = [](const auto& call) { return call.distance(); };
+  if (!c.single()) return with_call(a, b, nullptr, c, distance);
+  const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
+  return to_float32(with_call(fa, fb, nullptr, c, distance), "distance", "the distance", 1);
+}
+
 py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
                         int workers) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape, workers);
-  auto distance = [](const auto& call) { return call.distance(); };
-  if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, distance);
-  const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
-  return to_float32(with_call(fa, fb, nullptr, c, distance), "distance", "the distance", 1);
+  return shapes_distance(*x.shape, *y.shape, Choice(precision, solver, *x.shape, *y.shape, workers));
 }
 
 ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
@@ -240,6 +244,7 @@ std::string repr(py::handle self) {
 }  // namespace
 
 #include "bind_effects.hpp"
+#include "bind_pairs.hpp"
 
 PYBIND11_MODULE(_core, m) {
   m.doc() =
@@ -316,4 +321,5 @@ PYBIND11_MODULE(_core, m) {
       py::arg("workers") = 1, doc::kClosest());
 
   bind_effects(m);
+  bind_pairs(m);
 }

@@ -167,6 +167,15 @@ template <class Real> Real cull_limit(Real d, Real scale, Real relative = std::s
   return d + relative * (d + 2 * scale);
 }
 
+// The largest reach from the origin of the shapes of a set (0 for none; overflowed volumes,
+// always candidates, do not count): the `scale` of cull_limit.
+template <class Real> Real scale_of(const std::vector<Volume<Real>>& volumes) {
+  Real scale = 0;
+  for (const Volume<Real>& v : volumes)
+    if (v.kind != Volume<Real>::Kind::Anywhere) scale = std::max(scale, v.reach());
+  return scale;
+}
+
 template <class Real> class BoundingVolumeHierarchy {
  public:
   BoundingVolumeHierarchy() = default;
@@ -175,12 +184,9 @@ template <class Real> class BoundingVolumeHierarchy {
   explicit BoundingVolumeHierarchy(std::vector<Volume<Real>> volumes, int leaf_size = 4)
       : volumes_(std::move(volumes)), leaf_size_(std::max(1, leaf_size)) {
     std::vector<BroadIndex> bounded;
-    for (BroadIndex i = 0; i < BroadIndex(volumes_.size()); ++i) {
-      const Volume<Real>& v = volumes_[size_t(i)];
-      (v.bounded() ? bounded : unbounded_).push_back(i);
-      // NaN-free by construction; overflowed volumes (Anywhere) do not count.
-      if (v.kind != Volume<Real>::Kind::Anywhere) scale_ = std::max(scale_, v.reach());
-    }
+    for (BroadIndex i = 0; i < BroadIndex(volumes_.size()); ++i)
+      (volumes_[size_t(i)].bounded() ? bounded : unbounded_).push_back(i);
+    scale_ = scale_of(volumes_);
     order_ = std::move(bounded);
     if (!order_.empty()) {
       nodes_.reserve(2 * order_.size() / size_t(leaf_size_) + 1);
