@@ -446,12 +446,16 @@ struct SceneBroadphase {
     return v;
   }
 
+  // cull_limit(d) for a query shape: the set's scale or the shape's reach, the larger.
+  double limit(py::handle shape, double d) const {
+    return cull_limit(d, std::max(tree.scale(), query(shape).reach()));
+  }
+
   // The elements whose lower bound to `shape` is within cull_limit(d), with their bounds; sorted.
   py::tuple within(py::handle shape, double d) const {
     const Volume<double> q = query(shape);
-    const double limit = cull_limit(d, std::max(tree.scale(), q.reach()));
     std::vector<std::pair<Index, double>> found;
-    tree.visit_within(q, limit, [&](BroadIndex j, double bound) { found.emplace_back(j, bound); });
+    tree.visit_within(q, cull_limit(d, std::max(tree.scale(), q.reach())), [&](BroadIndex j, double bound) { found.emplace_back(j, bound); });
     std::sort(found.begin(), found.end());
     std::vector<Index> idx;
     std::vector<double> bounds;
@@ -504,6 +508,8 @@ inline void bind_pairs(py::module_& m) {
       .def(py::init(&SceneBroadphase::make), py::arg("shapes"), py::arg("workers") = 1)
       .def("__len__", [](const SceneBroadphase& s) { return s.tree.size(); })
       .def_property_readonly("scale", [](const SceneBroadphase& s) { return s.tree.scale(); })
+      .def("limit", &SceneBroadphase::limit, py::arg("shape"), py::arg("d"),
+           "cull_limit(d) for a single shape: bounds above it are beyond d.")
       .def("within", &SceneBroadphase::within, py::arg("shape"), py::arg("d"),
            "(indices, lower bounds) of the elements within cull_limit(d) of a single shape, sorted.")
       .def("nearest_by_bound", &SceneBroadphase::nearest_by_bound, py::arg("shape"), py::arg("k"),

@@ -635,6 +635,10 @@ class _Broadphase:
         ...
     def __len__(self) -> int:
         ...
+    def limit(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        cull_limit(d) for a single shape: bounds above it are beyond d.
+        """
     def nearest_by_bound(self, shape: typing.Any, k: typing.SupportsInt | typing.SupportsIndex) -> tuple:
         """
         (indices, lower bounds) of the k elements of smallest lower bound, by bound.
