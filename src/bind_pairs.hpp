@@ -21,7 +21,7 @@
 namespace {
 
 using Volumes = std::vector<Volume<double>>;
-using PairList = std::vector<std::pair<Index, Index>>;
+using PairList = BroadPairs;
 
 // Where each field of a shape keeps the element of a flat index of the shape's batch: fields
 // broadcast within a shape (a scalar radius for a batch of centers), so a field's element is the
@@ -131,8 +131,9 @@ Volumes volumes_of(const std::vector<const Shape*>& shapes, int workers) {
   return out;
 }
 
-// Candidate pairs (i, j) for queries [0, n), each thread's chunks kept apart and joined in order:
-// the result is sorted by (i, j) and the same for every worker count.
+// Candidate pairs (i, j), i in [0, n), found by find(begin, end, out) over chunks of [0, n) (the
+// positions of a spatial order of the queries) on `workers` threads, then sorted by (i, j): the
+// same list for every worker count.
 template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find) {
   const Index chunk = chunk_size(n, workers);
   std::vector<PairList> parts(static_cast<size_t>((n + chunk - 1) / chunk));
@@ -144,6 +145,10 @@ template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find) 
   for (PairList& p : parts) {
     out.insert(out.end(), p.begin(), p.end());
     PairList().swap(p);
+  }
+  {
+    py::gil_scoped_release release;
+    sort_pairs(out, n);
   }
   return out;
 }
@@ -312,8 +317,9 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
     const BoundingVolumeHierarchy<double> tree(volumes_of({b}, c.workers));
     const double limit = cull_limit(d, std::max(tree.scale(), scale_of(va)),
                                     relative_margin(c));
+    const std::vector<BroadIndex> order = spatial_order(va);
     candidates = chunked_pairs(Index(va.size()), c.workers, [&](Index begin, Index end, PairList& out) {
-      candidate_pairs(va, tree, limit, begin, end, out);
+      candidate_pairs(va, order, tree, limit, begin, end, out);
     });
   } else {
     const BoundingVolumeHierarchy<double> tree(va);
@@ -344,9 +350,12 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   const Evaluator<Real> evaluate{a, b, c};
   // 1. The kk shapes of smallest lower bound: their largest exact distance, tau, bounds the
   //    kk-th nearest distance from above.
+  const std::vector<BroadIndex> order = spatial_order(va);
   const PairList first = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
-    for (Index i = begin; i < end; ++i)
+    for (Index p = begin; p < end; ++p) {
+      const Index i = order[size_t(p)];
       for (const auto& entry : tree.nearest_by_bound(va[size_t(i)], kk)) out.emplace_back(i, entry.second);
+    }
   });
   // Per query, its (distance, index) found so far.
   std::vector<std::vector<std::pair<Real, Index>>> found(static_cast<size_t>(n));
@@ -359,17 +368,14 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   // 2. Every other shape whose bound is within tau (and the margin): the nearest are among them.
   if (kk < nb) {
     const PairList second = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
-      std::vector<Index> more;
-      for (Index i = begin; i < end; ++i) {
-        more.clear();
+      for (Index p = begin; p < end; ++p) {
+        const Index i = order[size_t(p)];
         const auto& known = found[size_t(i)];
         tree.visit_within(va[size_t(i)], cull_limit(tau[size_t(i)], scale, relative_margin(c)), [&](BroadIndex j, double) {
           for (const auto& e : known)
             if (e.second == j) return;
-          more.push_back(j);
+          out.emplace_back(i, j);
         });
-        std::sort(more.begin(), more.end());
-        for (const Index j : more) out.emplace_back(i, j);
       }
     });
     evaluate.run(second, [&](Index p, Real distance) {

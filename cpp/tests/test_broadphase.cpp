@@ -87,12 +87,19 @@ void check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_sam
   const double limit = cull_limit(d, scale);
   Pairs got;
   if (b_same) {
-    candidate_pairs(tree, limit, 0, tree.size(), got);
+    // In two parts, as threads split the work, joined by sort_pairs.
+    const BroadIndex half = tree.size() / 2;
+    candidate_pairs(tree, limit, 0, half, got);
+    candidate_pairs(tree, limit, half, tree.size(), got);
+    sort_pairs(got, tree.size());
+    CHECK(got == candidate_pairs(tree, limit));
   } else {
-    // In two parts, as threads split the work: the concatenation is the whole, in order.
+    const std::vector<BroadIndex> order = spatial_order(va);
     const BroadIndex half = BroadIndex(a.size()) / 2;
-    candidate_pairs(va, tree, limit, 0, half, got);
-    candidate_pairs(va, tree, limit, half, BroadIndex(a.size()), got);
+    candidate_pairs(va, order, tree, limit, 0, half, got);
+    candidate_pairs(va, order, tree, limit, half, BroadIndex(a.size()), got);
+    sort_pairs(got, BroadIndex(a.size()));
+    CHECK(got == candidate_pairs(va, tree, limit));
   }
   Pairs expected;
   for (size_t i = 0; i < a.size(); ++i) {
@@ -216,9 +223,7 @@ int main() {
     check_sets(points, points, true, 0.0);
     const std::vector<Volume<double>> v = volumes_of(points);
     const BoundingVolumeHierarchy<double> tree(v);
-    Pairs all;
-    candidate_pairs(tree, cull_limit(0.0, tree.scale()), 0, tree.size(), all);
-    CHECK(all.size() == 200u * 199u / 2u);
+    CHECK(candidate_pairs(tree, cull_limit(0.0, tree.scale())).size() == 200u * 199u / 2u);
     check_nearest(points, points, 7);
     std::vector<Any> spot;
     for (int i = 0; i < 120; ++i) spot.push_back(random_shape(V(1, 1, 1)));
@@ -235,8 +240,7 @@ int main() {
     check_sets(a, b, false, 0.0);
     const std::vector<Volume<double>> va = volumes_of(a), vb = volumes_of(b);
     const BoundingVolumeHierarchy<double> tree(vb);
-    Pairs got;
-    candidate_pairs(va, tree, cull_limit(0.0, std::max(tree.scale(), 12.0)), 0, 3, got);
+    const Pairs got = candidate_pairs(va, tree, cull_limit(0.0, std::max(tree.scale(), 12.0)));
     for (const auto& p : Pairs{{0, 0}, {1, 1}, {2, 2}})
       CHECK(std::find(got.begin(), got.end(), p) != got.end());
     CHECK(std::none_of(got.begin(), got.end(), [](const auto& p) { return p.second == 3; }));
