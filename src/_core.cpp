@@ -130,14 +130,18 @@ template <class Query> auto with_call(const Shape& a, const Shape& b, const Shap
   return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers, c.progress});
 }
 
+// distance() of two shapes already read (also the all-pairs queries' kernel, bind_pairs.hpp).
+py::object shapes_distance(const Shape& a, const Shape& b, const Choice& c) {
+  auto distance = [](const auto& call) { return call.distance(); };
+  if (!c.single()) return with_call(a, b, nullptr, c, distance);
+  const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
+  return to_float32(with_call(fa, fb, nullptr, c, distance), "distance", "the distance", 1);
+}
+
 py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
                         int workers, const py::object& progress) {
   const Argument x(a), y(b);
-  const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
-  auto distance = [](const auto& call) { return call.distance(); };
-  if (!c.single()) return with_call(*x.shape, *y.shape, nullptr, c, distance);
-  const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
-  return to_float32(with_call(fa, fb, nullptr, c, distance), "distance", "the distance", 1);
+  return shapes_distance(*x.shape, *y.shape, Choice(precision, solver, *x.shape, *y.shape, workers, progress));
 }
 
 ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
@@ -278,6 +282,7 @@ py::typing::Dict<py::str, py::typing::Tuple<FieldPair, py::ellipsis>> shape_fiel
 }  // namespace
 
 #include "bind_effects.hpp"
+#include "bind_pairs.hpp"
 
 PYBIND11_MODULE(_core, m) {
   m.doc() =
@@ -361,4 +366,5 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "_sweep_field", [] { return FieldPair(py::make_tuple(kSweepField.name, field_role(kSweepField))); },
       "The (name, role) of the optional keyword field every kind takes after its own fields.");
+  bind_pairs(m);
 }

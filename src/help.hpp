@@ -40,6 +40,11 @@ CIRCLEDIST_TYPED_OBJECT(ProgressLike, "bool | collections.abc.Callable[[int, int
 CIRCLEDIST_TYPED_OBJECT(Array, "numpy.ndarray")
 CIRCLEDIST_TYPED_OBJECT(Distances, "float | numpy.longdouble | numpy.ndarray")
 CIRCLEDIST_TYPED_OBJECT(Flags, "bool | numpy.ndarray")
+CIRCLEDIST_TYPED_OBJECT(OptionalShapeLike, "circledist._core.Shape | numpy.typing.ArrayLike | None")
+CIRCLEDIST_TYPED_OBJECT(Number, "float")
+CIRCLEDIST_TYPED_OBJECT(Count, "int")
+CIRCLEDIST_TYPED_OBJECT(PairsResult, "tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]")
+CIRCLEDIST_TYPED_OBJECT(NearestResult, "tuple[numpy.ndarray, numpy.ndarray]")
 
 #undef CIRCLEDIST_TYPED_OBJECT
 
@@ -378,7 +383,8 @@ workers : int, optional
     convention): a positive count, or -1 for every core; default 1. The answers are the same
     bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
     (KeyboardInterrupt).
-progress : bool or callable, optional
+)";
+inline const char* const kProgressParameter = R"(progress : bool or callable, optional
     Keyword only. None or False (the default): no report. True: a progress bar on stderr
     (tqdm's when it is installed), shown once the work has taken a second. A callable is called
     as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
@@ -399,7 +405,7 @@ TypeError
 inline const char* kDistance() {
   static const std::string text = std::string() + "Distance between a and b.\n\n"
                                      "Does no closest-point work. Both argument orders agree to the bit.\n\n"
-                                     "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + R"(
+                                     "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 float or numpy.ndarray
@@ -439,7 +445,7 @@ inline const char* kClosest() {
   static const std::string text = std::string() + "Distance, closest points on a and b, their parameters and whether they are unique.\n\n"
                                     "``closest_points(b, a)`` is ``closest_points(a, b)`` with the points and parameters "
                                     "exchanged.\n\n"
-                                    "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + R"(
+                                    "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 ClosestPoints
@@ -466,7 +472,7 @@ inline const char* kIntersects() {
   static const std::string text = std::string() + "Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.\n\n"
                                        "Cheap exact bounds decide first; the polynomial solver runs only where they "
                                        "cannot.\n\n"
-                                       "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + R"(
+                                       "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 bool or numpy.ndarray
@@ -490,7 +496,7 @@ inline const char* kWithin() {
                                    "Up to a rounding tolerance of 64 eps times the pair's size. Cheap exact bounds "
                                    "decide first; the polynomial solver runs only where they cannot.\n\n"
                                    "Parameters\n----------\n" + kQueryParameters + kLimitParameter +
-                                       + kChoiceParameters + R"(
+                                       + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 bool or numpy.ndarray
@@ -515,7 +521,7 @@ inline const char* kDistanceIfWithin() {
   static const std::string text = std::string() +
     "``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.\n\n"
     "The distance is only computed where the bounds cannot show that it exceeds d.\n\n"
-    "Parameters\n----------\n" + kQueryParameters + kLimitParameter + kChoiceParameters + R"(
+    "Parameters\n----------\n" + kQueryParameters + kLimitParameter + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 float or numpy.ndarray
@@ -530,6 +536,139 @@ Examples
 >>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])
 >>> cd.distance_if_within(line, ring, [0.4, 0.6])
 array([inf, 0.5])
+)";
+  return text.c_str();
+}
+
+inline const char* const kAllPairsNotes = R"(Notes
+-----
+Each batch is indexed flat, in C order: element ``i`` of a batch of shape (2, 3) is the one at
+``numpy.unravel_index(i, (2, 3))``; a single shape is a batch of one. Fields that broadcast
+within a shape (one radius for many centers) count once per element.
+
+A bounding-volume hierarchy (the C++ header ``circledist/broadphase.hpp``) culls the pairs that
+cheap exact lower bounds (boxes, balls, the distance from a line to a ball) put beyond d plus a
+margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the shapes reach from the origin;
+float32's eps for float32 answers): no pair the exact distance puts within d is culled. Lines
+and rays are tested against every ball. Each remaining pair is gathered into a batch and
+answered by the kernel `distance` runs, with the GIL released, on `workers` threads.
+)";
+
+inline const char* kPairsWithin() {
+  static const std::string text = std::string() +
+    "Every pair of a and b within distance d of each other, with its distance.\n\n"
+    "Exactly the pairs ``(i, j)`` for which ``distance(a[i], b[j]) <= d``, as a brute-force double loop\n"
+    "over `distance` finds them, with the same distances to the bit; far fewer pairs are evaluated.\n"
+    "Like ``scipy.spatial.cKDTree.query_pairs`` (b None) and ``sparse_distance_matrix`` (with b), for\n"
+    "shapes.\n\n"
+    "Parameters\n----------\n" + R"(a : Shape or array_like
+    A batch of shapes of any kind and batch shape, indexed flat (see Notes). An array of shape
+    (..., 3) is a `Point` batch.
+b : Shape, array_like or None
+    A second batch, indexed flat; None pairs a with itself, i < j (no pair of an element with
+    itself).
+d : float
+    Distance limit, finite and >= 0. Pairs at distance exactly d are included.
+)" + kChoiceParameters + R"(
+Returns
+-------
+i, j : numpy.ndarray of numpy.intp, shape (m,)
+    Flat indices into a and into b (into a twice when b is None, i < j), sorted by (i, j).
+distance : numpy.ndarray, shape (m,)
+    ``distance(a[i], b[j])`` for each pair: dtype float64, float32 or longdouble, by precision.
+    With float32 answers the comparison with d is made in double on the float32 value, as a
+    loop over single `distance` calls (which return Python floats) makes it.
+
+Raises
+------
+TypeError
+    When d is not a real number, a or b is not a shape or an array of points, or there is no
+    query between the kinds of a and b (even when no pair is near).
+ValueError
+    When d is negative, NaN or inf, for an unknown precision or solver, or a worker count that
+    is neither positive nor -1.
+
+See Also
+--------
+nearest : the k nearest shapes of b to each shape of a.
+Scene.pairs_within : the same culling over a scene's named shapes.
+
+)" + kAllPairsNotes + R"(
+Examples
+--------
+>>> import numpy as np
+>>> import circledist as cd
+>>> rings = cd.Circle([[0, 0, 0], [3, 0, 0], [9, 0, 0]], [0, 0, 1], 1.0)
+>>> sticks = cd.Segment([[0, 0, -1], [5, 0, 0]], [[0, 0, 1], [6, 0, 0]])
+>>> i, j, dist = cd.pairs_within(rings, sticks, 1.0)
+>>> i, j, dist
+(array([0, 1]), array([0, 1]), array([1., 1.]))
+>>> cd.pairs_within(rings, None, 1.0)  # rings 0 and 1 are 1 apart
+(array([0]), array([1]), array([1.]))
+>>> cd.pairs_within(rings, sticks, -1)
+Traceback (most recent call last):
+...
+ValueError: pairs_within: d must be a finite number >= 0, got -1
+)";
+  return text.c_str();
+}
+
+inline const char* kNearest() {
+  static const std::string text = std::string() +
+    "The k shapes of b nearest to each shape of a, with their distances.\n\n"
+    "The same as sorting every ``distance(a[i], b[j])`` by (distance, j) and keeping the first k,\n"
+    "with the same distances to the bit; far fewer pairs are evaluated. Like\n"
+    "``scipy.spatial.cKDTree.query(x, k)``, for shapes (but indices first, and always two-dimensional).\n\n"
+    "Parameters\n----------\n" + R"(a : Shape or array_like
+    The query shapes: a batch of any kind and batch shape, indexed flat (see Notes).
+b : Shape or array_like
+    The shapes to search: a batch of any kind, indexed flat.
+k : int, default 1
+    How many nearest shapes per query, >= 1.
+)" + kChoiceParameters + R"(
+Returns
+-------
+indices : numpy.ndarray of numpy.intp, shape (len(a), k)
+    Flat indices into b, nearest first (ties: the smaller index first). Where b holds fewer than
+    k shapes, the missing places are -1 (as in cKDTree, where they are len(b)).
+distances : numpy.ndarray, shape (len(a), k)
+    The distances, ascending; inf in the missing places. Dtype float64, float32 or longdouble,
+    by precision.
+
+Raises
+------
+TypeError
+    When k is not an integer, a or b is not a shape or an array of points, or there is no query
+    between their kinds.
+ValueError
+    When k < 1, for an unknown precision or solver, or a worker count that is neither positive
+    nor -1.
+
+See Also
+--------
+pairs_within : every pair within a distance.
+Scene.nearest : the nearest named shapes of a scene to one shape.
+
+)" + kAllPairsNotes + R"(
+Examples
+--------
+>>> import circledist as cd
+>>> rings = cd.Circle([[0, 0, 0], [3, 0, 0], [9, 0, 0]], [0, 0, 1], 1.0)
+>>> probes = cd.Point([[0, 0, 0], [8, 0, 0]])
+>>> idx, dist = cd.nearest(probes, rings, k=2)
+>>> idx
+array([[0, 1],
+       [2, 1]])
+>>> dist
+array([[1., 2.],
+       [0., 4.]])
+>>> cd.nearest(probes, rings, k=4)[0]  # b holds 3 rings: the fourth place is empty
+array([[ 0,  1,  2, -1],
+       [ 2,  1,  0, -1]])
+>>> cd.nearest(probes, rings, k=0)
+Traceback (most recent call last):
+...
+ValueError: nearest: k must be an integer >= 1, got 0
 )";
   return text.c_str();
 }

@@ -37,12 +37,14 @@ constexpr std::chrono::microseconds kChunkTime{10000};
 // the caller's. `interrupted(done)` is asked by the caller's thread after each of its chunks, with
 // the count of elements answered so far by every thread (for progress reports): when it answers
 // true, no new chunk is started and run_in_chunks returns false once the running ones end.
-// An exception in any thread stops the others likewise and is rethrown here.
-template <class Work, class Interrupted> bool run_in_chunks(Index size, int workers, Work&& work, Interrupted&& interrupted) {
-  const Index largest = chunk_size(size, workers);
+// An exception in any thread stops the others likewise and is rethrown here. A caller that keeps
+// per-chunk state gives `fixed_chunk`: every chunk then starts at a multiple of it.
+template <class Work, class Interrupted>
+bool run_in_chunks(Index size, int workers, Work&& work, Interrupted&& interrupted, Index fixed_chunk = 0) {
+  const Index largest = fixed_chunk > 0 ? fixed_chunk : chunk_size(size, workers);
   const int threads = int(std::min<Index>(std::max(workers, 1), (size + largest - 1) / largest));
-  std::atomic<Index> next{0}, done{0}, chunk{std::min(kFirstChunk, largest)};
-  bool sized = false;  // the caller has timed its first chunk
+  std::atomic<Index> next{0}, done{0}, chunk{fixed_chunk > 0 ? fixed_chunk : std::min(kFirstChunk, largest)};
+  bool sized = fixed_chunk > 0;  // the caller has timed its first chunk (or the size is fixed)
   std::atomic<bool> stop{false};
   bool was_interrupted = false;
   std::mutex mutex;

@@ -66,7 +66,7 @@ def test_every_public_object_is_listed():
     """The test below covers every object of __all__: a new name must come with help."""
     assert set(PUBLIC) == set(SHAPE_CLASSES) | set(QUERIES) | {"Shape", "ClosestPoints", "Scene", "stats",
                                                                   "reset_stats", "SceneFileError", "read_scene",
-                                                                  "write_scene"}
+                                                                  "write_scene", "pairs_within", "nearest"}
 
 
 @pytest.mark.parametrize("name", PUBLIC)

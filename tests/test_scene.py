@@ -195,3 +195,75 @@ def test_extend_names_and_contents():
     # Adding after a query rebuilds the hierarchy.
     scene.add("close", cd.Point([0.1, 0, 0]))
     assert scene.nearest(cd.Point([0.1, 0, 0]))[0] == ("close", 0.0)
+
+
+def check_copies(scene):
+    """A scene's pickled, deep-copied and copied versions have the same names, the same stored
+    arrays (dtypes kept) and the same answers, and are independent of it."""
+    import copy
+    import pickle
+
+    scene.add("ring32", cd.Circle(np.float32([1, 2, 3]), [0, 0, 1], np.float32(0.5), sweep=np.float32(0.25)))
+    before = scene.pairs_within(0.5)  # built: the broadphase is not part of the state
+    probe = cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5)
+    for again in (pickle.loads(pickle.dumps(scene)), copy.deepcopy(scene), copy.copy(scene)):
+        assert again.names == scene.names and len(again) == len(scene)
+        for name in scene.names:
+            x, y = scene[name].to_arrays(), again[name].to_arrays()
+            assert x.keys() == y.keys()
+            for key in x:
+                assert x[key].dtype == y[key].dtype and np.array_equal(x[key], y[key])
+        for (key, g), (key2, h) in zip(scene._groups.items(), again._groups.items()):
+            assert key == key2 and g.kind == h.kind
+            for f, e in zip(g.fields, h.fields):
+                assert f.dtype == e.dtype == np.float64 and np.array_equal(f, e)
+            assert np.array_equal(g.ids, h.ids)
+        assert again.pairs_within(0.5) == before
+        assert again.nearest(probe, 5) == scene.nearest(probe, 5)
+        assert again.within(probe, 1.0) == scene.within(probe, 1.0)
+        # Independent: adding to the copy leaves the original as it was.
+        extra = cd.Circle([0, 0, 0], [0, 0, 1], 0.1)
+        again.add("extra", extra)
+        assert "extra" not in scene and len(again) == len(scene) + 1
+        assert again.nearest(extra)[0] == ("extra", 0.0)
+
+
+def test_pickle_and_deepcopy_round_trip():
+    import pickle
+
+    lines, _ = mixed_scene(31, n=120, box=5.0, kinds=("Disk", "Circle", "Segment", "Point", "Line"))
+    curves, _ = mixed_scene(32, n=60, box=5.0, kinds=("Disk", "Circle"))
+    curves.add("curve", cd.Bezier(np.arange(12.0).reshape(4, 3) / 10))  # curves have no query with curves
+    for scene in (lines, curves):
+        check_copies(scene)
+    empty = pickle.loads(pickle.dumps(cd.Scene()))
+    assert len(empty) == 0 and empty.nearest([0, 0, 0]) == [] and empty.pairs_within(1.0) == []
+
+
+def test_adding_after_queries_and_mixing_add_and_extend():
+    """Single adds wait in lists until a read: reads in between (shape, queries) see every shape,
+    in insertion order, whatever the mix of add and extend."""
+    rng = np.random.default_rng(12)
+    scene = cd.Scene()
+    expected = []
+    for step in range(30):
+        if step % 3 == 0:
+            batch = cd.Disk(rng.uniform(-4, 4, (5, 3)), rand_dirs(rng, 5), rng.uniform(0.2, 1, 5))
+            scene.extend(f"b{step}_", batch)
+            arrays = batch.to_arrays()
+            expected += [cd.Disk(arrays["center"][i], arrays["normal"][i], arrays["radius"][i]) for i in range(5)]
+        else:
+            s = cd.Disk(rng.uniform(-4, 4, 3), rand_dirs(rng, 1)[0], rng.uniform(0.2, 1))
+            scene.add(f"s{step}", s)
+            expected.append(s)
+        if step % 4 == 0:
+            name = scene.names[-1]
+            assert np.array_equal(scene[name].center, expected[-1].center)
+            probe = cd.Point(rng.uniform(-4, 4, 3))
+            d = np.array([cd.distance(probe, e) for e in expected])
+            order = np.lexsort((np.arange(len(d)), d))[:3]
+            assert scene.nearest(probe, 3) == [(scene.names[i], d[i]) for i in order]
+    pairs = [(scene.names[i], scene.names[j]) for i in range(len(expected)) for j in range(i + 1, len(expected))
+             if cd.within(expected[i], expected[j], 0.3)]
+    assert scene.pairs_within(0.3) == pairs
+    assert scene.pairs_within(0.3, workers=2) == pairs

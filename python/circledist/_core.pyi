@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'reset_stats', 'stats', 'within']
+__all__: list[str] = ['Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
 class Shape:
     """
     Base class of every shape: a single shape or a batch of them.
@@ -628,6 +628,33 @@ class ClosestPoints:
         """
         False when another distinct pair is as close.
         """
+class _Broadphase:
+    """
+    The broadphase over a list of shapes' elements, numbered one after the other (used by circledist.Scene).
+    """
+    def __init__(self, shapes: list, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+        ...
+    def __len__(self) -> int:
+        ...
+    def limit(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        cull_limit(d) for a single shape: bounds above it are beyond d.
+        """
+    def nearest_by_bound(self, shape: typing.Any, k: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+        """
+        (indices, lower bounds) of the k elements of smallest lower bound, by bound.
+        """
+    def pairs(self, d: typing.SupportsFloat | typing.SupportsIndex, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple:
+        """
+        (i, j), i < j: the candidate pairs within cull_limit(d), sorted.
+        """
+    def within(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex) -> tuple:
+        """
+        (indices, lower bounds) of the elements within cull_limit(d) of a single shape, sorted.
+        """
+    @property
+    def scale(self) -> float:
+        ...
 def _count_culled(n: typing.SupportsInt | typing.SupportsIndex) -> None:
     """
     Adds n to stats()['culled'] (used by circledist.Scene).
@@ -911,6 +938,187 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
     True
     >>> cd.intersects(ring, [[0, 0, 0], [1, 0, 0]])
     array([False,  True])
+    """
+def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, k: int = 1, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple[numpy.ndarray, numpy.ndarray]:
+    """
+    The k shapes of b nearest to each shape of a, with their distances.
+    
+    The same as sorting every ``distance(a[i], b[j])`` by (distance, j) and keeping the first k,
+    with the same distances to the bit; far fewer pairs are evaluated. Like
+    ``scipy.spatial.cKDTree.query(x, k)``, for shapes (but indices first, and always two-dimensional).
+    
+    Parameters
+    ----------
+    a : Shape or array_like
+        The query shapes: a batch of any kind and batch shape, indexed flat (see Notes).
+    b : Shape or array_like
+        The shapes to search: a batch of any kind, indexed flat.
+    k : int, default 1
+        How many nearest shapes per query, >= 1.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count, or -1 for every core; default 1. The answers are the same
+        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+        (KeyboardInterrupt).
+    
+    Returns
+    -------
+    indices : numpy.ndarray of numpy.intp, shape (len(a), k)
+        Flat indices into b, nearest first (ties: the smaller index first). Where b holds fewer than
+        k shapes, the missing places are -1 (as in cKDTree, where they are len(b)).
+    distances : numpy.ndarray, shape (len(a), k)
+        The distances, ascending; inf in the missing places. Dtype float64, float32 or longdouble,
+        by precision.
+    
+    Raises
+    ------
+    TypeError
+        When k is not an integer, a or b is not a shape or an array of points, or there is no query
+        between their kinds.
+    ValueError
+        When k < 1, for an unknown precision or solver, or a worker count that is neither positive
+        nor -1.
+    
+    See Also
+    --------
+    pairs_within : every pair within a distance.
+    Scene.nearest : the nearest named shapes of a scene to one shape.
+    
+    Notes
+    -----
+    Each batch is indexed flat, in C order: element ``i`` of a batch of shape (2, 3) is the one at
+    ``numpy.unravel_index(i, (2, 3))``; a single shape is a batch of one. Fields that broadcast
+    within a shape (one radius for many centers) count once per element.
+    
+    A bounding-volume hierarchy (the C++ header ``circledist/broadphase.hpp``) culls the pairs that
+    cheap exact lower bounds (boxes, balls, the distance from a line to a ball) put beyond d plus a
+    margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the shapes reach from the origin;
+    float32's eps for float32 answers): no pair the exact distance puts within d is culled. Lines
+    and rays are tested against every ball. Each remaining pair is gathered into a batch and
+    answered by the kernel `distance` runs, with the GIL released, on `workers` threads.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> rings = cd.Circle([[0, 0, 0], [3, 0, 0], [9, 0, 0]], [0, 0, 1], 1.0)
+    >>> probes = cd.Point([[0, 0, 0], [8, 0, 0]])
+    >>> idx, dist = cd.nearest(probes, rings, k=2)
+    >>> idx
+    array([[0, 1],
+           [2, 1]])
+    >>> dist
+    array([[1., 2.],
+           [0., 4.]])
+    >>> cd.nearest(probes, rings, k=4)[0]  # b holds 3 rings: the fourth place is empty
+    array([[ 0,  1,  2, -1],
+           [ 2,  1,  0, -1]])
+    >>> cd.nearest(probes, rings, k=0)
+    Traceback (most recent call last):
+    ...
+    ValueError: nearest: k must be an integer >= 1, got 0
+    """
+def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
+    """
+    Every pair of a and b within distance d of each other, with its distance.
+    
+    Exactly the pairs ``(i, j)`` for which ``distance(a[i], b[j]) <= d``, as a brute-force double loop
+    over `distance` finds them, with the same distances to the bit; far fewer pairs are evaluated.
+    Like ``scipy.spatial.cKDTree.query_pairs`` (b None) and ``sparse_distance_matrix`` (with b), for
+    shapes.
+    
+    Parameters
+    ----------
+    a : Shape or array_like
+        A batch of shapes of any kind and batch shape, indexed flat (see Notes). An array of shape
+        (..., 3) is a `Point` batch.
+    b : Shape, array_like or None
+        A second batch, indexed flat; None pairs a with itself, i < j (no pair of an element with
+        itself).
+    d : float
+        Distance limit, finite and >= 0. Pairs at distance exactly d are included.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count, or -1 for every core; default 1. The answers are the same
+        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
+        (KeyboardInterrupt).
+    
+    Returns
+    -------
+    i, j : numpy.ndarray of numpy.intp, shape (m,)
+        Flat indices into a and into b (into a twice when b is None, i < j), sorted by (i, j).
+    distance : numpy.ndarray, shape (m,)
+        ``distance(a[i], b[j])`` for each pair: dtype float64, float32 or longdouble, by precision.
+        With float32 answers the comparison with d is made in double on the float32 value, as a
+        loop over single `distance` calls (which return Python floats) makes it.
+    
+    Raises
+    ------
+    TypeError
+        When d is not a real number, a or b is not a shape or an array of points, or there is no
+        query between the kinds of a and b (even when no pair is near).
+    ValueError
+        When d is negative, NaN or inf, for an unknown precision or solver, or a worker count that
+        is neither positive nor -1.
+    
+    See Also
+    --------
+    nearest : the k nearest shapes of b to each shape of a.
+    Scene.pairs_within : the same culling over a scene's named shapes.
+    
+    Notes
+    -----
+    Each batch is indexed flat, in C order: element ``i`` of a batch of shape (2, 3) is the one at
+    ``numpy.unravel_index(i, (2, 3))``; a single shape is a batch of one. Fields that broadcast
+    within a shape (one radius for many centers) count once per element.
+    
+    A bounding-volume hierarchy (the C++ header ``circledist/broadphase.hpp``) culls the pairs that
+    cheap exact lower bounds (boxes, balls, the distance from a line to a ball) put beyond d plus a
+    margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the shapes reach from the origin;
+    float32's eps for float32 answers): no pair the exact distance puts within d is culled. Lines
+    and rays are tested against every ball. Each remaining pair is gathered into a batch and
+    answered by the kernel `distance` runs, with the GIL released, on `workers` threads.
+    
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> rings = cd.Circle([[0, 0, 0], [3, 0, 0], [9, 0, 0]], [0, 0, 1], 1.0)
+    >>> sticks = cd.Segment([[0, 0, -1], [5, 0, 0]], [[0, 0, 1], [6, 0, 0]])
+    >>> i, j, dist = cd.pairs_within(rings, sticks, 1.0)
+    >>> i, j, dist
+    (array([0, 1]), array([0, 1]), array([1., 1.]))
+    >>> cd.pairs_within(rings, None, 1.0)  # rings 0 and 1 are 1 apart
+    (array([0]), array([1]), array([1.]))
+    >>> cd.pairs_within(rings, sticks, -1)
+    Traceback (most recent call last):
+    ...
+    ValueError: pairs_within: d must be a finite number >= 0, got -1
     """
 def reset_stats() -> None:
     """

@@ -1,23 +1,23 @@
 """A scene: named shapes of any kinds, and the few questions a user asks of it.
 
-``Scene.nearest``, ``Scene.within`` and ``Scene.pairs_within`` cull with a bounding-volume
-hierarchy before any exact test: a linear BVH (shapes sorted along a Morton curve, leaves of
-``LEAF`` shapes, every node the box of ``BRANCH`` consecutive children), built and traversed
-level by level with NumPy. A node or a shape is skipped only when a lower bound on its
-distance (box gap, ball gap, distance from a line to a ball) exceeds the limit by a margin
-far above rounding, so every answer is the one brute force gives: the exact tests that
-remain go through ``circledist.within`` / ``circledist.distance_if_within``, which try
-cheap exact bounds again before they solve a polynomial.
+``Scene.nearest``, ``Scene.within`` and ``Scene.pairs_within`` cull with the broadphase that
+``circledist.pairs_within`` and ``circledist.nearest`` use (the C++ header
+``circledist/broadphase.hpp``): a bounding-volume hierarchy over the shapes' boxes and balls,
+built by the first query after a change. A shape or a pair is skipped only when a lower bound on
+its distance (box gap, ball gap, distance from a line to a ball) exceeds the limit by a margin
+far above rounding, so every answer is the one brute force gives: the exact tests that remain go
+through ``circledist.within`` / ``circledist.distance_if_within``, which try cheap exact bounds
+again before they solve a polynomial.
 
-Lines and rays are unbounded: they are kept out of the hierarchy and always tested (with
-the bounds of ``circledist.within``).
+Shapes are kept per kind (and, for Bezier curves, per control point count) in float64 arrays
+that grow by doubling, so adding n shapes one by one costs O(n) in all.
 """
 
 from __future__ import annotations
 
+from array import array
 from typing import Iterable, Sequence
 
-import functools
 import numbers
 
 import numpy as np
@@ -32,37 +32,86 @@ KIND_FIELDS = {kind: tuple(name for name, _ in fields) for kind, fields in _core
 # Trailing dimensions of a field per element (the rest is batch).
 _TRAILING = {"p": 1, "origin": 1, "direction": 1, "p0": 1, "p1": 1, "center": 1, "normal": 1,
              "radius": 0, "control_points": 2, "sweep": 0}
-UNBOUNDED = ("Line", "Ray")
 
-LEAF = 8     # shapes per leaf
-BRANCH = 4   # children per node
-BEAM = 16    # nodes per level kept by the descent that seeds a nearest query
-RELATIVE_MARGIN = 1e-9  # culling margin, relative to the scene's and the query's size
+
+class _Grown:
+    """A float64 (or int64) array of rows that grows by doubling: appending is O(1) amortized."""
+
+    def __init__(self, trailing: tuple, dtype=np.float64, data: np.ndarray | None = None):
+        self.data = np.empty((0,) + trailing, dtype) if data is None else data
+        self.count = len(self.data)
+
+    def reserve(self, extra: int) -> None:
+        if self.count + extra > len(self.data):
+            grown = np.empty((max(2 * len(self.data), self.count + extra, 16),) + self.data.shape[1:], self.data.dtype)
+            grown[:self.count] = self.data[:self.count]
+            self.data = grown
+
+    def append(self, value) -> None:
+        self.reserve(1)
+        self.data[self.count] = value
+        self.count += 1
+
+    def extend(self, values: np.ndarray) -> None:
+        self.reserve(len(values))
+        self.data[self.count:self.count + len(values)] = values
+        self.count += len(values)
+
+    @property
+    def array(self) -> np.ndarray:
+        return self.data[:self.count]
 
 
 class _Group:
-    """Shapes of one kind (and, for Bezier curves, one control point count), column-stored."""
+    """Shapes of one kind (and, for Bezier curves, one control point count), column-stored.
 
-    def __init__(self, kind: str):
+    Single shapes are appended to Python lists (the cheapest step per call) and moved into the
+    growing arrays when the arrays are next read: adding stays O(1), reading after adds O(adds).
+    """
+
+    def __init__(self, kind: str, trailing: list[tuple]):
         self.kind = kind
         self.cls = getattr(_core, kind)
         self.names = KIND_FIELDS[kind] + ("sweep",)
-        self.chunks: list[list[np.ndarray]] = []
-        self.id_chunks: list[np.ndarray] = []
-        self.fields: list[np.ndarray] | None = None
-        self.ids: np.ndarray | None = None
+        self.columns = [_Grown(t) for t in trailing]
+        self.pending: list[list] = [[] for _ in trailing]
+        self.id_column = _Grown((), np.int64)
+        self.pending_ids: list[int] = []
+        self.size = 0
 
-    def append(self, arrays: list[np.ndarray], ids: np.ndarray) -> None:
-        self.chunks.append(arrays)
-        self.id_chunks.append(ids)
-        self.fields = None
+    def __len__(self) -> int:
+        return self.size
 
-    def finish(self) -> None:
-        if self.fields is None:
-            self.fields = [np.concatenate([c[i] for c in self.chunks]) for i in range(len(self.names))]
-            self.ids = np.concatenate(self.id_chunks)
-            self.chunks = [self.fields]
-            self.id_chunks = [self.ids]
+    def append(self, values: list, item: int) -> None:
+        for pending, value in zip(self.pending, values):
+            pending.append(value)
+        self.pending_ids.append(item)
+        self.size += 1
+
+    def extend(self, values: list[np.ndarray], items: np.ndarray) -> None:
+        self._flush()
+        for column, value in zip(self.columns, values):
+            column.extend(value)
+        self.id_column.extend(items)
+        self.size += len(items)
+
+    def _flush(self) -> None:
+        if self.pending_ids:
+            for column, pending in zip(self.columns, self.pending):
+                column.extend(np.array(pending, dtype=np.float64).reshape((-1,) + column.data.shape[1:]))
+                pending.clear()
+            self.id_column.extend(np.array(self.pending_ids, dtype=np.int64))
+            self.pending_ids.clear()
+
+    @property
+    def fields(self) -> list[np.ndarray]:
+        self._flush()
+        return [c.array for c in self.columns]
+
+    @property
+    def ids(self) -> np.ndarray:
+        self._flush()
+        return self.id_column.array
 
     def batch(self, rows, column: bool = False):
         """The shapes at local rows as one batched shape; column=True gives batch shape (n, 1)."""
@@ -71,50 +120,14 @@ class _Group:
             arrays = [a[:, None] for a in arrays]
         return self.cls(*arrays[:-1], sweep=arrays[-1])
 
+    def whole(self):
+        """Every shape of the group as one batch, referring to the stored arrays (no copy)."""
+        arrays = [np.ascontiguousarray(f) for f in self.fields]
+        return self.cls(*arrays[:-1], sweep=arrays[-1], copy=False)
+
     def single(self, row: int):
         arrays = [f[row] for f in self.fields]
         return self.cls(*arrays[:-1], sweep=arrays[-1])
-
-
-def _fields_of(shape) -> tuple[str, list[np.ndarray], tuple[int, ...]]:
-    kind = shape.kind
-    arrays = [np.array(getattr(shape, name), dtype=np.float64) for name in KIND_FIELDS[kind] + ("sweep",)]
-    batch = tuple(shape.batch_shape)
-    full = []
-    for name, a in zip(KIND_FIELDS[kind] + ("sweep",), arrays):
-        trailing = a.shape[a.ndim - _TRAILING[name]:] if _TRAILING[name] else ()
-        full.append(np.broadcast_to(a, batch + trailing).reshape((-1,) + trailing))
-    return kind, full, batch
-
-
-def _group_key(kind: str, arrays: list[np.ndarray]):
-    return (kind, arrays[0].shape[1]) if kind == "Bezier" else (kind, 0)
-
-
-# ------------------------------------------------------------------------------------------
-# bounding volumes (vectorized): boxes [lo, hi] and balls (center, radius), sweeps included
-# ------------------------------------------------------------------------------------------
-def _overflow_handled():
-    """Overflow and inf - inf are handled where they matter (_norm, _conservative): no warnings."""
-    return np.errstate(over="ignore", invalid="ignore")
-
-
-def _quiet(fn):
-    @functools.wraps(fn)
-    def quiet(*args, **kwargs):
-        with _overflow_handled():
-            return fn(*args, **kwargs)
-    return quiet
-
-
-def _norm(v: np.ndarray, axis: int = -1) -> np.ndarray:
-    """Euclidean norms along `axis` that overflow only where the norm itself does (a vector of
-    1e200 has norm 1e200, not inf, as with hypot): scaled by the largest component."""
-    scale = np.abs(v).max(axis=axis, keepdims=True)
-    with _overflow_handled():
-        unit = np.where((scale > 0) & np.isfinite(scale), v / np.where(scale > 0, scale, 1.0), 0.0)
-        out = np.squeeze(scale, axis=axis) * np.sqrt((unit * unit).sum(axis=axis))
-    return np.where(np.isfinite(np.squeeze(scale, axis=axis)), out, np.inf)
 
 
 def _limit(owner: str, d) -> float:
@@ -127,126 +140,13 @@ def _limit(owner: str, d) -> float:
     return d
 
 
-def _conservative(bound: np.ndarray) -> np.ndarray:
-    """Lower bounds that rounding past overflow made NaN (inf - inf) are no bound at all: -inf,
-    so culling never drops a shape for it."""
-    return np.where(np.isnan(bound), -np.inf, bound)
-
-
-@_quiet
-def _volumes(kind: str, f: list[np.ndarray]):
-    sweep = f[-1]
-    if kind == "Point":
-        p = f[0]
-        lo, hi, center, radius = p, p, p, np.zeros(len(p))
-    elif kind == "Segment":
-        p0, p1 = f[0], f[1]
-        lo, hi = np.minimum(p0, p1), np.maximum(p0, p1)
-        center, radius = p0 / 2 + p1 / 2, _norm(p1 / 2 - p0 / 2, axis=1)
-    elif kind in ("Circle", "Disk"):
-        c, n, r = f[0], f[1], f[2]
-        nn = n / np.abs(n).max(axis=1, keepdims=True)
-        nn = nn / _norm(nn, axis=1)[:, None]
-        ext = r[:, None] * np.sqrt(np.maximum(0.0, 1.0 - nn * nn))
-        lo, hi, center, radius = c - ext, c + ext, c, r.copy()
-    elif kind == "Bezier":
-        cp = f[0]
-        lo, hi = cp.min(axis=1), cp.max(axis=1)
-        center = lo / 2 + hi / 2
-        radius = _norm(cp - center[:, None, :], axis=2).max(axis=1)
-    else:
-        raise AssertionError(kind)
-    # Rounding of the above is far below this pad (and the culling margin is larger still).
-    size = np.abs(center).max(axis=1) + radius + sweep
-    pad = 1e-12 * size
-    grow = sweep + pad
-    return lo - grow[:, None], hi + grow[:, None], center, radius + grow
-
-
-@_quiet
-def _box_gap(lo, hi, qlo, qhi):
-    gap = np.maximum(0.0, np.maximum(lo - qhi, qlo - hi))
-    return _norm(gap)
-
-
-@_quiet
-def _point_line_distance(points, origin, direction, ray: bool):
-    unit = direction / np.abs(direction).max()
-    unit = unit / _norm(unit)
-    w = points - origin
-    t = w @ unit
-    if ray:
-        t = np.maximum(t, 0.0)
-    return _norm(w - t[..., None] * unit)
-
-
-@_quiet
-def _morton(points: np.ndarray) -> np.ndarray:
-    lo, hi = points.min(axis=0), points.max(axis=0)
-    span = np.where(hi > lo, hi - lo, 1.0)
-    q = np.clip(((points - lo) / span * 1023.0).astype(np.int64), 0, 1023).astype(np.uint64)
-
-    def spread(v):
-        v = (v | (v << np.uint64(16))) & np.uint64(0x030000FF)
-        v = (v | (v << np.uint64(8))) & np.uint64(0x0300F00F)
-        v = (v | (v << np.uint64(4))) & np.uint64(0x030C30C3)
-        v = (v | (v << np.uint64(2))) & np.uint64(0x09249249)
-        return v
-
-    return (spread(q[:, 0]) << np.uint64(2)) | (spread(q[:, 1]) << np.uint64(1)) | spread(q[:, 2])
-
-
-class _Query:
-    """The bounds side of a query shape: its box and ball, or its line for lines and rays."""
-
-    def __init__(self, shape):
-        if shape.batch_shape != ():
-            raise ValueError(f"Scene queries take a single shape, got a batch of shape {shape.batch_shape}")
-        self.shape = shape
-        self.kind = shape.kind
-        kind, f, _ = _fields_of(shape)
-        self.sweep = float(f[-1][0])
-        self.unbounded = kind in UNBOUNDED
-        if self.unbounded:
-            self.origin, self.direction = f[0][0], f[1][0]
-            self.ray = kind == "Ray"
-            self.size = float(np.abs(self.origin).max())
-        else:
-            lo, hi, c, r = _volumes(kind, f)
-            self.lo, self.hi, self.center, self.radius = lo[0], hi[0], c[0], float(r[0])
-            self.size = float(np.abs(self.center).max() + self.radius)
-
-    @_quiet
-    def node_bound(self, lo, hi):
-        """Lower bounds on the distance to anything inside the boxes [lo, hi]."""
-        center = lo / 2 + hi / 2
-        half = _norm(hi / 2 - lo / 2)
-        if self.unbounded:
-            return _conservative(_point_line_distance(center, self.origin, self.direction, self.ray) - half - self.sweep)
-        gap = _box_gap(lo, hi, self.lo, self.hi)
-        return _conservative(np.maximum(gap, _norm(center - self.center) - half - self.radius))
-
-    @_quiet
-    def item_bound(self, lo, hi, center, radius):
-        """Lower bounds on the distance to shapes with these boxes and balls (inf radius: unbounded)."""
-        bounded = np.isfinite(radius)
-        out = np.zeros(len(radius))
-        if self.unbounded:
-            out[bounded] = (_point_line_distance(center[bounded], self.origin, self.direction, self.ray)
-                            - radius[bounded] - self.sweep)
-            return _conservative(out)
-        out[bounded] = np.maximum(
-            _box_gap(lo[bounded], hi[bounded], self.lo, self.hi),
-            _norm(center[bounded] - self.center) - radius[bounded] - self.radius)
-        # A bounded query against a line or ray of the scene: the line's distance to the query's ball.
-        return _conservative(out)
-
-
 class Scene:
     """Named shapes of any kinds (each a single shape) and culled queries over them.
 
-    A bounding-volume hierarchy skips the shapes a query cannot reach; every answer is the one
-    brute force over `circledist.within` and `circledist.distance` gives.
+    A bounding-volume hierarchy (the C++ broadphase of `circledist.pairs_within`) skips the
+    shapes a query cannot reach; every answer is the one brute force over `circledist.within`
+    and `circledist.distance` gives. Adding a shape costs O(1): the hierarchy is rebuilt, in
+    O(n log n), by the first query after a change. A scene pickles and deep-copies.
 
     Parameters
     ----------
@@ -282,14 +182,41 @@ class Scene:
         self._names: list[str] = []
         self._index: dict[str, int] = {}
         self._groups: dict[tuple, _Group] = {}
-        self._item_group: list[np.ndarray] = []   # chunks of (group number) per item
-        self._item_row: list[np.ndarray] = []     # chunks of (row in its group) per item
+        self._keys: dict[tuple, int] = {}          # group key -> group number
+        self._item_group = array("q")  # per item: its group number
+        self._item_row = array("q")    # per item: its row in the group
         self._built = None
         self.last_stats: dict = {}
         if shapes is not None:
             items = shapes.items() if hasattr(shapes, "items") else shapes
             for name, shape in items:
                 self.add(name, shape)
+
+    # ---- pickling and copying: the stored arrays (the hierarchy is rebuilt on demand) -------
+    def __getstate__(self) -> dict:
+        return {"names": list(self._names),
+                "groups": [(key, g.kind, [f.copy() for f in g.fields], g.ids.copy())
+                           for key, g in self._groups.items()],
+                "item_group": np.array(self._item_group, dtype=np.int64),
+                "item_row": np.array(self._item_row, dtype=np.int64),
+                "last_stats": dict(self.last_stats)}
+
+    def __setstate__(self, state: dict) -> None:
+        self._names = list(state["names"])
+        self._index = {name: i for i, name in enumerate(self._names)}
+        self._groups, self._keys = {}, {}
+        for number, (key, kind, fields, ids) in enumerate(state["groups"]):
+            key = tuple(key)
+            g = _Group(kind, [f.shape[1:] for f in fields])
+            g.columns = [_Grown(f.shape[1:], data=np.array(f, dtype=np.float64)) for f in fields]
+            g.id_column = _Grown((), np.int64, np.array(ids, dtype=np.int64))
+            g.size = len(ids)
+            self._groups[key] = g
+            self._keys[key] = number
+        self._item_group = array("q", np.asarray(state["item_group"], dtype=np.int64).tobytes())
+        self._item_row = array("q", np.asarray(state["item_row"], dtype=np.int64).tobytes())
+        self._built = None
+        self.last_stats = dict(state["last_stats"])
 
     # ---- contents --------------------------------------------------------------------------
     def __len__(self) -> int:
@@ -337,7 +264,22 @@ class Scene:
         if shape.batch_shape != ():
             raise ValueError(f"Scene.add: {name!r} is a batch of shape {shape.batch_shape}; "
                              "add batches with Scene.extend(names, batch)")
-        self._insert([name], shape)
+        if not isinstance(name, str):
+            raise TypeError(f"Scene: shape names must be strings, got {name!r}")
+        if name in self._index:
+            raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
+        # One shape: its fields as they are (trailing dimensions only), no broadcasting to do.
+        kind = shape.kind
+        values = [getattr(shape, field) for field in KIND_FIELDS[kind]]
+        values.append(shape.sweep)
+        group, number = self._group(kind, values[0].shape if kind == "Bezier" else None, values)
+        item = len(self._names)
+        self._item_group.append(number)
+        self._item_row.append(len(group))
+        group.append(values, item)
+        self._index[name] = item
+        self._names.append(name)
+        self._built = None
 
     def extend(self, names, batch) -> None:
         """Adds every shape of a batch.
@@ -373,15 +315,10 @@ class Scene:
             raise TypeError(f"Scene.extend: expected a circledist shape, got {type(batch).__name__}")
         count = int(np.prod(batch.batch_shape, dtype=np.int64))
         if isinstance(names, str):
-            start = len(self._names)
             names = [f"{names}{i}" for i in range(count)]
-            del start
         names = list(names)
         if len(names) != count:
             raise ValueError(f"Scene.extend: {len(names)} names for a batch of {count} shapes")
-        self._insert(names, batch)
-
-    def _insert(self, names: list[str], shape) -> None:
         seen = set()
         for name in names:
             if not isinstance(name, str):
@@ -389,22 +326,33 @@ class Scene:
             if name in self._index or name in seen:
                 raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
             seen.add(name)
-        kind, arrays, _ = _fields_of(shape)
-        key = _group_key(kind, arrays)
-        if key not in self._groups:
-            self._groups[key] = _Group(kind)
-        group = self._groups[key]
-        number = list(self._groups).index(key)
-        start = len(self._names)
-        ids = np.arange(start, start + len(names))
-        before = sum(len(i) for i in group.id_chunks)
-        group.append(arrays, ids)
-        self._item_group.append(np.full(len(names), number))
-        self._item_row.append(np.arange(before, before + len(names)))
-        for i, name in enumerate(names):
-            self._index[name] = start + i
+        kind = batch.kind
+        shape = tuple(batch.batch_shape)
+        values = []
+        for field in KIND_FIELDS[kind] + ("sweep",):
+            a = np.asarray(getattr(batch, field))
+            trailing = a.shape[a.ndim - _TRAILING[field]:] if _TRAILING[field] else ()
+            values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
+        group, number = self._group(kind, values[0].shape[1:] if kind == "Bezier" else None,
+                                    [np.zeros(v.shape[1:]) for v in values])
+        start, row = len(self._names), len(group)
+        self._item_group.extend([number] * count)
+        self._item_row.extend(range(row, row + count))
+        group.extend(values, np.arange(start, start + count))
+        self._index.update(zip(names, range(start, start + count)))
         self._names.extend(names)
         self._built = None
+
+    def _group(self, kind: str, control, element: list) -> tuple[_Group, int]:
+        """The group of a kind (Bezier curves: and control point count, from the shape `control`
+        of their control points), made on first use with the trailing shapes of `element`'s
+        fields (one shape's)."""
+        key = (kind, control[0]) if kind == "Bezier" else (kind, 0)
+        group = self._groups.get(key)
+        if group is None:
+            group = self._groups[key] = _Group(kind, [np.shape(v) for v in element])
+            self._keys[key] = len(self._keys)
+        return group, self._keys[key]
 
     def shape(self, name: str):
         """The shape stored under `name` (also ``scene[name]``).
@@ -431,9 +379,9 @@ class Scene:
         >>> s.shape("ring").radius
         array(2.)
         """
-        b = self._build()
         i = self._lookup(name)
-        return b.groups[b.group[i]].single(b.row[i])
+        group = list(self._groups.values())[self._item_group[i]]
+        return group.single(self._item_row[i])
 
     def __getitem__(self, name: str):
         return self.shape(name)
@@ -445,105 +393,19 @@ class Scene:
             raise KeyError(f"Scene: no shape named {name!r}") from None
 
     # ---- the hierarchy ---------------------------------------------------------------------
-    @_quiet
-    def _build(self):
+    def _build(self, workers: int = 1):
+        """The consolidated arrays and the broadphase (built once after any change)."""
         if self._built is not None:
             return self._built
         b = _Built()
         b.groups = list(self._groups.values())
-        for g in b.groups:
-            g.finish()
-        n = len(self._names)
-        b.group = np.concatenate(self._item_group) if n else np.zeros(0, int)
-        b.row = np.concatenate(self._item_row) if n else np.zeros(0, int)
-        b.lo = np.full((n, 3), -np.inf)
-        b.hi = np.full((n, 3), np.inf)
-        b.center = np.zeros((n, 3))
-        b.radius = np.full(n, np.inf)
-        b.line_origin = np.zeros((n, 3))
-        b.line_direction = np.zeros((n, 3))
-        for g in b.groups:
-            if g.kind in UNBOUNDED:
-                b.line_origin[g.ids] = g.fields[0]
-                b.line_direction[g.ids] = g.fields[1]
-                b.center[g.ids] = g.fields[0]
-                continue
-            lo, hi, c, r = _volumes(g.kind, g.fields)
-            b.lo[g.ids], b.hi[g.ids], b.center[g.ids], b.radius[g.ids] = lo, hi, c, r
-        b.bounded = np.flatnonzero(np.isfinite(b.radius))
-        b.unbounded = np.flatnonzero(~np.isfinite(b.radius))
-        b.sweep = np.zeros(n)
-        for g in b.groups:
-            b.sweep[g.ids] = g.fields[-1]
-        if len(b.bounded):
-            lo, hi = b.lo[b.bounded], b.hi[b.bounded]
-            b.scale = float(np.abs(np.concatenate([lo, hi])).max() + (hi - lo).max())
-            order = b.bounded[np.argsort(_morton(lo / 2 + hi / 2), kind="stable")]
-            b.leaf_items = order
-            starts = np.arange(0, len(order), LEAF)
-            levels = [(np.minimum.reduceat(b.lo[order], starts), np.maximum.reduceat(b.hi[order], starts))]
-            while len(levels[-1][0]) > 1:
-                lo, hi = levels[-1]
-                starts = np.arange(0, len(lo), BRANCH)
-                levels.append((np.minimum.reduceat(lo, starts), np.maximum.reduceat(hi, starts)))
-            b.levels = levels[::-1]  # root first; the last level holds the leaves
-        else:
-            b.scale = 1.0
-            b.leaf_items = np.zeros(0, int)
-            b.levels = []
-        if len(b.unbounded):
-            b.scale = max(b.scale, float(np.abs(b.line_origin[b.unbounded]).max()))
+        b.group = np.array(self._item_group, dtype=np.int64)
+        b.row = np.array(self._item_row, dtype=np.int64)
+        # The broadphase numbers the shapes group after group: order maps its numbers to items.
+        b.order = np.concatenate([g.ids for g in b.groups]) if b.groups else np.zeros(0, np.int64)
+        b.broadphase = _core._Broadphase([g.whole() for g in b.groups], workers)
         self._built = b
         return b
-
-    def _children(self, level: int, nodes: np.ndarray) -> np.ndarray:
-        """The nodes of level + 1 under `nodes` (of level `level`)."""
-        b = self._built
-        count = len(b.levels[level + 1][0])
-        kids = (nodes[:, None] * BRANCH + np.arange(BRANCH)).ravel()
-        return kids[kids < count]
-
-    def _leaf_items(self, leaves: np.ndarray) -> np.ndarray:
-        b = self._built
-        items = (leaves[:, None] * LEAF + np.arange(LEAF)).ravel()
-        items = items[items < len(b.leaf_items)]
-        return b.leaf_items[items]
-
-    def _candidates(self, q: _Query, limit: float, margin: float) -> tuple[np.ndarray, np.ndarray]:
-        """Items whose lower bound is <= limit + margin (bounded ones via the hierarchy, then
-        every unbounded one), with their lower bounds."""
-        b = self._built
-        items = np.zeros(0, int)
-        if b.levels:
-            nodes = np.zeros(1, int)
-            for level in range(len(b.levels)):
-                lo, hi = b.levels[level]
-                nodes = nodes[q.node_bound(lo[nodes], hi[nodes]) <= limit + margin]
-                if level + 1 < len(b.levels):
-                    nodes = self._children(level, nodes)
-            items = self._leaf_items(nodes)
-        items = np.concatenate([items, b.unbounded])
-        bound = q.item_bound(b.lo[items], b.hi[items], b.center[items], b.radius[items])
-        bound = self._unbounded_item_bound(q, items, bound)
-        keep = bound <= limit + margin
-        return items[keep], bound[keep]
-
-    def _unbounded_item_bound(self, q: _Query, items, bound):
-        """A bounded query against the scene's lines and rays: its ball's distance to them."""
-        b = self._built
-        if q.unbounded:
-            return bound
-        for i in np.flatnonzero(~np.isfinite(b.radius[items])):
-            item = items[i]
-            ray = b.groups[b.group[item]].kind == "Ray"
-            d = _point_line_distance(q.center, b.line_origin[item], b.line_direction[item], ray)
-            with _overflow_handled():
-                bound[i] = d - q.radius - b.sweep[item]
-        return _conservative(bound)
-
-    def _margin(self, q: _Query, limit: float) -> float:
-        b = self._built
-        return RELATIVE_MARGIN * (abs(limit) + b.scale + q.size)
 
     # ---- evaluation helpers ----------------------------------------------------------------
     def _check_kinds(self, kind: str, items: Iterable[int] | None = None) -> None:
@@ -576,6 +438,8 @@ class Scene:
             return self.shape(shape), {i}
         if not isinstance(shape, _core.Shape):
             shape = _core.Point(shape)
+        if shape.batch_shape != ():
+            raise ValueError(f"Scene queries take a single shape, got a batch of shape {shape.batch_shape}")
         return shape, set()
 
     # ---- queries ---------------------------------------------------------------------------
@@ -626,19 +490,20 @@ class Scene:
         if k < 1:
             raise ValueError(f"Scene.nearest: k must be an integer >= 1, got {k}")
         b = self._build()
-        q = _Query(shape)
-        self._check_kinds(q.kind)
+        self._check_kinds(shape.kind)
         n = len(self._names)
         available = n - len(skip)
         if available <= 0:
             return []
         k = min(k, available)
-        skip_arr = np.fromiter(skip, int, len(skip))
+        skip_arr = np.fromiter(skip, np.int64, len(skip))
         known: dict[int, float] = {}
 
-        # 1. An upper bound tau on the k-th distance: the exact distances of a few shapes reached
-        #    by a greedy descent (the best nodes by lower bound, level by level).
-        seeds = self._greedy_seeds(q, k, skip_arr)
+        # 1. An upper bound tau on the k-th distance: the exact distances of the few shapes of
+        #    smallest lower bound (the broadphase's best-first search).
+        seeds, _ = b.broadphase.nearest_by_bound(shape, k + 2 + len(skip))
+        seeds = b.order[seeds]
+        seeds = seeds[~np.isin(seeds, skip_arr)][:k + 2]
         if len(seeds):
             d = self._evaluate(shape, seeds, _core.distance)
             known.update(zip(seeds.tolist(), d.tolist()))
@@ -646,9 +511,9 @@ class Scene:
 
         # 2. Every shape whose lower bound is within tau, nearest bound first, in chunks; each
         #    chunk only evaluates where its bounds cannot show the distance exceeds tau.
-        margin = self._margin(q, 0.0 if not np.isfinite(tau) else tau)
-        items, bound = self._candidates(q, tau, margin if np.isfinite(tau) else np.inf)
-        fresh = ~np.isin(items, skip_arr) & ~np.isin(items, np.fromiter(known, int, len(known)))
+        items, bound = b.broadphase.within(shape, tau)
+        items = b.order[items]
+        fresh = ~np.isin(items, skip_arr) & ~np.isin(items, np.fromiter(known, np.int64, len(known)))
         items, bound = items[fresh], bound[fresh]
         order = np.argsort(bound, kind="stable")
         items, bound = items[order], bound[order]
@@ -656,7 +521,7 @@ class Scene:
         chunk = max(16, 2 * k)
         at = 0
         while at < len(items):
-            if np.isfinite(tau) and bound[at] > tau + self._margin(q, tau):
+            if np.isfinite(tau) and bound[at] > b.broadphase.limit(shape, tau):
                 break
             part = items[at:at + chunk]
             if np.isfinite(tau):
@@ -676,28 +541,6 @@ class Scene:
         _core._count_culled(max(culled, 0))
         self.last_stats = {"shapes": n, "tested": tested, "culled": culled}
         return [(self._names[i], d) for i, d in best]
-
-    def _greedy_seeds(self, q: _Query, k: int, skip: np.ndarray) -> np.ndarray:
-        """A few shapes likely to be among the nearest: a beam descent keeps the BEAM nodes of
-        smallest lower bound per level; of the shapes in the leaves reached (and the lines and
-        rays), the k + 2 of smallest lower bound."""
-        b = self._built
-        items = np.zeros(0, int)
-        if b.levels:
-            nodes = np.zeros(1, int)
-            for level in range(len(b.levels)):
-                lo, hi = b.levels[level]
-                if len(nodes) > BEAM:
-                    bound = q.node_bound(lo[nodes], hi[nodes])
-                    nodes = nodes[np.argsort(bound, kind="stable")[:BEAM]]
-                if level + 1 < len(b.levels):
-                    nodes = self._children(level, nodes)
-            items = self._leaf_items(nodes)
-        items = np.concatenate([items, b.unbounded])
-        items = items[~np.isin(items, skip)]
-        bound = q.item_bound(b.lo[items], b.hi[items], b.center[items], b.radius[items])
-        bound = self._unbounded_item_bound(q, items, bound)
-        return items[np.argsort(bound, kind="stable")[:k + 2]]
 
     def within(self, shape, d: float) -> list[str]:
         """Names of the scene shapes within distance d of `shape`.
@@ -734,23 +577,26 @@ class Scene:
         shape, skip = self._resolve(shape)
         d = _limit("Scene.within", d)
         b = self._build()
-        q = _Query(shape)
-        self._check_kinds(q.kind)
-        items, _ = self._candidates(q, d, self._margin(q, d))
-        items = np.sort(items[~np.isin(items, np.fromiter(skip, int, len(skip)))])
+        self._check_kinds(shape.kind)
+        items, _ = b.broadphase.within(shape, d)
+        items = np.sort(b.order[items])
+        items = items[~np.isin(items, np.fromiter(skip, np.int64, len(skip)))]
         hit = self._evaluate(shape, items, _core.within, d).astype(bool) if len(items) else np.zeros(0, bool)
         culled = len(self._names) - len(skip) - len(items)
         _core._count_culled(culled)
         self.last_stats = {"shapes": len(self._names), "tested": len(items), "culled": culled}
         return [self._names[i] for i in items[hit]]
 
-    def pairs_within(self, d: float) -> list[tuple[str, str]]:
+    def pairs_within(self, d: float, *, workers: int = 1) -> list[tuple[str, str]]:
         """Every pair of scene shapes within distance d of each other.
 
         Parameters
         ----------
         d : float
             Distance limit >= 0.
+        workers : int, default 1
+            Keyword only. Threads for the broadphase and the exact tests (SciPy's convention: -1
+            for every core); the answer is the same for any count.
 
         Returns
         -------
@@ -774,81 +620,31 @@ class Scene:
         [('ball0', 'ball1')]
         """
         d = _limit("Scene.pairs_within", d)
-        b = self._build()
+        b = self._build(workers)
         supported = _supported()
         kinds = [g.kind for g in b.groups]
         for i, ka in enumerate(kinds):
             for kb in kinds[i:]:
-                if ka == kb and len(b.groups[i].ids) < 2:
+                if ka == kb and len(b.groups[i]) < 2:
                     continue
                 if (ka, kb) not in supported:
                     raise TypeError(f"circledist has no query between a {ka} and a {kb} (the scene holds both)")
-        margin = RELATIVE_MARGIN * (d + b.scale)
-        pa, pb = self._bounded_pairs(d, margin)
-        # Lines and rays against everything after... and before them: all pairs with one of them.
-        extra_a, extra_b = [], []
-        for u in b.unbounded:
-            q = _Query(b.groups[b.group[u]].single(b.row[u]))
-            items, _ = self._candidates(q, d, self._margin(q, d))
-            items = items[items != u]
-            # A pair of two unbounded shapes is found from both ends: keep it once.
-            items = items[~(np.isin(items, b.unbounded) & (items < u))]
-            extra_a.append(np.full(len(items), u))
-            extra_b.append(items)
-        if extra_a:
-            pa = np.concatenate([pa] + extra_a)
-            pb = np.concatenate([pb] + extra_b)
+        pa, pb = b.broadphase.pairs(d, workers)
+        pa, pb = b.order[pa], b.order[pb]
         i, j = np.minimum(pa, pb), np.maximum(pa, pb)
         hit = np.zeros(len(i), bool)
         for ga in np.unique(b.group[i]) if len(i) else []:
             for gb in np.unique(b.group[j[b.group[i] == ga]]):
                 sel = np.flatnonzero((b.group[i] == ga) & (b.group[j] == gb))
                 A, B = b.groups[ga], b.groups[gb]
-                hit[sel] = _core.within(A.batch(b.row[i[sel]]), B.batch(b.row[j[sel]]), d)
+                hit[sel] = _core.within(A.batch(b.row[i[sel]]), B.batch(b.row[j[sel]]), d, workers=workers)
         n = len(self._names)
         culled = n * (n - 1) // 2 - len(i)
         _core._count_culled(culled)
         self.last_stats = {"shapes": n, "tested": len(i), "culled": culled}
         order = np.lexsort((j[hit], i[hit]))
-        return [(self._names[a], self._names[c]) for a, c in zip(i[hit][order], j[hit][order])]
-
-    def _bounded_pairs(self, d: float, margin: float):
-        """Pairs of bounded items whose boxes and balls are within d + margin (dual traversal)."""
-        b = self._built
-        if not b.levels:
-            return np.zeros(0, int), np.zeros(0, int)
-        na = np.zeros(1, int)
-        nb = np.zeros(1, int)
-        limit = d + margin
-        for level in range(len(b.levels)):
-            lo, hi = b.levels[level]
-            keep = _box_gap(lo[na], hi[na], lo[nb], hi[nb]) <= limit
-            na, nb = na[keep], nb[keep]
-            if level + 1 < len(b.levels):
-                na, nb = self._child_pairs(level, na, nb)
-        # Leaf pairs -> item pairs.
-        count = len(b.leaf_items)
-        ia = (na[:, None, None] * LEAF + np.arange(LEAF)[None, :, None])
-        ib = (nb[:, None, None] * LEAF + np.arange(LEAF)[None, None, :])
-        ia, ib = np.broadcast_arrays(ia, ib)
-        same = (na == nb)[:, None, None]
-        ok = (ia < count) & (ib < count) & (~same | (ia < ib))
-        ia, ib = b.leaf_items[ia[ok]], b.leaf_items[ib[ok]]
-        with _overflow_handled():
-            gap = _conservative(np.maximum(_box_gap(b.lo[ia], b.hi[ia], b.lo[ib], b.hi[ib]),
-                                           _norm(b.center[ia] - b.center[ib]) - b.radius[ia] - b.radius[ib]))
-        keep = gap <= limit
-        return ia[keep], ib[keep]
-
-    def _child_pairs(self, level: int, na: np.ndarray, nb: np.ndarray):
-        b = self._built
-        count = len(b.levels[level + 1][0])
-        ca = (na[:, None, None] * BRANCH + np.arange(BRANCH)[None, :, None])
-        cb = (nb[:, None, None] * BRANCH + np.arange(BRANCH)[None, None, :])
-        ca, cb = np.broadcast_arrays(ca, cb)
-        same = (na == nb)[:, None, None]
-        ok = (ca < count) & (cb < count) & (~same | (ca <= cb))
-        return ca[ok], cb[ok]
+        names = self._names
+        return [(names[a], names[c]) for a, c in zip(i[hit][order].tolist(), j[hit][order].tolist())]
 
     def distance_matrix(self, a_names: Sequence[str], b_names: Sequence[str]) -> np.ndarray:
         """The distances between every named shape of a_names (rows) and of b_names (columns).
@@ -894,7 +690,7 @@ class Scene:
 
 
 class _Built:
-    """The consolidated arrays and the hierarchy of a scene (rebuilt after any change)."""
+    """The consolidated arrays and the broadphase of a scene (rebuilt after any change)."""
 
 
 _SUPPORTED: set | None = None

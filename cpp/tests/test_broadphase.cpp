@@ -1,0 +1,268 @@
+// The broadphase (broadphase.hpp) against brute force: its candidate pairs are exactly the pairs
+// whose lower bound is within the limit (every pair checked), the lower bounds never exceed the
+// exact distance, and no pair the exact distance puts within d is culled. Random mixed sets
+// (lines and rays among them, swept shapes), duplicates, every shape at one spot, d = 0 with
+// touching shapes, empty sets; the k nearest by bound, and the exact k nearest built on them.
+#include <circledist/broadphase.hpp>
+#include <circledist/circledist.hpp>
+
+#include "check.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <random>
+#include <set>
+#include <utility>
+#include <variant>
+#include <vector>
+
+using namespace circledist;
+
+namespace {
+
+using V = Vec3<double>;
+using Any = std::variant<Swept<V>, Swept<Line3<double>>, Swept<Ray3<double>>, Swept<Segment3<double>>,
+                         Swept<Circle3<double>>, Swept<Disk3<double>>, Swept<BezierCurve3<double>>>;
+using Pairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
+
+std::mt19937_64 rng(20261125);
+double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
+V random_vector(double s) { return V(uniform(-s, s), uniform(-s, s), uniform(-s, s)); }
+V random_direction() {
+  V v;
+  do v = random_vector(1); while (v.norm() < 0.1);
+  return v;
+}
+
+// A shape of a random kind near `at` (kinds in [first, last)), swept by up to `sweep`.
+Any random_shape(const V& at, int first = 0, int last = 7, double sweep = 0.3) {
+  const double r = uniform(0, 1) < 0.5 ? 0.0 : uniform(0, sweep);
+  switch (std::uniform_int_distribution<int>(first, last - 1)(rng)) {
+    case 0: return swept(V(at), r);
+    case 1: return swept(Line3<double>{at, random_direction()}, r);
+    case 2: return swept(Ray3<double>{at, random_direction()}, r);
+    case 3: return swept(Segment3<double>{at, V(at + random_vector(1.5))}, r);
+    case 4: return swept(Circle3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
+    case 5: return swept(Disk3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
+    default: {
+      BezierCurve3<double> b;
+      b.control.resize(3, 4);
+      for (int i = 0; i < 4; ++i) b.control.col(i) = at + random_vector(1.0);
+      return swept(b, r);
+    }
+  }
+}
+
+std::vector<Volume<double>> volumes_of(const std::vector<Any>& shapes) {
+  std::vector<Volume<double>> out;
+  for (const Any& s : shapes) out.push_back(std::visit([](const auto& x) { return volume(x); }, s));
+  return out;
+}
+
+// The exact distance, or NaN where the library has no query for the pair (Bezier curves with
+// anything but circles and disks).
+double exact(const Any& a, const Any& b) {
+  return std::visit(
+      [](const auto& x, const auto& y) -> double {
+        using A = core_t<std::decay_t<decltype(x)>>;
+        using B = core_t<std::decay_t<decltype(y)>>;
+        if constexpr (has_symmetric_query_v<A, B>) return distance(x, y);
+        else return std::nan("");
+      },
+      a, b);
+}
+
+// Pairs within d that the checks saw (the sets must exercise the culling, not only far pairs).
+long exercised = 0;
+
+bool kept(double bound, double limit) { return !(bound > limit); }
+
+// Checks one pair of sets (b_same: B is A, pairs i < j) at distance d against brute force.
+void check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_same, double d) {
+  const std::vector<Volume<double>> va = volumes_of(a), vb = volumes_of(b);
+  const BoundingVolumeHierarchy<double> tree(vb);
+  const BoundingVolumeHierarchy<double> tree_a(va);
+  const double scale = std::max(tree.scale(), tree_a.scale());
+  const double limit = cull_limit(d, scale);
+  Pairs got;
+  if (b_same) {
+    // In two parts, as threads split the work, joined by sort_pairs.
+    const BroadIndex half = tree.size() / 2;
+    candidate_pairs(tree, limit, 0, half, got);
+    candidate_pairs(tree, limit, half, tree.size(), got);
+    sort_pairs(got, tree.size());
+    CHECK(got == candidate_pairs(tree, limit));
+  } else {
+    const std::vector<BroadIndex> order = spatial_order(va);
+    const BroadIndex half = BroadIndex(a.size()) / 2;
+    candidate_pairs(va, order, tree, limit, 0, half, got);
+    candidate_pairs(va, order, tree, limit, half, BroadIndex(a.size()), got);
+    sort_pairs(got, BroadIndex(a.size()));
+    CHECK(got == candidate_pairs(va, tree, limit));
+  }
+  Pairs expected;
+  for (size_t i = 0; i < a.size(); ++i) {
+    for (size_t j = b_same ? i + 1 : 0; j < b.size(); ++j) {
+      const double bound = lower_bound(va[i], vb[j]);
+      if (kept(bound, limit)) expected.emplace_back(BroadIndex(i), BroadIndex(j));
+      const double D = exact(a[i], b[j]);
+      if (D == D) {
+        // Lower bounds hold (up to rounding far below the margin).
+        CHECK(!(bound > D + 1e-12 * (1 + scale)));
+        // Nothing within d is culled.
+        if (D <= d) {
+          ++exercised;
+          CHECK(kept(bound, limit));
+        }
+      }
+    }
+  }
+  CHECK(got == expected);
+  if (got != expected) {
+    std::printf("  sets of %zu and %zu, d = %g: %zu candidates, brute force %zu\n", a.size(), b.size(), d, got.size(), expected.size());
+    for (size_t k = 0, shown = 0; k < expected.size() && shown < 5; ++k)
+      if (std::find(got.begin(), got.end(), expected[k]) == got.end()) {
+        const auto& [i, j] = expected[k];
+        std::printf("  missing (%td, %td): bound %g, kinds %d %d\n", i, j, lower_bound(va[size_t(i)], vb[size_t(j)]), int(va[size_t(i)].kind), int(vb[size_t(j)].kind));
+        ++shown;
+      }
+  }
+  CHECK(std::is_sorted(got.begin(), got.end()));
+}
+
+// The k nearest of B to each shape of A: the k smallest bounds as brute force sorts them, and the
+// exact k nearest found from them (tau = the largest exact distance of the k by bound; every
+// shape with bound <= tau tested) equal to sorting every exact distance.
+void check_nearest(const std::vector<Any>& a, const std::vector<Any>& b, BroadIndex k) {
+  const std::vector<Volume<double>> va = volumes_of(a), vb = volumes_of(b);
+  const BoundingVolumeHierarchy<double> tree(vb);
+  const double scale = std::max(tree.scale(), BoundingVolumeHierarchy<double>(va).scale());
+  for (size_t i = 0; i < a.size(); ++i) {
+    const auto by_bound = tree.nearest_by_bound(va[i], k);
+    std::vector<std::pair<double, BroadIndex>> all;
+    for (size_t j = 0; j < b.size(); ++j) {
+      double bound = lower_bound(va[i], vb[j]);
+      if (bound != bound) bound = -INFINITY;
+      all.emplace_back(bound, BroadIndex(j));
+    }
+    std::sort(all.begin(), all.end());
+    all.resize(std::min<size_t>(all.size(), size_t(k)));
+    CHECK(by_bound == all);
+    // The exact k nearest (pairs without a query are left out of these sets).
+    double tau = -INFINITY;
+    for (const auto& [bound, j] : by_bound) tau = std::max(tau, exact(a[i], b[size_t(j)]));
+    std::set<BroadIndex> tested;
+    for (const auto& e : by_bound) tested.insert(e.second);
+    if (std::isfinite(tau)) {
+      tree.visit_within(va[i], cull_limit(tau, scale), [&](BroadIndex j, double) { tested.insert(j); });
+    } else {
+      for (size_t j = 0; j < b.size(); ++j) tested.insert(BroadIndex(j));
+    }
+    std::vector<std::pair<double, BroadIndex>> found, brute;
+    for (const BroadIndex j : tested) found.emplace_back(exact(a[i], b[size_t(j)]), j);
+    for (size_t j = 0; j < b.size(); ++j) brute.emplace_back(exact(a[i], b[j]), BroadIndex(j));
+    std::sort(found.begin(), found.end());
+    std::sort(brute.begin(), brute.end());
+    found.resize(std::min<size_t>(found.size(), size_t(k)));
+    brute.resize(std::min<size_t>(brute.size(), size_t(k)));
+    CHECK(found == brute);
+  }
+}
+
+std::vector<Any> random_set(int n, double box, int first = 0, int last = 7) {
+  std::vector<Any> out;
+  for (int i = 0; i < n; ++i) out.push_back(random_shape(random_vector(box), first, last));
+  return out;
+}
+
+}  // namespace
+
+int main() {
+  // Random mixed sets without Bezier curves (every pair has an exact distance), then with them.
+  for (const double box : {3.0, 10.0}) {
+    const std::vector<Any> a = random_set(220, box, 0, 6), b = random_set(180, box, 0, 6);
+    for (const double d : {0.0, 0.25, 1.0}) {
+      check_sets(a, b, false, d);
+      check_sets(a, a, true, d);
+    }
+    check_nearest(a, b, 1);
+    check_nearest(a, b, 5);
+    check_nearest(a, a, 3);
+  }
+  {
+    std::vector<Any> rounds = random_set(150, 6.0, 4, 6), curves = random_set(120, 6.0, 6, 7);
+    check_sets(curves, rounds, false, 0.5);
+    check_sets(rounds, curves, false, 0.0);
+    check_nearest(curves, rounds, 4);
+    std::vector<Any> mixed = random_set(200, 6.0);
+    check_sets(mixed, mixed, true, 0.4);
+  }
+  // Only bounded shapes, then only lines and rays.
+  {
+    const std::vector<Any> a = random_set(300, 8.0, 3, 6);
+    check_sets(a, a, true, 0.2);
+    const std::vector<Any> lines = random_set(40, 8.0, 1, 3);
+    check_sets(lines, a, false, 0.1);
+    check_sets(a, lines, false, 0.0);
+    check_sets(lines, lines, true, 0.0);
+    check_nearest(lines, a, 3);
+    check_nearest(a, lines, 2);
+  }
+  // Duplicates: each shape four times.
+  {
+    std::vector<Any> a = random_set(60, 4.0, 0, 6), dup;
+    for (int copy = 0; copy < 4; ++copy) dup.insert(dup.end(), a.begin(), a.end());
+    check_sets(dup, dup, true, 0.0);
+    check_sets(dup, a, false, 0.3);
+    check_nearest(a, dup, 6);
+  }
+  // Every shape at one spot: points (all pairs at distance 0), then mixed kinds.
+  {
+    std::vector<Any> points(200, Any(swept(V(1.5, -2, 0.25), 0.0)));
+    check_sets(points, points, true, 0.0);
+    const std::vector<Volume<double>> v = volumes_of(points);
+    const BoundingVolumeHierarchy<double> tree(v);
+    CHECK(candidate_pairs(tree, cull_limit(0.0, tree.scale())).size() == 200u * 199u / 2u);
+    check_nearest(points, points, 7);
+    std::vector<Any> spot;
+    for (int i = 0; i < 120; ++i) spot.push_back(random_shape(V(1, 1, 1)));
+    check_sets(spot, spot, true, 0.0);
+    check_sets(spot, points, false, 0.0);
+  }
+  // Touching at d = 0: balls in contact, segments end to end, a point on a ring. Each pair is a
+  // candidate, and the candidates are exactly those brute force keeps.
+  {
+    const std::vector<Any> a = {swept(V(0, 0, 0), 0.5), swept(Segment3<double>{V(3, 0, 0), V(4, 0, 0)}, 0.0),
+                                swept(Circle3<double>{V(10, 0, 0), V(0, 0, 1), 2.0}, 0.0)};
+    const std::vector<Any> b = {swept(V(1, 0, 0), 0.5), swept(Segment3<double>{V(4, 0, 0), V(5, 1, 0)}, 0.0),
+                                swept(V(12, 0, 0), 0.0), swept(V(30, 0, 0), 0.0)};
+    check_sets(a, b, false, 0.0);
+    const std::vector<Volume<double>> va = volumes_of(a), vb = volumes_of(b);
+    const BoundingVolumeHierarchy<double> tree(vb);
+    const Pairs got = candidate_pairs(va, tree, cull_limit(0.0, std::max(tree.scale(), 12.0)));
+    for (const auto& p : Pairs{{0, 0}, {1, 1}, {2, 2}})
+      CHECK(std::find(got.begin(), got.end(), p) != got.end());
+    CHECK(std::none_of(got.begin(), got.end(), [](const auto& p) { return p.second == 3; }));
+  }
+  // Empty sets.
+  {
+    const std::vector<Any> none, some = random_set(10, 2.0);
+    check_sets(none, some, false, 1.0);
+    check_sets(some, none, false, 1.0);
+    check_sets(none, none, true, 1.0);
+    const BoundingVolumeHierarchy<double> empty{std::vector<Volume<double>>{}};
+    CHECK(empty.nearest_by_bound(volumes_of(some)[0], 3).empty());
+    CHECK(empty.scale() == 0);
+  }
+  // Overflowed volumes are always candidates.
+  {
+    const Volume<double> huge = volume(Segment3<double>{V(-1e308, 0, 0), V(1e308, 0, 0)});
+    CHECK(huge.kind == Volume<double>::Kind::Anywhere);
+    CHECK(lower_bound(huge, volume(V(0, 5, 0))) == -INFINITY);
+    const Volume<double> far_line = volume(Line3<double>{V(0, 0, 0), V(1e200, 1e200, 0)});
+    CHECK_NEAR(lower_bound(far_line, volume(V(0, 1, 0))), std::sqrt(0.5), 1e-15);
+  }
+  CHECK(exercised > 20000);
+  return check::finish("test_broadphase");
+}

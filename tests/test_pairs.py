@@ -1,0 +1,297 @@
+"""circledist.pairs_within and circledist.nearest against brute force: a double loop over single
+`circledist.distance` calls (or, for the larger sets, the full matrix of distances), compared to
+the bit: the same pairs, the same order, the same distances and dtypes. Every kind pair (swept
+shapes, lines and rays among them), batch shapes indexed flat, empty batches, k larger than b,
+d = 0 with touching shapes, duplicates, every worker count, precisions, and bad arguments."""
+
+import itertools
+
+import numpy as np
+import pytest
+
+import circledist as cd
+
+KINDS = ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"]
+# The trailing (per element) dimensions of each constructor argument: the rest is batch.
+TRAILING = {"p": 1, "origin": 1, "direction": 1, "p0": 1, "p1": 1, "center": 1, "normal": 1, "radius": 0,
+            "control_points": 2, "sweep": 0}
+SUPPORTED = {tuple(p) for p in cd._core._query_kinds()}
+
+
+def random_batch(kind, n, rng, box=4.0, swept=True):
+    """n shapes of a kind around a box of side 2 * box; half of them swept (when `swept`)."""
+    at = rng.uniform(-box, box, (n, 3))
+    sweep = np.where(rng.random(n) < 0.5, 0.0, rng.uniform(0, 0.4, n)) if swept else None
+    if kind == "Point":
+        args = (at,)
+    elif kind in ("Line", "Ray"):
+        args = (at, rng.normal(size=(n, 3)))
+    elif kind == "Segment":
+        args = (at, at + rng.uniform(-1.5, 1.5, (n, 3)))
+    elif kind in ("Circle", "Disk"):
+        args = (at, rng.normal(size=(n, 3)), rng.uniform(0.1, 1.2, n))
+    else:
+        args = (at[:, None, :] + rng.uniform(-1, 1, (n, 4, 3)),)
+    return getattr(cd, kind)(*args, sweep=sweep)
+
+
+def size(shape):
+    return int(np.prod(shape.batch_shape, dtype=np.int64))
+
+
+def elements(shape):
+    """The single shapes of a batch, in flat C order (fields broadcast within the shape first)."""
+    arrays = shape.to_arrays()
+    batch = shape.batch_shape
+    flat = {}
+    for name, value in arrays.items():
+        trailing = value.shape[value.ndim - TRAILING[name]:] if TRAILING[name] else ()
+        flat[name] = np.broadcast_to(value, batch + trailing).reshape((-1,) + trailing)
+    return [type(shape).from_arrays({name: v[i] for name, v in flat.items()}) for i in range(size(shape))]
+
+
+def brute_pairs(a, b, d, **options):
+    """(i, j, distance) of every pair with distance(a[i], b[j]) <= d, by single calls."""
+    ea = elements(a)
+    eb = ea if b is None else elements(b)
+    found = []
+    for i, x in enumerate(ea):
+        for j, y in enumerate(eb):
+            if b is None and j <= i:
+                continue
+            dist = cd.distance(x, y, **options)
+            if dist <= d:
+                found.append((i, j, dist))
+    return found
+
+
+def brute_nearest(a, b, k, **options):
+    rows = []
+    for x in elements(a):
+        found = sorted((cd.distance(x, y, **options), j) for j, y in enumerate(elements(b)))[:k]
+        rows.append(found + [(np.inf, -1)] * (k - len(found)))
+    return rows
+
+
+def assert_pairs(got, expected, dtype=np.float64):
+    i, j, dist = got
+    assert i.dtype == np.intp and j.dtype == np.intp and dist.dtype == dtype
+    assert i.shape == j.shape == dist.shape == (len(expected),)
+    assert list(zip(i.tolist(), j.tolist())) == [(e[0], e[1]) for e in expected]
+    # To the bit: the single calls' floats (or long doubles) are the pairs' distances.
+    assert np.array_equal(dist, np.array([e[2] for e in expected], dtype=dtype))
+
+
+def assert_nearest(got, expected, dtype=np.float64):
+    idx, dist = got
+    k = len(expected[0]) if expected else idx.shape[1]
+    assert idx.shape == dist.shape == (len(expected), k)
+    assert idx.dtype == np.intp and dist.dtype == dtype
+    assert idx.tolist() == [[j for _, j in row] for row in expected]
+    assert np.array_equal(dist, np.array([[v for v, _ in row] for row in expected], dtype=dtype).reshape(dist.shape))
+
+
+@pytest.mark.parametrize("ka,kb", [p for p in itertools.product(KINDS, KINDS) if p in SUPPORTED])
+def test_every_kind_pair_equals_brute_force(ka, kb):
+    rng = np.random.default_rng(abs(hash((ka, kb))) % 2**32)
+    a, b = random_batch(ka, 14, rng), random_batch(kb, 12, rng)
+    for d in (0.0, 0.5, 2.0):
+        assert_pairs(cd.pairs_within(a, b, d), brute_pairs(a, b, d))
+    assert_nearest(cd.nearest(a, b, k=3), brute_nearest(a, b, 3))
+    if ka == kb:
+        assert_pairs(cd.pairs_within(a, None, 1.0), brute_pairs(a, None, 1.0))
+
+
+@pytest.mark.parametrize("ka,kb", [p for p in itertools.product(KINDS, KINDS) if p not in SUPPORTED])
+def test_pairs_without_a_query_raise(ka, kb):
+    rng = np.random.default_rng(1)
+    a, b = random_batch(ka, 3, rng), random_batch(kb, 3, rng, box=1000.0)
+    with pytest.raises(TypeError, match=f"no query between a {ka} \\(a\\) and a {kb} \\(b\\)"):
+        cd.pairs_within(a, b, 0.1)
+    with pytest.raises(TypeError, match="no query"):
+        cd.nearest(a, b)
+
+
+def column(shape):
+    """A batch of shape (n,) made (n, 1), to broadcast against another batch into a matrix."""
+    return type(shape).from_arrays({k: np.expand_dims(v, 1) if v.ndim > TRAILING[k] else v
+                                    for k, v in shape.to_arrays().items()})
+
+
+def test_larger_mixed_sets_equal_the_distance_matrix():
+    """Rings against segments, lines, rays, disks and points, swept, in a box where pairs are
+    neither rare nor everywhere: pairs and nearest equal the full distance matrix's."""
+    rng = np.random.default_rng(7)
+    rings = random_batch("Circle", 500, rng, box=10.0)
+    for kind in ("Segment", "Line", "Ray", "Disk", "Point"):
+        other = random_batch(kind, 300, rng, box=10.0)
+        matrix = cd.distance(column(rings), other)  # rows: rings
+        for d in (0.0, 0.3, 1.0):
+            i, j = np.nonzero(matrix <= d)
+            i_got, j_got, dist = cd.pairs_within(rings, other, d)
+            assert np.array_equal(i_got, i) and np.array_equal(j_got, j)
+            assert np.array_equal(dist, matrix[i, j])
+        idx, dist = cd.nearest(rings, other, k=4)
+        order = np.lexsort((np.broadcast_to(np.arange(300), matrix.shape), matrix), axis=1)[:, :4]
+        assert np.array_equal(idx, order)
+        assert np.array_equal(dist, np.take_along_axis(matrix, order, axis=1))
+    # Within one set, i < j.
+    matrix = cd.distance(column(rings), rings)
+    for d in (0.0, 0.4):
+        i, j = np.nonzero(np.triu(matrix <= d, k=1))
+        i_got, j_got, dist = cd.pairs_within(rings, None, d)
+        assert len(i) > 0 or d == 0.0
+        assert np.array_equal(i_got, i) and np.array_equal(j_got, j)
+        assert np.array_equal(dist, matrix[i, j])
+
+
+def test_batches_are_indexed_flat():
+    rng = np.random.default_rng(3)
+    centers = rng.uniform(-3, 3, (3, 4, 3))
+    rings = cd.Circle(centers, [0, 0, 1], 1.0, sweep=[[0.0], [0.1], [0.2]])  # radius and sweep broadcast
+    points = cd.Point(rng.uniform(-3, 3, (2, 5, 3)))
+    assert_pairs(cd.pairs_within(rings, points, 0.7), brute_pairs(rings, points, 0.7))
+    assert_pairs(cd.pairs_within(rings, None, 0.5), brute_pairs(rings, None, 0.5))
+    assert_nearest(cd.nearest(points, rings, k=2), brute_nearest(points, rings, 2))
+    # Single shapes are batches of one; arrays of points are Points.
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    assert_pairs(cd.pairs_within(ring, [[1, 0, 0.5], [5, 0, 0]], 0.5), [(0, 0, 0.5)])
+    assert_pairs(cd.pairs_within(ring, ring, 0.0), [(0, 0, 0.0)])
+    assert_nearest(cd.nearest([0, 0, 3], ring, k=2), [[(cd.distance([0, 0, 3], ring), 0), (np.inf, -1)]])
+
+
+def test_empty_batches_and_k_beyond_b():
+    rng = np.random.default_rng(4)
+    none = cd.Point(np.zeros((0, 3)))
+    some = random_batch("Circle", 5, rng)
+    for got in (cd.pairs_within(none, some, 1.0), cd.pairs_within(some, none, 1.0), cd.pairs_within(none, None, 1.0)):
+        assert_pairs(got, [])
+    idx, dist = cd.nearest(none, some, k=3)
+    assert idx.shape == dist.shape == (0, 3)
+    idx, dist = cd.nearest(some, none, k=2)
+    assert idx.tolist() == [[-1, -1]] * 5 and np.all(np.isinf(dist))
+    # k larger than b: every shape of b, then -1 and inf (as cKDTree pads with len(b) and inf).
+    assert_nearest(cd.nearest(some, some, k=8), brute_nearest(some, some, 8))
+    assert cd.pairs_within(random_batch("Segment", 1, rng), None, 5.0)[0].shape == (0,)
+
+
+def test_touching_shapes_at_d_zero():
+    balls = cd.Point([[0, 0, 0], [1, 0, 0], [2.5, 0, 0]], sweep=0.5)  # 0-1 touch, 1-2 do not
+    assert_pairs(cd.pairs_within(balls, None, 0.0), [(0, 1, 0.0)])
+    segments = cd.Segment([[0, 0, 0], [1, 0, 0], [5, 5, 5]], [[1, 0, 0], [2, 1, 0], [6, 5, 5]])
+    assert_pairs(cd.pairs_within(segments, None, 0.0), brute_pairs(segments, None, 0.0))
+    assert [tuple(p) for p in zip(*cd.pairs_within(segments, None, 0.0)[:2])] == [(0, 1)]
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    on_ring = cd.Point([[1, 0, 0], [0, -1, 0], [0, 0, 0]])
+    assert_pairs(cd.pairs_within(on_ring, ring, 0.0), brute_pairs(on_ring, ring, 0.0))
+    disks = cd.Disk([[0, 0, 0], [2, 0, 0]], [[0, 0, 1], [0, 0, 1]], 1.0)  # rims touch at (1, 0, 0)
+    assert_pairs(cd.pairs_within(disks, None, 0.0), brute_pairs(disks, None, 0.0))
+    assert len(cd.pairs_within(disks, None, 0.0)[0]) == 1
+
+
+def test_duplicates_and_one_spot():
+    rng = np.random.default_rng(5)
+    base = random_batch("Disk", 6, rng)
+    arrays = {k: np.concatenate([v] * 4) for k, v in base.to_arrays().items()}
+    dup = cd.Disk.from_arrays(arrays)
+    assert_pairs(cd.pairs_within(dup, None, 0.0), brute_pairs(dup, None, 0.0))
+    assert_nearest(cd.nearest(base, dup, k=5), brute_nearest(base, dup, 5))
+    spot = cd.Point(np.full((40, 3), 1.25))
+    i, j, dist = cd.pairs_within(spot, None, 0.0)
+    assert len(i) == 40 * 39 // 2 and np.all(dist == 0) and np.all(i < j)
+    idx, dist = cd.nearest(spot, spot, k=3)
+    assert idx.tolist() == [[0, 1, 2]] * 40 and np.all(dist == 0)
+
+
+def test_every_worker_count_gives_the_same_bits():
+    rng = np.random.default_rng(6)
+    rings = random_batch("Circle", 3000, rng, box=12.0)
+    segments = random_batch("Segment", 3000, rng, box=12.0)
+    lines = random_batch("Line", 20, rng, box=12.0)
+    results = [cd.pairs_within(rings, segments, 0.2, workers=w) for w in (1, 2, -1)]
+    selfs = [cd.pairs_within(rings, None, 0.1, workers=w) for w in (1, 2, -1)]
+    nears = [cd.nearest(segments, rings, k=3, workers=w) for w in (1, 2, -1)]
+    liness = [cd.pairs_within(lines, rings, 0.05, workers=w) for w in (1, 2, -1)]
+    for group in (results, selfs, nears, liness):
+        for other in group[1:]:
+            for x, y in zip(group[0], other):
+                assert x.dtype == y.dtype and np.array_equal(x, y)
+    assert len(results[0][0]) > 100 and len(liness[0][0]) > 10
+    with pytest.raises(ValueError, match="workers must be a positive integer or -1"):
+        cd.pairs_within(rings, segments, 0.2, workers=0)
+
+
+@pytest.mark.parametrize("precision,dtype", [("float32", np.float32), ("longdouble", np.longdouble),
+                                             ("float64", np.float64)])
+def test_precisions_equal_brute_force(precision, dtype):
+    rng = np.random.default_rng(8)
+    a, b = random_batch("Circle", 12, rng), random_batch("Segment", 12, rng)
+    assert_pairs(cd.pairs_within(a, b, 1.0, precision=precision), brute_pairs(a, b, 1.0, precision=precision), dtype)
+    assert_nearest(cd.nearest(a, b, 3, precision=precision), brute_nearest(a, b, 3, precision=precision), dtype)
+    for solver in ("companion", "polished"):
+        assert_pairs(cd.pairs_within(a, b, 1.0, precision=precision, solver=solver),
+                     brute_pairs(a, b, 1.0, precision=precision, solver=solver), dtype)
+    # Inputs given as float32 (precision=None follows them) and as long double.
+    a32 = cd.Circle.from_arrays({k: np.asarray(v, np.float32) for k, v in a.to_arrays().items()})
+    assert_pairs(cd.pairs_within(a32, b.to_arrays()["p0"].astype(np.float32), 1.5),
+                 brute_pairs(a32, cd.Point(b.to_arrays()["p0"].astype(np.float32)), 1.5), np.float32)
+    along = cd.Circle.from_arrays({k: np.asarray(v, np.longdouble) for k, v in a.to_arrays().items()})
+    assert_pairs(cd.pairs_within(along, b, 1.0), brute_pairs(along, b, 1.0), np.longdouble)
+
+
+@pytest.mark.parametrize("d,error,match", [
+    (-1.0, ValueError, "pairs_within: d must be a finite number >= 0, got -1.0"),
+    (float("nan"), ValueError, "pairs_within: d must be a finite number >= 0, got nan"),
+    (float("inf"), ValueError, "pairs_within: d must be a finite number >= 0, got inf"),
+    ("0.1", TypeError, "pairs_within: d must be a real number >= 0, got '0.1'"),
+    (None, TypeError, "pairs_within: d must be a real number >= 0, got None"),
+    (True, TypeError, "pairs_within: d must be a real number >= 0, got True"),
+    (np.array([0.1, 0.2]), TypeError, "pairs_within: d must be a real number"),
+])
+def test_bad_d(d, error, match):
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    with pytest.raises(error, match=match.replace("(", r"\(").replace(")", r"\)")):
+        cd.pairs_within(ring, ring, d)
+
+
+@pytest.mark.parametrize("k,error,match", [
+    (0, ValueError, "nearest: k must be an integer >= 1, got 0"),
+    (-2, ValueError, "nearest: k must be an integer >= 1, got -2"),
+    (1.5, TypeError, "nearest: k must be an integer >= 1, got 1.5"),
+    ("2", TypeError, "nearest: k must be an integer >= 1, got '2'"),
+    (True, TypeError, "nearest: k must be an integer >= 1, got True"),
+])
+def test_bad_k(k, error, match):
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    with pytest.raises(error, match=match):
+        cd.nearest(ring, ring, k)
+
+
+def test_numpy_integers_and_reals_are_accepted():
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    assert cd.nearest(ring, ring, np.int64(2))[0].shape == (1, 2)
+    assert len(cd.pairs_within(ring, ring, np.float32(0.5))[0]) == 1
+
+
+def test_bad_shapes_name_the_argument():
+    """As distance(): what is not a shape is read as points, and a ValueError when it is not."""
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    with pytest.raises(ValueError, match="pairs_within: b must be a circledist shape or an array of points, got str"):
+        cd.pairs_within(ring, "ring", 1.0)
+    with pytest.raises(ValueError, match="pairs_within: a must be a circledist shape or an array of points"):
+        cd.pairs_within([1, 2], ring, 1.0)
+    with pytest.raises(ValueError, match="nearest: b must be a circledist shape or an array of points, got object"):
+        cd.nearest(ring, object())
+    with pytest.raises(ValueError, match="nearest: a must be"):
+        cd.nearest(None, ring)
+
+
+def test_culled_pairs_are_counted():
+    rng = np.random.default_rng(9)
+    a = random_batch("Point", 200, rng, box=50.0)
+    cd.reset_stats()
+    i, _, _ = cd.pairs_within(a, None, 0.5)
+    s = cd.stats()
+    # Every pair is either evaluated or culled.
+    assert s["distances"] + s["culled"] == 200 * 199 // 2
+    assert s["culled"] > 19000
