@@ -253,3 +253,246 @@ def closest_points(a, b, *, precision=None, solver=None, workers=1):
                                      new_axis=new_axis, chunks=solved.chunks + tuple((n,) for n in trailing),
                                      name=f"closest-{name}-" + dask.base.tokenize(solved, name))
     return ClosestPoints(**fields)
+
+
+# ---- pairs_within: spatial tiles --------------------------------------------------------------
+
+def _flat(shape):
+    """The fields broadcast to the batch and flattened: (N, per-element...), one chunking."""
+    n = int(np.prod(shape.batch_shape, dtype=np.int64))
+    flat = {}
+    for name, value in shape.fields.items():
+        core = value.shape[value.ndim - _CORE_NDIM[name]:] if _CORE_NDIM[name] else ()
+        flat[name] = da.broadcast_to(value, shape.batch_shape + core).reshape((n,) + core)
+    # The finest chunking any field has along the batch: broadcast fields follow it.
+    chunks = max((v.chunks[0] for v in flat.values()), key=len)
+    return n, chunks, {name: v.rechunk({0: chunks}) for name, v in flat.items()}
+
+
+def _balls(kind, fields):
+    """Each element's bounding ball (centers (n, 3), radii (n,)), or None for lines and rays."""
+    if kind in ("Line", "Ray"):
+        return None
+    if kind == "Point":
+        c, r = fields["p"], np.zeros(len(fields["p"]))
+    elif kind == "Segment":
+        c = (fields["p0"] + fields["p1"]) / 2
+        r = np.linalg.norm(fields["p1"] - fields["p0"], axis=-1) / 2
+    elif kind in ("Circle", "Disk"):
+        c, r = fields["center"], fields["radius"]
+    else:
+        # A Bezier curve lies in its control points' convex hull, so in their ball about the mean.
+        c = fields["control_points"].mean(axis=1)
+        r = np.linalg.norm(fields["control_points"] - c[:, None], axis=-1).max(axis=1)
+    c, r = np.asarray(c, np.float64), np.asarray(r, np.float64)
+    if "sweep" in fields:
+        r = r + fields["sweep"]
+    return c, r
+
+
+def _extent(kind, fields):
+    """(lowest center, highest center, largest radius, largest |coordinate|) of a chunk."""
+    balls = _balls(kind, fields)
+    if balls is None or len(balls[1]) == 0:
+        return None
+    c, r = balls
+    return c.min(axis=0), c.max(axis=0), r.max(), np.abs(c).max() + r.max()
+
+
+class _Grid:
+    """Cubic tiles of side `side` over the box [lo, hi] of A's ball centers; or, when A is
+    unbounded (lines, rays), one tile per A chunk."""
+
+    def __init__(self, lo, hi, side, pad, scale, n_chunks=None):
+        self.lo, self.side, self.pad, self.scale = lo, side, pad, scale
+        self.chunk_tiles = n_chunks
+        if n_chunks is not None:
+            self.dims, self.size = None, n_chunks
+        else:
+            self.dims = np.maximum(1, np.ceil((hi - lo) / side).astype(np.int64))
+            self.hi = hi
+            self.size = int(np.prod(self.dims))
+
+    def cell(self, x):
+        # Monotone in x, so a center between two bounds lands between their cells.
+        return np.clip(np.floor((x - self.lo) / self.side), 0, self.dims - 1).astype(np.int64)
+
+    def owners(self, kind, fields, chunk):
+        """The tile of each A element: the one holding its ball's center."""
+        if self.dims is None:
+            return np.full(len(next(iter(fields.values()))), chunk, np.int64)
+        i = self.cell(_balls(kind, fields)[0])
+        return (i[:, 0] * self.dims[1] + i[:, 1]) * self.dims[2] + i[:, 2]
+
+    def reach(self, kind, fields):
+        """(element, tile) for every tile each B element's padded ball can reach."""
+        n = len(next(iter(fields.values())))
+        balls = _balls(kind, fields)
+        if balls is None or self.dims is None:
+            # Unbounded B, or A tiled by chunk: every element to every tile.
+            e, t = np.meshgrid(np.arange(n), np.arange(self.size), indexing="ij")
+            return e.ravel(), t.ravel()
+        c, r = balls
+        pad = self.pad + r
+        # A margin far above the rounding of these bounds and of float32 inputs (their rounding
+        # moves a shape by eps32 * scale): a pair within d is never left out of a tile; a wider
+        # pad only costs replication, never a duplicate (A elements have one tile each).
+        pad = pad + 4e-4 * (pad + self.scale + np.abs(c).max(axis=1))
+        low, high = c - pad[:, None], c + pad[:, None]
+        keep = np.all((high >= self.lo) & (low <= self.hi), axis=1)
+        e = np.nonzero(keep)[0]
+        lo_i, hi_i = self.cell(low[e]), self.cell(high[e])
+        counts = np.prod(hi_i - lo_i + 1, axis=1)
+        owner = np.repeat(e, counts)
+        # Each element's box of cells, enumerated by one running index per element.
+        k = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
+        span = (hi_i - lo_i + 1)[np.repeat(np.arange(len(e)), counts)]
+        base = lo_i[np.repeat(np.arange(len(e)), counts)]
+        iz = base[:, 2] + k % span[:, 2]
+        iy = base[:, 1] + (k // span[:, 2]) % span[:, 1]
+        ix = base[:, 0] + k // (span[:, 2] * span[:, 1])
+        return owner, (ix * self.dims[1] + iy) * self.dims[2] + iz
+
+
+def _count_a(fields, kind, grid, chunk):
+    return np.bincount(grid.owners(kind, fields, chunk), minlength=grid.size)
+
+
+def _count_b(fields, kind, grid):
+    return np.bincount(grid.reach(kind, fields)[1], minlength=grid.size)
+
+
+def _split(fields, kind, grid, chunk, offset, is_a):
+    """{tile: (global indices, fields)} of a chunk's elements, B's replicated."""
+    if is_a:
+        tiles = grid.owners(kind, fields, chunk)
+        element = np.arange(len(tiles))
+    else:
+        element, tiles = grid.reach(kind, fields)
+    order = np.argsort(tiles, kind="stable")
+    element, tiles = element[order], tiles[order]
+    starts = np.flatnonzero(np.r_[True, tiles[1:] != tiles[:-1]]) if len(tiles) else []
+    parts = {}
+    for s, e in zip(starts, list(starts[1:]) + [len(tiles)]):
+        take = element[s:e]
+        parts[int(tiles[s])] = (offset + take, {n: v[take] for n, v in fields.items()})
+    return parts
+
+
+def _join(parts):
+    idx = np.concatenate([p[0] for p in parts])
+    return idx, {n: np.concatenate([p[1][n] for p in parts]) for n in parts[0][1]}
+
+
+def _tile_pairs(a_parts, b_parts, kinds, d, self_pairs, a_bounds, options):
+    """cd.pairs_within in one tile, indices made global, split by A's output chunk."""
+    ia, fa = _join(a_parts)
+    ib, fb = _join(b_parts)
+    i, j, dist = _core.pairs_within(_block_shape(kinds[0], fa), _block_shape(kinds[1], fb), d, **options)
+    i, j = ia[i], ib[j]
+    if self_pairs:  # b is a: each unordered pair once, as cd.pairs_within(a, None) gives it
+        keep = i < j
+        i, j, dist = i[keep], j[keep], dist[keep]
+    out = {}
+    for c, (start, stop) in a_bounds.items():
+        mine = (i >= start) & (i < stop)
+        out[c] = (i[mine], j[mine], dist[mine])
+    return out
+
+
+def _merge(parts, dtype):
+    if not parts:
+        return np.empty(0, np.intp), np.empty(0, np.intp), np.empty(0, dtype)
+    i, j, dist = (np.concatenate(x) for x in zip(*parts))
+    order = np.lexsort((j, i))
+    return i[order].astype(np.intp), j[order].astype(np.intp), dist[order]
+
+
+def _blocks(chunks, flat):
+    """Per chunk: a delayed dict of that chunk's field blocks."""
+    per_field = {n: v.to_delayed().ravel() for n, v in flat.items()}
+    return [dask.delayed(dict)(**{n: per_field[n][c] for n in flat}) for c in range(len(chunks))]
+
+
+def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1):
+    """`circledist.pairs_within` over batches too large for one machine, partitioned in space.
+
+    Each shape of a belongs to the tile (a cube of space) holding its bounding ball's center;
+    each shape of b is copied into every tile its ball, padded by d plus the largest ball of a,
+    reaches (lines and rays: every tile). Each tile is answered by `circledist.pairs_within`, so
+    every pair within d is found exactly once, with cd's distances to the bit. When a holds lines
+    or rays, its chunks are the tiles and every b goes to every tile.
+
+    Parameters
+    ----------
+    a, b : dask shape, circledist shape or array of points
+        Indexed flat, in C order, as `circledist.pairs_within`; b None pairs a with itself (i < j).
+    d : float
+        Distance limit, finite and >= 0.
+    tiles : int, optional
+        About how many tiles to cut a's box into (default: 4 per chunk of a). More tiles mean
+        smaller tasks and more copies of b.
+    precision, solver, workers
+        As `circledist.pairs_within`, for each tile.
+
+    Returns
+    -------
+    i, j, distance : dask arrays of unknown chunk sizes, one chunk per chunk of a
+        Sorted by (i, j); ``dask.compute(i, j, distance)`` gives cd.pairs_within's columns.
+        The tiles' sizes are counted (computed) when this is called; the pairs, when the
+        results are computed.
+    """
+    d = float(d)
+    if not math.isfinite(d) or d < 0:
+        raise ValueError(f"pairs_within: d must be a finite number >= 0, got {d}")
+    self_pairs = b is None
+    a = _as_dask_shape(a)
+    b = a if self_pairs else _as_dask_shape(b)
+    options = _options(precision, solver, workers)
+    kinds = (a.kind, b.kind)
+    # Raises TypeError for kinds without a query, as cd does, and gives the distances' dtype.
+    dtype = _core.pairs_within(_dummy(a), _dummy(b), 0.0, **options)[2].dtype
+    na, chunks_a, flat_a = _flat(a)
+    nb, chunks_b, flat_b = _flat(b)
+    blocks_a, blocks_b = _blocks(chunks_a, flat_a), _blocks(chunks_b, flat_b)
+    starts_a = np.r_[0, np.cumsum(chunks_a)]
+    starts_b = np.r_[0, np.cumsum(chunks_b)]
+    empty = dask.delayed(_merge)([], dtype)
+    if na and nb:
+        extents = [x for x in dask.compute(*[dask.delayed(_extent)(a.kind, f) for f in blocks_a])
+                   if x is not None]
+        if extents:
+            lo = np.min([x[0] for x in extents], axis=0)
+            hi = np.max([x[1] for x in extents], axis=0)
+            pad = d + max(x[2] for x in extents)
+            scale = max(x[3] for x in extents)
+            per_axis = math.ceil((tiles or 4 * len(chunks_a)) ** (1 / 3))
+            # No thinner than the padding: thinner tiles would only copy each b more often.
+            side = max(float(np.max(hi - lo)) / per_axis, pad, 1e-300)
+            grid = _Grid(lo, hi, side, pad, scale)
+        else:
+            grid = _Grid(None, None, None, d, 0.0, n_chunks=len(chunks_a))
+        count_a = [dask.delayed(_count_a)(f, a.kind, grid, c) for c, f in enumerate(blocks_a)]
+        count_b = [dask.delayed(_count_b)(f, b.kind, grid) for f in blocks_b]
+        count_a, count_b = dask.compute(count_a, count_b)
+        count_a, count_b = np.array(count_a), np.array(count_b)
+        split_a = [dask.delayed(_split)(f, a.kind, grid, c, starts_a[c], True) for c, f in enumerate(blocks_a)]
+        split_b = [dask.delayed(_split)(f, b.kind, grid, c, starts_b[c], False) for c, f in enumerate(blocks_b)]
+        per_chunk = {c: [] for c in range(len(chunks_a))}
+        for t in np.flatnonzero(count_a.sum(axis=0) * count_b.sum(axis=0)):
+            ca, cb = np.flatnonzero(count_a[:, t]), np.flatnonzero(count_b[:, t])
+            answered = dask.delayed(_tile_pairs)(
+                [dask.delayed(operator.getitem)(split_a[c], t) for c in ca],
+                [dask.delayed(operator.getitem)(split_b[c], t) for c in cb], kinds, d, self_pairs,
+                {int(c): (int(starts_a[c]), int(starts_a[c + 1])) for c in ca}, options)
+            for c in ca:
+                per_chunk[c].append(dask.delayed(operator.getitem)(answered, int(c)))
+        merged = [dask.delayed(_merge)(per_chunk[c], dtype) for c in range(len(chunks_a))]
+    else:
+        merged = [empty]
+    columns = []
+    for k, column_dtype in enumerate((np.intp, np.intp, dtype)):
+        columns.append(da.concatenate([
+            da.from_delayed(dask.delayed(operator.getitem)(m, k), (np.nan,), dtype=column_dtype)
+            for m in merged]))
+    return tuple(columns)
