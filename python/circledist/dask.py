@@ -11,6 +11,7 @@ is answered alone there, so the results are those of `circledist` on the whole b
 Needs the `circledist[dask]` extra (dask[array]; distributed for clusters).
 """
 
+import functools
 import math
 import operator
 
@@ -22,6 +23,8 @@ except ImportError as error:  # pragma: no cover - exercised only without dask
         "circledist.dask needs dask: pip install 'circledist[dask]' (dask[array], distributed)"
     ) from error
 import numpy as np
+from dask.delayed import Delayed
+from dask.highlevelgraph import HighLevelGraph
 
 from . import _core
 
@@ -354,15 +357,15 @@ class _Grid:
         return owner, (ix * self.dims[1] + iy) * self.dims[2] + iz
 
 
-def _count_a(fields, kind, grid, chunk):
+def _count_a(fields, *, kind, grid, chunk):
     return np.bincount(grid.owners(kind, fields, chunk), minlength=grid.size)
 
 
-def _count_b(fields, kind, grid):
+def _count_b(fields, *, kind, grid):
     return np.bincount(grid.reach(kind, fields)[1], minlength=grid.size)
 
 
-def _split(fields, kind, grid, chunk, offset, is_a):
+def _split(fields, *, kind, grid, chunk, offset, is_a):
     """{tile: (global indices, fields)} of a chunk's elements, B's replicated."""
     if is_a:
         tiles = grid.owners(kind, fields, chunk)
@@ -384,7 +387,7 @@ def _join(parts):
     return idx, {n: np.concatenate([p[1][n] for p in parts]) for n in parts[0][1]}
 
 
-def _tile_pairs(a_parts, b_parts, kinds, d, self_pairs, a_bounds, options):
+def _tile_pairs(a_parts, b_parts, *, kinds, d, self_pairs, a_bounds, options):
     """cd.pairs_within in one tile, indices made global, split by A's output chunk."""
     ia, fa = _join(a_parts)
     ib, fb = _join(b_parts)
@@ -400,7 +403,7 @@ def _tile_pairs(a_parts, b_parts, kinds, d, self_pairs, a_bounds, options):
     return out
 
 
-def _merge(parts, dtype):
+def _merge(parts, *, dtype):
     if not parts:
         return np.empty(0, np.intp), np.empty(0, np.intp), np.empty(0, dtype)
     i, j, dist = (np.concatenate(x) for x in zip(*parts))
@@ -408,10 +411,36 @@ def _merge(parts, dtype):
     return i[order].astype(np.intp), j[order].astype(np.intp), dist[order]
 
 
-def _blocks(chunks, flat):
-    """Per chunk: a delayed dict of that chunk's field blocks."""
-    per_field = {n: v.to_delayed().ravel() for n, v in flat.items()}
-    return [dask.delayed(dict)(**{n: per_field[n][c] for n in flat}) for c in range(len(chunks))]
+def _fields_of(names, *blocks):
+    return dict(zip(names, blocks))
+
+
+class _Graph:
+    """A task graph written directly: nested dask.delayed calls re-walk the whole graph at each
+    call, which took seconds for a few thousand tasks; this builds it once."""
+
+    def __init__(self, name, dependencies):
+        self.name, self.dependencies, self.tasks = name, list(dependencies), {}
+
+    def add(self, key, function, *args):
+        key = (self.name,) + key
+        self.tasks[key] = (function,) + args
+        return key
+
+    def graph(self):
+        return HighLevelGraph.from_collections(self.name, dict(self.tasks), dependencies=self.dependencies)
+
+    def compute(self, keys):
+        graph = self.graph()
+        return dask.compute([Delayed(k, graph, layer=self.name) for k in keys])[0]
+
+
+def _chunk_fields(g, label, flat):
+    """Per chunk: the key of a task giving that chunk's fields as a dict."""
+    names = list(flat)
+    keys = [list(dask.core.flatten(v.__dask_keys__())) for v in flat.values()]
+    return [g.add((label, c), functools.partial(_fields_of, names), *[k[c] for k in keys])
+            for c in range(len(keys[0]))]
 
 
 def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1):
@@ -454,13 +483,16 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
     dtype = _core.pairs_within(_dummy(a), _dummy(b), 0.0, **options)[2].dtype
     na, chunks_a, flat_a = _flat(a)
     nb, chunks_b, flat_b = _flat(b)
-    blocks_a, blocks_b = _blocks(chunks_a, flat_a), _blocks(chunks_b, flat_b)
-    starts_a = np.r_[0, np.cumsum(chunks_a)]
-    starts_b = np.r_[0, np.cumsum(chunks_b)]
-    empty = dask.delayed(_merge)([], dtype)
+    token = dask.base.tokenize(a.fields, b.fields, d, tiles, options, self_pairs)
+    g = _Graph(f"pairs-within-{token}", list(flat_a.values()) + list(flat_b.values()))
+    blocks_a, blocks_b = _chunk_fields(g, "a", flat_a), _chunk_fields(g, "b", flat_b)
+    starts_a = np.r_[0, np.cumsum(chunks_a)].astype(np.int64)
+    starts_b = np.r_[0, np.cumsum(chunks_b)].astype(np.int64)
+    merged = []
     if na and nb:
-        extents = [x for x in dask.compute(*[dask.delayed(_extent)(a.kind, f) for f in blocks_a])
-                   if x is not None]
+        extents = g.compute([g.add(("extent", c), functools.partial(_extent, a.kind), f)
+                             for c, f in enumerate(blocks_a)])
+        extents = [x for x in extents if x is not None]
         if extents:
             lo = np.min([x[0] for x in extents], axis=0)
             hi = np.max([x[1] for x in extents], axis=0)
@@ -472,27 +504,43 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
             grid = _Grid(lo, hi, side, pad, scale)
         else:
             grid = _Grid(None, None, None, d, 0.0, n_chunks=len(chunks_a))
-        count_a = [dask.delayed(_count_a)(f, a.kind, grid, c) for c, f in enumerate(blocks_a)]
-        count_b = [dask.delayed(_count_b)(f, b.kind, grid) for f in blocks_b]
-        count_a, count_b = dask.compute(count_a, count_b)
-        count_a, count_b = np.array(count_a), np.array(count_b)
-        split_a = [dask.delayed(_split)(f, a.kind, grid, c, starts_a[c], True) for c, f in enumerate(blocks_a)]
-        split_b = [dask.delayed(_split)(f, b.kind, grid, c, starts_b[c], False) for c, f in enumerate(blocks_b)]
+        # The tiles' sizes first, so that the graph below holds only non-empty parts.
+        counts = g.compute(
+            [g.add(("count-a", c), functools.partial(_count_a, kind=a.kind, grid=grid, chunk=c), f)
+             for c, f in enumerate(blocks_a)]
+            + [g.add(("count-b", c), functools.partial(_count_b, kind=b.kind, grid=grid), f)
+               for c, f in enumerate(blocks_b)])
+        count_a, count_b = np.array(counts[:len(blocks_a)]), np.array(counts[len(blocks_a):])
+        split_a = [g.add(("split-a", c), functools.partial(_split, kind=a.kind, grid=grid, chunk=c,
+                                                           offset=starts_a[c], is_a=True), f)
+                   for c, f in enumerate(blocks_a)]
+        split_b = [g.add(("split-b", c), functools.partial(_split, kind=b.kind, grid=grid, chunk=c,
+                                                           offset=starts_b[c], is_a=False), f)
+                   for c, f in enumerate(blocks_b)]
         per_chunk = {c: [] for c in range(len(chunks_a))}
         for t in np.flatnonzero(count_a.sum(axis=0) * count_b.sum(axis=0)):
+            t = int(t)
             ca, cb = np.flatnonzero(count_a[:, t]), np.flatnonzero(count_b[:, t])
-            answered = dask.delayed(_tile_pairs)(
-                [dask.delayed(operator.getitem)(split_a[c], t) for c in ca],
-                [dask.delayed(operator.getitem)(split_b[c], t) for c in cb], kinds, d, self_pairs,
-                {int(c): (int(starts_a[c]), int(starts_a[c + 1])) for c in ca}, options)
+            answered = g.add(
+                ("tile", t),
+                functools.partial(_tile_pairs, kinds=kinds, d=d, self_pairs=self_pairs, options=options,
+                                  a_bounds={int(c): (int(starts_a[c]), int(starts_a[c + 1])) for c in ca}),
+                [g.add(("part-a", int(c), t), operator.getitem, split_a[c], t) for c in ca],
+                [g.add(("part-b", int(c), t), operator.getitem, split_b[c], t) for c in cb])
             for c in ca:
-                per_chunk[c].append(dask.delayed(operator.getitem)(answered, int(c)))
-        merged = [dask.delayed(_merge)(per_chunk[c], dtype) for c in range(len(chunks_a))]
+                per_chunk[c].append(g.add(("answer", int(c), t), operator.getitem, answered, int(c)))
+        merged = [g.add(("merged", c), functools.partial(_merge, dtype=dtype), per_chunk[c])
+                  for c in range(len(chunks_a))]
     else:
-        merged = [empty]
+        merged = [g.add(("merged", 0), functools.partial(_merge, dtype=dtype), [])]
     columns = []
-    for k, column_dtype in enumerate((np.intp, np.intp, dtype)):
-        columns.append(da.concatenate([
-            da.from_delayed(dask.delayed(operator.getitem)(m, k), (np.nan,), dtype=column_dtype)
-            for m in merged]))
+    # The columns' layers name the pairs' layer as a dependency: a task's arguments are read as
+    # keys only when their layer depends on the layer holding them.
+    solved = Delayed(merged[0], g.graph(), layer=g.name)
+    for k, (label, column_dtype) in enumerate((("i", np.intp), ("j", np.intp), ("distance", dtype))):
+        column = _Graph(f"pairs-within-{label}-{token}", [solved])
+        for c, m in enumerate(merged):
+            column.add((c,), operator.getitem, m, k)
+        columns.append(da.Array(column.graph(), column.name, chunks=((np.nan,) * len(merged),),
+                                dtype=column_dtype))
     return tuple(columns)
