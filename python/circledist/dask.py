@@ -121,7 +121,9 @@ def _as_dask_shape(x):
 
 
 def _block_shape(kind, fields):
-    return getattr(_core, kind).from_arrays(fields)
+    # copy=False: the blocks are dask's, unchanged while the call runs and dropped after it; a
+    # copy of a 2*10^6 point-circle chunk cost 1.0 s against 0.09 s (the query itself: 0.2 s).
+    return getattr(_core, kind).from_arrays(fields, copy=False)
 
 
 # A dummy element per field, to learn the answers' dtypes from circledist itself (its rule: the
