@@ -52,7 +52,7 @@ missing_requirements() {  # missing_requirements EXTRA... -- TOOL... (tools/pypr
 }
 case "$task" in
   demo) extras=(plot) ;;
-  test) extras=(test plot docs) ;;  # docs: the stubs' check and the docs build (tests/test_stubs.py, test_docs.py)
+  test) extras=(test plot docs dask) ;;  # docs: the stubs' check and the docs build (tests/test_stubs.py, test_docs.py); dask: tests/test_dask.py on a LocalCluster
   docs) extras=(docs) ;;
   fuzz) extras=(test) ;;  # the fuzz and the differential test check against the tests' mpmath references
   bench) extras=(bench) ;;

@@ -1,0 +1,231 @@
+"""circledist.dask against the single-process circledist calls, to the bit, computed on a real
+distributed.LocalCluster of two worker processes: every kind pair with chunkings that line up and
+that do not, (N, 1) x (M,) broadcasting, circledist shapes and point arrays as arguments,
+precisions and solvers, one solve behind all of closest_points' attributes, and pairs_within on
+random and clustered scenes (lines and rays, self pairs, empty batches)."""
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+pytest.importorskip("dask.array")
+distributed = pytest.importorskip("distributed")
+
+import dask  # noqa: E402
+import dask.array as da  # noqa: E402
+
+import circledist as cd  # noqa: E402
+import circledist.dask as cdd  # noqa: E402
+from test_pairs import SUPPORTED, TRAILING, random_batch  # noqa: E402
+
+KIND_PAIRS = sorted(SUPPORTED)
+
+
+@pytest.fixture(scope="module")
+def client():
+    # No dashboard: its fixed port may be taken by another run on this machine.
+    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as c:
+        yield c
+
+
+def chunked(shape, chunks):
+    """The dask shape of a circledist shape, its batched fields cut into `chunks`."""
+    fields = {name: da.from_array(value, chunks={0: chunks} if value.ndim > TRAILING[name] else -1)
+              for name, value in shape.to_arrays().items()}
+    return getattr(cdd, shape.kind).from_arrays(fields)
+
+
+def same(got, expected):
+    got, expected = np.asarray(got), np.asarray(expected)
+    assert got.dtype == expected.dtype and got.shape == expected.shape
+    # Equal values and signs of zero: the same bits (long double's padding bytes aside; no NaN here).
+    assert np.array_equal(got, expected)
+    if got.dtype.kind == "f":
+        assert np.array_equal(np.signbit(got), np.signbit(expected))
+
+
+def every_kind_pair(n, chunkings, seed):
+    """(dask answers, cd answers) of every query on every kind pair, in the given chunkings."""
+    rng = np.random.default_rng(seed)
+    lazy, expected = [], []
+    for ka, kb in KIND_PAIRS:
+        a, b = random_batch(ka, n, rng), random_batch(kb, n, rng)
+        d = rng.uniform(0, 3, n)
+        for ca, cb in chunkings:
+            da_, db_ = chunked(a, ca), chunked(b, cb)
+            r = cdd.closest_points(da_, db_)
+            lazy += [cdd.distance(da_, db_), cdd.within(da_, db_, d)] + [getattr(r, n) for n, _ in cdd._RESULT_FIELDS]
+            e = cd.closest_points(a, b)
+            expected += [cd.distance(a, b), cd.within(a, b, d)] + [getattr(e, n) for n, _ in cdd._RESULT_FIELDS]
+        # circledist shapes go through to_arrays().
+        lazy.append(cdd.distance(a, chunked(b, 6)))
+        expected.append(cd.distance(a, b))
+    return lazy, expected
+
+
+def test_every_kind_pair_and_chunking_equals_the_single_process_calls():
+    # Chunks that line up (5 and 5), that do not (4 and 7), one chunk against many; in this
+    # process (the cluster test below runs the same graphs over two worker processes).
+    lazy, expected = every_kind_pair(17, ((5, 5), (4, 7), (17, 3)), 18)
+    for got, e in zip(dask.compute(*lazy, scheduler="sync"), expected):
+        same(got, e)
+
+
+def test_every_kind_pair_on_the_cluster(client):
+    lazy, expected = every_kind_pair(12, ((4, 7),), 19)
+    for got, e in zip(dask.compute(*lazy), expected):
+        same(got, e)
+
+
+def test_broadcasting_n1_by_m(client):
+    rng = np.random.default_rng(3)
+    rings, points = random_batch("Circle", 17, rng), random_batch("Point", 29, rng)
+    arrays = rings.to_arrays()
+    column = {name: v[:, None] for name, v in arrays.items()}
+    rings_n1 = cd.Circle.from_arrays(column)
+    # Fields chunked three ways, and one a NumPy array.
+    lazy_rings = cdd.Circle(da.from_array(column["center"], chunks=(5, 1, 3)), column["normal"],
+                            da.from_array(column["radius"], chunks=(4, 1)),
+                            sweep=da.from_array(column["sweep"], chunks=(6, 1)))
+    lazy_points = chunked(points, 8)
+    # d broadcasting against both, and a point array read as points, as cd reads it.
+    d = rng.uniform(0, 4, (1, 29))
+    got = dask.compute(cdd.distance(lazy_rings, lazy_points), cdd.within(lazy_rings, lazy_points, d),
+                       cdd.closest_points(lazy_rings, lazy_points).point_a,
+                       cdd.distance(lazy_rings, da.from_array(points.to_arrays()["p"], chunks=10)))
+    assert got[0].shape == (17, 29)
+    same(got[0], cd.distance(rings_n1, points))
+    same(got[1], cd.within(rings_n1, points, d))
+    same(got[2], cd.closest_points(rings_n1, points).point_a)
+    same(got[3], cd.distance(rings_n1, points.to_arrays()["p"]))
+
+
+@pytest.mark.parametrize("precision", [None, "float32", "longdouble"])
+@pytest.mark.parametrize("solver", ["bracketing", "companion"])
+def test_precision_solver_and_workers_pass_through(client, precision, solver):
+    rng = np.random.default_rng(5)
+    a, b = random_batch("Disk", 20, rng), random_batch("Bezier", 20, rng)
+    opts = {"precision": precision, "solver": solver}
+    got = dask.compute(cdd.distance(chunked(a, 6), chunked(b, 9), workers=2, **opts),
+                       cdd.closest_points(chunked(a, 6), chunked(b, 9), **opts).point_b)
+    same(got[0], cd.distance(a, b, **opts))
+    same(got[1], cd.closest_points(a, b, **opts).point_b)
+
+
+def test_float32_fields_keep_float32():
+    rng = np.random.default_rng(6)
+    p = rng.normal(size=(10, 3)).astype(np.float32)
+    ring = cd.Circle(np.float32([0, 0, 0]), np.float32([0, 0, 1]), np.float32(1))
+    got = cdd.distance(cdd.Point(da.from_array(p, chunks=3)), ring).compute(scheduler="sync")
+    same(got, cd.distance(cd.Point(p), ring))
+
+
+def test_closest_points_solves_once_for_all_attributes(monkeypatch):
+    calls = []
+    solve = cdd._closest_block
+
+    def counting(*blocks, **kwargs):
+        calls.append(1)
+        return solve(*blocks, **kwargs)
+
+    monkeypatch.setattr(cdd, "_closest_block", counting)
+    rng = np.random.default_rng(7)
+    r = cdd.closest_points(chunked(random_batch("Circle", 12, rng), 4), chunked(random_batch("Line", 12, rng), 4))
+    dask.compute(*[getattr(r, n) for n, _ in cdd._RESULT_FIELDS], scheduler="sync")
+    assert len(calls) == 3  # three chunks, each solved once
+
+
+def test_kinds_without_a_query_and_bad_fields_raise():
+    line = cdd.Line([0, 0, 0], [1, 0, 0])
+    with pytest.raises(TypeError):
+        cdd.distance(line, cdd.Bezier([[0, 0, 0], [1, 1, 1]]))
+    with pytest.raises(ValueError, match="center"):
+        cdd.Circle(np.zeros((4, 2)), [0, 0, 1], 1.0)
+    with pytest.raises(ValueError, match="do not broadcast"):
+        cdd.Circle(np.zeros((4, 3)), [0, 0, 1], np.ones(5))
+    with pytest.raises(ValueError, match="d must be"):
+        cdd.pairs_within(line, line, -1.0)
+
+
+def scene(kind, n, rng, clustered):
+    """Random shapes over a box, or packed into three tight clusters (many per tile)."""
+    if not clustered:
+        return random_batch(kind, n, rng, box=8.0)
+    arrays = random_batch(kind, n, rng, box=0.5).to_arrays()
+    spots = rng.uniform(-8, 8, (3, 3))[rng.integers(0, 3, n)]
+    for name in ("p", "origin", "p0", "p1", "center"):
+        if name in arrays:
+            arrays[name] = arrays[name] + spots
+    if "control_points" in arrays:
+        arrays["control_points"] = arrays["control_points"] + spots[:, None]
+    return getattr(cd, kind).from_arrays(arrays)
+
+
+PAIR_CASES = [("Circle", "Segment"), ("Point", "Circle"), ("Disk", "Disk"), ("Bezier", "Circle"),
+              ("Line", "Disk"), ("Segment", "Ray"), ("Line", "Line"), ("Circle", "Bezier")]
+
+
+def pairs_cases(clustered, n_a, n_b, cases):
+    rng = np.random.default_rng(11 + clustered)
+    lazy, expected = [], []
+    for ka, kb in cases:
+        a, b = scene(ka, n_a, rng, clustered), scene(kb, n_b, rng, clustered)
+        for d, tiles in ((0.0, None), (0.4, 50), (1.5, 8)):
+            lazy.append(cdd.pairs_within(chunked(a, n_a // 3), chunked(b, n_b // 2 - 1), d, tiles=tiles))
+            expected.append(cd.pairs_within(a, b, d))
+        if ka == kb:
+            lazy.append(cdd.pairs_within(chunked(a, n_a // 4), None, 0.7))
+            expected.append(cd.pairs_within(a, None, 0.7))
+    return lazy, expected
+
+
+def check_pairs(got, expected):
+    found = 0
+    for g, e in zip(got, expected):
+        for x, y in zip(g, e):
+            same(x, y)
+        found += len(e[0])
+    return found
+
+
+@pytest.mark.parametrize("clustered", [False, True])
+def test_pairs_within_equals_the_single_process_call(clustered):
+    lazy, expected = pairs_cases(clustered, 70, 56, PAIR_CASES)
+    # The scenes are dense enough for many pairs across tile borders.
+    assert check_pairs(dask.compute(*lazy, scheduler="sync"), expected) > 300
+
+
+@pytest.mark.parametrize("clustered", [False, True])
+def test_pairs_within_on_the_cluster(client, clustered):
+    lazy, expected = pairs_cases(clustered, 200, 150, [("Circle", "Segment"), ("Line", "Disk")])
+    assert check_pairs(dask.compute(*lazy), expected) > 200
+
+
+def test_pairs_within_a_batch_shape_and_empty_batches(client):
+    rng = np.random.default_rng(13)
+    rings = random_batch("Circle", 24, rng)
+    arrays = {n: (v.reshape((4, 6) + v.shape[1:]) if v.ndim and v.shape[0] == 24 else v)
+              for n, v in rings.to_arrays().items()}
+    grid_rings = cd.Circle.from_arrays(arrays)
+    points = rng.uniform(-4, 4, (40, 3))
+    got = dask.compute(*cdd.pairs_within(grid_rings, da.from_array(points, chunks=(9, 3)), 1.0))
+    for g, e in zip(got, cd.pairs_within(grid_rings, points, 1.0)):
+        same(g, e)
+    none = cd.Point(np.zeros((0, 3)))
+    for g, e in zip(dask.compute(*cdd.pairs_within(none, rings, 1.0)), cd.pairs_within(none, rings, 1.0)):
+        same(g, e)
+    for g, e in zip(dask.compute(*cdd.pairs_within(rings, none, 1.0)), cd.pairs_within(rings, none, 1.0)):
+        same(g, e)
+
+
+def test_circledist_does_not_import_dask_and_the_error_without_it_is_clear():
+    run = subprocess.run([sys.executable, "-c", "import sys, circledist; assert 'dask' not in sys.modules"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    # sys.modules[name] = None makes that import fail, as an environment without dask would.
+    run = subprocess.run([sys.executable, "-c", "import sys; sys.modules['dask'] = None; import circledist.dask"],
+                         capture_output=True, text=True)
+    assert "circledist.dask needs dask: pip install 'circledist[dask]'" in run.stderr
