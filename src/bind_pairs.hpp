@@ -11,7 +11,6 @@
 #include <circledist/broadphase.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -97,24 +96,6 @@ void fill_volumes(const Shape& s, Index begin, Index end, Volume<double>* out) {
     case kDisk: return fill_volumes<Disk3<double>>(s, e, begin, end, out);
     default: return fill_volumes<BezierCurve3<double>>(s, e, begin, end, out);
   }
-}
-
-// Runs work(begin, end) over [0, size) in chunks on `workers` threads, the GIL released (Ctrl-C
-// between the caller's chunks raises KeyboardInterrupt, as the batched calls do).
-template <class Work> void run_released(Index size, int workers, Work&& work) {
-  bool complete;
-  {
-    py::gil_scoped_release release;
-    auto checked = std::chrono::steady_clock::now();
-    complete = run_in_chunks(size, workers, work, [&] {
-      const auto now = std::chrono::steady_clock::now();
-      if (now - checked < std::chrono::milliseconds(50)) return false;
-      checked = now;
-      py::gil_scoped_acquire gil;
-      return PyErr_CheckSignals() != 0;
-    });
-  }
-  if (!complete) throw py::error_already_set();
 }
 
 // The volumes of several shapes' elements, one after the other (flat indices, in order).

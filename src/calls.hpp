@@ -47,6 +47,25 @@ inline bool swept(const Shape& s) {
   return !(sweep.batch.empty() && *sweep.data() == 0);
 }
 
+// Runs work(begin, end) over [0, size) in chunks on `workers` threads, the GIL released; Ctrl-C (a
+// signal Python has seen, checked every 50 ms between the caller's chunks) stops it and raises
+// KeyboardInterrupt. Every batched call and the all-pairs queries (bind_pairs.hpp) run this way.
+template <class Work> void run_released(Index size, int workers, Work&& work) {
+  bool complete;
+  {
+    py::gil_scoped_release release;
+    auto checked = std::chrono::steady_clock::now();
+    complete = run_in_chunks(size, workers, work, [&] {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - checked < std::chrono::milliseconds(50)) return false;
+      checked = now;
+      py::gil_scoped_acquire gil;
+      return PyErr_CheckSignals() != 0;
+    });
+  }
+  if (!complete) throw py::error_already_set();
+}
+
 // One query of the table's entry for the caller's (a, b): the kernel's operands in its own order
 // (swapped where the entry is `reversed`), `limit` the distances of within() if any.
 template <class Real> struct Call {
@@ -71,24 +90,9 @@ template <class Real> struct Call {
                            kind_name(b.kind));
     return fn;
   }
-  // The batch in chunks on `workers` threads, the GIL released; Ctrl-C (a signal Python has seen,
-  // checked every 50 ms between the caller's chunks) stops it and raises KeyboardInterrupt.
+  // The batch in chunks on `workers` threads, the GIL released (run_released).
   void run(KernelFn<Real> fn, const Request<Real>& r) const {
-    bool complete;
-    {
-      py::gil_scoped_release release;
-      auto checked = std::chrono::steady_clock::now();
-      complete = run_in_chunks(
-          r.elements.size, workers, [&](Index begin, Index end) { fn(r, begin, end); },
-          [&] {
-            const auto now = std::chrono::steady_clock::now();
-            if (now - checked < std::chrono::milliseconds(50)) return false;
-            checked = now;
-            py::gil_scoped_acquire gil;
-            return PyErr_CheckSignals() != 0;
-          });
-    }
-    if (!complete) throw py::error_already_set();
+    run_released(r.elements.size, workers, [&](Index begin, Index end) { fn(r, begin, end); });
   }
 
   // distance(), or distance_if_within() with a limit. A single query (every batch shape empty)
