@@ -252,6 +252,17 @@ int main() {
     CHECK(empty.nearest_by_bound(volumes_of(some)[0], 3).empty());
     CHECK(empty.scale() == 0);
   }
+  // A tree built on several threads is the same tree: the same order, the same candidates.
+  {
+    const std::vector<Volume<double>> v = volumes_of(random_set(30000, 40.0, 3, 6));  // bounded: all in the tree
+    const BoundingVolumeHierarchy<double> one(v, 4, 1), four(v, 4, 4), three(v, 8, 3);
+    CHECK(one.order() == four.order());
+    const double limit = cull_limit(0.3, one.scale());
+    const Pairs expected = candidate_pairs(one, limit);
+    CHECK(candidate_pairs(four, limit) == expected);
+    CHECK(candidate_pairs(three, limit) == expected);
+    CHECK(expected.size() > 1000);
+  }
   // Overflowed volumes are always candidates.
   {
     const Volume<double> huge = volume(Segment3<double>{V(-1e308, 0, 0), V(1e308, 0, 0)});
