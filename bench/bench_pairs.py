@@ -257,7 +257,7 @@ def main():
         "control row below shows what a second thread got at the time). Median of",
         f"{args.repeats} runs where a table does not say otherwise; the Scene rows are one run. The NumPy Scene is",
         f"the code of {OLD_COMMIT} run on this build's module, on the same machine at the same time (issue 18",
-        "quoted 4 to 5.5 s for its query on a sparser scene).",
+        "quoted 4 to 5.5 s for its query on a scene of its own).",
         "",
         "`cd.pairs_within` returns the pairs with `distance <= d` (the distances to the bit);",
         "`Scene.pairs_within` the pairs for which `cd.within` holds, over every pair of the scene's shapes",
