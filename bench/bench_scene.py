@@ -111,7 +111,7 @@ def main():
         "",
         table,
         "",
-        "Brute force grows linearly with the scene. The Scene's bounding-volume hierarchy (NumPy, built",
+        "Brute force grows linearly with the scene. The Scene's bounding-volume hierarchy (the C++ broadphase, built",
         "once per scene: " + ", ".join(f"{r['build'] * 1e3:.0f} ms for {r['n']:,}" for r in rows) + ")",
         "visits only the nodes near the line, so the exact work stays proportional to the number of",
         "disks near the line (about n^(1/3) at fixed density), and `within` decides most survivors by",

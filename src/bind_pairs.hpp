@@ -11,7 +11,6 @@
 #include <circledist/broadphase.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -99,24 +98,6 @@ void fill_volumes(const Shape& s, Index begin, Index end, Volume<double>* out) {
   }
 }
 
-// Runs work(begin, end) over [0, size) in chunks on `workers` threads, the GIL released (Ctrl-C
-// between the caller's chunks raises KeyboardInterrupt, as the batched calls do).
-template <class Work> void run_released(Index size, int workers, Work&& work, Index fixed_chunk = 0) {
-  bool complete;
-  {
-    py::gil_scoped_release release;
-    auto checked = std::chrono::steady_clock::now();
-    complete = run_in_chunks(size, workers, work, [&](Index) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now - checked < std::chrono::milliseconds(50)) return false;
-      checked = now;
-      py::gil_scoped_acquire gil;
-      return PyErr_CheckSignals() != 0;
-    }, fixed_chunk);
-  }
-  if (!complete) throw py::error_already_set();
-}
-
 // The volumes of several shapes' elements, one after the other (flat indices, in order).
 Volumes volumes_of(const std::vector<const Shape*>& shapes, int workers) {
   Index total = 0;
@@ -131,13 +112,19 @@ Volumes volumes_of(const std::vector<const Shape*>& shapes, int workers) {
   return out;
 }
 
+// The hierarchy over a set's volumes, built without the GIL on up to `workers` threads.
+BoundingVolumeHierarchy<double> tree_of(Volumes volumes, int workers) {
+  py::gil_scoped_release release;
+  return BoundingVolumeHierarchy<double>(std::move(volumes), 4, workers);
+}
+
 // Candidate pairs (i, j), i in [0, n), found by find(begin, end, out) over chunks of [0, n) (the
 // positions of a spatial order of the queries) on `workers` threads, then sorted by (i, j): the
 // same list for every worker count.
 template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find) {
   const Index chunk = chunk_size(n, workers);
   std::vector<PairList> parts(static_cast<size_t>((n + chunk - 1) / chunk));
-  run_released(n, workers, [&](Index begin, Index end) { find(begin, end, parts[size_t(begin / chunk)]); }, chunk);
+  run_released(n, workers, [&](Index begin, Index end) { find(begin, end, parts[size_t(begin / chunk)]); }, py::none(), chunk);
   PairList out;
   size_t total = 0;
   for (const PairList& p : parts) total += p.size();
@@ -156,7 +143,7 @@ template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find) 
 // The shape's elements at the flat indices rows[0, count), as a batch of shape (count,): each
 // field keeps its dtype flags (float32 given, long double values), a field of one value stays
 // one value. Arrays are made with the GIL held, filled without it.
-Shape gather(const Shape& s, const FieldElements& e, const Index* rows, Index count) {
+Shape gather(const Shape& s, const FieldElements& e, const Index* rows, Index count, int workers) {
   std::vector<Field> fields;
   struct Copy {
     const double* from;
@@ -191,13 +178,15 @@ Shape gather(const Shape& s, const FieldElements& e, const Index* rows, Index co
   }
   {
     py::gil_scoped_release release;
-    for (const Copy& c : copies) {
-      for (Index i = 0; i < count; ++i) {
-        const Index at = e.of(c.field, rows[i]) * c.width;
-        std::copy_n(c.from + at, c.width, c.to + i * c.width);
-        if (c.wide_from) std::copy_n(c.wide_from + at, c.width, c.wide_to + i * c.width);
+    run_in_chunks(count, workers, [&](Index begin, Index end) {
+      for (const Copy& c : copies) {
+        for (Index i = begin; i < end; ++i) {
+          const Index at = e.of(c.field, rows[i]) * c.width;
+          std::copy_n(c.from + at, c.width, c.to + i * c.width);
+          if (c.wide_from) std::copy_n(c.wide_from + at, c.width, c.wide_to + i * c.width);
+        }
       }
-    }
+    }, [](Index) { return false; });  // a copy: over in milliseconds, no Ctrl-C check needed
   }
   return Shape(s.kind, std::move(fields));
 }
@@ -243,7 +232,8 @@ template <class Real> struct Evaluator {
         rows_a[size_t(k)] = pairs[size_t(start + k)].first;
         rows_b[size_t(k)] = pairs[size_t(start + k)].second;
       }
-      const Shape ga = gather(a, ea, rows_a.data(), count), gb = gather(b, eb, rows_b.data(), count);
+      const Shape ga = gather(a, ea, rows_a.data(), count, choice.workers);
+      const Shape gb = gather(b, eb, rows_b.data(), count, choice.workers);
       // Both single shapes (one element each) answer with a scalar: made an array of the block.
       const py::object answer = py::module_::import("numpy").attr("broadcast_to")(
           py::module_::import("numpy").attr("asarray")(shapes_distance(ga, gb, choice)).attr("reshape")(-1),
@@ -314,15 +304,18 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
   const Volumes va = volumes_of({&a}, c.workers);
   PairList candidates;
   if (b) {
-    const BoundingVolumeHierarchy<double> tree(volumes_of({b}, c.workers));
+    const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({b}, c.workers), c.workers);
     const double limit = cull_limit(d, std::max(tree.scale(), scale_of(va)),
                                     relative_margin(c));
-    const std::vector<BroadIndex> order = spatial_order(va);
+    const std::vector<BroadIndex> order = [&] {
+    py::gil_scoped_release release;
+    return spatial_order(va);
+  }();
     candidates = chunked_pairs(Index(va.size()), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(va, order, tree, limit, begin, end, out);
     });
   } else {
-    const BoundingVolumeHierarchy<double> tree(va);
+    const BoundingVolumeHierarchy<double> tree = tree_of(va, c.workers);
     const double limit = cull_limit(d, tree.scale(), relative_margin(c));
     candidates = chunked_pairs(tree.size(), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(tree, limit, begin, end, out);
@@ -344,13 +337,16 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
 
 template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index k, const Choice& c) {
   const Volumes va = volumes_of({&a}, c.workers);
-  const BoundingVolumeHierarchy<double> tree(volumes_of({&b}, c.workers));
+  const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({&b}, c.workers), c.workers);
   const Index n = Index(va.size()), nb = tree.size(), kk = std::min(k, nb);
   const double scale = std::max(tree.scale(), scale_of(va));
   const Evaluator<Real> evaluate{a, b, c};
   // 1. The kk shapes of smallest lower bound: their largest exact distance, tau, bounds the
   //    kk-th nearest distance from above.
-  const std::vector<BroadIndex> order = spatial_order(va);
+  const std::vector<BroadIndex> order = [&] {
+    py::gil_scoped_release release;
+    return spatial_order(va);
+  }();
   const PairList first = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
     for (Index p = begin; p < end; ++p) {
       const Index i = order[size_t(p)];
@@ -441,7 +437,7 @@ struct SceneBroadphase {
   static SceneBroadphase make(const py::list& shapes, int workers) {
     std::vector<const Shape*> read;
     for (py::handle s : shapes) read.push_back(&constructed(s));
-    return {BoundingVolumeHierarchy<double>(volumes_of(read, workers))};
+    return {tree_of(volumes_of(read, workers), workers)};
   }
 
   Volume<double> query(py::handle shape) const {

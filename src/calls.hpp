@@ -47,6 +47,48 @@ inline bool swept(const Shape& s) {
   return !(sweep.batch.empty() && *sweep.data() == 0);
 }
 
+// progress(done, total) with the GIL held, unless progress is None; false (the Python error set)
+// when it raised.
+inline bool report_progress(py::handle progress, Index done, Index total) {
+  if (progress.is_none()) return true;
+  try {
+    progress(done, total);
+  } catch (py::error_already_set& e) {
+    e.restore();
+    return false;
+  }
+  return true;
+}
+
+// Runs work(begin, end) over [0, size) in chunks on `workers` threads, the GIL released. Every
+// batched call and the all-pairs queries (bind_pairs.hpp) run this way. Every 50 ms between the
+// caller's chunks, Ctrl-C (a signal Python has seen) stops it and raises KeyboardInterrupt, and
+// every 100 ms progress(done, total) is called (unless None); an exception it raises stops the
+// work likewise; it is called once more with (size, size) at the end. `fixed_chunk`: see
+// run_in_chunks.
+template <class Work>
+void run_released(Index size, int workers, Work&& work, py::handle progress = py::none(), Index fixed_chunk = 0) {
+  bool complete;
+  {
+    py::gil_scoped_release release;
+    auto checked = std::chrono::steady_clock::now(), reported = checked;
+    complete = run_in_chunks(
+        size, workers, work,
+        [&](Index done) {
+          const auto now = std::chrono::steady_clock::now();
+          if (now - checked < std::chrono::milliseconds(50)) return false;
+          checked = now;
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) return true;
+          if (progress.is_none() || now - reported < std::chrono::milliseconds(100) || done >= size) return false;
+          reported = now;
+          return !report_progress(progress, done, size);
+        },
+        fixed_chunk);
+  }
+  if (!complete || !report_progress(progress, size, size)) throw py::error_already_set();
+}
+
 // One query of the table's entry for the caller's (a, b): the kernel's operands in its own order
 // (swapped where the entry is `reversed`), `limit` the distances of within() if any.
 template <class Real> struct Call {
@@ -73,40 +115,10 @@ template <class Real> struct Call {
     return fn;
   }
   // progress(done, total), with the GIL held; false (the Python error set) when it raised.
-  bool report(Index done, Index total) const {
-    if (progress.is_none()) return true;
-    try {
-      progress(done, total);
-    } catch (py::error_already_set& e) {
-      e.restore();
-      return false;
-    }
-    return true;
-  }
-  // The batch in chunks on `workers` threads, the GIL released. Every 50 ms between the caller's
-  // chunks: Ctrl-C (a signal Python has seen) stops it and raises KeyboardInterrupt, and every
-  // 100 ms progress(done, total) is called; an exception it raises stops the batch likewise. It is
-  // called once more with (total, total) at the end.
+  bool report(Index done, Index total) const { return report_progress(progress, done, total); }
+  // The batch in chunks on `workers` threads, the GIL released (run_released), with progress.
   void run(KernelFn<Real> fn, const Request<Real>& r) const {
-    bool complete;
-    const Index total = r.elements.size;
-    {
-      py::gil_scoped_release release;
-      auto checked = std::chrono::steady_clock::now(), reported = checked;
-      complete = run_in_chunks(
-          total, workers, [&](Index begin, Index end) { fn(r, begin, end); },
-          [&](Index done) {
-            const auto now = std::chrono::steady_clock::now();
-            if (now - checked < std::chrono::milliseconds(50)) return false;
-            checked = now;
-            py::gil_scoped_acquire gil;
-            if (PyErr_CheckSignals() != 0) return true;
-            if (now - reported < std::chrono::milliseconds(100) || done >= total) return false;
-            reported = now;
-            return !report(done, total);
-          });
-    }
-    if (!complete || !report(total, total)) throw py::error_already_set();
+    run_released(r.elements.size, workers, [&](Index begin, Index end) { fn(r, begin, end); }, progress);
   }
 
   // One answer per element into the Request's `slot` (distance or flag): a single query (every

@@ -295,3 +295,33 @@ def test_culled_pairs_are_counted():
     # Every pair is either evaluated or culled.
     assert s["distances"] + s["culled"] == 200 * 199 // 2
     assert s["culled"] > 19000
+
+
+@pytest.mark.parametrize("scale,offset", [(1e-6, 0.0), (1e6, 0.0), (1e-3, 1e6), (1.0, -1e8)])
+def test_scaled_and_far_scenes_equal_the_distance_matrix(scale, offset):
+    """The culling margin follows the scene's size and its distance from the origin: tiny,
+    huge and far-off scenes (lines among them) give the full matrix's pairs and nearest."""
+    rng = np.random.default_rng(10)
+
+    def moved(shape):
+        arrays = shape.to_arrays()
+        for key in ("p", "p0", "p1", "center", "origin", "control_points"):
+            if key in arrays:
+                arrays[key] = arrays[key] * scale + offset
+        for key in ("radius", "sweep"):
+            if key in arrays:
+                arrays[key] = arrays[key] * scale
+        return type(shape).from_arrays(arrays)
+
+    a = moved(random_batch("Disk", 150, rng, box=6.0))
+    for kind in ("Segment", "Line", "Circle"):
+        b = moved(random_batch(kind, 120, rng, box=6.0))
+        matrix = cd.distance(column(a), b)
+        for d in (0.0, 0.2 * scale, scale):
+            i, j = np.nonzero(matrix <= d)
+            i_got, j_got, dist = cd.pairs_within(a, b, d)
+            assert np.array_equal(i_got, i) and np.array_equal(j_got, j)
+            assert np.array_equal(dist, matrix[i, j])
+        idx, dist = cd.nearest(a, b, k=2)
+        order = np.lexsort((np.broadcast_to(np.arange(matrix.shape[1]), matrix.shape), matrix), axis=1)[:, :2]
+        assert np.array_equal(idx, order) and np.array_equal(dist, np.take_along_axis(matrix, order, axis=1))

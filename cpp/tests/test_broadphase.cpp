@@ -7,6 +7,7 @@
 #include <circledist/circledist.hpp>
 
 #include "check.hpp"
+#include "random.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -26,19 +27,15 @@ using Any = std::variant<Swept<V>, Swept<Line3<double>>, Swept<Ray3<double>>, Sw
                          Swept<Circle3<double>>, Swept<Disk3<double>>, Swept<BezierCurve3<double>>>;
 using Pairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
 
-std::mt19937_64 rng(20261125);
-double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
-V random_vector(double s) { return V(uniform(-s, s), uniform(-s, s), uniform(-s, s)); }
-V random_direction() {
-  V v;
-  do v = random_vector(1); while (v.norm() < 0.1);
-  return v;
-}
+test_random::Random source(20261125);
+double uniform(double a, double b) { return source.uniform(a, b); }
+V random_vector(double scale) { return source.vector(scale); }
+V random_direction() { return source.direction(); }
 
 // A shape of a random kind near `at` (kinds in [first, last)), swept by up to `sweep`.
 Any random_shape(const V& at, int first = 0, int last = 7, double sweep = 0.3) {
   const double r = uniform(0, 1) < 0.5 ? 0.0 : uniform(0, sweep);
-  switch (std::uniform_int_distribution<int>(first, last - 1)(rng)) {
+  switch (source.integer(first, last - 1)) {
     case 0: return swept(V(at), r);
     case 1: return swept(Line3<double>{at, random_direction()}, r);
     case 2: return swept(Ray3<double>{at, random_direction()}, r);
@@ -254,6 +251,17 @@ int main() {
     const BoundingVolumeHierarchy<double> empty{std::vector<Volume<double>>{}};
     CHECK(empty.nearest_by_bound(volumes_of(some)[0], 3).empty());
     CHECK(empty.scale() == 0);
+  }
+  // A tree built on several threads is the same tree: the same order, the same candidates.
+  {
+    const std::vector<Volume<double>> v = volumes_of(random_set(30000, 40.0, 3, 6));  // bounded: all in the tree
+    const BoundingVolumeHierarchy<double> one(v, 4, 1), four(v, 4, 4), three(v, 8, 3);
+    CHECK(one.order() == four.order());
+    const double limit = cull_limit(0.3, one.scale());
+    const Pairs expected = candidate_pairs(one, limit);
+    CHECK(candidate_pairs(four, limit) == expected);
+    CHECK(candidate_pairs(three, limit) == expected);
+    CHECK(expected.size() > 1000);
   }
   // Overflowed volumes are always candidates.
   {

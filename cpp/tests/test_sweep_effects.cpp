@@ -4,6 +4,7 @@
 #include <circledist/effects.hpp>
 
 #include "check.hpp"
+#include "random.hpp"
 
 #include <cmath>
 #include <random>
@@ -13,15 +14,10 @@ using namespace circledist;
 namespace {
 
 using V = Vec3<double>;
-std::mt19937_64 rng(20261122);
-
-double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
-V random_vector(double scale) { return V(uniform(-scale, scale), uniform(-scale, scale), uniform(-scale, scale)); }
-V random_direction() {
-  V v;
-  do v = random_vector(1); while (v.norm() < 0.1);
-  return v;
-}
+test_random::Random source(20261122);
+double uniform(double a, double b) { return source.uniform(a, b); }
+V random_vector(double scale) { return source.vector(scale); }
+V random_direction() { return source.direction(); }
 
 Circle3<double> random_circle(double spread) { return {random_vector(spread), random_direction(), uniform(0.2, 1.5)}; }
 Disk3<double> random_disk(double spread) { return {random_vector(spread), random_direction(), uniform(0.2, 1.5)}; }

@@ -34,7 +34,10 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <map>
 #include <queue>
+#include <system_error>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -181,8 +184,9 @@ template <class Real> class BoundingVolumeHierarchy {
  public:
   BoundingVolumeHierarchy() = default;
 
-  // `leaf_size`: shapes per leaf at most.
-  explicit BoundingVolumeHierarchy(std::vector<Volume<Real>> volumes, int leaf_size = 4)
+  // `leaf_size`: shapes per leaf at most. `threads`: how many threads build the tree's top
+  // subtrees side by side (the tree is the same for any count).
+  explicit BoundingVolumeHierarchy(std::vector<Volume<Real>> volumes, int leaf_size = 4, int threads = 1)
       : volumes_(std::move(volumes)), leaf_size_(std::max(1, leaf_size)) {
     std::vector<BroadIndex> unbounded;
     for (BroadIndex i = 0; i < BroadIndex(volumes_.size()); ++i)
@@ -190,8 +194,8 @@ template <class Real> class BoundingVolumeHierarchy {
     scale_ = scale_of(volumes_);
     bounded_ = BroadIndex(index_.size());
     if (bounded_ > 0) {
-      nodes_.reserve(2 * index_.size() / size_t(leaf_size_) + 1);
-      build(0, bounded_);
+      nodes_.resize(size_t(node_count(bounded_)));
+      build(0, bounded_, 0, std::max(1, threads));
     }
     // The volumes in the leaves' order, then the unbounded ones: a leaf's shapes lie side by side
     // in memory (queries read them in runs, not scattered over the whole set).
@@ -329,9 +333,24 @@ template <class Real> class BoundingVolumeHierarchy {
     return !(node_bound(q, node) > limit);
   }
 
-  BroadIndex build(BroadIndex first, BroadIndex last) {
-    const BroadIndex at = BroadIndex(nodes_.size());
-    nodes_.emplace_back();
+  // The nodes of a subtree over m shapes: median splits make it a function of m alone, so every
+  // subtree's place in nodes_ is known before it is built (and subtrees can be built apart).
+  // Memoized: the sizes at one depth take at most three values.
+  BroadIndex node_count(BroadIndex m) const {
+    std::map<BroadIndex, BroadIndex> memo;
+    return node_count(m, memo);
+  }
+  BroadIndex node_count(BroadIndex m, std::map<BroadIndex, BroadIndex>& memo) const {
+    if (m <= leaf_size_) return 1;
+    const auto known = memo.find(m);
+    if (known != memo.end()) return known->second;
+    const BroadIndex count = 1 + node_count(m / 2, memo) + node_count(m - m / 2, memo);
+    memo.emplace(m, count);
+    return count;
+  }
+
+  // Builds the subtree of the shapes at positions [first, last) into nodes_[at, ...).
+  void build(BroadIndex first, BroadIndex last, BroadIndex at, int threads) {
     Vec3<Real> lo = Vec3<Real>::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
     Vec3<Real> clo = lo, chi = hi;  // the box of the balls' centers: where to split
     for (BroadIndex k = first; k < last; ++k) {
@@ -356,9 +375,9 @@ template <class Real> class BoundingVolumeHierarchy {
     node.center = center;
     node.radius = radius;
     if (last - first <= leaf_size_) {
-      nodes_[size_t(at)].first = first;
-      nodes_[size_t(at)].count = last - first;
-      return at;
+      node.first = first;
+      node.count = last - first;
+      return;
     }
     int axis;
     (chi - clo).maxCoeff(&axis);
@@ -369,11 +388,24 @@ template <class Real> class BoundingVolumeHierarchy {
                        const Real cx = volumes_[size_t(x)].center[axis], cy = volumes_[size_t(y)].center[axis];
                        return cx < cy || (cx == cy && x < y);
                      });
-    build(first, middle);
-    const BroadIndex right = build(middle, last);
-    nodes_[size_t(at)].right = right;
-    return at;
+    node.right = at + 1 + node_count(middle - first);
+    // The two subtrees touch disjoint positions and nodes: with threads to spare, the left one is
+    // built on a thread of its own (a large one only: a thread costs tens of microseconds).
+    if (threads > 1 && last - first > 4096) {
+      std::thread left;
+      try {
+        left = std::thread([&] { build(first, middle, at + 1, threads / 2); });
+      } catch (const std::system_error&) {  // no thread to be had: this one builds both
+        build(first, middle, at + 1, 1);
+      }
+      build(middle, last, node.right, threads - threads / 2);
+      if (left.joinable()) left.join();
+    } else {
+      build(first, middle, at + 1, 1);
+      build(middle, last, node.right, 1);
+    }
   }
+
 };
 
 using BroadPairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
