@@ -2,6 +2,7 @@
 // origin and the normal along z, and the closed-form point distances of note 001 §2.
 #pragma once
 
+#include "detail/atan2.hpp"
 #include "primitives.hpp"
 
 #include <algorithm>
@@ -63,9 +64,9 @@ template <class Real> struct Round {
   }
 
   // (theta, 0) on a ring, (s, theta) on a disk, from a local point of the shape.
-  static Vec2<Real> ring_param(const Vec3<Real>& q) { return Vec2<Real>(std::atan2(q.y(), q.x()), 0); }
+  static Vec2<Real> ring_param(const Vec3<Real>& q) { return Vec2<Real>(detail::atan2(q.y(), q.x()), 0); }
   static Vec2<Real> disk_param(const Vec3<Real>& q) {
-    return Vec2<Real>(length2d(q.x(), q.y()), std::atan2(q.y(), q.x()));
+    return Vec2<Real>(length2d(q.x(), q.y()), detail::atan2(q.y(), q.x()));
   }
 };
 

@@ -40,7 +40,7 @@ template <class Real> struct Query<Vec3<Real>, Circle3<Real>> {
     }
     const Real scale = c.radius / rho;
     r.point_b = c.center + (scale * x) * frame.u + (scale * y) * frame.v;
-    r.param_b = Vec2<Real>(std::atan2(y, x), 0);
+    r.param_b = Vec2<Real>(detail::atan2(y, x), 0);
     return r;
   }
 };

@@ -28,7 +28,7 @@ template <class Real> struct Query<Vec3<Real>, Disk3<Real>> {
     Result<Real> r;
     r.point_a = p;
     const Real x = frame.u.dot(d), y = frame.v.dot(d);
-    const Real theta = std::atan2(y, x);
+    const Real theta = detail::atan2(y, x);
     if (radial <= disk.radius) {
       r.distance = std::abs(z);
       r.point_b = disk.center + x * frame.u + y * frame.v;
