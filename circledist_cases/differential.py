@@ -9,8 +9,9 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    through them.  Pairs are written in a canonical order (point/line/ray/segment/bezier before
    circle/disk, circle before disk); the checker runs both argument orders.  ``FAMILIES`` lists
    them: plain random cases and the adversarial ones of issue 14 (tangencies, lines on and near
-   the axis, coplanar and (nearly) concentric rounds, far-translated scenes, far line origins,
-   extreme radius ratios, nearly touching disks, a circle parallel to a disk at tiny heights,
+   the axis, lines whose shadow on the plane crosses the centre, coplanar and (nearly) concentric
+   rounds, far-translated scenes, far line origins, extreme radius ratios, nearly touching disks,
+   a circle parallel to a disk at tiny heights,
    large / far-controlled / in-plane Bezier curves, a huge circle passing a small disk).
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
@@ -333,6 +334,28 @@ def _fam_axis(rng, ka, kb):
     return fr.linear(ka, X, d, R), b
 
 
+
+def _fam_shadow_center(rng, ka, kb):
+    """Lines, rays and segments whose shadow on the round's plane crosses the centre (exactly, or
+    1e-16..1e-12 radii beside it), tilted from the plane by 1e-4..1 rad, at heights 1e-6..2
+    radii: the line's distance then has a second local minimum over the ring, mirroring the
+    global one, which rays and segments starting between the two hold (a ray from within a
+    radius of the centre's shadow, toward it or away)."""
+    fr = _Frame(rng)
+    R = _radius(rng, fr.exact)
+    b = fr.round(np.zeros(3), EZ, R)
+    alpha = 0.0 if fr.exact else rng.uniform(0, 2 * math.pi)
+    psi = _logu(rng, -4, 0) * float(rng.choice([-1.0, 1.0]))
+    along = np.array([math.cos(alpha), math.sin(alpha), 0.0])
+    across = np.array([-math.sin(alpha), math.cos(alpha), 0.0])
+    d = math.cos(psi) * along + math.sin(psi) * EZ
+    height = R * (rng.uniform(0.1, 2) if rng.random() < 0.7 else _logu(rng, -6, -1))
+    X = height * EZ + _tiny(rng, -16, -12, 0.6) * R * across + fr.param(-1, 1) * R * d
+    if rng.random() < 0.5:
+        d = -d
+    return fr.linear(ka, X, d, R / 4), b
+
+
 def _fam_coplanar(rng, ka, kb):
     fr = _Frame(rng)
     ex = fr.exact
@@ -586,6 +609,7 @@ FAMILIES = {
     "random": (KIND_PAIRS, _fam_random),
     "tangent": (KIND_PAIRS, _fam_tangent),
     "axis": (LR, _fam_axis),
+    "shadow_center": (LR3, _fam_shadow_center),
     "coplanar": (KIND_PAIRS, _fam_coplanar),
     "concentric": (KIND_PAIRS, _fam_concentric),
     "near_concentric": (KIND_PAIRS, _fam_near_concentric),

@@ -10,6 +10,9 @@ Families (the round shape is the unit circle / disk in its own frame unless said
                 its distance is exactly h (the float h) for the circle and the disk
   offset        fixed scenes translated by 10^k (1, -0.7, 0.4), k = 0..9
   circle-tilt   a circle (or disk) tilted from coplanar by a = 10^-k rad, k = 0..16
+  shadow-offset a ray 1e-3 rad from the plane, at height 1 over the centre, its shadow passing
+                10^-k beside the centre, k = 0..16, starting between the line's two local minima
+                over the ring (it holds the second one, near the ring point (1, 0, 0))
 References: the analytic value where there is one (tangent-lift), else the 50-digit independent
 reference of accuracy.reference_distance (one-parameter minimisation, no polynomial roots),
 always of the exact float inputs.
@@ -30,6 +33,7 @@ FAMILIES = {
     "tangent-lift": ("tangent line lifted by h = 10^-k", "k (height 10^-k)", tuple(range(17))),
     "offset": ("scene translated by 10^k (1, -0.7, 0.4)", "k (offset 10^k)", tuple(range(10))),
     "circle-tilt": ("circle / disk tilted from coplanar by 10^-k rad", "k (tilt 10^-k rad)", tuple(range(17))),
+    "shadow-offset": ("ray whose shadow passes 10^-k beside the centre", "k (offset 10^-k)", tuple(range(17))),
 }
 
 
@@ -105,6 +109,19 @@ def _circle_tilt(k):
     ]
 
 
+def _shadow_offset(k):
+    a, offset = 1e-3, 10.0 ** -k
+    d = (math.cos(a), 0.0, math.sin(a))
+    origin = (0.4, offset, 1.0 + 0.4 * math.tan(a))
+    end = tuple(o + 1.5 * di for o, di in zip(origin, d))
+    return [
+        ("ray-circle", "ray-circle", ("ray", origin, d), accuracy.UNIT_CIRCLE, "z"),
+        ("ray-circle, rotated", "ray-circle", ("ray", origin, d), accuracy.UNIT_CIRCLE, "rot"),
+        ("segment-circle, rotated", "segment-circle", ("segment", origin, end), accuracy.UNIT_CIRCLE, "rot"),
+        ("ray-disk, rotated", "ray-disk", ("ray", origin, d), accuracy.UNIT_DISK, "rot"),
+    ]
+
+
 def sweep_cases(kinds=None):
     """Every sweep case, in family order; restricted to `kinds` when given."""
     out = []
@@ -122,6 +139,9 @@ def sweep_cases(kinds=None):
     for k in FAMILIES["circle-tilt"][2]:
         for member, kind, a, b in _circle_tilt(k):
             out.append(SweepCase("circle-tilt", member, kind, k, accuracy.scene_values(a, b)))
+    for k in FAMILIES["shadow-offset"][2]:
+        for member, kind, a, b, orient in _shadow_offset(k):
+            out.append(SweepCase("shadow-offset", member, kind, k, accuracy.scene_values(a, b, orient)))
     if kinds is not None:
         out = [c for c in out if c.kind in kinds]
     return out

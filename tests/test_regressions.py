@@ -152,6 +152,15 @@ CASES = [
       2.341964889099623),
      "circle", (0.6821735490706006, -0.6302111640340619, 0.0034660242883280783, 0.6037179912167538,
                 1.5756917760753888, 3.098357974083505, 1.9600563100695587)),
+    # A ray whose line's shadow crosses the circle's center (b2 within rounding of 0), 1e-3 rad
+    # from the plane, holding the line's second local minimum: the quartic's near-double root at
+    # mu = -s^2 gave a spurious secular root under every policy (was 1.0005708 for 1.0005854, the
+    # circle point 1.5e-5 off the plane).
+    ("ray-shadow-through-center", "ray",
+     (0.41408413446005754, -4.300726756172416, -0.862734666659365, 1.0, -0.0005056398324408602,
+      -0.000862744666659365),
+     "circle", (-8.928271630420693e-221, -3.7950869237315557, 1e-05, -8.928271630420693e-221,
+                -3.7950869237315557, -6.475342314612934, 1.0)),
     # class 5: a huge circle passing a small disk (EigenCompanion's distance() missed it).
     ("huge-circle-small-disk", "circle",
      (18280.04179502556, -54.213965961425515, 4601.483430373689, -0.1957562084777642, -2.121825972601985,

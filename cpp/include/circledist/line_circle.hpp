@@ -223,7 +223,31 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
   const Work q_hi = b1_squared * b2_squared;
   const Work c[5] = {b1_squared * t2 * t2, 2 * b1_squared * t2, b_norm_squared - t2 * t2, -2 * t2, -1};
   if (!(q_lo < 0)) return -1;
-  const Real mu = Real(Roots::bracketed_root(c, 4, mu0, hi, q_lo, q_hi));
+  Work root = Roots::bracketed_root(c, 4, mu0, hi, q_lo, q_hi);
+  // A root of P need not be one of phi. Near mu = -s^2 the terms of P are of size s^8 while P
+  // itself is (mu + s^2)^2 s^4 small: where b2 is within rounding of 0 (a line whose shadow on
+  // the plane crosses the center), mu0 lies within (b2 / b1)^(2/3) s^2 of -s^2, and rounding makes
+  // sign changes of P there that are none of phi's (an eigenvalue of the near-double root -s^2
+  // lands in the bracket, or bisection follows the noise). phi has no such cancellation, so it
+  // judges the root; where it is far from 0, Newton on phi from the bracket's right end finds the
+  // root instead: phi is convex and rising on (mu0, 0) and phi(-|b1|) = b2^2 / (s^2 - |b1|)^2 >= 0,
+  // so Newton from there falls monotonically to the root, never past it.
+  const auto phi = [&](Work mu) {
+    const Work x = b1 / mu, y = b2_squared / ((mu + t2) * (mu + t2));
+    return x * x + y - 1;
+  };
+  if (!(std::abs(phi(root)) <= 64 * eps)) {
+    root = hi;
+    for (int step = 0; step < 200; ++step) {
+      const Work value = phi(root);
+      if (!(value > 0)) break;
+      const Work slope = -2 * b1_squared / (root * root * root) - 2 * b2_squared / ((root + t2) * (root + t2) * (root + t2));
+      const Work next = root - value / slope;
+      if (!(next < root && next > mu0)) break;
+      root = next;
+    }
+  }
+  const Real mu = Real(root);
   // z = (b1 / mu, b2 / (mu + s^2)), scaled by mu (mu + s^2) < 0: hence the sign.
   const Vec3<Real> direction = -(m.a_parallel * (mu + m.s2) + m.a_across * mu);
   const Real length = direction.norm();
