@@ -124,19 +124,27 @@ struct Choice {
 
 // Runs `query` (a Call<Real> -> result) on the table of the choice: float32 runs the double one
 // (float32.hpp).
-template <class Query> auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query) {
+// `progress` is the choice's own unless a caller reports elsewhere (the all-pairs queries' stages).
+template <class Query>
+auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query,
+               py::handle progress) {
   if (c.precision == kLongDouble)
-    return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit, c.workers, c.progress});
-  return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers, c.progress});
+    return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit, c.workers, progress});
+  return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers, progress});
+}
+template <class Query> auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query) {
+  return with_call(a, b, limit, c, std::forward<Query>(query), c.progress);
 }
 
-// distance() of two shapes already read (also the all-pairs queries' kernel, bind_pairs.hpp).
-py::object shapes_distance(const Shape& a, const Shape& b, const Choice& c) {
+// distance() of two shapes already read (also the all-pairs queries' kernel, bind_pairs.hpp,
+// which reports its progress elsewhere).
+py::object shapes_distance(const Shape& a, const Shape& b, const Choice& c, py::handle progress) {
   auto distance = [](const auto& call) { return call.distance(); };
-  if (!c.single()) return with_call(a, b, nullptr, c, distance);
+  if (!c.single()) return with_call(a, b, nullptr, c, distance, progress);
   const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
-  return to_float32(with_call(fa, fb, nullptr, c, distance), "distance", "the distance", 1);
+  return to_float32(with_call(fa, fb, nullptr, c, distance, progress), "distance", "the distance", 1);
 }
+py::object shapes_distance(const Shape& a, const Shape& b, const Choice& c) { return shapes_distance(a, b, c, c.progress); }
 
 py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
                         int workers, const py::object& progress) {

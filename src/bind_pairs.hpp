@@ -118,13 +118,57 @@ BoundingVolumeHierarchy<double> tree_of(Volumes volumes, int workers) {
   return BoundingVolumeHierarchy<double>(std::move(volumes), 4, workers);
 }
 
+// progress= of the all-pairs queries: the work is several stages run one after the other (the
+// search for candidates over a's shapes, the candidates' exact distances, ...), each of which
+// reports (done, total) of its own through run_released. The caller sees one count: `stages`
+// times len(a) steps, each stage worth len(a) of them; stage(s) is the callable a stage reports
+// to, which scales its count into stage s's share. Repeated values are not passed on, so the
+// caller sees (total, total) once, at the end (finish()).
+struct StagedProgress {
+  py::object user;  // None, or progress(done, total)
+  Index per_stage, total;
+  std::shared_ptr<Index> last = std::make_shared<Index>(-1);
+
+  StagedProgress(py::object progress, int stages, Index n) : user(std::move(progress)), per_stage(n), total(stages * n) {}
+
+  // What stage s (0-based) reports to: None when the caller asked for no progress.
+  py::object stage(int s) const {
+    if (user.is_none()) return py::none();
+    return py::cpp_function([user = user, last = last, base = s * per_stage, per_stage = per_stage,
+                             total = total](Index done, Index of) {
+      const Index scaled = of > 0 ? base + Index(double(per_stage) * double(done) / double(of)) : base + per_stage;
+      if (scaled == *last) return;
+      *last = scaled;
+      user(scaled, total);
+    });
+  }
+  // A stage's share of a count: blocks of a stage (the candidates' distances in blocks) report
+  // through a stage of their own, base offset by the blocks before.
+  py::object part(int s, Index first, Index count, Index of) const {
+    if (user.is_none()) return py::none();
+    return py::cpp_function([user = user, last = last, base = s * per_stage, per_stage = per_stage, total = total,
+                             first, count, of](Index done, Index block) {
+      const double fraction = of > 0 ? (double(first) + double(count) * double(done) / double(std::max<Index>(block, 1))) / double(of) : 1.0;
+      const Index scaled = base + Index(double(per_stage) * fraction);
+      if (scaled == *last) return;
+      *last = scaled;
+      user(scaled, total);
+    });
+  }
+  void finish() const {
+    if (user.is_none() || *last == total) return;
+    *last = total;
+    if (!report_progress(user, total, total)) throw py::error_already_set();
+  }
+};
+
 // Candidate pairs (i, j), i in [0, n), found by find(begin, end, out) over chunks of [0, n) (the
 // positions of a spatial order of the queries) on `workers` threads, then sorted by (i, j): the
 // same list for every worker count.
-template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find) {
+template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find, py::handle progress = py::none()) {
   const Index chunk = chunk_size(n, workers);
   std::vector<PairList> parts(static_cast<size_t>((n + chunk - 1) / chunk));
-  run_released(n, workers, [&](Index begin, Index end) { find(begin, end, parts[size_t(begin / chunk)]); }, py::none(), chunk);
+  run_released(n, workers, [&](Index begin, Index end) { find(begin, end, parts[size_t(begin / chunk)]); }, progress, chunk);
   PairList out;
   size_t total = 0;
   for (const PairList& p : parts) total += p.size();
@@ -221,8 +265,9 @@ template <class Real> struct Evaluator {
   FieldElements ea{a}, eb{b};
   static constexpr Index kBlock = Index(1) << 20;
 
-  // Calls take(k, distance) for every pair k of the list, in order.
-  template <class Take> void run(const PairList& pairs, Take&& take) const {
+  // Calls take(k, distance) for every pair k of the list, in order; reports to `progress`'s
+  // stage `stage`.
+  template <class Take> void run(const PairList& pairs, const StagedProgress& progress, int stage, Take&& take) const {
     std::vector<Index> rows_a, rows_b;
     for (Index start = 0; start < Index(pairs.size()); start += kBlock) {
       const Index count = std::min<Index>(kBlock, Index(pairs.size()) - start);
@@ -236,7 +281,7 @@ template <class Real> struct Evaluator {
       const Shape gb = gather(b, eb, rows_b.data(), count, choice.workers);
       // Both single shapes (one element each) answer with a scalar: made an array of the block.
       const py::object answer = py::module_::import("numpy").attr("broadcast_to")(
-          py::module_::import("numpy").attr("asarray")(shapes_distance(ga, gb, choice)).attr("reshape")(-1),
+          py::module_::import("numpy").attr("asarray")(shapes_distance(ga, gb, choice, progress.part(stage, start, count, Index(pairs.size())))).attr("reshape")(-1),
           py::make_tuple(count));
       const auto values = py::array_t<Real, py::array::c_style | py::array::forcecast>::ensure(answer);
       const Real* d = values.data();
@@ -302,6 +347,7 @@ template <class Real>
 py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice& c) {
   const Shape& other = b ? *b : a;
   const Volumes va = volumes_of({&a}, c.workers);
+  const StagedProgress progress(c.progress, 2, Index(va.size()));  // the search, the distances
   PairList candidates;
   if (b) {
     const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({b}, c.workers), c.workers);
@@ -313,17 +359,17 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
   }();
     candidates = chunked_pairs(Index(va.size()), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(va, order, tree, limit, begin, end, out);
-    });
+    }, progress.stage(0));
   } else {
     const BoundingVolumeHierarchy<double> tree = tree_of(va, c.workers);
     const double limit = cull_limit(d, tree.scale(), relative_margin(c));
     candidates = chunked_pairs(tree.size(), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(tree, limit, begin, end, out);
-    });
+    }, progress.stage(0));
   }
   std::vector<Index> is, js;
   std::vector<Real> distances;
-  Evaluator<Real>{a, other, c}.run(candidates, [&](Index k, Real distance) {
+  Evaluator<Real>{a, other, c}.run(candidates, progress, 1, [&](Index k, Real distance) {
     if (!at_most(distance, d)) return;
     is.push_back(candidates[size_t(k)].first);
     js.push_back(candidates[size_t(k)].second);
@@ -331,6 +377,7 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
   });
   stats().culled += std::uint64_t(std::max<Index>(
       0, (b ? Index(va.size()) * flat_size(*b) : Index(va.size()) * (Index(va.size()) - 1) / 2) - Index(candidates.size())));
+  progress.finish();
   const Index m = Index(is.size());
   return py::make_tuple(to_array(is, {m}), to_array(js, {m}), to_array(distances, {m}));
 }
@@ -341,6 +388,8 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   const Index n = Index(va.size()), nb = tree.size(), kk = std::min(k, nb);
   const double scale = std::max(tree.scale(), scale_of(va));
   const Evaluator<Real> evaluate{a, b, c};
+  // Four stages: the first search and its distances, the second search and its distances.
+  const StagedProgress progress(c.progress, 4, n);
   // 1. The kk shapes of smallest lower bound: their largest exact distance, tau, bounds the
   //    kk-th nearest distance from above.
   const std::vector<BroadIndex> order = [&] {
@@ -352,11 +401,11 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
       const Index i = order[size_t(p)];
       for (const auto& entry : tree.nearest_by_bound(va[size_t(i)], kk)) out.emplace_back(i, entry.second);
     }
-  });
+  }, progress.stage(0));
   // Per query, its (distance, index) found so far.
   std::vector<std::vector<std::pair<Real, Index>>> found(static_cast<size_t>(n));
   std::vector<double> tau(static_cast<size_t>(n), -std::numeric_limits<double>::infinity());
-  evaluate.run(first, [&](Index p, Real distance) {
+  evaluate.run(first, progress, 1, [&](Index p, Real distance) {
     const auto [i, j] = first[size_t(p)];
     found[size_t(i)].emplace_back(distance, j);
     tau[size_t(i)] = std::max(tau[size_t(i)], double(distance));
@@ -373,13 +422,14 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
           out.emplace_back(i, j);
         });
       }
-    });
-    evaluate.run(second, [&](Index p, Real distance) {
+    }, progress.stage(2));
+    evaluate.run(second, progress, 3, [&](Index p, Real distance) {
       const auto [i, j] = second[size_t(p)];
       found[size_t(i)].emplace_back(distance, j);
     });
     stats().culled += std::uint64_t(std::max<Index>(0, n * nb - Index(first.size() + second.size())));
   }
+  progress.finish();
   // 3. The k smallest (distance, index) of each query; -1 and inf past the end of b.
   std::vector<Index> indices(static_cast<size_t>(n * k), -1);
   std::vector<Real> distances(static_cast<size_t>(n * k), std::numeric_limits<Real>::infinity());
@@ -403,12 +453,12 @@ template <class Body> py::tuple with_answer_type(const Choice& c, Body&& body) {
 }
 
 py::tuple run_pairs_within(py::handle a, py::handle b, py::handle d, const py::object& precision,
-                           const py::object& solver, int workers) {
+                           const py::object& solver, int workers, const py::object& progress) {
   const Side x(a, "pairs_within", "a");
   const std::optional<Side> y = b.is_none() ? std::nullopt : std::optional<Side>(Side(b, "pairs_within", "b"));
   const Shape& other = y ? *y->shape : *x.shape;
   const double limit = limit_of("pairs_within", d);
-  const Choice c(precision, solver, *x.shape, other, workers, py::none());
+  const Choice c(precision, solver, *x.shape, other, workers, progress);
   check_pair("pairs_within", *x.shape, other, c);
   const Shape* second = y ? y->shape : nullptr;
   return with_answer_type(c, [&](auto* tag) {
@@ -418,10 +468,10 @@ py::tuple run_pairs_within(py::handle a, py::handle b, py::handle d, const py::o
 }
 
 py::tuple run_nearest(py::handle a, py::handle b, py::handle k, const py::object& precision, const py::object& solver,
-                      int workers) {
+                      int workers, const py::object& progress) {
   const Side x(a, "nearest", "a"), y(b, "nearest", "b");
   const Index count = count_of("nearest", k);
-  const Choice c(precision, solver, *x.shape, *y.shape, workers, py::none());
+  const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
   check_pair("nearest", *x.shape, *y.shape, c);
   return with_answer_type(c, [&](auto* tag) {
     using Real = std::remove_pointer_t<decltype(tag)>;
@@ -491,18 +541,16 @@ struct SceneBroadphase {
 inline void bind_pairs(py::module_& m) {
   m.def(
       "pairs_within",
-      [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, int workers) {
-        return PairsResult(run_pairs_within(a, b, d, precision, solver, workers));
-      },
+      [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, int workers,
+         ProgressLike progress) { return PairsResult(run_pairs_within(a, b, d, precision, solver, workers, progress)); },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(), py::arg("workers") = 1, doc::kPairsWithin());
+      py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kPairsWithin());
   m.def(
       "nearest",
-      [](ShapeLike a, ShapeLike b, Count k, PrecisionName precision, SolverName solver, int workers) {
-        return NearestResult(run_nearest(a, b, k, precision, solver, workers));
-      },
+      [](ShapeLike a, ShapeLike b, Count k, PrecisionName precision, SolverName solver, int workers,
+         ProgressLike progress) { return NearestResult(run_nearest(a, b, k, precision, solver, workers, progress)); },
       py::arg("a"), py::arg("b"), py::arg("k") = 1, py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(), py::arg("workers") = 1, doc::kNearest());
+      py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kNearest());
 
   py::class_<SceneBroadphase>(m, "_Broadphase",
                               "The broadphase over a list of shapes' elements, numbered one after the other "

@@ -554,6 +554,17 @@ and rays are tested against every ball. Each remaining pair is gathered into a b
 answered by the kernel `distance` runs, with the GIL released, on `workers` threads.
 )";
 
+// progress= of the all-pairs queries, whose work runs in stages.
+inline const char* const kAllPairsProgressParameter = R"(progress : bool or callable, optional
+    Keyword only. None or False (the default): no report. True: a progress bar on stderr
+    (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+    as ``progress(done, total)`` about every 0.1 s and once with ``(total, total)`` at the end.
+    The work runs in stages (the search for candidate pairs, then their exact distances; twice
+    for `nearest`), each counted as ``len(a)`` steps: total is 2 ``len(a)`` for `pairs_within`,
+    4 ``len(a)`` for `nearest`, and done never decreases. An exception it raises stops the work
+    and propagates.
+)";
+
 inline const char* kPairsWithin() {
   static const std::string text = std::string() +
     "Every pair of a and b within distance d of each other, with its distance.\n\n"
@@ -569,7 +580,7 @@ b : Shape, array_like or None
     itself).
 d : float
     Distance limit, finite and >= 0. Pairs at distance exactly d are included.
-)" + kChoiceParameters + R"(
+)" + kChoiceParameters + kAllPairsProgressParameter + R"(
 Returns
 -------
 i, j : numpy.ndarray of numpy.intp, shape (m,)
@@ -582,8 +593,9 @@ distance : numpy.ndarray, shape (m,)
 Raises
 ------
 TypeError
-    When d is not a real number, a or b is not a shape or an array of points, or there is no
-    query between the kinds of a and b (even when no pair is near).
+    When d is not a real number, a or b is not a shape or an array of points, there is no
+    query between the kinds of a and b (even when no pair is near), or `progress` is neither
+    None, a bool nor a callable.
 ValueError
     When d is negative, NaN or inf, for an unknown precision or solver, or a worker count that
     is neither positive nor -1.
@@ -625,7 +637,7 @@ b : Shape or array_like
     The shapes to search: a batch of any kind, indexed flat.
 k : int, default 1
     How many nearest shapes per query, >= 1.
-)" + kChoiceParameters + R"(
+)" + kChoiceParameters + kAllPairsProgressParameter + R"(
 Returns
 -------
 indices : numpy.ndarray of numpy.intp, shape (len(a), k)
@@ -638,8 +650,8 @@ distances : numpy.ndarray, shape (len(a), k)
 Raises
 ------
 TypeError
-    When k is not an integer, a or b is not a shape or an array of points, or there is no query
-    between their kinds.
+    When k is not an integer, a or b is not a shape or an array of points, there is no query
+    between their kinds, or `progress` is neither None, a bool nor a callable.
 ValueError
     When k < 1, for an unknown precision or solver, or a worker count that is neither positive
     nor -1.

@@ -127,3 +127,75 @@ def test_bar_uses_tqdm_when_installed(monkeypatch, long_batch):
     cd.distance(a, b, progress=ProgressBar(delay=0))
     assert updates[0] == ("open", 200_000) and updates[-1] == ("close", 200_000)
     assert [n for kind, n in updates if kind == "update"][-1] == 200_000
+
+
+# The all-pairs queries: stages (the candidates' search, their distances) each counted as len(a)
+# steps, so total is 2 len(a) (pairs_within) or 4 len(a) (nearest), done rising to it once.
+ALL_PAIRS = {
+    "pairs_within": (lambda a, b, **kw: cd.pairs_within(a, b, 0.3, **kw), 2),
+    "pairs_within_self": (lambda a, b, **kw: cd.pairs_within(a, None, 0.3, **kw), 2),
+    "nearest": (lambda a, b, **kw: cd.nearest(a, b, k=3, **kw), 4),
+}
+
+
+@pytest.fixture(scope="module")
+def crowded():
+    # 40,000 disks in a box of side 60: a few neighbours each within 0.3, seconds of distances.
+    rng = np.random.default_rng(5)
+    n = 40_000
+    return (cd.Disk(rng.uniform(0, 60, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 0.6, n)),
+            cd.Disk(rng.uniform(0, 60, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 0.6, n)))
+
+
+@pytest.mark.parametrize("name", sorted(ALL_PAIRS))
+@pytest.mark.parametrize("workers", [1, 2])
+def test_all_pairs_report_in_stages(crowded, name, workers):
+    call, stages = ALL_PAIRS[name]
+    a, b = crowded
+    seen = []
+    out = call(a, b, workers=workers, progress=lambda done, total: seen.append((done, total)))
+    total = stages * 40_000
+    assert all(t == total for _, t in seen)
+    done = [d for d, _ in seen]
+    assert done == sorted(done) and len(set(done)) == len(done)  # rising, no value twice
+    assert seen[-1] == (total, total) and done.count(total) == 1
+    assert all(0 <= d <= total for d in done)
+    for got, plain in zip(out, call(a, b, workers=workers)):
+        np.testing.assert_array_equal(got, plain)
+
+
+def test_all_pairs_report_while_they_run(crowded):
+    a, b = crowded
+    seen = []
+    cd.nearest(a, b, k=3, progress=lambda done, total: seen.append(done))
+    assert len(seen) >= 2 and seen[0] < 4 * 40_000
+
+
+@pytest.mark.parametrize("name", sorted(ALL_PAIRS))
+def test_all_pairs_stop_on_an_exception_in_the_callback(crowded, name):
+    call, _ = ALL_PAIRS[name]
+    a, b = crowded
+    seen = []
+
+    def stop(done, total):
+        seen.append(done)
+        raise RuntimeError("enough")
+
+    with pytest.raises(RuntimeError, match="enough"):
+        call(a, b, progress=stop)
+    assert len(seen) == 1
+
+
+def test_all_pairs_of_empty_batches_report_the_end_once():
+    empty = cd.Point(np.zeros((0, 3)))
+    seen = []
+    i, j, dist = cd.pairs_within(empty, cd.Point([0, 0, 0]), 1.0, progress=lambda d, t: seen.append((d, t)))
+    assert len(i) == 0 and seen == [(0, 0)]
+
+
+@pytest.mark.parametrize("bad", [3, "yes"])
+def test_all_pairs_bad_progress_is_a_type_error(bad):
+    with pytest.raises(TypeError, match="progress must be None, True or a callable"):
+        cd.pairs_within(cd.Point([0, 0, 0]), None, 1.0, progress=bad)
+    with pytest.raises(TypeError, match="progress must be None, True or a callable"):
+        cd.nearest(cd.Point([0, 0, 0]), cd.Point([1, 0, 0]), progress=bad)

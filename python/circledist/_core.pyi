@@ -939,7 +939,7 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
     >>> cd.intersects(ring, [[0, 0, 0], [1, 0, 0]])
     array([False,  True])
     """
-def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, k: int = 1, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple[numpy.ndarray, numpy.ndarray]:
+def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, k: int = 1, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> tuple[numpy.ndarray, numpy.ndarray]:
     """
     The k shapes of b nearest to each shape of a, with their distances.
     
@@ -973,6 +973,14 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
         convention): a positive count, or -1 for every core; default 1. The answers are the same
         bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
         (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` about every 0.1 s and once with ``(total, total)`` at the end.
+        The work runs in stages (the search for candidate pairs, then their exact distances; twice
+        for `nearest`), each counted as ``len(a)`` steps: total is 2 ``len(a)`` for `pairs_within`,
+        4 ``len(a)`` for `nearest`, and done never decreases. An exception it raises stops the work
+        and propagates.
     
     Returns
     -------
@@ -986,8 +994,8 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
     Raises
     ------
     TypeError
-        When k is not an integer, a or b is not a shape or an array of points, or there is no query
-        between their kinds.
+        When k is not an integer, a or b is not a shape or an array of points, there is no query
+        between their kinds, or `progress` is neither None, a bool nor a callable.
     ValueError
         When k < 1, for an unknown precision or solver, or a worker count that is neither positive
         nor -1.
@@ -1030,7 +1038,7 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
     ...
     ValueError: nearest: k must be an integer >= 1, got 0
     """
-def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
+def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
     """
     Every pair of a and b within distance d of each other, with its distance.
     
@@ -1067,6 +1075,14 @@ def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arra
         convention): a positive count, or -1 for every core; default 1. The answers are the same
         bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
         (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` about every 0.1 s and once with ``(total, total)`` at the end.
+        The work runs in stages (the search for candidate pairs, then their exact distances; twice
+        for `nearest`), each counted as ``len(a)`` steps: total is 2 ``len(a)`` for `pairs_within`,
+        4 ``len(a)`` for `nearest`, and done never decreases. An exception it raises stops the work
+        and propagates.
     
     Returns
     -------
@@ -1080,8 +1096,9 @@ def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arra
     Raises
     ------
     TypeError
-        When d is not a real number, a or b is not a shape or an array of points, or there is no
-        query between the kinds of a and b (even when no pair is near).
+        When d is not a real number, a or b is not a shape or an array of points, there is no
+        query between the kinds of a and b (even when no pair is near), or `progress` is neither
+        None, a bool nor a callable.
     ValueError
         When d is negative, NaN or inf, for an unknown precision or solver, or a worker count that
         is neither positive nor -1.
