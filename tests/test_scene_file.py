@@ -131,6 +131,30 @@ def test_validator_agrees_with_jsonschema_on_a_corpus():
         sf.scene_from_json(doc, "valid.json")
 
 
+def test_compiled_predicates_decide_as_the_step_by_step_check():
+    """The validator answers well-formed documents with compiled predicates and composes messages
+    step by step only where one fails; both must agree exactly on every document and entry, and
+    the reported error must be the one the step-by-step check alone reports."""
+    schema = sf.schema()
+    fast, slow = _schema.Validator(schema), _schema.Validator(schema, compiled=False)
+    shape = schema["$defs"]["shape"]
+    valid, docs = _corpus()
+    entries = [e for doc in docs if isinstance(doc, dict) and isinstance(doc.get("shapes"), list)
+               for e in doc["shapes"]]
+    odd = [None, True, False, 0, 1.0, -0.0, float("nan"), 10**40, "", "x", [], {}, [[]], {"kind": 1},
+           {"name": "a", "kind": ["circle"]}, {"name": "a", "kind": "nope"}, np.float64(1.5), [1, 2, np.float64(3)]]
+    assert len(entries) > 5000
+    for value in docs + odd:
+        expected = slow.first_error(value)
+        assert fast.first_error(value) == expected, value
+        assert fast.is_valid(value) == (expected is None), value
+    for value in entries + odd:
+        for node in (shape, schema["$defs"]["vectors"], schema["$defs"]["control_points_batch"]):
+            expected = slow.first_error(value, node, "$.x")
+            assert fast.first_error(value, node, "$.x") == expected, (value, node.get("title"))
+            assert fast.is_valid(value, node) == (expected is None), value
+
+
 def test_batches_in_queries_and_answers(tmp_path):
     path = tmp_path / "batches.json"
     path.write_text(json.dumps(BATCH_SCENE))
