@@ -319,13 +319,6 @@ class Scene:
         names = list(names)
         if len(names) != count:
             raise ValueError(f"Scene.extend: {len(names)} names for a batch of {count} shapes")
-        seen = set()
-        for name in names:
-            if not isinstance(name, str):
-                raise TypeError(f"Scene: shape names must be strings, got {name!r}")
-            if name in self._index or name in seen:
-                raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
-            seen.add(name)
         kind = batch.kind
         shape = tuple(batch.batch_shape)
         values = []
@@ -333,13 +326,32 @@ class Scene:
             a = np.asarray(getattr(batch, field))
             trailing = a.shape[a.ndim - _TRAILING[field]:] if _TRAILING[field] else ()
             values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
-        group, number = self._group(kind, values[0].shape[1:] if kind == "Bezier" else None,
-                                    [np.zeros(v.shape[1:]) for v in values])
-        start, row = len(self._names), len(group)
-        self._item_group.extend([number] * count)
-        self._item_row.extend(range(row, row + count))
-        group.extend(values, np.arange(start, start + count))
-        self._index.update(zip(names, range(start, start + count)))
+        self._insert(names, [(kind, values, np.arange(count))])
+
+    def _insert(self, names: list, parts: list) -> None:
+        """Adds len(names) shapes at once, named in order: parts are (kind, values, positions),
+        values one array per field (the sweep last) whose rows are the shapes at `positions` (in
+        names) of that kind; the parts' positions together cover every name once. The rows are
+        taken as valid shapes (they come from shapes, or from a validated scene file)."""
+        seen = set()
+        for name in names:
+            if not isinstance(name, str):
+                raise TypeError(f"Scene: shape names must be strings, got {name!r}")
+            if name in self._index or name in seen:
+                raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
+            seen.add(name)
+        start = len(self._names)
+        item_group = np.empty(len(names), np.int64)
+        item_row = np.empty(len(names), np.int64)
+        for kind, values, positions in parts:
+            group, number = self._group(kind, values[0].shape[1:] if kind == "Bezier" else None,
+                                        [np.zeros(v.shape[1:]) for v in values])
+            item_group[positions] = number
+            item_row[positions] = np.arange(len(group), len(group) + len(positions))
+            group.extend(values, start + np.asarray(positions, dtype=np.int64))
+        self._item_group.frombytes(item_group.tobytes())
+        self._item_row.frombytes(item_row.tobytes())
+        self._index.update(zip(names, range(start, start + len(names))))
         self._names.extend(names)
         self._built = None
 
