@@ -326,6 +326,21 @@ class _RowFields(Mapping):
         return len(self.columns)
 
 
+def _float_column(values: list) -> np.ndarray:
+    """Equal-shaped JSON values as one float64 array; a value holding an integer beyond a double's
+    range becomes NaN (to be found bad as any other non-finite row)."""
+    try:
+        return np.array(values, dtype=np.float64)
+    except OverflowError:
+        rows = []
+        for value in values:
+            try:
+                rows.append(np.asarray(value, dtype=np.float64))
+            except OverflowError:
+                rows.append(np.full(np.shape(value), np.nan))
+        return np.array(rows)
+
+
 def _entries_from_json(shapes: list, file: str) -> list:
     """The entries of schema-valid shape specs, in file order, each checked as _entry_from_json
     checks it. Single shapes are checked together, a NumPy column per kind and field (a scene of
@@ -345,7 +360,7 @@ def _entries_from_json(shapes: list, file: str) -> list:
         try:
             bad = np.zeros(len(indices), bool)
             for name, role in _roles(kind).items():
-                column = np.array([spec.get(name, 0) for spec in specs], dtype=np.float64)
+                column = _float_column([spec.get(name, 0) for spec in specs])
                 finite = np.isfinite(column)
                 bad |= ~finite.reshape(len(indices), -1).all(axis=1)
                 if role == "direction":
@@ -355,7 +370,7 @@ def _entries_from_json(shapes: list, file: str) -> list:
             good = ~bad
             names = list(KINDS[kind][1])
             getattr(_core, KINDS[kind][0])(*(columns[n][good] for n in names), sweep=columns[_SWEEP][good])
-        except (OverflowError, ValueError):  # a number beyond a double, or something the library refuses
+        except ValueError:  # something the library refuses: every entry of the kind goes through _entry_from_json
             bad = np.ones(len(indices), bool)
         if bad.any():
             first_bad = min(first_bad, indices[int(np.argmax(bad))])
@@ -754,22 +769,27 @@ def _collector_paused():
 def _entries_of(shapes, file: str) -> list:
     items = shapes.items() if isinstance(shapes, Mapping) else shapes
     entries = []
+    roles_of = {kind: list(_roles(kind)) for kind in KINDS}
     for name, shape in items:
         if not isinstance(shape, _core.Shape):
             raise TypeError(f"write_scene: {name!r} must be a circledist shape, got {type(shape).__name__}")
         kind = shape.kind.lower()
         batch = tuple(shape.batch_shape)
-        count = None if batch == () else int(np.prod(batch, dtype=np.int64))
+        if batch == ():  # a single shape: its fields as they are (float64, trailing dimensions only)
+            fields = {f: getattr(shape, f) for f in roles_of[kind]}
+            if fields[_SWEEP] == 0:
+                del fields[_SWEEP]
+            entries.append((str(name), kind, None, fields))
+            continue
+        count = int(np.prod(batch, dtype=np.int64))
         fields = {}
         for f, role in _roles(kind).items():
             a = np.asarray(getattr(shape, f), dtype=np.float64)
             trailing = a.shape[a.ndim - _TRAILING_DIMS[role]:] if _TRAILING_DIMS[role] else ()
-            if count is not None:  # a column: one row per shape, C order; one value if all rows agree
-                a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
-                bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
-                if (bits == bits[:1]).all():
-                    a = a[0]
-            fields[f] = a
+            # A column: one row per shape, C order; one value if all rows agree.
+            a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
+            bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
+            fields[f] = a[0] if (bits == bits[:1]).all() else a
         if not np.any(fields[_SWEEP]):
             del fields[_SWEEP]
         entries.append((str(name), kind, count, fields))
@@ -819,6 +839,11 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
     path = os.fspath(path)
     if not (path.endswith(".json") or path.endswith(".npz")):
         raise ValueError(f"write_scene: {path}: expected a path ending in .json or .npz")
+    with _collector_paused():
+        _write_scene(path, shapes, queries, description)
+
+
+def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str) -> None:
     entries = _entries_of(shapes, path)
     queries = [dict(q) for q in queries]
     if path.endswith(".json"):
@@ -834,8 +859,9 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
             data["shapes"].append(spec)
         if queries:
             data["queries"] = queries
-        scene_from_json(json.loads(json.dumps(data)), path)  # what is written must read back
-        payload = (json.dumps(data, indent=1) + "\n").encode("utf-8")
+        text = _json_text(data)
+        scene_from_json(json.loads(text), path)  # what is written must read back
+        payload = text.encode("utf-8")
         _write_atomically(path, lambda f: f.write(payload))
         return
     arrays = {"format": np.array(FORMAT), "version": np.array(VERSION, dtype=np.int64),
@@ -851,6 +877,19 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
         arrays["queries"] = np.array(json.dumps(queries))
     # What is written must read back: checked before it replaces anything (a bad name or query raises).
     _write_atomically(path, lambda f: np.savez(f, **arrays), check=lambda tmp: scene_from_npz(tmp, path))
+
+
+def _json_text(data: dict) -> str:
+    """A scene as JSON text: the top level one key a line, each shape and query on a line of its
+    own (json.dumps with indent= would spend its time in the pure-Python encoder)."""
+    lines = []
+    for key, value in data.items():
+        if key in ("shapes", "queries"):
+            items = ",\n".join("  " + json.dumps(item) for item in value)
+            lines.append(f" {json.dumps(key)}: [\n{items}\n ]")
+        else:
+            lines.append(f" {json.dumps(key)}: {json.dumps(value)}")
+    return "{\n" + ",\n".join(lines) + "\n}\n"
 
 
 def _write_atomically(path: str, write, check=None) -> None:
