@@ -194,14 +194,14 @@ class SceneFile:
         from .scene import Scene
 
         names: list = []
-        parts: list = []           # (kind, values, positions): see Scene._insert
+        parts: list = []           # (kind, values, positions, swept): see Scene._insert
         rows: dict = {}            # id of a kind's columns -> (columns, [row, ...], [position, ...])
         singles: dict = {}         # (kind, trailing shapes) -> ([fields, ...], [position, ...])
         for e in self.entries:
             fields = e.fields
             if e.count is not None:
                 values = [np.asarray(fields[f], dtype=np.float64) for f in _roles(e.kind)]
-                parts.append((e.class_name, values, np.arange(len(names), len(names) + e.count)))
+                parts.append((e.class_name, values, np.arange(len(names), len(names) + e.count), True))
                 names.extend(e.element_names())
                 continue
             if isinstance(fields, _RowFields):
@@ -214,9 +214,9 @@ class SceneFile:
             at[-1].append(len(names))
             names.append(e.name)
         for kind, columns, taken, positions in rows.values():
-            parts.append((kind, [column[taken] for column in columns.values()], np.array(positions, np.int64)))
+            parts.append((kind, [column[taken] for column in columns.values()], np.array(positions, np.int64), True))
         for (kind, *_), (values, positions) in singles.items():
-            parts.append((kind, [np.stack(v) for v in zip(*values)], np.array(positions, np.int64)))
+            parts.append((kind, [np.stack(v) for v in zip(*values)], np.array(positions, np.int64), True))
         world = Scene()
         world._insert(names, parts)
         return world
