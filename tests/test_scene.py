@@ -338,3 +338,18 @@ def test_queries_measure_shapes_as_added_in_any_mix_of_dtypes():
     pairs = [(f"s{a}", f"s{b}") for a in range(len(shapes)) for b in range(a + 1, len(shapes))
              if cd.within(shapes[a], shapes[b], 0.3)]
     assert scene.pairs_within(0.3) == pairs
+
+
+def test_a_pickle_of_float64_groups_without_dtypes_still_loads():
+    """Scenes pickled when every group was float64 with a sweep (keys (kind, control points))."""
+    import pickle
+
+    scene = cd.Scene({"ring": cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.0), "dot": cd.Point([0, 0, 2])})
+    state = scene.__getstate__()
+    state["groups"] = [((key[0], key[1]), kind, [np.asarray(f, np.float64) for f in fields], ids)
+                       for key, kind, fields, ids in state["groups"]]
+    old = cd.Scene.__new__(cd.Scene)
+    old.__setstate__(pickle.loads(pickle.dumps(state)))
+    assert old.names == ["ring", "dot"]
+    assert old["dot"].to_arrays().keys() == {"p", "sweep"}
+    assert old.nearest(cd.Point([0, 0, 1.5])) == [("dot", 0.5)]

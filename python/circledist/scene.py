@@ -223,7 +223,7 @@ class Scene:
         for number, (key, kind, fields, ids) in enumerate(state["groups"]):
             key = tuple(key)
             if len(key) == 2:  # written before groups had dtypes: float64 throughout, with a sweep
-                key = key + (tuple(np.dtype(np.float64).str for _ in fields), True)
+                key = key + (tuple(np.dtype(np.float64) for _ in fields), True)
             g = _Group(kind, [f.shape[1:] for f in fields], [np.dtype(d) for d in key[2]], key[3])
             g.columns = [_Grown(f.shape[1:], data=np.array(f, dtype=np.dtype(d))) for f, d in zip(fields, key[2])]
             g.id_column = _Grown((), np.int64, np.array(ids, dtype=np.int64))
@@ -380,12 +380,11 @@ class Scene:
         """The group of a kind (Bezier curves: and control point count, from the shape `control`
         of their control points), of the dtypes of `element`'s fields (one shape's) and of shapes
         with a sweep or without; made on first use with the trailing shapes of those fields."""
-        dtypes = tuple(np.asarray(v).dtype.str for v in element)
+        dtypes = tuple(v.dtype for v in element)
         key = (kind, control[0] if kind == "Bezier" else 0, dtypes, swept)
         group = self._groups.get(key)
         if group is None:
-            group = self._groups[key] = _Group(kind, [np.shape(v) for v in element],
-                                               [np.dtype(d) for d in dtypes], swept)
+            group = self._groups[key] = _Group(kind, [v.shape for v in element], dtypes, swept)
             self._keys[key] = len(self._keys)
         return group, self._keys[key]
 
