@@ -119,7 +119,7 @@ def _validator() -> Validator:
 @dataclass
 class ShapeEntry:
     """One entry of a scene: a single shape (count None) or a batch of count shapes of one kind.
-    fields: float64 arrays, sweep included; for a batch each has a leading axis of count rows
+    fields: a mapping of field names to float64 arrays, sweep included; for a batch each has a leading axis of count rows
     (broadcast views where the file gave one value for all)."""
 
     name: str
@@ -682,9 +682,10 @@ class _LazyArrays:
 
     def __init__(self, npz, file):
         self.npz, self.file, self.cache = npz, file, {}
+        self.names = frozenset(npz.files)  # npz.files is a list: a lookup per field would be O(n)
 
     def __contains__(self, key):
-        return key in self.npz.files
+        return key in self.names
 
     def __getitem__(self, key):
         if key not in self.cache:
