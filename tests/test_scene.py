@@ -321,15 +321,17 @@ def test_queries_measure_shapes_as_added_in_any_mix_of_dtypes():
     f32 = {k: np.float32 for k in ("center", "normal", "radius", "p", "p0", "p1", "sweep")}
     shapes = [as_dtype(s, f32) if i % 3 else s for i, s in enumerate(shapes)]
     scene = cd.Scene([(f"s{i}", s) for i, s in enumerate(shapes)])
-    for query in (as_dtype(cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5), f32), cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5)):
+    ring = cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5)
+    for query in (as_dtype(ring, f32), ring):
         d = brute_distances(query, shapes)
         order = sorted(range(len(shapes)), key=lambda i: (d[i], i))[:7]
         assert scene.nearest(query, 7) == [(f"s{i}", float(d[i])) for i in order]
         assert scene.within(query, 1.0) == [f"s{i}" for i in range(len(shapes)) if cd.within(query, shapes[i], 1.0)]
-    query32 = as_dtype(cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5), f32)
+    query32 = as_dtype(ring, f32)
+    f64 = {k: np.float64 for k in f32}
     # The float32 shapes are measured in float32 against a float32 query: not as float64 copies.
-    rounded = [i for i in range(len(shapes)) if i % 3 and
-               cd.distance(query32, shapes[i]) != cd.distance(query32, as_dtype(shapes[i], {k: np.float64 for k in f32}))]
+    rounded = [i for i in range(len(shapes))
+               if i % 3 and cd.distance(query32, shapes[i]) != cd.distance(query32, as_dtype(shapes[i], f64))]
     assert rounded
     i = rounded[0]
     assert scene.distance_matrix([f"s{i}"], ["s0"])[0, 0] == cd.distance(shapes[i], shapes[0])

@@ -119,8 +119,8 @@ def _validator() -> Validator:
 @dataclass
 class ShapeEntry:
     """One entry of a scene: a single shape (count None) or a batch of count shapes of one kind.
-    fields: a mapping of field names to float64 arrays, sweep included; for a batch each has a leading axis of count rows
-    (broadcast views where the file gave one value for all)."""
+    fields: a mapping of field names to float64 arrays, sweep included; for a batch each has a
+    leading axis of count rows (broadcast views where the file gave one value for all)."""
 
     name: str
     kind: str
@@ -370,7 +370,7 @@ def _entries_from_json(shapes: list, file: str) -> list:
             good = ~bad
             names = list(KINDS[kind][1])
             getattr(_core, KINDS[kind][0])(*(columns[n][good] for n in names), sweep=columns[_SWEEP][good])
-        except ValueError:  # something the library refuses: every entry of the kind goes through _entry_from_json
+        except ValueError:  # something the library refuses: the kind's entries go through _entry_from_json
             bad = np.ones(len(indices), bool)
         if bad.any():
             first_bad = min(first_bad, indices[int(np.argmax(bad))])
