@@ -229,3 +229,52 @@ def test_circledist_does_not_import_dask_and_the_error_without_it_is_clear():
     run = subprocess.run([sys.executable, "-c", "import sys; sys.modules['dask'] = None; import circledist.dask"],
                          capture_output=True, text=True)
     assert "circledist.dask needs dask: pip install 'circledist[dask]'" in run.stderr
+
+
+BATCH_KEYS = [0, -1, 2, slice(1, 3), slice(None, None, -2), (1, 2), (slice(None), 3), (-2, slice(1, None)),
+              (Ellipsis, 1), (1, Ellipsis), (Ellipsis,), (), np.int64(1), (slice(0, 0),)]
+
+
+@pytest.mark.parametrize("key", BATCH_KEYS, ids=repr)
+def test_indexing_a_batch_is_numpy_indexing_of_its_broadcast_fields(client, key):
+    """A (3, 4) batch whose fields have batch shapes (3, 4), (3, 1) and (4,), chunked: indexed,
+    it is the circledist shape of the NumPy-indexed broadcast fields (dtypes kept), and answers
+    queries on the cluster as that shape does."""
+    rng = np.random.default_rng(5)
+    center = rng.normal(size=(3, 4, 3))
+    normal = rng.normal(size=(3, 1, 3)).astype(np.float32)
+    radius = rng.uniform(0.5, 2, 4)
+    lazy = cdd.Circle(da.from_array(center, chunks=(2, 3, 3)), da.from_array(normal, chunks=(1, 1, 3)),
+                      da.from_array(radius, chunks=2), sweep=0.25)
+    assert lazy.batch_shape == (3, 4) and len(lazy) == 3
+    # Which elements, by NumPy on an array of the batch's shape; then those rows of each field.
+    taken = np.arange(12).reshape(3, 4)[key]
+    fields = {"center": np.broadcast_to(center, (3, 4, 3)).reshape(12, 3)[taken],
+              "normal": np.broadcast_to(normal, (3, 4, 3)).reshape(12, 3)[taken],
+              "radius": np.broadcast_to(radius, (3, 4)).reshape(12)[taken],
+              "sweep": np.full(12, 0.25)[taken]}
+    part = lazy[key]
+    assert isinstance(part, cdd.Circle) and part.batch_shape == fields["radius"].shape
+    got = part.compute().to_arrays()
+    assert sorted(got) == sorted(fields)
+    for name, value in fields.items():
+        same(got[name], value)
+    expected = cd.Circle(fields["center"], fields["normal"], fields["radius"], sweep=fields["sweep"])
+    probe = cd.Point([0.5, -0.25, 1.0])
+    same(cdd.distance(part, probe).compute(), cd.distance(expected, probe))
+
+
+def test_indexing_refuses_what_is_not_basic_indexing():
+    rings = cdd.Circle(np.zeros((4, 3)), [0, 0, 1], np.arange(1.0, 5.0))
+    assert len(rings) == 4 and len(rings[1:]) == 3 and rings[2].batch_shape == ()
+    with pytest.raises(IndexError, match="too many indices for a batch of 1 dimension"):
+        rings[0, 0]
+    with pytest.raises(IndexError):
+        rings[4].compute()
+    with pytest.raises(IndexError, match="single ellipsis"):
+        rings[..., ...]
+    for key in ([0, 1], np.array([0, 1]), np.array([True, False, True, True]), True, None, 1.0, "a"):
+        with pytest.raises(TypeError, match="only integers, slices and ... index a batch"):
+            rings[key]
+    with pytest.raises(TypeError, match=r"len\(\) of a single Circle"):
+        len(rings[0])

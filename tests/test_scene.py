@@ -216,8 +216,11 @@ def check_copies(scene):
         for (key, g), (key2, h) in zip(scene._groups.items(), again._groups.items()):
             assert key == key2 and g.kind == h.kind
             for f, e in zip(g.fields, h.fields):
-                assert f.dtype == e.dtype == np.float64 and np.array_equal(f, e)
+                assert f.dtype == e.dtype and np.array_equal(f, e)
             assert np.array_equal(g.ids, h.ids)
+        ring32 = again["ring32"].to_arrays()
+        assert {k: v.dtype for k, v in ring32.items()} == {"center": np.float32, "normal": np.float64,
+                                                           "radius": np.float32, "sweep": np.float32}
         assert again.pairs_within(0.5) == before
         assert again.nearest(probe, 5) == scene.nearest(probe, 5)
         assert again.within(probe, 1.0) == scene.within(probe, 1.0)
@@ -267,3 +270,88 @@ def test_adding_after_queries_and_mixing_add_and_extend():
              if cd.within(expected[i], expected[j], 0.3)]
     assert scene.pairs_within(0.3) == pairs
     assert scene.pairs_within(0.3, workers=2) == pairs
+
+
+def as_dtype(shape, dtypes):
+    """The shape rebuilt from its arrays, field f in dtypes.get(f) (others as they are)."""
+    arrays = {k: np.asarray(v, dtype=dtypes.get(k, v.dtype)) for k, v in shape.to_arrays().items()}
+    return getattr(cd, shape.kind).from_arrays(arrays)
+
+
+def dtypes_of(shape):
+    return {k: v.dtype for k, v in shape.to_arrays().items()}
+
+
+def test_shapes_come_back_with_the_dtypes_they_were_added_with():
+    """Each field keeps its dtype (float32, float64, long double, mixed within one shape), and a
+    shape added without a sweep comes back without one; by add, by extend, in any mix, after
+    queries, and through pickling."""
+    import pickle
+
+    f32, f64, ld = np.float32, np.float64, np.longdouble
+    _, shapes = mixed_scene(41, n=70, box=5.0)
+    variants = [{}, {"center": f32, "normal": f32, "radius": f32, "p": f32, "p0": f32, "p1": f32,
+                     "control_points": f32, "sweep": f32},
+                {"center": ld, "p": ld, "control_points": ld}, {"radius": f32, "p1": f32, "sweep": ld}]
+    scene, added = cd.Scene(), {}
+    for i, s in enumerate(shapes):
+        shape = as_dtype(s, variants[i % 4])
+        scene.add(f"s{i}", shape)
+        added[f"s{i}"] = shape
+        if i == 35:
+            scene.nearest(cd.Circle([0, 0, 0], [0, 0, 1], 1.0))  # a query in between: arrays consolidated
+    batch = cd.Circle(np.float32([[0, 0, 0], [1, 0, 0], [2, 0, 0]]), [0, 0, 1], np.float32([1, 2, 3]))
+    scene.extend("b", batch)
+    added.update({f"b{i}": cd.Circle(np.float32([i, 0, 0]), np.float64([0, 0, 1]), np.float32(i + 1))
+                  for i in range(3)})
+    assert {dt for s in added.values() for dt in dtypes_of(s).values()} == {np.dtype(f32), np.dtype(f64), np.dtype(ld)}
+    assert any("sweep" not in s.to_arrays() for s in added.values())
+    for copy in (scene, pickle.loads(pickle.dumps(scene))):
+        for name, shape in added.items():
+            got, want = copy[name].to_arrays(), shape.to_arrays()
+            assert got.keys() == want.keys(), name
+            for key in want:
+                assert got[key].dtype == want[key].dtype and np.array_equal(got[key], want[key]), (name, key)
+
+
+def test_queries_measure_shapes_as_added_in_any_mix_of_dtypes():
+    """Answers equal brute force over the shapes as added: a float32 query among float32 shapes
+    gets float32-rounded distances (the library's precision rule), among float64 ones float64."""
+    _, shapes = mixed_scene(42, n=90, box=4.0, kinds=("Disk", "Circle", "Segment", "Point"))
+    f32 = {k: np.float32 for k in ("center", "normal", "radius", "p", "p0", "p1", "sweep")}
+    shapes = [as_dtype(s, f32) if i % 3 else s for i, s in enumerate(shapes)]
+    scene = cd.Scene([(f"s{i}", s) for i, s in enumerate(shapes)])
+    ring = cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5)
+    for query in (as_dtype(ring, f32), ring):
+        d = brute_distances(query, shapes)
+        order = sorted(range(len(shapes)), key=lambda i: (d[i], i))[:7]
+        assert scene.nearest(query, 7) == [(f"s{i}", float(d[i])) for i in order]
+        assert scene.within(query, 1.0) == [f"s{i}" for i in range(len(shapes)) if cd.within(query, shapes[i], 1.0)]
+    query32 = as_dtype(ring, f32)
+    f64 = {k: np.float64 for k in f32}
+    # The float32 shapes are measured in float32 against a float32 query: not as float64 copies.
+    rounded = [i for i in range(len(shapes))
+               if i % 3 and cd.distance(query32, shapes[i]) != cd.distance(query32, as_dtype(shapes[i], f64))]
+    assert rounded
+    i = rounded[0]
+    assert scene.distance_matrix([f"s{i}"], ["s0"])[0, 0] == cd.distance(shapes[i], shapes[0])
+    names = [n for n, _ in scene.nearest(query32, len(shapes))]
+    assert dict(scene.nearest(query32, len(shapes)))[f"s{i}"] == cd.distance(query32, shapes[i]) and f"s{i}" in names
+    pairs = [(f"s{a}", f"s{b}") for a in range(len(shapes)) for b in range(a + 1, len(shapes))
+             if cd.within(shapes[a], shapes[b], 0.3)]
+    assert scene.pairs_within(0.3) == pairs
+
+
+def test_a_pickle_of_float64_groups_without_dtypes_still_loads():
+    """Scenes pickled when every group was float64 with a sweep (keys (kind, control points))."""
+    import pickle
+
+    scene = cd.Scene({"ring": cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.0), "dot": cd.Point([0, 0, 2])})
+    state = scene.__getstate__()
+    state["groups"] = [((key[0], key[1]), kind, [np.asarray(f, np.float64) for f in fields], ids)
+                       for key, kind, fields, ids in state["groups"]]
+    old = cd.Scene.__new__(cd.Scene)
+    old.__setstate__(pickle.loads(pickle.dumps(state)))
+    assert old.names == ["ring", "dot"]
+    assert old["dot"].to_arrays().keys() == {"p", "sweep"}
+    assert old.nearest(cd.Point([0, 0, 1.5])) == [("dot", 0.5)]

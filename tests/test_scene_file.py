@@ -131,6 +131,113 @@ def test_validator_agrees_with_jsonschema_on_a_corpus():
         sf.scene_from_json(doc, "valid.json")
 
 
+def test_compiled_predicates_decide_as_the_step_by_step_check():
+    """The validator answers well-formed documents with compiled predicates and composes messages
+    step by step only where one fails; both must agree exactly on every document and entry, and
+    the reported error must be the one the step-by-step check alone reports."""
+    schema = sf.schema()
+    fast, slow = _schema.Validator(schema), _schema.Validator(schema, compiled=False)
+    shape = schema["$defs"]["shape"]
+    valid, docs = _corpus()
+    entries = [e for doc in docs if isinstance(doc, dict) and isinstance(doc.get("shapes"), list)
+               for e in doc["shapes"]]
+    odd = [None, True, False, 0, 1.0, -0.0, float("nan"), 10**40, "", "x", [], {}, [[]], {"kind": 1},
+           {"name": "a", "kind": ["circle"]}, {"name": "a", "kind": "nope"}, np.float64(1.5), [1, 2, np.float64(3)]]
+    assert len(entries) > 5000
+    for value in docs + odd:
+        expected = slow.first_error(value)
+        assert fast.first_error(value) == expected, value
+        assert fast.is_valid(value) == (expected is None), value
+    for value in entries + odd:
+        for node in (shape, schema["$defs"]["vectors"], schema["$defs"]["control_points_batch"]):
+            expected = slow.first_error(value, node, "$.x")
+            assert fast.first_error(value, node, "$.x") == expected, (value, node.get("title"))
+            assert fast.is_valid(value, node) == (expected is None), value
+
+
+def _many_single_shapes(n):
+    """n single shapes of every kind, in turn, as a scene document."""
+    specs = []
+    for i in range(n):
+        x = [i * 0.5, (i % 7) - 3.0, (i % 11) * 0.25]
+        kind = ("circle", "disk", "segment", "point", "bezier", "line", "ray")[(i + 3) % 7]
+        spec = {"name": f"s{i}", "kind": kind}
+        if kind in ("circle", "disk"):
+            spec.update(center=x, normal=[0, (i % 3) - 1, 1], radius=0.5 + (i % 5) * 0.1)
+        elif kind == "segment":
+            spec.update(p0=x, p1=[x[0] + 1, x[1], x[2]])
+        elif kind == "point":
+            spec.update(p=x, sweep=0.1)
+        elif kind == "bezier":
+            spec.update(control_points=[x, [x[0] + 1, x[1] + 1, x[2]], [x[0] + 2, x[1], x[2]]][:2 + i % 2])
+        else:
+            spec.update(origin=x, direction=[1, 0.5, 0])
+        specs.append(spec)
+    return {**HEAD, "shapes": specs, "queries": [{"a": "s0", "b": "s2", "effects": ["distance"]}]}
+
+
+@pytest.fixture(scope="module")
+def big_scene():
+    doc = _many_single_shapes(200_001)
+    sf.scene_from_json(doc, "big.json")  # valid as it is
+    return doc
+
+
+@pytest.mark.parametrize("label, mutate, where, message", [
+    ("bad field", lambda s: s.update(radius=-1), "$.shapes[150000].radius (shape 's150000')",
+     "expected a number >= 0, got -1"),
+    ("zero normal", lambda s: s.update(normal=[0, 0, 0]), "$.shapes[150000].normal",
+     "expected a non-zero vector, got [0, 0, 0]"),
+    ("huge number", lambda s: s.update(center=[1, 10**400, 0]), "$.shapes[150000].center[1]",
+     "expected a finite number (within a double's range), got an integer of 401 digits"),
+    ("unknown field", lambda s: s.update(colour="red"), "$.shapes[150000].colour (shape 's150000')",
+     "unknown field (allowed: name, kind, count, center, normal, radius, sweep)"),
+])
+def test_a_bad_entry_deep_in_a_large_file_is_reported_as_in_a_small_one(big_scene, label, mutate, where, message):
+    """The fast paths for large files (compiled schema, single shapes checked as columns) report
+    the first bad entry exactly as the step-by-step check does, with its index."""
+    doc = {**big_scene, "shapes": list(big_scene["shapes"])}
+    spec = doc["shapes"][150000] = copy.deepcopy(doc["shapes"][150000])
+    assert spec["kind"] in ("circle", "disk")
+    mutate(spec)
+    doc["shapes"][150007] = {**doc["shapes"][150007], "normal": [0, 0, 0]}  # a later bad entry: not reported
+    with pytest.raises(sf.SceneFileError) as big:
+        sf.scene_from_json(doc, "big.json")
+    assert str(big.value) == f"big.json: {where}: {message}"
+    # The same entry alone in a small file: the same message, at index 0.
+    small = {**HEAD, "shapes": [spec]}
+    with pytest.raises(sf.SceneFileError) as one:
+        sf.scene_from_json(small, "big.json")
+    assert str(one.value) == f"big.json: {where.replace('150000]', '0]')}: {message}"
+
+
+def test_a_large_file_of_single_shapes_reads_as_shapes_added_one_by_one(tmp_path):
+    doc = _many_single_shapes(3000)
+    path = tmp_path / "many.json"
+    path.write_text(json.dumps(doc))
+    scene = sf.read_scene(str(path))
+    assert scene.count == 3000
+    expected = cd.Scene()
+    for spec in doc["shapes"]:
+        fields = {k: v for k, v in spec.items() if k not in ("name", "kind")}
+        expected.add(spec["name"], getattr(cd, sf.KINDS[spec["kind"]][0])(**fields))
+    for i in (0, 1, 2, 3, 4, 5, 6, 1234, 2999):
+        assert repr(scene.shape(f"s{i}")) == repr(expected[f"s{i}"])
+        assert repr(scene.scene()[f"s{i}"]) == repr(expected[f"s{i}"])
+    world = scene.scene()
+    assert world.names == expected.names
+    probe = cd.Circle([100, 0.5, 0.2], [0, 1, 1], 2.0)
+    assert world.nearest(probe, 5) == expected.nearest(probe, 5)
+    assert world.within(probe, 1.5) == expected.within(probe, 1.5)
+    # written back, one shape a line, and read again: the same shapes
+    again = tmp_path / "again.json"
+    sf.write_scene(str(again), scene.shapes, scene.queries_as_written())
+    assert len(again.read_text().splitlines()) == 3000 + 9
+    reread = sf.read_scene(str(again))
+    assert [repr(reread.shape(n)) for n in world.names] == [repr(scene.shape(n)) for n in world.names]
+    assert reread.queries == scene.queries
+
+
 def test_batches_in_queries_and_answers(tmp_path):
     path = tmp_path / "batches.json"
     path.write_text(json.dumps(BATCH_SCENE))

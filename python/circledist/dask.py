@@ -94,19 +94,83 @@ class _Shape:
     def __repr__(self):
         return f"circledist.dask.{self.kind}(batch_shape={self.batch_shape})"
 
+    def __len__(self):
+        """The length of the first batch axis (a single shape has none: TypeError, as len() of
+        a 0-d NumPy array)."""
+        if not self.batch_shape:
+            raise TypeError(f"len() of a single {self.kind} (batch shape ())")
+        return self.batch_shape[0]
 
-def _shape_class(name, names, doc):
+    def __getitem__(self, key):
+        """Basic indexing of the batch axes, as NumPy indexes an array of the batch's shape:
+        integers (negative from the end), slices and one Ellipsis, one per batch axis at most.
+
+        Returns a dask shape of the same kind (batch shape () for one integer per axis), lazy:
+        every field is broadcast to the batch shape and indexed, its per-element axes kept.
+        Fancy indexing (arrays, lists, booleans) and None are refused with a TypeError.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import circledist.dask as cdd
+        >>> rings = cdd.Circle(np.zeros((4, 3)), [0, 0, 1], np.arange(1.0, 5.0))
+        >>> rings[1:3], len(rings)
+        (circledist.dask.Circle(batch_shape=(2,)), 4)
+        >>> rings[-1].compute()
+        Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(4.))
+        """
+        index = _batch_index(key, len(self.batch_shape), self.kind)
+        fields = {}
+        for name, value in self.fields.items():
+            core = _CORE_NDIM[name]
+            value = da.broadcast_to(value, tuple(self.batch_shape) + value.shape[value.ndim - core:])
+            fields[name] = value[index]
+        return type(self).from_arrays(fields)
+
+
+def _batch_index(key, ndim, kind):
+    """`key` as a tuple of one integer or slice per batch axis (Ellipsis expanded, the missing
+    trailing axes taken whole); TypeError for what is not basic indexing, IndexError for too many
+    indices."""
+    items = key if isinstance(key, tuple) else (key,)
+    out = []
+    for item in items:
+        if item is Ellipsis or isinstance(item, slice):
+            out.append(item)
+        elif isinstance(item, (bool, np.bool_)) or item is None:
+            raise TypeError(f"{kind}: only integers, slices and ... index a batch, got {item!r}")
+        else:
+            try:
+                out.append(operator.index(item))
+            except TypeError:
+                raise TypeError(f"{kind}: only integers, slices and ... index a batch, got {item!r}") from None
+    if out.count(Ellipsis) > 1:
+        raise IndexError(f"{kind}: an index can only have a single ellipsis ('...')")
+    given = len(out) - out.count(Ellipsis)
+    if given > ndim:
+        raise IndexError(f"{kind}: too many indices for a batch of {ndim} dimension(s): {given} were given")
+    if Ellipsis in out:
+        at = out.index(Ellipsis)
+        out[at:at + 1] = [slice(None)] * (ndim - given)
+    return tuple(out) + (slice(None),) * (ndim - len(out))
+
+
+def _shape_class(name, names):
+    signature = f"{name}({', '.join(names)}, *, sweep=None)"
+    doc = (f"{signature}\n\nA batch of `circledist.{name}` shapes whose fields are dask arrays (NumPy arrays "
+           f"and scalars are taken as dask arrays), with the arguments of `circledist.{name}`.\n\n"
+           "Indexing (``shape[i]``, ``shape[a:b]``) selects along the batch axes, lazily; ``compute()`` "
+           "gives the `circledist` shape.")
     return type(name, (_Shape,), {"_names": names, "__doc__": doc, "__module__": __name__})
 
 
-Point = _shape_class("Point", ("p",), "Point(p, *, sweep=None): points as dask arrays.")
-Line = _shape_class("Line", ("origin", "direction"), "Line(origin, direction, *, sweep=None).")
-Ray = _shape_class("Ray", ("origin", "direction"), "Ray(origin, direction, *, sweep=None).")
-Segment = _shape_class("Segment", ("p0", "p1"), "Segment(p0, p1, *, sweep=None).")
-Circle = _shape_class("Circle", ("center", "normal", "radius"),
-                      "Circle(center, normal, radius, *, sweep=None).")
-Disk = _shape_class("Disk", ("center", "normal", "radius"), "Disk(center, normal, radius, *, sweep=None).")
-Bezier = _shape_class("Bezier", ("control_points",), "Bezier(control_points, *, sweep=None).")
+Point = _shape_class("Point", ("p",))
+Line = _shape_class("Line", ("origin", "direction"))
+Ray = _shape_class("Ray", ("origin", "direction"))
+Segment = _shape_class("Segment", ("p0", "p1"))
+Circle = _shape_class("Circle", ("center", "normal", "radius"))
+Disk = _shape_class("Disk", ("center", "normal", "radius"))
+Bezier = _shape_class("Bezier", ("control_points",))
 _CLASSES = {cls.__name__: cls for cls in (Point, Line, Ray, Segment, Circle, Disk, Bezier)}
 
 

@@ -9,8 +9,12 @@ far above rounding, so every answer is the one brute force gives: the exact test
 through ``circledist.within`` / ``circledist.distance_if_within``, which try cheap exact bounds
 again before they solve a polynomial.
 
-Shapes are kept per kind (and, for Bezier curves, per control point count) in float64 arrays
-that grow by doubling, so adding n shapes one by one costs O(n) in all.
+Shapes are kept per kind (and, for Bezier curves, per control point count, and per the dtypes of
+their fields) in arrays that grow by doubling, so adding n shapes one by one costs O(n) in all.
+A shape keeps the dtypes it was added with (float32, float64, long double, per field, as its
+``to_arrays()`` reports them) and whether it was given a sweep: the scene returns it as it was
+added, and queries measure it as ``circledist.distance`` measures it (float32 answers where the
+query and the shape are float32 throughout, as the library's precision rule says).
 """
 
 from __future__ import annotations
@@ -35,7 +39,8 @@ _TRAILING = {"p": 1, "origin": 1, "direction": 1, "p0": 1, "p1": 1, "center": 1,
 
 
 class _Grown:
-    """A float64 (or int64) array of rows that grows by doubling: appending is O(1) amortized."""
+    """An array of rows (float32, float64, long double or int64) that grows by doubling:
+    appending is O(1) amortized."""
 
     def __init__(self, trailing: tuple, dtype=np.float64, data: np.ndarray | None = None):
         self.data = np.empty((0,) + trailing, dtype) if data is None else data
@@ -63,17 +68,19 @@ class _Grown:
 
 
 class _Group:
-    """Shapes of one kind (and, for Bezier curves, one control point count), column-stored.
+    """Shapes of one kind (and, for Bezier curves, one control point count), one dtype per field,
+    with a sweep or without, column-stored (a sweep column of zeros when without).
 
     Single shapes are appended to Python lists (the cheapest step per call) and moved into the
     growing arrays when the arrays are next read: adding stays O(1), reading after adds O(adds).
     """
 
-    def __init__(self, kind: str, trailing: list[tuple]):
+    def __init__(self, kind: str, trailing: list[tuple], dtypes: list, swept: bool = True):
         self.kind = kind
         self.cls = getattr(_core, kind)
         self.names = KIND_FIELDS[kind] + ("sweep",)
-        self.columns = [_Grown(t) for t in trailing]
+        self.swept = swept
+        self.columns = [_Grown(t, dtype) for t, dtype in zip(trailing, dtypes)]
         self.pending: list[list] = [[] for _ in trailing]
         self.id_column = _Grown((), np.int64)
         self.pending_ids: list[int] = []
@@ -98,7 +105,7 @@ class _Group:
     def _flush(self) -> None:
         if self.pending_ids:
             for column, pending in zip(self.columns, self.pending):
-                column.extend(np.array(pending, dtype=np.float64).reshape((-1,) + column.data.shape[1:]))
+                column.extend(np.array(pending, dtype=column.data.dtype).reshape((-1,) + column.data.shape[1:]))
                 pending.clear()
             self.id_column.extend(np.array(self.pending_ids, dtype=np.int64))
             self.pending_ids.clear()
@@ -118,16 +125,20 @@ class _Group:
         arrays = [f[rows] for f in self.fields]
         if column:
             arrays = [a[:, None] for a in arrays]
-        return self.cls(*arrays[:-1], sweep=arrays[-1])
+        return self._shape(arrays)
 
     def whole(self):
         """Every shape of the group as one batch, referring to the stored arrays (no copy)."""
-        arrays = [np.ascontiguousarray(f) for f in self.fields]
-        return self.cls(*arrays[:-1], sweep=arrays[-1], copy=False)
+        return self._shape([np.ascontiguousarray(f) for f in self.fields], copy=False)
 
     def single(self, row: int):
-        arrays = [f[row] for f in self.fields]
-        return self.cls(*arrays[:-1], sweep=arrays[-1])
+        return self._shape([f[row] for f in self.fields])
+
+    def _shape(self, arrays: list, copy: bool = True):
+        """The shape of the fields' arrays, the sweep last (left out for shapes added without one)."""
+        if self.swept:
+            return self.cls(*arrays[:-1], sweep=arrays[-1], copy=copy)
+        return self.cls(*arrays[:-1], copy=copy)
 
 
 def _limit(owner: str, d) -> float:
@@ -147,6 +158,10 @@ class Scene:
     shapes a query cannot reach; every answer is the one brute force over `circledist.within`
     and `circledist.distance` gives. Adding a shape costs O(1): the hierarchy is rebuilt, in
     O(n log n), by the first query after a change. A scene pickles and deep-copies.
+
+    Shapes keep the dtypes they were added with (per field: float32, float64 or long double)
+    and come back as added; queries measure them as ``circledist.distance`` measures those
+    shapes (float32 answers where the query and the shape are float32 throughout).
 
     Parameters
     ----------
@@ -207,8 +222,10 @@ class Scene:
         self._groups, self._keys = {}, {}
         for number, (key, kind, fields, ids) in enumerate(state["groups"]):
             key = tuple(key)
-            g = _Group(kind, [f.shape[1:] for f in fields])
-            g.columns = [_Grown(f.shape[1:], data=np.array(f, dtype=np.float64)) for f in fields]
+            if len(key) == 2:  # written before groups had dtypes: float64 throughout, with a sweep
+                key = key + (tuple(np.dtype(np.float64) for _ in fields), True)
+            g = _Group(kind, [f.shape[1:] for f in fields], [np.dtype(d) for d in key[2]], key[3])
+            g.columns = [_Grown(f.shape[1:], data=np.array(f, dtype=np.dtype(d))) for f, d in zip(fields, key[2])]
             g.id_column = _Grown((), np.int64, np.array(ids, dtype=np.int64))
             g.size = len(ids)
             self._groups[key] = g
@@ -268,11 +285,13 @@ class Scene:
             raise TypeError(f"Scene: shape names must be strings, got {name!r}")
         if name in self._index:
             raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
-        # One shape: its fields as they are (trailing dimensions only), no broadcasting to do.
+        # One shape: its fields as they are (trailing dimensions and dtypes), no broadcasting to do.
         kind = shape.kind
-        values = [getattr(shape, field) for field in KIND_FIELDS[kind]]
-        values.append(shape.sweep)
-        group, number = self._group(kind, values[0].shape if kind == "Bezier" else None, values)
+        arrays = shape.to_arrays()
+        values = [arrays[field] for field in KIND_FIELDS[kind]]
+        values.append(arrays.get("sweep", _NO_SWEEP))
+        group, number = self._group(kind, values[0].shape if kind == "Bezier" else None, values,
+                                    "sweep" in arrays)
         item = len(self._names)
         self._item_group.append(number)
         self._item_row.append(len(group))
@@ -319,6 +338,22 @@ class Scene:
         names = list(names)
         if len(names) != count:
             raise ValueError(f"Scene.extend: {len(names)} names for a batch of {count} shapes")
+        kind = batch.kind
+        shape = tuple(batch.batch_shape)
+        arrays = batch.to_arrays()
+        values = []
+        for field in KIND_FIELDS[kind] + ("sweep",):
+            a = arrays.get(field, _NO_SWEEP)
+            trailing = a.shape[a.ndim - _TRAILING[field]:] if _TRAILING[field] else ()
+            values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
+        self._insert(names, [(kind, values, np.arange(count), "sweep" in arrays)])
+
+    def _insert(self, names: list, parts: list) -> None:
+        """Adds len(names) shapes at once, named in order: parts are (kind, values, positions,
+        swept), values one array per field (the sweep last; zeros when swept is false: shapes
+        without a sweep) whose rows are the shapes at `positions` (in names) of that kind; the
+        parts' positions together cover every name once. The rows are taken as valid shapes (they
+        come from shapes, or from a validated scene file)."""
         seen = set()
         for name in names:
             if not isinstance(name, str):
@@ -326,31 +361,30 @@ class Scene:
             if name in self._index or name in seen:
                 raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
             seen.add(name)
-        kind = batch.kind
-        shape = tuple(batch.batch_shape)
-        values = []
-        for field in KIND_FIELDS[kind] + ("sweep",):
-            a = np.asarray(getattr(batch, field))
-            trailing = a.shape[a.ndim - _TRAILING[field]:] if _TRAILING[field] else ()
-            values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
-        group, number = self._group(kind, values[0].shape[1:] if kind == "Bezier" else None,
-                                    [np.zeros(v.shape[1:]) for v in values])
-        start, row = len(self._names), len(group)
-        self._item_group.extend([number] * count)
-        self._item_row.extend(range(row, row + count))
-        group.extend(values, np.arange(start, start + count))
-        self._index.update(zip(names, range(start, start + count)))
+        start = len(self._names)
+        item_group = np.empty(len(names), np.int64)
+        item_row = np.empty(len(names), np.int64)
+        for kind, values, positions, swept in parts:
+            group, number = self._group(kind, values[0].shape[1:] if kind == "Bezier" else None,
+                                        [np.zeros(v.shape[1:], v.dtype) for v in values], swept)
+            item_group[positions] = number
+            item_row[positions] = np.arange(len(group), len(group) + len(positions))
+            group.extend(values, start + np.asarray(positions, dtype=np.int64))
+        self._item_group.frombytes(item_group.tobytes())
+        self._item_row.frombytes(item_row.tobytes())
+        self._index.update(zip(names, range(start, start + len(names))))
         self._names.extend(names)
         self._built = None
 
-    def _group(self, kind: str, control, element: list) -> tuple[_Group, int]:
+    def _group(self, kind: str, control, element: list, swept: bool) -> tuple[_Group, int]:
         """The group of a kind (Bezier curves: and control point count, from the shape `control`
-        of their control points), made on first use with the trailing shapes of `element`'s
-        fields (one shape's)."""
-        key = (kind, control[0]) if kind == "Bezier" else (kind, 0)
+        of their control points), of the dtypes of `element`'s fields (one shape's) and of shapes
+        with a sweep or without; made on first use with the trailing shapes of those fields."""
+        dtypes = tuple(v.dtype for v in element)
+        key = (kind, control[0] if kind == "Bezier" else 0, dtypes, swept)
         group = self._groups.get(key)
         if group is None:
-            group = self._groups[key] = _Group(kind, [np.shape(v) for v in element])
+            group = self._groups[key] = _Group(kind, [v.shape for v in element], dtypes, swept)
             self._keys[key] = len(self._keys)
         return group, self._keys[key]
 
@@ -365,7 +399,9 @@ class Scene:
         Returns
         -------
         Shape
-            A single shape equal to the one added.
+            A single shape equal to the one added: the same values, each field in the dtype it
+            was added with (float32, float64 or long double), with a sweep only if it was given
+            one.
 
         Raises
         ------
@@ -419,16 +455,17 @@ class Scene:
     def _evaluate(self, shape, items: np.ndarray, fn, *args) -> np.ndarray:
         """fn(shape, batch_of_items, *args) for items grouped by kind; results in items' order."""
         b = self._built
-        out = None
+        parts = []
         for gnum in np.unique(b.group[items]):
             sel = np.flatnonzero(b.group[items] == gnum)
             g = b.groups[gnum]
-            values = np.asarray(fn(shape, g.batch(b.row[items[sel]]), *args))
-            if out is None:
-                out = np.empty(len(items), dtype=values.dtype)
+            parts.append((sel, np.asarray(fn(shape, g.batch(b.row[items[sel]]), *args))))
+        if not parts:
+            return np.zeros(0)
+        # Groups of different dtypes answer in different dtypes: the widest holds each exactly.
+        out = np.empty(len(items), dtype=np.result_type(*(values for _, values in parts)))
+        for sel, values in parts:
             out[sel] = values
-        if out is None:
-            out = np.zeros(0)
         return out
 
     def _resolve(self, shape):
@@ -687,6 +724,11 @@ class Scene:
                 A, B = b.groups[ga], b.groups[gb]
                 out[np.ix_(ra, rb)] = _core.distance(A.batch(b.row[ia[ra]], column=True), B.batch(b.row[ib[rb]]))
         return out
+
+
+# The sweep of a shape given none: a zero, only to fill the group's sweep column.
+_NO_SWEEP = np.zeros(())
+_NO_SWEEP.flags.writeable = False
 
 
 class _Built:

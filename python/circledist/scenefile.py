@@ -20,6 +20,8 @@ path such as ``$.shapes[3].radius``, or an array of the .npz and an index) and w
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import json
 import math
 import os
@@ -117,8 +119,8 @@ def _validator() -> Validator:
 @dataclass
 class ShapeEntry:
     """One entry of a scene: a single shape (count None) or a batch of count shapes of one kind.
-    fields: float64 arrays, sweep included; for a batch each has a leading axis of count rows
-    (broadcast views where the file gave one value for all)."""
+    fields: a mapping of field names to float64 arrays, sweep included; for a batch each has a
+    leading axis of count rows (broadcast views where the file gave one value for all)."""
 
     name: str
     kind: str
@@ -191,12 +193,32 @@ class SceneFile:
         """A circledist.Scene of every shape, in file order; shape i of batch b is named 'b[i]'."""
         from .scene import Scene
 
-        world = Scene()
+        names: list = []
+        parts: list = []           # (kind, values, positions, swept): see Scene._insert
+        rows: dict = {}            # id of a kind's columns -> (columns, [row, ...], [position, ...])
+        singles: dict = {}         # (kind, trailing shapes) -> ([fields, ...], [position, ...])
         for e in self.entries:
-            if e.count is None:
-                world.add(e.name, e.shape())
+            fields = e.fields
+            if e.count is not None:
+                values = [np.asarray(fields[f], dtype=np.float64) for f in _roles(e.kind)]
+                parts.append((e.class_name, values, np.arange(len(names), len(names) + e.count), True))
+                names.extend(e.element_names())
+                continue
+            if isinstance(fields, _RowFields):
+                at = rows.setdefault(id(fields.columns), (e.class_name, fields.columns, [], []))
+                at[2].append(fields.row)
             else:
-                world.extend(e.element_names(), e.shape())
+                values = [np.asarray(fields[f], dtype=np.float64) for f in _roles(e.kind)]
+                at = singles.setdefault((e.class_name,) + tuple(v.shape for v in values), ([], []))
+                at[0].append(values)
+            at[-1].append(len(names))
+            names.append(e.name)
+        for kind, columns, taken, positions in rows.values():
+            parts.append((kind, [column[taken] for column in columns.values()], np.array(positions, np.int64), True))
+        for (kind, *_), (values, positions) in singles.items():
+            parts.append((kind, [np.stack(v) for v in zip(*values)], np.array(positions, np.int64), True))
+        world = Scene()
+        world._insert(names, parts)
         return world
 
 
@@ -284,6 +306,84 @@ def _entry_from_json(spec: dict, i: int, file: str) -> ShapeEntry:
     except ValueError as e:  # anything the library still refuses
         raise _error(file, base, str(e)) from None
     return entry
+
+
+class _RowFields(Mapping):
+    """A single shape's fields as a read-only mapping onto row `row` of columns (field -> array)."""
+
+    __slots__ = ("columns", "row")
+
+    def __init__(self, columns: dict, row: int):
+        self.columns, self.row = columns, row
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.columns[name][self.row, ...]
+
+    def __iter__(self):
+        return iter(self.columns)
+
+    def __len__(self) -> int:
+        return len(self.columns)
+
+
+def _float_column(values: list) -> np.ndarray:
+    """Equal-shaped JSON values as one float64 array; a value holding an integer beyond a double's
+    range becomes NaN (to be found bad as any other non-finite row)."""
+    try:
+        return np.array(values, dtype=np.float64)
+    except OverflowError:
+        rows = []
+        for value in values:
+            try:
+                rows.append(np.asarray(value, dtype=np.float64))
+            except OverflowError:
+                rows.append(np.full(np.shape(value), np.nan))
+        return np.array(rows)
+
+
+def _entries_from_json(shapes: list, file: str) -> list:
+    """The entries of schema-valid shape specs, in file order, each checked as _entry_from_json
+    checks it. Single shapes are checked together, a NumPy column per kind and field (a scene of
+    10^5 single shapes would spend seconds on 10^5 small arrays): every entry before the first
+    one a column shows to be bad is taken from the columns, and from there on each entry goes
+    through _entry_from_json, which raises the error the file's first bad entry has."""
+    groups: dict = {}  # (kind, control points) -> indices of the single shapes
+    for i, spec in enumerate(shapes):
+        if "count" not in spec:
+            kind = spec["kind"]
+            groups.setdefault((kind, len(spec["control_points"]) if kind == "bezier" else 0), []).append(i)
+    first_bad = len(shapes)
+    rows: dict = {}  # index -> (fields' columns, row)
+    for (kind, _), indices in groups.items():
+        specs = [shapes[i] for i in indices]
+        columns = {}
+        try:
+            bad = np.zeros(len(indices), bool)
+            for name, role in _roles(kind).items():
+                column = _float_column([spec.get(name, 0) for spec in specs])
+                finite = np.isfinite(column)
+                bad |= ~finite.reshape(len(indices), -1).all(axis=1)
+                if role == "direction":
+                    bad |= ~np.any(column != 0, axis=-1)
+                column.flags.writeable = False
+                columns[name] = column
+            good = ~bad
+            names = list(KINDS[kind][1])
+            getattr(_core, KINDS[kind][0])(*(columns[n][good] for n in names), sweep=columns[_SWEEP][good])
+        except ValueError:  # something the library refuses: the kind's entries go through _entry_from_json
+            bad = np.ones(len(indices), bool)
+        if bad.any():
+            first_bad = min(first_bad, indices[int(np.argmax(bad))])
+        for row, i in enumerate(indices[:int(np.argmax(bad)) if bad.any() else len(indices)]):
+            rows[i] = (columns, row)
+    entries = []
+    for i, spec in enumerate(shapes):
+        if i < first_bad and i in rows:
+            columns, row = rows[i]
+            entries.append(ShapeEntry(spec["name"], spec["kind"], None, _RowFields(columns, row)))
+        else:
+            entries.append(_entry_from_json(spec, i, file))
+    return entries
 
 
 # ------------------------------------------------------------------------------------------
@@ -427,7 +527,7 @@ def scene_from_json(data: Any, file: str) -> SceneFile:
         raise _error(file, where, message)
     shapes = data["shapes"]
     _check_names((s["name"] for s in shapes), file, lambda i: f"$.shapes[{i}].name")
-    entries = [_entry_from_json(spec, i, file) for i, spec in enumerate(shapes)]
+    entries = _entries_from_json(shapes, file)
     queries = _check_queries(data.get("queries", []), entries, file)
     return SceneFile(file, data.get("description", ""), entries, queries)
 
@@ -582,9 +682,10 @@ class _LazyArrays:
 
     def __init__(self, npz, file):
         self.npz, self.file, self.cache = npz, file, {}
+        self.names = frozenset(npz.files)  # npz.files is a list: a lookup per field would be O(n)
 
     def __contains__(self, key):
-        return key in self.npz.files
+        return key in self.names
 
     def __getitem__(self, key):
         if key not in self.cache:
@@ -648,28 +749,48 @@ def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
             raise SceneFileError(f"{path}: cannot read the scene file: {e.strerror}") from None
         except UnicodeDecodeError as e:
             raise SceneFileError(f"{path}: not a UTF-8 text file (byte {e.start}: {e.reason})") from None
-    return scene_from_json(_parse_json(text, path), path)
+    with _collector_paused():
+        return scene_from_json(_parse_json(text, path), path)
+
+
+@contextlib.contextmanager
+def _collector_paused():
+    """Python's cycle collector off for a while: parsing and checking a large file makes millions
+    of objects and no cycles, and each collection would walk them all (a fifth of the time for
+    10^5 shapes)."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
 
 
 def _entries_of(shapes, file: str) -> list:
     items = shapes.items() if isinstance(shapes, Mapping) else shapes
     entries = []
+    roles_of = {kind: list(_roles(kind)) for kind in KINDS}
     for name, shape in items:
         if not isinstance(shape, _core.Shape):
             raise TypeError(f"write_scene: {name!r} must be a circledist shape, got {type(shape).__name__}")
         kind = shape.kind.lower()
         batch = tuple(shape.batch_shape)
-        count = None if batch == () else int(np.prod(batch, dtype=np.int64))
+        if batch == ():  # a single shape: its fields as they are (float64, trailing dimensions only)
+            fields = {f: getattr(shape, f) for f in roles_of[kind]}
+            if fields[_SWEEP] == 0:
+                del fields[_SWEEP]
+            entries.append((str(name), kind, None, fields))
+            continue
+        count = int(np.prod(batch, dtype=np.int64))
         fields = {}
         for f, role in _roles(kind).items():
             a = np.asarray(getattr(shape, f), dtype=np.float64)
             trailing = a.shape[a.ndim - _TRAILING_DIMS[role]:] if _TRAILING_DIMS[role] else ()
-            if count is not None:  # a column: one row per shape, C order; one value if all rows agree
-                a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
-                bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
-                if (bits == bits[:1]).all():
-                    a = a[0]
-            fields[f] = a
+            # A column: one row per shape, C order; one value if all rows agree.
+            a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
+            bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
+            fields[f] = a[0] if (bits == bits[:1]).all() else a
         if not np.any(fields[_SWEEP]):
             del fields[_SWEEP]
         entries.append((str(name), kind, count, fields))
@@ -719,6 +840,11 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
     path = os.fspath(path)
     if not (path.endswith(".json") or path.endswith(".npz")):
         raise ValueError(f"write_scene: {path}: expected a path ending in .json or .npz")
+    with _collector_paused():
+        _write_scene(path, shapes, queries, description)
+
+
+def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str) -> None:
     entries = _entries_of(shapes, path)
     queries = [dict(q) for q in queries]
     if path.endswith(".json"):
@@ -734,8 +860,9 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
             data["shapes"].append(spec)
         if queries:
             data["queries"] = queries
-        scene_from_json(json.loads(json.dumps(data)), path)  # what is written must read back
-        payload = (json.dumps(data, indent=1) + "\n").encode("utf-8")
+        text = _json_text(data)
+        scene_from_json(json.loads(text), path)  # what is written must read back
+        payload = text.encode("utf-8")
         _write_atomically(path, lambda f: f.write(payload))
         return
     arrays = {"format": np.array(FORMAT), "version": np.array(VERSION, dtype=np.int64),
@@ -751,6 +878,19 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
         arrays["queries"] = np.array(json.dumps(queries))
     # What is written must read back: checked before it replaces anything (a bad name or query raises).
     _write_atomically(path, lambda f: np.savez(f, **arrays), check=lambda tmp: scene_from_npz(tmp, path))
+
+
+def _json_text(data: dict) -> str:
+    """A scene as JSON text: the top level one key a line, each shape and query on a line of its
+    own (json.dumps with indent= would spend its time in the pure-Python encoder)."""
+    lines = []
+    for key, value in data.items():
+        if key in ("shapes", "queries"):
+            items = ",\n".join("  " + json.dumps(item) for item in value)
+            lines.append(f" {json.dumps(key)}: [\n{items}\n ]")
+        else:
+            lines.append(f" {json.dumps(key)}: {json.dumps(value)}")
+    return "{\n" + ",\n".join(lines) + "\n}\n"
 
 
 def _write_atomically(path: str, write, check=None) -> None:
