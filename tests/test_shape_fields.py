@@ -2,6 +2,7 @@
 shape classes, Scene, the scene files (their reader, writer and shipped JSON Schema) and the
 command line all follow it, so a kind's fields are described in one place."""
 
+import importlib.resources
 import importlib.util
 import json
 import re
@@ -110,3 +111,30 @@ def test_command_line_describes_and_draws_every_kind(tmp_path, capsys):
     assert len(got) == len(TABLE) - 1
     for q, a in zip(queries, got):
         assert a["closest_points"]["distance"] == float(cd.distance(scene.shape(q["a"]), scene.shape("circle")))
+
+
+def test_the_control_point_limit_is_the_modules():
+    """A Bezier curve takes 2 to _core._max_control_points control points: the constructor, the
+    scene files' reader and schema, and the command line's help all say the same number."""
+    most = cd._core._max_control_points
+    good = np.zeros((most, 3))
+    good[:, 0] = np.arange(most)
+    assert cd.Bezier(good).control_points.shape == (most, 3)
+    with pytest.raises(ValueError):
+        cd.Bezier(np.zeros((most + 1, 3)))
+    schema = json.loads(importlib.resources.files("circledist").joinpath(sf.SCHEMA_RESOURCE).read_text())
+    sets = [node for node in _nodes(schema) if "maxItems" in node and "2 to" in node.get("title", "")]
+    assert len(sets) == 2 and all(node["maxItems"] == most and f"2 to {most} control points" in node["title"]
+                                  for node in sets)
+    assert f"control_points: 2 to {most} points" in cli.FORMAT_HELP
+
+
+def _nodes(node):
+    """Every dict node of a JSON document."""
+    if isinstance(node, dict):
+        yield node
+        for value in node.values():
+            yield from _nodes(value)
+    elif isinstance(node, list):
+        for value in node:
+            yield from _nodes(value)

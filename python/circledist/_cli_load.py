@@ -8,6 +8,7 @@ import textwrap
 from dataclasses import dataclass, field
 from importlib import resources
 
+from .scene import MAX_CONTROL_POINTS
 from .scenefile import KINDS, SCHEMA_RESOURCE, SceneFile, SceneFileError, read_scene
 
 # Bad files raise this; the message names the file, the JSON path (or .npz array) and what was expected.
@@ -54,7 +55,8 @@ def kinds_help() -> str:
     kinds with the same fields are named together ("line and ray (origin, direction)")."""
     groups: list = []  # [[kind, ...], fields text]
     for kind, (_, roles) in KINDS.items():
-        names = ", ".join(f + (": 2 to 8 points" if role == "control_points" else "") for f, role in roles.items())
+        names = ", ".join(f + (f": 2 to {MAX_CONTROL_POINTS} points" if role == "control_points" else "")
+                          for f, role in roles.items())
         if groups and groups[-1][1] == names:
             groups[-1][0].append(kind)
         else:

@@ -1244,3 +1244,4 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
     array([False,  True])
     """
 __version__: str
+_max_control_points: int = 8

@@ -33,9 +33,12 @@ __all__ = ["Scene"]
 # The constructor arguments of each kind, in order (the sweep comes on top as a keyword), from
 # the module's one table of fields (src/shapes.hpp).
 KIND_FIELDS = {kind: tuple(name for name, _ in fields) for kind, fields in _core._shape_fields().items()}
-# Trailing dimensions of a field per element (the rest is batch).
-_TRAILING = {"p": 1, "origin": 1, "direction": 1, "p0": 1, "p1": 1, "center": 1, "normal": 1,
-             "radius": 0, "control_points": 2, "sweep": 0}
+# Trailing dimensions of a field per element, by the field's role (the rest is batch): a vector
+# (3,), a number (), control points (k + 1, 3). Bezier curves take 2 to MAX_CONTROL_POINTS.
+ROLE_TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "control_points": 2}
+MAX_CONTROL_POINTS = _core._max_control_points
+_TRAILING = {name: ROLE_TRAILING_DIMS[role]
+             for fields in [*_core._shape_fields().values(), (_core._sweep_field(),)] for name, role in fields}
 
 
 class _Grown:

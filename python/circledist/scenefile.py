@@ -35,6 +35,7 @@ from typing import Any, Iterable, Mapping, Optional
 import numpy as np
 
 from . import _core
+from .scene import MAX_CONTROL_POINTS, ROLE_TRAILING_DIMS
 from ._schema import Validator, member, shown
 
 __all__ = ["FORMAT", "VERSION", "SceneFileError", "SceneFile", "ShapeEntry", "read_scene", "write_scene",
@@ -49,7 +50,7 @@ SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
 # default 0) comes on top of every kind.
 KINDS = {kind.lower(): (kind, dict(fields)) for kind, fields in _core._shape_fields().items()}
 _SWEEP, _SWEEP_ROLE = _core._sweep_field()
-_TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "control_points": 2}
+_TRAILING_DIMS = ROLE_TRAILING_DIMS
 
 
 def _roles(kind: str) -> dict:
@@ -569,10 +570,11 @@ def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where:
     if role in ("vector", "direction"):
         shape_ok = shape_ok and inner == (3,)
     if role == "control_points":
-        shape_ok = shape_ok and inner[1:] == (3,) and 2 <= inner[0] <= 8
+        shape_ok = shape_ok and inner[1:] == (3,) and 2 <= inner[0] <= MAX_CONTROL_POINTS
     if not shape_ok:
         rows = "" if count is None else "[rows (count or 1)] + "
-        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()", "control_points": "(m, 3), m from 2 to 8"}[role]
+        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()",
+                  "control_points": f"(m, 3), m from 2 to {MAX_CONTROL_POINTS}"}[role]
         raise _error(file, where, f"expected shape {rows}{wanted}, got {a.shape}")
     array = a.astype(np.float64, copy=False)
     bad = ~np.isfinite(array)
