@@ -63,14 +63,20 @@ def test_single_shapes_report_once():
     assert seen == [(1, 1)]
 
 
-def test_an_exception_in_the_callback_stops_the_work(long_batch):
-    a, b = long_batch
+def _stopper():
+    """(seen, stop): a callback that records its first report and raises."""
     seen = []
 
     def stop(done, total):
         seen.append(done)
         raise RuntimeError("enough")
 
+    return seen, stop
+
+
+def test_an_exception_in_the_callback_stops_the_work(long_batch):
+    a, b = long_batch
+    seen, stop = _stopper()
     with pytest.raises(RuntimeError, match="enough"):
         cd.distance(a, b, progress=stop)
     assert len(seen) == 1 and seen[0] < 200_000  # stopped at the first report
@@ -175,12 +181,7 @@ def test_all_pairs_report_while_they_run(crowded):
 def test_all_pairs_stop_on_an_exception_in_the_callback(crowded, name):
     call, _ = ALL_PAIRS[name]
     a, b = crowded
-    seen = []
-
-    def stop(done, total):
-        seen.append(done)
-        raise RuntimeError("enough")
-
+    seen, stop = _stopper()
     with pytest.raises(RuntimeError, match="enough"):
         call(a, b, progress=stop)
     assert len(seen) == 1
