@@ -538,7 +538,7 @@ void pruning_tests() {
       return value;
     };
     ref::minimize(h, -ref::kPi, ref::kPi, true);
-    const double bound = sampled_distance(c, [&](const V3d& p) { return ring_distance_squared(p, b.radius); });
+    const double bound = sampled_distance(c, [&](const V3d& p) { return RingTarget<double>::distance_squared(p, b.radius); });
     CHECK(bound >= double(best_h) - 1e-15 * scale);
     const Intervals<double> kept = ring_search_intervals(c, b.radius, bound + 1e-4 * scale);
     const double u = std::tan(double(best_t) / 2);
