@@ -94,13 +94,13 @@ cpp_build() {  # cpp_build [extra cmake definitions]
 # (the lookup an isolated pip build makes with its own Python); then the smallest C++ test is built
 # and run. Fails unless the Eigen headers the compiler read are cmeel's and none is /usr's.
 eigen_fallback() {
-  local dir=build/eigen-fallback object=cpp/tests/CMakeFiles/test_linear.dir/test_linear.cpp.o found deps
+  local dir=build/eigen-fallback object=cpp/tests/CMakeFiles/test_line_circle.dir/test_line_circle.cpp.o found deps
   rm -rf "$dir"
   found=$(cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON \
     -DCMAKE_IGNORE_PREFIX_PATH=/usr -DPython_EXECUTABLE="$PWD/$py" | grep "circledist: Eigen") || return 1
   echo "$found"
   [[ "$found" == *cmeel.prefix* ]] || { echo "!! CMake did not take cmeel-eigen's Eigen"; return 1; }
-  cmake --build "$dir" --target test_linear || return 1
+  cmake --build "$dir" --target test_line_circle || return 1
   deps=$(ninja -C "$dir" -t deps "$object") || return 1
   if ! grep -q "cmeel.prefix/include/eigen3/Eigen/Core" <<<"$deps" || grep -q "/usr/include/eigen3" <<<"$deps"; then
     echo "!! the Eigen fallback build did not compile against cmeel-eigen's Eigen:"
@@ -108,7 +108,7 @@ eigen_fallback() {
     return 1
   fi
   echo "Eigen headers of $object: $(grep -c "cmeel.prefix/include/eigen3/" <<<"$deps") from cmeel-eigen, none from /usr"
-  ctest --test-dir "$dir" -R '^test_linear$' --output-on-failure
+  ctest --test-dir "$dir" -R '^test_line_circle$' --output-on-failure
 }
 
 case "$task" in

@@ -2,7 +2,9 @@
 // "N passed, N failed" line and returns the exit code.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 
 namespace check {
 inline int passed = 0, failed = 0;
@@ -19,6 +21,11 @@ inline void record(bool ok, const char* expr, const char* file, int line) {
 inline int finish(const char* name) {
   std::printf("%s: %d passed, %d failed\n", name, passed, failed);
   return failed == 0 ? 0 : 1;
+}
+// The bar of a closed-form case in precision Real: 1e-12 in double, rounding-limited (64 eps)
+// in float.
+template <class Real> Real closed_form_bar() {
+  return std::max(Real(1e-12), Real(64) * std::numeric_limits<Real>::epsilon());
 }
 }  // namespace check
 

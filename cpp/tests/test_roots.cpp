@@ -992,10 +992,80 @@ template <class Real> void run_precision() {
   run_policy<Counted<Bracketing>>(sets);
 }
 
+// Coefficients (lowest first) of (x - r0)(x - r1)(x - r2)(x - r3).
+void quartic_from_roots(const double r[4], double c[5]) {
+  c[0] = 1;
+  for (int k = 1; k <= 4; ++k) c[k] = 0;
+  for (int i = 0; i < 4; ++i) {
+    for (int k = i + 1; k >= 1; --k) c[k] = c[k - 1] - r[i] * c[k];
+    c[0] = -r[i] * c[0];
+  }
+}
+
+// Policy::bracketed_root, the line-circle quartic's solver: a root inside, a root many orders of
+// magnitude below the bracket's top, and a non-negative p(lo) returning lo itself.
+template <class Policy> void bracketed_root_cases(bool refined) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  {
+    const double r[4] = {0.3, -2, -3, -5}, lo = 0, hi = 1;
+    double c[5];
+    quartic_from_roots(r, c);
+    const double x = Policy::bracketed_root(c, 4, lo, hi, detail::horner(c, 4, lo), detail::horner(c, 4, hi));
+    CHECK_NEAR(x, 0.3, 8 * eps);
+  }
+  {
+    const double r[4] = {1e-30, -1, -2, -3}, lo = 0, hi = 1;
+    double c[5];
+    quartic_from_roots(r, c);
+    const double x = Policy::bracketed_root(c, 4, lo, hi, detail::horner(c, 4, lo), detail::horner(c, 4, hi));
+    // The companion matrix finds it to eps of the largest root; refining policies to eps of itself.
+    CHECK_NEAR(x, 1e-30, refined ? 8 * eps * 1e-30 : 8 * eps);
+  }
+  {
+    const double r[4] = {0.25, -1, -2, -3};
+    double c[5];
+    quartic_from_roots(r, c);
+    CHECK(Policy::bracketed_root(c, 4, 0.25, 1.0, 0.0, detail::horner(c, 4, 1.0)) == 0.25);
+  }
+}
+
+// Policy::roots_in: every root of one polynomial inside a union of intervals; one solve for the
+// statistics however many intervals. Bracketing searches the intervals only and returns those
+// roots alone; the eigenvalue policies return every root (theirs can err by more than an
+// interval is wide, roots.hpp roots_kept_in), a superset, as a policy may.
+template <class Policy> void roots_in_cases() {
+  const double r[4] = {-3, -0.5, 0.75, 2};
+  double c[5];
+  quartic_from_roots(r, c);
+  Intervals<double> where;
+  where.add(-std::numeric_limits<double>::infinity(), -1);
+  where.add(0.5, 1);
+  Candidates<double> out;
+  stats() = Stats{};
+  Counted<Policy>::roots_in(c, 4, where, out);
+  CHECK(stats().solves == 1);
+  const bool only_inside = has_accurate_roots<Policy>::value;
+  CHECK(out.count == (only_inside ? 2 : 4));
+  const auto has_root = [&](double x) {
+    for (int i = 0; i < out.count; ++i)
+      if (std::abs(out.value[i] - x) <= 1e-12) return true;
+    return false;
+  };
+  CHECK(has_root(-3));
+  CHECK(has_root(0.75));
+  CHECK(where.contains(-1e300) && where.contains(0.5) && !where.contains(0) && !where.contains(2));
+}
+
 }  // namespace
 
 int main() {
   static_assert(has_accurate_roots<Counted<Bracketing>>::value && !has_accurate_roots<Counted<EigenCompanion>>::value);
+  roots_in_cases<EigenCompanion>();
+  roots_in_cases<EigenPolished>();
+  roots_in_cases<Bracketing>();
+  bracketed_root_cases<EigenCompanion>(false);
+  bracketed_root_cases<EigenPolished>(true);
+  bracketed_root_cases<Bracketing>(true);
   run_precision<double>();
   run_precision<long double>();
   return check::finish("roots");

@@ -137,10 +137,11 @@ template <class Real> struct LocalBezier {
 
   Vec3<Real> at(Real t) const { return casteljau(q, n, t); }
 
-  template <class JetOf> Jet<Real> jet(Real t, Real radius, const JetOf& jet_of) const {
+  // The target's (round_target.hpp) squared distance and its derivatives at t.
+  template <class Target> Jet<Real> jet(Real t, Real radius) const {
     const Vec3<Real> p1 = n >= 1 ? casteljau(d1, n - 1, t) : Vec3<Real>::Zero();
     const Vec3<Real> p2 = n >= 2 ? casteljau(d2, n - 2, t) : Vec3<Real>::Zero();
-    return jet_of(at(t), p1, p2, radius);
+    return Target::jet(at(t), p1, p2, radius);
   }
 
   // Coordinate i in the power basis of w = 2t - 1, in units of `scale`:
@@ -364,10 +365,12 @@ void push_curve_disk_roots(const LocalBezier<Real>& c, Real radius, Real scale, 
 // As circle_round_result, for a curve parameter t in [0, 1].
 // A curve solved in pieces reports its point from the best piece (`where`), in local and in world
 // coordinates: plain evaluation at t errs by eps times its farthest control point.
-template <class Real, int N, class RoundPoint, class RoundParam>
+template <class Target, class Real, int N>
 Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
-                                const BestPiece<Real>& where, const Minima<Real, N>& minima, Real scale,
-                                const RoundPoint& round_point, const RoundParam& round_param) {
+                                const BestPiece<Real>& where, const Minima<Real, N>& minima, Real scale) {
+  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
+    return Target::point(p, round.radius, scale, ambiguous);
+  };
   Result<Real> r;
   const Minimum<Real>& best = minima.best;
   bool ambiguous = false;
@@ -380,7 +383,7 @@ Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<R
   r.point_a = where.valid ? round.world(pa) : b.at(best.x);
   r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(best.x, 0);
-  r.param_b = round_param(pb);
+  r.param_b = Target::param(pb);
   r.unique = !ambiguous;
   return r;
 }
@@ -481,96 +484,61 @@ template <class Real> struct CurveRoundBase {
   }
 };
 
-template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRoundBase<Real> {
+// A curve against a ring or a disk: the end points; the roots of note 001 eq. (2) squared (the
+// ring's stationary points); for a disk, the rim crossings and z z' = 0 (note 001 §3); for a
+// ring, z z' = 0 as well (see below); all polished on the target's exact distance.
+template <class Real, class Target> struct CurveRoundQuery : CurveRoundBase<Real> {
   static constexpr bool defined = true;
   using Base = CurveRoundBase<Real>;
+  using Shape = typename Target::Shape;
 
   template <class Roots>
   static auto solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round, Real scale,
                     BestPiece<Real>* where = nullptr) {
     const Real radius = round.radius;
-    const auto distance_of = [&](const Vec3<Real>& p) { return disk_distance_local(p, radius); };
+    const auto distance_of = [&](const Vec3<Real>& p) { return Target::distance(p, radius); };
     return Base::solve_pieces(c, b, round, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s) {
       typename Base::Starts starts;
       starts.push(Real(0));
       starts.push(Real(1));
-      push_curve_disk_roots<Roots>(piece, radius, s, starts);
+      if constexpr (Target::interior) push_curve_disk_roots<Roots>(piece, radius, s, starts);
       push_curve_ring_roots<Roots>(piece, radius, s, starts);
-      const auto h = [&](Real t) { return disk_distance_local(piece.at(t), radius); };
-      const auto jet = [&](Real t) { return piece.jet(t, radius, &disk_jet_of<Real>); };
-      return Base::template polish<Roots>(piece, starts, s, h, jet);
-    }, where);
-  }
-
-  template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
-    if (b.control.cols() == 0) return std::numeric_limits<Real>::infinity();
-    const Round<Real> round(disk.center, disk.normal, disk.radius);
-    const LocalBezier<Real> c(b, round);
-    return solve<Roots>(c, b, round, bezier_round_scale(c, disk.radius)).best.value;
-  }
-
-  template <class Roots = DefaultRoots>
-  static Result<Real> closest(const BezierCurve3<Real>& b, const Disk3<Real>& disk) {
-    if (b.control.cols() == 0) return empty_curve_result<Real>();
-    const Round<Real> round(disk.center, disk.normal, disk.radius);
-    const LocalBezier<Real> c(b, round);
-    const Real scale = bezier_round_scale(c, disk.radius);
-    BestPiece<Real> where;
-    const auto minima = solve<Roots>(c, b, round, scale, &where);
-    return curve_round_result(
-        b, c, round, where, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
-        &Round<Real>::disk_param);
-  }
-};
-
-template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRoundBase<Real> {
-  static constexpr bool defined = true;
-  using Base = CurveRoundBase<Real>;
-
-  template <class Roots>
-  static auto solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round, Real scale,
-                    BestPiece<Real>* where = nullptr) {
-    const Real radius = round.radius;
-    const auto distance_of = [&](const Vec3<Real>& p) { return ring_distance_local(p, radius); };
-    return Base::solve_pieces(c, b, round, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s) {
-      typename Base::Starts starts;
-      starts.push(Real(0));
-      starts.push(Real(1));
-      push_curve_ring_roots<Roots>(piece, radius, s, starts);
-      // Eq. (2) squared carries the factor x^2 + y^2: on a curve lying along the axis it vanishes
-      // identically and has no roots, while the distance sqrt(R^2 + z^2) is smallest where
-      // z z' = 0. Those roots (degrees n and n - 1, cheap) seed the polish there and near it.
-      if (piece.n >= 1) {
-        const CurvePoly<Real> z = piece.coordinate(2, s);
-        push_curve_roots<Roots>(z, starts);
-        push_curve_roots<Roots>(z.derivative(), starts);
+      if constexpr (!Target::interior) {
+        // Eq. (2) squared carries the factor x^2 + y^2: on a curve lying along the axis it
+        // vanishes identically and has no roots, while the distance sqrt(R^2 + z^2) is smallest
+        // where z z' = 0. Those roots (degrees n and n - 1, cheap) seed the polish there and near
+        // it. (A disk's candidates hold them already: push_curve_disk_roots.)
+        if (piece.n >= 1) {
+          const CurvePoly<Real> z = piece.coordinate(2, s);
+          push_curve_roots<Roots>(z, starts);
+          push_curve_roots<Roots>(z.derivative(), starts);
+        }
       }
-      const auto h = [&](Real t) { return ring_distance_local(piece.at(t), radius); };
-      const auto jet = [&](Real t) { return piece.jet(t, radius, &ring_jet_of<Real>); };
+      const auto h = [&](Real t) { return Target::distance(piece.at(t), radius); };
+      const auto jet = [&](Real t) { return piece.template jet<Target>(t, radius); };
       return Base::template polish<Roots>(piece, starts, s, h, jet);
     }, where);
   }
 
-  template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {
+  template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Shape& shape) {
     if (b.control.cols() == 0) return std::numeric_limits<Real>::infinity();
-    const Round<Real> round(circle.center, circle.normal, circle.radius);
+    const Round<Real> round(shape.center, shape.normal, shape.radius);
     const LocalBezier<Real> c(b, round);
-    return solve<Roots>(c, b, round, bezier_round_scale(c, circle.radius)).best.value;
+    return solve<Roots>(c, b, round, bezier_round_scale(c, shape.radius)).best.value;
   }
 
-  template <class Roots = DefaultRoots>
-  static Result<Real> closest(const BezierCurve3<Real>& b, const Circle3<Real>& circle) {
+  template <class Roots = DefaultRoots> static Result<Real> closest(const BezierCurve3<Real>& b, const Shape& shape) {
     if (b.control.cols() == 0) return empty_curve_result<Real>();
-    const Round<Real> round(circle.center, circle.normal, circle.radius);
+    const Round<Real> round(shape.center, shape.normal, shape.radius);
     const LocalBezier<Real> c(b, round);
-    const Real scale = bezier_round_scale(c, circle.radius);
+    const Real scale = bezier_round_scale(c, shape.radius);
     BestPiece<Real> where;
     const auto minima = solve<Roots>(c, b, round, scale, &where);
-    return curve_round_result(
-        b, c, round, where, minima, scale,
-        [&](const Vec3<Real>& p, bool& ambiguous) { return round.ring_point(p, scale, ambiguous); },
-        &Round<Real>::ring_param);
+    return curve_round_result<Target>(b, c, round, where, minima, scale);
   }
 };
+
+template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRoundQuery<Real, DiskTarget<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRoundQuery<Real, RingTarget<Real>> {};
 
 }  // namespace circledist

@@ -32,7 +32,7 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     const CircleOverRound<Real> view(c, radius);
     Starts starts;
     push_circle_candidates(starts);
-    const auto squared = [&](const Vec3<Real>& p) { return ring_distance_squared(p, radius); };
+    const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
     const SampledDistances<Real> samples = sampled_distances(c, squared);
     push_circle_ring_roots<Roots>(view, scale, std::min(bound, samples.best), starts);
     // Where the circle crosses the ring's plane (z = 0, the height roots of circle_disk.hpp):
@@ -48,8 +48,8 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     // octic there.
     if (samples.worst <= Real(1e-3) * scale)
       for (int k = -3; k <= 4; ++k) starts.push(k * pi_v<Real>() / 4);
-    const auto h = [&](Real t) { return view.ring_distance(t); };
-    const auto jet = [&](Real t) { return view.ring_jet(t); };
+    const auto h = [&](Real t) { return view.template distance<RingTarget<Real>>(t); };
+    const auto jet = [&](Real t) { return view.template jet<RingTarget<Real>>(t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
@@ -77,10 +77,7 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     const LocalCircle<Real> c(a, round);
     const Real scale = circle_round_scale(c, b.radius);
     const auto minima = solve<Roots>(c, b.radius, scale);
-    return circle_round_result(
-        a, c, round, minima, scale,
-        [&](const Vec3<Real>& p, bool& ambiguous) { return round.ring_point(p, scale, ambiguous); },
-        &Round<Real>::ring_param);
+    return circle_round_result<RingTarget<Real>>(a, c, round, minima, scale);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& a, const Circle3<Real>& b) {

@@ -54,10 +54,10 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     push_rim_partition<Roots>(view, scale, starts);
     // The octic's roots matter outside the cylinder only, where the disk distance is the ring's:
     // there the minimum is at most any disk distance A reaches (ring_search_intervals).
-    const auto squared = [&](const Vec3<Real>& p) { return disk_distance_squared(p, radius); };
+    const auto squared = [&](const Vec3<Real>& p) { return DiskTarget<Real>::distance_squared(p, radius); };
     push_circle_ring_roots<Roots>(view, scale, sampled_distance(c, squared), starts);
-    const auto h = [&](Real t) { return view.disk_distance(t); };
-    const auto jet = [&](Real t) { return view.disk_jet(t); };
+    const auto h = [&](Real t) { return view.template distance<DiskTarget<Real>>(t); };
+    const auto jet = [&](Real t) { return view.template jet<DiskTarget<Real>>(t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
@@ -87,9 +87,7 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     const Real scale = circle_round_scale(c, disk.radius);
     const Heights heights = height_candidates<Roots>(c, scale);
     const auto minima = solve<Roots>(c, disk.radius, scale, heights);
-    Result<Real> r = circle_round_result(
-        a, c, round, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
-        &Round<Real>::disk_param);
+    Result<Real> r = circle_round_result<DiskTarget<Real>>(a, c, round, minima, scale);
     const HeightVerdict early = height_verdict(c, disk.radius, scale, heights);
     r.distance = early.decided ? early.best : std::min(early.best, minima.best.value);
     return r;
@@ -106,7 +104,7 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     const CircleOverRound<Real> view(c, radius);
     Real best = std::numeric_limits<Real>::infinity(), lowest = best;
     for (int i = 0; i < heights.count; ++i) {
-      best = std::min(best, view.disk_distance(heights.value[i]));
+      best = std::min(best, view.template distance<DiskTarget<Real>>(heights.value[i]));
       lowest = std::min(lowest, std::abs(c.at(heights.value[i]).z()));
     }
     return {best, best <= lowest + tie_tolerance(scale)};

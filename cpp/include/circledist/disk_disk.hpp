@@ -110,8 +110,8 @@ template <class Real> struct Query<Disk3<Real>, Disk3<Real>> {
       r.distance = 0;
       r.point_b = round.world(contact.point);
       r.point_a = r.point_b;
-      r.param_a = Round<Real>::disk_param(round_a.local(r.point_a));
-      r.param_b = Round<Real>::disk_param(contact.point);
+      r.param_a = DiskTarget<Real>::param(round_a.local(r.point_a));
+      r.param_b = DiskTarget<Real>::param(contact.point);
       r.unique = contact.unique;
       return r;
     }

@@ -11,36 +11,8 @@
 
 namespace circledist {
 
-template <class Real, class Piece> struct LinearCircleQuery {
-  static constexpr bool defined = true;
-
-  template <class Roots> static Minima<Real> solve(const LocalLinear<Real>& line, Real radius, Real scale) {
-    Candidates<Real> stationary, exact;
-    push_line_circle_roots<Roots>(line, radius, scale, stationary);
-    push_linear_candidates(line, exact);
-    const auto h = [&](Real tau) { return ring_distance_local(line.at(tau), radius); };
-    const auto jet = [&](Real tau) { return ring_jet(line, radius, tau); };
-    return minimize_linear<Roots>(jet, h, line, radius, stationary, exact, scale);
-  }
-
-  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Circle3<Real>& c) {
-    const Round<Real> round(c.center, c.normal, c.radius);
-    const LocalLinear<Real> line(as_linear(piece), round);
-    return solve<Roots>(line, c.radius, linear_round_scale(line, c.radius)).best.value;
-  }
-
-  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Circle3<Real>& c) {
-    const Round<Real> round(c.center, c.normal, c.radius);
-    const Linear<Real> linear = as_linear(piece);
-    const LocalLinear<Real> line(linear, round);
-    const Real scale = linear_round_scale(line, c.radius);
-    const Minima<Real> minima = solve<Roots>(line, c.radius, scale);
-    return linear_round_result(
-        linear, line, round, minima, scale,
-        [&](const Vec3<Real>& p, bool& ambiguous) { return round.ring_point(p, scale, ambiguous); },
-        &Round<Real>::ring_param);
-  }
-};
+// The general path (LinearRoundQuery, linear.hpp) on the ring target.
+template <class Real, class Piece> using LinearCircleQuery = LinearRoundQuery<Real, Piece, RingTarget<Real>>;
 
 // A full line against a circle, seen from the circle's side. With the line's unit direction m
 // and its point a closest to the center (both relative to the center, a.m = 0), the squared
@@ -284,7 +256,7 @@ Result<Real> line_ring_result(const Line3<Real>& line, const Circle3<Real>& c, c
   r.point_b = c.center + m.ring_point;
   r.param_a = Vec2<Real>(line_param(line, c.center, m.line_point), 0);
   const Frame<Real> frame(c.normal);
-  r.param_b = Round<Real>::ring_param(frame.to_local(m.ring_point));
+  r.param_b = RingTarget<Real>::param(frame.to_local(m.ring_point));
   // Another pair at the same distance within rounding: the whole ring (a line on the axis), the
   // mirror-image minimum when b1 is (nearly) zero (the mirror point bounds it from above), or
   // a distance flat to rounding over the ring (a line within rounding of the center's axis).

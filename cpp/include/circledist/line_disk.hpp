@@ -12,57 +12,8 @@
 
 namespace circledist {
 
-// Where the projection of the piece crosses the rim: b1 tau^2 + 2 b0 tau + (rho0^2 - R^2) = 0.
-template <class Real> void push_rim_crossings(const LocalLinear<Real>& line, Real radius, Candidates<Real>& out) {
-  if (line.is_point) return;
-  const Vec3<Real>& a = line.anchor;
-  const Vec3<Real>& m = line.dir;
-  const Real b1 = m.x() * m.x() + m.y() * m.y();
-  if (!(b1 > 0)) return;
-  const Real b0 = m.x() * a.x() + m.y() * a.y();
-  const Real rho0 = length2d(a.x(), a.y());
-  const Real c = (rho0 - radius) * (rho0 + radius);
-  const Real disc = b0 * b0 - b1 * c;
-  if (disc < 0) return;
-  const Real q = -(b0 + std::copysign(std::sqrt(disc), b0));
-  if (q != 0) {
-    out.push(q / b1);
-    out.push(c / q);
-  } else {
-    out.push(Real(0));
-  }
-}
-
-template <class Real, class Piece> struct LinearDiskQuery {
-  static constexpr bool defined = true;
-
-  template <class Roots> static Minima<Real> solve(const LocalLinear<Real>& line, Real radius, Real scale) {
-    Candidates<Real> stationary, exact;
-    push_line_circle_roots<Roots>(line, radius, scale, stationary);
-    push_linear_candidates(line, exact);
-    push_rim_crossings(line, radius, exact);
-    const auto h = [&](Real tau) { return disk_distance_local(line.at(tau), radius); };
-    const auto jet = [&](Real tau) { return disk_jet(line, radius, tau); };
-    return minimize_linear<Roots>(jet, h, line, radius, stationary, exact, scale);
-  }
-
-  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Disk3<Real>& disk) {
-    const Round<Real> round(disk.center, disk.normal, disk.radius);
-    const LocalLinear<Real> line(as_linear(piece), round);
-    return solve<Roots>(line, disk.radius, linear_round_scale(line, disk.radius)).best.value;
-  }
-
-  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Disk3<Real>& disk) {
-    const Round<Real> round(disk.center, disk.normal, disk.radius);
-    const Linear<Real> linear = as_linear(piece);
-    const LocalLinear<Real> line(linear, round);
-    const Real scale = linear_round_scale(line, disk.radius);
-    const Minima<Real> minima = solve<Roots>(line, disk.radius, scale);
-    return linear_round_result(
-        linear, line, round, minima, scale, [&](const Vec3<Real>& p, bool&) { return round.disk_point(p); },
-        &Round<Real>::disk_param);
-  }
-};
+// The general path (LinearRoundQuery, linear.hpp) on the disk target.
+template <class Real, class Piece> using LinearDiskQuery = LinearRoundQuery<Real, Piece, DiskTarget<Real>>;
 
 // A full line's distance to a disk: zero where it crosses the disk's plane inside the rim, and
 // otherwise its distance to the rim circle. The distance to the line is convex over the plane and
@@ -141,7 +92,7 @@ template <class Real, class Piece> struct PieceDiskQuery : LinearDiskQuery<Real,
         r.distance = 0;
         r.point_a = r.point_b = disk.center + m.crossing;
         r.param_a = Vec2<Real>(line_param(m.line, disk.center, m.crossing), 0);
-        r.param_b = Round<Real>::disk_param(Frame<Real>(disk.normal).to_local(m.crossing));
+        r.param_b = DiskTarget<Real>::param(Frame<Real>(disk.normal).to_local(m.crossing));
         return r;
       }
       if (!tied_with_mirror(rim, m.ring)) {

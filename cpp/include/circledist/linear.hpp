@@ -1,8 +1,11 @@
-// Lines, rays and segments as one "linear piece" origin + t * direction, t in [lo, hi], and the
-// machinery shared by every linear-vs-round query (line_circle.hpp, line_disk.hpp).
+// Lines, rays and segments as one "linear piece" origin + t * direction, t in [lo, hi], the
+// machinery shared by every linear-vs-round query (line_circle.hpp, line_disk.hpp), and their
+// general path, LinearRoundQuery, written once for the ring and the disk target
+// (detail/round_target.hpp).
 #pragma once
 
 #include "detail/double_double.hpp"
+#include "detail/round_target.hpp"
 #include "minimize.hpp"
 #include "planar.hpp"
 
@@ -184,30 +187,6 @@ template <class Real> Real linear_round_scale(const LocalLinear<Real>& line, Rea
   return s > 0 ? s : Real(1);
 }
 
-// The squared ring distance |P|^2 + R^2 - 2 R rho along the piece, with its derivatives
-// (rho' = (P.m)_xy / rho, rho'' = |m_xy|^2 / rho - (P.m)_xy^2 / rho^3, |m| = 1).
-template <class Real> Jet<Real> ring_jet(const LocalLinear<Real>& line, Real radius, Real tau) {
-  const Vec3<Real> p = line.at(tau);
-  const Vec3<Real>& m = line.dir;
-  const Real rho = length2d(p.x(), p.y());
-  const Real along = p.x() * m.x() + p.y() * m.y();
-  const Real value = p.z() * p.z() + (rho - radius) * (rho - radius);
-  if (!(rho > 0)) return {value, p.dot(m), std::numeric_limits<Real>::quiet_NaN()};
-  const Real rho1 = along / rho;
-  const Real rho2 = (m.x() * m.x() + m.y() * m.y() - rho1 * rho1) / rho;
-  return {value, 2 * (p.dot(m) - radius * rho1), 2 * (1 - radius * rho2)};
-}
-
-// The squared disk distance: the height squared over the disk, the ring's outside it.
-template <class Real> Jet<Real> disk_jet(const LocalLinear<Real>& line, Real radius, Real tau) {
-  const Vec3<Real> p = line.at(tau);
-  if (length2d(p.x(), p.y()) <= radius) {
-    const Real mz = line.dir.z();
-    return {p.z() * p.z(), 2 * p.z() * mz, 2 * mz * mz};
-  }
-  return ring_jet(line, radius, tau);
-}
-
 // Polishes the `stationary` candidates (polynomial roots) on the exact distance `h(tau)` over the
 // piece's interval, as the root policy asks (Newton on the squared distance `jet`, or a
 // bracketed search), and evaluates the `exact` candidates as they are.
@@ -249,12 +228,14 @@ Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& 
   return out;
 }
 
-// Builds the Result from the polished minima: `round_point(p, ambiguous)` maps a local point of
-// the piece to its closest local point on the round. Distinct tied pairs make `unique` false.
-template <class Real, class RoundPoint, class RoundParam>
+// Builds the Result from the polished minima: the target's point (Target::point) is the round's
+// local point closest to a local point of the piece. Distinct tied pairs make `unique` false.
+template <class Target, class Real>
 Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Real>& line, const Round<Real>& round,
-                                 const Minima<Real>& minima, Real scale, const RoundPoint& round_point,
-                                 const RoundParam& round_param) {
+                                 const Minima<Real>& minima, Real scale) {
+  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
+    return Target::point(p, round.radius, scale, ambiguous);
+  };
   Result<Real> r;
   const Minimum<Real>& best = minima.best;
   bool ambiguous = false;
@@ -280,9 +261,63 @@ Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Re
   r.distance = best.value;
   r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(t, 0);
-  r.param_b = round_param(pb);
+  r.param_b = Target::param(pb);
   r.unique = !ambiguous;
   return r;
 }
+
+// Where the projection of the piece crosses the rim: b1 tau^2 + 2 b0 tau + (rho0^2 - R^2) = 0.
+template <class Real> void push_rim_crossings(const LocalLinear<Real>& line, Real radius, Candidates<Real>& out) {
+  if (line.is_point) return;
+  const Vec3<Real>& a = line.anchor;
+  const Vec3<Real>& m = line.dir;
+  const Real b1 = m.x() * m.x() + m.y() * m.y();
+  if (!(b1 > 0)) return;
+  const Real b0 = m.x() * a.x() + m.y() * a.y();
+  const Real rho0 = length2d(a.x(), a.y());
+  const Real c = (rho0 - radius) * (rho0 + radius);
+  const Real disc = b0 * b0 - b1 * c;
+  if (disc < 0) return;
+  const Real q = -(b0 + std::copysign(std::sqrt(disc), b0));
+  if (q != 0) {
+    out.push(q / b1);
+    out.push(c / q);
+  } else {
+    out.push(Real(0));
+  }
+}
+
+// Line, ray and segment against a ring or a disk, on the general path: note 000 §1's quartic
+// (the ring's stationary points), the exact candidates and, for a disk, the rim crossings
+// (note 000 §2, docs/line_disk.md), judged by the target's exact distance.
+template <class Real, class Piece, class Target> struct LinearRoundQuery {
+  static constexpr bool defined = true;
+  using Shape = typename Target::Shape;
+
+  template <class Roots> static Minima<Real> solve(const LocalLinear<Real>& line, Real radius, Real scale) {
+    Candidates<Real> stationary, exact;
+    push_line_circle_roots<Roots>(line, radius, scale, stationary);
+    push_linear_candidates(line, exact);
+    if constexpr (Target::interior) push_rim_crossings(line, radius, exact);
+    const auto h = [&](Real tau) { return Target::distance(line.at(tau), radius); };
+    const auto jet = [&](Real tau) { return Target::line_jet(line.at(tau), line.dir, radius); };
+    return minimize_linear<Roots>(jet, h, line, radius, stationary, exact, scale);
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Shape& shape) {
+    const Round<Real> round(shape.center, shape.normal, shape.radius);
+    const LocalLinear<Real> line(as_linear(piece), round);
+    return solve<Roots>(line, shape.radius, linear_round_scale(line, shape.radius)).best.value;
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Shape& shape) {
+    const Round<Real> round(shape.center, shape.normal, shape.radius);
+    const Linear<Real> linear = as_linear(piece);
+    const LocalLinear<Real> line(linear, round);
+    const Real scale = linear_round_scale(line, shape.radius);
+    const Minima<Real> minima = solve<Roots>(line, shape.radius, scale);
+    return linear_round_result<Target>(linear, line, round, minima, scale);
+  }
+};
 
 }  // namespace circledist

@@ -1,6 +1,7 @@
 // Point-circle: closed form (note 000 §1, the point-circle distance F).
 #pragma once
 
+#include "detail/atan2.hpp"
 #include "planar.hpp"
 #include "query.hpp"
 

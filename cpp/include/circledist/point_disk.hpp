@@ -1,6 +1,7 @@
 // Point-disk: closed form of note 001 §2.
 #pragma once
 
+#include "detail/atan2.hpp"
 #include "planar.hpp"
 #include "query.hpp"
 

@@ -1,6 +1,7 @@
 // Candidates polished on the exact distance: the parameter tolerances, which candidates are worth
-// polishing (the screening), the polish itself (periodic for angles), and the exact squared
-// distances with their derivatives (jets) from a moving point to a ring or a disk.
+// polishing (the screening) and the polish itself (periodic for angles). The exact squared
+// distances with their derivatives (jets) from a moving point to a ring or a disk are the
+// targets' (round_target.hpp).
 #pragma once
 
 #include "../minimize.hpp"
@@ -112,28 +113,6 @@ Minima<Real, N> polish_angles(const J& jet, const H& h, const Candidates<Real, N
   for (int i = 0; i < out.count; ++i) out.item[i].x = wrap_angle(out.item[i].x);
   out.best.x = wrap_angle(out.best.x);
   return out;
-}
-
-// The exact squared distance from P(t) to the ring of radius R and its t-derivatives:
-// g = z^2 + (rho - R)^2 = |P|^2 + R^2 - 2 R rho, g' = 2 (P.P' - R rho'),
-// g'' = 2 (|P'|^2 + P.P'' - R rho''), rho' = (x x' + y y') / rho,
-// rho'' = (x'^2 + y'^2 + x x'' + y y'' - rho'^2) / rho. On the axis (rho = 0) the ring distance
-// has a cone point: the curvature is NaN and the polish falls back to the bracketed search.
-template <class Real> Jet<Real> ring_jet_of(const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2, Real radius) {
-  const Real rho = length2d(p.x(), p.y());
-  const Real value = p.z() * p.z() + (rho - radius) * (rho - radius);
-  if (!(rho > 0)) return {value, 2 * p.dot(p1), std::numeric_limits<Real>::quiet_NaN()};
-  const Real rho1 = (p.x() * p1.x() + p.y() * p1.y()) / rho;
-  const Real rho2 = (p1.x() * p1.x() + p1.y() * p1.y() + p.x() * p2.x() + p.y() * p2.y() - rho1 * rho1) / rho;
-  return {value, 2 * (p.dot(p1) - radius * rho1), 2 * (p1.squaredNorm() + p.dot(p2) - radius * rho2)};
-}
-
-// The exact squared disk distance: the height squared over the disk, the ring's outside it.
-template <class Real> Jet<Real> disk_jet_of(const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2, Real radius) {
-  if (length2d(p.x(), p.y()) <= radius) {
-    return {p.z() * p.z(), 2 * p.z() * p1.z(), 2 * (p1.z() * p1.z() + p.z() * p2.z())};
-  }
-  return ring_jet_of(p, p1, p2, radius);
 }
 
 }  // namespace circledist

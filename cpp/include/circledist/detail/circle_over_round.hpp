@@ -7,6 +7,7 @@
 #include "../query.hpp"
 #include "angle_polish.hpp"
 #include "local_circle.hpp"
+#include "round_target.hpp"
 
 #include <algorithm>
 #include <array>
@@ -77,30 +78,28 @@ template <class Real> struct CircleOverRound {
     return out;
   }
 
-  Real ring_distance(Real t) const {
-    if (!expanded) return ring_distance_local(c.at(t), radius);
+  // The target's distance from P(t): on the ring h = sqrt(z^2 + w^2), over a disk's interior
+  // (s <= 0) the height |z|.
+  template <class Target> Real distance(Real t) const {
+    if (!expanded) return Target::distance(c.at(t), radius);
     const Terms v = terms(t);
+    if constexpr (Target::interior) {
+      if (v.s <= 0) return std::abs(v.z);
+    }
     return length2d(v.z, excess(v.s));
   }
 
-  Real disk_distance(Real t) const {
-    if (!expanded) return disk_distance_local(c.at(t), radius);
-    const Terms v = terms(t);
-    return v.s <= 0 ? std::abs(v.z) : length2d(v.z, excess(v.s));
-  }
-
-  // The squared ring distance g = z^2 + w^2 and its derivatives, from w (rho + R) = s:
+  // The target's squared distance and its derivatives. On the ring g = z^2 + w^2, from
+  // w (rho + R) = s:
   // w' (rho + R) + w rho' = s',  w'' (rho + R) + 2 w' rho' + w rho'' = s'',  2 rho rho' = s',
-  // rho'' = (s''/2 - rho'^2) / rho. On the axis (rho = 0) the curvature is NaN, as in ring_jet_of.
-  Jet<Real> ring_jet(Real t) const {
-    if (!expanded) return c.jet(t, radius, &ring_jet_of<Real>);
-    return ring_jet_from(terms(t));
-  }
-
-  Jet<Real> disk_jet(Real t) const {
-    if (!expanded) return c.jet(t, radius, &disk_jet_of<Real>);
+  // rho'' = (s''/2 - rho'^2) / rho. On the axis (rho = 0) the curvature is NaN, as in
+  // RoundTarget::jet. Over a disk's interior (s <= 0), the height squared (height_jet).
+  template <class Target> Jet<Real> jet(Real t) const {
+    if (!expanded) return c.template jet<Target>(t, radius);
     const Terms v = terms(t);
-    if (v.s <= 0) return {v.z * v.z, 2 * v.z * v.z1, 2 * (v.z1 * v.z1 + v.z * v.z2)};
+    if constexpr (Target::interior) {
+      if (v.s <= 0) return height_jet(v.z, v.z1, v.z2);
+    }
     return ring_jet_from(v);
   }
 
@@ -186,14 +185,16 @@ void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale, Real bou
 }
 
 // Builds the Result for circle A against round B from the polished minima, as
-// linear_round_result does: `round_point(p, ambiguous)` maps a local point of A to its closest
-// local point of B. Distinct tied pairs make `unique` false. Points on A are told apart at A's
+// linear_round_result does: the target's point (Target::point) is B's local point closest to a
+// local point of A. Distinct tied pairs make `unique` false. Points on A are told apart at A's
 // own size (a tiny circle coaxial with a big one is still a continuum), points on B at the
 // scene's scale.
-template <class Real, int N, class RoundPoint, class RoundParam>
+template <class Target, class Real, int N>
 Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>& c, const Round<Real>& round,
-                                 const Minima<Real, N>& minima, Real scale, const RoundPoint& round_point,
-                                 const RoundParam& round_param) {
+                                 const Minima<Real, N>& minima, Real scale) {
+  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
+    return Target::point(p, round.radius, scale, ambiguous);
+  };
   Result<Real> r;
   const Minimum<Real>& best = minima.best;
   bool ambiguous = false;
@@ -206,7 +207,7 @@ Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>
   r.point_a = a.center + c.radius * (std::cos(best.x) * c.frame.u + std::sin(best.x) * c.frame.v);
   r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(best.x, 0);
-  r.param_b = round_param(pb);
+  r.param_b = Target::param(pb);
   r.unique = !ambiguous;
   return r;
 }

@@ -33,10 +33,11 @@ template <class Real> struct LocalCircle {
   Vec3<Real> at(Real t) const { return center + std::cos(t) * e1 + std::sin(t) * e2; }
 
   // P(t), P'(t), P''(t) = O - P(t), for the Newton polish.
-  template <class JetOf> Jet<Real> jet(Real t, Real radius, const JetOf& jet_of) const {
+  // The target's (round_target.hpp) squared distance and its derivatives there.
+  template <class Target> Jet<Real> jet(Real t, Real radius) const {
     const Real c = std::cos(t), s = std::sin(t);
     const Vec3<Real> w = c * e1 + s * e2;
-    return jet_of(Vec3<Real>(center + w), Vec3<Real>(c * e2 - s * e1), Vec3<Real>(-w), radius);
+    return Target::jet(Vec3<Real>(center + w), Vec3<Real>(c * e2 - s * e1), Vec3<Real>(-w), radius);
   }
 
   // One coordinate as a trigonometric polynomial of degree 1, in units of `scale`.

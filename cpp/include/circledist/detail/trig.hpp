@@ -139,7 +139,7 @@ template <class Roots, class Real, int K, int N> void push_trig_roots(const Trig
   push_half_angle_roots<Roots>(p.data(), 2 * K, Intervals<Real>::everywhere(), out);
 }
 
-// The angle in (-pi, pi], the range of atan2 that Round::ring_param uses too.
+// The angle in (-pi, pi], the range of atan2 that RingTarget::param uses too.
 template <class Real> Real wrap_angle(Real t) {
   const Real pi = pi_v<Real>();
   if (t > -pi && t <= pi) return t;  // the usual case: a polished angle stays near its start

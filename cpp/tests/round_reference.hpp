@@ -1,0 +1,407 @@
+// The reference machinery of the round-pair tests (test_circle_circle.cpp, test_circle_disk.cpp,
+// test_disk_disk.cpp, test_bezier.cpp): circle-circle, circle-disk, disk-disk and Bezier-disk/circle
+// against references computed independently in long double: no library code is used for them. A
+// shape is sampled directly (its own frame, built differently from the library's), the closest
+// point of a disk or circle to a point is the elementary projection, and the minimum over the
+// sampled parameter is found by dense sampling followed by zooming (33 samples on +-h around the 4
+// best, h /= 8, down to h ~ 1e-21). Analytic values are used where the geometry gives them.
+// Tolerance in double: |error| <= 1e-12 * max(true distance, largest radius).
+// Also the random and tangent configurations every family draws from the same seeded streams.
+#pragma once
+
+#include <circledist/circledist.hpp>
+
+#include "check.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace circledist;
+using LD = long double;
+using V3 = Vec3<LD>;
+using V3d = Vec3<double>;
+
+namespace ref {
+
+const LD kPi = 3.141592653589793238462643383279502884L;
+
+// Any right-handed orthonormal frame of n: the angle origin differs from the library's on purpose.
+struct Basis {
+  V3 u, v, n;
+  explicit Basis(const V3& normal) {
+    n = normal / normal.norm();
+    const V3 axis = std::abs(n.z()) < 0.6L ? V3(0, 0, 1) : V3(1, 0, 0);
+    u = n.cross(axis).normalized();
+    v = n.cross(u);
+  }
+};
+
+// A circle or disk relative to an origin (a shape's center): differences of doubles are exact in
+// long double, so far-away scenes are as accurate as centered ones.
+struct Round {
+  V3 c;
+  Basis b;
+  LD r;
+  Round(const V3d& center, const V3d& normal, double radius, const V3d& origin)
+      : c(center.cast<LD>() - origin.cast<LD>()), b(normal.cast<LD>()), r(radius) {}
+  V3 at(LD t) const { return c + r * (std::cos(t) * b.u + std::sin(t) * b.v); }
+  // Closest point of the ring / of the disk to p (on the axis any ring point is closest).
+  V3 ring_point(const V3& p) const {
+    const V3 d = p - c;
+    const V3 q = d - b.n.dot(d) * b.n;
+    const LD rho = q.norm();
+    return rho > 0 ? V3(c + (r / rho) * q) : V3(c + r * b.u);
+  }
+  V3 disk_point(const V3& p) const {
+    const V3 d = p - c;
+    const V3 q = d - b.n.dot(d) * b.n;
+    const LD rho = q.norm();
+    return rho <= r ? V3(c + q) : V3(c + (r / rho) * q);
+  }
+};
+
+// Minimum of f over [lo, hi] (periodic or not): dense samples, then a zoom from each of the
+// lowest local minima of the samples. Each zoom level samples 33 points on +-h around every
+// kept point, keeps the 4 lowest distinct local minima of those samples (a beam: near a
+// tangency two narrow valleys lie side by side, and the lower one need not hold the lowest
+// sample at first), and divides h by 8, down to h ~ 1e-21.
+template <class F> LD minimize(const F& f, LD lo, LD hi, bool periodic, int samples = 4096) {
+  std::vector<LD> value(samples + 1);
+  const LD step = (hi - lo) / samples;
+  for (int i = 0; i <= samples; ++i) value[i] = f(lo + step * i);
+  std::vector<std::pair<LD, int>> minima;
+  const int last = periodic ? samples - 1 : samples;
+  for (int i = 0; i <= last; ++i) {
+    const int prev = i > 0 ? i - 1 : (periodic ? samples - 1 : 0);
+    const int next = i < last ? i + 1 : (periodic ? 0 : last);
+    if (value[i] <= value[prev] && value[i] <= value[next]) minima.push_back({value[i], i});
+  }
+  std::sort(minima.begin(), minima.end());
+  if (minima.size() > 24) minima.resize(24);
+  LD best = std::numeric_limits<LD>::infinity();
+  for (const auto& m : minima) {
+    std::vector<std::pair<LD, LD>> beams{{m.first, lo + step * m.second}};  // (value, t)
+    for (LD h = 2 * step; h > 1e-21L * (1 + std::abs(beams[0].second)); h /= 8) {
+      std::vector<std::pair<LD, LD>> next;
+      for (const auto& beam : beams) {
+        LD v[33], x[33];
+        for (int k = 0; k < 33; ++k) {
+          x[k] = beam.second + h * (k - 16) / 16;
+          if (!periodic) x[k] = std::min(std::max(x[k], lo), hi);
+          v[k] = f(x[k]);
+        }
+        for (int k = 0; k < 33; ++k) {
+          if ((k == 0 || v[k] <= v[k - 1]) && (k == 32 || v[k] <= v[k + 1])) next.push_back({v[k], x[k]});
+        }
+      }
+      std::sort(next.begin(), next.end());
+      beams.clear();
+      for (const auto& c : next) {
+        bool duplicate = false;
+        for (const auto& kept : beams) duplicate = duplicate || std::abs(kept.second - c.second) < h / 32;
+        if (!duplicate) beams.push_back(c);
+        if (beams.size() == 4) break;
+      }
+    }
+    best = std::min(best, beams[0].first);
+  }
+  return best;
+}
+
+inline LD circle_circle(const Circle3<double>& a, const Circle3<double>& b) {
+  const Round ra(a.center, a.normal, a.radius, b.center), rb(b.center, b.normal, b.radius, b.center);
+  return minimize([&](LD t) { const V3 p = ra.at(t); return (p - rb.ring_point(p)).norm(); }, -kPi, kPi, true);
+}
+
+inline LD circle_disk(const Circle3<double>& a, const Disk3<double>& b) {
+  const Round ra(a.center, a.normal, a.radius, b.center), rb(b.center, b.normal, b.radius, b.center);
+  return minimize([&](LD t) { const V3 p = ra.at(t); return (p - rb.disk_point(p)).norm(); }, -kPi, kPi, true);
+}
+
+// If the disks do not intersect a closest pair has a rim point (docs/disk_disk.md); the cases
+// that intersect are checked against 0 analytically.
+inline LD disk_disk(const Disk3<double>& a, const Disk3<double>& b) {
+  return std::min(circle_disk({a.center, a.normal, a.radius}, b), circle_disk({b.center, b.normal, b.radius}, a));
+}
+
+inline V3 bezier_at(const BezierCurve3<double>& c, const V3d& origin, LD t) {
+  std::vector<V3> q;
+  for (int i = 0; i < c.control.cols(); ++i) q.push_back(c.control.col(i).cast<LD>() - origin.cast<LD>());
+  for (int k = int(q.size()) - 1; k > 0; --k)
+    for (int i = 0; i < k; ++i) q[i] = (1 - t) * q[i] + t * q[i + 1];
+  return q[0];
+}
+
+inline LD bezier_disk(const BezierCurve3<double>& c, const Disk3<double>& d) {
+  const Round rd(d.center, d.normal, d.radius, d.center);
+  return minimize([&](LD t) { const V3 p = bezier_at(c, d.center, t); return (p - rd.disk_point(p)).norm(); }, 0, 1,
+                  false);
+}
+
+inline LD bezier_circle(const BezierCurve3<double>& c, const Circle3<double>& k) {
+  const Round rk(k.center, k.normal, k.radius, k.center);
+  return minimize([&](LD t) { const V3 p = bezier_at(c, k.center, t); return (p - rk.ring_point(p)).norm(); }, 0, 1,
+                  false);
+}
+
+}  // namespace ref
+
+// ---------------------------------------------------------------------------------------------
+
+inline std::map<std::string, double> worst;  // largest relative error per kind
+
+// Relative error against the reference, recorded per kind; prints the case on failure.
+inline void expect_distance(const std::string& kind, const char* name, double got, LD truth, LD size, double tol = 1e-12) {
+  const LD denominator = std::max(truth, size);
+  const double err = double(std::abs(LD(got) - truth) / denominator);
+  worst[kind] = std::max(worst[kind], err);
+  const bool ok = err <= tol;
+  if (!ok) std::printf("  %s / %s: got %.17g, true %.17Lg, relative error %.3g\n", kind.c_str(), name, got, truth, err);
+  check::record(ok, name, __FILE__, __LINE__);
+}
+
+inline void expect_unique(const char* name, bool got, bool expected) {
+  if (got != expected) std::printf("  %s: unique %d, expected %d\n", name, got, expected);
+  check::record(got == expected, name, __FILE__, __LINE__);
+}
+
+inline V3d unit(double x, double y, double z) { return V3d(x, y, z).normalized(); }
+
+// The closest points are on their shapes, |a - b| is the distance, and the parameters give them.
+// (A Bezier curve's point is checked through its parameter instead.)
+template <class A> double off_shape(const V3d& p, const A& a) { return distance(p, a); }
+inline double off_shape(const V3d&, const BezierCurve3<double>&) { return 0; }
+
+template <class A, class B> void expect_consistent(const char* name, const A& a, const B& b, const Result<double>& r,
+                                                   double size) {
+  // World points carry the rounding of their coordinates (an ulp of 1e8 is 1.5e-8).
+  const double world = 8 * std::numeric_limits<double>::epsilon() * std::max(r.point_a.norm(), r.point_b.norm());
+  const double tol = 1e-12 * std::max(size, r.distance) + world;
+  const double gap = (r.point_a - r.point_b).norm();
+  const double on_a = off_shape(r.point_a, a), on_b = off_shape(r.point_b, b);
+  const bool ok = std::abs(gap - r.distance) <= tol && on_a <= tol && on_b <= tol;
+  if (!ok) std::printf("  %s: |a-b| %.17g vs %.17g, off a %.3g, off b %.3g\n", name, gap, r.distance, on_a, on_b);
+  check::record(ok, name, __FILE__, __LINE__);
+}
+
+// The world point of a circle's parameter (theta, 0) or a disk's (s, theta), in the library's frame.
+inline V3d circle_point(const Circle3<double>& c, const Vec2<double>& p) {
+  const Frame<double> f(c.normal);
+  return c.center + c.radius * (std::cos(p.x()) * f.u + std::sin(p.x()) * f.v);
+}
+inline V3d disk_point(const Disk3<double>& d, const Vec2<double>& p) {
+  const Frame<double> f(d.normal);
+  return d.center + p.x() * (std::cos(p.y()) * f.u + std::sin(p.y()) * f.v);
+}
+
+inline void expect_param(const char* name, const V3d& from_param, const V3d& point, double size) {
+  const bool ok = (from_param - point).norm() <= 1e-12 * size + 8 * std::numeric_limits<double>::epsilon() * point.norm();
+  if (!ok) std::printf("  %s: parameter point off by %.3g\n", name, (from_param - point).norm());
+  check::record(ok, name, __FILE__, __LINE__);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+inline void circle_circle_case(const char* name, const Circle3<double>& a, const Circle3<double>& b, LD truth, int unique = -1) {
+  const double size = std::max(a.radius, b.radius);
+  const Result<double> r = closest_points(a, b);
+  expect_distance("circle-circle", name, r.distance, truth, size);
+  expect_distance("circle-circle", name, distance(a, b), truth, size);
+  expect_distance("circle-circle", name, distance(b, a), truth, size);
+  expect_consistent(name, a, b, r, size);
+  expect_param(name, circle_point(a, r.param_a), r.point_a, std::max(size, (a.center - b.center).norm()));
+  expect_param(name, circle_point(b, r.param_b), r.point_b, std::max(size, (a.center - b.center).norm()));
+  if (unique >= 0) {
+    expect_unique(name, r.unique, unique == 1);
+    expect_unique(name, closest_points(b, a).unique, unique == 1);
+  }
+}
+
+inline void circle_disk_case(const char* name, const Circle3<double>& a, const Disk3<double>& b, LD truth, int unique = -1) {
+  const double size = std::max(a.radius, b.radius);
+  const Result<double> r = closest_points(a, b);
+  expect_distance("circle-disk", name, r.distance, truth, size);
+  expect_distance("circle-disk", name, distance(a, b), truth, size);
+  expect_distance("circle-disk", name, closest_points(b, a).distance, truth, size);
+  expect_consistent(name, a, b, r, size);
+  expect_param(name, circle_point(a, r.param_a), r.point_a, std::max(size, (a.center - b.center).norm()));
+  expect_param(name, disk_point(b, r.param_b), r.point_b, std::max(size, (a.center - b.center).norm()));
+  if (unique >= 0) expect_unique(name, r.unique, unique == 1);
+}
+
+inline void disk_disk_case(const char* name, const Disk3<double>& a, const Disk3<double>& b, LD truth, int unique = -1) {
+  const double size = std::max(a.radius, b.radius);
+  const Result<double> r = closest_points(a, b);
+  expect_distance("disk-disk", name, r.distance, truth, size);
+  expect_distance("disk-disk", name, distance(a, b), truth, size);
+  expect_distance("disk-disk", name, distance(b, a), truth, size);
+  expect_consistent(name, a, b, r, size);
+  expect_param(name, disk_point(a, r.param_a), r.point_a, std::max(size, (a.center - b.center).norm()));
+  expect_param(name, disk_point(b, r.param_b), r.point_b, std::max(size, (a.center - b.center).norm()));
+  if (unique >= 0) {
+    expect_unique(name, r.unique, unique == 1);
+    expect_unique(name, closest_points(b, a).unique, unique == 1);
+  }
+}
+
+inline double curve_size(const BezierCurve3<double>& c, const V3d& center) {
+  double s = 0;
+  for (int i = 0; i < c.control.cols(); ++i) s = std::max(s, (c.control.col(i) - center).norm());
+  return s;
+}
+
+template <class Round3>
+inline void bezier_case(const char* kind, const char* name, const BezierCurve3<double>& c, const Round3& k, LD truth,
+                 int unique = -1) {
+  const double size = std::max(k.radius, curve_size(c, k.center));
+  const Result<double> r = closest_points(c, k);
+  expect_distance(kind, name, r.distance, truth, size);
+  expect_distance(kind, name, distance(k, c), truth, size);
+  expect_consistent(name, c, k, r, size);
+  expect_param(name, c.at(r.param_a.x()), r.point_a, size);
+  if (unique >= 0) expect_unique(name, r.unique, unique == 1);
+}
+
+inline BezierCurve3<double> bezier(std::initializer_list<V3d> points) {
+  BezierCurve3<double> c;
+  c.control.resize(3, int(points.size()));
+  int i = 0;
+  for (const V3d& p : points) c.control.col(i++) = p;
+  return c;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+// Random configurations of every kind against the references: A and B as circles, B as a disk
+// (d), A as a disk (e), and a curve of degree 1 + k % 7 (c). Drawn in one stream, whichever
+// family checks them.
+struct RandomRoundCase {
+  Circle3<double> a, b;
+  Disk3<double> d, e;
+  BezierCurve3<double> c;
+};
+inline std::vector<RandomRoundCase> random_round_cases() {
+  std::mt19937_64 rng(20240611);
+  std::normal_distribution<double> normal;
+  auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
+  auto radius = [&] { return std::exp(0.7 * normal(rng)); };
+  std::vector<RandomRoundCase> out;
+  for (int k = 0; k < 60; ++k) {
+    const Circle3<double> a{vec(), vec(), radius()}, b{vec(), vec(), radius()};
+    const Disk3<double> d{b.center, b.normal, b.radius};
+    const Disk3<double> e{a.center, a.normal, a.radius};
+    const int degree = 1 + k % 7;
+    BezierCurve3<double> c;
+    c.control.resize(3, degree + 1);
+    for (int i = 0; i <= degree; ++i) c.control.col(i) = vec();
+    out.push_back({a, b, d, e, c});
+  }
+  return out;
+}
+
+// Tangencies (multiple roots: the hardest candidates) in random orientations: B touches A at a
+// point p with a common tangent line, exactly or offset by up to 1e-12..1, and curves tangent to
+// A's rim at p (c). A and B as circles, and as disks (da, db).
+struct TangentRoundCase {
+  Circle3<double> a, b;
+  Disk3<double> da, db;
+  BezierCurve3<double> c;
+};
+inline std::vector<TangentRoundCase> tangent_round_cases() {
+  std::mt19937_64 rng(77);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(0, 1);
+  auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
+  std::vector<TangentRoundCase> out;
+  for (int k = 0; k < 48; ++k) {
+    const V3d ca = vec(), na = vec().normalized();
+    const double ra = std::exp(normal(rng)), rb = std::exp(normal(rng));
+    const Frame<double> f(na);
+    const double t = 6.283185307179586 * uniform(rng);
+    const V3d p = ca + ra * (std::cos(t) * f.u + std::sin(t) * f.v);
+    const V3d tangent = -std::sin(t) * f.u + std::cos(t) * f.v, radial = (p - ca).normalized();
+    const double offset = k % 2 == 0 ? 0.0 : std::pow(10.0, -12 * uniform(rng));
+    V3d cb, nb;
+    if (k % 3 == 0) {  // B's plane turned about the common tangent
+      const double phi = 6.283185307179586 * uniform(rng);
+      const V3d in_b = std::cos(phi) * radial + std::sin(phi) * na;
+      cb = p + rb * in_b + offset * vec();
+      nb = tangent.cross(in_b);
+    } else if (k % 3 == 1) {  // coplanar, outside or inside
+      cb = p + (uniform(rng) < 0.5 ? rb : -rb) * radial + offset * vec();
+      nb = na;
+    } else {  // B standing on A's rim
+      cb = p + rb * radial + offset * vec();
+      nb = tangent;
+    }
+    const Circle3<double> a{ca, na, ra}, b{cb, nb, rb};
+    const Disk3<double> da{ca, na, ra}, db{cb, nb, rb};
+    const int degree = 2 + k % 6;
+    const double bend = (uniform(rng) - 0.3) * 0.5, lift = k % 4 < 2 ? 0.0 : 10 * offset;
+    BezierCurve3<double> c;
+    c.control.resize(3, degree + 1);
+    for (int j = 0; j <= degree; ++j) {
+      const double s = -1 + 2.0 * j / degree;
+      c.control.col(j) = p + s * tangent + bend * s * s * radial + lift * na;
+    }
+    out.push_back({a, b, da, db, c});
+  }
+  return out;
+}
+
+// Every query for float and long double: the same shapes in Real and in double (the references).
+template <class Real> struct PrecisionScene {
+  using V = Vec3<Real>;
+  Circle3<Real> a{V(Real(0.1), Real(0.2), Real(1.9)), V(Real(1), Real(-2), Real(0.5)), Real(1.3)};
+  Circle3<Real> b{V(Real(0.7), Real(-0.4), Real(0.2)), V(Real(0.3), Real(1), Real(2)), Real(0.9)};
+  Disk3<Real> da{a.center, a.normal, a.radius}, db{b.center, b.normal, b.radius};
+  BezierCurve3<Real> c;
+  Circle3<double> ad{a.center.template cast<double>(), a.normal.template cast<double>(), double(a.radius)};
+  Circle3<double> bd{b.center.template cast<double>(), b.normal.template cast<double>(), double(b.radius)};
+  Disk3<double> dad{ad.center, ad.normal, ad.radius}, dbd{bd.center, bd.normal, bd.radius};
+  BezierCurve3<double> cd;
+
+  PrecisionScene() {
+    c.control.resize(3, 6);
+    const double wave[6][3] = {{-1.6, -0.2, 0.4}, {-1.0, 1.4, -0.3}, {-0.3, -1.5, 0.9},
+                               {0.4, 1.6, -0.6},  {1.0, -1.2, 0.7}, {1.7, 0.3, 0.2}};
+    for (int i = 0; i < 6; ++i) c.control.col(i) = V(Real(wave[i][0]), Real(wave[i][1]), Real(wave[i][2]));
+    cd.control = c.control.template cast<double>();
+  }
+};
+
+// The answers in float and long double agree with the double references: `rows(scene)` gives
+// each query's (answer, reference) pair on a PrecisionScene, agreeing within 1e-5 in float and
+// 1e-15 in long double (relative above 1).
+template <class Rows> void other_precisions(const Rows& rows) {
+  const auto expect = [](const char* name, double tol, const std::vector<std::array<double, 2>>& values) {
+    for (const auto& v : values) {
+      const bool ok = std::abs(v[0] - v[1]) <= tol * std::max(1.0, v[1]);
+      if (!ok) std::printf("  %s: %.17g vs %.17g\n", name, v[0], v[1]);
+      check::record(ok, name, __FILE__, __LINE__);
+    }
+  };
+  expect("float", 1e-5, rows(PrecisionScene<float>()));
+  expect("long double", 1e-15, rows(PrecisionScene<long double>()));
+}
+
+// One family's checks on the shared cases: `random` and `tangent` check a RandomRoundCase and a
+// TangentRoundCase, `rows` gives the float and long double rows (other_precisions).
+template <class Random, class Tangent, class Rows>
+void shared_round_cases(const Random& random, const Tangent& tangent, const Rows& rows) {
+  for (const RandomRoundCase& r : random_round_cases()) random(r);
+  for (const TangentRoundCase& r : tangent_round_cases()) tangent(r);
+  other_precisions(rows);
+}
+
+// The largest relative error per kind, then the "N passed, N failed" line and the exit code.
+inline int finish_round(const char* name) {
+  for (const auto& w : worst) std::printf("largest relative error, %s: %.3g\n", w.first.c_str(), w.second);
+  return check::finish(name);
+}

@@ -1,0 +1,76 @@
+// Circle against disk (circle_disk.hpp) against the long-double references of round_reference.hpp.
+#include "round_reference.hpp"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+void circle_disk_tests() {
+  const V3d o(0, 0, 0), z(0, 0, 1);
+  circle_disk_case("in the disk's plane, inside", {V3d(0.2, 0.1, 0), z, 0.5}, {o, z, 1}, 0, 0);
+  circle_disk_case("in the disk's plane, inside, tilted", {V3d(0.2, 0.1, 0), unit(1, 1, 1), 0.5},
+                   {V3d(0.2, 0.1, 0), unit(1, 1, 1), 1}, 0, 0);
+  circle_disk_case("crossing the disk twice", {V3d(0.1, 0, 0), V3d(0, 1, 0), 0.5}, {o, z, 1}, 0, 0);
+  circle_disk_case("parallel above, projection inside", {V3d(0.1, 0.2, 0.3), z, 0.4}, {o, z, 1}, 0.3L, 0);
+  circle_disk_case("coaxial, wider than the disk", {V3d(0, 0, 0.5), z, 2}, {o, z, 1}, std::sqrt(1.25L), 0);
+  // In the disk frame the circle is (2 cos, 0, 2 sin): sqrt(5 - 4 |cos|) outside, least at the rim.
+  circle_disk_case("same center, orthogonal, radius 2 vs 1", {o, V3d(0, 1, 0), 2}, {o, z, 1}, 1, 0);
+  circle_disk_case("same center, orthogonal, radius 1 vs 2", {o, V3d(0, 1, 0), 1}, {o, z, 2}, 0, 0);
+  circle_disk_case("touching the rim", {V3d(2, 0, 0), V3d(0, 1, 0), 1}, {o, z, 1}, 0, 1);
+  circle_disk_case("resting on the disk", {V3d(0.2, 0, 0.5), V3d(0, 1, 0), 0.5}, {o, z, 1}, 0, 1);
+  {
+    const Circle3<double> a{V3d(2, 0, 0.3), V3d(0, 1, 0), 1};
+    circle_disk_case("beside the rim", a, {o, z, 1}, ref::circle_disk(a, {o, z, 1}), 1);
+  }
+  {
+    const double tilt = 1e-9;
+    const Circle3<double> a{V3d(0.3, 0.2, 1e-10), V3d(std::sin(tilt), 0, std::cos(tilt)), 0.5};
+    const Disk3<double> d{o, z, 1};
+    circle_disk_case("near-coplanar inside", a, d, ref::circle_disk(a, d));
+    const Circle3<double> b{V3d(0.3, 0.2, 1e-10), V3d(std::sin(tilt), 0, std::cos(tilt)), 1.5};
+    circle_disk_case("near-coplanar around", b, d, ref::circle_disk(b, d));
+    const Circle3<double> c{V3d(3, 0.2, 1e-3), V3d(std::sin(tilt), 0, std::cos(tilt)), 1.5};
+    circle_disk_case("near-coplanar outside", c, d, ref::circle_disk(c, d));
+  }
+  {
+    const Circle3<double> a{V3d(0.1, 0.2, 0.3), unit(1, -2, 0.5), 1.3};
+    const Disk3<double> d{V3d(0.7, -0.4, 0.2), unit(0.3, 1, 2), 0.9};
+    circle_disk_case("generic", a, d, ref::circle_disk(a, d));
+    const Circle3<double> lifted{V3d(0.1, 0.2, 1.9), unit(1, -2, 0.5), 1.3};
+    const LD truth = ref::circle_disk(lifted, d);
+    circle_disk_case("generic lifted", lifted, d, truth);
+    for (double shift : {1e6, 1e8}) {
+      const V3d t(-0.4 * shift, shift, 0.9 * shift);
+      const Circle3<double> at{lifted.center + t, lifted.normal, lifted.radius};
+      const Disk3<double> dt{d.center + t, d.normal, d.radius};
+      circle_disk_case(shift == 1e6 ? "translated 1e6" : "translated 1e8", at, dt, ref::circle_disk(at, dt));
+    }
+  }
+  {
+    const Disk3<double> big{o, z, 1};
+    const Circle3<double> small{V3d(1.2, 0.3, 0.1), unit(0.2, 1, 0.4), 1e-6};
+    circle_disk_case("radius ratio 1e-6", small, big, ref::circle_disk(small, big));
+    const Circle3<double> over{V3d(0.3, 0.3, 1e-3), unit(0.2, 1, 0.4), 1e-6};
+    circle_disk_case("radius ratio 1e-6 over the disk", over, big, ref::circle_disk(over, big));
+    const Circle3<double> huge{V3d(1e6 + 0.3, 0.1, 0.2), unit(0.1, 0.2, 1), 1e6};
+    circle_disk_case("radius ratio 1e6", huge, big, ref::circle_disk(huge, big));
+    const Disk3<double> tiny{V3d(0.3, 0.1, 0.2), unit(0.1, 0.2, 1), 1e-6};
+    const Circle3<double> unit_circle{o, unit(1, 0.5, 0.2), 1};
+    circle_disk_case("disk radius ratio 1e-6", unit_circle, tiny, ref::circle_disk(unit_circle, tiny));
+  }
+}
+
+int main() {
+  circle_disk_tests();
+  // The random configurations, the tangencies and the other precisions of round_reference.hpp.
+  shared_round_cases(
+      [](const RandomRoundCase& r) { circle_disk_case("random", r.a, r.d, ref::circle_disk(r.a, r.d)); },
+      [](const TangentRoundCase& r) { circle_disk_case("tangent", r.b, r.da, ref::circle_disk(r.b, r.da)); },
+      [](const auto& s) {
+        return std::vector<std::array<double, 2>>{
+            {double(distance(s.a, s.db)), double(ref::circle_disk(s.ad, s.dbd))},
+            {double(closest_points(s.db, s.a).distance), double(ref::circle_disk(s.ad, s.dbd))},
+        };
+      });
+  return finish_round("circle_disk");
+}

@@ -1,0 +1,87 @@
+// Line, ray and segment against circles (line_circle.hpp), on cases whose answer is known in
+// closed form (tangencies, the axis, the plane, translations), in float, double and long double.
+#include <circledist/circledist.hpp>
+
+#include "check.hpp"
+
+#include <cmath>
+#include <limits>
+
+using namespace circledist;
+
+template <class Real> void analytic_cases() {
+  using V = Vec3<Real>;
+  const Real bar = check::closed_form_bar<Real>();
+  const Circle3<Real> ring{V(0, 0, 0), V(0, 0, 3), Real(1)};
+
+  // A line parallel to the plane whose projection is tangent to the circle: distance = height.
+  for (Real h : {Real(1e-3), Real(1e-6), Real(1e-9), Real(0)}) {
+    const Line3<Real> line{V(5, 1, h), V(2, 0, 0)};
+    CHECK_NEAR(distance(line, ring), h, bar);
+    CHECK_NEAR(distance(ring, line), h, bar);
+    const Result<Real> r = closest_points(line, ring);
+    CHECK_NEAR((r.point_a - r.point_b).norm(), r.distance, bar);
+    CHECK_NEAR(r.point_b.y(), Real(1), Real(1e-5));
+  }
+
+  // The axis: every rim point is at distance R from the crossing point.
+  const Result<Real> axis = closest_points(Line3<Real>{V(0, 0, 7), V(0, 0, -2)}, ring);
+  CHECK_NEAR(axis.distance, Real(1), bar);
+  CHECK(!axis.unique);
+  // Parallel to the axis, off by e: R - e.
+  for (Real e : {Real(1e-8), Real(1e-12), Real(0.25)}) {
+    CHECK_NEAR(distance(Line3<Real>{V(e, 0, 3), V(0, 0, 1)}, ring), 1 - e, bar);
+  }
+  // In the plane: through the center (two touching points, not unique), outside, across.
+  const Result<Real> across = closest_points(Line3<Real>{V(-4, 0, 0), V(1, 0, 0)}, ring);
+  CHECK_NEAR(across.distance, Real(0), bar);
+  CHECK(!across.unique);
+  CHECK_NEAR(distance(Line3<Real>{V(0, 3, 0), V(1, 1e-30, 0)}, ring), Real(2), bar);
+  // A ray pointing away and a zero-length segment reduce to the point-circle distance
+  // (test_point_circle.cpp checks that one).
+  const V p(0, 3, 4);
+  const Real point_circle = std::sqrt(Real(4) + Real(16));
+  CHECK_NEAR(distance(Ray3<Real>{p, V(0, 1, 1)}, ring), point_circle, bar * 5);
+  CHECK_NEAR(distance(Segment3<Real>{p, p}, ring), point_circle, bar * 5);
+
+  // A ray starting beyond the circle's cylinder and pointing away: the origin is the closest
+  // point (the disk's case is in test_line_disk.cpp).
+  CHECK_NEAR(distance(Ray3<Real>{V(3, 0, 1), V(1, 0, 0)}, ring), std::sqrt(Real(5)), bar * 3);
+}
+
+// A scene translated far from the origin keeps an absolute error of 1e-12 for a unit radius:
+// the solvers subtract nearby coordinates first.
+void translated_cases() {
+  using V = Vec3<double>;
+  for (double offset : {1e6, 1e8}) {
+    const V o(offset, -offset, offset);
+    const Circle3<double> ring{o, V(0, 0, 1), 1.0};
+    for (double h : {1e-3, 1e-9}) {
+      // The input's height is what o.z + h rounds to, less o.z (an exact subtraction).
+      const double height = (o.z() + h) - o.z();
+      CHECK_NEAR(distance(Line3<double>{o + V(5, 1, h), V(1, 0, 0)}, ring), height, 1e-12);
+      CHECK_NEAR(distance(Segment3<double>{o + V(-5, 1, h), o + V(5, 1, h)}, ring), height, 1e-12);
+    }
+    CHECK_NEAR(distance(Line3<double>{o + V(0, 0, 2), V(0, 0, 1)}, ring), 1.0, 1e-12);
+  }
+}
+
+// Radius 0 (a point), and tiny or huge radii with the scene scaled alike.
+void radius_cases() {
+  using V = Vec3<double>;
+  const Circle3<double> dot{V(0, 0, 0), V(0, 0, 1), 0.0};
+  CHECK_NEAR(distance(Line3<double>{V(0, 3, 4), V(1, 0, 0)}, dot), 5.0, 1e-12 * 5);
+  for (double r : {1e-9, 1e9}) {
+    const Circle3<double> ring{V(0, 0, 0), V(0, 0, 1), r};
+    CHECK_NEAR(distance(Line3<double>{V(5 * r, r, 1e-6 * r), V(1, 0, 0)}, ring), 1e-6 * r, 1e-12 * r);
+  }
+}
+
+int main() {
+  analytic_cases<float>();
+  analytic_cases<double>();
+  analytic_cases<long double>();
+  translated_cases();
+  radius_cases();
+  return check::finish("line_circle");
+}
