@@ -609,7 +609,6 @@ FAMILIES = {
     "random": (KIND_PAIRS, _fam_random),
     "tangent": (KIND_PAIRS, _fam_tangent),
     "axis": (LR, _fam_axis),
-    "shadow_center": (LR3, _fam_shadow_center),
     "coplanar": (KIND_PAIRS, _fam_coplanar),
     "concentric": (KIND_PAIRS, _fam_concentric),
     "near_concentric": (KIND_PAIRS, _fam_near_concentric),
@@ -622,6 +621,9 @@ FAMILIES = {
     "bezier_far_control": (BR, _fam_bezier_far_control),
     "bezier_plane": (BR, _fam_bezier_plane),
     "huge_circle": (RR, _fam_huge_circle),
+    # Families found later come last: a case's id ("family/seed/i") seeds its generator with the
+    # family's position here, so appending keeps every earlier id's case.
+    "shadow_center": (LR3, _fam_shadow_center),
 }
 
 
