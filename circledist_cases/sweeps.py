@@ -57,18 +57,23 @@ def _tilted_z(a, axis="y"):
     return (s, 0.0, c) if axis == "y" else (0.0, s, c)
 
 
+def _member(shape, round_kind, orient):
+    """One sweep member on the unit circle or disk: (member, kind, shape, round, orient), the
+    member named by its kind ("line-circle"), ", rotated" added for the rotated frame."""
+    kind = f"{shape[0]}-{round_kind}"
+    rnd = accuracy.UNIT_CIRCLE if round_kind == "circle" else accuracy.UNIT_DISK
+    return (kind + (", rotated" if orient == "rot" else ""), kind, shape, rnd, orient)
+
+
 def _axis_tilt(k):
     a = 10.0 ** -k
     p = (0.0, 0.0, 0.5)
     d = (math.sin(a), 0.0, math.cos(a))
     p0 = tuple(pi - di for pi, di in zip(p, d))
     p1 = tuple(pi + 2 * di for pi, di in zip(p, d))
-    return [
-        ("line-circle", "line-circle", ("line", p, d), accuracy.UNIT_CIRCLE, "z"),
-        ("line-disk", "line-disk", ("line", p, d), accuracy.UNIT_DISK, "z"),
-        ("segment-circle", "segment-circle", ("segment", p0, p1), accuracy.UNIT_CIRCLE, "z"),
-        ("line-circle, rotated", "line-circle", ("line", p, d), accuracy.UNIT_CIRCLE, "rot"),
-    ]
+    line = ("line", p, d)
+    return [_member(line, "circle", "z"), _member(line, "disk", "z"),
+            _member(("segment", p0, p1), "circle", "z"), _member(line, "circle", "rot")]
 
 
 def _tangent_lift(k):
@@ -114,12 +119,9 @@ def _shadow_offset(k):
     d = (math.cos(a), 0.0, math.sin(a))
     origin = (0.4, offset, 1.0 + 0.4 * math.tan(a))
     end = tuple(o + 1.5 * di for o, di in zip(origin, d))
-    return [
-        ("ray-circle", "ray-circle", ("ray", origin, d), accuracy.UNIT_CIRCLE, "z"),
-        ("ray-circle, rotated", "ray-circle", ("ray", origin, d), accuracy.UNIT_CIRCLE, "rot"),
-        ("segment-circle, rotated", "segment-circle", ("segment", origin, end), accuracy.UNIT_CIRCLE, "rot"),
-        ("ray-disk, rotated", "ray-disk", ("ray", origin, d), accuracy.UNIT_DISK, "rot"),
-    ]
+    ray = ("ray", origin, d)
+    return [_member(ray, "circle", "z"), _member(ray, "circle", "rot"),
+            _member(("segment", origin, end), "circle", "rot"), _member(ray, "disk", "rot")]
 
 
 def sweep_cases(kinds=None):
