@@ -94,9 +94,13 @@ template <class Real> CurvePoly<Real> operator+(const CurvePoly<Real>& a, const 
   return p;
 }
 
-template <class Real> CurvePoly<Real> operator*(Real s, CurvePoly<Real> a) {
-  for (int i = 0; i <= a.degree; ++i) a.c[i] *= s;
-  return a;
+// (A const reference and a local copy, here and wherever a function changes a copy of an
+// aggregate: built by GCC 12 with -flto, functions that changed an aggregate parameter passed by
+// value gave wrong answers, hidden by -fno-ipa-modref; cpp/tests/lto_aggregates.cpp.)
+template <class Real> CurvePoly<Real> operator*(Real s, const CurvePoly<Real>& a) {
+  CurvePoly<Real> p = a;
+  for (int i = 0; i <= p.degree; ++i) p.c[i] *= s;
+  return p;
 }
 
 template <class Real> CurvePoly<Real> operator-(const CurvePoly<Real>& a, const CurvePoly<Real>& b) {
@@ -282,7 +286,8 @@ struct CurveRoots<Roots, Real,
 // other roots of p (dropping the small leading terms, a change of sqrt(eps) of the coefficients,
 // lost a cluster of roots at the end of a piece of a larger curve). Bracketing searches
 // [-1, 1] alone and needs none of this.
-template <class Real> CurvePoly<Real> without_far_roots(CurvePoly<Real> p) {
+template <class Real> CurvePoly<Real> without_far_roots(const CurvePoly<Real>& polynomial) {
+  CurvePoly<Real> p = polynomial;
   const int trimmed = trimmed_degree(p.c.data(), p.degree);
   if (trimmed < 0) return p;
   p.degree = trimmed;
@@ -408,7 +413,8 @@ template <class Real> struct CurveRoundBase {
 
   // Minima over a piece's parameter s, moved to the curve's t = t0 + s (t1 - t0) (the whole
   // curve, t0 = 0 and t1 = 1, unchanged).
-  static Found on_span(Found found, Real t0, Real t1) {
+  static Found on_span(const Found& piece_minima, Real t0, Real t1) {
+    Found found = piece_minima;
     if (t0 == 0 && t1 == 1) return found;
     for (int i = 0; i < found.count; ++i) found.item[i].x = t0 + found.item[i].x * (t1 - t0);
     found.best.x = t0 + found.best.x * (t1 - t0);

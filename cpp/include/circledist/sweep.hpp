@@ -82,7 +82,8 @@ template <class Real> Real swept_distance(Real d, Real ra, Real rb) {
 
 // The swept result from the cores' result (see the header comment). `point_only` is true when a
 // side is a bare point (a point with sweep 0): a single common point then.
-template <class Real> Result<Real> swept_result(Result<Real> r, Real ra, Real rb, bool point_only) {
+template <class Real> Result<Real> swept_result(const Result<Real>& core, Real ra, Real rb, bool point_only) {
+  Result<Real> r = core;
   if (ra == 0 && rb == 0) return r;
   const Real d = r.distance;
   if (d != d) return r;

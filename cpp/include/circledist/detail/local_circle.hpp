@@ -171,7 +171,8 @@ template <class Real> std::array<Real, 3> harmonic_quadratic(Real v0, Real v1, R
 }
 
 // p / 2^k with 2^k the largest coefficient's binade: exact, and the same roots.
-template <class Real, std::size_t N> std::array<Real, N> normalized(std::array<Real, N> p) {
+template <class Real, std::size_t N> std::array<Real, N> normalized(const std::array<Real, N>& coefficients) {
+  std::array<Real, N> p = coefficients;
   Real largest = 0;
   for (const Real& x : p) largest = std::max(largest, std::abs(x));
   if (!(largest > 0) || !std::isfinite(largest)) return p;

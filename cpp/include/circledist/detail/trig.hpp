@@ -64,7 +64,8 @@ template <class Real, int K> Trig<Real, K> operator-(Trig<Real, K> f, const Trig
   return f;
 }
 
-template <class Real, int K> Trig<Real, K> operator*(Real a, Trig<Real, K> f) {
+template <class Real, int K> Trig<Real, K> operator*(Real a, const Trig<Real, K>& g) {
+  Trig<Real, K> f = g;
   for (int k = 0; k <= K; ++k) {
     f.c[k] *= a;
     f.s[k] *= a;
