@@ -1,7 +1,7 @@
 // Point-circle: closed form (note 000 §1, the point-circle distance F).
 #pragma once
 
-#include "detail/atan2.hpp"
+#include "detail/point_over_round.hpp"
 #include "planar.hpp"
 #include "query.hpp"
 
@@ -10,38 +10,29 @@ namespace circledist {
 template <class Real> struct Query<Vec3<Real>, Circle3<Real>> {
   static constexpr bool defined = true;
 
-  // Needs only the unit normal, not the full frame: height z and distance rho from the axis.
+  // F = sqrt(z^2 + (rho - R)^2) from the height z and the distance rho from the axis
+  // (detail/point_over_round.hpp); closest() takes the same two numbers, so the two agree to the bit.
   template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Circle3<Real>& c) {
-    const Vec3<Real> d = p - c.center;
-    const Vec3<Real> n = unit_vector(c.normal);
-    const Real z = n.dot(d);
-    const Real rho = (d - z * n).norm();
-    return length2d(z, rho - c.radius);
+    const detail::PointOverRound<Real> seen(p, c.center, c.normal);
+    return length2d(seen.height, seen.radial - c.radius);
   }
 
-  // The distance from the same height and radial offset as distance() (so the two agree to the
-  // bit); the ring point from the in-plane coordinates (x, y) = (u.d, v.d), so that it lies in
-  // the plane (scaling d - z n by R / rho would carry its rounding, eps |z|, out of the plane
-  // R / rho times over for a point high above the axis); the angle atan2(y, x).
-  template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Circle3<Real>& c) {
-    const Frame<Real> frame(c.normal);
-    const Vec3<Real> d = p - c.center;
-    const Real z = frame.n.dot(d);
+  // The ring point in the direction of the point's in-plane part, at angle atan2(y, x) in the
+  // circle's frame.
+  template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Result<Real> closest(const Vec3<Real>& p, const Circle3<Real>& c) {
+    const detail::PointOverRound<Real> seen(p, c.center, c.normal);
     Result<Real> r;
-    r.distance = length2d(z, (d - z * frame.n).norm() - c.radius);
+    r.distance = length2d(seen.height, seen.radial - c.radius);
     r.point_a = p;
-    const Real x = frame.u.dot(d), y = frame.v.dot(d);
-    const Real rho = length2d(x, y);
     // A point on the axis (rho within rounding of 0) is as close to every ring point: the one at
     // angle 0, and `unique` false.
-    if (rho <= 8 * std::numeric_limits<Real>::epsilon() * std::max(c.radius, d.norm())) {
-      r.point_b = c.center + c.radius * frame.u;
+    if (seen.on_axis(c.radius)) {
+      r.point_b = seen.rim_at_zero(c.center, c.radius);
       r.unique = !(c.radius > 0);
       return r;
     }
-    const Real scale = c.radius / rho;
-    r.point_b = c.center + (scale * x) * frame.u + (scale * y) * frame.v;
-    r.param_b = Vec2<Real>(detail::atan2(y, x), 0);
+    r.point_b = seen.on_rim(c.center, c.radius);
+    r.param_b = Vec2<Real>(seen.angle(), 0);
     return r;
   }
 };

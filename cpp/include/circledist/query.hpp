@@ -29,7 +29,7 @@ template <class Roots, class A, class B> CIRCLEDIST_INLINE auto direct_distance(
   }
 }
 
-template <class Roots, class A, class B> auto direct_closest_points(const A& a, const B& b) {
+template <class Roots, class A, class B> CIRCLEDIST_INLINE auto direct_closest_points(const A& a, const B& b) {
   if constexpr (has_query_v<A, B>) {
     return Query<A, B>::template closest<Roots>(a, b);
   } else {
@@ -97,20 +97,28 @@ template <class Roots, class A, class B> CIRCLEDIST_INLINE auto ranged_distance(
   return d;
 }
 
-template <class Roots, class A, class B> auto ranged_closest_points(const A& a, const B& b) {
+// closest_points of the scene scaled when its size asks for it (else r, as computed): out of
+// line, as rescaled_distance is.
+template <class Roots, class A, class B, class R>
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, cold))
+#endif
+R rescaled_closest_points(const A& a, const B& b, const R& computed) {
+  const int e = scene_exponent(a, b);
+  if (e == 0) return computed;
+  R r = direct_closest_points<Roots>(scaled(a, e), scaled(b, e));
+  r.distance = std::ldexp(r.distance, -e);
+  r.point_a = ldexp3(r.point_a, -e);
+  r.point_b = ldexp3(r.point_b, -e);
+  r.param_a = unscaled_param(r.param_a, a, e);
+  r.param_b = unscaled_param(r.param_b, b, e);
+  return r;
+}
+
+template <class Roots, class A, class B> CIRCLEDIST_INLINE auto ranged_closest_points(const A& a, const B& b) {
   auto r = direct_closest_points<Roots>(a, b);
   if constexpr (scalable<A>::value && scalable<B>::value) {
-    if (!moderate(r.distance)) {
-      const int e = scene_exponent(a, b);
-      if (e != 0) {
-        r = direct_closest_points<Roots>(scaled(a, e), scaled(b, e));
-        r.distance = std::ldexp(r.distance, -e);
-        r.point_a = ldexp3(r.point_a, -e);
-        r.point_b = ldexp3(r.point_b, -e);
-        r.param_a = unscaled_param(r.param_a, a, e);
-        r.param_b = unscaled_param(r.param_b, b, e);
-      }
-    }
+    if (!moderate(r.distance)) r = rescaled_closest_points<Roots>(a, b, r);
   }
   return r;
 }
@@ -129,7 +137,7 @@ template <class Roots, class A, class B> CIRCLEDIST_INLINE auto promoted_distanc
   }
 }
 
-template <class Roots, class A, class B> auto promoted_closest_points(const A& a, const B& b) {
+template <class Roots, class A, class B> CIRCLEDIST_INLINE auto promoted_closest_points(const A& a, const B& b) {
   if constexpr (promotable<A>::value && promotable<B>::value) {
     return ranged_closest_points<Roots>(promoted(a), promoted(b)).template cast<float>();
   } else {
@@ -150,7 +158,7 @@ template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto d
 }
 
 // Distance, closest points on a and b, their parameters and the `unique` flag.
-template <class Roots = DefaultRoots, class A, class B> auto closest_points(const A& a, const B& b) {
+template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto closest_points(const A& a, const B& b) {
   static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
   if constexpr (detail::ordered_v<A, B>) {
     if (precedes(b, a)) return detail::promoted_closest_points<Roots>(b, a).swapped();
