@@ -307,6 +307,28 @@ PYBIND11_MODULE(_core, m) {
           doc::field(kSweepField.name))
       .def("__repr__", &repr)
       .def("to_arrays", &to_arrays, doc::kToArrays)
+      // Indexing the batch axes: circledist/_batch.py, shared with circledist.dask's shapes.
+      .def(
+          "__getitem__",
+          [](py::handle self, py::object key) {
+            return py::module_::import("circledist._batch").attr("index_shape")(self, key);
+          },
+          py::arg("key"), doc::kGetItem)
+      .def(
+          "__len__",
+          [](py::handle self) {
+            const Shape& s = constructed(self);
+            if (s.batch.empty()) throw py::type_error(std::string("len() of a single ") + kind_name(s.kind) + " (batch shape ())");
+            return s.batch[0];
+          },
+          "The length of the first batch axis; TypeError for a single shape.")
+      // A shape is a value: true, whatever its length (len() alone would make a single shape's
+      // truth a TypeError).
+      .def("__bool__", [](py::handle) { return true; })
+      // Iterating a batch gives its shapes along the first axis (not NumPy's sequence probing).
+      .def("__iter__", [](py::handle self) {
+        return py::module_::import("circledist._batch").attr("iterate_shape")(self);
+      })
       // A shape pickles, copies and deep-copies as its arrays (to_arrays), rebuilt by its class.
       .def("__reduce__", [](py::handle self) -> py::tuple {
         const py::object rebuild = py::module_::import("circledist._core").attr("_from_arrays");

@@ -294,6 +294,39 @@ Examples
 (['center', 'normal', 'radius'], dtype('float32'))
 )";
 
+inline const char* const kGetItem = R"(Shapes of the batch, indexed as NumPy indexes an array of the batch shape.
+
+Parameters
+----------
+key : int, slice, Ellipsis, array_like of int or bool, or a tuple of these
+    One entry per batch axis at most (missing trailing axes are taken whole); the fields' own
+    axes (a center's 3 values, a curve's control points) are never indexed.
+
+Returns
+-------
+Shape
+    A shape of the same kind holding its own copy of the selected elements' fields (the
+    dtypes kept): batch shape ``()`` for one integer per batch axis.
+
+Raises
+------
+TypeError
+    For a single shape (batch shape ``()``), or an entry that is not an index (``None``, a
+    float).
+IndexError
+    For more indices than batch axes, or an index out of range.
+
+Examples
+--------
+>>> import numpy as np
+>>> import circledist as cd
+>>> rings = cd.Circle(np.zeros((4, 3)), [0, 0, 1], [1.0, 2.0, 3.0, 4.0])
+>>> rings[1]
+Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(2.))
+>>> rings[rings.to_arrays()["radius"] > 2].batch_shape, len(rings)
+((2,), 4)
+)";
+
 inline const char* const kFromArrays = R"(The shape of this class built from ``to_arrays()``'s arrays.
 
 Parameters

@@ -31,6 +31,48 @@ class Shape:
     >>> isinstance(s, cd.Shape), s.kind, s.batch_shape
     (True, 'Disk', (3,))
     """
+    def __bool__(self) -> bool:
+        ...
+    def __getitem__(self, key: typing.Any) -> typing.Any:
+        """
+        Shapes of the batch, indexed as NumPy indexes an array of the batch shape.
+        
+        Parameters
+        ----------
+        key : int, slice, Ellipsis, array_like of int or bool, or a tuple of these
+            One entry per batch axis at most (missing trailing axes are taken whole); the fields' own
+            axes (a center's 3 values, a curve's control points) are never indexed.
+        
+        Returns
+        -------
+        Shape
+            A shape of the same kind holding its own copy of the selected elements' fields (the
+            dtypes kept): batch shape ``()`` for one integer per batch axis.
+        
+        Raises
+        ------
+        TypeError
+            For a single shape (batch shape ``()``), or an entry that is not an index (``None``, a
+            float).
+        IndexError
+            For more indices than batch axes, or an index out of range.
+        
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import circledist as cd
+        >>> rings = cd.Circle(np.zeros((4, 3)), [0, 0, 1], [1.0, 2.0, 3.0, 4.0])
+        >>> rings[1]
+        Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(2.))
+        >>> rings[rings.to_arrays()["radius"] > 2].batch_shape, len(rings)
+        ((2,), 4)
+        """
+    def __iter__(self) -> typing.Any:
+        ...
+    def __len__(self) -> int:
+        """
+        The length of the first batch axis; TypeError for a single shape.
+        """
     def __reduce__(self) -> tuple:
         ...
     def __repr__(self) -> str:

@@ -27,13 +27,11 @@ from dask.delayed import Delayed
 from dask.highlevelgraph import HighLevelGraph
 
 from . import _core
+from ._batch import TRAILING_DIMS, index_fields
 
 __all__ = ["Bezier", "Circle", "ClosestPoints", "Disk", "Line", "Point", "Ray", "Segment",
            "closest_points", "distance", "pairs_within", "within"]
 
-# The per-element (trailing) dimensions of each constructor argument; the leading ones are batch.
-_CORE_NDIM = {"p": 1, "origin": 1, "direction": 1, "p0": 1, "p1": 1, "center": 1, "normal": 1,
-              "radius": 0, "control_points": 2, "sweep": 0}
 
 
 class _Shape:
@@ -55,7 +53,7 @@ class _Shape:
         batches = []
         for name, value in fields.items():
             value = da.asarray(value)
-            core = _CORE_NDIM[name]
+            core = TRAILING_DIMS[name]
             if value.ndim < core or (core and value.shape[-1] != 3):
                 raise ValueError(f"{type(self).__name__}: {name} must have shape (..., "
                                  f"{'3' if core == 1 else 'k+1, 3' if core == 2 else ''}), "
@@ -119,40 +117,8 @@ class _Shape:
         >>> rings[-1].compute()
         Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(4.))
         """
-        index = _batch_index(key, len(self.batch_shape), self.kind)
-        fields = {}
-        for name, value in self.fields.items():
-            core = _CORE_NDIM[name]
-            value = da.broadcast_to(value, tuple(self.batch_shape) + value.shape[value.ndim - core:])
-            fields[name] = value[index]
+        fields = index_fields(self.fields, self.batch_shape, key, self.kind, da.broadcast_to, fancy=False)
         return type(self).from_arrays(fields)
-
-
-def _batch_index(key, ndim, kind):
-    """`key` as a tuple of one integer or slice per batch axis (Ellipsis expanded, the missing
-    trailing axes taken whole); TypeError for what is not basic indexing, IndexError for too many
-    indices."""
-    items = key if isinstance(key, tuple) else (key,)
-    out = []
-    for item in items:
-        if item is Ellipsis or isinstance(item, slice):
-            out.append(item)
-        elif isinstance(item, (bool, np.bool_)) or item is None:
-            raise TypeError(f"{kind}: only integers, slices and ... index a batch, got {item!r}")
-        else:
-            try:
-                out.append(operator.index(item))
-            except TypeError:
-                raise TypeError(f"{kind}: only integers, slices and ... index a batch, got {item!r}") from None
-    if out.count(Ellipsis) > 1:
-        raise IndexError(f"{kind}: an index can only have a single ellipsis ('...')")
-    given = len(out) - out.count(Ellipsis)
-    if given > ndim:
-        raise IndexError(f"{kind}: too many indices for a batch of {ndim} dimension(s): {given} were given")
-    if Ellipsis in out:
-        at = out.index(Ellipsis)
-        out[at:at + 1] = [slice(None)] * (ndim - given)
-    return tuple(out) + (slice(None),) * (ndim - len(out))
 
 
 def _shape_class(name, names):
@@ -216,7 +182,7 @@ def _indices(ndim_out, shapes, extra=()):
     args, layout = [], []
     for s, shape in enumerate(shapes):
         for name, value in shape.fields.items():
-            core = _CORE_NDIM[name]
+            core = TRAILING_DIMS[name]
             batch = value.ndim - core
             args += [value, out[ndim_out - batch:] + tuple(f"c{s}{name}{k}" for k in range(core))]
             layout.append((s, name))
@@ -331,7 +297,7 @@ def _flat(shape):
     n = int(np.prod(shape.batch_shape, dtype=np.int64))
     flat = {}
     for name, value in shape.fields.items():
-        core = value.shape[value.ndim - _CORE_NDIM[name]:] if _CORE_NDIM[name] else ()
+        core = value.shape[value.ndim - TRAILING_DIMS[name]:] if TRAILING_DIMS[name] else ()
         flat[name] = da.broadcast_to(value, shape.batch_shape + core).reshape((n,) + core)
     # The finest chunking any field has along the batch: broadcast fields follow it.
     chunks = max((v.chunks[0] for v in flat.values()), key=len)

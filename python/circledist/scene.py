@@ -27,18 +27,15 @@ import numbers
 import numpy as np
 
 from . import _core
+from ._batch import ROLE_TRAILING_DIMS, TRAILING_DIMS  # noqa: F401 (ROLE_TRAILING_DIMS: scenefile.py)
 
 __all__ = ["Scene"]
 
 # The constructor arguments of each kind, in order (the sweep comes on top as a keyword), from
 # the module's one table of fields (src/shapes.hpp).
 KIND_FIELDS = {kind: tuple(name for name, _ in fields) for kind, fields in _core._shape_fields().items()}
-# Trailing dimensions of a field per element, by the field's role (the rest is batch): a vector
-# (3,), a number (), control points (k + 1, 3). Bezier curves take 2 to MAX_CONTROL_POINTS.
-ROLE_TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "control_points": 2}
+# Bezier curves take 2 to MAX_CONTROL_POINTS control points.
 MAX_CONTROL_POINTS = _core._max_control_points
-_TRAILING = {name: ROLE_TRAILING_DIMS[role]
-             for fields in [*_core._shape_fields().values(), (_core._sweep_field(),)] for name, role in fields}
 
 
 class _Grown:
@@ -347,7 +344,7 @@ class Scene:
         values = []
         for field in KIND_FIELDS[kind] + ("sweep",):
             a = arrays.get(field, _NO_SWEEP)
-            trailing = a.shape[a.ndim - _TRAILING[field]:] if _TRAILING[field] else ()
+            trailing = a.shape[a.ndim - TRAILING_DIMS[field]:] if TRAILING_DIMS[field] else ()
             values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
         self._insert(names, [(kind, values, np.arange(count), "sweep" in arrays)])
 

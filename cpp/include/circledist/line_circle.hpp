@@ -177,14 +177,28 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
   const Work b_norm_squared = b1_squared + b2_squared;
   if (b_norm_squared - t2 * t2 > Work(1e-6) * t2 * t2 + 2 * (b_norm_squared + 1) * b_error) return 0;
   if (!(std::abs(b1) > std::sqrt(eps) * t2)) return -1;
+  // rho's margin (below): rho's rounding, and b's.
+  const Work x = b_error / t2;
+  const Work margin = 3 * std::max(Work(1e-6), 64 * eps) + 6 * (x < 1 ? std::sqrt(x) : x);
+  // Clearly outside the astroid, without a cube root: with X = b1^2, Y = b2^2 and
+  // v* = (|b1|^(2/3) + |b2|^(2/3))^3 (so that rho below is v* / s^4), h(v) = (v - X - Y)^3 - 27 v X Y
+  // is negative at v = X + Y, convex beyond it, and 0 at v*: so v* > S exactly where S <= X + Y
+  // or h(S) < 0. Asked at S = s^4 (1 + margin + 1e-3), in units of s^4 (X and Y at most about 1
+  // here): a v* at or below s^4 (1 + margin) lies 1e-3 under S, where h(S) >= 1e-9, far above h's
+  // rounding (a few eps); so this answers 0 only where the test on rho below would. (An X Y that
+  // underflows to 0 only makes it answer less.)
+  {
+    const Work unit = 1 / (t2 * t2), x_n = b1_squared * unit, y_n = b2_squared * unit;
+    const Work s_far = 1 + margin + Work(1e-3);
+    const Work room = s_far - (x_n + y_n);
+    if (!(room > 0) || room * room * room < 27 * s_far * x_n * y_n) return 0;
+  }
   // With k = |b2 / b1|^(2/3) (one cube root): phi(mu0) + 1 = (1 + k)^3 b1^2 / s^4 =: rho and
   // mu0 = -s^2 / (1 + k). rho's rounding: b2's absolute error e moves |b2|^(2/3) by at most
   // 2 e^(2/3), so rho (whose cube root is about s^(4/3) where it matters) by at most
   // 6 (e / s^2)^(2/3) <= 6 max(sqrt(x), x), x = e / s^2.
   const Work k = std::cbrt(b2_squared / b1_squared), one_k = 1 + k;
   const Work rho = b1_squared * (one_k * one_k * one_k) / (t2 * t2);
-  const Work x = b_error / t2;
-  const Work margin = 3 * std::max(Work(1e-6), 64 * eps) + 6 * (x < 1 ? std::sqrt(x) : x);
   if (rho > 1 + margin) return 0;
   if (rho > 1 - margin) return -1;
   if (!may_hold(std::copysign(radius * std::sqrt(m.s2), -m.b1))) return 2;

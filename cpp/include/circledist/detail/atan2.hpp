@@ -19,14 +19,18 @@
 // m pi/4's low part first and rounds once more: 2 ulp and a little.
 #pragma once
 
+#include "../primitives.hpp"  // CIRCLEDIST_INLINE
+
 #include <algorithm>
 #include <cmath>
 
 namespace circledist::detail {
 
-template <class Real> Real atan2(Real y, Real x) { return std::atan2(y, x); }
+template <class Real> CIRCLEDIST_INLINE Real atan2(Real y, Real x) { return std::atan2(y, x); }
 
-template <> inline double atan2<double>(double y, double x) {
+// Forced inline: in a unit holding many kernels the compiler kept it out of line, and the call
+// cost a batch of point-circle closest_points a third of its time.
+template <> CIRCLEDIST_INLINE double atan2<double>(double y, double x) {
   const double ax = std::abs(x), ay = std::abs(y);
   // Branch-free (the choices below are arithmetic on 0 and 1): over a batch of random directions
   // each branch would be mispredicted half the time, which costs as much as the rest.

@@ -48,7 +48,8 @@ template <class Real, int J, int K> Trig<Real, J + K> operator*(const Trig<Real,
   return h;
 }
 
-template <class Real, int K> Trig<Real, K> operator+(Trig<Real, K> f, const Trig<Real, K>& g) {
+template <class Real, int K> Trig<Real, K> operator+(const Trig<Real, K>& f_in, const Trig<Real, K>& g) {
+  Trig<Real, K> f = f_in;  // a copy, not a changed by-value parameter (cpp/tests/lto_aggregates.cpp)
   for (int k = 0; k <= K; ++k) {
     f.c[k] += g.c[k];
     f.s[k] += g.s[k];
@@ -56,7 +57,8 @@ template <class Real, int K> Trig<Real, K> operator+(Trig<Real, K> f, const Trig
   return f;
 }
 
-template <class Real, int K> Trig<Real, K> operator-(Trig<Real, K> f, const Trig<Real, K>& g) {
+template <class Real, int K> Trig<Real, K> operator-(const Trig<Real, K>& f_in, const Trig<Real, K>& g) {
+  Trig<Real, K> f = f_in;  // a copy, not a changed by-value parameter (cpp/tests/lto_aggregates.cpp)
   for (int k = 0; k <= K; ++k) {
     f.c[k] -= g.c[k];
     f.s[k] -= g.s[k];

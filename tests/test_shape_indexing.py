@@ -1,0 +1,102 @@
+"""Indexing, len() and iteration of a batch of shapes, as NumPy indexes an array of the batch's
+shape: the selected shapes answer every query with the bits the whole batch gives them."""
+
+import numpy as np
+import pytest
+
+import circledist as cd
+
+
+def rings(n=6, dtype=float):
+    rng = np.random.default_rng(3)
+    return cd.Circle(rng.normal(size=(n, 3)).astype(dtype), np.array([0.2, 0.3, 1.0], dtype=dtype),
+                     rng.uniform(0.5, 2, n).astype(dtype), sweep=np.full(n, 0.125, dtype=dtype))
+
+
+def lines(n=6):
+    rng = np.random.default_rng(4)
+    return cd.Line(rng.normal(size=(n, 3)), rng.normal(size=(n, 3)))
+
+
+KEYS = [0, -1, 3, slice(1, 5), slice(None, None, -2), Ellipsis, (Ellipsis,), [4, 0, 4],
+        np.array([True, False, True, True, False, False]), np.arange(6) % 2 == 0, np.int64(2)]
+
+
+@pytest.mark.parametrize("key", KEYS, ids=repr)
+def test_index_answers_as_the_batch(key):
+    a, b = lines(), rings()
+    whole = cd.closest_points(a, b)
+    part = cd.closest_points(a[key], b[key])
+    np.testing.assert_array_equal(part.distance, whole.distance[key])
+    np.testing.assert_array_equal(part.point_b, whole.point_b[key])
+    np.testing.assert_array_equal(part.param_b, whole.param_b[key])
+    np.testing.assert_array_equal(cd.distance(a[key], b[key]), cd.distance(a, b)[key])
+
+
+def test_fields_kept_with_their_dtypes_and_sweep():
+    for dtype in (np.float32, np.float64, np.longdouble):
+        batch = rings(dtype=dtype)
+        one = batch[2]
+        assert one.batch_shape == ()
+        arrays, whole = one.to_arrays(), batch.to_arrays()
+        assert set(arrays) == {"center", "normal", "radius", "sweep"} == set(whole)
+        for name, value in arrays.items():
+            assert value.dtype == whole[name].dtype, (name, dtype)
+            own = (3,) if name in ("center", "normal") else ()
+            np.testing.assert_array_equal(value, np.broadcast_to(whole[name], (6,) + own)[2])
+
+
+def test_several_batch_axes_and_bezier_control_points():
+    rng = np.random.default_rng(5)
+    control = rng.normal(size=(2, 3, 4, 3))
+    curves = cd.Bezier(control)
+    assert curves.batch_shape == (2, 3) and len(curves) == 2
+    np.testing.assert_array_equal(curves[1, 2].to_arrays()["control_points"], control[1, 2])
+    np.testing.assert_array_equal(curves[1].to_arrays()["control_points"], control[1])
+    np.testing.assert_array_equal(curves[..., 0].to_arrays()["control_points"], control[:, 0])
+    np.testing.assert_array_equal(curves[:, [0, 2]].to_arrays()["control_points"], control[:, [0, 2]])
+    mask = np.array([[True, False, True], [False, False, True]])
+    np.testing.assert_array_equal(curves[mask].to_arrays()["control_points"], control[mask])
+    target = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    np.testing.assert_array_equal(cd.distance(curves[mask], target), cd.distance(curves, target)[mask])
+
+
+def test_len_iteration_and_truth():
+    batch = rings()
+    assert len(batch) == 6
+    items = list(batch)
+    assert len(items) == 6 and all(s.batch_shape == () for s in items)
+    np.testing.assert_array_equal([cd.distance(s, cd.Point([1, 2, 3])) for s in items],
+                                  cd.distance(batch, cd.Point([1, 2, 3])))
+    single = cd.Point([1, 2, 3])
+    assert bool(single) and bool(batch)
+    with pytest.raises(TypeError, match="single Point"):
+        len(single)
+    with pytest.raises(TypeError, match="single Point"):
+        iter(single)
+
+
+@pytest.mark.parametrize("key, error, match", [
+    ((0, 0), IndexError, "too many indices"),
+    (6, IndexError, "out of bounds"),
+    (None, TypeError, "index a batch"),
+    (1.5, TypeError, "index a batch"),
+    ((Ellipsis, Ellipsis), IndexError, "single ellipsis"),
+    (np.array([0.5]), TypeError, "index a batch"),
+], ids=repr)
+def test_bad_indices(key, error, match):
+    with pytest.raises(error, match=match):
+        rings()[key]
+
+
+def test_single_shape_is_not_indexable():
+    with pytest.raises(TypeError, match="single Circle"):
+        cd.Circle([0, 0, 0], [0, 0, 1], 1.0)[0]
+
+
+def test_numpy_does_not_unpack_shapes():
+    """A list of shapes stays a list of shapes in an object array."""
+    shapes = [rings(), rings()]
+    holder = np.empty(2, dtype=object)
+    holder[:] = shapes
+    assert holder[0] is shapes[0]
