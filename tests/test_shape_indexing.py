@@ -19,7 +19,7 @@ def lines(n=6):
 
 
 KEYS = [0, -1, 3, slice(1, 5), slice(None, None, -2), Ellipsis, (Ellipsis,), [4, 0, 4],
-        np.array([True, False, True, True, False, False]), np.arange(6) % 2 == 0, np.int64(2)]
+        np.array([True, False, True, True, False, False]), np.arange(6) % 2 == 0, np.int64(2), [], slice(7, 9)]
 
 
 @pytest.mark.parametrize("key", KEYS, ids=repr)

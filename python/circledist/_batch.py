@@ -41,6 +41,8 @@ def batch_key(key, ndim, kind, *, fancy):
         except TypeError:
             pass
         array = np.asarray(item) if fancy and not isinstance(item, (str, bytes)) else None
+        if array is not None and array.size == 0 and isinstance(item, (list, tuple)):
+            array = array.astype(np.intp)  # [] selects nothing, as in NumPy
         if array is None or not (array.dtype == bool or np.issubdtype(array.dtype, np.integer)):
             raise TypeError(_not_an_index(kind, item, fancy))
         out.append(array)
