@@ -129,6 +129,18 @@ def _hard_cases():
         case("segment_through_control_point", WAVY, "segment", (1, 2, 0.5), (1, 2, 2.5)),
         case("segment_large_curve", big, "segment", (2e5, 0.4e5, -1), (2e5, 0.4e5, 1)),
         case("segment_far_control", FAR, "segment", (1, 0, -1), (1, 0, 1), scale=1.0),
+        # a straight curve nearly along the piece (from a random search): every piece of the
+        # curve survived the branch and bound and the cap of pieces was spent next to t = 0
+        case("segment_nearly_along_straight_curve",
+             ((0.469088546821133, 0.026205966427920835, 1.8590472355014187),
+              (-1.0934957465634532, 0.7561085485942733, 0.22038671559146072)), "segment",
+             (1.9660258787094098, -0.6730321024438254, 3.428864695992459),
+             (-0.3778505617265781, 0.4218217708477871, 0.9708739150794374)),
+        case("ray_nearly_along_straight_curve",
+             ((-0.9657236606277491, 1.6991824952754198, 1.5083294665863227),
+              (-0.1909397366488217, 0.19917479281428063, 0.8024648344382479)), "ray",
+             (-0.6547856173686233, 1.0971959987048914, 1.2250502697758192),
+             (7.747839236849074e-08, -1.5000077013826996e-07, -7.058646311897121e-08)),
         case("segment_translated", _shifted(CUBIC, SHIFT), "segment", np.array((1.5, 0, 1)) + SHIFT,
              np.array((1.5, 2, -1)) + SHIFT),
     ]

@@ -145,14 +145,6 @@ template <class Real, class Piece> struct CurvePieceQuery {
     const Linear<Real> linear = as_linear(piece);
     Found found;
     if (linear.direction.cwiseAbs().maxCoeff() > 0) interior<Roots>(b, linear, found);
-    // The piece's end points against the curve.
-    const auto end = [&](const Vec3<Real>& p, Real s) {
-      Result<Real> r = Query<BezierCurve3<Real>, Vec3<Real>>::template closest<Roots>(b, p);
-      r.param_b = Vec2<Real>(s, 0);
-      found.add(r);
-    };
-    end(linear.origin, Real(0));
-    if (linear.has_end) end(linear.end, Real(1));
     // The curve's end points against the piece.
     const int n = int(b.control.cols()) - 1;
     for (const int i : {0, n}) {
@@ -160,14 +152,38 @@ template <class Real, class Piece> struct CurvePieceQuery {
       r.param_a = Vec2<Real>(Real(i == 0 ? 0 : 1), 0);
       found.add(r);
     }
-    int best = 0;
-    for (int i = 1; i < found.count; ++i)
-      if (found.item[i].distance < found.item[best].distance) best = i;
-    Result<Real> r = found.item[best];
-    Real scale = std::max(found.scale, r.distance);
+    Real scale = found.scale;
     for (int i = 0; i <= n; ++i) scale = std::max(scale, (Vec3<Real>(b.control.col(i)) - linear.origin).norm());
     if (!(scale > 0)) scale = 1;
     const Real tie = tie_tolerance(scale), apart = distinct_points_tolerance(scale);
+    const auto smallest = [&] {
+      int best = 0;
+      for (int i = 1; i < found.count; ++i)
+        if (found.item[i].distance < found.item[best].distance) best = i;
+      return best;
+    };
+    // The piece's end points against the curve, unless the control points' ball shows the end
+    // farther than the best candidate so far (and than a tie with it).
+    Vec3<Real> lo = b.control.col(0), hi = lo;
+    for (int i = 1; i <= n; ++i) {
+      lo = lo.cwiseMin(Vec3<Real>(b.control.col(i)));
+      hi = hi.cwiseMax(Vec3<Real>(b.control.col(i)));
+    }
+    const Vec3<Real> center = (lo + hi) / 2;
+    Real radius = 0;
+    for (int i = 0; i <= n; ++i) radius = std::max(radius, (Vec3<Real>(b.control.col(i)) - center).norm());
+    const auto end = [&](const Vec3<Real>& p, Real s) {
+      const Real lower = (p - center).norm() - radius;
+      if (lower > found.item[smallest()].distance + 2 * tie + std::numeric_limits<Real>::epsilon() * scale) return;
+      Result<Real> r = Query<BezierCurve3<Real>, Vec3<Real>>::template closest<Roots>(b, p);
+      r.param_b = Vec2<Real>(s, 0);
+      found.add(r);
+    };
+    end(linear.origin, Real(0));
+    if (linear.has_end) end(linear.end, Real(1));
+    const int best = smallest();
+    Result<Real> r = found.item[best];
+    scale = std::max(scale, r.distance);
     for (int i = 0; i < found.count; ++i) {
       const Result<Real>& o = found.item[i];
       if (i == best || !(o.distance <= r.distance + tie)) continue;

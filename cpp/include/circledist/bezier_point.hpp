@@ -72,15 +72,20 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   using Base = CurveRoundBase<Real>;
   using Found = typename Base::Found;
 
-  // The size the branch and bound gives the target (bezier.hpp's round radius): the larger of
-  // the end points' distances, so that a curve reaching no farther than its ends is one piece
-  // and one with a far control point is cut down to pieces of that size near the target. When
-  // both ends lie on the target (within 2^-40 of the curve's size: a loop through a point, a
-  // curve along a line) the whole curve is one piece: every piece touching the target would
-  // survive the bound and be halved down to the cap on pieces, all next to t = 0.
+  // The size the branch and bound gives the target (bezier.hpp's round radius). A curve is cut
+  // into pieces only when it reaches far beyond its end points (2^20 times farther than they lie
+  // from each other and from the target: a control point 1e10 away, the curve back next to the
+  // target): it is then halved down to pieces of that size next to the target, where the whole
+  // curve's rounding would be eps times its reach. Otherwise the curve is one piece (the reach is
+  // its size): its rounding is eps times its own size, and cutting it would gain nothing, while
+  // a curve running along the target (a line nearly along a segment-like curve, a loop through
+  // a point) would keep every piece alive in the bound and exhaust the cap on pieces next to
+  // t = 0 before reaching its minimum. Ends within 2^-40 of the size of each other and of the
+  // target (a closed loop through the point) count as such a curve too.
   static Real reach(const LocalBezier<Real>& c, const AxisTarget<Real>& target) {
-    const Real ends = std::max(target.distance(c.q[0]), target.distance(c.q[c.n]));
-    return ends >= std::ldexp(c.size, -40) ? ends : c.size;
+    const Real ends = std::max({target.distance(c.q[0]), target.distance(c.q[c.n]),
+                                std::sqrt((c.q[c.n] - c.q[0]).squaredNorm())});
+    return ends >= std::ldexp(c.size, -40) && c.size > std::ldexp(ends, 20) ? ends : c.size;
   }
 
   // The minima of the distance to `target` over the curve (its local control points `c` in
