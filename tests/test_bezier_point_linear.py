@@ -141,6 +141,13 @@ def _hard_cases():
               (-0.1909397366488217, 0.19917479281428063, 0.8024648344382479)), "ray",
              (-0.6547856173686233, 1.0971959987048914, 1.2250502697758192),
              (7.747839236849074e-08, -1.5000077013826996e-07, -7.058646311897121e-08)),
+        # a straight curve's end point against a segment 1e6 away (from a random search): the
+        # closed form in world coordinates erred by 6.6e-12 (1.01e-12 of the query's size)
+        case("segment_translated_curve_end",
+             ((1000000.0079412854, -2000001.2940920747, 299999.72433899983),
+              (999999.8538955955, -2000001.360227488, 299998.9743287738)), "segment",
+             (1000003.4983533251, -2000000.1162210216, 300000.34578803234),
+             (999997.8895753128, -1999996.7627101275, 300000.6542917533)),
         case("segment_translated", _shifted(CUBIC, SHIFT), "segment", np.array((1.5, 0, 1)) + SHIFT,
              np.array((1.5, 2, -1)) + SHIFT),
     ]

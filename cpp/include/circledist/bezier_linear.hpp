@@ -93,6 +93,16 @@ template <class Real> struct Query<BezierCurve3<Real>, Line3<Real>> {
   }
 };
 
+namespace detail {
+// A ray or a segment moved by -p (its points only: the ray's direction stays).
+template <class Real> Ray3<Real> piece_moved_by(const Ray3<Real>& r, const Vec3<Real>& p) {
+  return {r.origin - p, r.direction};
+}
+template <class Real> Segment3<Real> piece_moved_by(const Segment3<Real>& s, const Vec3<Real>& p) {
+  return {s.p0 - p, s.p1 - p};
+}
+}  // namespace detail
+
 // A curve against a ray or a segment: the candidates of the header comment.
 template <class Real, class Piece> struct CurvePieceQuery {
   static constexpr bool defined = true;
@@ -145,10 +155,15 @@ template <class Real, class Piece> struct CurvePieceQuery {
     const Linear<Real> linear = as_linear(piece);
     Found found;
     if (linear.direction.cwiseAbs().maxCoeff() > 0) interior<Roots>(b, linear, found);
-    // The curve's end points against the piece.
+    // The curve's end points against the piece, each with the piece moved by minus the end point
+    // (in world coordinates 1e6 away, the closed form's rounding of eps x 1e6 was 1e-12 of a
+    // query of size 6).
     const int n = int(b.control.cols()) - 1;
     for (const int i : {0, n}) {
-      Result<Real> r = Query<Vec3<Real>, Piece>::template closest<Roots>(b.control.col(i), piece);
+      const Vec3<Real> p = b.control.col(i);
+      Result<Real> r = Query<Vec3<Real>, Piece>::template closest<Roots>(Vec3<Real>::Zero(), detail::piece_moved_by(piece, p));
+      r.point_a = p;
+      r.point_b = p + r.point_b;
       r.param_a = Vec2<Real>(Real(i == 0 ? 0 : 1), 0);
       found.add(r);
     }
