@@ -743,3 +743,78 @@ def expected_unique(ref: Reference, rel: float = 1e-6) -> Optional[bool]:
             if p.degenerate:
                 return None
     return True
+
+
+# ----------------------------------------------------------------------------------------------
+# a Bezier curve against a point, line, ray or segment
+# ----------------------------------------------------------------------------------------------
+def point_linear_closest(p: Vec, kind: str, origin: Vec, other: Vec):
+    """(distance, closest point, parameter) from p to a line / ray (origin, direction) or a
+    segment (p0, p1): the projection's parameter clamped to the piece's interval (closed form)."""
+    d = sub(other, origin) if kind == "segment" else other
+    dd = dot(d, d)
+    s = mpf(0) if dd == 0 else dot(sub(p, origin), d) / dd
+    if kind == "ray":
+        s = max(s, mpf(0))
+    elif kind == "segment":
+        s = min(max(s, mpf(0)), mpf(1))
+    q = add(origin, scale(s, d))
+    return dist(p, q), q, s
+
+
+def bezier_other(ctrl, kind: str, *data) -> Reference:
+    """Bezier B(t), t in [0, 1], against a point (kind "point", data (p,)), a line or ray
+    (origin, direction) or a segment (p0, p1): min over t of the closed-form distance from B(t)
+    to the other shape (its projection clamped to the piece), by minimize_1d (dense sampling,
+    zoomed by the curve's speed bound where a step is long for the distance there, and golden
+    section on every sampled local minimum).  `scale` is the largest length in the query: the
+    control polygon's extent (and a segment's length)."""
+    pts = [vec(p) for p in ctrl]
+    k = len(pts) - 1
+    if kind == "point":
+        target = vec(data[0])
+
+        def closest(x):
+            return dist(x, target), target, mpf(0)
+    else:
+        origin, other = vec(data[0]), vec(data[1])
+
+        def closest(x):
+            return point_linear_closest(x, kind, origin, other)
+
+    def f(t):
+        return closest(bezier_point(pts, t))[0]
+
+    extent = max(float(norm(sub(p, pts[0]))) for p in pts)
+    if kind == "segment":
+        extent = max(extent, float(dist(vec(data[0]), vec(data[1]))))
+    size = max(extent, 1e-300)
+
+    def resolution(a, b, lh):
+        # local minima of the distance to a point or line lie apart by at least about the
+        # distance itself (the focal set): resolve to that, or 1e-4 of the query's size
+        fa, fb = f_cache.get(a._mpf_, mpf(size)), f_cache.get(b._mpf_, mpf(size))
+        if fa == 0 or fb == 0:  # an exact zero sampled (a curve along the line): nothing is lower
+            return ctx.inf
+        return max(min(fa, fb) - lh / 2, mpf(size) * mpf("1e-4")) / ZOOM_FRACTION
+
+    f_cache = {}
+
+    def fc(t):
+        v = f(t)
+        f_cache[t._mpf_] = v
+        return v
+
+    if k == 0:
+        ms = [LocalMin(fc(mpf(0)), mpf(0), mpf(0))]
+    else:
+        ms = minimize_1d(fc, 0, 1, CURVE_SAMPLES, periodic=False, lipschitz=_speed_bound(ctrl), resolution=resolution)
+    pairs = []
+    for m in ms:
+        pa = bezier_point(pts, m.x)
+        v, pb, s = closest(pa)
+        pairs.append(Pair(m.value, pa, pb, m.rise, False))
+        pairs[-1].t = m.x
+        pairs[-1].s = s
+    pairs.sort(key=lambda q: q.value)
+    return Reference(pairs[0].value, pairs, extent)

@@ -189,6 +189,10 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<Disk3<Real>, Disk3<Real>>();
   v.template add<BezierCurve3<Real>, Disk3<Real>>();
   v.template add<BezierCurve3<Real>, Circle3<Real>>();
+  v.template add<BezierCurve3<Real>, Vec3<Real>>();  // bezier_point.hpp
+  v.template add<BezierCurve3<Real>, Line3<Real>>();  // bezier_linear.hpp
+  v.template add<BezierCurve3<Real>, Ray3<Real>>();
+  v.template add<BezierCurve3<Real>, Segment3<Real>>();
 }
 template <class Real, class Visitor> void for_each_closed_form_pair(Visitor&& v) {
   v.template add<Vec3<Real>, Circle3<Real>>();  // point_circle.hpp

@@ -141,7 +141,7 @@ def test_closest_points_solves_once_for_all_attributes(monkeypatch):
 def test_kinds_without_a_query_and_bad_fields_raise():
     line = cdd.Line([0, 0, 0], [1, 0, 0])
     with pytest.raises(TypeError):
-        cdd.distance(line, cdd.Bezier([[0, 0, 0], [1, 1, 1]]))
+        cdd.distance(cdd.Bezier([[0, 0, 1], [1, 0, 1]]), cdd.Bezier([[0, 0, 0], [1, 1, 1]]))
     with pytest.raises(ValueError, match="center"):
         cdd.Circle(np.zeros((4, 2)), [0, 0, 1], 1.0)
     with pytest.raises(ValueError, match="do not broadcast"):

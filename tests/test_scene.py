@@ -174,8 +174,8 @@ def test_scene_errors():
     with pytest.raises(ValueError, match="2 names"):
         scene.extend(["a", "b"], cd.Point(np.zeros((3, 3))))
     scene.add("cable", cd.Bezier([[0, 0, 0], [1, 1, 0], [2, 0, 0]]))
-    with pytest.raises(TypeError, match="no query between a Segment and a Bezier"):
-        scene.nearest(cd.Segment([0, 0, 0], [1, 0, 0]))
+    with pytest.raises(TypeError, match="no query between a Bezier and a Bezier"):
+        scene.nearest(cd.Bezier([[0, 0, 0], [1, 0, 0]]))
     with pytest.raises(ValueError, match="single shape"):
         scene.nearest(cd.Point(np.zeros((2, 3))))
 

@@ -285,7 +285,7 @@ def test_pairs_within_over_batches(tmp_path):
     expected = [[a, b] for i, a in enumerate(world.names) for b in world.names[i + 1:]
                 if cd.within(world[a], world[b], 1.2)]
     assert cli.answer(scene)[0].answers["pairs_within"] == expected and len(expected) >= 3
-    doc["shapes"].append(BATCH_SCENE["shapes"][4])  # Bezier curves have queries with circles and disks only
+    doc["shapes"].append(BATCH_SCENE["shapes"][4])  # Bezier curves have no query with Bezier curves
     with pytest.raises(sf.SceneFileError, match=r"^pairs\.json: \$\.queries\[0\]\.effects: expected a scene whose "
                                                 r"every pair of kinds has a query: none exists between a Bezier and a Bezier"):
         sf.scene_from_json(doc, "pairs.json")

@@ -14,3 +14,5 @@
 #include "circle_disk.hpp"
 #include "disk_disk.hpp"
 #include "bezier.hpp"
+#include "bezier_point.hpp"
+#include "bezier_linear.hpp"
