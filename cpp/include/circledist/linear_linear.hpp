@@ -79,16 +79,31 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
   // The stationary value of one parameter with the other fixed, clamped.
   const auto t_for = [&](Real s) { return b_point ? clamp_to(Real(0), b.lo, b.hi) : clamp_to((bb * s + ee) / cc, b.lo, b.hi); };
   const auto s_for = [&](Real t) { return a_point ? clamp_to(Real(0), a.lo, a.hi) : clamp_to((bb * t - dd) / aa, a.lo, a.hi); };
-  const Real cross2 = u.cross(v).squaredNorm();
+  // n = u x v with each component rounded once (accurate_cross): for nearly parallel pieces the
+  // plain cross product cancels, and its error, eps |u| |v| per component, tilts n by
+  // eps / sin(angle), which |w.n| / |n| turns into eps |w| / sin(angle) (1.5e-11 for a true 6e-18
+  // between two crossing segments 1e-5 rad apart).
+  const Vec3<Real> n = accurate_cross(u, v);
+  const Real cross2 = n.squaredNorm();
   const Real parallel = 64 * std::numeric_limits<Real>::epsilon() * aa * cc;
   if (!a_point && !b_point && cross2 > 0) {
-    // The interior stationary point; its distance by the closed form |w.n| / |n|, n = u x v,
-    // which stays accurate for nearly parallel pieces (where s and t are ill-conditioned).
-    const Real s = (bb * ee - cc * dd) / cross2, t = (aa * ee - bb * dd) / cross2;
-    if (s >= a.lo && s <= a.hi && t >= b.lo && t <= b.hi) {
-      const Vec3<Real> n = u.cross(v);
-      best = {std::abs(w.dot(n)) / std::sqrt(cross2), s, t, true};
+    // The interior stationary point; its distance by the closed form |w.n| / |n|, which stays
+    // accurate for nearly parallel pieces. s and t there are ill-conditioned: from the dot
+    // products, (bb ee - cc dd) / |n|^2 carries eps |w| |u|^2 |v|^2 / |n|^2, a shift along the
+    // pieces of eps |w| / sin^2(angle) each, and the two shifts, independent, part the points by
+    // as much. Below about 6 degrees they come from the Binet-Cauchy forms
+    // s = -(w x v).n / |n|^2, t = -(w x u).n / |n|^2 with accurate cross products: eps |w| / sin
+    // each, which parts the points by eps |w| only (a shift along a piece moves it off the other
+    // by sin times the shift).
+    Real s, t;
+    if (cross2 >= Real(1e-2) * aa * cc) {
+      s = (bb * ee - cc * dd) / cross2;
+      t = (aa * ee - bb * dd) / cross2;
+    } else {
+      s = -accurate_cross(w, v).dot(n) / cross2;
+      t = -accurate_cross(w, u).dot(n) / cross2;
     }
+    if (s >= a.lo && s <= a.hi && t >= b.lo && t <= b.hi) best = {std::abs(w.dot(n)) / std::sqrt(cross2), s, t, true};
   }
   if (std::isfinite(a.lo)) consider(a.lo, t_for(a.lo));
   if (std::isfinite(a.hi)) consider(a.hi, t_for(a.hi));
@@ -150,28 +165,39 @@ template <class Real, class Piece> struct PointLinearQuery {
   // The projection's parameter on the piece with its direction scaled to components in [1, 2)
   // (`exponent` returns the scaling: t = ldexp(t', -exponent)), so |d|^2 neither overflows
   // (1e283) nor underflows; the closest point is origin + t' d'.
-  static Real parameter(const Vec3<Real>& p, const Linear<Real>& l, Linear<Real>& scaled, int& exponent) {
+  static Real parameter(const Vec3<Real>& offset, const Linear<Real>& l, Linear<Real>& scaled, int& exponent) {
     scaled = unit_scaled(l, exponent);
     const Real aa = scaled.direction.squaredNorm();
-    return aa > 0 ? clamp_to((p - l.origin).dot(scaled.direction) / aa, scaled.lo, scaled.hi)
-                  : clamp_to(Real(0), scaled.lo, scaled.hi);
+    return aa > 0 ? clamp_to(offset.dot(scaled.direction) / aa, scaled.lo, scaled.hi) : clamp_to(Real(0), scaled.lo, scaled.hi);
+  }
+
+  // The closest point's offset from p, from p's offset from the origin (subtracted first, exact
+  // for nearby coordinates): t d - (p - o), not (o + t d) - p, which in a scene 1e6 from the
+  // world's origin carries eps 1e6. A segment's far end is its own p1 (d = p1 - p0 is rounded).
+  static Vec3<Real> separation(const Vec3<Real>& p, const Vec3<Real>& offset, const Linear<Real>& scaled, Real t) {
+    if (scaled.has_end && t == scaled.hi) return scaled.end - p;
+    return t * scaled.direction - offset;
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Piece& piece) {
     Linear<Real> scaled;
     int exponent = 0;
-    const Real t = parameter(p, as_linear(piece), scaled, exponent);
-    return (scaled.origin + t * scaled.direction - p).norm();
+    const Linear<Real> l = as_linear(piece);
+    const Vec3<Real> offset = p - l.origin;
+    const Real t = parameter(offset, l, scaled, exponent);
+    return separation(p, offset, scaled, t).norm();
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Piece& piece) {
     Linear<Real> scaled;
     int exponent = 0;
-    const Real t = parameter(p, as_linear(piece), scaled, exponent);
+    const Linear<Real> l = as_linear(piece);
+    const Vec3<Real> offset = p - l.origin;
+    const Real t = parameter(offset, l, scaled, exponent);
     Result<Real> r;
     r.point_a = p;
-    r.point_b = scaled.origin + t * scaled.direction;
-    r.distance = (r.point_b - p).norm();
+    r.point_b = scaled.has_end && t == scaled.hi ? scaled.end : Vec3<Real>(scaled.origin + t * scaled.direction);
+    r.distance = separation(p, offset, scaled, t).norm();
     r.param_b = Vec2<Real>(std::ldexp(t, -exponent), 0);
     return r;
   }
