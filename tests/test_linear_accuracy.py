@@ -134,9 +134,13 @@ CASES = cases()
 @pytest.mark.parametrize("case", CASES, ids=[f"{c[1]}-{c[3]}-{c[0]}-{i}" for i, c in enumerate(CASES)])
 def test_linear_pairs_against_the_reference(case):
     name, ka, a, kb, b = case
-    truth = float(reference(piece(ka, *a), piece(kb, *b)))
+    exact = reference(piece(ka, *a), piece(kb, *b))
+    truth = float(exact)
     bar = 1e-12 * max(truth, size(ka, a, kb, b))
     A, B = make(ka, *a), make(kb, *b)
+    for first, second in ((A, B), (B, A)):  # long double: the same inputs, the 1e-15 bar
+        d = cd.distance(first, second, precision="longdouble")
+        assert abs(mp.mpf(repr(float(d))) + mp.mpf(repr(float(d - np.longdouble(float(d))))) - exact) <= 1e-15 * max(truth, size(ka, a, kb, b)), f"{name}: long double {d!r}"
     for solver in ("bracketing", "companion"):
         for first, second, swapped in ((A, B, False), (B, A, True)):
             d = float(cd.distance(first, second, solver=solver))
