@@ -111,8 +111,9 @@ template <class Real> using RingTarget = RoundTarget<Real, false>;
 template <class Real> using DiskTarget = RoundTarget<Real, true>;
 
 // The target of a round shape: target_t<Circle3<Real>> is RingTarget<Real>, target_t<Disk3<Real>>
-// DiskTarget<Real>.
-template <class Shape> struct target_of;
+// DiskTarget<Real>. Other shapes have none (no `type`), so that `class = target_t<R>` limits a
+// template to circles and disks.
+template <class Shape> struct target_of {};
 template <class Real> struct target_of<Circle3<Real>> {
   using type = RingTarget<Real>;
 };
