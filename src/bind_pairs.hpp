@@ -131,28 +131,31 @@ struct StagedProgress {
 
   StagedProgress(py::object progress, int stages, Index n) : user(std::move(progress)), per_stage(n), total(stages * n) {}
 
-  // What stage s (0-based) reports to: None when the caller asked for no progress.
-  py::object stage(int s) const {
+  // A callable progress(done, of) for stage s: it reports base + within(done, of) of `total` to
+  // the caller's progress, each value once; None when the caller asked for no progress.
+  template <class Within> py::object reporter(int s, Within within) const {
     if (user.is_none()) return py::none();
-    return py::cpp_function([user = user, last = last, base = s * per_stage, per_stage = per_stage,
-                             total = total](Index done, Index of) {
-      const Index scaled = of > 0 ? base + Index(double(per_stage) * double(done) / double(of)) : base + per_stage;
+    return py::cpp_function([user = user, last = last, base = s * per_stage, total = total, within](Index done, Index of) {
+      const Index scaled = base + within(done, of);
       if (scaled == *last) return;
       *last = scaled;
       user(scaled, total);
     });
   }
+  // What stage s (0-based) reports to. Not part(s, 0, 1, 1): that rounds per_stage * (done / of)
+  // where this rounds per_stage * done / of (49 * (1 / 49) < 1), and reports the stage's start,
+  // not its end, for of = 0.
+  py::object stage(int s) const {
+    return reporter(s, [per_stage = per_stage](Index done, Index of) {
+      return of > 0 ? Index(double(per_stage) * double(done) / double(of)) : per_stage;
+    });
+  }
   // A stage's share of a count: blocks of a stage (the candidates' distances in blocks) report
   // through a stage of their own, base offset by the blocks before.
   py::object part(int s, Index first, Index count, Index of) const {
-    if (user.is_none()) return py::none();
-    return py::cpp_function([user = user, last = last, base = s * per_stage, per_stage = per_stage, total = total,
-                             first, count, of](Index done, Index block) {
+    return reporter(s, [per_stage = per_stage, first, count, of](Index done, Index block) {
       const double fraction = of > 0 ? (double(first) + double(count) * double(done) / double(std::max<Index>(block, 1))) / double(of) : 1.0;
-      const Index scaled = base + Index(double(per_stage) * fraction);
-      if (scaled == *last) return;
-      *last = scaled;
-      user(scaled, total);
+      return Index(double(per_stage) * fraction);
     });
   }
   void finish() const {

@@ -71,31 +71,32 @@ def _close(batch, singles, what):
 # ----------------------------------------------------------------------------
 # batches
 # ----------------------------------------------------------------------------
+def _check_n_results(cd, lins, rounds, single_lin, single_round, what, what_swapped):
+    """A batch of N answers, in both argument orders, against the N single calls
+    distance(single_lin(i), single_round(i))."""
+    got = cd.distance(lins, rounds)
+    assert isinstance(got, np.ndarray) and got.shape == (N,)
+    singles = [cd.distance(single_lin(i), single_round(i)) for i in range(N)]
+    _close(got, singles, what)
+    _close(cd.distance(rounds, lins), singles, what_swapped)
+
+
 @pytest.mark.parametrize("lk,rk", PAIRS, ids=PAIR_IDS)
 def test_one_linear_vs_n_rounds(cd, lk, rk):
     c, n, r = _rounds(N)
     o, d = _linears(1)
     lin = _make_lin(cd, lk, o[0], d[0])
-    rounds = _make_round(cd, rk, c, n, r)
-    got = cd.distance(lin, rounds)
-    assert isinstance(got, np.ndarray) and got.shape == (N,)
-    singles = [cd.distance(lin, _make_round(cd, rk, c[i], n[i], r[i])) for i in range(N)]
-    _close(got, singles, "one vs N")
-    _close(cd.distance(rounds, lin), singles, "N vs one (swapped)")
+    _check_n_results(cd, lin, _make_round(cd, rk, c, n, r), lambda i: lin,
+                     lambda i: _make_round(cd, rk, c[i], n[i], r[i]), "one vs N", "N vs one (swapped)")
 
 
 @pytest.mark.parametrize("lk,rk", PAIRS, ids=PAIR_IDS)
 def test_n_vs_n(cd, lk, rk):
     c, n, r = _rounds(N)
     o, d = _linears(N)
-    lins = _make_lin(cd, lk, o, d)
-    rounds = _make_round(cd, rk, c, n, r)
-    got = cd.distance(lins, rounds)
-    assert isinstance(got, np.ndarray) and got.shape == (N,)
-    singles = [cd.distance(_make_lin(cd, lk, o[i], d[i]), _make_round(cd, rk, c[i], n[i], r[i]))
-               for i in range(N)]
-    _close(got, singles, "N vs N")
-    _close(cd.distance(rounds, lins), singles, "N vs N (swapped)")
+    _check_n_results(cd, _make_lin(cd, lk, o, d), _make_round(cd, rk, c, n, r),
+                     lambda i: _make_lin(cd, lk, o[i], d[i]), lambda i: _make_round(cd, rk, c[i], n[i], r[i]),
+                     "N vs N", "N vs N (swapped)")
 
 
 @pytest.mark.parametrize("lk,rk", PAIRS, ids=PAIR_IDS)

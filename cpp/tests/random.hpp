@@ -1,7 +1,8 @@
-// Seeded random numbers, vectors and directions for the C++ tests (one engine per test program,
-// so that each test draws the same sequence on every run).
+// Seeded random numbers, vectors, directions and shapes for the C++ tests (one engine per test
+// program, so that each test draws the same sequence on every run).
 #pragma once
 
+#include <circledist/bezier.hpp>
 #include <circledist/primitives.hpp>
 
 #include <random>
@@ -22,6 +23,24 @@ struct Random {
     V v;
     do v = vector(1); while (v.norm() < 0.1);
     return v;
+  }
+
+  // Shapes near the origin: their points within `spread` of it in each coordinate, radii in
+  // [0.2, 1.5), segments up to 1.5 and cubic curves' control points up to 1.2 per coordinate from
+  // their first point.
+  circledist::Line3<double> line(double spread) { return {vector(spread), direction()}; }
+  circledist::Segment3<double> segment(double spread) {
+    const V p = vector(spread);
+    return {p, p + vector(1.5)};
+  }
+  circledist::Circle3<double> circle(double spread) { return {vector(spread), direction(), uniform(0.2, 1.5)}; }
+  circledist::Disk3<double> disk(double spread) { return {vector(spread), direction(), uniform(0.2, 1.5)}; }
+  circledist::BezierCurve3<double> bezier(double spread) {
+    circledist::BezierCurve3<double> b;
+    b.control.resize(3, 4);
+    const V p = vector(spread);
+    for (int i = 0; i < 4; ++i) b.control.col(i) = p + vector(1.2);
+    return b;
   }
 };
 

@@ -20,6 +20,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 using namespace circledist;
@@ -191,11 +192,11 @@ template <class A, class B> void expect_consistent(const char* name, const A& a,
 }
 
 // The world point of a circle's parameter (theta, 0) or a disk's (s, theta), in the library's frame.
-inline V3d circle_point(const Circle3<double>& c, const Vec2<double>& p) {
+inline V3d round_point(const Circle3<double>& c, const Vec2<double>& p) {
   const Frame<double> f(c.normal);
   return c.center + c.radius * (std::cos(p.x()) * f.u + std::sin(p.x()) * f.v);
 }
-inline V3d disk_point(const Disk3<double>& d, const Vec2<double>& p) {
+inline V3d round_point(const Disk3<double>& d, const Vec2<double>& p) {
   const Frame<double> f(d.normal);
   return d.center + p.x() * (std::cos(p.y()) * f.u + std::sin(p.y()) * f.v);
 }
@@ -208,46 +209,33 @@ inline void expect_param(const char* name, const V3d& from_param, const V3d& poi
 
 // ---------------------------------------------------------------------------------------------
 
+// A round-round case (`kind` its family): the distance in both orders, the closest points'
+// consistency and parameters and, when `unique` >= 0, their uniqueness. For two rounds of one
+// kind the other order is distance(b, a) and uniqueness is checked in both orders; circle-disk
+// checks the other order through closest_points(b, a)'s distance.
+template <class A, class B> void round_round_case(const char* kind, const char* name, const A& a, const B& b, LD truth, int unique) {
+  constexpr bool one_kind = std::is_same_v<A, B>;
+  const double size = std::max(a.radius, b.radius);
+  const Result<double> r = closest_points(a, b);
+  expect_distance(kind, name, r.distance, truth, size);
+  expect_distance(kind, name, distance(a, b), truth, size);
+  expect_distance(kind, name, one_kind ? distance(b, a) : closest_points(b, a).distance, truth, size);
+  expect_consistent(name, a, b, r, size);
+  expect_param(name, round_point(a, r.param_a), r.point_a, std::max(size, (a.center - b.center).norm()));
+  expect_param(name, round_point(b, r.param_b), r.point_b, std::max(size, (a.center - b.center).norm()));
+  if (unique >= 0) {
+    expect_unique(name, r.unique, unique == 1);
+    if (one_kind) expect_unique(name, closest_points(b, a).unique, unique == 1);
+  }
+}
 inline void circle_circle_case(const char* name, const Circle3<double>& a, const Circle3<double>& b, LD truth, int unique = -1) {
-  const double size = std::max(a.radius, b.radius);
-  const Result<double> r = closest_points(a, b);
-  expect_distance("circle-circle", name, r.distance, truth, size);
-  expect_distance("circle-circle", name, distance(a, b), truth, size);
-  expect_distance("circle-circle", name, distance(b, a), truth, size);
-  expect_consistent(name, a, b, r, size);
-  expect_param(name, circle_point(a, r.param_a), r.point_a, std::max(size, (a.center - b.center).norm()));
-  expect_param(name, circle_point(b, r.param_b), r.point_b, std::max(size, (a.center - b.center).norm()));
-  if (unique >= 0) {
-    expect_unique(name, r.unique, unique == 1);
-    expect_unique(name, closest_points(b, a).unique, unique == 1);
-  }
+  round_round_case("circle-circle", name, a, b, truth, unique);
 }
-
 inline void circle_disk_case(const char* name, const Circle3<double>& a, const Disk3<double>& b, LD truth, int unique = -1) {
-  const double size = std::max(a.radius, b.radius);
-  const Result<double> r = closest_points(a, b);
-  expect_distance("circle-disk", name, r.distance, truth, size);
-  expect_distance("circle-disk", name, distance(a, b), truth, size);
-  expect_distance("circle-disk", name, closest_points(b, a).distance, truth, size);
-  expect_consistent(name, a, b, r, size);
-  expect_param(name, circle_point(a, r.param_a), r.point_a, std::max(size, (a.center - b.center).norm()));
-  expect_param(name, disk_point(b, r.param_b), r.point_b, std::max(size, (a.center - b.center).norm()));
-  if (unique >= 0) expect_unique(name, r.unique, unique == 1);
+  round_round_case("circle-disk", name, a, b, truth, unique);
 }
-
 inline void disk_disk_case(const char* name, const Disk3<double>& a, const Disk3<double>& b, LD truth, int unique = -1) {
-  const double size = std::max(a.radius, b.radius);
-  const Result<double> r = closest_points(a, b);
-  expect_distance("disk-disk", name, r.distance, truth, size);
-  expect_distance("disk-disk", name, distance(a, b), truth, size);
-  expect_distance("disk-disk", name, distance(b, a), truth, size);
-  expect_consistent(name, a, b, r, size);
-  expect_param(name, disk_point(a, r.param_a), r.point_a, std::max(size, (a.center - b.center).norm()));
-  expect_param(name, disk_point(b, r.param_b), r.point_b, std::max(size, (a.center - b.center).norm()));
-  if (unique >= 0) {
-    expect_unique(name, r.unique, unique == 1);
-    expect_unique(name, closest_points(b, a).unique, unique == 1);
-  }
+  round_round_case("disk-disk", name, a, b, truth, unique);
 }
 
 inline double curve_size(const BezierCurve3<double>& c, const V3d& center) {
@@ -268,6 +256,25 @@ inline void bezier_case(const char* kind, const char* name, const BezierCurve3<d
   if (unique >= 0) expect_unique(name, r.unique, unique == 1);
 }
 
+// A shape moved by t: its points move, its normal and radius stay.
+inline Circle3<double> translated(const Circle3<double>& c, const V3d& t) { return {c.center + t, c.normal, c.radius}; }
+inline Disk3<double> translated(const Disk3<double>& d, const V3d& t) { return {d.center + t, d.normal, d.radius}; }
+inline BezierCurve3<double> translated(const BezierCurve3<double>& c, const V3d& t) {
+  BezierCurve3<double> moved = c;
+  for (int i = 0; i < moved.control.cols(); ++i) moved.control.col(i) += t;
+  return moved;
+}
+
+// A scene far from the origin: check(name, a', b') for a and b moved together by 1e6 and 1e8
+// times `direction` (the coordinates then round, the geometry stays).
+template <class A, class B, class Check>
+void translated_cases(const A& a, const B& b, const V3d& direction, const Check& check) {
+  for (double shift : {1e6, 1e8}) {
+    const V3d t = shift * direction;
+    check(shift == 1e6 ? "translated 1e6" : "translated 1e8", translated(a, t), translated(b, t));
+  }
+}
+
 inline BezierCurve3<double> bezier(std::initializer_list<V3d> points) {
   BezierCurve3<double> c;
   c.control.resize(3, int(points.size()));
@@ -278,47 +285,43 @@ inline BezierCurve3<double> bezier(std::initializer_list<V3d> points) {
 
 // ---------------------------------------------------------------------------------------------
 
-// Random configurations of every kind against the references: A and B as circles, B as a disk
-// (d), A as a disk (e), and a curve of degree 1 + k % 7 (c). Drawn in one stream, whichever
-// family checks them.
-struct RandomRoundCase {
+// A configuration every round family checks: A and B as circles (a, b) and as disks (da, db),
+// and a curve (c).
+struct RoundCase {
   Circle3<double> a, b;
-  Disk3<double> d, e;
+  Disk3<double> da, db;
   BezierCurve3<double> c;
 };
-inline std::vector<RandomRoundCase> random_round_cases() {
+
+// Random configurations of every kind against the references, a curve of degree 1 + k % 7.
+// Drawn in one stream, whichever family checks them.
+inline std::vector<RoundCase> random_round_cases() {
   std::mt19937_64 rng(20240611);
   std::normal_distribution<double> normal;
   auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
   auto radius = [&] { return std::exp(0.7 * normal(rng)); };
-  std::vector<RandomRoundCase> out;
+  std::vector<RoundCase> out;
   for (int k = 0; k < 60; ++k) {
     const Circle3<double> a{vec(), vec(), radius()}, b{vec(), vec(), radius()};
-    const Disk3<double> d{b.center, b.normal, b.radius};
-    const Disk3<double> e{a.center, a.normal, a.radius};
+    const Disk3<double> da{a.center, a.normal, a.radius}, db{b.center, b.normal, b.radius};
     const int degree = 1 + k % 7;
     BezierCurve3<double> c;
     c.control.resize(3, degree + 1);
     for (int i = 0; i <= degree; ++i) c.control.col(i) = vec();
-    out.push_back({a, b, d, e, c});
+    out.push_back({a, b, da, db, c});
   }
   return out;
 }
 
 // Tangencies (multiple roots: the hardest candidates) in random orientations: B touches A at a
 // point p with a common tangent line, exactly or offset by up to 1e-12..1, and curves tangent to
-// A's rim at p (c). A and B as circles, and as disks (da, db).
-struct TangentRoundCase {
-  Circle3<double> a, b;
-  Disk3<double> da, db;
-  BezierCurve3<double> c;
-};
-inline std::vector<TangentRoundCase> tangent_round_cases() {
+// A's rim at p (c).
+inline std::vector<RoundCase> tangent_round_cases() {
   std::mt19937_64 rng(77);
   std::normal_distribution<double> normal;
   std::uniform_real_distribution<double> uniform(0, 1);
   auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
-  std::vector<TangentRoundCase> out;
+  std::vector<RoundCase> out;
   for (int k = 0; k < 48; ++k) {
     const V3d ca = vec(), na = vec().normalized();
     const double ra = std::exp(normal(rng)), rb = std::exp(normal(rng));
@@ -376,6 +379,14 @@ template <class Real> struct PrecisionScene {
   }
 };
 
+// The two rows of one pair (x, y) of a PrecisionScene: its distance in one order and its closest
+// points' distance in the other, each against the double reference ref(xd, yd).
+template <class X, class Y, class XD, class YD, class Ref>
+std::vector<std::array<double, 2>> precision_rows(const X& x, const Y& y, const XD& xd, const YD& yd, const Ref& ref) {
+  const double truth = double(ref(xd, yd));
+  return {{double(distance(x, y)), truth}, {double(closest_points(y, x).distance), truth}};
+}
+
 // The answers in float and long double agree with the double references: `rows(scene)` gives
 // each query's (answer, reference) pair on a PrecisionScene, agreeing within 1e-5 in float and
 // 1e-15 in long double (relative above 1).
@@ -391,12 +402,12 @@ template <class Rows> void other_precisions(const Rows& rows) {
   expect("long double", 1e-15, rows(PrecisionScene<long double>()));
 }
 
-// One family's checks on the shared cases: `random` and `tangent` check a RandomRoundCase and a
-// TangentRoundCase, `rows` gives the float and long double rows (other_precisions).
+// One family's checks on the shared cases: `random` and `tangent` check a random and a tangent
+// RoundCase, `rows` gives the float and long double rows (other_precisions).
 template <class Random, class Tangent, class Rows>
 void shared_round_cases(const Random& random, const Tangent& tangent, const Rows& rows) {
-  for (const RandomRoundCase& r : random_round_cases()) random(r);
-  for (const TangentRoundCase& r : tangent_round_cases()) tangent(r);
+  for (const RoundCase& r : random_round_cases()) random(r);
+  for (const RoundCase& r : tangent_round_cases()) tangent(r);
   other_precisions(rows);
 }
 

@@ -59,13 +59,9 @@ void bezier_tests() {
     bezier_case("bezier-circle", "degree 5 waving", wave, ring, ref::bezier_circle(wave, ring));
     const Disk3<double> tilted{V3d(0.1, 0.2, 0.6), unit(0.3, 0.4, 1), 0.8};
     bezier_case("bezier-disk", "degree 5 waving, tilted disk", wave, tilted, ref::bezier_disk(wave, tilted));
-    for (double shift : {1e6, 1e8}) {
-      BezierCurve3<double> moved = wave;
-      const V3d t(0.6 * shift, -shift, 0.2 * shift);
-      for (int i = 0; i < moved.control.cols(); ++i) moved.control.col(i) += t;
-      const Disk3<double> dt{tilted.center + t, tilted.normal, tilted.radius};
-      bezier_case("bezier-disk", shift == 1e6 ? "translated 1e6" : "translated 1e8", moved, dt, ref::bezier_disk(moved, dt));
-    }
+    translated_cases(wave, tilted, V3d(0.6, -1, 0.2), [](const char* name, const auto& moved, const auto& dt) {
+      bezier_case("bezier-disk", name, moved, dt, ref::bezier_disk(moved, dt));
+    });
   }
 }
 
@@ -73,21 +69,19 @@ int main() {
   bezier_tests();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
   shared_round_cases(
-      [](const RandomRoundCase& r) {
-        bezier_case("bezier-disk", "random", r.c, r.d, ref::bezier_disk(r.c, r.d));
+      [](const RoundCase& r) {
+        bezier_case("bezier-disk", "random", r.c, r.db, ref::bezier_disk(r.c, r.db));
         bezier_case("bezier-circle", "random", r.c, r.b, ref::bezier_circle(r.c, r.b));
       },
-      [](const TangentRoundCase& r) {
+      [](const RoundCase& r) {
         bezier_case("bezier-disk", "tangent", r.c, r.da, ref::bezier_disk(r.c, r.da));
         bezier_case("bezier-circle", "tangent", r.c, r.a, ref::bezier_circle(r.c, r.a));
       },
       [](const auto& s) {
-        return std::vector<std::array<double, 2>>{
-            {double(distance(s.c, s.db)), double(ref::bezier_disk(s.cd, s.dbd))},
-            {double(closest_points(s.db, s.c).distance), double(ref::bezier_disk(s.cd, s.dbd))},
-            {double(distance(s.c, s.b)), double(ref::bezier_circle(s.cd, s.bd))},
-            {double(closest_points(s.b, s.c).distance), double(ref::bezier_circle(s.cd, s.bd))},
-        };
+        std::vector<std::array<double, 2>> rows = precision_rows(s.c, s.db, s.cd, s.dbd, ref::bezier_disk);
+        const std::vector<std::array<double, 2>> circle = precision_rows(s.c, s.b, s.cd, s.bd, ref::bezier_circle);
+        rows.insert(rows.end(), circle.begin(), circle.end());
+        return rows;
       });
   return finish_round("bezier");
 }

@@ -46,11 +46,9 @@ void circle_circle_tests() {
     const Circle3<double> a{V3d(0.1, 0.2, 0.3), unit(1, -2, 0.5), 1.3}, b{V3d(0.7, -0.4, 0.2), unit(0.3, 1, 2), 0.9};
     const LD truth = ref::circle_circle(a, b);
     circle_circle_case("generic", a, b, truth);
-    for (double shift : {1e6, 1e8}) {
-      const V3d t(shift, -0.7 * shift, 0.3 * shift);
-      const Circle3<double> at{a.center + t, a.normal, a.radius}, bt{b.center + t, b.normal, b.radius};
-      circle_circle_case(shift == 1e6 ? "translated 1e6" : "translated 1e8", at, bt, ref::circle_circle(at, bt));
-    }
+    translated_cases(a, b, V3d(1, -0.7, 0.3), [](const char* name, const auto& at, const auto& bt) {
+      circle_circle_case(name, at, bt, ref::circle_circle(at, bt));
+    });
   }
   {
     const Circle3<double> big{o, z, 1};
@@ -124,13 +122,8 @@ int main() {
   pruning_tests();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
   shared_round_cases(
-      [](const RandomRoundCase& r) { circle_circle_case("random", r.a, r.b, ref::circle_circle(r.a, r.b)); },
-      [](const TangentRoundCase& r) { circle_circle_case("tangent", r.a, r.b, ref::circle_circle(r.a, r.b)); },
-      [](const auto& s) {
-        return std::vector<std::array<double, 2>>{
-            {double(distance(s.a, s.b)), double(ref::circle_circle(s.ad, s.bd))},
-            {double(closest_points(s.b, s.a).distance), double(ref::circle_circle(s.ad, s.bd))},
-        };
-      });
+      [](const RoundCase& r) { circle_circle_case("random", r.a, r.b, ref::circle_circle(r.a, r.b)); },
+      [](const RoundCase& r) { circle_circle_case("tangent", r.a, r.b, ref::circle_circle(r.a, r.b)); },
+      [](const auto& s) { return precision_rows(s.a, s.b, s.ad, s.bd, ref::circle_circle); });
   return finish_round("circle_circle");
 }

@@ -39,12 +39,9 @@ void circle_disk_tests() {
     const Circle3<double> lifted{V3d(0.1, 0.2, 1.9), unit(1, -2, 0.5), 1.3};
     const LD truth = ref::circle_disk(lifted, d);
     circle_disk_case("generic lifted", lifted, d, truth);
-    for (double shift : {1e6, 1e8}) {
-      const V3d t(-0.4 * shift, shift, 0.9 * shift);
-      const Circle3<double> at{lifted.center + t, lifted.normal, lifted.radius};
-      const Disk3<double> dt{d.center + t, d.normal, d.radius};
-      circle_disk_case(shift == 1e6 ? "translated 1e6" : "translated 1e8", at, dt, ref::circle_disk(at, dt));
-    }
+    translated_cases(lifted, d, V3d(-0.4, 1, 0.9), [](const char* name, const auto& at, const auto& dt) {
+      circle_disk_case(name, at, dt, ref::circle_disk(at, dt));
+    });
   }
   {
     const Disk3<double> big{o, z, 1};
@@ -64,13 +61,8 @@ int main() {
   circle_disk_tests();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
   shared_round_cases(
-      [](const RandomRoundCase& r) { circle_disk_case("random", r.a, r.d, ref::circle_disk(r.a, r.d)); },
-      [](const TangentRoundCase& r) { circle_disk_case("tangent", r.b, r.da, ref::circle_disk(r.b, r.da)); },
-      [](const auto& s) {
-        return std::vector<std::array<double, 2>>{
-            {double(distance(s.a, s.db)), double(ref::circle_disk(s.ad, s.dbd))},
-            {double(closest_points(s.db, s.a).distance), double(ref::circle_disk(s.ad, s.dbd))},
-        };
-      });
+      [](const RoundCase& r) { circle_disk_case("random", r.a, r.db, ref::circle_disk(r.a, r.db)); },
+      [](const RoundCase& r) { circle_disk_case("tangent", r.b, r.da, ref::circle_disk(r.b, r.da)); },
+      [](const auto& s) { return precision_rows(s.a, s.db, s.ad, s.dbd, ref::circle_disk); });
   return finish_round("circle_disk");
 }

@@ -28,11 +28,9 @@ void disk_disk_tests() {
   {
     const Disk3<double> a{V3d(0.1, 0.2, 1.9), unit(1, -2, 0.5), 1.3}, b{V3d(0.7, -0.4, 0.2), unit(0.3, 1, 2), 0.9};
     disk_disk_case("generic", a, b, ref::disk_disk(a, b));
-    for (double shift : {1e6, 1e8}) {
-      const V3d t(shift, 0.3 * shift, -0.8 * shift);
-      const Disk3<double> at{a.center + t, a.normal, a.radius}, bt{b.center + t, b.normal, b.radius};
-      disk_disk_case(shift == 1e6 ? "translated 1e6" : "translated 1e8", at, bt, ref::disk_disk(at, bt));
-    }
+    translated_cases(a, b, V3d(1, 0.3, -0.8), [](const char* name, const auto& at, const auto& bt) {
+      disk_disk_case(name, at, bt, ref::disk_disk(at, bt));
+    });
   }
 }
 
@@ -40,13 +38,8 @@ int main() {
   disk_disk_tests();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
   shared_round_cases(
-      [](const RandomRoundCase& r) { disk_disk_case("random", r.e, r.d, ref::disk_disk(r.e, r.d)); },
-      [](const TangentRoundCase& r) { disk_disk_case("tangent", r.da, r.db, ref::disk_disk(r.da, r.db)); },
-      [](const auto& s) {
-        return std::vector<std::array<double, 2>>{
-            {double(distance(s.da, s.db)), double(ref::disk_disk(s.dad, s.dbd))},
-            {double(closest_points(s.db, s.da).distance), double(ref::disk_disk(s.dad, s.dbd))},
-        };
-      });
+      [](const RoundCase& r) { disk_disk_case("random", r.da, r.db, ref::disk_disk(r.da, r.db)); },
+      [](const RoundCase& r) { disk_disk_case("tangent", r.da, r.db, ref::disk_disk(r.da, r.db)); },
+      [](const auto& s) { return precision_rows(s.da, s.db, s.dad, s.dbd, ref::disk_disk); });
   return finish_round("disk_disk");
 }

@@ -50,7 +50,6 @@ SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
 # default 0) comes on top of every kind.
 KINDS = {kind.lower(): (kind, dict(fields)) for kind, fields in _core._shape_fields().items()}
 _SWEEP, _SWEEP_ROLE = _core._sweep_field()
-_TRAILING_DIMS = ROLE_TRAILING_DIMS
 
 
 def _roles(kind: str) -> dict:
@@ -267,7 +266,7 @@ def _json_index(where: str, at) -> str:
 def _column(array: np.ndarray, role: str, count: Optional[int], file: str, where: str, rows_word: str):
     """Checks a batch column's rows (count or 1, or none: one value for all) and broadcasts it to
     (count, ...); a single shape's field as is."""
-    trailing = _TRAILING_DIMS[role]
+    trailing = ROLE_TRAILING_DIMS[role]
     if count is None:
         return array
     if array.ndim == trailing + 1:
@@ -561,7 +560,7 @@ def _npz_index(where: str, at) -> str:
 
 
 def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where: str) -> np.ndarray:
-    trailing = _TRAILING_DIMS[role]
+    trailing = ROLE_TRAILING_DIMS[role]
     if a.dtype.kind not in "fiu":
         raise _error(file, where, f"expected an array of real numbers (float or integer), got dtype {a.dtype}")
     ndims = (trailing,) if count is None else (trailing, trailing + 1)
@@ -788,7 +787,8 @@ def _entries_of(shapes, file: str) -> list:
         fields = {}
         for f, role in _roles(kind).items():
             a = np.asarray(getattr(shape, f), dtype=np.float64)
-            trailing = a.shape[a.ndim - _TRAILING_DIMS[role]:] if _TRAILING_DIMS[role] else ()
+            dims = ROLE_TRAILING_DIMS[role]
+            trailing = a.shape[a.ndim - dims:] if dims else ()
             # A column: one row per shape, C order; one value if all rows agree.
             a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
             bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0

@@ -373,23 +373,12 @@ void push_curve_disk_roots(const LocalBezier<Real>& c, Real radius, Real scale, 
 template <class Target, class Real, int N>
 Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
                                 const BestPiece<Real>& where, const Minima<Real, N>& minima, Real scale) {
-  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
-    return Target::point(p, round.radius, scale, ambiguous);
-  };
-  Result<Real> r;
   const Minimum<Real>& best = minima.best;
-  bool ambiguous = false;
   const Vec3<Real> pa = where.valid ? where.piece.at(where.s) : c.at(best.x);
-  const Vec3<Real> pb = round_point(pa, ambiguous);
-  ambiguous = ambiguous || another_closest_pair(minima, scale, [&](Real x) { return c.at(x); }, round_point, pa, pb,
-                                                distinct_points_tolerance(std::min(scale, c.size)),
-                                                distinct_points_tolerance(scale));
-  r.distance = best.value;
+  Result<Real> r = round_side_result<Target>(minima, [&](Real x) { return c.at(x); }, pa, round, scale,
+                                             distinct_points_tolerance(std::min(scale, c.size)));
   r.point_a = where.valid ? round.world(pa) : b.at(best.x);
-  r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(best.x, 0);
-  r.param_b = Target::param(pb);
-  r.unique = !ambiguous;
   return r;
 }
 

@@ -15,6 +15,7 @@
 // Every bound is exact up to rounding: callers keep a margin of sqrt(eps) * scale around them.
 #pragma once
 
+#include "detail/round_target.hpp"
 #include "sweep.hpp"
 
 #include <algorithm>
@@ -44,8 +45,10 @@ template <class Real> Ball<Real> bounding_ball(const Ray3<Real>& r) { return {r.
 template <class Real> Ball<Real> bounding_ball(const Segment3<Real>& s) {
   return {(s.p0 + s.p1) / 2, (s.p1 - s.p0).norm() / 2};
 }
-template <class Real> Ball<Real> bounding_ball(const Circle3<Real>& c) { return {c.center, c.radius}; }
-template <class Real> Ball<Real> bounding_ball(const Disk3<Real>& d) { return {d.center, d.radius}; }
+// A circle or disk (any shape with a target policy, detail/round_target.hpp).
+template <class R, class = target_t<R>> Ball<scalar_t<R>> bounding_ball(const R& round) {
+  return {round.center, round.radius};
+}
 // The curve lies in its control points' convex hull, so in the ball around their box's center.
 template <class Real> Ball<Real> bounding_ball(const BezierCurve3<Real>& b) {
   if (b.control.cols() == 0) return {};
@@ -107,17 +110,11 @@ template <class Real> Range<Real> height_range(const Segment3<Real>& s, const Pl
   const Real a = plane.height(s.p0), b = plane.height(s.p1);
   return {std::min(a, b), std::max(a, b)};
 }
-template <class Real, class R> Range<Real> round_height_range(const R& round, const Plane<Real>& plane) {
+template <class Real, class R, class = target_t<R>> Range<Real> height_range(const R& round, const Plane<Real>& plane) {
   const Real h = plane.height(round.center);
   const Vec3<Real> m = unit_vector(round.normal);
   const Real spread = round.radius * plane.n.cross(m).norm();  // radius * sin(angle between the planes)
   return {h - spread, h + spread};
-}
-template <class Real> Range<Real> height_range(const Circle3<Real>& c, const Plane<Real>& plane) {
-  return round_height_range(c, plane);
-}
-template <class Real> Range<Real> height_range(const Disk3<Real>& d, const Plane<Real>& plane) {
-  return round_height_range(d, plane);
 }
 template <class Real> Range<Real> height_range(const BezierCurve3<Real>& b, const Plane<Real>& plane) {
   Range<Real> r{std::numeric_limits<Real>::infinity(), -std::numeric_limits<Real>::infinity()};
@@ -129,9 +126,9 @@ template <class Real> Range<Real> height_range(const BezierCurve3<Real>& b, cons
   return r;
 }
 
-template <class T> struct is_round : std::false_type {};
-template <class Real> struct is_round<Circle3<Real>> : std::true_type {};
-template <class Real> struct is_round<Disk3<Real>> : std::true_type {};
+// A round is a shape with a target policy (detail/round_target.hpp: a circle or a disk).
+template <class T, class = void> struct is_round : std::false_type {};
+template <class T> struct is_round<T, std::void_t<target_t<T>>> : std::true_type {};
 template <class T> constexpr bool is_round_v = is_round<T>::value;
 template <class T> constexpr bool is_disk_v = std::is_same_v<T, Disk3<scalar_t<T>>>;
 template <class T> constexpr bool is_circle_v = std::is_same_v<T, Circle3<scalar_t<T>>>;
@@ -141,11 +138,8 @@ template <class T> constexpr bool is_linear_v =
     std::is_same_v<T, Segment3<scalar_t<T>>>;
 
 // The exact distance from a point to a round (closed form).
-template <class Real> Real point_round_distance(const Vec3<Real>& p, const Circle3<Real>& c) {
-  return Query<Vec3<Real>, Circle3<Real>>::distance(p, c);
-}
-template <class Real> Real point_round_distance(const Vec3<Real>& p, const Disk3<Real>& d) {
-  return Query<Vec3<Real>, Disk3<Real>>::distance(p, d);
+template <class Real, class R, class = target_t<R>> Real point_round_distance(const Vec3<Real>& p, const R& round) {
+  return Query<Vec3<Real>, R>::distance(p, round);
 }
 
 // Calls visit(point) for a few concrete points of a shape likely to be near a round: see the
@@ -182,10 +176,12 @@ void sample_points(const Segment3<Real>& s, const R& round, const Visit& visit) 
 }
 
 // A circle or disk A (center c, unit normal m, radius ra) against the round B: the point of A
-// nearest to B's center and A's rim crossings of B's plane; for a disk also the point of its
-// chord in B's plane nearest to B's center.
-template <class Real, class A, class R, class Visit>
-void sample_round_points(const A& a, bool filled, const R& round, const Visit& visit) {
+// nearest to B's center and A's rim crossings of B's plane; for a disk (a target with an
+// interior) also the point of its chord in B's plane nearest to B's center.
+template <class A, class R, class Visit, class Target = target_t<A>>
+void sample_points(const A& a, const R& round, const Visit& visit) {
+  using Real = scalar_t<A>;
+  constexpr bool filled = Target::interior;
   const Vec3<Real> m = unit_vector(a.normal);
   const Real ra = a.radius;
   const Vec3<Real> q = round.center - a.center;
@@ -226,13 +222,6 @@ void sample_round_points(const A& a, bool filled, const R& round, const Visit& v
     const Real y = std::min(std::max((round.center - foot).dot(e2), -half), half);
     visit(Vec3<Real>(foot + y * e2));
   }
-}
-template <class Real, class R, class Visit>
-void sample_points(const Circle3<Real>& c, const R& round, const Visit& visit) {
-  sample_round_points<Real>(c, false, round, visit);
-}
-template <class Real, class R, class Visit> void sample_points(const Disk3<Real>& d, const R& round, const Visit& visit) {
-  sample_round_points<Real>(d, true, round, visit);
 }
 template <class Real, class R, class Visit>
 void sample_points(const BezierCurve3<Real>& b, const R&, const Visit& visit) {
@@ -306,11 +295,8 @@ template <class Real> Vec3<Real> moved_by(const Vec3<Real>& p, const Vec3<Real>&
 template <class Real> Line3<Real> moved_by(const Line3<Real>& l, const Vec3<Real>& o) { return {l.origin - o, l.direction}; }
 template <class Real> Ray3<Real> moved_by(const Ray3<Real>& r, const Vec3<Real>& o) { return {r.origin - o, r.direction}; }
 template <class Real> Segment3<Real> moved_by(const Segment3<Real>& s, const Vec3<Real>& o) { return {s.p0 - o, s.p1 - o}; }
-template <class Real> Circle3<Real> moved_by(const Circle3<Real>& c, const Vec3<Real>& o) {
-  return {c.center - o, c.normal, c.radius};
-}
-template <class Real> Disk3<Real> moved_by(const Disk3<Real>& d, const Vec3<Real>& o) {
-  return {d.center - o, d.normal, d.radius};
+template <class R, class = target_t<R>> R moved_by(const R& round, const Vec3<scalar_t<R>>& o) {
+  return {round.center - o, round.normal, round.radius};
 }
 template <class Real> BezierCurve3<Real> moved_by(const BezierCurve3<Real>& b, const Vec3<Real>& o) {
   BezierCurve3<Real> out = b;

@@ -104,15 +104,6 @@ template <class Real> Volume<Real> line_volume(const Vec3<Real>& origin, const V
   return v;
 }
 
-// A circle's or disk's box: along axis k it spans radius * sin(angle between the axis and the
-// normal) = radius * sqrt(1 - n_k^2) on either side of the center.
-template <class R> Volume<scalar_t<R>> round_volume(const R& round, scalar_t<R> sweep) {
-  using Real = scalar_t<R>;
-  const Vec3<Real> n = unit_vector(round.normal);
-  const Vec3<Real> reach = round.radius * (Vec3<Real>::Ones() - n.cwiseProduct(n)).cwiseMax(Real(0)).cwiseSqrt();
-  return bounded_volume<Real>(round.center - reach, round.center + reach, bounding_ball(round), sweep);
-}
-
 }  // namespace detail
 
 // The volume of a shape grown by `sweep` (the Swept overload passes its own).
@@ -128,11 +119,14 @@ template <class Real> Volume<Real> volume(const Ray3<Real>& r, Real sweep = 0) {
 template <class Real> Volume<Real> volume(const Segment3<Real>& s, Real sweep = 0) {
   return detail::bounded_volume<Real>(s.p0.cwiseMin(s.p1), s.p0.cwiseMax(s.p1), bounding_ball(s), sweep);
 }
-template <class Real> Volume<Real> volume(const Circle3<Real>& c, Real sweep = 0) {
-  return detail::round_volume(c, sweep);
-}
-template <class Real> Volume<Real> volume(const Disk3<Real>& d, Real sweep = 0) {
-  return detail::round_volume(d, sweep);
+// A circle or disk (detail/round_target.hpp's targets): its box along axis k spans
+// radius * sin(angle between the axis and the normal) = radius * sqrt(1 - n_k^2) on either side
+// of the center.
+template <class R, class = target_t<R>> Volume<scalar_t<R>> volume(const R& round, scalar_t<R> sweep = 0) {
+  using Real = scalar_t<R>;
+  const Vec3<Real> n = unit_vector(round.normal);
+  const Vec3<Real> reach = round.radius * (Vec3<Real>::Ones() - n.cwiseProduct(n)).cwiseMax(Real(0)).cwiseSqrt();
+  return detail::bounded_volume<Real>(round.center - reach, round.center + reach, bounding_ball(round), sweep);
 }
 // The curve lies in its control points' convex hull, so in their box.
 template <class Real> Volume<Real> volume(const BezierCurve3<Real>& b, Real sweep = 0) {

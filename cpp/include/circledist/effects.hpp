@@ -127,23 +127,33 @@ template <class A, class B> constexpr bool pair_has_bounds_v = has_bounds_v<core
 
 namespace detail {
 
-// distance_if_within() and within() on shapes in double or wider, of a moderate scene size.
-template <class Roots, class A, class B>
-scalar_t<core_t<A>> moderate_distance_if_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
+// What distance_if_within() and within() answer: whether distance <= d (+ tol), and the distance
+// then (+inf otherwise, or when it was not computed).
+template <class Real> struct WithinAnswer {
+  bool within;
+  Real distance;
+};
+
+// distance_if_within() (NeedDistance) and within() on shapes in double or wider, of a moderate
+// scene size: the bounds first; within() stops at either of their verdicts, distance_if_within()
+// only at a No (it needs the distance of a Yes).
+template <class Roots, bool NeedDistance, class A, class B>
+WithinAnswer<scalar_t<core_t<A>>> moderate_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
   using Real = scalar_t<core_t<A>>;
   Stats& st = stats();
   ++st.within;
   const Real inf = std::numeric_limits<Real>::infinity();
   if (!(d >= 0)) {
     ++st.decided_by_bounds;
-    return inf;
+    return {false, inf};
   }
   Real scale;
   if constexpr (pair_has_bounds_v<A, B>) {
     const DistanceBounds<Real> bounds = distance_bounds(a, b);
-    if (judge(bounds, d) == Verdict::No) {
+    const Verdict v = judge(bounds, d);
+    if (v == Verdict::No || (v == Verdict::Yes && !NeedDistance)) {
       ++st.decided_by_bounds;
-      return inf;
+      return {v == Verdict::Yes, inf};
     }
     scale = bounds.scale;
   } else {
@@ -151,31 +161,8 @@ scalar_t<core_t<A>> moderate_distance_if_within(const A& a, const B& b, scalar_t
   }
   ++st.distances;
   const Real D = circledist::distance<counted_t<Roots>>(a, b);
-  return D <= d + touch_tolerance(scale + d) ? D : inf;
-}
-
-template <class Roots, class A, class B> bool moderate_within(const A& a, const B& b, scalar_t<core_t<A>> d) {
-  using Real = scalar_t<core_t<A>>;
-  Stats& st = stats();
-  ++st.within;
-  if (!(d >= 0)) {
-    ++st.decided_by_bounds;
-    return false;
-  }
-  Real scale;
-  if constexpr (pair_has_bounds_v<A, B>) {
-    const DistanceBounds<Real> bounds = distance_bounds(a, b);
-    const Verdict v = judge(bounds, d);
-    if (v != Verdict::Unknown) {
-      ++st.decided_by_bounds;
-      return v == Verdict::Yes;
-    }
-    scale = bounds.scale;
-  } else {
-    scale = plain_scale(a, b);
-  }
-  ++st.distances;
-  return circledist::distance<counted_t<Roots>>(a, b) <= d + touch_tolerance(scale + d);
+  const bool within = D <= d + touch_tolerance(scale + d);
+  return {within, within ? D : inf};
 }
 
 // The effects' front end, as query.hpp's is distance()'s: float shapes are decided in double, and
@@ -207,11 +194,12 @@ scalar_t<core_t<A>> distance_if_within(const A& a, const B& b, scalar_t<core_t<A
     if constexpr (detail::scalable_pair_v<A, B>) {
       const int e = detail::scene_exponent(core(a), core(b));
       if (e != 0)
-        return std::ldexp(detail::moderate_distance_if_within<Roots>(detail::scaled_shape(a, e), detail::scaled_shape(b, e),
-                                                                     std::ldexp(d, e)),
+        return std::ldexp(detail::moderate_within<Roots, true>(detail::scaled_shape(a, e), detail::scaled_shape(b, e),
+                                                               std::ldexp(d, e))
+                              .distance,
                           -e);
     }
-    return detail::moderate_distance_if_within<Roots>(a, b, d);
+    return detail::moderate_within<Roots, true>(a, b, d).distance;
   }
 }
 
@@ -226,9 +214,11 @@ template <class Roots = DefaultRoots, class A, class B> bool within(const A& a, 
     if constexpr (detail::scalable_pair_v<A, B>) {
       const int e = detail::scene_exponent(core(a), core(b));
       if (e != 0)
-        return detail::moderate_within<Roots>(detail::scaled_shape(a, e), detail::scaled_shape(b, e), std::ldexp(d, e));
+        return detail::moderate_within<Roots, false>(detail::scaled_shape(a, e), detail::scaled_shape(b, e),
+                                                     std::ldexp(d, e))
+            .within;
     }
-    return detail::moderate_within<Roots>(a, b, d);
+    return detail::moderate_within<Roots, false>(a, b, d).within;
   }
 }
 

@@ -317,18 +317,18 @@ template <class Real> Vec3<Real> piece_end(const Ray3<Real>& r, Real) { return r
 template <class Real> Vec3<Real> piece_end(const Segment3<Real>& s, Real t) { return t > 0 ? s.p1 : s.p0; }
 
 // A piece's end point as a candidate: its distance to the round by point-circle's (point-disk's)
-// closed form from the line's unit normal n (height z = n.(p - c), rho from the axis), and its
-// closest points (the distance kept the same, so distance() and closest() agree).
-template <class Real> Real end_point_distance(const Vec3<Real>& p, const Circle3<Real>& c, const Vec3<Real>& n) {
-  const Vec3<Real> d = p - c.center;
-  const Real z = n.dot(d);
-  return length2d(z, (d - z * n).norm() - c.radius);
-}
-template <class Real> Real end_point_distance(const Vec3<Real>& p, const Disk3<Real>& disk, const Vec3<Real>& n) {
-  const Vec3<Real> d = p - disk.center;
+// closed form from the line's unit normal n (height z = n.(p - c), rho from the axis; over a
+// disk's interior, rho <= R, the height alone), and its closest points (the distance kept the
+// same, so distance() and closest() agree).
+template <class Real, class R, class Target = target_t<R>>
+Real end_point_distance(const Vec3<Real>& p, const R& round, const Vec3<Real>& n) {
+  const Vec3<Real> d = p - round.center;
   const Real z = n.dot(d);
   const Real rho = (d - z * n).norm();
-  return rho <= disk.radius ? std::abs(z) : length2d(z, rho - disk.radius);
+  if constexpr (Target::interior) {
+    if (rho <= round.radius) return std::abs(z);
+  }
+  return length2d(z, rho - round.radius);
 }
 template <class Piece, class Round>
 auto end_point_result(const Piece& piece, decltype(Round::radius) t, const Round& round,
@@ -340,6 +340,18 @@ auto end_point_result(const Piece& piece, decltype(Round::radius) t, const Round
   r.param_a = Vec2<Real>(t, 0);
   return r;
 }
+
+// The answer of a piece from its full line's minimum over the round (line_ring_minimum): the
+// candidates and the winner. Which candidates there are is the round's own (choose_from_line:
+// the line's two local minima over a ring, the plane crossing of a disk); the rest is shared
+// (PieceRoundQuery).
+template <class Real> struct PieceChoice {
+  Line3<Real> line;  // the full line through the piece
+  LineRingMinimum<Real> global, second;  // the line's minima over the ring (second: the other local one)
+  Vec3<Real> crossing = Vec3<Real>::Zero();  // a disk's: where the line meets its plane inside the rim
+  enum Winner { kGlobal, kSecond, kCrossing, kEnd } winner = kGlobal;
+  Real t = 0, value = std::numeric_limits<Real>::infinity();  // the end's parameter; the winner's distance
+};
 
 template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
   static constexpr bool defined = true;
@@ -363,86 +375,91 @@ template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
 // astroid, the other (other_line_minimum). End points by point-circle's closed form. Where the
 // other minimum is undecided, where a segment is too long for the line through it
 // (piece_line), or for closest points where a minimum is tied with its mirror image, the
-// general path answers. distance() and closest() pick the same candidate with the same formulas.
-template <class Real, class Piece> struct PieceCircleQuery : LinearCircleQuery<Real, Piece> {
-  using General = LinearCircleQuery<Real, Piece>;
-
-  // The candidates and the winner: the line's minima `global` and `second`, or the end at
-  // parameter `t`.
-  struct Choice {
-    Line3<Real> line;  // the full line through the piece
-    LineRingMinimum<Real> global, second;
-    enum Winner { kGlobal, kSecond, kEnd } winner = kGlobal;
-    Real t = 0, value = std::numeric_limits<Real>::infinity();
-  };
-
-  // False where the general path must answer.
-  template <class Roots> static bool choose(const Piece& piece, const Circle3<Real>& c, Choice& out, bool for_closest) {
-    const PieceLine<Real> pl = piece_line(piece, c.radius);
-    out.line = pl.line;
-    const LineRingMinimum<Real>& m = out.global;
-    if (!pl.usable || !line_ring_minimum<Roots>(out.line, c, out.global)) return false;
-    const Linear<Real> linear = as_linear(piece);
-    const int side = piece_side(out.line, c.center, m.line_point, linear);
-    if (side == 0) {
-      // The global minimum on the piece answers, unless it is tied with its mirror image.
-      if (for_closest && tied_with_mirror(c, m)) return false;
-      out.value = m.distance;
-      return true;
-    }
-    // The piece's extent along the line as offsets tau from the anchor (a.m = 0), and whether it
-    // reaches the second minimum's side, (0, tau_max] or [tau_max, 0) (other_line_minimum).
-    const auto tau_of = [&](Real t) {
-      return std::isfinite(t) ? (piece_end(piece, t) - c.center).dot(m.unit_direction) : t;
-    };
-    const auto may_hold = [&](Real tau_max) {
-      const Real lo = tau_of(linear.lo), hi = tau_of(linear.hi);
-      const Real slack = 64 * std::numeric_limits<Real>::epsilon() * (std::abs(tau_max) + m.anchor.norm() +
-                                                                        (std::isfinite(lo) ? std::abs(lo) : Real(0)) +
-                                                                        (std::isfinite(hi) ? std::abs(hi) : Real(0)));
-      return tau_max > 0 ? hi >= -slack && lo <= tau_max + slack : lo <= slack && hi >= tau_max - slack;
-    };
-    const int other = other_line_minimum<Roots>(m, c.radius, out.second, may_hold);
-    if (other < 0) return false;
-    out.winner = Choice::kEnd;
-    if (other == 0) {
-      // One minimum, off the piece: the distance falls toward it, so the nearer end answers.
-      out.t = side < 0 ? linear.lo : linear.hi;
-      out.value = end_point_distance(piece_end(piece, out.t), c, m.unit_normal);
-      return true;
-    }
-    if (other == 1 && on_piece(out.line, c.center, out.second.line_point, linear)) {
-      out.winner = Choice::kSecond;
-      out.value = out.second.distance;
-    }
-    for (const Real t : {linear.lo, linear.hi}) {
-      if (!std::isfinite(t)) continue;
-      const Real value = end_point_distance(piece_end(piece, t), c, m.unit_normal);
-      // A tie between an end and a line minimum, or between both ends (a segment symmetric about
-      // the axis), is two distinct closest pairs: the general path judges `unique`.
-      if (for_closest && std::abs(value - out.value) <= tie_tolerance(std::max(c.radius, value))) return false;
-      if (value < out.value) {
-        out.value = value;
-        out.t = t;
-        out.winner = Choice::kEnd;
-      }
-    }
+// general path answers (returns false).
+template <class Roots, class Real, class Piece>
+bool choose_from_line(const Piece& piece, const Circle3<Real>& c, PieceChoice<Real>& out, bool for_closest) {
+  using Choice = PieceChoice<Real>;
+  const PieceLine<Real> pl = piece_line(piece, c.radius);
+  out.line = pl.line;
+  const LineRingMinimum<Real>& m = out.global;
+  if (!pl.usable || !line_ring_minimum<Roots>(out.line, c, out.global)) return false;
+  const Linear<Real> linear = as_linear(piece);
+  const int side = piece_side(out.line, c.center, m.line_point, linear);
+  if (side == 0) {
+    // The global minimum on the piece answers, unless it is tied with its mirror image.
+    if (for_closest && tied_with_mirror(c, m)) return false;
+    out.value = m.distance;
     return true;
   }
+  // The piece's extent along the line as offsets tau from the anchor (a.m = 0), and whether it
+  // reaches the second minimum's side, (0, tau_max] or [tau_max, 0) (other_line_minimum).
+  const auto tau_of = [&](Real t) {
+    return std::isfinite(t) ? (piece_end(piece, t) - c.center).dot(m.unit_direction) : t;
+  };
+  const auto may_hold = [&](Real tau_max) {
+    const Real lo = tau_of(linear.lo), hi = tau_of(linear.hi);
+    const Real slack = 64 * std::numeric_limits<Real>::epsilon() * (std::abs(tau_max) + m.anchor.norm() +
+                                                                      (std::isfinite(lo) ? std::abs(lo) : Real(0)) +
+                                                                      (std::isfinite(hi) ? std::abs(hi) : Real(0)));
+    return tau_max > 0 ? hi >= -slack && lo <= tau_max + slack : lo <= slack && hi >= tau_max - slack;
+  };
+  const int other = other_line_minimum<Roots>(m, c.radius, out.second, may_hold);
+  if (other < 0) return false;
+  out.winner = Choice::kEnd;
+  if (other == 0) {
+    // One minimum, off the piece: the distance falls toward it, so the nearer end answers.
+    out.t = side < 0 ? linear.lo : linear.hi;
+    out.value = end_point_distance(piece_end(piece, out.t), c, m.unit_normal);
+    return true;
+  }
+  if (other == 1 && on_piece(out.line, c.center, out.second.line_point, linear)) {
+    out.winner = Choice::kSecond;
+    out.value = out.second.distance;
+  }
+  for (const Real t : {linear.lo, linear.hi}) {
+    if (!std::isfinite(t)) continue;
+    const Real value = end_point_distance(piece_end(piece, t), c, m.unit_normal);
+    // A tie between an end and a line minimum, or between both ends (a segment symmetric about
+    // the axis), is two distinct closest pairs: the general path judges `unique`.
+    if (for_closest && std::abs(value - out.value) <= tie_tolerance(std::max(c.radius, value))) return false;
+    if (value < out.value) {
+      out.value = value;
+      out.t = t;
+      out.winner = Choice::kEnd;
+    }
+  }
+  return true;
+}
 
-  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Circle3<Real>& c) {
-    Choice choice;
-    if (choose<Roots>(piece, c, choice, false)) return choice.value;
-    return General::template distance<Roots>(piece, c);
+template <class Real>
+Result<Real> line_minimum_result(const PieceChoice<Real>& choice, const Circle3<Real>& c) {
+  return line_ring_result(choice.line, c, choice.winner == PieceChoice<Real>::kSecond ? choice.second : choice.global);
+}
+
+// A piece against a round through its full line (one bracketed root), the general path
+// (LinearRoundQuery) wherever choose_from_line declines: distance() and closest() pick the same
+// candidate with the same formulas. The round's hooks, overloaded on its shape:
+// choose_from_line<Roots>(piece, round, choice, for_closest) (false: the general path answers)
+// and line_minimum_result(choice, round) (the Result of a winner on the line's side, not an end).
+template <class Real, class Piece, class Target> struct PieceRoundQuery : LinearRoundQuery<Real, Piece, Target> {
+  using General = LinearRoundQuery<Real, Piece, Target>;
+  using Round = typename Target::Shape;
+
+  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Round& round) {
+    PieceChoice<Real> choice;
+    if (choose_from_line<Roots>(piece, round, choice, false)) return choice.value;
+    return General::template distance<Roots>(piece, round);
   }
 
-  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Circle3<Real>& c) {
-    Choice choice;
-    if (!choose<Roots>(piece, c, choice, true)) return General::template closest<Roots>(piece, c);
-    if (choice.winner == Choice::kEnd) return end_point_result(piece, choice.t, c, choice.global.unit_normal);
-    return line_ring_result(choice.line, c, choice.winner == Choice::kSecond ? choice.second : choice.global);
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Round& round) {
+    PieceChoice<Real> choice;
+    if (!choose_from_line<Roots>(piece, round, choice, true)) return General::template closest<Roots>(piece, round);
+    if (choice.winner == PieceChoice<Real>::kEnd) return end_point_result(piece, choice.t, round, choice.global.unit_normal);
+    return line_minimum_result(choice, round);
   }
 };
+
+template <class Real, class Piece> using PieceCircleQuery = PieceRoundQuery<Real, Piece, RingTarget<Real>>;
 
 template <class Real> struct Query<Ray3<Real>, Circle3<Real>> : PieceCircleQuery<Real, Ray3<Real>> {};
 template <class Real> struct Query<Segment3<Real>, Circle3<Real>> : PieceCircleQuery<Real, Segment3<Real>> {};

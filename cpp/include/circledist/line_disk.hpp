@@ -15,95 +15,77 @@ namespace circledist {
 // The general path (LinearRoundQuery, linear.hpp) on the disk target.
 template <class Real, class Piece> using LinearDiskQuery = LinearRoundQuery<Real, Piece, DiskTarget<Real>>;
 
+// The disk's rim, the circle line_ring_minimum answers a line against.
+template <class Real> Circle3<Real> disk_rim(const Disk3<Real>& disk) { return {disk.center, disk.normal, disk.radius}; }
+
 // A full line's distance to a disk: zero where it crosses the disk's plane inside the rim, and
 // otherwise its distance to the rim circle. The distance to the line is convex over the plane and
 // vanishes at the crossing, so with the crossing outside the disk (or none) its minimum over the
 // disk lies on the rim; a line parallel to the plane over the disk is as close to the rim points
 // under it as to any. So the line-circle solver from the circle's side answers it (one bracketed
 // root). A ray or segment takes the line's answer where it holds the line's point of it (the
-// crossing, or the line's closest point to the rim when the line does not cross the disk), as in
-// PieceCircleQuery; elsewhere, and for closest points of a line within sqrt(eps) of parallel to
-// the plane (which may touch a continuum), the general path answers.
-template <class Real> struct LineDiskMinimum {
-  Line3<Real> line;  // the full line through the piece
-  LineRingMinimum<Real> ring;
-  bool crosses = false;  // the line crosses the plane inside the rim, at `crossing`
-  bool parallel = false;
-  Vec3<Real> crossing = Vec3<Real>::Zero();  // relative to the center
-};
-
-template <class Roots, class Piece, class Real>
-bool line_disk_minimum(const Piece& piece, const Disk3<Real>& disk, LineDiskMinimum<Real>& out) {
-  const PieceLine<Real> pl = piece_line(piece, disk.radius);
-  out.line = pl.line;
-  if (!pl.usable || !line_ring_minimum<Roots>(out.line, Circle3<Real>{disk.center, disk.normal, disk.radius}, out.ring))
-    return false;
-  const LineRingMinimum<Real>& m = out.ring;
-  const Real height = m.anchor.dot(m.unit_normal), slope = m.unit_direction.dot(m.unit_normal);
-  out.parallel = slope == 0;
-  if (!out.parallel) {
-    out.crossing = m.anchor - (height / slope) * m.unit_direction;
-    out.crosses = out.crossing.squaredNorm() <= disk.radius * disk.radius;
-  }
-  return true;
-}
-
+// crossing, or the line's closest point to the rim when the line does not cross the disk), as
+// against a circle (PieceRoundQuery, line_circle.hpp); elsewhere, and for closest points of a
+// line within sqrt(eps) of parallel to the plane (which may touch a continuum), the general path
+// answers (returns false).
 // The line's distance to the disk is convex (the distance to a convex set, along a line), so a
 // ray or segment that does not hold the line's minimum is closest at its end nearer that
 // minimum: point-disk's closed form there (strictly closest: a convex function falls strictly
 // toward its minimum, so the pair is unique).
-template <class Real, class Piece> struct PieceDiskQuery : LinearDiskQuery<Real, Piece> {
-  using General = LinearDiskQuery<Real, Piece>;
-
+template <class Roots, class Real, class Piece>
+bool choose_from_line(const Piece& piece, const Disk3<Real>& disk, PieceChoice<Real>& out, bool for_closest) {
+  using Choice = PieceChoice<Real>;
+  const PieceLine<Real> pl = piece_line(piece, disk.radius);
+  out.line = pl.line;
+  if (!pl.usable || !line_ring_minimum<Roots>(out.line, disk_rim(disk), out.global)) return false;
+  const LineRingMinimum<Real>& m = out.global;
+  const Real height = m.anchor.dot(m.unit_normal), slope = m.unit_direction.dot(m.unit_normal);
+  bool crosses = false;  // the line crosses the plane inside the rim, at out.crossing
+  if (slope != 0) {
+    out.crossing = m.anchor - (height / slope) * m.unit_direction;
+    crosses = out.crossing.squaredNorm() <= disk.radius * disk.radius;
+  }
+  // A line within sqrt(eps) of parallel to the plane may touch the disk along a chord, or be as
+  // close to a stretch of the rim as to its closest point: the general path judges `unique`.
+  if (for_closest && !(std::abs(slope) > std::sqrt(std::numeric_limits<Real>::epsilon()))) return false;
   // The line's minimum (the crossing, or the line's point closest to the rim) as a parameter of
-  // the piece: inside [lo, hi] the line's answer holds; outside, the end at `t` answers.
-  static bool end_answers(const LineDiskMinimum<Real>& m, const Disk3<Real>& disk, const Linear<Real>& linear,
-                          Real& t) {
-    const int side = piece_side(m.line, disk.center, m.crosses ? m.crossing : m.ring.line_point, linear);
-    if (side == 0) return false;
-    t = side < 0 ? linear.lo : linear.hi;
+  // the piece: inside [lo, hi] the line's answer holds; outside, the nearer end answers.
+  const Linear<Real> linear = as_linear(piece);
+  const int side = piece_side(out.line, disk.center, crosses ? out.crossing : m.line_point, linear);
+  if (side != 0) {
+    out.winner = Choice::kEnd;
+    out.t = side < 0 ? linear.lo : linear.hi;
+    out.value = end_point_distance(piece_end(piece, out.t), disk, m.unit_normal);
     return true;
   }
-
-  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Disk3<Real>& disk) {
-    LineDiskMinimum<Real> m;
-    if (line_disk_minimum<Roots>(piece, disk, m)) {
-      const Linear<Real> linear = as_linear(piece);
-      Real t = 0;
-      if (end_answers(m, disk, linear, t)) return end_point_distance(piece_end(piece, t), disk, m.ring.unit_normal);
-      return m.crosses ? Real(0) : m.ring.distance;
-    }
-    return General::template distance<Roots>(piece, disk);
+  if (crosses) {
+    out.winner = Choice::kCrossing;
+    out.value = 0;
+    return true;
   }
+  if (for_closest && tied_with_mirror(disk_rim(disk), m)) return false;
+  out.value = m.distance;
+  return true;
+}
 
-  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Disk3<Real>& disk) {
-    LineDiskMinimum<Real> m;
-    const Circle3<Real> rim{disk.center, disk.normal, disk.radius};
-    // A line within sqrt(eps) of parallel to the plane may touch the disk along a chord, or be as
-    // close to a stretch of the rim as to its closest point: the general path judges `unique`.
-    if (line_disk_minimum<Roots>(piece, disk, m) &&
-        std::abs(m.ring.unit_direction.dot(m.ring.unit_normal)) > std::sqrt(std::numeric_limits<Real>::epsilon())) {
-      const Linear<Real> linear = as_linear(piece);
-      Real t = 0;
-      if (end_answers(m, disk, linear, t)) return end_point_result(piece, t, disk, m.ring.unit_normal);
-      if (m.crosses) {
-        // One common point: the line meets the plane once.
-        Result<Real> r;
-        r.distance = 0;
-        r.point_a = r.point_b = disk.center + m.crossing;
-        r.param_a = Vec2<Real>(line_param(m.line, disk.center, m.crossing), 0);
-        r.param_b = DiskTarget<Real>::param(Frame<Real>(disk.normal).to_local(m.crossing));
-        return r;
-      }
-      if (!tied_with_mirror(rim, m.ring)) {
-        Result<Real> r = line_ring_result(m.line, rim, m.ring);
-        r.param_b = Vec2<Real>(disk.radius, r.param_b.x());
-        return r;
-      }
-    }
-    return General::template closest<Roots>(piece, disk);
+template <class Real> Result<Real> line_minimum_result(const PieceChoice<Real>& choice, const Disk3<Real>& disk) {
+  if (choice.winner == PieceChoice<Real>::kCrossing) {
+    // One common point: the line meets the plane once.
+    Result<Real> r;
+    r.distance = 0;
+    r.point_a = r.point_b = disk.center + choice.crossing;
+    r.param_a = Vec2<Real>(line_param(choice.line, disk.center, choice.crossing), 0);
+    r.param_b = DiskTarget<Real>::param(Frame<Real>(disk.normal).to_local(choice.crossing));
+    return r;
   }
-};
+  // A rim point: (s, theta) = (R, theta).
+  Result<Real> r = line_ring_result(choice.line, disk_rim(disk), choice.global);
+  r.param_b = Vec2<Real>(disk.radius, r.param_b.x());
+  return r;
+}
+
+template <class Real, class Piece> using PieceDiskQuery = PieceRoundQuery<Real, Piece, DiskTarget<Real>>;
+
 template <class Real> struct Query<Line3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Line3<Real>> {};
 template <class Real> struct Query<Ray3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Ray3<Real>> {};
 template <class Real> struct Query<Segment3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Segment3<Real>> {};

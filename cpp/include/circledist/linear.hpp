@@ -228,22 +228,14 @@ Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& 
   return out;
 }
 
-// Builds the Result from the polished minima: the target's point (Target::point) is the round's
-// local point closest to a local point of the piece. Distinct tied pairs make `unique` false.
+// Builds the Result from the polished minima: the round's side from round_side_result
+// (round_target.hpp; distinct tied pairs make `unique` false), the piece's point here.
 template <class Target, class Real>
 Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Real>& line, const Round<Real>& round,
                                  const Minima<Real>& minima, Real scale) {
-  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
-    return Target::point(p, round.radius, scale, ambiguous);
-  };
-  Result<Real> r;
   const Minimum<Real>& best = minima.best;
-  bool ambiguous = false;
-  const Vec3<Real> pa = line.at(best.x);
-  const Vec3<Real> pb = round_point(pa, ambiguous);
-  const Real apart = distinct_points_tolerance(scale);
-  ambiguous = ambiguous ||
-              another_closest_pair(minima, scale, [&](Real x) { return line.at(x); }, round_point, pa, pb, apart, apart);
+  Result<Real> r = round_side_result<Target>(minima, [&](Real x) { return line.at(x); }, line.at(best.x), round, scale,
+                                             distinct_points_tolerance(scale));
   // The point on the piece: an end point exactly when the minimum sits there; otherwise from the
   // world anchor (accurate relative to its distance from the center, where origin + t direction
   // would err by eps |origin - center| across the line).
@@ -258,11 +250,7 @@ Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Re
   } else {
     r.point_a = round.center + (line.anchor_world + best.x * line.dir_world);
   }
-  r.distance = best.value;
-  r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(t, 0);
-  r.param_b = Target::param(pb);
-  r.unique = !ambiguous;
   return r;
 }
 

@@ -5,7 +5,6 @@
 #pragma once
 
 #include "../minimize.hpp"
-#include "../planar.hpp"
 #include "trig.hpp"
 
 #include <algorithm>

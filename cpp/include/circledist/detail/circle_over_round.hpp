@@ -185,30 +185,17 @@ void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale, Real bou
 }
 
 // Builds the Result for circle A against round B from the polished minima, as
-// linear_round_result does: the target's point (Target::point) is B's local point closest to a
-// local point of A. Distinct tied pairs make `unique` false. Points on A are told apart at A's
-// own size (a tiny circle coaxial with a big one is still a continuum), points on B at the
-// scene's scale.
+// linear_round_result does: B's side from round_side_result (round_target.hpp; distinct tied
+// pairs make `unique` false), A's point here. Points on A are told apart at A's own size (a tiny
+// circle coaxial with a big one is still a continuum), points on B at the scene's scale.
 template <class Target, class Real, int N>
 Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>& c, const Round<Real>& round,
                                  const Minima<Real, N>& minima, Real scale) {
-  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
-    return Target::point(p, round.radius, scale, ambiguous);
-  };
-  Result<Real> r;
   const Minimum<Real>& best = minima.best;
-  bool ambiguous = false;
-  const Vec3<Real> pa = c.at(best.x);
-  const Vec3<Real> pb = round_point(pa, ambiguous);
-  ambiguous = ambiguous || another_closest_pair(minima, scale, [&](Real x) { return c.at(x); }, round_point, pa, pb,
-                                                distinct_points_tolerance(std::min(scale, c.radius)),
-                                                distinct_points_tolerance(scale));
-  r.distance = best.value;
+  Result<Real> r = round_side_result<Target>(minima, [&](Real x) { return c.at(x); }, c.at(best.x), round, scale,
+                                             distinct_points_tolerance(std::min(scale, c.radius)));
   r.point_a = a.center + c.radius * (std::cos(best.x) * c.frame.u + std::sin(best.x) * c.frame.v);
-  r.point_b = round.world(pb);
   r.param_a = Vec2<Real>(best.x, 0);
-  r.param_b = Target::param(pb);
-  r.unique = !ambiguous;
   return r;
 }
 

@@ -111,8 +111,9 @@ template <class Real> using RingTarget = RoundTarget<Real, false>;
 template <class Real> using DiskTarget = RoundTarget<Real, true>;
 
 // The target of a round shape: target_t<Circle3<Real>> is RingTarget<Real>, target_t<Disk3<Real>>
-// DiskTarget<Real>.
-template <class Shape> struct target_of;
+// DiskTarget<Real>. Other shapes have none (no `type`), so that `class = target_t<R>` limits a
+// template to circles and disks.
+template <class Shape> struct target_of {};
 template <class Real> struct target_of<Circle3<Real>> {
   using type = RingTarget<Real>;
 };
@@ -120,5 +121,29 @@ template <class Real> struct target_of<Disk3<Real>> {
   using type = DiskTarget<Real>;
 };
 template <class Shape> using target_t = typename target_of<Shape>::type;
+
+// The round's side of the Result of a shape A against the target, from the polished minima (the
+// caller adds A's point and parameter): the distance, the target's point closest to `pa`, A's
+// local point at the best minimum (Target::point), with its parameter, and `unique`. That is
+// false when the target's point is not the only one (a point on a ring's axis) or when another
+// tied minimum gives a distinct pair (another_closest_pair: points of A, `at(x)`, told apart at
+// `apart_a`, points of the round at the scene's scale).
+template <class Target, class Real, int N, class At>
+Result<Real> round_side_result(const Minima<Real, N>& minima, const At& at, const Vec3<Real>& pa,
+                               const Round<Real>& round, Real scale, Real apart_a) {
+  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
+    return Target::point(p, round.radius, scale, ambiguous);
+  };
+  bool ambiguous = false;
+  const Vec3<Real> pb = round_point(pa, ambiguous);
+  ambiguous = ambiguous ||
+              another_closest_pair(minima, scale, at, round_point, pa, pb, apart_a, distinct_points_tolerance(scale));
+  Result<Real> r;
+  r.distance = minima.best.value;
+  r.point_b = round.world(pb);
+  r.param_b = Target::param(pb);
+  r.unique = !ambiguous;
+  return r;
+}
 
 }  // namespace circledist

@@ -1,0 +1,101 @@
+// The requested effects (effects.hpp): within / intersects / distance_if_within against
+// `distance <= d`, and the counters that show the work done (no polynomial solve where the
+// bounds decide), in double, float and long double.
+#include <circledist/effects.hpp>
+
+#include "check.hpp"
+#include "random.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace circledist;
+
+namespace {
+
+using V = Vec3<double>;
+test_random::Random source(20261122);
+
+template <class A, class B> void check_within_pair(const A& a, const B& b, int& decided) {
+  const double d = distance(a, b);
+  for (double limit : {0.0, 0.5 * d, 0.9 * d, 1.1 * d, 2 * d + 0.1}) {
+    const Stats before = stats();
+    const bool w = within(a, b, limit);
+    const Stats after = stats();
+    if (after.decided_by_bounds > before.decided_by_bounds) {
+      ++decided;
+      CHECK(after.solves == before.solves);
+    }
+    CHECK(w == (d <= limit + 1e-9 * (1 + limit)) || std::abs(d - limit) < 1e-9);
+    CHECK(w == within(b, a, limit));
+    const double bounded = distance_if_within(a, b, limit);
+    CHECK(w ? bounded == d : std::isinf(bounded));
+  }
+  const double ra = source.uniform(0, 0.3), rb = source.uniform(0, 0.3);
+  CHECK(intersects(swept(a, ra), swept(b, rb)) == (d <= ra + rb + 1e-9) || std::abs(d - ra - rb) < 1e-9);
+}
+
+void laziness_cases() {
+  const Disk3<double> disk{V(0, 0, 0), V(0, 0, 1), 1.0};
+  const Circle3<double> ring{V(0, 0, 0), V(0, 0, 1), 1.0};
+  reset_stats();
+  // Well separated.
+  CHECK(!intersects(Circle3<double>{V(10, 0, 0), V(0, 1, 0), 1.0}, disk));
+  CHECK(!intersects(Line3<double>{V(0, 5, 0), V(1, 0, 0)}, ring));
+  CHECK(!within(Segment3<double>{V(0, 0, 2), V(1, 1, 3)}, disk, 1.5));  // above the plane
+  CHECK(!within(swept(source.bezier(0.5), 0.1), Disk3<double>{V(0, 0, 9), V(1, 1, 1), 1.0}, 1.0));
+  // Clearly overlapping.
+  CHECK(intersects(Segment3<double>{V(0.5, 0, -1), V(0.5, 0, 1)}, disk));
+  CHECK(intersects(Circle3<double>{V(0.5, 0, 0), V(1, 0, 0), 0.7}, disk));  // a circle through the disk
+  CHECK(intersects(Disk3<double>{V(0.5, 0, 0), V(1, 0, 0), 1.0}, disk));
+  CHECK(intersects(swept(Circle3<double>{V(1, 0, 0), V(0, 1, 0), 1.0}, 0.6), swept(ring, 0.5)));  // tori
+  CHECK(within(Line3<double>{V(-3, 1, 0.5), V(1, 0, 0)}, ring, 0.6));
+  CHECK(intersects(swept(Line3<double>{V(-3, 1, 0.5), V(1, 0, 0)}, 0.3), swept(ring, 0.25)));
+  CHECK(stats().solves == 0);
+  CHECK(stats().distances == 0);
+  CHECK(stats().within == 10 && stats().decided_by_bounds == 10);
+
+  // The distance never builds closest points; both solve the same polynomials.
+  const Circle3<double> a = source.circle(1), b = source.circle(1);
+  reset_stats();
+  const double d = counted_distance(a, b);
+  const Stats after_distance = stats();
+  CHECK(after_distance.closest_points == 0 && after_distance.distances == 1 && after_distance.solves > 0);
+  const Result<double> r = counted_closest_points(a, b);
+  CHECK(stats().closest_points == 1);
+  CHECK(stats().solves == 2 * after_distance.solves);
+  CHECK(r.distance == d);
+
+  // Random pairs: within agrees with the distance; the bounds decide most of them.
+  int decided = 0;
+  for (int i = 0; i < 30; ++i) {
+    check_within_pair(source.line(4), source.circle(4), decided);
+    check_within_pair(source.segment(4), source.disk(4), decided);
+    check_within_pair(source.circle(4), source.disk(4), decided);
+    check_within_pair(source.disk(4), source.disk(4), decided);
+    check_within_pair(source.circle(4), source.circle(4), decided);
+    check_within_pair(source.bezier(4), source.disk(4), decided);
+  }
+  CHECK(decided > 30 * 6 * 5 / 3);
+  std::printf("within decided by bounds: %d of %d\n", decided, 30 * 6 * 5);
+}
+
+template <class Real> void precisions() {
+  using W = Vec3<Real>;
+  const Circle3<Real> ring{W(0, 0, 0), W(0, 0, 1), Real(1)};
+  const Line3<Real> line{W(-3, 1, Real(0.5)), W(1, 0, 0)};
+  CHECK_NEAR(distance(swept(line, Real(0.2)), ring), Real(0.3), Real(1e-5));
+  CHECK(within(line, ring, Real(0.6)));
+  CHECK(!intersects(line, swept(ring, Real(0.4))));
+  CHECK(intersects(line, swept(ring, Real(0.6))));
+}
+
+}  // namespace
+
+int main() {
+  laziness_cases();
+  precisions<float>();
+  precisions<long double>();
+  return check::finish("test_effects");
+}
