@@ -76,10 +76,11 @@ template <class Real> bool finite_box(const Vec3<Real>& lo, const Vec3<Real>& hi
 }
 
 // A bounded shape's volume from its box and ball, grown by `sweep`; Anywhere when they overflowed.
-template <class Real> Volume<Real> bounded_volume(Vec3<Real> lo, Vec3<Real> hi, const Ball<Real>& ball, Real sweep) {
+template <class Real>
+Volume<Real> bounded_volume(const Vec3<Real>& box_lo, const Vec3<Real>& box_hi, const Ball<Real>& ball, Real sweep) {
   Volume<Real> v;
-  lo.array() -= sweep;
-  hi.array() += sweep;
+  // Copies, not changed by-value parameters (cpp/tests/lto_aggregates.cpp).
+  const Vec3<Real> lo = box_lo.array() - sweep, hi = box_hi.array() + sweep;
   const Real radius = ball.radius + sweep;
   if (!finite_box(lo, hi) || !ball.center.allFinite() || !std::isfinite(radius)) return v;
   v.kind = Volume<Real>::Kind::Bounded;
