@@ -95,15 +95,23 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
     // s = -(w x v).n / |n|^2, t = -(w x u).n / |n|^2 with accurate cross products: eps |w| / sin
     // each, which parts the points by eps |w| only (a shift along a piece moves it off the other
     // by sin times the shift).
-    Real s, t;
-    if (cross2 >= Real(1e-2) * aa * cc) {
-      s = (bb * ee - cc * dd) / cross2;
-      t = (aa * ee - bb * dd) / cross2;
-    } else {
-      s = -accurate_cross(w, v).dot(n) / cross2;
-      t = -accurate_cross(w, u).dot(n) / cross2;
+    Real s = (bb * ee - cc * dd) / cross2, t = (aa * ee - bb * dd) / cross2;
+    if (cross2 < Real(1e-2) * aa * cc) {
+      const Real s_accurate = -accurate_cross(w, v).dot(n) / cross2, t_accurate = -accurate_cross(w, u).dot(n) / cross2;
+      // Kept where the stationary point lies within 1 / eps scene sizes of the scene. Farther,
+      // the pieces are parallel within the scene's rounding (and the front end, which scales
+      // scenes beyond the moderate range back by up to 2^1023, could not even represent the
+      // points): the dot-product values stand, as before, with `unique` false from the
+      // parallel test below.
+      const Real scene = std::max({w.cwiseAbs().maxCoeff(), a.origin.cwiseAbs().maxCoeff(), b.origin.cwiseAbs().maxCoeff()});
+      const Real far = scene / std::numeric_limits<Real>::epsilon();
+      if (std::abs(s_accurate) * std::sqrt(aa) <= far && std::abs(t_accurate) * std::sqrt(cc) <= far) {
+        s = s_accurate;
+        t = t_accurate;
+      }
     }
-    if (s >= a.lo && s <= a.hi && t >= b.lo && t <= b.hi) best = {std::abs(w.dot(n)) / std::sqrt(cross2), s, t, true};
+    if (s >= a.lo && s <= a.hi && t >= b.lo && t <= b.hi)
+      best = {std::abs(w.dot(n)) / std::sqrt(cross2), s, t, true};
   }
   if (std::isfinite(a.lo)) consider(a.lo, t_for(a.lo));
   if (std::isfinite(a.hi)) consider(a.hi, t_for(a.hi));
