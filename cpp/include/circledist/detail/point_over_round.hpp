@@ -19,8 +19,9 @@ namespace circledist::detail {
 // need one square root of |W|^2 and one reciprocal, not a unit normal (three divisions) and then
 // a projection: the cheap path of every point query. The angle of q in the round's frame
 // (primitives.hpp, Frame: U' = (-W.z, 0, W.x) or (0, W.z, -W.y), U = U' / |U'|, V = N x U) is
-//   atan2(V . q, U . q) = atan2((W x U') . d, s (U' . d)),
-// since U' and W x U' are orthogonal to W (U' . W is 0 exactly), with no |U'| at all.
+//   atan2(V . q, U . q) = atan2((W x U') . d, s (U' . d)) = atan2(-U' . (W x d), s (U' . d)),
+// since U' and W x U' are orthogonal to W (U' . W is 0 exactly), with no |U'| at all, and the
+// triple product reuses W x d.
 // Rounding: W x d carries eps |W| |d|, so rho carries eps |d|, as d - z N would; the angle
 // carries eps |d| / rho, the conditioning of the angle of a point near the axis.
 //
@@ -71,26 +72,24 @@ template <class Real> struct PointOverRound {
   // The rim point at `radius` in the direction of q (not on the axis), scaled by q's own length:
   // W x d's component along W (its rounding, up to eps |W| |d|, large beside |W x d| = s rho near
   // the axis) counts in `cross` but not in q.
-  CIRCLEDIST_INLINE Vec3<Real> on_rim(const Vec3<Real>& center, Real radius) const {
-    const InPlane q = in_plane();
+  CIRCLEDIST_INLINE static Real to_rim(const InPlane& q, Real radius) {
     const Real length = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
-    const Real scale = length > 0 ? radius / length : Real(0);  // 0: a zero radius on the axis
+    return length > 0 ? radius / length : Real(0);  // 0: a zero radius on the axis
+  }
+  // The plane point C + scale q: on the rim at scale to_rim(q, R), below P at 1 / s^2.
+  CIRCLEDIST_INLINE static Vec3<Real> at(const Vec3<Real>& center, const InPlane& q, Real scale) {
     return Vec3<Real>(center.x() + scale * q.x, center.y() + scale * q.y, center.z() + scale * q.z);
   }
-  // The point below P in the plane, C + q / s^2.
-  CIRCLEDIST_INLINE Vec3<Real> below(const Vec3<Real>& center) const {
+  CIRCLEDIST_INLINE Vec3<Real> on_rim(const Vec3<Real>& center, Real radius) const {
     const InPlane q = in_plane();
-    const Real scale = Real(1) / norm2;
-    return Vec3<Real>(center.x() + scale * q.x, center.y() + scale * q.y, center.z() + scale * q.z);
+    return at(center, q, to_rim(q, radius));
   }
 
   // The angle of q in the round's frame (see above); 0 on the axis.
   CIRCLEDIST_INLINE Real angle() const {
     const bool x_major = std::abs(wx) > std::abs(wy);  // Frame's choice, on W (scaling keeps it)
-    const Real ux = x_major ? -wz : Real(0), uy = x_major ? Real(0) : wz, uz = x_major ? wx : -wy;
-    const Real along_u = ux * dx + uy * dy + uz * dz;
-    const Real vx = wy * uz - wz * uy, vy = wz * ux - wx * uz, vz = wx * uy - wy * ux;
-    const Real along_v = vx * dx + vy * dy + vz * dz;
+    const Real along_u = x_major ? wx * dz - wz * dx : wz * dy - wy * dz;
+    const Real along_v = x_major ? wz * mx - wx * mz : wy * mz - wz * my;
     return atan2(along_v, s * along_u);
   }
 
