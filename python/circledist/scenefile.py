@@ -219,7 +219,7 @@ class SceneFile:
         for (kind, *_), (values, positions) in singles.items():
             parts.append((kind, [np.stack(v) for v in zip(*values)], np.array(positions, np.int64), True))
         world = Scene()
-        world._insert(names, parts)
+        world._insert(names, parts, distinct=True)  # a validated file's names: strings, each of its own
         return world
 
 
