@@ -71,9 +71,10 @@ class _Group:
     """Shapes of one kind (and, for Bezier curves, one control point count), one dtype per field,
     with a sweep or without, column-stored (a sweep column of zeros when without).
 
-    Single shapes are appended to a Python list, their fields' arrays as a row (the cheapest step
-    per call), and moved into the growing arrays when the arrays are next read: adding stays O(1),
-    reading after adds O(adds).
+    Single shapes are appended to a Python list, their fields' arrays as a tuple (the cheapest
+    step per call; a tuple of arrays, unlike a list, leaves the cycle collector's lists), and moved
+    into the growing arrays when the arrays are next read: adding stays O(1), reading after adds
+    O(adds).
     """
 
     def __init__(self, kind: str, trailing: list[tuple], dtypes: list, swept: bool = True):
@@ -82,7 +83,7 @@ class _Group:
         self.names = KIND_FIELDS[kind] + ("sweep",)
         self.swept = swept
         self.columns = [_Grown(t, dtype) for t, dtype in zip(trailing, dtypes)]
-        self.pending: list[list] = []  # rows: one shape's fields, the sweep last
+        self.pending: list[tuple] = []  # rows: one shape's fields, the sweep last
         self.id_column = _Grown((), np.int64)
         self.pending_ids: list[int] = []
         self.size = 0
@@ -90,7 +91,7 @@ class _Group:
     def __len__(self) -> int:
         return self.size
 
-    def append(self, values: list, item: int) -> int:
+    def append(self, values: tuple, item: int) -> int:
         """Adds one shape's fields (the sweep last) as item `item`; returns its row."""
         self.pending.append(values)
         self.pending_ids.append(item)
@@ -292,10 +293,10 @@ class Scene:
         # One shape: its fields as they are (trailing dimensions and dtypes), no broadcasting to do;
         # to_arrays() lists them in the table's order (KIND_FIELDS), then the sweep if it was given.
         kind = shape.kind
-        values = list(shape.to_arrays().values())
+        values = tuple(shape.to_arrays().values())
         swept = len(values) > len(KIND_FIELDS[kind])
         if not swept:
-            values.append(_NO_SWEEP)
+            values += (_NO_SWEEP,)
         group, number = self._group(kind, values[0].shape if kind == "Bezier" else None, values, swept)
         item = len(self._names)
         self._item_group.append(number)
