@@ -293,6 +293,36 @@ def test_pairs_within_over_batches(tmp_path):
         sf.scene_from_json(doc, "pairs.json")
 
 
+CABLE = {"kind": "bezier", "control_points": [[0, 0, 0], [1, 1, 0], [2, 0, 0]]}
+CABLES = {"kind": "bezier", "count": 2, "control_points": CABLE["control_points"]}
+HOOP = {"name": "hoop", "kind": "circle", "center": [0, 0, 3], "normal": [0, 0, 1], "radius": 1}
+
+
+@pytest.mark.parametrize("shapes, query, error", [
+    ([{"name": "cable", **CABLE}, HOOP], {"a": "cable", "effects": ["nearest"]}, None),
+    ([{"name": "cable", **CABLE}, {"name": "cable2", **CABLE}, HOOP], {"a": "cable", "effects": ["nearest"]},
+     "$.queries[0].a: expected shapes circledist has a query between: none exists between a Bezier and a Bezier"),
+    ([{"name": "cables", **CABLES, "count": 1}, HOOP], {"a": "cables[0]", "effects": ["within"], "d": 1}, None),
+    ([{"name": "cables", **CABLES}, HOOP], {"a": "cables[1]", "effects": ["intersects"]},
+     "$.queries[0].a: expected shapes circledist has a query between: none exists between a Bezier and a Bezier"),
+    ([{"name": "cables", **CABLES, "count": 1}, HOOP], {"effects": ["pairs_within"], "d": 1}, None),
+    ([{"name": "cable", **CABLE}, {"name": "cables", **CABLES, "count": 1}], {"effects": ["pairs_within"], "d": 1},
+     "$.queries[0].effects: expected a scene whose every pair of kinds has a query: none exists between a Bezier "
+     "and a Bezier"),
+])
+def test_queries_against_the_scene_are_checked_by_the_kinds_it_holds(shapes, query, error):
+    """A query against the rest of the scene needs a query between its shape's kind and every
+    other shape's (its own shape left out unless it is one of a batch of more); pairs_within
+    between every two kinds, a kind with one shape left out. Many queries and one check each."""
+    doc = {**HEAD, "shapes": shapes, "queries": [query] * 50}
+    if error is None:
+        assert len(sf.scene_from_json(doc, "q.json").queries) == 50
+    else:
+        with pytest.raises(sf.SceneFileError) as raised:
+            sf.scene_from_json(doc, "q.json")
+        assert str(raised.value) == "q.json: " + error
+
+
 def _same_scene(a, b):
     assert a.description == b.description and a.queries == b.queries
     assert [(e.name, e.kind, e.count) for e in a.entries] == [(e.name, e.kind, e.count) for e in b.entries]

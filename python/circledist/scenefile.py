@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import contextlib
 import gc
+from collections import Counter
 import json
 import math
 import operator
@@ -404,6 +405,13 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
     """Semantic checks of schema-valid queries; returns them as dicts with every key."""
     by_name = {e.name: e for e in entries}
     supported = {tuple(p) for p in _core._query_kinds()}
+    # Entries and shapes of each kind, for the checks against the whole scene: counted once (a
+    # count per query made q queries over n shapes cost q * n).
+    entries_of_kind: Counter = Counter()
+    shapes_of_kind: Counter = Counter()
+    for e in entries if specs else ():
+        entries_of_kind[e.class_name] += 1
+        shapes_of_kind[e.class_name] += 1 if e.count is None else e.count
     out = []
     for i, spec in enumerate(specs):
         base = f"{prefix}$.queries[{i}]"
@@ -436,11 +444,10 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
             for key in ("a", "b", "k"):
                 if key in spec:
                     raise fail(key, "not expected: pairs_within takes no shapes and no k")
-            kinds = sorted({e.class_name for e in entries})
+            kinds = sorted(shapes_of_kind)
             for i_kind, ka in enumerate(kinds):
                 for kb in kinds[i_kind:]:
-                    single = ka == kb and sum(1 if e.count is None else e.count
-                                              for e in entries if e.class_name == ka) < 2
+                    single = ka == kb and shapes_of_kind[ka] < 2
                     if not single and (ka, kb) not in supported:
                         raise fail("effects", f"expected a scene whose every pair of kinds has a query: none "
                                               f"exists between a {ka} and a {kb}")
@@ -457,8 +464,8 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
             if "b" in spec:
                 others = [refs["b"][0].class_name]
             else:  # every kind in the scene but the query's own shape
-                others = {e.class_name for e in entries
-                          if e is not a_entry or (e.count is not None and e.count > 1)}
+                own = a_entry.class_name if a_entry.count is None or a_entry.count == 1 else None
+                others = {kind for kind, n in entries_of_kind.items() if n > (kind == own)}
             for kb in sorted(others):
                 if (a_entry.class_name, kb) not in supported:
                     raise fail("b" if "b" in spec else "a", f"expected shapes circledist has a query between: "
