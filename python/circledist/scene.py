@@ -107,7 +107,8 @@ class _Group:
 
     def _flush(self) -> None:
         if self.pending_ids:
-            for column, pending in zip(self.columns, zip(*self.pending)):
+            for j, column in enumerate(self.columns):
+                pending = [row[j] for row in self.pending]
                 column.extend(np.array(pending, dtype=column.data.dtype).reshape((-1,) + column.data.shape[1:]))
             self.pending.clear()
             self.id_column.extend(np.array(self.pending_ids, dtype=np.int64))
