@@ -410,8 +410,9 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
     entries_of_kind: Counter = Counter()
     shapes_of_kind: Counter = Counter()
     for e in entries if specs else ():
-        entries_of_kind[e.class_name] += 1
-        shapes_of_kind[e.class_name] += 1 if e.count is None else e.count
+        kind = e.class_name
+        entries_of_kind[kind] += 1
+        shapes_of_kind[kind] += 1 if e.count is None else e.count
     out = []
     for i, spec in enumerate(specs):
         base = f"{prefix}$.queries[{i}]"
