@@ -967,7 +967,8 @@ def _item_encoder():
     of the time of a short item), or json.dumps where the C encoder is missing or differs."""
     make = getattr(json.encoder, "c_make_encoder", None)
     try:
-        encoder = make(None, None, json.encoder.encode_basestring_ascii, None, ": ", ", ", False, False, True)
+        encoder = make(None, json.JSONEncoder().default, json.encoder.encode_basestring_ascii, None, ": ", ", ",
+                       False, False, True)
 
         def encode(item) -> str:
             return "".join(encoder(item, 0))
