@@ -355,3 +355,85 @@ def test_a_pickle_of_float64_groups_without_dtypes_still_loads():
     assert old.names == ["ring", "dot"]
     assert old["dot"].to_arrays().keys() == {"p", "sweep"}
     assert old.nearest(cd.Point([0, 0, 1.5])) == [("dot", 0.5)]
+
+
+def _state(scene):
+    """Everything a scene stores: names, groups (keys, kinds, each field's array with its dtype,
+    item numbers) and each item's group and row."""
+    state = scene.__getstate__()
+    groups = [(key, kind, [(f.dtype, f.shape, f.tobytes()) for f in fields], ids.tolist())
+              for key, kind, fields, ids in state["groups"]]
+    return state["names"], groups, state["item_group"].tolist(), state["item_row"].tolist()
+
+
+def test_a_scene_added_one_by_one_equals_the_scene_extended_by_batches():
+    """Shapes of every kind, dtypes and sweeps (given or not) added one by one, extended as batches
+    (one per run of shapes alike: kind, control points, dtypes, sweep given), or half and half, in
+    the same order: the same stored scene, shapes and answers; reads in between change nothing."""
+    f32, ld = np.float32, np.longdouble
+    _, shapes = mixed_scene(43, n=120, box=5.0, kinds=("Disk", "Circle", "Segment", "Point", "Line"))
+    _, curves = mixed_scene(44, n=12, box=5.0, kinds=("Bezier",))
+    shapes += curves + [cd.Bezier(np.arange(6.0).reshape(2, 3) + i) for i in range(3)]  # another degree
+    dtypes = [{}, {"center": f32, "p": f32, "p0": f32, "origin": f32, "control_points": f32, "sweep": f32},
+              {"radius": ld, "p1": ld, "direction": ld}]
+    shapes = [as_dtype(s, dtypes[(i // 5) % 3]) for i, s in enumerate(shapes)]
+    runs = []  # [signature, [(name, shape), ...]]: consecutive shapes that one batch can hold
+    for i, s in enumerate(shapes):
+        arrays = s.to_arrays()
+        signature = (s.kind, arrays[next(iter(arrays))].shape, tuple((k, v.dtype) for k, v in arrays.items()))
+        if not runs or runs[-1][0] != signature:
+            runs.append([signature, []])
+        runs[-1][1].append((f"s{i}", s))
+    assert len(runs) > 20 and max(len(r) for _, r in runs) >= 5
+    one_by_one, batched, mixed = cd.Scene(), cd.Scene(), cd.Scene()
+    for n, (_, run) in enumerate(runs):
+        arrays = [s.to_arrays() for _, s in run]
+        batch = getattr(cd, run[0][1].kind).from_arrays({k: np.stack([a[k] for a in arrays]) for k in arrays[0]})
+        batched.extend([name for name, _ in run], batch)
+        for name, s in run:
+            one_by_one.add(name, s)
+        if n % 2:
+            mixed.extend([name for name, _ in run], batch)
+        else:
+            for name, s in run:
+                mixed.add(name, s)
+        if n % 7 == 3:  # a read in between: the single shapes so far move into the arrays
+            assert one_by_one[run[-1][0]].kind == run[-1][1].kind
+    assert _state(one_by_one) == _state(batched) == _state(mixed)
+    for name, s in zip(one_by_one.names, shapes):
+        for scene in (one_by_one, batched, mixed):
+            got, want = scene[name].to_arrays(), s.to_arrays()
+            assert got.keys() == want.keys()
+            assert all(got[k].dtype == want[k].dtype and np.array_equal(got[k], want[k]) for k in want)
+    probe = cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5)
+    answers = [(s.nearest(probe, 9), s.within(probe, 0.7), s.nearest("s7", 4), s.within("s3", 1.0))
+               for s in (one_by_one, batched, mixed)]
+    assert answers[0] == answers[1] == answers[2]
+    d = brute_distances(probe, shapes)
+    assert answers[0][0] == [(f"s{i}", d[i]) for i in sorted(range(len(shapes)), key=lambda i: (d[i], i))[:9]]
+
+
+def test_names_are_checked_as_before_in_batches():
+    """extend refuses as add does (the first bad name, in order), whether the names are given or
+    made from a prefix, and leaves the scene as it was."""
+    scene = cd.Scene()
+    scene.extend("d", cd.Point(np.zeros((3, 3))))
+    before = _state(scene)
+    three = cd.Point(np.ones((3, 3)))
+    for names, error, message in [
+        (["a", "b", "a"], ValueError, "a shape named 'a' is already in the scene"),
+        (["a", "d1", "d1"], ValueError, "a shape named 'd1' is already in the scene"),
+        (["a", 7, "a"], TypeError, "shape names must be strings, got 7"),
+        (["a", None, "b"], TypeError, "shape names must be strings, got None"),
+        (["a", ["x"], "b"], TypeError, r"shape names must be strings, got \['x'\]"),
+        ("d", ValueError, "a shape named 'd0' is already in the scene"),
+        (["x", "y"], ValueError, "2 names for a batch of 3 shapes"),
+    ]:
+        with pytest.raises(error, match=message):
+            scene.extend(names, three)
+        assert _state(scene) == before
+    class Name(str):
+        pass
+    scene.extend([Name("e0"), "e1", Name("e2")], three)  # str subclasses are strings
+    scene.extend("f", three)
+    assert scene.names == ["d0", "d1", "d2", "e0", "e1", "e2", "f0", "f1", "f2"]

@@ -7,6 +7,7 @@ index, what was expected; exit status 2)."""
 
 import copy
 import json
+import re
 import subprocess
 import sys
 import time
@@ -21,6 +22,7 @@ sf = pytest.importorskip("circledist.scenefile")
 from circledist import _schema  # noqa: E402
 
 HEAD = {"format": "circledist-scene", "version": 1}
+RING = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
 
 BATCH_SCENE = {
     **HEAD,
@@ -291,6 +293,36 @@ def test_pairs_within_over_batches(tmp_path):
         sf.scene_from_json(doc, "pairs.json")
 
 
+CABLE = {"kind": "bezier", "control_points": [[0, 0, 0], [1, 1, 0], [2, 0, 0]]}
+CABLES = {"kind": "bezier", "count": 2, "control_points": CABLE["control_points"]}
+HOOP = {"name": "hoop", "kind": "circle", "center": [0, 0, 3], "normal": [0, 0, 1], "radius": 1}
+
+
+@pytest.mark.parametrize("shapes, query, error", [
+    ([{"name": "cable", **CABLE}, HOOP], {"a": "cable", "effects": ["nearest"]}, None),
+    ([{"name": "cable", **CABLE}, {"name": "cable2", **CABLE}, HOOP], {"a": "cable", "effects": ["nearest"]},
+     "$.queries[0].a: expected shapes circledist has a query between: none exists between a Bezier and a Bezier"),
+    ([{"name": "cables", **CABLES, "count": 1}, HOOP], {"a": "cables[0]", "effects": ["within"], "d": 1}, None),
+    ([{"name": "cables", **CABLES}, HOOP], {"a": "cables[1]", "effects": ["intersects"]},
+     "$.queries[0].a: expected shapes circledist has a query between: none exists between a Bezier and a Bezier"),
+    ([{"name": "cables", **CABLES, "count": 1}, HOOP], {"effects": ["pairs_within"], "d": 1}, None),
+    ([{"name": "cable", **CABLE}, {"name": "cables", **CABLES, "count": 1}], {"effects": ["pairs_within"], "d": 1},
+     "$.queries[0].effects: expected a scene whose every pair of kinds has a query: none exists between a Bezier "
+     "and a Bezier"),
+])
+def test_queries_against_the_scene_are_checked_by_the_kinds_it_holds(shapes, query, error):
+    """A query against the rest of the scene needs a query between its shape's kind and every
+    other shape's (its own shape left out unless it is one of a batch of more); pairs_within
+    between every two kinds, a kind with one shape left out. Many queries and one check each."""
+    doc = {**HEAD, "shapes": shapes, "queries": [query] * 50}
+    if error is None:
+        assert len(sf.scene_from_json(doc, "q.json").queries) == 50
+    else:
+        with pytest.raises(sf.SceneFileError) as raised:
+            sf.scene_from_json(doc, "q.json")
+        assert str(raised.value) == "q.json: " + error
+
+
 def _same_scene(a, b):
     assert a.description == b.description and a.queries == b.queries
     assert [(e.name, e.kind, e.count) for e in a.entries] == [(e.name, e.kind, e.count) for e in b.entries]
@@ -347,6 +379,112 @@ def test_write_scene_refuses_what_no_reader_accepts(tmp_path):
     with pytest.raises(sf.SceneFileError, match=r"\$\.shapes\[0\]\.name: expected a name"):
         sf.write_scene(tmp_path / "bad.json", {"ring[0]": ring})
     assert list(tmp_path.iterdir()) == []  # nothing written, no temporary files
+
+
+def _writer_corpus():
+    """Shapes write_scene must write as they are: every kind single and in batches (columns and
+    one value for all, a 2-d batch), float32 and long double fields, -0.0, numbers near a
+    double's limits, sweeps given as zero and not given, Bezier curves of every degree."""
+    rng = np.random.default_rng(18)
+    shapes = {
+        "p": cd.Point([-0.0, 1e-300, 1.7e308]),
+        "p-swept": cd.Point([1, 2, 3], sweep=0.0),
+        "line": cd.Line(rng.normal(size=3), [5e-324, 0, 0], sweep=0.5),
+        "ray": cd.Ray(np.float32([0.1, 0.2, 0.3]), np.float32([0, 1, 0])),
+        "seg": cd.Segment([0, 0, 0], [0, 0, 0], sweep=np.longdouble(1) / 3),
+        "ring32": cd.Circle(np.float32([0.1, 0, 0]), [0, 0, 1], np.float32(0.7)),
+        "ring-ld": cd.Circle([0, 0, 0], np.array([1, 1, 0], np.longdouble), np.longdouble(2) / 3),
+        "coin": cd.Disk(rng.normal(size=3), rng.normal(size=3), 0.25, sweep=1e-310),
+        "rings": cd.Circle(rng.normal(size=(5, 3)), [0, 0, 1], rng.uniform(0.1, 2, 5), sweep=[0, 0, 0, 0, -0.0]),
+        "grid": cd.Disk(rng.normal(size=(2, 3, 3)), rng.normal(size=(2, 3, 3)), 0.5, sweep=rng.uniform(0, 1, (2, 3))),
+        "one": cd.Point(rng.normal(size=(1, 3)), sweep=0.1),
+    }
+    for m in range(2, sf.MAX_CONTROL_POINTS + 1):
+        shapes[f"cable{m}"] = cd.Bezier(rng.normal(size=(m, 3)), sweep=0.01 * m)
+        shapes[f"cables{m}"] = cd.Bezier(rng.normal(size=(3, m, 3)))
+    for i in range(40):  # many single shapes of a kind: one column in the writer's check
+        shapes[f"s{i}"] = cd.Segment(rng.normal(size=3), rng.normal(size=3), sweep=[0.0, 0.2][i % 2])
+    return shapes
+
+
+def _writer_check(shapes, queries=(), description=""):
+    """write_scene's own check of what it writes (True: no reader's check needed)."""
+    entries, columns = sf._entries_of(shapes)
+    return sf._written_scene_is_valid(entries, columns, json.loads(json.dumps(list(queries))), description)
+
+
+def test_write_scene_writes_every_number_as_it_reads_back(tmp_path):
+    """The writer checks only what it does not make valid itself; what it writes reads back bit
+    for bit (as float64), in JSON as in .npz, and its check passes exactly where a reader accepts."""
+    shapes = _writer_corpus()
+    queries = [{"a": "rings[4]", "effects": ["nearest"], "k": 3}, {"a": "p", "b": "grid[5]", "effects": ["distance"]}]
+    assert _writer_check(shapes, queries, "corpus")
+    path = tmp_path / "corpus.json"
+    sf.write_scene(path, shapes, queries, description="corpus")
+    assert len(path.read_text().splitlines()) == len(shapes) + len(queries) + 9  # one shape a line
+    back = sf.read_scene(str(path))
+    sf.write_scene(tmp_path / "corpus.npz", shapes, queries, description="corpus")
+    _same_scene(back, sf.read_scene(str(tmp_path / "corpus.npz")))
+    assert back.queries_as_written() == queries and back.description == "corpus"
+    assert [e.name for e in back.entries] == list(shapes)
+    for entry in back.entries:
+        shape = shapes[entry.name]
+        count = None if shape.batch_shape == () else int(np.prod(shape.batch_shape))
+        assert entry.count == count
+        for field in entry.fields:
+            got = np.asarray(entry.fields[field])  # a batch's: count rows
+            want = np.asarray(getattr(shape, field), dtype=np.float64)
+            if count is not None:
+                want = np.broadcast_to(want, shape.batch_shape + got.shape[1:]).reshape(got.shape)
+            assert got.shape == want.shape, (entry.name, field)
+            if field == sf._SWEEP and not want.any():  # a zero sweep (-0.0 too) is left out, read as 0
+                assert not got.any(), entry.name
+                continue
+            assert np.array_equal(got.view(np.uint64), want.view(np.uint64)), (entry.name, field)
+
+
+@pytest.mark.parametrize("label, shapes, queries, description, message", [
+    ("a name with [", {"ring[0]": RING}, [], "", r"\$\.shapes\[0\]\.name: expected a name: a non-empty string "
+                                                   r"without '\[', '\]' or '/', got \"ring\[0\]\"$"),
+    ("an empty name", {"": RING}, [], "", r"\$\.shapes\[0\]\.name: expected a name"),
+    ("a name twice", [("a", RING), ("a", RING)], [], "",
+     r"\$\.shapes\[1\]\.name: expected a name of its own, got \"a\", used by an earlier shape$"),
+    ("names equal as text", [(1, RING), ("1", RING)], [], "", r"\$\.shapes\[1\]\.name: expected a name of its own"),
+    ("no shapes", {}, [], "", r"\$\.shapes: expected a non-empty array of shapes, got \[\]$"),
+    ("an empty batch", {"none": cd.Point(np.zeros((0, 3)))}, [], "",
+     r"\$\.shapes\[0\]\.count \(shape 'none'\): expected the number of shapes in the batch: an integer >= 1, got 0$"),
+    ("a description not text", {"ring": RING}, [], 5, r"\$\.description: expected a string, got 5$"),
+    ("a query's unknown shape", {"ring": RING}, [{"a": "ring", "b": "nope", "effects": ["distance"]}], "",
+     r"\$\.queries\[0\]\.b: expected the name of a shape of the scene, got \"nope\"$"),
+    ("a query's NaN", {"ring": RING, "coin": RING}, [{"a": "ring", "effects": ["within"], "d": float("nan")}], "",
+     r"\$\.queries\[0\]\.d: expected a number >= 0, got NaN$"),
+    ("a query's unknown field", {"ring": RING}, [{"a": "ring", "effects": ["nearest"], "q": 1}], "",
+     r"\$\.queries\[0\]\.q: unknown field"),
+    ("an effect of pairs", {"ring": RING, "coin": RING}, [{"a": "ring", "effects": ["distance"]}], "",
+     r"\$\.queries\[0\]\.effects: expected effects against the rest of the scene"),
+])
+def test_write_scene_refuses_as_a_reader_would(tmp_path, label, shapes, queries, description, message):
+    """What the writer does not make valid itself is checked: its check refuses, and the error is
+    the reader's, naming the entry or query and the field; nothing is written."""
+    assert not _writer_check(shapes, queries, description)
+    path = tmp_path / "bad.json"
+    with pytest.raises(sf.SceneFileError, match=f"^{re.escape(str(path))}: " + message):
+        sf.write_scene(path, shapes, queries, description=description)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_writer_check_refuses_numbers_a_reader_refuses():
+    """Numbers the library's shapes cannot hold but a conversion to float64 could make (the
+    columns the writer checks): not finite, a zero direction, a negative length."""
+    entries, columns = sf._entries_of({"rail": cd.Line([0, 0, 0], [1, 0, 0]),
+                                       "rails": cd.Line([0, 0, 0], [[1, 0, 0]] * 2)})
+    assert sf._written_scene_is_valid(entries, columns, [], "")
+    for kind, group, rows in columns:
+        for field, bad in (("origin", np.inf), ("direction", 0.0), ("sweep", -1.0), ("origin", np.nan)):
+            spoilt = {f: np.array(c) for f, c in group.items()}
+            spoilt[field][-1] = bad
+            assert sf._refused_rows(kind, spoilt, rows).tolist() == [False] * (rows - 1) + [True], (field, bad)
+            assert not sf._written_scene_is_valid(entries, [(kind, spoilt, rows)], [], "")
 
 
 def _npz(tmp_path, arrays, name="scene.npz"):

@@ -30,6 +30,9 @@ KEYWORDS = ANNOTATIONS | {
 
 Error = Tuple[str, str]
 
+_ARRAY_KEYWORDS = ("minItems", "maxItems", "items", "uniqueItems")
+_OBJECT_KEYWORDS = ("required", "properties", "additionalProperties")
+
 _TYPE_WORDS = {"object": "an object", "array": "an array", "string": "a string", "number": "a number",
                "integer": "an integer", "boolean": "true or false", "null": "null"}
 
@@ -145,7 +148,9 @@ def _const_test(const: Any) -> Predicate:
     return lambda v: _equal(v, const)
 
 
-def _array_test(schema: dict, item: Optional[Predicate]) -> Predicate:
+def _array_test(schema: dict, item: Optional[Predicate], other: bool = True) -> Predicate:
+    """The array keywords; `other`: the answer for a value that is no array (False where the
+    node's type is "array": the type test folded in)."""
     low = schema.get("minItems", 0)
     high = schema.get("maxItems")
     unique = bool(schema.get("uniqueItems"))
@@ -153,7 +158,7 @@ def _array_test(schema: dict, item: Optional[Predicate]) -> Predicate:
 
     def array(v):
         if not isinstance(v, list):
-            return True
+            return other
         n = len(v)
         if n < low or (high is not None and n > high):
             return False
@@ -175,14 +180,16 @@ def _array_test(schema: dict, item: Optional[Predicate]) -> Predicate:
     return array
 
 
-def _object_test(schema: dict, properties: dict, extra: Any) -> Predicate:
+def _object_test(schema: dict, properties: dict, extra: Any, other: bool = True) -> Predicate:
+    """The object keywords; `other`: the answer for a value that is no object (False where the
+    node's type is "object": the type test folded in)."""
     required = tuple(schema.get("required", ()))
     checked = tuple((key, test) for key, test in properties.items() if test is not _always)
     names = frozenset(properties)
 
     def obj(v):
         if not isinstance(v, dict):
-            return True
+            return other
         for key in required:
             if key not in v:
                 return False
@@ -293,8 +300,17 @@ class Validator:
         tests = []
         if "$ref" in schema:
             tests.append(self.test(self._resolve(schema["$ref"])))
-        if "type" in schema:
-            tests.append(_type_test(schema["type"] if isinstance(schema["type"], list) else [schema["type"]]))
+        # A node of one type whose other keywords test that type folds the type test into theirs
+        # (one call per value instead of two): they answer False, not True, for other values.
+        types = schema.get("type", [])
+        types = types if isinstance(types, list) else [types]
+        only = types[0] if len(types) == 1 else None
+        arrays = any(k in schema for k in _ARRAY_KEYWORDS)
+        objects = any(k in schema for k in _OBJECT_KEYWORDS)
+        folded = (only == "string" and "pattern" in schema) or (only == "number" and "minimum" in schema) \
+            or (only == "array" and arrays) or (only == "object" and objects)
+        if "type" in schema and not folded:
+            tests.append(_type_test(types))
         if "const" in schema:
             tests.append(_const_test(schema["const"]))
         if "enum" in schema:
@@ -306,17 +322,24 @@ class Validator:
                 tests.append(lambda v: any(_equal(v, o) for o in options))
         if "minimum" in schema:
             low = schema["minimum"]
-            tests.append(lambda v: not _is_number(v) or v >= low)
+            if folded and only == "number":
+                tests.append(lambda v: _is_number(v) and v >= low)
+            else:
+                tests.append(lambda v: not _is_number(v) or v >= low)
         if "pattern" in schema:
             search = re.compile(schema["pattern"]).search
-            tests.append(lambda v: not isinstance(v, str) or search(v) is not None)
-        if any(k in schema for k in ("minItems", "maxItems", "items", "uniqueItems")):
-            tests.append(_array_test(schema, self.test(schema["items"]) if "items" in schema else None))
-        if any(k in schema for k in ("required", "properties", "additionalProperties")):
+            if folded and only == "string":
+                tests.append(lambda v: isinstance(v, str) and search(v) is not None)
+            else:
+                tests.append(lambda v: not isinstance(v, str) or search(v) is not None)
+        if arrays:
+            tests.append(_array_test(schema, self.test(schema["items"]) if "items" in schema else None,
+                                     other=not (folded and only == "array")))
+        if objects:
             properties = {key: self.test(sub) for key, sub in schema.get("properties", {}).items()}
             extra = schema.get("additionalProperties")
             extra = None if extra is None or extra is True else False if extra is False else self.test(extra)
-            tests.append(_object_test(schema, properties, extra))
+            tests.append(_object_test(schema, properties, extra, other=not (folded and only == "object")))
         if "allOf" in schema:
             subs = [self.test(sub) for sub in schema["allOf"]]
             found = _discriminator(schema["allOf"])

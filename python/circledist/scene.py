@@ -71,8 +71,10 @@ class _Group:
     """Shapes of one kind (and, for Bezier curves, one control point count), one dtype per field,
     with a sweep or without, column-stored (a sweep column of zeros when without).
 
-    Single shapes are appended to Python lists (the cheapest step per call) and moved into the
-    growing arrays when the arrays are next read: adding stays O(1), reading after adds O(adds).
+    Single shapes are appended to a Python list, their fields' arrays as a tuple (the cheapest
+    step per call; a tuple of arrays, unlike a list, leaves the cycle collector's lists), and moved
+    into the growing arrays when the arrays are next read: adding stays O(1), reading after adds
+    O(adds).
     """
 
     def __init__(self, kind: str, trailing: list[tuple], dtypes: list, swept: bool = True):
@@ -81,7 +83,7 @@ class _Group:
         self.names = KIND_FIELDS[kind] + ("sweep",)
         self.swept = swept
         self.columns = [_Grown(t, dtype) for t, dtype in zip(trailing, dtypes)]
-        self.pending: list[list] = [[] for _ in trailing]
+        self.pending: list[tuple] = []  # rows: one shape's fields, the sweep last
         self.id_column = _Grown((), np.int64)
         self.pending_ids: list[int] = []
         self.size = 0
@@ -89,11 +91,12 @@ class _Group:
     def __len__(self) -> int:
         return self.size
 
-    def append(self, values: list, item: int) -> None:
-        for pending, value in zip(self.pending, values):
-            pending.append(value)
+    def append(self, values: tuple, item: int) -> int:
+        """Adds one shape's fields (the sweep last) as item `item`; returns its row."""
+        self.pending.append(values)
         self.pending_ids.append(item)
         self.size += 1
+        return self.size - 1
 
     def extend(self, values: list[np.ndarray], items: np.ndarray) -> None:
         self._flush()
@@ -104,9 +107,10 @@ class _Group:
 
     def _flush(self) -> None:
         if self.pending_ids:
-            for column, pending in zip(self.columns, self.pending):
+            for j, column in enumerate(self.columns):
+                pending = [row[j] for row in self.pending]
                 column.extend(np.array(pending, dtype=column.data.dtype).reshape((-1,) + column.data.shape[1:]))
-                pending.clear()
+            self.pending.clear()
             self.id_column.extend(np.array(self.pending_ids, dtype=np.int64))
             self.pending_ids.clear()
 
@@ -198,6 +202,7 @@ class Scene:
         self._index: dict[str, int] = {}
         self._groups: dict[tuple, _Group] = {}
         self._keys: dict[tuple, int] = {}          # group key -> group number
+        self._group_list: list[_Group] = []        # group number -> group
         self._item_group = array("q")  # per item: its group number
         self._item_row = array("q")    # per item: its row in the group
         self._built = None
@@ -219,7 +224,7 @@ class Scene:
     def __setstate__(self, state: dict) -> None:
         self._names = list(state["names"])
         self._index = {name: i for i, name in enumerate(self._names)}
-        self._groups, self._keys = {}, {}
+        self._groups, self._keys, self._group_list = {}, {}, []
         for number, (key, kind, fields, ids) in enumerate(state["groups"]):
             key = tuple(key)
             if len(key) == 2:  # written before groups had dtypes: float64 throughout, with a sweep
@@ -230,6 +235,7 @@ class Scene:
             g.size = len(ids)
             self._groups[key] = g
             self._keys[key] = number
+            self._group_list.append(g)
         self._item_group = array("q", np.asarray(state["item_group"], dtype=np.int64).tobytes())
         self._item_row = array("q", np.asarray(state["item_row"], dtype=np.int64).tobytes())
         self._built = None
@@ -285,17 +291,17 @@ class Scene:
             raise TypeError(f"Scene: shape names must be strings, got {name!r}")
         if name in self._index:
             raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
-        # One shape: its fields as they are (trailing dimensions and dtypes), no broadcasting to do.
+        # One shape: its fields as they are (trailing dimensions and dtypes), no broadcasting to do;
+        # to_arrays() lists them in the table's order (KIND_FIELDS), then the sweep if it was given.
         kind = shape.kind
-        arrays = shape.to_arrays()
-        values = [arrays[field] for field in KIND_FIELDS[kind]]
-        values.append(arrays.get("sweep", _NO_SWEEP))
-        group, number = self._group(kind, values[0].shape if kind == "Bezier" else None, values,
-                                    "sweep" in arrays)
+        values = tuple(shape.to_arrays().values())
+        swept = len(values) > len(KIND_FIELDS[kind])
+        if not swept:
+            values += (_NO_SWEEP,)
+        group, number = self._group(kind, values[0].shape if kind == "Bezier" else None, values, swept)
         item = len(self._names)
         self._item_group.append(number)
-        self._item_row.append(len(group))
-        group.append(values, item)
+        self._item_row.append(group.append(values, item))
         self._index[name] = item
         self._names.append(name)
         self._built = None
@@ -333,9 +339,8 @@ class Scene:
         if not isinstance(batch, _core.Shape):
             raise TypeError(f"Scene.extend: expected a circledist shape, got {type(batch).__name__}")
         count = int(np.prod(batch.batch_shape, dtype=np.int64))
-        if isinstance(names, str):
-            names = [f"{names}{i}" for i in range(count)]
-        names = list(names)
+        generated = isinstance(names, str)
+        names = [f"{names}{i}" for i in range(count)] if generated else list(names)
         if len(names) != count:
             raise ValueError(f"Scene.extend: {len(names)} names for a batch of {count} shapes")
         kind = batch.kind
@@ -346,21 +351,16 @@ class Scene:
             a = arrays.get(field, _NO_SWEEP)
             trailing = a.shape[a.ndim - TRAILING_DIMS[field]:] if TRAILING_DIMS[field] else ()
             values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
-        self._insert(names, [(kind, values, np.arange(count), "sweep" in arrays)])
+        self._insert(names, [(kind, values, np.arange(count), "sweep" in arrays)], distinct=generated)
 
-    def _insert(self, names: list, parts: list) -> None:
+    def _insert(self, names: list, parts: list, distinct: bool = False) -> None:
         """Adds len(names) shapes at once, named in order: parts are (kind, values, positions,
         swept), values one array per field (the sweep last; zeros when swept is false: shapes
         without a sweep) whose rows are the shapes at `positions` (in names) of that kind; the
         parts' positions together cover every name once. The rows are taken as valid shapes (they
-        come from shapes, or from a validated scene file)."""
-        seen = set()
-        for name in names:
-            if not isinstance(name, str):
-                raise TypeError(f"Scene: shape names must be strings, got {name!r}")
-            if name in self._index or name in seen:
-                raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
-            seen.add(name)
+        come from shapes, or from a validated scene file); distinct: the names are strings, each
+        of its own (a prefix and numbers), and only checked against the scene's."""
+        self._check_new_names(names, distinct)
         start = len(self._names)
         item_group = np.empty(len(names), np.int64)
         item_row = np.empty(len(names), np.int64)
@@ -376,17 +376,33 @@ class Scene:
         self._names.extend(names)
         self._built = None
 
+    def _check_new_names(self, names: list, distinct: bool) -> None:
+        """Raises as `add` would for the first of the names that is no string, or is in the scene
+        or earlier in names: whole-list checks (C loops) first, the name by name loop only to find
+        and word an error."""
+        if distinct or (set(map(type, names)) <= {str} and len(set(names)) == len(names)):
+            if self._index.keys().isdisjoint(names):
+                return
+        seen = set()
+        for name in names:
+            if not isinstance(name, str):
+                raise TypeError(f"Scene: shape names must be strings, got {name!r}")
+            if name in self._index or name in seen:
+                raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
+            seen.add(name)
+
     def _group(self, kind: str, control, element: list, swept: bool) -> tuple[_Group, int]:
         """The group of a kind (Bezier curves: and control point count, from the shape `control`
         of their control points), of the dtypes of `element`'s fields (one shape's) and of shapes
         with a sweep or without; made on first use with the trailing shapes of those fields."""
-        dtypes = tuple(v.dtype for v in element)
+        dtypes = tuple([v.dtype for v in element])
         key = (kind, control[0] if kind == "Bezier" else 0, dtypes, swept)
-        group = self._groups.get(key)
-        if group is None:
+        number = self._keys.get(key)
+        if number is None:
             group = self._groups[key] = _Group(kind, [v.shape for v in element], dtypes, swept)
-            self._keys[key] = len(self._keys)
-        return group, self._keys[key]
+            number = self._keys[key] = len(self._group_list)
+            self._group_list.append(group)
+        return self._group_list[number], number
 
     def shape(self, name: str):
         """The shape stored under `name` (also ``scene[name]``).
@@ -416,7 +432,7 @@ class Scene:
         array(2.)
         """
         i = self._lookup(name)
-        group = list(self._groups.values())[self._item_group[i]]
+        group = self._group_list[self._item_group[i]]
         return group.single(self._item_row[i])
 
     def __getitem__(self, name: str):
@@ -434,7 +450,7 @@ class Scene:
         if self._built is not None:
             return self._built
         b = _Built()
-        b.groups = list(self._groups.values())
+        b.groups = list(self._group_list)
         b.group = np.array(self._item_group, dtype=np.int64)
         b.row = np.array(self._item_row, dtype=np.int64)
         # The broadphase numbers the shapes group after group: order maps its numbers to items.

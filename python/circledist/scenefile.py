@@ -22,8 +22,10 @@ from __future__ import annotations
 
 import contextlib
 import gc
+from collections import Counter
 import json
 import math
+import operator
 import os
 import re
 import tempfile
@@ -218,7 +220,7 @@ class SceneFile:
         for (kind, *_), (values, positions) in singles.items():
             parts.append((kind, [np.stack(v) for v in zip(*values)], np.array(positions, np.int64), True))
         world = Scene()
-        world._insert(names, parts)
+        world._insert(names, parts, distinct=True)  # a validated file's names: strings, each of its own
         return world
 
 
@@ -341,6 +343,27 @@ def _float_column(values: list) -> np.ndarray:
         return np.array(rows)
 
 
+def _refused_rows(kind: str, columns: dict, rows: int) -> np.ndarray:
+    """Per shape of `rows` shapes of a kind, given as float64 columns (field -> array of a leading
+    axis of rows, the sweep included): whether a reader refuses it for a number that is not finite,
+    a zero direction or a length below 0 (which the schema refuses in a file); every shape when
+    the library refuses the others (an error the entries' one by one check then finds and words)."""
+    bad = np.zeros(rows, bool)
+    for name, role in _roles(kind).items():
+        column = columns[name]
+        bad |= ~np.isfinite(column).reshape(rows, -1).all(axis=1)
+        if role == "direction":
+            bad |= ~np.any(column != 0, axis=-1)
+        elif role == "length":
+            bad |= column < 0
+    good = ~bad
+    try:
+        getattr(_core, KINDS[kind][0])(*(columns[n][good] for n in KINDS[kind][1]), sweep=columns[_SWEEP][good])
+    except ValueError:
+        bad[:] = True
+    return bad
+
+
 def _entries_from_json(shapes: list, file: str) -> list:
     """The entries of schema-valid shape specs, in file order, each checked as _entry_from_json
     checks it. Single shapes are checked together, a NumPy column per kind and field (a scene of
@@ -357,21 +380,10 @@ def _entries_from_json(shapes: list, file: str) -> list:
     for (kind, _), indices in groups.items():
         specs = [shapes[i] for i in indices]
         columns = {}
-        try:
-            bad = np.zeros(len(indices), bool)
-            for name, role in _roles(kind).items():
-                column = _float_column([spec.get(name, 0) for spec in specs])
-                finite = np.isfinite(column)
-                bad |= ~finite.reshape(len(indices), -1).all(axis=1)
-                if role == "direction":
-                    bad |= ~np.any(column != 0, axis=-1)
-                column.flags.writeable = False
-                columns[name] = column
-            good = ~bad
-            names = list(KINDS[kind][1])
-            getattr(_core, KINDS[kind][0])(*(columns[n][good] for n in names), sweep=columns[_SWEEP][good])
-        except ValueError:  # something the library refuses: the kind's entries go through _entry_from_json
-            bad = np.ones(len(indices), bool)
+        for name in _roles(kind):
+            columns[name] = _float_column([spec.get(name, 0) for spec in specs])
+            columns[name].flags.writeable = False
+        bad = _refused_rows(kind, columns, len(indices))
         if bad.any():
             first_bad = min(first_bad, indices[int(np.argmax(bad))])
         for row, i in enumerate(indices[:int(np.argmax(bad)) if bad.any() else len(indices)]):
@@ -393,6 +405,14 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
     """Semantic checks of schema-valid queries; returns them as dicts with every key."""
     by_name = {e.name: e for e in entries}
     supported = {tuple(p) for p in _core._query_kinds()}
+    # Entries and shapes of each kind, for the checks against the whole scene: counted once (a
+    # count per query made q queries over n shapes cost q * n).
+    entries_of_kind: Counter = Counter()
+    shapes_of_kind: Counter = Counter()
+    for e in entries if specs else ():
+        kind = e.class_name
+        entries_of_kind[kind] += 1
+        shapes_of_kind[kind] += 1 if e.count is None else e.count
     out = []
     for i, spec in enumerate(specs):
         base = f"{prefix}$.queries[{i}]"
@@ -425,11 +445,10 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
             for key in ("a", "b", "k"):
                 if key in spec:
                     raise fail(key, "not expected: pairs_within takes no shapes and no k")
-            kinds = sorted({e.class_name for e in entries})
+            kinds = sorted(shapes_of_kind)
             for i_kind, ka in enumerate(kinds):
                 for kb in kinds[i_kind:]:
-                    single = ka == kb and sum(1 if e.count is None else e.count
-                                              for e in entries if e.class_name == ka) < 2
+                    single = ka == kb and shapes_of_kind[ka] < 2
                     if not single and (ka, kb) not in supported:
                         raise fail("effects", f"expected a scene whose every pair of kinds has a query: none "
                                               f"exists between a {ka} and a {kb}")
@@ -446,8 +465,8 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
             if "b" in spec:
                 others = [refs["b"][0].class_name]
             else:  # every kind in the scene but the query's own shape
-                others = {e.class_name for e in entries
-                          if e is not a_entry or (e.count is not None and e.count > 1)}
+                own = a_entry.class_name if a_entry.count is None or a_entry.count == 1 else None
+                others = {kind for kind, n in entries_of_kind.items() if n > (kind == own)}
             for kb in sorted(others):
                 if (a_entry.class_name, kb) not in supported:
                     raise fail("b" if "b" in spec else "a", f"expected shapes circledist has a query between: "
@@ -768,42 +787,101 @@ def _collector_paused():
             gc.enable()
 
 
-def _entries_of(shapes, file: str) -> list:
+def _entries_of(shapes) -> tuple[list, list]:
+    """write_scene's entries, in order, and the columns that hold their numbers.
+
+    Entries are [name, kind, count, fields], every number float64 (a float32 or long double
+    field converted, as a reader reads it back): a single shape's fields as nested lists (its
+    row of its group's columns, below), a batch's as arrays, columns of count rows or one value
+    where every row agrees (bit for bit: -0.0 stays -0.0); a single shape's zero sweep and a
+    batch's all-zero sweep are left out. The columns are (kind, {field: float64 array}, rows):
+    one for the single shapes of each kind (and control point count), one per batch (its fields
+    broadcast to count rows), for _written_scene_is_valid to check as a reader checks numbers."""
     items = shapes.items() if isinstance(shapes, Mapping) else shapes
-    entries = []
-    roles_of = {kind: list(_roles(kind)) for kind in KINDS}
+    entries: list = []
+    columns: list = []
+    singles: dict = {}  # kind, or (kind, control points) -> ([the fields' arrays, ...], [entry, ...])
+    fields_of = {kind: operator.attrgetter(*_roles(kind)) for kind in KINDS}
     for name, shape in items:
         if not isinstance(shape, _core.Shape):
             raise TypeError(f"write_scene: {name!r} must be a circledist shape, got {type(shape).__name__}")
         kind = shape.kind.lower()
-        batch = tuple(shape.batch_shape)
-        if batch == ():  # a single shape: its fields as they are (float64, trailing dimensions only)
-            fields = {f: getattr(shape, f) for f in roles_of[kind]}
-            if fields[_SWEEP] == 0:
-                del fields[_SWEEP]
-            entries.append((str(name), kind, None, fields))
+        if shape.batch_shape == ():  # a single shape: in its group's columns, made lists with them
+            values = fields_of[kind](shape)
+            key = kind if kind != "bezier" else (kind, len(values[0]))
+            group = singles.get(key)
+            if group is None:
+                group = singles[key] = ([], [])
+            entry = [str(name), kind, None, None]
+            group[0].append(values)
+            group[1].append(entry)
+            entries.append(entry)
             continue
+        batch = tuple(shape.batch_shape)
         count = int(np.prod(batch, dtype=np.int64))
-        fields = {}
+        fields, broadcast = {}, {}
         for f, role in _roles(kind).items():
             a = np.asarray(getattr(shape, f), dtype=np.float64)
             dims = ROLE_TRAILING_DIMS[role]
             trailing = a.shape[a.ndim - dims:] if dims else ()
             # A column: one row per shape, C order; one value if all rows agree.
-            a = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
+            a = broadcast[f] = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
             bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
-            fields[f] = a[0] if (bits == bits[:1]).all() else a
+            fields[f] = a[0] if count and (bits == bits[:1]).all() else a
         if not np.any(fields[_SWEEP]):
             del fields[_SWEEP]
-        entries.append((str(name), kind, count, fields))
-    return entries
+        columns.append((kind, broadcast, count))
+        entries.append([str(name), kind, count, fields])
+    for values, group_entries in singles.values():
+        kind = group_entries[0][1]
+        group = {f: np.array(column, dtype=np.float64) for f, column in zip(_roles(kind), zip(*values))}
+        columns.append((kind, group, len(group_entries)))
+        for entry, row in zip(group_entries, zip(*[column.tolist() for column in group.values()])):
+            entry[3] = fields = dict(zip(group, row))
+            if fields[_SWEEP] == 0:
+                del fields[_SWEEP]
+    return entries, columns
+
+
+def _written_scene_is_valid(entries: list, columns: list, queries: list, description) -> bool:
+    """Whether a reader accepts the scene write_scene makes of _entries_of's entries and columns,
+    the queries (as JSON gives them back) and the description, checked without the reader's
+    per-entry work. The writer makes the kinds, the fields and their shapes from library shapes;
+    what it does not control is checked here: the names (the schema's name, each of its own),
+    the counts (>= 1), the numbers (finite, directions non-zero, lengths >= 0 and the library's
+    other checks: a float32 or long double field made float64 may have overflowed or vanished),
+    the description and the queries (schema and meaning, as a reader checks them).
+
+    False sends write_scene to the reader's full check, which raises the reader's own error;
+    True must imply that the reader accepts the file (tests/test_scene_file.py checks both on a
+    corpus of scenes)."""
+    if not entries or not isinstance(description, str):
+        return False
+    is_name = _validator().test(schema()["$defs"]["name"])
+    names = [e[0] for e in entries]
+    if not all(map(is_name, names)) or len(set(names)) != len(names):
+        return False
+    if any(count is not None and count < 1 for _, _, count, _ in entries):
+        return False
+    if any(_refused_rows(kind, group, rows).any() for kind, group, rows in columns):
+        return False
+    if queries:
+        if not _validator().is_valid({"queries": queries}, {"properties": schema()["properties"]}):
+            return False
+        try:
+            _check_queries(queries, [ShapeEntry(name, kind, count, {}) for name, kind, count, _ in entries], "")
+        except SceneFileError:
+            return False
+    return True
 
 
 def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description: str = "") -> None:
     """Writes a scene file, JSON or ``.npz`` by the path's suffix.
 
-    The content is validated as `read_scene` would validate it, before the file is replaced
-    (atomically): what is written can be read.
+    The content is validated before the file is replaced (atomically): what is written can be
+    read, and content no reader would accept raises the error `read_scene` would raise. (A JSON
+    file's shapes are checked where the writer does not make them valid itself: names, counts,
+    numbers made float64; the queries as a reader checks them.)
 
     Parameters
     ----------
@@ -847,23 +925,25 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
 
 
 def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str) -> None:
-    entries = _entries_of(shapes, path)
-    queries = [dict(q) for q in queries]
+    entries, columns = _entries_of(shapes)
+    # The queries as a reader gets them back (JSON's types: lists, floats, string keys).
+    queries = json.loads(json.dumps([dict(q) for q in queries]))
     if path.endswith(".json"):
         data = {"format": FORMAT, "version": VERSION}
         if description:
             data["description"] = description
         data["shapes"] = []
         for name, kind, count, fields in entries:
-            spec = {"name": name, "kind": kind}
-            if count is not None:
-                spec["count"] = count
-            spec.update({f: a.tolist() for f, a in fields.items()})
-            data["shapes"].append(spec)
+            if count is None:  # fields already lists
+                data["shapes"].append({"name": name, "kind": kind, **fields})
+            else:
+                data["shapes"].append({"name": name, "kind": kind, "count": count,
+                                       **{f: a.tolist() for f, a in fields.items()}})
         if queries:
             data["queries"] = queries
         text = _json_text(data)
-        scene_from_json(json.loads(text), path)  # what is written must read back
+        if not _written_scene_is_valid(entries, columns, queries, description):
+            scene_from_json(json.loads(text), path)  # raises the error a reader reports
         payload = text.encode("utf-8")
         _write_atomically(path, lambda f: f.write(payload))
         return
@@ -882,13 +962,32 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
     _write_atomically(path, lambda f: np.savez(f, **arrays), check=lambda tmp: scene_from_npz(tmp, path))
 
 
+def _item_encoder():
+    """json.dumps for many items: its C encoder made once (json.dumps makes one per call, a third
+    of the time of a short item), or json.dumps where the C encoder is missing or differs."""
+    make = getattr(json.encoder, "c_make_encoder", None)
+    try:
+        encoder = make(None, json.JSONEncoder().default, json.encoder.encode_basestring_ascii, None, ": ", ", ",
+                       False, False, True)
+
+        def encode(item) -> str:
+            return "".join(encoder(item, 0))
+        sample = {"name": "s\u00e9", "kind": "point", "p": [0.1, -0.0, 1e-300], "sweep": 2, "t": [True, None]}
+        if encode(sample) == json.dumps(sample):
+            return encode
+    except TypeError:  # no C encoder (None), or one of another signature
+        pass
+    return json.dumps
+
+
 def _json_text(data: dict) -> str:
     """A scene as JSON text: the top level one key a line, each shape and query on a line of its
     own (json.dumps with indent= would spend its time in the pure-Python encoder)."""
     lines = []
+    encode = _item_encoder()
     for key, value in data.items():
         if key in ("shapes", "queries"):
-            items = ",\n".join("  " + json.dumps(item) for item in value)
+            items = ",\n".join(["  " + encode(item) for item in value])
             lines.append(f" {json.dumps(key)}: [\n{items}\n ]")
         else:
             lines.append(f" {json.dumps(key)}: {json.dumps(value)}")
