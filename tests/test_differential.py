@@ -34,13 +34,26 @@ cd = pytest.importorskip("circledist")
 SEED = 20261114
 PER_PAIR = 4          # cases per (family, kind pair) ...
 MIN_PER_FAMILY = 40   # ... and at least this many per family
+PER_PAIR_NO_ROUND = 2  # cases per (family, kind pair) of the families without a circle or disk
 SCALAR_EVERY = 4      # scalar calls on every 4th case
+# The direct 50-digit comparison takes the first case of every (family, kind pair), except for a
+# Bezier curve against a point, line, ray or segment (whose reference costs ~0.5 s a case): one
+# (family, pair) each, an adversarial one.  Their other families' findings are confirmed against
+# the same references all the same, and tests/test_bezier_point_linear.py compares them directly.
+DIRECT_BEZIER_LINEAR = {("bezier", "point"): "bezier_large_linear", ("bezier", "line"): "bezier_tangent_line",
+                        ("bezier", "ray"): "bezier_crossing", ("bezier", "segment"): "bezier_far_control_linear"}
+
+
+def no_round(family):
+    """A family of the pairs without a circle or disk (points, lines, rays, segments, curves)."""
+    return all(not set(D.ROUND) & set(pair) for pair in D.FAMILIES[family][0])
 
 
 def slice_cases():
     out = []
     for family, (pairs, _) in D.FAMILIES.items():
-        out += D.generate(family, max(PER_PAIR * len(pairs), MIN_PER_FAMILY), SEED)
+        n = PER_PAIR_NO_ROUND * len(pairs) if no_round(family) else max(PER_PAIR * len(pairs), MIN_PER_FAMILY)
+        out += D.generate(family, n, SEED)
     return out
 
 
@@ -55,7 +68,9 @@ def results():
     t1 = time.perf_counter()
     firsts = {}
     for c in cases:
-        firsts.setdefault((c["family"], c["a"], c["b"]), c)
+        pair = (c["a"], c["b"])
+        if DIRECT_BEZIER_LINEAR.get(pair, c["family"]) == c["family"]:
+            firsts.setdefault((c["family"], c["a"], c["b"]), c)
     ref_findings, diags = D.reference_check(cd, list(firsts.values()))
     t2 = time.perf_counter()
     print(f"\ndifferential slice: {len(cases)} cases, {sum(stats['answers'].values())} library answers, "
@@ -90,7 +105,11 @@ def test_slice_covers_every_family_and_kind_pair(results):
 
 # Classes that still fail, each stated in the note on issue 14. Any other finding in the family
 # fails the test, and so does a known class that stops failing (remove it here then).
-KNOWN_FAILURES = {}
+KNOWN_FAILURES = {
+    ("bezier_far_control_linear", "bezier-point"):
+        "bracketing policy in double, a control point 1.5e9 away: 0.22785 for 0.22186 "
+        "(tests/test_open_findings.py::test_bezier_far_control_point_bracketing_double)",
+}
 
 
 @pytest.mark.parametrize("family", list(D.FAMILIES))
