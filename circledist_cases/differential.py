@@ -7,12 +7,18 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    ``{"family", "id", "a", "a_data", "b", "b_data"}`` (kind names and plain floats; a Bezier's
    data is a list of [x, y, z] control points) for the kind pairs the family applies to, cycling
    through them.  Pairs are written in a canonical order (point/line/ray/segment/bezier before
-   circle/disk, circle before disk); the checker runs both argument orders.  ``FAMILIES`` lists
-   them: plain random cases and the adversarial ones of issue 14 (tangencies, lines on and near
-   the axis, lines whose shadow on the plane crosses the centre, coplanar and (nearly) concentric
-   rounds, far-translated scenes, far line origins, extreme radius ratios, nearly touching disks,
-   a circle parallel to a disk at tiny heights,
-   large / far-controlled / in-plane Bezier curves, a huge circle passing a small disk).
+   circle/disk, circle before disk; among linear pieces point, line, ray, segment in that order;
+   a Bezier curve before a linear piece); the checker runs both argument orders.  ``FAMILIES``
+   lists them: plain random cases and the adversarial ones of issue 14 (tangencies, lines on and
+   near the axis, lines whose shadow on the plane crosses the centre, coplanar and (nearly)
+   concentric rounds, far-translated scenes, far line origins, extreme radius ratios, nearly
+   touching disks, a circle parallel to a disk at tiny heights,
+   large / far-controlled / in-plane Bezier curves, a huge circle passing a small disk); then
+   the families of the pairs without a round, every pair among point/line/ray/segment and a
+   Bezier curve against each (random, far-translated, nearly parallel pieces crossing or a hair
+   apart or collinear, far origins and ends, zero-length segments, points and ends on the other
+   piece, a line tangent to a curve or parallel to its end tangent, a curve crossing a piece,
+   curves with a far control point or 1e2..1e5 times larger than the piece).
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
    distance is the minimum over one parameter of a closed form (point-circle, point-disk,
@@ -36,6 +42,10 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    long-double rounding reported as ``slack``), hence an UPPER bound of the true distance.  The
    screen is a sampling method, not a proof: its misses show up as alarms the 50-digit
    reference refutes (counted as "refuted", never as findings).
+   Pairs without a round: a linear piece's parameter against the other piece's closed form (the
+   projection clamped), s = S0 sinh(x) over every magnitude of s, in long double, re-anchored
+   pass by pass at the best point found (``_screen_linear``); a Bezier curve's halves against the
+   piece's closed form, as against a round (``_screen_bezier_linear``); a point: the closed form.
 
 3. The checker (``check_cases``): for every (solver, precision) combination and both argument
    orders it calls distance, closest_points, within, distance_if_within and intersects, batched
@@ -46,15 +56,20 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    The bound an answer is held against is the screen's, or lower: the separation (plus the
    measured distances off their shapes) of any combination's closest points, a genuine pair too.
    ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
-   circledist_cases/reference.py and reference_round.py (and evaluates the screen's own best pair
-   at 50 digits, so a reference that missed the minimum is caught, not trusted).
+   circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
+   bezier_other) and reference_linear.py (linear pieces among themselves: the search of
+   tests/test_linear_accuracy.py), and evaluates the screen's own best pair at 50 digits, so a
+   reference that missed the minimum is caught, not trusted.
 
-Bars: |d - d_true| <= bar * max(d_true, largest radius in the query), bar 1e-12 in float64,
+Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius in the query
+(for a query without a circle or disk: the scale of the pairs' own accuracy tests, see
+``bar_scale``), bar 1e-12 in float64,
 1e-15 in long double (float64 inputs referenced exactly), 4 float32 ulps (4 * 2^-23) for float32
 inputs (README: float32 queries are solved in double and rounded; referenced on the float32
 values).  Closest points must lie on their shapes within 8 ulps (of the answer's precision) of
-the scene scale (the largest input coordinate or radius), and their separation must equal the
-reported distance within the bar plus those ulps.
+the scene scale (the largest input coordinate or radius; without a round, or of the points' own
+size where larger), and their separation must equal the reported distance within the bar plus
+those ulps.
 """
 
 from __future__ import annotations

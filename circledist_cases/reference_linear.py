@@ -1,10 +1,11 @@
 """50-digit reference for points, lines, rays and segments among themselves (no circledist).
 
 Shared by tests/test_linear_accuracy.py and the differential test (circledist_cases/differential.py).
-The reference minimizes over one parameter: s -> dist(A(s), B), the distance from a point of A to
-the piece B (its projection clamped, in mpmath), is convex in s, so a bracket search (sampling,
-then golden section) finds its minimum; s = tan(phi) maps an infinite interval onto a finite one (a monotone change of variable
-keeps the function unimodal).  Inputs are taken as the exact binary64 values.
+The reference minimizes over one parameter: s -> dist(A(s), B), the distance from a point of A
+to the piece B (its projection clamped, in mpmath), is convex in s, so a bracket search
+(sampling, then golden section) finds its minimum; s = tan(phi) maps an infinite interval onto a
+finite one (a monotone change of variable keeps the function unimodal). Inputs are taken as the
+exact binary64 values.
 
 The search: 121 samples of phi, then 240 golden-section steps (interval reduction like a ternary
 search, one new value per step) on the bracket around the best sample, down to 0.618^240 ~ 1e-50
