@@ -831,6 +831,12 @@ FAMILIES = {
 }
 
 
+def has_round(family):
+    """Whether a family's kind pairs include a circle or disk (the first sixteen families) or
+    not (the pairs among points, lines, rays and segments and Bezier curves against them)."""
+    return any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
+
+
 def _plain(data):
     if isinstance(data, (list, tuple)) and data and isinstance(data[0], (list, tuple, np.ndarray)):
         return [[float(x) for x in p] for p in data]
