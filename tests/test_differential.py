@@ -1,22 +1,29 @@
 """The CI slice of the standing differential accuracy test (issue 14, "keep it closed").
 
-A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to;
+A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to
+(every pair of kinds: a circle or disk with any kind, points / lines / rays / segments among
+themselves, a Bezier curve against each of those);
 every solver ("bracketing", "companion", "polished", "eigen") x precision (float64, long double,
 float32); both argument orders; distance(), closest_points(), within(), distance_if_within() and
 intersects(), batched and scalar.  Each answer is judged by the fast NumPy screen (an independent
 one-parameter minimisation, an upper bound from genuine points) and by the closest points the
 library returns (on their shapes, separation == distance); every accuracy finding is confirmed
-against the 50-digit mpmath references of circledist_cases/reference.py and circledist_cases/reference_round.py before
-it counts.  The first case of every (family, kind pair) is also compared with those references
-directly, for every combination.
+against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py and
+reference_linear.py before it counts.  The first case of every (family, kind pair) is also
+compared with those references directly, for every combination (a Bezier curve against a linear
+piece: one family per pair, DIRECT_BEZIER_LINEAR).
 
-Bars (never loosened here): |d - d_true| <= bar * max(d_true, largest radius), bar 1e-12 in
-float64, 1e-15 in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs.
+Bars (never loosened here): |d - d_true| <= bar * max(d_true, scale), bar 1e-12 in float64, 1e-15
+in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs; the scale is the largest radius,
+or without a circle or disk the scale of the pairs' own accuracy tests (differential.bar_scale).
 
-684 cases, ~135,000 library answers (every entry point; each within / distance_if_within probe
-counts) and 120 direct references: about 58 s of CPU on one core of the project's 2-core machine
-(2026-11-25; the library's answers take most of it). With scalar calls on every case it was 75 s,
-~197,000 answers.  A failure lists one reproducer per finding class;
+872 cases (724 of the sixteen families with a circle or disk, 148 of the ten without: two per
+family and kind pair), 179,016 library answers (every entry point; each within /
+distance_if_within probe counts) and 178 direct references: 76 s of CPU on the project's 2-core
+machine (2026-11-26, the file's user time; the slice without the families of the pairs without a
+round took 59 s in the same conditions, 58 s on 2026-11-25; the library's answers take most of
+it). With scalar calls on every case it was 75 s, ~197,000 answers, before those families.
+A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
