@@ -1118,7 +1118,21 @@ class _Form:
         X = self.points(x, P)
         if self.target in ("circle", "disk"):
             return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk")
-        return _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
+        d = _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
+        if "mperp" not in P:
+            return d
+        inside, s = self.perp_inside(x, P)
+        return np.where(inside, _nrm(_x1(P["cperp"]) + s[..., None] * _x1(P["mperp"])), d)
+
+    def perp_inside(self, x, P):
+        """(a line against a linear target with _perp_parts) whether the target's projection of
+        the point lies inside the target by more than its rounding (there the perpendicular form
+        holds), and the line's parameter s."""
+        s = self.line_s(x, P)
+        x1 = (lambda k: P[k]) if np.ndim(x) == 1 else (lambda k: _x1(P[k]))
+        st = (x1("cu") + s * x1("mu")) / x1("uu")
+        margin = 64 * EPSLD * (np.abs(x1("cu")) + np.abs(s * x1("mu"))) / x1("uu")
+        return (st - margin >= x1("tlo")) & (st + margin <= x1("thi")), s
 
     def f(self, x):
         P = self.p.get(x.dtype.type)
@@ -1147,6 +1161,13 @@ class _Form:
             mag = mag + P["R"]
         else:
             mag = mag + _nrm(P["tb0"])
+        if "mperp" in P:
+            # the perpendicular parts are double-double results (2^-100 of what they cancel:
+            # |m_perp| = |m| sin(angle), 1e-17 |m| for pieces parallel within 1e-17)
+            inside, s = self.perp_inside(x, P)
+            full = _nrm(P["b0"]) + np.abs(s) * _nrm(P["m"])
+            return np.where(inside, _nrm(P["cperp"]) + np.abs(s) * _nrm(P["mperp"])
+                            + LD(2.0 ** -100 / (16 * EPSLD)) * (full + _nrm(P["tb0"])), mag + full)
         if self.moving == "rim":
             mag = mag + _nrm(P["D"]) + P["Ra"]
         elif self.moving == "line":
@@ -1513,14 +1534,16 @@ def _stack(case_list, key):
     return np.array([c[key] for c in case_list], dtype=float)
 
 
-def _anchor(kind, data, C):
+def _anchor(kind, data, C, dd=False):
     """A linear shape relative to the centre C, anchored at its point nearest C (double-double):
-    returns long-double b0, m, lo, hi with S = {b0 + s m : s in [lo, hi]}."""
+    returns long-double b0, m, lo, hi with S = {b0 + s m : s in [lo, hi]} (dd: and b0, m as
+    double-double pairs of (n, 3) arrays)."""
     n = data.shape[0]
     zeros = np.zeros((n, 3))
     b = _two_sum(data[:, :3], -C)
     if kind == "point":
-        return _ld(b), np.zeros((n, 3), dtype=LD), np.zeros(n, dtype=LD), np.zeros(n, dtype=LD)
+        out = _ld(b), np.zeros((n, 3), dtype=LD), np.zeros(n, dtype=LD), np.zeros(n, dtype=LD)
+        return out + (b, (zeros, zeros)) if dd else out
     if kind == "segment":
         m = _two_sum(data[:, 3:6], -data[:, :3])
     else:
@@ -1549,7 +1572,7 @@ def _anchor(kind, data, C):
         hi = np.where(ok, _ld(th), LD(0))
     else:
         hi = hi - tcl
-    return _ld(b0), _ld(m), lo, hi
+    return (_ld(b0), _ld(m), lo, hi) + ((b0, m) if dd else ())
 
 
 def _linear_target(kind, data, C):
@@ -1703,7 +1726,8 @@ def _screen_linear(cases, use_ld):
         w = -tgt["tb0"]
         v = _lin_dist(w[:, None], tgt["tm"][:, None], tgt["tmm"][:, None], tgt["tlo"][:, None],
                       tgt["thi"][:, None])[:, 0]
-        return ScreenResult(v, (eps * _nrm(w)).astype(float), ["point|linear"] * n, [LD(0)] * n)
+        slack = (eps * _nrm(w)).astype(float) + _anchor_error(kb, B, A[:, :3])
+        return ScreenResult(v, slack, ["point|linear"] * n, [LD(0)] * n)
     C = B[:, :3].copy()
     best = np.full(n, LD(np.inf), dtype=LD)
     slack = np.zeros(n)
@@ -1711,6 +1735,7 @@ def _screen_linear(cases, use_ld):
     todo = np.arange(n)
     for _ in range(LINEAR_PASSES):
         v, mag, s, nxt = _linear_pass(ka, kb, A[todo], B[todo], C[todo])
+        mag = mag + (_anchor_error(ka, A[todo], C[todo]) + _anchor_error(kb, B[todo], C[todo])) / eps
         # passes compared by their certified bounds (value + rounding slack)
         for q in np.flatnonzero(v + eps * mag < best[todo] + slack[todo]):
             j = todo[q]
@@ -1725,12 +1750,54 @@ def _screen_linear(cases, use_ld):
     return ScreenResult(best, slack, ["line|linear"] * n, params)
 
 
+def _anchor_error(kind, data, C):
+    """A bound on the error of _anchor's double-double anchor of a piece relative to C: 2^-100 of
+    the offsets it cancels (an origin 1e10 from C anchored within 1e-7 of it: 1e-20)."""
+    off = np.linalg.norm(data[:, :3] - C, axis=1)
+    if kind == "segment":
+        off = off + np.linalg.norm(data[:, 3:6] - C, axis=1)
+    return 2.0 ** -100 * off
+
+
+def _dd_vec(v, i):
+    return v[0][:, i], v[1][:, i]
+
+
+def _dd_vsub(x, y):
+    """x - y for double-double (n, 3) vectors."""
+    return tuple(np.stack(c, axis=1) for c in zip(*[_dd_add(_dd_vec(x, i), _dd_neg(_dd_vec(y, i))) for i in range(3)]))
+
+
+def _perp_parts(ka, kb, A, B, C):
+    """The moving piece a against the target piece b, both anchored at their points nearest C:
+    the target's parameters (_linear_target's) and, in double-double rounded to long double, the
+    parts of c = b0 - tb0 and of m perpendicular to b's direction u, with c.u, m.u and u.u: where
+    b's projection of a(s) lies inside b, the distance is |c_perp + s m_perp|, free of the
+    cancellation of |w - (w.u / u.u) u| for w = c + s m (1e7 long: 1e-12 of rounding, against a
+    distance that varies by 1e-14 over 1e7 along two lines parallel within 1e-17)."""
+    b0, m, lo, hi, b0_dd, m_dd = _anchor(ka, A, C, dd=True)
+    tb0, tm, tlo, thi, tb0_dd, u = _anchor(kb, B, C, dd=True)
+    uu = _dd_dot(u, u)
+    ok = uu[0] > 0
+    uu_safe = (np.where(ok, uu[0], 1.0), np.where(ok, uu[1], 0.0))
+
+    def perp(v):
+        k = _dd_div(_dd_dot(v, u), uu_safe)
+        k = (np.where(ok, k[0], 0.0), np.where(ok, k[1], 0.0))
+        return tuple(np.stack(c, axis=1) for c in zip(*[
+            _dd_add(_dd_vec(v, i), _dd_neg(_dd_mul(k, _dd_vec(u, i)))) for i in range(3)]))
+    c_dd = _dd_vsub(b0_dd, tb0_dd)
+    tgt = dict(tb0=tb0, tm=tm, tmm=np.sum(tm * tm, axis=1), tlo=tlo, thi=thi)
+    extra = dict(cperp=_ld(perp(c_dd)), mperp=_ld(perp(m_dd)), cu=_ld(_dd_dot(c_dd, u)), mu=_ld(_dd_dot(m_dd, u)),
+                 uu=_ld(uu_safe))
+    return b0, m, lo, hi, tgt, extra
+
+
 def _linear_pass(ka, kb, A, B, C):
     """One pass of _screen_linear relative to the reference points C: (value, magnitude of the
     cancelling quantities, parameter s, the best point rounded to float64) per case."""
     eps = 16 * EPSLD
-    b0, m, lo, hi = _anchor(ka, A, C)
-    tgt = _linear_target(kb, B, C)
+    b0, m, lo, hi, tgt, extra = _perp_parts(ka, kb, A, B, C)
     mn = _nrm(m)
     r = np.maximum(_nrm(b0) + _nrm(tgt["tb0"]) + _segment_extent(tgt), LD(1e-280))
     ok = mn > 0
@@ -1738,8 +1805,8 @@ def _linear_pass(ka, kb, A, B, C):
     Smax = S0 * _SINH_SPAN * _SINH_SPAN
     xlo = np.where(ok, np.arcsinh(np.maximum(lo, -Smax) / S0), LD(0))
     xhi = np.where(ok, np.arcsinh(np.minimum(hi, Smax) / S0), LD(0))
-    form = _Form("line|linear", "line", "linear", _P(b0=b0, m=m, S0=S0, slo=lo, shi=hi, **tgt), xlo, xhi, False,
-                 _S_GRID)
+    form = _Form("line|linear", "line", "linear", _P(b0=b0, m=m, S0=S0, slo=lo, shi=hi, **tgt, **extra), xlo, xhi,
+                 False, _S_GRID)
     v, x, _, _ = _beam(form, xlo, xhi, 3, 40, 8, LD)
     mag = form.magnitude(x)
     s = form.line_s(x, form.p.ld)
@@ -1789,6 +1856,7 @@ def _screen_bezier_linear(cases):
     for pass_ in range(2):
         sub = [ctrl[todo], B[todo], C[todo], res[todo]]
         for name, v, a, b, u, mag in _bezier_linear_pass(kb, *sub):
+            mag = mag + _anchor_error(kb, B[todo], C[todo]) / (16 * EPSLD)
             # halves and passes compared by their certified bounds (value + rounding slack)
             for q in np.flatnonzero(v + 16 * EPSLD * mag < best[todo] + slack[todo]):
                 j = todo[q]
