@@ -43,8 +43,9 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    screen is a sampling method, not a proof: its misses show up as alarms the 50-digit
    reference refutes (counted as "refuted", never as findings).
    Pairs without a round: a linear piece's parameter against the other piece's closed form (the
-   projection clamped), s = S0 sinh(x) over every magnitude of s, in long double, re-anchored
-   pass by pass at the best point found (``_screen_linear``); a Bezier curve's halves against the
+   projection clamped; inside the other piece the parts perpendicular to it, in double-double),
+   s = S0 sinh(x) over every magnitude of s, in long double, re-anchored pass by pass at the
+   best point found (``_screen_linear``); a Bezier curve's halves against the
    piece's closed form, as against a round (``_screen_bezier_linear``); a point: the closed form.
 
 3. The checker (``check_cases``): for every (solver, precision) combination and both argument
@@ -67,9 +68,9 @@ Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radi
 1e-15 in long double (float64 inputs referenced exactly), 4 float32 ulps (4 * 2^-23) for float32
 inputs (README: float32 queries are solved in double and rounded; referenced on the float32
 values).  Closest points must lie on their shapes within 8 ulps (of the answer's precision) of
-the scene scale (the largest input coordinate or radius; without a round, or of the points' own
-size where larger), and their separation must equal the reported distance within the bar plus
-those ulps.
+the scene scale (the largest input coordinate or radius; for a query without a round, of the
+points' own size where that is larger: nearly parallel lines meet far outside the scene), and
+their separation must equal the reported distance within the bar plus those ulps.
 """
 
 from __future__ import annotations
@@ -652,7 +653,7 @@ def _parallel_pair(rng, exact, S):
     apart (or parallel), crossing, 1e-15..1e-9 x S apart (along their common normal) or
     collinear."""
     mode = str(rng.choice(["cross", "gap", "collinear", "parallel"]))
-    angle = 0.0 if mode == "collinear" or (mode == "parallel") else _logu(rng, -12, -2)
+    angle = 0.0 if mode in ("collinear", "parallel") else _logu(rng, -12, -2)
     gap = {"cross": 0.0, "collinear": 0.0}.get(mode, _logu(rng, -15, -9) * S)
     sgn = float(rng.choice([-1.0, 1.0]))
     d_b = sgn * (math.cos(angle) * EX + math.sin(angle) * EY)
