@@ -19,10 +19,10 @@ or without a circle or disk the scale of the pairs' own accuracy tests (differen
 
 872 cases (724 of the sixteen families with a circle or disk, 148 of the ten without: two per
 family and kind pair), 179,016 library answers (every entry point; each within /
-distance_if_within probe counts) and 178 direct references: 76 s of CPU on the project's 2-core
-machine (2026-11-26, the file's user time; the slice without the families of the pairs without a
-round took 59 s in the same conditions, 58 s on 2026-11-25; the library's answers take most of
-it). With scalar calls on every case it was 75 s, ~197,000 answers, before those families.
+distance_if_within probe counts) and 178 direct references: about 80 s of CPU on the project's
+2-core machine (2026-11-26, the file's user time, other jobs loading it to ~3; the slice without
+the families of the pairs without a round took 61 s in the same conditions, 58 s on 2026-11-25;
+the library's answers take most of it). With scalar calls on every case it was 75 s, ~197,000 answers, before those families.
 A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
@@ -117,11 +117,7 @@ def test_slice_covers_every_family_and_kind_pair(results):
 
 # Classes that still fail, each stated in the note on issue 14. Any other finding in the family
 # fails the test, and so does a known class that stops failing (remove it here then).
-KNOWN_FAILURES = {
-    ("bezier_far_control_linear", "bezier-point"):
-        "bracketing policy in double, a control point 1.5e9 away: 0.22785 for 0.22186 "
-        "(tests/test_open_findings.py::test_bezier_far_control_bracketing)",
-}
+KNOWN_FAILURES = {}
 
 
 @pytest.mark.parametrize("family", list(D.FAMILIES))
