@@ -22,8 +22,8 @@ family and kind pair), 179,016 library answers (every entry point; each within /
 distance_if_within probe counts) and 178 direct references: about 80 s of CPU on the project's
 2-core machine (2026-11-26, the file's user time, other jobs loading it to ~3; the slice without
 the families of the pairs without a round took 61 s in the same conditions, 58 s on 2026-11-25;
-the library's answers take most of it). With scalar calls on every case it was 75 s, ~197,000 answers, before those families.
-A failure lists one reproducer per finding class;
+the library's answers take most of it). With scalar calls on every case it was 75 s, ~197,000
+answers, before those families.  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
