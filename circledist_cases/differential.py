@@ -7,12 +7,18 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    ``{"family", "id", "a", "a_data", "b", "b_data"}`` (kind names and plain floats; a Bezier's
    data is a list of [x, y, z] control points) for the kind pairs the family applies to, cycling
    through them.  Pairs are written in a canonical order (point/line/ray/segment/bezier before
-   circle/disk, circle before disk); the checker runs both argument orders.  ``FAMILIES`` lists
-   them: plain random cases and the adversarial ones of issue 14 (tangencies, lines on and near
-   the axis, lines whose shadow on the plane crosses the centre, coplanar and (nearly) concentric
-   rounds, far-translated scenes, far line origins, extreme radius ratios, nearly touching disks,
-   a circle parallel to a disk at tiny heights,
-   large / far-controlled / in-plane Bezier curves, a huge circle passing a small disk).
+   circle/disk, circle before disk; among linear pieces point, line, ray, segment in that order;
+   a Bezier curve before a linear piece); the checker runs both argument orders.  ``FAMILIES``
+   lists them: plain random cases and the adversarial ones of issue 14 (tangencies, lines on and
+   near the axis, lines whose shadow on the plane crosses the centre, coplanar and (nearly)
+   concentric rounds, far-translated scenes, far line origins, extreme radius ratios, nearly
+   touching disks, a circle parallel to a disk at tiny heights,
+   large / far-controlled / in-plane Bezier curves, a huge circle passing a small disk); then
+   the families of the pairs without a round, every pair among point/line/ray/segment and a
+   Bezier curve against each (random, far-translated, nearly parallel pieces crossing or a hair
+   apart or collinear, far origins and ends, zero-length segments, points and ends on the other
+   piece, a line tangent to a curve or parallel to its end tangent, a curve crossing a piece,
+   curves with a far control point or 1e2..1e5 times larger than the piece).
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
    distance is the minimum over one parameter of a closed form (point-circle, point-disk,
@@ -36,6 +42,11 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    long-double rounding reported as ``slack``), hence an UPPER bound of the true distance.  The
    screen is a sampling method, not a proof: its misses show up as alarms the 50-digit
    reference refutes (counted as "refuted", never as findings).
+   Pairs without a round: a linear piece's parameter against the other piece's closed form (the
+   projection clamped; inside the other piece the parts perpendicular to it, in double-double),
+   s = S0 sinh(x) over every magnitude of s, in long double, re-anchored pass by pass at the
+   best point found (``_screen_linear``); a Bezier curve's halves against the
+   piece's closed form, as against a round (``_screen_bezier_linear``); a point: the closed form.
 
 3. The checker (``check_cases``): for every (solver, precision) combination and both argument
    orders it calls distance, closest_points, within, distance_if_within and intersects, batched
@@ -46,15 +57,20 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    The bound an answer is held against is the screen's, or lower: the separation (plus the
    measured distances off their shapes) of any combination's closest points, a genuine pair too.
    ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
-   circledist_cases/reference.py and reference_round.py (and evaluates the screen's own best pair
-   at 50 digits, so a reference that missed the minimum is caught, not trusted).
+   circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
+   bezier_other) and reference_linear.py (linear pieces among themselves: the search of
+   tests/test_linear_accuracy.py), and evaluates the screen's own best pair at 50 digits, so a
+   reference that missed the minimum is caught, not trusted.
 
-Bars: |d - d_true| <= bar * max(d_true, largest radius in the query), bar 1e-12 in float64,
+Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius in the query
+(for a query without a circle or disk: the scale of the pairs' own accuracy tests, see
+``bar_scale``), bar 1e-12 in float64,
 1e-15 in long double (float64 inputs referenced exactly), 4 float32 ulps (4 * 2^-23) for float32
 inputs (README: float32 queries are solved in double and rounded; referenced on the float32
 values).  Closest points must lie on their shapes within 8 ulps (of the answer's precision) of
-the scene scale (the largest input coordinate or radius), and their separation must equal the
-reported distance within the bar plus those ulps.
+the scene scale (the largest input coordinate or radius; for a query without a round, of the
+points' own size where that is larger: nearly parallel lines meet far outside the scene), and
+their separation must equal the reported distance within the bar plus those ulps.
 """
 
 from __future__ import annotations
@@ -75,8 +91,14 @@ OUT_EPS = {"float64": EPS64, "longdouble": EPSLD, "float32": EPS32}
 ULPS = 8          # closest points: ulps of the scene scale allowed off their shapes
 LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
-KIND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
+# the pairs with a circle or disk (the families of the first version), then the pairs among
+# points, lines, rays and segments (point before line before ray before segment) and a Bezier
+# curve against each of them (the curve first)
+ROUND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
     ("bezier", "circle"), ("bezier", "disk"), ("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
+LL = [(lk, rk) for i, lk in enumerate(LINEAR) for rk in LINEAR[i:]]
+BL = [("bezier", lk) for lk in LINEAR]
+KIND_PAIRS = ROUND_PAIRS + LL + BL
 LD = np.longdouble
 
 
@@ -423,8 +445,8 @@ def _translate(kind, data, T):
 _TRANSLATED_BASES = ("random", "tangent", "coplanar", "concentric", "axis", "near_touching", "parallel_height")
 
 
-def _fam_far_translated(rng, ka, kb):
-    bases = [f for f in _TRANSLATED_BASES if (ka, kb) in FAMILIES[f][0]]
+def _fam_far_translated(rng, ka, kb, bases=_TRANSLATED_BASES):
+    bases = [f for f in bases if (ka, kb) in FAMILIES[f][0]]
     base = str(rng.choice(bases))
     a, b = FAMILIES[base][1](rng, ka, kb)
     if rng.random() < 0.3:
@@ -455,20 +477,28 @@ def _fam_far_origin(rng, ka, kb):
     R = _radius(rng, fr.exact)
     b = fr.round(np.zeros(3), EZ, R)
     X, d = _interesting_line(rng, fr, R, kb)
+    return _far_piece(rng, fr, ka, X, d, R), b
+
+
+def _far_piece(rng, fr, kind, X, d, R):
+    """A line, ray or segment through the local point X along d whose origin / one end (or both)
+    lies 1e6..1e12 x R along it; a point stays at X."""
+    if kind == "point":
+        return fr.pos(X)
     d = d / np.linalg.norm(d)
     far = _logu(rng, 6, 12) * R
     sgn = float(rng.choice([-1.0, 1.0]))
-    if ka == "line":
-        return fr.pos(X - sgn * far * d) + fr.dirv(d, fr.dlen()), b
-    if ka == "ray":
+    if kind == "line":
+        return fr.pos(X - sgn * far * d) + fr.dirv(d, fr.dlen())
+    if kind == "ray":
         if rng.random() < 0.8:
-            return fr.pos(X - far * d) + fr.dirv(d, fr.dlen()), b
-        return fr.pos(X + far * d) + fr.dirv(d, fr.dlen()), b
+            return fr.pos(X - far * d) + fr.dirv(d, fr.dlen())
+        return fr.pos(X + far * d) + fr.dirv(d, fr.dlen())
     far2 = _logu(rng, 6, 12) * R if rng.random() < 0.5 else rng.uniform(-0.5, 2) * R
     ends = [fr.pos(X - far * d), fr.pos(X + far2 * d)]
     if rng.random() < 0.5:
         ends.reverse()
-    return ends[0] + ends[1], b
+    return ends[0] + ends[1]
 
 
 def _fam_radius_ratio(rng, ka, kb):
@@ -599,22 +629,186 @@ def _fam_huge_circle(rng, ka, kb):
     return (huge, small) if huge_is_a else (small, huge)
 
 
+# ---- families of the pairs without a round: points, lines, rays, segments and Bezier curves ----
+# (S: the scene's size; the pieces' local geometry in a _Frame as above)
+EX = np.array([1.0, 0.0, 0.0])
+EY = np.array([0.0, 1.0, 0.0])
+
+
+def _size(rng, exact):
+    return _radius(rng, exact)
+
+
+def _fam_linear_random(rng, ka, kb):
+    fr = _Frame(rng, exact=False)
+    S = _size(rng, False)
+    b = fr.linear(kb, rng.normal(size=3) * S, _unit(rng), S)
+    if ka == "bezier":
+        return fr.bezier([rng.normal(size=3) * 1.5 * S for _ in range(_npts(rng))]), b
+    return fr.linear(ka, rng.normal(size=3) * S, _unit(rng), S), b
+
+
+def _parallel_pair(rng, exact, S):
+    """Local (X_a, d_a, X_b, d_b) of two nearly parallel pieces: directions 1e-12..1e-2 rad
+    apart (or parallel), crossing, 1e-15..1e-9 x S apart (along their common normal) or
+    collinear."""
+    mode = str(rng.choice(["cross", "gap", "collinear", "parallel"]))
+    angle = 0.0 if mode in ("collinear", "parallel") else _logu(rng, -12, -2)
+    gap = {"cross": 0.0, "collinear": 0.0}.get(mode, _logu(rng, -15, -9) * S)
+    sgn = float(rng.choice([-1.0, 1.0]))
+    d_b = sgn * (math.cos(angle) * EX + math.sin(angle) * EY)
+    # the crossing point (or the place of nearest approach) anywhere near the pieces
+    X_b = (0.0 if exact else rng.uniform(-2, 2) * S) * EX + gap * EZ
+    return np.zeros(3), EX, X_b, d_b
+
+
+def _fam_near_parallel(rng, ka, kb):
+    """Nearly parallel lines, rays and segments: crossing at 1e-12..1e-2 rad, passing
+    1e-15..1e-9 apart, parallel a hair apart, collinear (overlapping or not)."""
+    fr = _Frame(rng)
+    S = _size(rng, fr.exact)
+    X_a, d_a, X_b, d_b = _parallel_pair(rng, fr.exact, S)
+    return fr.linear(ka, X_a, d_a, S), fr.linear(kb, X_b, d_b, S)
+
+
+def _fam_linear_far_origin(rng, ka, kb):
+    """Line origins / segment ends 1e6..1e12 x S along the pieces (one or both), on random or
+    nearly parallel pieces; a Bezier curve against such a line, ray or segment."""
+    fr = _Frame(rng, exact=False)
+    S = _size(rng, False)
+    if ka == "bezier":
+        X, d = rng.normal(size=3) * S, _unit(rng)
+        ctrl = _bezier_through(rng, X + _tiny(rng, -15, -1) * S * _perp(rng, d), S, max(2, _npts(rng)))
+        return fr.bezier(ctrl), _far_piece(rng, fr, kb, X, d, S)
+    if rng.random() < 0.5:
+        X_a, d_a, X_b, d_b = _parallel_pair(rng, False, S)
+    else:
+        X_a, d_a, X_b, d_b = rng.normal(size=3) * S, _unit(rng), rng.normal(size=3) * S, _unit(rng)
+    which = int(rng.integers(0, 3))       # far: a, b or both
+    a = _far_piece(rng, fr, ka, X_a, d_a, S) if which != 1 else fr.linear(ka, X_a, d_a, S)
+    b = _far_piece(rng, fr, kb, X_b, d_b, S) if which != 0 else fr.linear(kb, X_b, d_b, S)
+    return a, b
+
+
+def _fam_zero_length(rng, ka, kb):
+    """Zero-length segments (both ends equal) against a point, line, ray, segment (zero-length
+    or not) or curve, at 0, tiny or ordinary distances."""
+    fr = _Frame(rng)
+    S = _size(rng, fr.exact)
+    P = np.zeros(3)
+    h = _tiny(rng, -16, 0, 0.3) * S
+    Q = P + h * (EZ if fr.exact else _unit(rng))      # the other piece passes through Q
+    zero = fr.pos(P)
+    if ka == "bezier":
+        return fr.bezier(_bezier_through(rng, Q, S, _npts(rng))), zero + zero
+    if ka == "segment" and rng.random() < 0.5:        # both zero-length
+        return fr.pos(Q) + fr.pos(Q), zero + zero
+    if ka == "segment":                                # the first one zero-length, the other not
+        return zero + zero, fr.linear(kb, Q, EX if fr.exact else _unit(rng), S)
+    return fr.linear(ka, Q, EX if fr.exact else _unit(rng), S), zero + zero
+
+
+def _fam_on_piece(rng, ka, kb):
+    """A point of one piece as the other's point, ray origin or segment end (computed exactly in
+    exact frames), and segment ends / ray origins exactly at, or 1e-16..1e-6 x S off, the other
+    piece's closest point (the piece leaving it at a right or an oblique angle)."""
+    fr = _Frame(rng)
+    S = _size(rng, fr.exact)
+    b = fr.linear(kb, np.zeros(3), EX, S)              # b along local x through 0
+    c = fr.param(-1, 1) * S
+    if kb == "segment" and rng.random() < 0.3:        # at b's end
+        c = float(np.dot(np.asarray(b[3:6]) - fr.C, fr.Q[:, 0])) if fr.exact else c
+    h = 0.0 if rng.random() < 0.5 else _tiny(rng, -16, -6, 0) * S
+    E = c * EX + h * EZ
+    side = EZ if h or fr.exact else _perp(rng, EX)
+    d = side if rng.random() < 0.5 else _rot(side, np.cross(EX, side), -rng.uniform(0.2, 1.4))
+    L = fr.dlen() * S
+    if ka == "point":
+        return fr.pos(E), b
+    if ka == "segment":
+        return fr.pos(E) + fr.pos(E + L * d), b
+    if ka == "ray":
+        return fr.pos(E) + fr.dirv(d, fr.dlen()), b
+    return fr.pos(E) + fr.dirv(d, fr.dlen()), b
+
+
+def _fam_bezier_tangent_line(rng, ka, kb):
+    """A line, ray or segment tangent to a curve at an interior point (exactly or 1e-16..1e-4 x S
+    off, on either side), or parallel to the curve's end tangent (through the end, or beside it)."""
+    fr = _Frame(rng)
+    S = _size(rng, fr.exact)
+    h = _tiny(rng, -16, -4, 0.4) * S
+    if rng.random() < 0.6:       # the apex of a symmetric arch (degree-elevated): tangent EX at X = 0
+        L = S * rng.uniform(0.3, 2)
+        delta = EY * S * rng.uniform(0.05, 1)
+        ctrl = _elevate([-L * EX + delta, -delta, L * EX + delta], max(3, _npts(rng)))
+        return fr.bezier(ctrl), fr.linear(kb, h * EY, EX, S)
+    ctrl = [rng.normal(size=3) * S for _ in range(max(3, _npts(rng)))]
+    d0 = ctrl[1] - ctrl[0]
+    d0 = d0 / np.linalg.norm(d0)
+    X = ctrl[0] + h * _perp(rng, d0)
+    return fr.bezier(ctrl), fr.linear(kb, X, -d0 if rng.random() < 0.5 else d0, S)
+
+
+def _fam_bezier_crossing(rng, ka, kb):
+    """A line, ray or segment crossing a curve (exactly at a rounded curve point, or 1e-16..1e-6
+    x S beside it), at any angle."""
+    fr = _Frame(rng)
+    S = _size(rng, fr.exact)
+    X = np.zeros(3)
+    ctrl = _bezier_through(rng, X, S, max(2, _npts(rng)))
+    Y = X + _tiny(rng, -16, -6, 0.4) * S * _unit(rng)
+    return fr.bezier(ctrl), fr.linear(kb, Y, _unit(rng), S)
+
+
+def _fam_bezier_far_control_linear(rng, ka, kb):
+    """A curve with one control point 1e6..1e12 x S away against a point, line, ray or segment
+    near its other control points."""
+    fr = _Frame(rng, exact=False)
+    S = _size(rng, False)
+    ctrl = [rng.normal(size=3) * 1.5 * S for _ in range(_npts(rng))]
+    ctrl[int(rng.integers(0, len(ctrl)))] = _unit(rng) * _logu(rng, 6, 12) * S
+    return fr.bezier(ctrl), fr.linear(kb, rng.normal(size=3) * S, _unit(rng), S)
+
+
+def _fam_bezier_large_linear(rng, ka, kb):
+    """A curve 1e2..1e5 times larger than the other piece (a segment of length ~S, a point, a
+    line or ray near it), passing through a point on, near or beside that piece."""
+    fr = _Frame(rng, exact=False)
+    S = _size(rng, False)
+    d = _unit(rng)
+    b = fr.linear(kb, np.zeros(3), d, S)
+    X = [rng.uniform(0, 1) * S * d, rng.uniform(0, 1) * S * d + _tiny(rng, -14, -6) * S * _perp(rng, d),
+         rng.normal(size=3) * 2 * S][int(rng.integers(0, 3))]
+    return fr.bezier(_bezier_through(rng, X, _logu(rng, 2, 5) * S, _npts(rng))), b
+
+
+_LINEAR_TRANSLATED_BASES = ("linear_random", "near_parallel", "zero_length", "on_piece", "bezier_tangent_line",
+                            "bezier_crossing")
+
+
+def _fam_linear_far_translated(rng, ka, kb):
+    return _fam_far_translated(rng, ka, kb, bases=_LINEAR_TRANSLATED_BASES)
+
+
 RR = [("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LR = [(lk, rk) for lk in LINEAR for rk in ROUND]
 LR3 = [(lk, rk) for lk in ("line", "ray", "segment") for rk in ROUND]
 BR = [("bezier", "circle"), ("bezier", "disk")]
+LL3 = [p for p in LL if "point" not in p]                    # among lines, rays and segments
+LLZ = [p for p in LL + BL if "segment" in p]                 # with a segment (made zero-length)
 
 # name: (kind pairs, generator)
 FAMILIES = {
-    "random": (KIND_PAIRS, _fam_random),
-    "tangent": (KIND_PAIRS, _fam_tangent),
+    "random": (ROUND_PAIRS, _fam_random),
+    "tangent": (ROUND_PAIRS, _fam_tangent),
     "axis": (LR, _fam_axis),
-    "coplanar": (KIND_PAIRS, _fam_coplanar),
-    "concentric": (KIND_PAIRS, _fam_concentric),
-    "near_concentric": (KIND_PAIRS, _fam_near_concentric),
-    "far_translated": (KIND_PAIRS, _fam_far_translated),
+    "coplanar": (ROUND_PAIRS, _fam_coplanar),
+    "concentric": (ROUND_PAIRS, _fam_concentric),
+    "near_concentric": (ROUND_PAIRS, _fam_near_concentric),
+    "far_translated": (ROUND_PAIRS, _fam_far_translated),
     "far_origin": (LR3, _fam_far_origin),
-    "radius_ratio": (KIND_PAIRS, _fam_radius_ratio),
+    "radius_ratio": (ROUND_PAIRS, _fam_radius_ratio),
     "near_touching": (RR, _fam_near_touching),
     "parallel_height": (RR, _fam_parallel_height),
     "bezier_large": (BR, _fam_bezier_large),
@@ -624,7 +818,24 @@ FAMILIES = {
     # Families found later come last: a case's id ("family/seed/i") seeds its generator with the
     # family's position here, so appending keeps every earlier id's case.
     "shadow_center": (LR3, _fam_shadow_center),
+    # the pairs without a round (points, lines, rays, segments; Bezier curves against them)
+    "linear_random": (LL + BL, _fam_linear_random),
+    "linear_far_translated": (LL + BL, _fam_linear_far_translated),
+    "near_parallel": (LL3, _fam_near_parallel),
+    "linear_far_origin": (LL[1:] + BL[1:], _fam_linear_far_origin),
+    "zero_length": (LLZ, _fam_zero_length),
+    "on_piece": (LL[1:], _fam_on_piece),
+    "bezier_tangent_line": (BL[1:], _fam_bezier_tangent_line),
+    "bezier_crossing": (BL[1:], _fam_bezier_crossing),
+    "bezier_far_control_linear": (BL, _fam_bezier_far_control_linear),
+    "bezier_large_linear": (BL, _fam_bezier_large_linear),
 }
+
+
+def has_round(family):
+    """Whether a family's kind pairs include a circle or disk (the first sixteen families) or
+    not (the pairs among points, lines, rays and segments and Bezier curves against them)."""
+    return any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
 
 
 def _plain(data):
@@ -668,6 +879,34 @@ def to_float32_case(case):
 
 def largest_radius(case):
     return max([case[k + "_data"][6] for k in ("a", "b") if case[k] in ROUND] + [0.0])
+
+
+def bar_scale(case):
+    """The length the bars are relative to besides the true distance.  A query with a circle or
+    disk: its largest radius (the rounds' features set the answer's scale, however far the other
+    shape's origin or however large a curve).  Without one there is no radius, and the scale is
+    the one the pairs' own 50-digit accuracy tests hold the library to: for two points / lines /
+    rays / segments the query's size (reference_linear.query_size: the largest distance between
+    the points that define it, origins included -- a line or ray has no extent, the answer
+    depends on the offsets between the origins and a fixed precision rounds those to eps times
+    their size); for a Bezier curve against one of them the largest length in the query, the
+    control polygon's extent and a segment's length (reference_round.bezier_other_scale, as
+    tests/test_bezier_point_linear.py).  Both are translation invariant; points a hair apart
+    (zero-length segments) are held to the distance between them."""
+    ka, kb = case["a"], case["b"]
+    if ka in ROUND or kb in ROUND:
+        return largest_radius(case)
+    key = _key(case)
+    if key not in _SCALE_CACHE:
+        if ka == "bezier":
+            _SCALE_CACHE[key] = _load("reference_round").bezier_other_scale(case["a_data"], kb,
+                                                                           *_piece_points(kb, case["b_data"]))
+        else:
+            _SCALE_CACHE[key] = _load("reference_linear").query_size(ka, case["a_data"], kb, case["b_data"])
+    return _SCALE_CACHE[key]
+
+
+_SCALE_CACHE = {}
 
 
 def scene_scale(case):
@@ -848,7 +1087,7 @@ class _Form:
             c, s = np.cos(x), np.sin(x)
             return _x1(P["D"]) + _x1(P["Ra"])[..., None] * (c[..., None] * _x1(P["Ua"]) + s[..., None] * _x1(P["Va"]))
         if self.moving == "line":
-            return _x1(P["b0"]) + x[..., None] * _x1(P["m"])
+            return _x1(P["b0"]) + self.line_s(x, P)[..., None] * _x1(P["m"])
         # bezier: Bernstein sum of control points relative to the target centre
         ctrl = P["ctrl"]                       # (n, K, 3)
         k = ctrl.shape[1] - 1
@@ -865,11 +1104,36 @@ class _Form:
             out = out + ((w * c) if c != 1 else w)[..., None] * ctrl[:, None, i, :]
         return out
 
+    @staticmethod
+    def line_s(x, P):
+        """A line's parameter s at x: x itself, or S0 sinh(x) clamped to the piece's interval
+        [slo, shi] (the pairs among linear pieces: uniform steps in x are steps by a constant
+        ratio in s, every magnitude of s from S0 to the window's ends alike; the clamp keeps the
+        rounding of sinh(asinh(lo / S0)) on the piece)."""
+        if "S0" not in P:
+            return x
+        S0, lo, hi = (P[k] if np.ndim(x) == 1 else _x1(P[k]) for k in ("S0", "slo", "shi"))
+        return np.minimum(np.maximum(S0 * np.sinh(x), lo), hi)
+
     def value(self, x, P):
         X = self.points(x, P)
         if self.target in ("circle", "disk"):
             return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk")
-        return _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
+        d = _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
+        if "mperp" not in P:
+            return d
+        inside, s = self.perp_inside(x, P)
+        return np.where(inside, _nrm(_x1(P["cperp"]) + s[..., None] * _x1(P["mperp"])), d)
+
+    def perp_inside(self, x, P):
+        """(a line against a linear target with _perp_parts) whether the target's projection of
+        the point lies inside the target by more than its rounding (there the perpendicular form
+        holds), and the line's parameter s."""
+        s = self.line_s(x, P)
+        x1 = (lambda k: P[k]) if np.ndim(x) == 1 else (lambda k: _x1(P[k]))
+        st = (x1("cu") + s * x1("mu")) / x1("uu")
+        margin = 64 * EPSLD * (np.abs(x1("cu")) + np.abs(s * x1("mu"))) / x1("uu")
+        return (st - margin >= x1("tlo")) & (st + margin <= x1("thi")), s
 
     def f(self, x):
         P = self.p.get(x.dtype.type)
@@ -880,6 +1144,11 @@ class _Form:
     def f_rho(self, x):
         """f and the points' distance from the (round) target's axis, for the zoom."""
         P = self.p.get(x.dtype.type)
+        if self.target not in ROUND:
+            # a point or a linear piece: its local minima lie apart by about the distance itself
+            # (see reference_round.bezier_other), which stands in for rho
+            v = self.f(x)
+            return v, v
         with np.errstate(invalid="ignore", over="ignore"):
             v, rho = _round_dist(self.points(x, P), _x1(P["n"]), _x1(P["R"]), self.target == "disk", True)
         return np.where(np.isnan(v), np.inf, v), rho
@@ -893,10 +1162,17 @@ class _Form:
             mag = mag + P["R"]
         else:
             mag = mag + _nrm(P["tb0"])
+        if "mperp" in P:
+            # the perpendicular parts are double-double results (2^-100 of what they cancel:
+            # |m_perp| = |m| sin(angle), 1e-17 |m| for pieces parallel within 1e-17)
+            inside, s = self.perp_inside(x, P)
+            full = _nrm(P["b0"]) + np.abs(s) * _nrm(P["m"])
+            return np.where(inside, _nrm(P["cperp"]) + np.abs(s) * _nrm(P["mperp"])
+                            + LD(2.0 ** -100 / (16 * EPSLD)) * (full + _nrm(P["tb0"])), mag + full)
         if self.moving == "rim":
             mag = mag + _nrm(P["D"]) + P["Ra"]
         elif self.moving == "line":
-            mag = mag + _nrm(P["b0"]) + np.abs(x) * _nrm(P["m"])
+            mag = mag + _nrm(P["b0"]) + np.abs(self.line_s(x, P)) * _nrm(P["m"])
         else:
             ctrl = P["ctrl"]
             k = ctrl.shape[1] - 1
@@ -1210,13 +1486,15 @@ def _lipschitz(dP, a, b):
     return k * out * (1 + 1e-9)
 
 
-def _minimize_bezier(form, ctrl_dd, nb, Rbl, kb, ld_levels=30, K=8):
+def _minimize_bezier(form, ctrl_dd, target, res, ld_levels=30, K=8):
     """A half curve: float64 value-driven beam search and zoom (_zoom) on t in [0, 1/2], then a
     long-double search of every candidate on its own piece of the curve, re-parametrised on
     [0, 1] with its control points computed in double-double (a curve 1e5 times larger than the
     round is then resolved to ~1e-19 of the round, not of the curve): the pieces [t - h, t + h]
     around the zoom's sampled local minima (h its step there) and [t - 5e-8, t + 5e-8] around the
-    beam's three best.  Returns (value, a, b, u, magnitude) with the best point at t = a + u (b - a)."""
+    beam's three best.  target: the target's parameters (n, R of a round; _linear_target's of a
+    linear piece) per case; res: the zoom's resolution scale per case (a round's radius).
+    Returns (value, a, b, u, magnitude) with the best point at t = a + u (b - a)."""
     n = ctrl_dd[0].shape[0]
     lo, hi = np.zeros(n), np.full(n, 0.5)
     P64 = ctrl_dd[0] + ctrl_dd[1]
@@ -1228,7 +1506,7 @@ def _minimize_bezier(form, ctrl_dd, nb, Rbl, kb, ld_levels=30, K=8):
     # wider, and keeps its three best)
     vb, xb, bcentres, bvals = _beam(form, lo, hi, 8, 14, K, np.float64)
     (zc, zx, zh, _), _ = _zoom(form, lo, hi, lambda c, a, b: _lipschitz(dP[c], a[:, None], b[:, None])[:, 0],
-                               np.asarray(Rbl, dtype=float))
+                               np.asarray(res, dtype=float))
     border = np.argsort(bvals, axis=1, kind="stable")
     beam_x = [xb] + [np.take_along_axis(bcentres, border[:, q:q + 1], 1)[:, 0] for q in (1, 2)
                      if q < border.shape[1]]
@@ -1239,7 +1517,8 @@ def _minimize_bezier(form, ctrl_dd, nb, Rbl, kb, ld_levels=30, K=8):
     b = np.minimum(tc + hw, 0.5)
     Q = _sub_bezier_dd((ctrl_dd[0][cc], ctrl_dd[1][cc]), a, b)
     m = len(cc)
-    sub = _Form(form.name, "bezier", kb, _P(ctrl=Q, n=nb[cc], R=Rbl[cc]), np.zeros(m), np.ones(m), False, _S_GRID)
+    sub = _Form(form.name, "bezier", form.target, _P(ctrl=Q, **{k: v[cc] for k, v in target.items()}), np.zeros(m),
+                np.ones(m), False, _S_GRID)
     vv, uu, _, _ = _beam(sub, np.zeros(m, dtype=LD), np.ones(m, dtype=LD), 2, ld_levels, K, LD,
                          start=(np.zeros((m, 1)), np.ones((m, 1))))
     # the candidate itself (a sampled end point can be the best point seen)
@@ -1256,14 +1535,16 @@ def _stack(case_list, key):
     return np.array([c[key] for c in case_list], dtype=float)
 
 
-def _anchor(kind, data, C):
+def _anchor(kind, data, C, dd=False):
     """A linear shape relative to the centre C, anchored at its point nearest C (double-double):
-    returns long-double b0, m, lo, hi with S = {b0 + s m : s in [lo, hi]}."""
+    returns long-double b0, m, lo, hi with S = {b0 + s m : s in [lo, hi]} (dd: and b0, m as
+    double-double pairs of (n, 3) arrays)."""
     n = data.shape[0]
     zeros = np.zeros((n, 3))
     b = _two_sum(data[:, :3], -C)
     if kind == "point":
-        return _ld(b), np.zeros((n, 3), dtype=LD), np.zeros(n, dtype=LD), np.zeros(n, dtype=LD)
+        out = _ld(b), np.zeros((n, 3), dtype=LD), np.zeros(n, dtype=LD), np.zeros(n, dtype=LD)
+        return out + (b, (zeros, zeros)) if dd else out
     if kind == "segment":
         m = _two_sum(data[:, 3:6], -data[:, :3])
     else:
@@ -1292,7 +1573,7 @@ def _anchor(kind, data, C):
         hi = np.where(ok, _ld(th), LD(0))
     else:
         hi = hi - tcl
-    return _ld(b0), _ld(m), lo, hi
+    return (_ld(b0), _ld(m), lo, hi) + ((b0, m) if dd else ())
 
 
 def _linear_target(kind, data, C):
@@ -1332,6 +1613,8 @@ def screen(cases, use_ld=True):
 
 def _screen(cases, use_ld):
     ka, kb = cases[0]["a"], cases[0]["b"]
+    if kb in LINEAR:
+        return _screen_bezier_linear(cases) if ka == "bezier" else _screen_linear(cases, use_ld)
     n = len(cases)
     B = _stack(cases, "b_data")
     Cb, Nb, Rb = B[:, :3], B[:, 3:6], B[:, 6]
@@ -1374,7 +1657,7 @@ def _screen(cases, use_ld):
                          _T_GRID)
             # (always refined in long double: a float32 scene of a curve 1e5 times larger than the
             # round needs it for the float32 bar too)
-            v, a, b, u, mag = _minimize_bezier(form, dd, nb, Rbl, kb)
+            v, a, b, u, mag = _minimize_bezier(form, dd, dict(n=nb, R=Rbl), Rbl)
             for j in np.flatnonzero(v < best):
                 best[j], names[j], params[j] = v[j], name, (float(a[j]), float(b[j]), LD(u[j]))
                 slack[j] = 16 * EPSLD * float(mag[j])
@@ -1410,6 +1693,200 @@ def _screen(cases, use_ld):
             slack = np.where(sel, (16 * EPSLD if use_ld else 16 * EPS64) * mag.astype(float), slack)
     return ScreenResult(best, slack, [forms[i].name for i in best_f], list(best_x))
 
+
+# ---- pairs without a round: linear pieces among themselves, Bezier curves against them ---------
+_SINH_SPAN = LD(1e22)    # the line parameter's window: S0 = r / (|m| _SINH_SPAN) .. r _SINH_SPAN / |m|
+LINEAR_PASSES = 5        # re-anchored searches of a linear pair (see _screen_linear)
+
+
+def _segment_extent(tgt):
+    """The linear target's finite extent |m| (hi - lo) (0 for points, lines and rays)."""
+    ext = np.sqrt(tgt["tmm"]) * (tgt["thi"] - tgt["tlo"])
+    return np.where(np.isfinite(ext), ext, LD(0))
+
+
+def _screen_linear(cases, use_ld):
+    """Two linear pieces (a the earlier kind).  A point: the closed form against b, anchored at
+    its point nearest the point in double-double.  Otherwise a's parameter against b's closed
+    form, s = S0 sinh(x) (every magnitude of s alike: a convex function of s, unimodal in x; the
+    window +-1e22 r / |m|, r the size of the anchors' offsets, holds the minimiser unless the
+    directions are parallel within 1e-22, where the function is flat), searched in long double
+    (a beam in x), in LINEAR_PASSES passes: relative to b's first point, then each time relative
+    to the best point found so far (rounded to float64), both pieces anchored at their points
+    nearest that reference point in double-double.  Each pass leaves offsets of the size of the
+    distance from the reference point to the minimiser, so the rounding shrinks pass by pass:
+    far origins, far ends, far-translated scenes and pieces parallel within 1e-17 whose
+    minimiser lies 1e10 along them (where a long-double point is rounded by 1e-9) are resolved.
+    The parameter reported is (reference point, s).  use_ld is not used: the search is cheap."""
+    ka, kb = cases[0]["a"], cases[0]["b"]
+    n = len(cases)
+    A, B = _stack(cases, "a_data"), _stack(cases, "b_data")
+    eps = 16 * EPSLD
+    if ka == "point":
+        tgt = _linear_target(kb, B, A[:, :3])
+        w = -tgt["tb0"]
+        v = _lin_dist(w[:, None], tgt["tm"][:, None], tgt["tmm"][:, None], tgt["tlo"][:, None],
+                      tgt["thi"][:, None])[:, 0]
+        slack = (eps * _nrm(w)).astype(float) + _anchor_error(kb, B, A[:, :3])
+        return ScreenResult(v, slack, ["point|linear"] * n, [LD(0)] * n)
+    C = B[:, :3].copy()
+    best = np.full(n, LD(np.inf), dtype=LD)
+    slack = np.zeros(n)
+    params = [None] * n
+    todo = np.arange(n)
+    for _ in range(LINEAR_PASSES):
+        v, mag, s, nxt = _linear_pass(ka, kb, A[todo], B[todo], C[todo])
+        mag = mag + (_anchor_error(ka, A[todo], C[todo]) + _anchor_error(kb, B[todo], C[todo])) / eps
+        # passes compared by their certified bounds (value + rounding slack)
+        for q in np.flatnonzero(v + eps * mag < best[todo] + slack[todo]):
+            j = todo[q]
+            best[j], params[j] = v[q], (tuple(float(c) for c in C[j]), LD(s[q]))
+            slack[j] = eps * float(mag[q])
+        # the next pass where the best point moved the reference point (else it would repeat)
+        moved = np.isfinite(nxt).all(axis=1) & (nxt != C[todo]).any(axis=1)
+        C[todo[moved]] = nxt[moved]
+        todo = todo[moved]
+        if not len(todo):
+            break
+    return ScreenResult(best, slack, ["line|linear"] * n, params)
+
+
+def _anchor_error(kind, data, C):
+    """A bound on the error of _anchor's double-double anchor of a piece relative to C: 2^-100 of
+    the offsets it cancels (an origin 1e10 from C anchored within 1e-7 of it: 1e-20)."""
+    off = np.linalg.norm(data[:, :3] - C, axis=1)
+    if kind == "segment":
+        off = off + np.linalg.norm(data[:, 3:6] - C, axis=1)
+    return 2.0 ** -100 * off
+
+
+def _dd_vec(v, i):
+    return v[0][:, i], v[1][:, i]
+
+
+def _dd_vsub(x, y):
+    """x - y for double-double (n, 3) vectors."""
+    return tuple(np.stack(c, axis=1) for c in zip(*[_dd_add(_dd_vec(x, i), _dd_neg(_dd_vec(y, i))) for i in range(3)]))
+
+
+def _perp_parts(ka, kb, A, B, C):
+    """The moving piece a against the target piece b, both anchored at their points nearest C:
+    the target's parameters (_linear_target's) and, in double-double rounded to long double, the
+    parts of c = b0 - tb0 and of m perpendicular to b's direction u, with c.u, m.u and u.u: where
+    b's projection of a(s) lies inside b, the distance is |c_perp + s m_perp|, free of the
+    cancellation of |w - (w.u / u.u) u| for w = c + s m (1e7 long: 1e-12 of rounding, against a
+    distance that varies by 1e-14 over 1e7 along two lines parallel within 1e-17)."""
+    b0, m, lo, hi, b0_dd, m_dd = _anchor(ka, A, C, dd=True)
+    tb0, tm, tlo, thi, tb0_dd, u = _anchor(kb, B, C, dd=True)
+    uu = _dd_dot(u, u)
+    ok = uu[0] > 0
+    uu_safe = (np.where(ok, uu[0], 1.0), np.where(ok, uu[1], 0.0))
+
+    def perp(v):
+        k = _dd_div(_dd_dot(v, u), uu_safe)
+        k = (np.where(ok, k[0], 0.0), np.where(ok, k[1], 0.0))
+        return tuple(np.stack(c, axis=1) for c in zip(*[
+            _dd_add(_dd_vec(v, i), _dd_neg(_dd_mul(k, _dd_vec(u, i)))) for i in range(3)]))
+    c_dd = _dd_vsub(b0_dd, tb0_dd)
+    tgt = dict(tb0=tb0, tm=tm, tmm=np.sum(tm * tm, axis=1), tlo=tlo, thi=thi)
+    extra = dict(cperp=_ld(perp(c_dd)), mperp=_ld(perp(m_dd)), cu=_ld(_dd_dot(c_dd, u)), mu=_ld(_dd_dot(m_dd, u)),
+                 uu=_ld(uu_safe))
+    return b0, m, lo, hi, tgt, extra
+
+
+def _linear_pass(ka, kb, A, B, C):
+    """One pass of _screen_linear relative to the reference points C: (value, magnitude of the
+    cancelling quantities, parameter s, the best point rounded to float64) per case."""
+    eps = 16 * EPSLD
+    b0, m, lo, hi, tgt, extra = _perp_parts(ka, kb, A, B, C)
+    mn = _nrm(m)
+    r = np.maximum(_nrm(b0) + _nrm(tgt["tb0"]) + _segment_extent(tgt), LD(1e-280))
+    ok = mn > 0
+    S0 = np.where(ok, r / np.where(ok, mn, 1) / _SINH_SPAN, LD(1))
+    Smax = S0 * _SINH_SPAN * _SINH_SPAN
+    xlo = np.where(ok, np.arcsinh(np.maximum(lo, -Smax) / S0), LD(0))
+    xhi = np.where(ok, np.arcsinh(np.minimum(hi, Smax) / S0), LD(0))
+    form = _Form("line|linear", "line", "linear", _P(b0=b0, m=m, S0=S0, slo=lo, shi=hi, **tgt, **extra), xlo, xhi,
+                 False, _S_GRID)
+    v, x, _, _ = _beam(form, xlo, xhi, 3, 40, 8, LD)
+    mag = form.magnitude(x)
+    s = form.line_s(x, form.p.ld)
+    nxt = (C.astype(LD) + b0 + s[:, None] * m).astype(float)
+    # the anchor itself (x = 0) where it is as good up to the rounding: on a flat function
+    # (parallel pieces) the search may stop anywhere, 1e8 away where the rounding is large
+    x0 = np.minimum(np.maximum(LD(0), xlo), xhi)
+    v0, mag0 = form.f(x0[:, None])[:, 0], form.magnitude(x0)
+    take0 = v0 + eps * mag0 <= v + eps * mag
+    return (np.where(take0, v0, v), np.where(take0, mag0, mag), np.where(take0, form.line_s(x0, form.p.ld), s),
+            nxt)
+
+
+def _bezier_eval64(ctrl, t):
+    """B(t) (float64, de Casteljau) of curves (n, K, 3) at t (n,)."""
+    P = ctrl.copy()
+    while P.shape[1] > 1:
+        P = P[:, :-1] + t[:, None, None] * (P[:, 1:] - P[:, :-1])
+    return P[:, 0]
+
+
+def _screen_bezier_linear(cases):
+    """A Bezier curve against a point, line, ray or segment: the curve's t against the piece's
+    closed form, by the halves of the Bezier-round screen (_minimize_bezier; the zoom resolves
+    1e-4 of the query's size, or the distance itself where larger, as reference_round.bezier_other
+    does), twice: relative to the control point nearest the piece, then relative to the best
+    point found (rounded to float64); the piece anchored at its point nearest that reference point
+    in double-double, the control points taken relative to it exactly."""
+    kb = cases[0]["b"]
+    n = len(cases)
+    ctrl = np.array([c["a_data"] for c in cases], dtype=float)        # (n, K, 3)
+    B = _stack(cases, "b_data")
+    ext = np.max(np.linalg.norm(ctrl - ctrl[:, :1], axis=2), axis=1)
+    if kb == "segment":
+        ext = np.maximum(ext, np.linalg.norm(B[:, 3:6] - B[:, :3], axis=1))
+    res = np.maximum(1e-4 * ext, 1e-300)
+    o = B[:, :3]
+    m = np.zeros((n, 3)) if kb == "point" else (B[:, 3:6] - o if kb == "segment" else B[:, 3:6])
+    lo, hi = {"point": (0.0, 0.0), "line": (-np.inf, np.inf), "ray": (0.0, np.inf), "segment": (0.0, 1.0)}[kb]
+    near = _lin_dist(ctrl - o[:, None], m[:, None], np.sum(m * m, axis=1)[:, None], lo, hi)
+    C = ctrl[np.arange(n), np.argmin(np.where(np.isfinite(near), near, np.inf), axis=1)]
+    best = np.full(n, LD(np.inf), dtype=LD)
+    names, params = [None] * n, [None] * n
+    slack = np.zeros(n)
+    t_best = np.zeros(n)
+    todo = np.arange(n)
+    for pass_ in range(2):
+        sub = [ctrl[todo], B[todo], C[todo], res[todo]]
+        for name, v, a, b, u, mag in _bezier_linear_pass(kb, *sub):
+            mag = mag + _anchor_error(kb, B[todo], C[todo]) / (16 * EPSLD)
+            # halves and passes compared by their certified bounds (value + rounding slack)
+            for q in np.flatnonzero(v + 16 * EPSLD * mag < best[todo] + slack[todo]):
+                j = todo[q]
+                best[j], names[j], params[j] = v[q], name, (float(a[q]), float(b[q]), LD(u[q]))
+                slack[j] = 16 * EPSLD * float(mag[q])
+                t = float(a[q]) + float(u[q]) * (float(b[q]) - float(a[q]))
+                t_best[j] = t if name == "bezier|linear" else 1 - t
+        # the second pass where the rounding slack is not negligible against the long-double bar
+        # (1e-15 of the query's size): the reference point far from the minimum
+        todo = np.flatnonzero(slack > 1e-17 * np.maximum(best.astype(float), ext))
+        if pass_ == 1 or not len(todo):
+            break
+        nxt = _bezier_eval64(ctrl[todo], t_best[todo])
+        keep = np.isfinite(nxt).all(axis=1)
+        todo = todo[keep]
+        C[todo] = nxt[keep]
+    return ScreenResult(best, slack, names, params)
+
+
+def _bezier_linear_pass(kb, ctrl, B, C, res):
+    """Both halves of _screen_bezier_linear relative to the reference points C: yields (form
+    name, value, a, b, u, magnitude) per half."""
+    n = len(ctrl)
+    rel_dd = _two_sum(ctrl, -C[:, None, :])
+    tgt = _linear_target(kb, B, C)
+    for name, order in (("bezier|linear", slice(None)), ("bezier_reversed|linear", slice(None, None, -1))):
+        dd = (rel_dd[0][:, order, :].copy(), rel_dd[1][:, order, :].copy())
+        form = _Form(name, "bezier", "linear", _P(ctrl=_ld(dd), **tgt), np.zeros(n), np.full(n, 0.5), False, _T_GRID)
+        yield (name,) + tuple(_minimize_bezier(form, dd, tgt, res))
 
 # ---- residuals: how far a point is from a shape (long double, offsets in double-double) -------
 def residuals(kind, data, pts, params=None):
@@ -1482,8 +1959,9 @@ def make_shape(cd, kind, data, dtype=np.float64):
 
 
 def pair_scale(case):
-    """The pair's length scale of within()'s documented tolerance 64 eps (s + d) (effects.hpp:
-    the sizes and separation of the bounding balls; a line's distance from the round's centre)."""
+    """The pair's length scale of within()'s documented tolerance 64 eps (s + d) (bounds.hpp
+    pair_scale: the sizes and separation of the bounding balls; a line or ray counts by its
+    distance from the other's centre, two of them by the separation of their origins)."""
     def ball(kind, data):
         d = np.asarray(data, float)
         if kind == "point":
@@ -1497,19 +1975,24 @@ def pair_scale(case):
         lo, hi = d.min(axis=0), d.max(axis=0)
         c = (lo + hi) / 2
         return c, float(max(np.linalg.norm(p - c) for p in d))
+    def from_line(kind, data, c):
+        d = np.asarray(data, float)
+        o, u = d[:3], d[3:6]
+        t = float(np.dot(c - o, u) / np.dot(u, u))
+        if kind == "ray":
+            t = max(t, 0.0)
+        return float(np.linalg.norm(o + t * u - c))
     ka, kb = case["a"], case["b"]
     ca, ra = ball(ka, case["a_data"])
     cb, rb = ball(kb, case["b_data"])
-    s = rb
-    if math.isfinite(ra):
-        s = max(s, ra, float(np.linalg.norm(ca - cb)))
+    if math.isfinite(ra) and math.isfinite(rb):
+        s = max(ra, rb, float(np.linalg.norm(ca - cb)))
+    elif math.isfinite(rb):
+        s = max(rb, from_line(ka, case["a_data"], cb))
+    elif math.isfinite(ra):
+        s = max(ra, from_line(kb, case["b_data"], ca))
     else:
-        d = np.asarray(case["a_data"], float)
-        o, u = d[:3], d[3:6]
-        t = float(np.dot(cb - o, u) / np.dot(u, u))
-        if ka == "ray":
-            t = max(t, 0.0)
-        s = max(s, float(np.linalg.norm(o + t * u - cb)))
+        s = float(np.linalg.norm(ca - cb))
     return s if s > 0 else 1.0
 
 
@@ -1621,7 +2104,7 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
                     np.array([c["b_data"] for c in group], dtype=float))}
     g32 = [to_float32_case(c) for c in group]
     data["f32"] = (np.array([c["a_data"] for c in g32], dtype=float), np.array([c["b_data"] for c in g32], dtype=float))
-    radius = {"f64": np.array([largest_radius(c) for c in group]), "f32": np.array([largest_radius(c) for c in g32])}
+    radius = {"f64": np.array([bar_scale(c) for c in group]), "f32": np.array([bar_scale(c) for c in g32])}
     sscale = {"f64": np.array([scene_scale(c) for c in group]), "f32": np.array([scene_scale(c) for c in g32])}
     pscale = {"f64": np.array([pair_scale(c) for c in group]), "f32": np.array([pair_scale(c) for c in g32])}
     U = {"f64": np.array([screens[i]["value"] for i in idx], dtype=LD),
@@ -1695,11 +2178,19 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
                                          got=str(d.dtype), expected=np.dtype(want).name))
             dl, cl = d.astype(LD), cdist.astype(LD)
             ra_, rb_, sep = resid[(solver, precision, order)]
+            ulps_o = ulps
+            if ka not in ROUND and kb not in ROUND:
+                # without a round the closest points can lie far outside the scene (1e5 along two
+                # lines 1e-5 rad apart): each is rounded by ulps of its own size
+                with np.errstate(invalid="ignore"):
+                    pmag = np.maximum(np.abs(np.asarray(r.point_a, dtype=float)).max(axis=1),
+                                      np.abs(np.asarray(r.point_b, dtype=float)).max(axis=1))
+                ulps_o = ULPS * eps_out * np.maximum(sscale[scene], pmag)
             acc_bad = inaccurate.setdefault(order, set())
             for j in range(n):
                 c = gcases[j]
                 info = dict(screen=Us[j], screen_slack=sl[j], verified_pair_bound=upair[scene][j],
-                            bar_abs=bar_abs[j], largest_radius=radius[scene][j])
+                            bar_abs=bar_abs[j], bar_scale=radius[scene][j])
                 for entry, val in (("distance", dl[j]), ("closest_points", cl[j])):
                     if not np.isfinite(val) or val < 0:
                         findings.append(_finding("non_finite", c, solver, precision, order, entry, library=val))
@@ -1713,14 +2204,14 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
                                                  excess=(val - Ub[j]) / scale_[j], **info))
                         acc_bad.add(j)
                 # closest points on their shapes; separation equals the reported distance
-                if not (ra_[j] <= ulps[j] and rb_[j] <= ulps[j]):
+                if not (ra_[j] <= ulps_o[j] and rb_[j] <= ulps_o[j]):
                     findings.append(_finding("point_off_shape", c, solver, precision, order, "closest_points",
-                                             off_a=ra_[j], off_b=rb_[j], allowed=ulps[j],
+                                             off_a=ra_[j], off_b=rb_[j], allowed=ulps_o[j],
                                              point_a=np.asarray(r.point_a)[j],
                                              point_b=np.asarray(r.point_b)[j]))
-                if not abs(sep[j] - cl[j]) <= bar_abs[j] + ulps[j]:
+                if not abs(sep[j] - cl[j]) <= bar_abs[j] + ulps_o[j]:
                     findings.append(_finding("separation", c, solver, precision, order, "closest_points",
-                                             separation=sep[j], library=cl[j], allowed=bar_abs[j] + ulps[j],
+                                             separation=sep[j], library=cl[j], allowed=bar_abs[j] + ulps_o[j],
                                              point_a=np.asarray(r.point_a)[j], point_b=np.asarray(r.point_b)[j]))
                 if not abs(dl[j] - cl[j]) <= 2 * bar_abs[j]:
                     findings.append(_finding("distance_vs_closest_points", c, solver, precision, order, "both",
@@ -1874,7 +2365,11 @@ def mp_reference(case):
         return _REF_CACHE[key]
     L, R = _load("reference"), _load("reference_round")
     ka, a, kb, b = key
-    if ka in LINEAR:
+    if kb in LINEAR and ka in LINEAR:
+        ref = _load("reference_linear").linear_linear(ka, a, kb, b)
+    elif kb in LINEAR:
+        ref = R.bezier_other([list(p) for p in a], kb, *_piece_points(kb, b)).distance
+    elif ka in LINEAR:
         ref = L.reference(ka, a, kb, b).distance
     elif ka == "bezier":
         f = R.bezier_disk if kb == "disk" else R.bezier_circle
@@ -1885,6 +2380,37 @@ def mp_reference(case):
         ref = f(a[:3], a[3:6], a[6], b[:3], b[3:6], b[6]).distance
     _REF_CACHE[key] = ref
     return ref
+
+
+def _piece_points(kind, data):
+    """A point's (p,), a line's or ray's (origin, direction), a segment's (p0, p1)."""
+    return (data[:3],) if kind == "point" else (data[:3], data[3:6])
+
+
+def _mp_piece_distance(p, kind, data):
+    """The 50-digit distance (reference_round's context) from the mp point p to a linear piece."""
+    R = _load("reference_round")
+    if kind == "point":
+        return R.dist(p, R.vec(data[:3]))
+    return R.point_linear_closest(p, kind, R.vec(data[:3]), R.vec(data[3:6]))[0]
+
+
+def _mp_line_point(ka, a, C, x):
+    """The point (reference_round's context) of the line, ray or segment a at the screen's
+    parameter x: relative to the anchor (a's point nearest C), in units of the direction scaled
+    by the power of two sc of _anchor: t = tc + x sc."""
+    L, R = _load("reference"), _load("reference_round")
+    lin = L.Linear(ka, a)
+    if lin.mm == 0:
+        t = L.mpf(0)
+    else:
+        m = np.asarray(a[3:6], float)
+        if ka == "segment":
+            m = _two_sum(m, -np.asarray(a[:3], float))[0]
+        sc = 2.0 ** -math.floor(math.log2(max(float(np.max(np.abs(m))), 1e-300)))
+        tc = -L._dot(L._sub(lin.B, L._v(C)), lin.m) / lin.mm
+        t = lin.clamp(tc + L.mpf(R.ctx.nstr(x, 60)) * L.mpf(sc))
+    return tuple(R.mpf(L.mp.nstr(c, 60)) for c in lin.point(t))
 
 
 def _mpf_ld(x):
@@ -1909,23 +2435,18 @@ def mp_screen_value(case, form, param):
         p = rnd.rim_point(x)
         return L.Linear(ka, a).distance_to_point(tuple(L.mpf(ctx.nstr(c, 60)) for c in p))
     if form == "line|round":
-        lin = L.Linear(ka, a)
         rnd = R.make_round(b[:3], b[3:6], b[6])
-        Cb = L._v(b[:3])
-        if lin.mm == 0:
-            t = L.mpf(0)
-        else:
-            # the screen's parameter s is relative to the anchor (the point nearest the centre),
-            # in units of the direction scaled by the power of two sc of _anchor: t = tc + s sc
-            m = np.asarray(a[3:6], float)
-            if ka == "segment":
-                m = _two_sum(m, -np.asarray(a[:3], float))[0]
-            sc = 2.0 ** -math.floor(math.log2(max(float(np.max(np.abs(m))), 1e-300)))
-            tc = -L._dot(L._sub(lin.B, Cb), lin.m) / lin.mm
-            t = lin.clamp(tc + L.mpf(ctx.nstr(x, 60)) * L.mpf(sc))
-        p = lin.point(t)
-        pr = tuple(R.mpf(L.mp.nstr(c, 60)) for c in p)
+        pr = _mp_line_point(ka, a, b[:3], x)
         return R.point_disk(pr, rnd)[0] if kb == "disk" else R.point_circle(pr, rnd)[0]
+    if form == "point|linear":
+        return _mp_piece_distance(R.vec(a[:3]), kb, b)
+    if form == "line|linear":
+        C, s = param
+        return _mp_piece_distance(_mp_line_point(ka, a, C, _mpf_ld(s)), kb, b)
+    if form in ("bezier|linear", "bezier_reversed|linear"):
+        lo_, hi_, u = param
+        t = R.mpf(lo_) + _mpf_ld(u) * (R.mpf(hi_) - R.mpf(lo_))
+        return _mp_piece_distance(R.bezier_point(a, t if form == "bezier|linear" else 1 - t), kb, b)
     if form in ("bezier|round", "bezier_reversed|round"):
         rnd = R.make_round(b[:3], b[3:6], b[6])
         lo_, hi_, u = param
@@ -1961,13 +2482,13 @@ def confirm(finding, case, screen_info):
     if scr is not None:
         finding["reference_screen"] = float(scr)
         R = _load("reference_round")
-        scale_ = max(abs(ref), R.mpf(largest_radius(c)), R.mpf("1e-300"))
+        scale_ = max(abs(ref), R.mpf(bar_scale(c)), R.mpf("1e-300"))
         if scr < ref - R.mpf(MISS_REL) * scale_:
             finding["reference_missed"] = True
             finding["basis"] = "the screen's pair at 50 digits (the mpmath reference missed the minimum)"
             best = scr
     finding["reference"] = float(best)
-    scale_ = max(float(best), largest_radius(c))
+    scale_ = max(float(best), bar_scale(c))
     bar = BARS[finding["precision"]] * scale_
     vals = [finding[k] for k in ("library", "distance", "closest_points") if k in finding]
     # long-double answers are stored as 25-digit text (exact far below their ulp)
@@ -2110,7 +2631,7 @@ def reference_check(cd, cases, combo_list=None):
                 diags.append(dict(case_id=case["id"], problem=f"screen point not re-evaluable: {e}"))
             R = _load("reference_round")
             best = ref
-            scale_ = max(float(ref), largest_radius(c))
+            scale_ = max(float(ref), bar_scale(c))
             if scr_mp is not None and scr_mp < ref - R.mpf(MISS_REL) * R.mpf(max(scale_, 1e-300)):
                 diags.append(dict(case_id=case["id"], family=case["family"], pair=f"{case['a']}-{case['b']}",
                                   problem="reference missed the minimum", reference=float(ref),

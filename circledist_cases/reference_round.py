@@ -762,6 +762,16 @@ def point_linear_closest(p: Vec, kind: str, origin: Vec, other: Vec):
     return dist(p, q), q, s
 
 
+def bezier_other_scale(ctrl, kind: str, *data) -> float:
+    """The largest length in a Bezier-point/line/ray/segment query: the control polygon's extent
+    (the largest distance of a control point from the first) and a segment's length."""
+    pts = [vec(p) for p in ctrl]
+    extent = max(float(norm(sub(p, pts[0]))) for p in pts)
+    if kind == "segment":
+        extent = max(extent, float(dist(vec(data[0]), vec(data[1]))))
+    return extent
+
+
 def bezier_other(ctrl, kind: str, *data) -> Reference:
     """Bezier B(t), t in [0, 1], against a point (kind "point", data (p,)), a line or ray
     (origin, direction) or a segment (p0, p1): min over t of the closed-form distance from B(t)
@@ -785,9 +795,7 @@ def bezier_other(ctrl, kind: str, *data) -> Reference:
     def f(t):
         return closest(bezier_point(pts, t))[0]
 
-    extent = max(float(norm(sub(p, pts[0]))) for p in pts)
-    if kind == "segment":
-        extent = max(extent, float(dist(vec(data[0]), vec(data[1]))))
+    extent = bezier_other_scale(ctrl, kind, *data)
     size = max(extent, 1e-300)
 
     def resolution(a, b, lh):

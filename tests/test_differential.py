@@ -1,22 +1,29 @@
 """The CI slice of the standing differential accuracy test (issue 14, "keep it closed").
 
-A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to;
+A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to
+(every pair of kinds: a circle or disk with any kind, points / lines / rays / segments among
+themselves, a Bezier curve against each of those);
 every solver ("bracketing", "companion", "polished", "eigen") x precision (float64, long double,
 float32); both argument orders; distance(), closest_points(), within(), distance_if_within() and
 intersects(), batched and scalar.  Each answer is judged by the fast NumPy screen (an independent
 one-parameter minimisation, an upper bound from genuine points) and by the closest points the
 library returns (on their shapes, separation == distance); every accuracy finding is confirmed
-against the 50-digit mpmath references of circledist_cases/reference.py and circledist_cases/reference_round.py before
-it counts.  The first case of every (family, kind pair) is also compared with those references
-directly, for every combination.
+against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py and
+reference_linear.py before it counts.  The first case of every (family, kind pair) is also
+compared with those references directly, for every combination (a Bezier curve against a linear
+piece: one family per pair, DIRECT_BEZIER_LINEAR).
 
-Bars (never loosened here): |d - d_true| <= bar * max(d_true, largest radius), bar 1e-12 in
-float64, 1e-15 in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs.
+Bars (never loosened here): |d - d_true| <= bar * max(d_true, scale), bar 1e-12 in float64, 1e-15
+in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs; the scale is the largest radius,
+or without a circle or disk the scale of the pairs' own accuracy tests (differential.bar_scale).
 
-684 cases, ~135,000 library answers (every entry point; each within / distance_if_within probe
-counts) and 120 direct references: about 58 s of CPU on one core of the project's 2-core machine
-(2026-11-25; the library's answers take most of it). With scalar calls on every case it was 75 s,
-~197,000 answers.  A failure lists one reproducer per finding class;
+872 cases (724 of the sixteen families with a circle or disk, 148 of the ten without: two per
+family and kind pair), 179,016 library answers (every entry point; each within /
+distance_if_within probe counts) and 178 direct references: about 80 s of CPU on the project's
+2-core machine (2026-11-26, the file's user time, other jobs loading it to ~3; the slice without
+the families of the pairs without a round took 61 s in the same conditions, 58 s on 2026-11-25;
+the library's answers take most of it). With scalar calls on every case it was 75 s, ~197,000
+answers, before those families.  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
@@ -34,13 +41,24 @@ cd = pytest.importorskip("circledist")
 SEED = 20261114
 PER_PAIR = 4          # cases per (family, kind pair) ...
 MIN_PER_FAMILY = 40   # ... and at least this many per family
+PER_PAIR_NO_ROUND = 2  # cases per (family, kind pair) of the families without a circle or disk
 SCALAR_EVERY = 4      # scalar calls on every 4th case
+# The direct 50-digit comparison takes the first case of every (family, kind pair), except for a
+# Bezier curve against a point, line, ray or segment (whose reference costs ~0.5 s a case): one
+# (family, pair) each, an adversarial one.  Their other families' findings are confirmed against
+# the same references all the same, and tests/test_bezier_point_linear.py compares them directly.
+DIRECT_BEZIER_LINEAR = {("bezier", "point"): "bezier_large_linear", ("bezier", "line"): "bezier_tangent_line",
+                        ("bezier", "ray"): "bezier_crossing", ("bezier", "segment"): "bezier_far_control_linear"}
 
 
 def slice_cases():
     out = []
     for family, (pairs, _) in D.FAMILIES.items():
-        out += D.generate(family, max(PER_PAIR * len(pairs), MIN_PER_FAMILY), SEED)
+        if D.has_round(family):
+            n = max(PER_PAIR * len(pairs), MIN_PER_FAMILY)
+        else:
+            n = PER_PAIR_NO_ROUND * len(pairs)
+        out += D.generate(family, n, SEED)
     return out
 
 
@@ -48,14 +66,23 @@ def slice_cases():
 def results():
     t0 = time.perf_counter()
     cases = slice_cases()
-    # Scalar calls (batch == scalar, to the bit) on every 4th case: each (family, kind pair) keeps at
-    # least one (it has PER_PAIR cases or more, in a row); test_bindings.py checks single queries
-    # against batch elements for every pair, solver and precision besides.
-    findings, stats = D.check_and_confirm(cd, cases, scalar=range(0, len(cases), SCALAR_EVERY))
+    # Scalar calls (batch == scalar, to the bit) on every 4th case, and on the first case of every
+    # (family, kind pair) of the families without a round (two cases per pair, which every 4th
+    # case would miss for some); test_bindings.py checks single queries against batch elements for
+    # every pair, solver and precision besides.
+    scalar = set(range(0, len(cases), SCALAR_EVERY))
+    seen = set()
+    for i, c in enumerate(cases):
+        if not D.has_round(c["family"]) and (c["family"], c["a"], c["b"]) not in seen:
+            seen.add((c["family"], c["a"], c["b"]))
+            scalar.add(i)
+    findings, stats = D.check_and_confirm(cd, cases, scalar=scalar)
     t1 = time.perf_counter()
     firsts = {}
     for c in cases:
-        firsts.setdefault((c["family"], c["a"], c["b"]), c)
+        pair = (c["a"], c["b"])
+        if DIRECT_BEZIER_LINEAR.get(pair, c["family"]) == c["family"]:
+            firsts.setdefault((c["family"], c["a"], c["b"]), c)
     ref_findings, diags = D.reference_check(cd, list(firsts.values()))
     t2 = time.perf_counter()
     print(f"\ndifferential slice: {len(cases)} cases, {sum(stats['answers'].values())} library answers, "

@@ -1,9 +1,10 @@
 """Points, lines, rays and segments against each other, against an independent 50-digit reference.
 
-The reference minimizes over one parameter: s -> dist(A(s), B), the distance from a point of A
-to the piece B (its projection clamped, in mpmath), is convex in s, so a ternary search finds its
-minimum; s = tan(phi) maps an infinite interval onto a finite one (a monotone change of
-variable keeps the function unimodal). Nothing of the library is used.
+The reference (circledist_cases/reference_linear.py, shared with the differential test) minimizes
+over one parameter: s -> dist(A(s), B), the distance from a point of A to the piece B (its
+projection clamped, in mpmath), is convex in s, so a bracket search (golden section) finds its minimum;
+s = tan(phi) maps an infinite interval onto a finite one (a monotone change of variable keeps the
+function unimodal). Nothing of the library is used.
 
 The bar: |error| <= 1e-12 x max(true distance, the query's size), the size being the largest
 distance from A's first point to any point that defines the query (origins, segment ends):
@@ -20,51 +21,11 @@ import numpy as np
 import pytest
 
 import circledist as cd
+from circledist_cases import reference_linear as RL
 
-mp.mp.dps = 50
-KINDS = ("point", "line", "ray", "segment")
+KINDS = RL.KINDS
 PAIRS = [(a, b) for a, b in itertools.combinations_with_replacement(KINDS, 2)]
-INF = mp.inf
-
-
-def interval(kind):
-    return {"point": (0, 0), "line": (-INF, INF), "ray": (0, INF), "segment": (0, 1)}[kind]
-
-
-def piece(kind, p, q):
-    """(origin, direction, lo, hi) in mpmath; a segment's direction is q - p exactly."""
-    o = mp.matrix([mp.mpf(x) for x in p])
-    d = mp.matrix([mp.mpf(x) for x in q]) - (o if kind == "segment" else 0)
-    lo, hi = interval(kind)
-    return o, d, lo, hi
-
-
-def point_to_piece(x, b):
-    o, d, lo, hi = b
-    dd = (d.T * d)[0]
-    t = 0 if dd == 0 else min(max(((x - o).T * d)[0] / dd, lo), hi)
-    return mp.norm(x - (o + t * d))
-
-
-def reference(a, b):
-    o, d, lo, hi = a
-    if lo == hi:
-        return point_to_piece(o, b)
-    to_s = (lambda phi: phi) if (lo, hi) == (0, 1) else (lambda phi: mp.tan(phi))
-    a_lo = 0 if (lo, hi) == (0, 1) or lo == 0 else -mp.pi / 2
-    a_hi = 1 if (lo, hi) == (0, 1) else mp.pi / 2
-    f = lambda phi: point_to_piece(o + to_s(phi) * d, b)
-    grid = [a_lo + (a_hi - a_lo) * mp.mpf(i) / 120 for i in range(121)]
-    values = [f(g) for g in grid]
-    i = min(range(len(grid)), key=lambda k: values[k])
-    left, right = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
-    for _ in range(160):
-        m1, m2 = left + (right - left) / 3, right - (right - left) / 3
-        if f(m1) <= f(m2):
-            right = m2
-        else:
-            left = m1
-    return min(values[i], f((left + right) / 2))
+piece, point_to_piece, reference = RL.piece, RL.point_to_piece, RL.reference
 
 
 def make(kind, p, q):
@@ -73,9 +34,7 @@ def make(kind, p, q):
 
 
 def size(ka, a, kb, b):
-    pts = [np.asarray(a[0])] + ([np.asarray(a[1])] if ka == "segment" else []) + \
-          [np.asarray(b[0])] + ([np.asarray(b[1])] if kb == "segment" else [])
-    return max(float(np.linalg.norm(x - pts[0])) for x in pts[1:]) if len(pts) > 1 else 0.0
+    return RL.query_size(ka, np.concatenate(a), kb, np.concatenate(b))
 
 
 def rotate(v, axis, angle):
@@ -148,8 +107,8 @@ def test_linear_pairs_against_the_reference(case):
             assert abs(d - truth) <= bar, f"{name}: distance {d!r}, truth {truth!r}"
             assert float(r.distance) == d, "closest_points().distance differs from distance()"
             pa, pb = (r.point_b, r.point_a) if swapped else (r.point_a, r.point_b)
-            on_a = float(point_to_piece(mp.matrix([mp.mpf(x) for x in pa]), piece(ka, *a)))
-            on_b = float(point_to_piece(mp.matrix([mp.mpf(x) for x in pb]), piece(kb, *b)))
+            on_a = float(point_to_piece(tuple(mp.mpf(float(x)) for x in pa), piece(ka, *a)))
+            on_b = float(point_to_piece(tuple(mp.mpf(float(x)) for x in pb), piece(kb, *b)))
             # The points are rounded to doubles: they lie on their pieces within that rounding.
             slack = bar + 4 * np.finfo(float).eps * max(np.abs(pa).max(), np.abs(pb).max())
             assert on_a <= slack and on_b <= slack, f"{name}: points off their pieces by {on_a:.3g}, {on_b:.3g}"

@@ -9,6 +9,9 @@ max(true distance, largest radius); float32 answers are double answers rounded, 
 the double one plus the rounding of the answer (4 float32 ulps).
 """
 
-# None open. The last two (a degree-6 Bezier point-symmetric about a ring's center, companion
-# policy; internally tangent coplanar rings, bracketing in long double) are fixed and kept in
-# test_regressions.py. A new one goes here as a strict xfail with its 50-digit reference.
+# None open. The last two of the round pairs (a degree-6 Bezier point-symmetric about a ring's
+# center, companion policy; internally tangent coplanar rings, bracketing in long double) are fixed
+# and kept in test_regressions.py, and so is the first class of the pairs without a round (the
+# bracketing policy on Bezier curves with a control point 1e9..1e11 away against a point, line,
+# ray or segment: test_bezier_far_control_against_linear). A new one goes here as a strict xfail
+# with its 50-digit reference.

@@ -537,3 +537,86 @@ CONCENTRIC_BEZIER = (
 def test_bezier_through_the_center(precision):
     for solver in SOLVERS:
         _check_open(*CONCENTRIC_BEZIER[:2], solver, precision, *CONCENTRIC_BEZIER[2:])
+
+
+# Found by the differential families of the pairs without a round (family
+# bezier_far_control_linear; docs/differential_report.md): the bracketing policy on a Bezier curve
+# with one control point 1e9..1e11 away answered the distance at a wrong parameter, off by up to
+# 1e-3 in t (the root of an ill-conditioned polynomial), against
+#  - a point (bezier_far_control_linear/20261114/0, the CI slice's case): 0.22785 for 0.22186 in
+#    double (the only local minimum at t = 0.98501), 3.9e-12 of the curve's extent 1.5e9;
+#  - a line (seed 1, cases 73 and 25): 0.60423 for 0.14937 in double; 0.067303 for 0.038455 in
+#    long double (5.4e-13 of the extent 5.3e10, against the 1e-15 bar);
+#  - a ray and a segment (seed 2, cases 166 and 559): 1.86340 for 1.81322 in double; 6.31175
+#    (double) and 6.30991 (long double) for 6.24982.
+# Found with the builds of 45d71ff..cbdb1e2 (installed 09:07:58, 2026-11-26); the build installed
+# at 09:44:20 from /work/main's working tree (minimize.hpp: polish_newton goes on when its
+# minimum is at an inner end of the bracket) answers them all. The bar is that of the
+# Bezier-point/line pairs (tests/test_bezier_point_linear.py): the curve's extent.
+FAR_CONTROL = {  # name: (control points, kind, the piece's data, precision)
+    "point-double": (
+        [[-798380750.5368731, -996066137.8019059, -853819246.0773492],
+         [-0.34295007467759336, -1.3676697302814493, -1.3191024517654566],
+         [0.017748406903181024, -1.2136245313816203, -0.8443267743707685],
+         [1.4917719384991985, -2.1638068968554562, 0.47652795031376005],
+         [0.12812070654574825, -0.5694194217831143, -0.7736516081182655],
+         [0.03495903220114921, -0.7145210841297922, -0.09622166640438767]],
+        "point", ([-0.4006278449844352, -1.4541097235775402, -0.943626614802488],), "float64"),
+    "line-double": (
+        [[-237051799.8855189, -399268632.3605501, -3016979706.461595],
+         [-4.49109954989037, -1.574408950014667, 0.42084258644539874],
+         [6.043374969599573, -1.7354933705487365, -2.4192848333338484],
+         [1.0329081913470768, -5.1364089625427924, -2.7659594598710244],
+         [-2.2301643954484014, -1.331864058588449, -3.268935088354538],
+         [2.911124373720737, 0.8894682722489453, -0.1324751685781892]],
+        "line", ([-0.3652975927269513, -1.5077880694841528, 0.38085032284279785],
+                 [2.530300096078537, 1.6656827792893936, -2.034250691777488]), "float64"),
+    "line-longdouble": (
+        [[-0.31880956770331625, -0.39559093752493063, -0.4879409224867094],
+         [0.3478001656862905, -0.2049724504712177, -0.26054557880821577],
+         [-0.9193278759292147, -1.1831790778445872, -0.3112676758597071],
+         [-0.6300132819021825, 0.8640752100712643, -1.1978736240727363],
+         [0.0756337437482471, 0.1317395452957128, -0.5138105532045715],
+         [-0.7198668229997431, 0.3944259221547405, -0.8344441094383297],
+         [-41522456731.10714, -14599723381.596434, 30360101158.089157]],
+        "line", ([-0.3632620245250649, 0.23686449653832142, 0.3933610909309045],
+                 [0.015800260166894738, 0.32400911731506515, 0.4195232510127244]), "longdouble"),
+    "ray-double": (
+        [[-29295702.7043048, -196011889.42437443, 63691077.39854266],
+         [0.3459309924825159, -0.39308164629852504, 1.2407504657533395],
+         [0.7657300910420815, -0.22677575437678818, 1.5886233434925923],
+         [0.6267701533440968, 0.2869862771820726, 0.7132102341230505],
+         [0.5938569014026924, 0.852676058229136, 0.638025443103922],
+         [0.7412236416215497, -0.9738452621328715, 1.1894499348571776]],
+        "ray", ([1.546138070103962, 0.6753541018617785, 0.8087822944305171],
+                [1.5045569030131807, 0.3669565003373606, -1.0514491764915928]), "float64"),
+    "segment-double": (
+        [[-13755101356.669321, -4174633111.857974, 4073763212.481567],
+         [1.2243871928079346, -3.711659326044454, 0.9321776177391667],
+         [0.6278279571809471, 0.06430145565233147, -1.1599210703157856],
+         [-0.238906545131921, -0.14126418042379507, -1.1101200228375712],
+         [3.666065649072498, 3.466693761942905, 0.17855117375500884],
+         [-1.4932411700543402, -2.0269035822104553, 1.1117905318429067]],
+        "segment", ([2.7543733480232473, -0.6521013480673424, -4.0062633951094115],
+                    [2.560358607420274, -0.8622983584303611, -3.617530216935663]), "float64"),
+}
+FAR_CONTROL["segment-longdouble"] = FAR_CONTROL["segment-double"][:3] + ("longdouble",)
+
+
+_FAR_CONTROL_REFS = {}
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("name", list(FAR_CONTROL))
+def test_bezier_far_control_against_linear(name, solver):
+    ctrl, kind, data, precision = FAR_CONTROL[name]
+    if name not in _FAR_CONTROL_REFS:
+        _FAR_CONTROL_REFS[name] = R.bezier_other(ctrl, kind, *data)
+    ref = _FAR_CONTROL_REFS[name]
+    bar = BARS[precision] * max(float(ref.distance), R.bezier_other_scale(ctrl, kind, *data))
+    a, b = cd.Bezier(np.array(ctrl)), make(kind, np.concatenate(data))
+    for x, y in ((a, b), (b, a)):
+        for got in (cd.distance(x, y, solver=solver, precision=precision),
+                    cd.closest_points(x, y, solver=solver, precision=precision).distance):
+            p, q = np.longdouble(got).as_integer_ratio()
+            assert abs(R.mpf(p) / q - ref.distance) <= bar, (got, ref)
