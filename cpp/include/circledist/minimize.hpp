@@ -152,7 +152,7 @@ void downhill_bracket(const F& distance, Real step, int direction, Real& a, Real
 // computed it), saves evaluating it again.
 template <class Real, class J, class F>
 Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width, Real lo, Real hi, Real abs_tol,
-                            Real start_value = std::numeric_limits<Real>::quiet_NaN()) {
+                            Real start_value = std::numeric_limits<Real>::quiet_NaN(), bool widen = false) {
   Real x = std::min(std::max(x0, lo), hi);
   Jet<Real> g = jet(x);
   bool converged = false;
@@ -195,6 +195,17 @@ Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width
   if (g.slope != 0 && g.value > 0 && std::isfinite(g.value) && std::isfinite(g.slope))
     downhill_bracket(distance, g.value / std::abs(g.slope), g.slope < 0 ? 1 : -1, a, b, m);
   if (b > a) m.x = brent_minimize(distance, a, b, m.x, m.value, abs_tol);
+  // `widen`: still falling at an inner end of the search, the start lay farther than `width`
+  // from its minimum (a root of an ill-conditioned polynomial: a curve with a control point 1e9
+  // away puts the roots of q.q' 1e-3 off in t), and the bracketed search goes on, widening as
+  // polish_minimum's does. Not for angles: their starts sample the whole circle, and on the
+  // nearly flat distance of nearly coplanar concentric circles rounding makes every end look
+  // lower, so that the widened search would carry each start to the same one of two tied minima.
+  if (widen) {
+    const Real edge = 4 * (std::sqrt(std::numeric_limits<Real>::epsilon()) * std::abs(m.x) + abs_tol);
+    if ((a > lo && m.x - a <= edge) || (b < hi && b - m.x <= edge))
+      return polish_minimum(distance, m.x, width, lo, hi, abs_tol);
+  }
   return m;
 }
 

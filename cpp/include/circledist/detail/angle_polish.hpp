@@ -80,7 +80,9 @@ Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, 
     Minimum<Real> m;
     if (Roots::polish() == Polish::Newton) {
       const auto g = [&](Real d) { return jet(t0 + d); };
-      m = polish_newton(g, f, Real(0), width, below, above, abs_tol, screened.value[i]);
+      // A parameter without a period (a curve's t: `reach` infinite) widens its search where
+      // its start was far from the minimum (minimize.hpp, polish_newton).
+      m = polish_newton(g, f, Real(0), width, below, above, abs_tol, screened.value[i], !(reach < std::numeric_limits<Real>::infinity()));
     } else {
       m = polish_minimum(f, Real(0), width, below, above, abs_tol);
       // Where the shapes cross (h = 0), h is a V whose bottom the bracket locates only to its
