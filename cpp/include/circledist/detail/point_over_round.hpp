@@ -1,14 +1,18 @@
 // A point seen from a circle's or disk's plane: its height, its distance from the axis, and, for
-// closest_points, the plane point below it and its angle. Shared by point_circle.hpp and
-// point_disk.hpp (note 000 §1, note 001 §2), which differ only in what they make of these.
+// closest_points, the plane point below it and its angle; and the point queries of both rounds
+// on it (PointRoundQuery: point_circle.hpp, point_disk.hpp; note 000 §1, note 001 §2), which
+// differ only in what they make of these.
 #pragma once
 
+#include "../planar.hpp"
 #include "../primitives.hpp"
+#include "../roots.hpp"
 #include "atan2.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace circledist::detail {
 
@@ -112,6 +116,60 @@ template <class Real> struct PointOverRound {
     wy = std::ldexp(wy, -exponent);
     wz = std::ldexp(wz, -exponent);
     norm2 = wx * wx + wy * wy + wz * wz;
+  }
+};
+
+// The queries of a point against a round (point_circle.hpp, point_disk.hpp): Interior false for
+// a circle (the rim), true for a disk (the rim and the interior it bounds), the one difference.
+// distance() and closest() take the same height and distance from the axis, so the two agree to
+// the bit.
+template <class Real, bool Interior> struct PointRoundQuery {
+  static constexpr bool defined = true;
+  using Round = std::conditional_t<Interior, Disk3<Real>, Circle3<Real>>;
+
+  // F = sqrt(z^2 + (rho - R)^2) from the rim (note 000 §1), |z| over a disk (rho <= R, note 001
+  // §2).
+  template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Round& round) {
+    const PointOverRound<Real> seen(p, round.center, round.normal);
+    if constexpr (Interior) {
+      if (seen.radial <= round.radius) return std::abs(seen.height);
+    }
+    return length2d(seen.height, seen.radial - round.radius);
+  }
+
+  // The rim point in the direction of the point's in-plane part, param (theta, 0) on a circle and
+  // (R, theta) on a disk; over a disk, the point below P, param (rho, theta); theta = atan2(y, x)
+  // in the round's frame.
+  template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Result<Real> closest(const Vec3<Real>& p, const Round& round) {
+    using Seen = PointOverRound<Real>;
+    const Seen seen(p, round.center, round.normal);
+    Result<Real> r;
+    r.point_a = p;
+    if constexpr (Interior) {
+      // Both cases' numbers are computed and one is selected, without a jump: over a batch of
+      // points on both sides of the rim a branch is mispredicted about as often as not (measured
+      // 34.6 against 29.9 ns a query). A point on the axis over the disk has q = 0 and takes
+      // the point below it (rho <= R); the rim's q has a direction (rho > R >= 0).
+      const bool over = seen.radial <= round.radius;
+      const typename Seen::InPlane q = seen.in_plane();
+      const Real to_plane = Real(1) / seen.norm2, to_rim = Seen::to_rim(q, round.radius);
+      const Real above = std::abs(seen.height), off_rim = length2d(seen.height, seen.radial - round.radius);
+      r.distance = over ? above : off_rim;
+      r.point_b = Seen::at(round.center, q, over ? to_plane : to_rim);
+      r.param_b = Vec2<Real>(over ? seen.radial : round.radius, seen.angle());
+    } else {
+      r.distance = length2d(seen.height, seen.radial - round.radius);
+      // A point on the axis (rho within rounding of 0) is as close to every rim point: the one at
+      // angle 0, and `unique` false.
+      if (seen.on_axis(round.radius)) {
+        r.point_b = seen.rim_at_zero(round.center, round.radius);
+        r.unique = !(round.radius > 0);
+        return r;
+      }
+      r.point_b = seen.on_rim(round.center, round.radius);
+      r.param_b = Vec2<Real>(seen.angle(), 0);
+    }
+    return r;
   }
 };
 
