@@ -73,6 +73,8 @@ import math
 import numpy as np
 from mpmath import mp, mpf
 
+from .golden import golden_section
+
 DPS = 50
 mp.dps = DPS
 
@@ -241,22 +243,8 @@ _INVPHI = (mp.sqrt(5) - 1) / 2
 
 
 def _golden(f, a, b, tol):
-    """Golden-section search for a minimum of f on [a, b] (mpmath)."""
-    c = b - _INVPHI * (b - a)
-    d = a + _INVPHI * (b - a)
-    fc, fd = f(c), f(d)
-    for _ in range(400):
-        if b - a <= tol:
-            break
-        if fc <= fd:
-            b, d, fd = d, c, fc
-            c = b - _INVPHI * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + _INVPHI * (b - a)
-            fd = f(d)
-    return (c, fc) if fc <= fd else (d, fd)
+    """Golden-section search for a minimum of f on [a, b] (mpmath), at most 400 steps."""
+    return golden_section(f, a, b, _INVPHI, tol, steps=400)
 
 
 def _runs(mask, periodic):

@@ -18,6 +18,8 @@ step, would leave such a minimum ~4e-6 of the direction's length off: dphi / (pi
 import mpmath as mp
 import numpy as np
 
+from .golden import golden_section
+
 mp.mp.dps = 50
 KINDS = ("point", "line", "ray", "segment")
 INF = mp.inf
@@ -73,18 +75,8 @@ def reference(a, b):
     left, right = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
     # golden-section steps: the ternary search's bracket reduction, reusing one inner value per
     # step (a unimodal function keeps its minimum in the bracket either way)
-    m1, m2 = right - _INVPHI * (right - left), left + _INVPHI * (right - left)
-    f1, f2 = f(m1), f(m2)
-    for _ in range(STEPS):
-        if f1 <= f2:
-            right, m2, f2 = m2, m1, f1
-            m1 = right - _INVPHI * (right - left)
-            f1 = f(m1)
-        else:
-            left, m1, f1 = m1, m2, f2
-            m2 = left + _INVPHI * (right - left)
-            f2 = f(m2)
-    return min(values[i], f1, f2, f((left + right) / 2))
+    _, best = golden_section(f, left, right, _INVPHI, steps=STEPS)
+    return min(values[i], best)
 
 
 def linear_linear(ka, a_data, kb, b_data):

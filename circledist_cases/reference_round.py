@@ -36,6 +36,8 @@ from typing import Callable, List, Optional, Sequence, Tuple
 import mpmath.libmp as _lm
 from mpmath.ctx_mp import MPContext
 
+from .golden import golden_section
+
 DPS = 50
 ctx = MPContext()
 ctx.dps = DPS
@@ -224,22 +226,6 @@ def bezier_point(ctrl: Sequence[Sequence], t) -> Vec:
 # ----------------------------------------------------------------------------------------------
 # one-parameter minimisation: dense sampling + golden section on every sampled local minimum
 # ----------------------------------------------------------------------------------------------
-def _golden(f: Callable, a, b, tol):
-    c = b - _INVPHI * (b - a)
-    d = a + _INVPHI * (b - a)
-    fc, fd = f(c), f(d)
-    while b - a > tol:
-        if fc <= fd:
-            b, d, fd = d, c, fc
-            c = b - _INVPHI * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + _INVPHI * (b - a)
-            fd = f(d)
-    return (fc, c) if fc <= fd else (fd, d)
-
-
 @dataclass
 class LocalMin:
     value: object   # refined distance
@@ -354,7 +340,7 @@ def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: 
         else:
             a = xs[i - 1] if i > 0 else xs[i]
             b = xs[i + 1] if i < n - 1 else xs[i]
-        v, x = _golden(f, a, b, PARAM_TOL)
+        x, v = golden_section(f, a, b, _INVPHI, PARAM_TOL)
         if fi <= v:  # the sample itself (e.g. an end point) may be the best point seen
             v, x = fi, xs[i]
         out.append(LocalMin(v, x, rise))
