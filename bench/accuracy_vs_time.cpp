@@ -27,42 +27,7 @@
 // Built as one translation unit, or split to compile in parallel (the CMake target does, in
 // bench/CMakeLists.txt): with -DCDB_PART=0, 1, 2 a unit holds the float, double, long double
 // runners, with -DCDB_PART=3 the driver.
-#include <circledist/primitives.hpp>
-#include <circledist/query.hpp>
-#include <circledist/roots.hpp>
-
-#if __has_include(<circledist/point_circle.hpp>)
-#include <circledist/point_circle.hpp>
-#define CDB_POINT_CIRCLE 1
-#endif
-#if __has_include(<circledist/point_disk.hpp>)
-#include <circledist/point_disk.hpp>
-#define CDB_POINT_DISK 1
-#endif
-#if __has_include(<circledist/line_circle.hpp>)
-#include <circledist/line_circle.hpp>
-#define CDB_LINE_CIRCLE 1
-#endif
-#if __has_include(<circledist/line_disk.hpp>)
-#include <circledist/line_disk.hpp>
-#define CDB_LINE_DISK 1
-#endif
-#if __has_include(<circledist/circle_circle.hpp>)
-#include <circledist/circle_circle.hpp>
-#define CDB_CIRCLE_CIRCLE 1
-#endif
-#if __has_include(<circledist/circle_disk.hpp>)
-#include <circledist/circle_disk.hpp>
-#define CDB_CIRCLE_DISK 1
-#endif
-#if __has_include(<circledist/disk_disk.hpp>)
-#include <circledist/disk_disk.hpp>
-#define CDB_DISK_DISK 1
-#endif
-#if __has_include(<circledist/bezier.hpp>)
-#include <circledist/bezier.hpp>
-#define CDB_BEZIER 1
-#endif
+#include "bench_kinds.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -114,7 +79,6 @@ template <class Real> struct Reader {
   void read(Segment3<Real>& s) { s.p0 = vec(); s.p1 = vec(); }
   void read(Circle3<Real>& c) { c.center = vec(); c.normal = vec(); c.radius = next(); }
   void read(Disk3<Real>& d) { d.center = vec(); d.normal = vec(); d.radius = next(); }
-#ifdef CDB_BEZIER
   void read(BezierCurve3<Real>& b) {
     const int k = int(next());
     if (k < 1 || k > kMaxBezierDegree + 1) {
@@ -124,19 +88,11 @@ template <class Real> struct Reader {
     b.control.resize(3, k);
     for (int j = 0; j < k; ++j) b.control.col(j) = vec();
   }
-#endif
 };
 
 // ---------------------------------------------------------------------------------------------
-// The kind table. A kind is a pair of shape types; adding one is one line in kind_table().
+// The kind table: the kinds of bench_kinds.hpp, each a pair of shape types.
 // ---------------------------------------------------------------------------------------------
-template <template <class> class A, template <class> class B> struct Kind {
-  template <class Real> using First = A<Real>;
-  template <class Real> using Second = B<Real>;
-};
-
-template <class Real> using Point = Vec3<Real>;
-
 inline const char* policy_names[] = {"EigenCompanion", "EigenPolished", "Bracketing", "EigenPolynomialSolver"};
 inline const char* precision_names[] = {"float", "double", "longdouble"};
 
@@ -149,11 +105,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 // Distances of every case of one kind, then the timing of each group.
-template <class K, class Real, class Policy>
+template <class SA, class SB, class Policy>
 void run_one(const std::vector<const Case*>& cases, const std::string& kind, int policy, int precision,
              double min_time, Output& out) {
-  using SA = typename K::template First<Real>;
-  using SB = typename K::template Second<Real>;
+  using Real = decltype(circledist::distance(std::declval<const SA&>(), std::declval<const SB&>()));
   struct Item {
     SA a;
     SB b;
@@ -210,60 +165,36 @@ void run_one(const std::vector<const Case*>& cases, const std::string& kind, int
   }
 }
 
-template <class K, class Real>
+template <class SA, class SB>
 void run_precision(const std::vector<const Case*>& cases, const std::string& kind, int precision, double min_time,
                    Output& out) {
-  run_one<K, Real, EigenCompanion>(cases, kind, 0, precision, min_time, out);
-  run_one<K, Real, EigenPolished>(cases, kind, 1, precision, min_time, out);
-  run_one<K, Real, Bracketing>(cases, kind, 2, precision, min_time, out);
-  run_one<K, Real, EigenPolynomialSolver>(cases, kind, 3, precision, min_time, out);
+  run_one<SA, SB, EigenCompanion>(cases, kind, 0, precision, min_time, out);
+  run_one<SA, SB, EigenPolished>(cases, kind, 1, precision, min_time, out);
+  run_one<SA, SB, Bracketing>(cases, kind, 2, precision, min_time, out);
+  run_one<SA, SB, EigenPolynomialSolver>(cases, kind, 3, precision, min_time, out);
 }
 
 using Runner = void (*)(const std::vector<const Case*>&, const std::string&, int, double, Output&);
 
-// Every kind the benchmark knows, in table order; those whose header is missing are reported as
-// not compiled.
-inline const char* all_kind_names[] = {"point-circle", "point-disk",    "line-circle", "ray-circle",
-                                "segment-circle", "line-disk",   "ray-disk",    "segment-disk",
-                                "circle-circle", "circle-disk",  "disk-disk",   "bezier-disk",
-                                "bezier-circle"};
-
-template <class K, class Real> void add(std::map<std::string, Runner>& t, const char* name) {
-  t[name] = &run_precision<K, Real>;
+// Every kind the benchmark knows, in table order.
+struct KindNames {
+  std::vector<std::string>& names;
+  template <class A, class B> void add(const char* name) { names.push_back(name); }
+};
+inline std::vector<std::string> all_kind_names() {
+  std::vector<std::string> names;
+  circledist::bench::for_each_kind<double>(KindNames{names});
+  return names;
 }
 
-// The kind table for one precision: one line per kind (a pair of shape types).
+// The kind table for one precision.
+struct KindAdder {
+  std::map<std::string, Runner>& table;
+  template <class A, class B> void add(const char* name) { table[name] = &run_precision<A, B>; }
+};
 template <class Real> std::map<std::string, Runner> kind_table() {
   std::map<std::string, Runner> t;
-#ifdef CDB_POINT_CIRCLE
-  add<Kind<Point, Circle3>, Real>(t, "point-circle");
-#endif
-#ifdef CDB_POINT_DISK
-  add<Kind<Point, Disk3>, Real>(t, "point-disk");
-#endif
-#ifdef CDB_LINE_CIRCLE
-  add<Kind<Line3, Circle3>, Real>(t, "line-circle");
-  add<Kind<Ray3, Circle3>, Real>(t, "ray-circle");
-  add<Kind<Segment3, Circle3>, Real>(t, "segment-circle");
-#endif
-#ifdef CDB_LINE_DISK
-  add<Kind<Line3, Disk3>, Real>(t, "line-disk");
-  add<Kind<Ray3, Disk3>, Real>(t, "ray-disk");
-  add<Kind<Segment3, Disk3>, Real>(t, "segment-disk");
-#endif
-#ifdef CDB_CIRCLE_CIRCLE
-  add<Kind<Circle3, Circle3>, Real>(t, "circle-circle");
-#endif
-#ifdef CDB_CIRCLE_DISK
-  add<Kind<Circle3, Disk3>, Real>(t, "circle-disk");
-#endif
-#ifdef CDB_DISK_DISK
-  add<Kind<Disk3, Disk3>, Real>(t, "disk-disk");
-#endif
-#ifdef CDB_BEZIER
-  add<Kind<BezierCurve3, Disk3>, Real>(t, "bezier-disk");
-  add<Kind<BezierCurve3, Circle3>, Real>(t, "bezier-circle");
-#endif
+  circledist::bench::for_each_kind<Real>(KindAdder{t});
   return t;
 }
 
@@ -343,18 +274,19 @@ int main(int argc, char** argv) {
   cdb::Output out{file};
   const std::map<std::string, cdb::Runner> tables[3] = {cdb::float_table(), cdb::double_table(),
                                                         cdb::long_double_table()};
-  for (const char* name : cdb::all_kind_names) std::fprintf(file, "K %s %d\n", name, int(tables[1].count(name)));
+  const std::vector<std::string> names = cdb::all_kind_names();
+  for (const std::string& name : names) std::fprintf(file, "K %s %d\n", name.c_str(), int(tables[1].count(name)));
   for (const auto& c : cases) {
     if (!tables[1].count(c.kind)) std::fprintf(stderr, "accuracy_vs_time: kind %s not compiled (case %d)\n", c.kind.c_str(), c.index);
   }
-  for (const char* name : cdb::all_kind_names) {
+  for (const std::string& name : names) {
     if (!tables[1].count(name)) continue;
     if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
     std::vector<const cdb::Case*> mine;
     for (const auto& c : cases)
       if (c.kind == name) mine.push_back(&c);
     if (mine.empty()) continue;
-    std::fprintf(stderr, "accuracy_vs_time: %s (%zu cases)\n", name, mine.size());
+    std::fprintf(stderr, "accuracy_vs_time: %s (%zu cases)\n", name.c_str(), mine.size());
     for (int precision = 0; precision < 3; ++precision) tables[precision].at(name)(mine, name, precision, min_time, out);
     std::fflush(file);
   }

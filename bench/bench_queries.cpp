@@ -24,42 +24,8 @@
 // (warm-up); otherwise full passes are repeated for --min-time (at least 5, at most 200), one
 // sample each.
 //
-// Adding a query kind: one line in kind_table() (and a shape reader below if the shape is new).
-#include <circledist/primitives.hpp>
-#include <circledist/query.hpp>
-
-#if __has_include(<circledist/point_circle.hpp>)
-#include <circledist/point_circle.hpp>
-#define CDB_HAS_POINT_CIRCLE 1
-#endif
-#if __has_include(<circledist/point_disk.hpp>)
-#include <circledist/point_disk.hpp>
-#define CDB_HAS_POINT_DISK 1
-#endif
-#if __has_include(<circledist/line_circle.hpp>)
-#include <circledist/line_circle.hpp>
-#define CDB_HAS_LINE_CIRCLE 1
-#endif
-#if __has_include(<circledist/line_disk.hpp>)
-#include <circledist/line_disk.hpp>
-#define CDB_HAS_LINE_DISK 1
-#endif
-#if __has_include(<circledist/circle_circle.hpp>)
-#include <circledist/circle_circle.hpp>
-#define CDB_HAS_CIRCLE_CIRCLE 1
-#endif
-#if __has_include(<circledist/circle_disk.hpp>)
-#include <circledist/circle_disk.hpp>
-#define CDB_HAS_CIRCLE_DISK 1
-#endif
-#if __has_include(<circledist/disk_disk.hpp>)
-#include <circledist/disk_disk.hpp>
-#define CDB_HAS_DISK_DISK 1
-#endif
-#if __has_include(<circledist/bezier.hpp>)
-#include <circledist/bezier.hpp>
-#define CDB_HAS_BEZIER 1
-#endif
+// Adding a query kind: one line in bench_kinds.hpp (and a shape reader below if the shape is new).
+#include "bench_kinds.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,7 +67,6 @@ bool read(Segment& s, const double* v, int) { s = {vec(v), vec(v + 3)}; return t
 bool read(Circle& c, const double* v, int) { c = {vec(v), vec(v + 3), v[6]}; return true; }
 bool read(Disk& d, const double* v, int) { d = {vec(v), vec(v + 3), v[6]}; return true; }
 
-#ifdef CDB_HAS_BEZIER
 using Bezier = circledist::BezierCurve3<Real>;
 template <> struct Width<Bezier> { static constexpr int value = 0; };
 bool read(Bezier& b, const double* v, int width) {
@@ -111,7 +76,6 @@ bool read(Bezier& b, const double* v, int width) {
   for (int j = 0; j < points; ++j) b.control.col(j) = vec(v + 3 * j);
   return true;
 }
-#endif
 
 // ---- input and output files ------------------------------------------------------------------
 struct KindData {
@@ -238,37 +202,14 @@ struct KindEntry {
   Runner run;
 };
 
+struct KindAdder {
+  std::vector<KindEntry>& table;
+  template <class A, class B> void add(const char* name) { table.push_back({name, &run<A, B>}); }
+};
+
 std::vector<KindEntry> kind_table() {
   std::vector<KindEntry> t;
-#ifdef CDB_HAS_POINT_CIRCLE
-  t.push_back({"point-circle", &run<Point, Circle>});
-#endif
-#ifdef CDB_HAS_POINT_DISK
-  t.push_back({"point-disk", &run<Point, Disk>});
-#endif
-#ifdef CDB_HAS_LINE_CIRCLE
-  t.push_back({"line-circle", &run<Line, Circle>});
-  t.push_back({"ray-circle", &run<Ray, Circle>});
-  t.push_back({"segment-circle", &run<Segment, Circle>});
-#endif
-#ifdef CDB_HAS_LINE_DISK
-  t.push_back({"line-disk", &run<Line, Disk>});
-  t.push_back({"ray-disk", &run<Ray, Disk>});
-  t.push_back({"segment-disk", &run<Segment, Disk>});
-#endif
-#ifdef CDB_HAS_CIRCLE_CIRCLE
-  t.push_back({"circle-circle", &run<Circle, Circle>});
-#endif
-#ifdef CDB_HAS_CIRCLE_DISK
-  t.push_back({"circle-disk", &run<Circle, Disk>});
-#endif
-#ifdef CDB_HAS_DISK_DISK
-  t.push_back({"disk-disk", &run<Disk, Disk>});
-#endif
-#ifdef CDB_HAS_BEZIER
-  t.push_back({"bezier-circle", &run<Bezier, Circle>});
-  t.push_back({"bezier-disk", &run<Bezier, Disk>});
-#endif
+  circledist::bench::for_each_kind<Real>(KindAdder{t});
   return t;
 }
 

@@ -1,0 +1,28 @@
+// The query kinds the C++ benchmarks time (bench_queries.cpp, accuracy_vs_time.cpp): a name and
+// a pair of shape types in precision Real, one line each, in the order the reports list them.
+// A kind is added here once (and a shape reader in each program if its shape is new); the
+// Python drivers (bench_queries.py, accuracy_vs_time.py) name the same kinds.
+#pragma once
+
+#include <circledist/circledist.hpp>
+
+namespace circledist::bench {
+
+// Calls v.template add<A, B>(name) for every kind.
+template <class Real, class Visitor> void for_each_kind(Visitor&& v) {
+  v.template add<Vec3<Real>, Circle3<Real>>("point-circle");
+  v.template add<Vec3<Real>, Disk3<Real>>("point-disk");
+  v.template add<Line3<Real>, Circle3<Real>>("line-circle");
+  v.template add<Ray3<Real>, Circle3<Real>>("ray-circle");
+  v.template add<Segment3<Real>, Circle3<Real>>("segment-circle");
+  v.template add<Line3<Real>, Disk3<Real>>("line-disk");
+  v.template add<Ray3<Real>, Disk3<Real>>("ray-disk");
+  v.template add<Segment3<Real>, Disk3<Real>>("segment-disk");
+  v.template add<Circle3<Real>, Circle3<Real>>("circle-circle");
+  v.template add<Circle3<Real>, Disk3<Real>>("circle-disk");
+  v.template add<Disk3<Real>, Disk3<Real>>("disk-disk");
+  v.template add<BezierCurve3<Real>, Circle3<Real>>("bezier-circle");
+  v.template add<BezierCurve3<Real>, Disk3<Real>>("bezier-disk");
+}
+
+}  // namespace circledist::bench
