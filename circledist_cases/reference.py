@@ -435,6 +435,18 @@ class _RimObjective:
         return self.lin.point(t + self.tc), _add(self.rnd.C, x)
 
 
+def _level_crossing(below, inside, outside, steps):
+    """Bisection between an offset `inside` the sub-level set (below(inside) true) and one
+    `outside` it: the outer end after `steps` halvings (an upper bound of the crossing)."""
+    for _ in range(steps):
+        mid = (inside + outside) / 2
+        if below(mid):
+            inside = mid
+        else:
+            outside = mid
+    return outside
+
+
 class _RimMin:
     """Global minimum of g over the rim, plus the data needed for sub-level analysis."""
 
@@ -458,14 +470,7 @@ class _RimMin:
                 delta *= 8
             if delta >= mp.pi:
                 return "whole"
-            inside = delta / 8
-            for _ in range(24):
-                mid = (inside + delta) / 2
-                if g2(th + sgn * mid) <= level2:
-                    inside = mid
-                else:
-                    delta = mid
-            sides.append(delta)
+            sides.append(_level_crossing(lambda x: g2(th + sgn * x) <= level2, delta / 8, delta, 24))
         dr, dl = sides
 
         def in_component(x):
@@ -601,13 +606,7 @@ def _t_radius(lin, rnd, t_star, level):
             out.append(delta)
             continue
         inside = delta / 8 if not hit_end else mpf(0)
-        for _ in range(30):
-            mid = (inside + delta) / 2
-            if f(t_star + sgn * mid) <= level:
-                inside = mid
-            else:
-                delta = mid
-        out.append(delta)
+        out.append(_level_crossing(lambda x: f(t_star + sgn * x) <= level, inside, delta, 30))
     return max(out) * norm_m
 
 

@@ -474,17 +474,22 @@ def _rim_minima(a: Round, target: Round, disk: bool) -> List[LocalMin]:
                        resolution=_feature_scale(target, axis))
 
 
+def _target_point(p, target, disk, scale):
+    """The target round's point closest to p, and whether p lies on a circle target's axis
+    (within 1e-9 of `scale`: every rim point is then as close, a degenerate pair)."""
+    if disk:
+        _, q = point_disk(p, target)
+        return q, False
+    _, q, _ = point_circle(p, target)
+    _, a_vec = _local(p, target)
+    return q, norm(a_vec) <= mpf("1e-9") * scale
+
+
 def _pairs_from_rim(a: Round, target: Round, disk: bool, swap: bool) -> List[Pair]:
     out = []
     for m in _rim_minima(a, target, disk):
         p = a.rim_point(m.x)
-        if disk:
-            _, q = point_disk(p, target)
-            deg = False
-        else:
-            _, q, _ = point_circle(p, target)
-            _, a_vec = _local(p, target)
-            deg = norm(a_vec) <= mpf("1e-9") * max(target.radius, a.radius)
+        q, deg = _target_point(p, target, disk, max(target.radius, a.radius))
         out.append(Pair(m.value, q if swap else p, p if swap else q, m.rise, deg))
     return out
 
@@ -644,13 +649,7 @@ def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:
     pairs = []
     for m in _curve_minima(ctrl, T, disk):
         p = bezier_point(ctrl, m.x)
-        if disk:
-            _, q = point_disk(p, T)
-            deg = False
-        else:
-            _, q, _ = point_circle(p, T)
-            _, a_vec = _local(p, T)
-            deg = norm(a_vec) <= mpf("1e-9") * T.radius
+        q, deg = _target_point(p, T, disk, T.radius)
         pairs.append(Pair(m.value, p, q, m.rise, deg))
     return Reference(pairs[0].value, pairs, _scale_of(radius))
 
