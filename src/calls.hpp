@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <limits>
+#include <new>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -161,11 +163,16 @@ template <class Real> struct Call {
     // The six answers are views of one allocation: six separate arrays of a large batch were each
     // mapped afresh by malloc and faulted in page by page, which cost more than the queries of
     // the point kinds (measured 29.6 against 2.6 ns per element for 10^5 elements); one block
-    // is reused, or (4 MB and more) NumPy maps it with huge pages.
+    // is reused, or (4 MB and more) NumPy maps it with huge pages. Any one of them keeps the
+    // block alive (documented in ClosestPoints' help: copy what you keep of large batches).
     Index size = 1;
     for (Index d : shape) size *= d;
     constexpr Index values = 1 + 3 + 3 + 2 + 2;  // distance, both points, both params
-    py::array_t<std::uint8_t> block(size * (values * Index(sizeof(Real)) + Index(sizeof(bool))));
+    constexpr Index bytes_per_element = values * Index(sizeof(Real)) + Index(sizeof(bool));
+    // Checked before the product (the views are each checked by NumPy on their own, smaller, size).
+    if (size > std::numeric_limits<Index>::max() / bytes_per_element)
+      throw std::bad_alloc();  // MemoryError, as a NumPy array of that size raises
+    py::array_t<std::uint8_t> block(size * bytes_per_element);
     std::uint8_t* next = block.mutable_data();
     auto view = [&](auto* type, Index trailing) {
       using T = std::remove_pointer_t<decltype(type)>;

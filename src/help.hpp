@@ -363,7 +363,9 @@ inline const char* const kClosestPoints = R"(The answer of `closest_points`: the
 
 For single shapes the distance is a float (a ``numpy.longdouble`` in long double) and the flag
 a bool; for batches each attribute is an array of the broadcast batch shape (with a trailing
-axis of 3 for points and of 2 for parameters).
+axis of 3 for points and of 2 for parameters). A batch's arrays are views of one allocation (a
+large batch then costs one mapping, not six): any one of them kept keeps all of it, so copy
+what you keep of a large batch (``r.distance.copy()``).
 
 Attributes
 ----------

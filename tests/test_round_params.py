@@ -101,3 +101,21 @@ def test_round_param_one_by_one(other, round_kind):
     rows = [cd.closest_points(single(i), make(*(f[i] for f in fields))) for i in range(n)]
     check(round_kind, fields, np.array([r.point_b for r in rows]), np.array([r.param_b for r in rows]),
           np.array([r.distance for r in rows]), np.array([r.unique for r in rows]))
+
+
+# A point on a disk's axis has no in-plane direction: its angle is 0 (the documented choice), for
+# every normal and either sign of zero in the inputs; atan2(0, -0) is pi, and a -0 from the
+# angle's terms once made it so (a disk facing -z, a point above its center).
+@pytest.mark.parametrize("normal", [[0, 0, -1], [0, 0, 1], [-1, 0, 0], [1, 0, 0], [0, -1, 0], [-1, 0, 1], [0.0, -0.0, -2.0]])
+@pytest.mark.parametrize("height", [2.0, -2.0, 0.0, -0.0])
+def test_disk_angle_on_the_axis_is_zero(normal, height):
+    n = np.asarray(normal, float)
+    center = np.array([0.5, -0.0, 0.0])
+    p = center + height * n  # exactly on the axis
+    for batch in (False, True):
+        a = cd.Point(p[None] if batch else p)
+        b = cd.Disk(center[None] if batch else center, n[None] if batch else n, [1.0] if batch else 1.0)
+        for r, theta in ((cd.closest_points(a, b), 1), (cd.closest_points(b, a), 0)):
+            param = np.asarray(r.param_b if theta else r.param_a).reshape(2)
+            assert param[1] == 0 and not np.signbit(param[1]), f"angle {param[1]!r} on the axis"
+            assert param[0] == 0

@@ -92,8 +92,10 @@ template <class Real> struct PointOverRound {
   // The angle of q in the round's frame (see above); 0 on the axis.
   CIRCLEDIST_INLINE Real angle() const {
     const bool x_major = std::abs(wx) > std::abs(wy);  // Frame's choice, on W (scaling keeps it)
-    const Real along_u = x_major ? wx * dz - wz * dx : wz * dy - wy * dz;
-    const Real along_v = x_major ? wz * mx - wx * mz : wy * mz - wz * my;
+    // + 0 turns a -0 into +0 (a point on the axis of a disk facing -z gave -0, and atan2(0, -0)
+    // is pi): the angle on the axis is 0, as the three-term dot products gave it.
+    const Real along_u = (x_major ? wx * dz - wz * dx : wz * dy - wy * dz) + Real(0);
+    const Real along_v = (x_major ? wz * mx - wx * mz : wy * mz - wz * my) + Real(0);
     return atan2(along_v, s * along_u);
   }
 
