@@ -68,6 +68,13 @@ Real brent_minimize(const F& f, Real a, Real b, Real x, Real& fx, Real abs_tol) 
   return x;
 }
 
+// Whether a minimum x found on the bracket [a, b] sits on one of its ends that is not an end of
+// [lo, hi] (within Brent's tolerances): the function may still fall beyond it.
+template <class Real> bool on_inner_edge(Real x, Real a, Real b, Real lo, Real hi, Real abs_tol) {
+  const Real edge = 4 * (std::sqrt(std::numeric_limits<Real>::epsilon()) * std::abs(x) + abs_tol);
+  return (a > lo && x - a <= edge) || (b < hi && b - x <= edge);
+}
+
 // Moves x0 to a local minimum of f on [lo, hi] (either end may be infinite). The search starts
 // in [x0 - width, x0 + width] and widens while the minimum sits on an inner edge of the bracket.
 template <class Real, class F>
@@ -75,14 +82,11 @@ Minimum<Real> polish_minimum(const F& f, Real x0, Real width, Real lo, Real hi, 
   Minimum<Real> m;
   m.x = std::min(std::max(x0, lo), hi);
   m.value = f(m.x);
-  const Real rel_tol = std::sqrt(std::numeric_limits<Real>::epsilon());
   for (int expansion = 0; expansion < 16; ++expansion) {
     const Real a = std::max(lo, m.x - width), b = std::min(hi, m.x + width);
     if (!(b > a)) break;
     m.x = brent_minimize(f, a, b, m.x, m.value, abs_tol);
-    const Real edge = 4 * (rel_tol * std::abs(m.x) + abs_tol);
-    const bool on_inner_edge = (a > lo && m.x - a <= edge) || (b < hi && b - m.x <= edge);
-    if (!on_inner_edge) break;
+    if (!on_inner_edge(m.x, a, b, lo, hi, abs_tol)) break;
     width *= 8;
   }
   return m;
@@ -202,9 +206,7 @@ Minimum<Real> polish_newton(const J& jet, const F& distance, Real x0, Real width
   // nearly flat distance of nearly coplanar concentric circles rounding makes every end look
   // lower, so that the widened search would carry each start to the same one of two tied minima.
   if (widen) {
-    const Real edge = 4 * (std::sqrt(std::numeric_limits<Real>::epsilon()) * std::abs(m.x) + abs_tol);
-    if ((a > lo && m.x - a <= edge) || (b < hi && b - m.x <= edge))
-      return polish_minimum(distance, m.x, width, lo, hi, abs_tol);
+    if (on_inner_edge(m.x, a, b, lo, hi, abs_tol)) return polish_minimum(distance, m.x, width, lo, hi, abs_tol);
   }
   return m;
 }
