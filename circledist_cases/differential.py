@@ -64,7 +64,7 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
 
 Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius in the query
 (for a query without a circle or disk: the scale of the pairs' own accuracy tests, see
-``bar_scale``), bar 1e-12 in float64,
+``bar_scale``: for the linear pairs 1e-12 x the query's size), bar 1e-12 in float64,
 1e-15 in long double (float64 inputs referenced exactly), 4 float32 ulps (4 * 2^-23) for float32
 inputs (README: float32 queries are solved in double and rounded; referenced on the float32
 values).  Closest points must lie on their shapes within 8 ulps (of the answer's precision) of
@@ -78,6 +78,7 @@ from __future__ import annotations
 import collections
 import importlib
 import math
+from fractions import Fraction
 
 import numpy as np
 
@@ -886,10 +887,9 @@ def bar_scale(case):
     disk: its largest radius (the rounds' features set the answer's scale, however far the other
     shape's origin or however large a curve).  Without one there is no radius, and the scale is
     the one the pairs' own 50-digit accuracy tests hold the library to: for two points / lines /
-    rays / segments the query's size (reference_linear.query_size: the largest distance between
-    the points that define it, origins included -- a line or ray has no extent, the answer
-    depends on the offsets between the origins and a fixed precision rounds those to eps times
-    their size); for a Bezier curve against one of them the largest length in the query, the
+    rays / segments 1e-12 x the query's size (reference_linear.bar_scale: the answers are held to
+    their own size, however far the origins and ends lie; only distances twelve orders below the
+    query, pieces that touch within the inputs' rounding, fall back to that floor); for a Bezier curve against one of them the largest length in the query, the
     control polygon's extent and a segment's length (reference_round.bezier_other_scale, as
     tests/test_bezier_point_linear.py).  Both are translation invariant; points a hair apart
     (zero-length segments) are held to the distance between them."""
@@ -902,7 +902,7 @@ def bar_scale(case):
             _SCALE_CACHE[key] = _load("reference_round").bezier_other_scale(case["a_data"], kb,
                                                                            *_piece_points(kb, case["b_data"]))
         else:
-            _SCALE_CACHE[key] = _load("reference_linear").query_size(ka, case["a_data"], kb, case["b_data"])
+            _SCALE_CACHE[key] = _load("reference_linear").bar_scale(ka, case["a_data"], kb, case["b_data"])
     return _SCALE_CACHE[key]
 
 
@@ -1976,12 +1976,12 @@ def pair_scale(case):
         c = (lo + hi) / 2
         return c, float(max(np.linalg.norm(p - c) for p in d))
     def from_line(kind, data, c):
-        d = np.asarray(data, float)
-        o, u = d[:3], d[3:6]
-        t = float(np.dot(c - o, u) / np.dot(u, u))
+        # in exact rationals: a ray's origin 3e8 away cancels to 0 in doubles
+        o, u, cc = ([Fraction(float(x)) for x in v] for v in (data[:3], data[3:6], c))
+        t = sum((ci - oi) * ui for ci, oi, ui in zip(cc, o, u)) / sum(ui * ui for ui in u)
         if kind == "ray":
-            t = max(t, 0.0)
-        return float(np.linalg.norm(o + t * u - c))
+            t = max(t, Fraction(0))
+        return math.sqrt(float(sum((oi + t * ui - ci) ** 2 for oi, ui, ci in zip(o, u, cc))))
     ka, kb = case["a"], case["b"]
     ca, ra = ball(ka, case["a_data"])
     cb, rb = ball(kb, case["b_data"])

@@ -86,12 +86,21 @@ def linear_linear(ka, a_data, kb, b_data):
                      piece(kb, b_data[:3], b_data[3:6] if kb != "point" else None))
 
 
+# The bars of the linear pairs: |error| <= bar x max(true distance, FLOOR x the query's size). The
+# answers are held to their own size; only distances twelve orders below the query's size (pieces
+# that touch or cross, within the inputs' rounding) are held to an absolute floor.
+FLOOR = 1e-12
+
+
+def bar_scale(ka, a_data, kb, b_data):
+    """What the bar multiplies besides the true distance: FLOOR x query_size."""
+    return FLOOR * query_size(ka, a_data, kb, b_data)
+
+
 def query_size(ka, a_data, kb, b_data):
-    """The query's size, the length the bars of the linear pairs are relative to (besides the
-    distance): the largest distance from A's first point to any point that defines the query
-    (a point, the origins of lines and rays, segment ends).  Translating a scene does not change
-    it; moving an origin along its line does: the answer depends on the offsets between the
-    origins, whose rounding in any fixed precision is eps times their size."""
+    """The query's size: the largest distance from A's first point to any point that defines the
+    query (a point, the origins of lines and rays, segment ends).  Translating a scene does not
+    change it."""
     pts = [np.asarray(a_data[:3], float)] + ([np.asarray(a_data[3:6], float)] if ka == "segment" else []) + \
           [np.asarray(b_data[:3], float)] + ([np.asarray(b_data[3:6], float)] if kb == "segment" else [])
     return max(float(np.linalg.norm(x - pts[0])) for x in pts[1:])

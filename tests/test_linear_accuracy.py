@@ -6,12 +6,14 @@ projection clamped, in mpmath), is convex in s, so a bracket search (golden sect
 s = tan(phi) maps an infinite interval onto a finite one (a monotone change of variable keeps the
 function unimodal). Nothing of the library is used.
 
-The bar: |error| <= 1e-12 x max(true distance, the query's size), the size being the largest
-distance from A's first point to any point that defines the query (origins, segment ends):
-translating a scene does not change it. Families: random pieces; nearly parallel pieces that
+The bar: |error| <= 1e-12 x max(true distance, 1e-12 x the query's size), the size being the
+largest distance from A's first point to any point that defines the query (origins, segment
+ends): the answer is held to its own size wherever the origins lie, and only pieces that touch
+within the inputs' rounding to the floor. Families: random pieces; nearly parallel pieces that
 cross or pass at a tiny distance (angles 1e-2 .. 1e-12, where the plain cross product of the
-directions cancels); scenes 1e6 .. 1e12 from the world's origin; zero-length segments; points on
-the pieces.
+directions cancels); scenes 1e6 .. 1e12 from the world's origin; origins and segment ends 1e6 ..
+1e12 along the pieces from where they pass (crossing, or parallel within 1e-8 .. 1e-16 rad);
+zero-length segments; points on the pieces.
 """
 
 import itertools
@@ -33,8 +35,8 @@ def make(kind, p, q):
             "segment": lambda: cd.Segment(p, q)}[kind]()
 
 
-def size(ka, a, kb, b):
-    return RL.query_size(ka, np.concatenate(a), kb, np.concatenate(b))
+def floor(ka, a, kb, b):
+    return RL.bar_scale(ka, np.concatenate(a), kb, np.concatenate(b))
 
 
 def rotate(v, axis, angle):
@@ -67,6 +69,24 @@ def cases():
             qa = pa + rng.normal(size=3) if ka == "segment" else rng.normal(size=3)
             qb = pb + rng.normal(size=3) if kb == "segment" else rng.normal(size=3)
             out.append((f"far {shift:g}", ka, (pa, qa), kb, (pb, qb)))
+        for far in (1e6, 1e9, 1e12):  # origins / ends far along the pieces from where they pass
+            for angle in (1.0, 1e-8, 1e-16):
+                x = rng.normal(size=3)
+                u = rng.normal(size=3)
+                u /= np.linalg.norm(u)
+                v = rotate(u, np.cross(u, rng.normal(size=3)), angle) if angle < 1 else rng.normal(size=3)
+                gap = rng.normal(size=3) * 10.0 ** rng.uniform(-9, 0)
+                pieces = []
+                for kind, y, d in ((ka, x, u), (kb, x + gap, v)):
+                    sign = rng.choice([-1.0, 1.0])
+                    if kind == "point":
+                        pieces.append((y, y))
+                    elif kind == "segment":  # one end far, the other near or far beyond y
+                        other = far * rng.uniform(0.5, 2) if rng.random() < 0.5 else rng.uniform(0.1, 2)
+                        pieces.append((y - sign * far * d, y + sign * other * d))
+                    else:  # a ray's origin behind y; a line's on either side
+                        pieces.append((y - (1.0 if kind == "ray" else sign) * far * d, d))
+                out.append((f"far origin {far:g} angle {angle:g}", ka, pieces[0], kb, pieces[1]))
         if "segment" in (ka, kb):  # a zero-length segment
             p = rng.normal(size=3)
             a = (p, p.copy()) if ka == "segment" else (rng.normal(size=3), rng.normal(size=3))
@@ -77,6 +97,18 @@ def cases():
             on = pb + 0.3 * (qb - pb if kb == "segment" else qb)
             a = (on, on + rng.normal(size=3)) if ka == "segment" else (on, rng.normal(size=3))
             out.append(("on the piece", ka, a, kb, (pb, qb)))
+    # Found by the differential test (linear_far_origin/1/290, /235): a point 6e-9 from a segment
+    # whose ends lie 1e11 and 1e8 away answered 1.7e-5; a ray and a segment 5e-17 rad apart, their
+    # origin and far end 3e10 and 9e9 from where they pass 3.7e-7 apart, answered 3.5e-8.
+    out.append(("found: point by a long far segment", "point",
+                ([0.8001554157507818, -0.3458700927461995, 0.13286317186295868], [0.0, 0.0, 0.0]), "segment",
+                ([112221190684.01337, -61990910881.69316, -70779235551.27132],
+                 [-99936905.46298178, 55205080.01550244, 63031391.847861975])))
+    out.append(("found: far ray and segment 5e-17 rad apart", "ray",
+                ([10355145348.85256, -11762825922.486448, 29936564446.30502],
+                 [-0.0960963293781369, 0.10915968400308561, -0.2778129963567933]), "segment",
+                ([-0.7800725896139666, -0.9680412084446177, 1.9812839500368162],
+                 [-2881389669.7702622, 3273086367.5970874, -8330052798.097823])))
     # Found by a random search: crossing segments 1e-5 rad apart answered 1.5e-11 for 5.8e-18.
     out.append(("found: crossing segments", "segment",
                 ([0.469088546821133, 0.026205966427920835, 1.8590472355014187],
@@ -95,11 +127,11 @@ def test_linear_pairs_against_the_reference(case):
     name, ka, a, kb, b = case
     exact = reference(piece(ka, *a), piece(kb, *b))
     truth = float(exact)
-    bar = 1e-12 * max(truth, size(ka, a, kb, b))
+    bar = 1e-12 * max(truth, floor(ka, a, kb, b))
     A, B = make(ka, *a), make(kb, *b)
     for first, second in ((A, B), (B, A)):  # long double: the same inputs, the 1e-15 bar
         d = cd.distance(first, second, precision="longdouble")
-        assert abs(mp.mpf(repr(float(d))) + mp.mpf(repr(float(d - np.longdouble(float(d))))) - exact) <= 1e-15 * max(truth, size(ka, a, kb, b)), f"{name}: long double {d!r}"
+        assert abs(mp.mpf(repr(float(d))) + mp.mpf(repr(float(d - np.longdouble(float(d))))) - exact) <= 1e-15 * max(truth, floor(ka, a, kb, b)), f"{name}: long double {d!r}"
     for solver in ("bracketing", "companion"):
         for first, second, swapped in ((A, B, False), (B, A, True)):
             d = float(cd.distance(first, second, solver=solver))

@@ -1,5 +1,6 @@
 // Points, lines, rays and segments against each other (linear_linear.hpp): closed forms checked
-// against dense sampling, the parallel continuum, and capsules (swept segments, effects.hpp).
+// against dense sampling, the parallel continuum, far origins and ends (exact configurations), and
+// capsules (swept segments, effects.hpp).
 #include <circledist/effects.hpp>
 #include <circledist/linear_linear.hpp>
 #include <circledist/sweep.hpp>
@@ -56,9 +57,45 @@ void linear_cases() {
   CHECK(stats().solves == 0);
 }
 
+// Origins and segment ends 2^36 directions away from where the pieces pass, in configurations
+// built exactly in binary (integer directions, power-of-two offsets), so the distances are known
+// in closed form: the offsets between the origins round by eps |w| ~ 1e-4 in plain arithmetic.
+void far_origin_cases() {
+  const double far = std::ldexp(1.0, 36), h = std::ldexp(1.0, -30);
+  const V d(3, 4, 12), m(4, -3, 0);  // d.m = 0, |m| = 5
+  const V x(0.5, 0.25, 0.125), p = x + h * m;  // p lies 5 h from the line through x along d
+  const double gap = 5 * h;
+  for (const double sign : {1.0, -1.0}) {
+    const Line3<double> line{x - sign * far * d, d};
+    CHECK_NEAR(distance(p, line), gap, 1e-12 * gap);
+    CHECK_NEAR(closest_points(p, line).distance, gap, 1e-12 * gap);
+    CHECK_NEAR(distance(line, p), gap, 1e-12 * gap);
+  }
+  const Ray3<double> ray{x - far * d, d};
+  CHECK_NEAR(distance(p, ray), gap, 1e-12 * gap);
+  const Segment3<double> both_far{x - far * d, x + (far / 2) * d}, one_far{x - far * d, x + 0.25 * d};
+  CHECK_NEAR(distance(p, both_far), gap, 1e-12 * gap);
+  CHECK_NEAR(distance(p, one_far), gap, 1e-12 * gap);
+  CHECK_NEAR(distance(both_far, Segment3<double>{p, p + m}), gap, 1e-12 * gap);
+  // Two crossing lines, both origins far: the distance is h |d x e| = 65 h for e = m.
+  const double h2 = std::ldexp(1.0, -10);
+  const V normal = d.cross(m);  // (36, 48, -25), |normal| = 65
+  const Line3<double> a{-far * d, d}, b{h2 * normal + far * m, m};
+  CHECK_NEAR(distance(a, b), 65 * h2, 1e-12 * 65 * h2);
+  CHECK_NEAR(distance(b, a), 65 * h2, 1e-12 * 65 * h2);
+  const Result<double> r = closest_points(a, b);
+  CHECK_NEAR(r.distance, 65 * h2, 1e-12 * 65 * h2);
+  CHECK((r.point_a - V(0, 0, 0)).norm() < 1e-3 && (r.point_b - h2 * normal).norm() < 1e-3);
+  const Ray3<double> ray_a{-far * d, d};
+  const Segment3<double> segment_b{h2 * normal + far * m, h2 * normal - far * m};
+  CHECK_NEAR(distance(ray_a, segment_b), 65 * h2, 1e-12 * 65 * h2);
+  CHECK_NEAR(distance(segment_b, ray_a), 65 * h2, 1e-12 * 65 * h2);
+}
+
 }  // namespace
 
 int main() {
   linear_cases();
+  far_origin_cases();
   return check::finish("test_linear_linear");
 }

@@ -240,11 +240,13 @@ Real pair_scale(const Ball<Real>& ball_a, const A& a, const Ball<Real>& ball_b, 
   if (ball_a.bounded() && ball_b.bounded()) {
     s = std::max({ball_a.radius, ball_b.radius, (ball_a.center - ball_b.center).norm()});
   } else if (ball_b.bounded()) {
+    // The point-piece query, not point_linear_distance: a ray whose origin lies 3e8 away cancels
+    // to 0 in plain arithmetic, and within()'s tolerance would take the fallback scale 1.
     if constexpr (is_linear_v<core_t<A>>)
-      s = std::max(ball_b.radius, point_linear_distance(ball_b.center, as_linear(core(a))) + sweep_of(a));
+      s = std::max(ball_b.radius, Query<Vec3<Real>, core_t<A>>::distance(ball_b.center, core(a)) + sweep_of(a));
   } else if (ball_a.bounded()) {
     if constexpr (is_linear_v<core_t<B>>)
-      s = std::max(ball_a.radius, point_linear_distance(ball_a.center, as_linear(core(b))) + sweep_of(b));
+      s = std::max(ball_a.radius, Query<Vec3<Real>, core_t<B>>::distance(ball_a.center, core(b)) + sweep_of(b));
   } else {
     s = (ball_a.center - ball_b.center).norm() + sweep_of(a) + sweep_of(b);
   }

@@ -12,10 +12,12 @@
 // overlap is longer than the distinct-points tolerance (a continuum of closest pairs).
 #pragma once
 
+#include "detail/double_double.hpp"
 #include "linear.hpp"
 #include "query.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -52,28 +54,217 @@ template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& e
   return out;
 }
 
-template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b);
+namespace detail {
+// The candidates of linear_pair_scaled, as bits of `contenders`.
+enum LinearCandidate : unsigned { kEndALo = 1, kEndAHi = 2, kEndBLo = 4, kEndBHi = 8, kAnyPoint = 16 };
+}  // namespace detail
+
+// `exact` is set to the candidates that may be the least (within their rounding of the best) when
+// the rounding of the pieces' offsets may exceed about 1e3 eps of the answer; else 0.
+template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact);
+
+// ---- Far defining points: the same answer, evaluated from the exact inputs ----------------------
+//
+// The closed forms above lose eps times the pieces' own offsets: w = p - q rounds by eps |w|, and
+// w + s u - t v by eps (|w| + |s u| + |t v|). Where a line's origin, a ray's origin or a segment's
+// ends lie far (1e10) from where the pieces pass each other, that is far more than a small
+// distance between them (a point 6e-9 from a segment whose ends are 1e11 and 1e8 away came out
+// 1.7e-5). The pieces themselves are exact (their defining points and directions are the
+// inputs), so the answer is not ill-posed: below, every candidate is evaluated from exact
+// differences of the inputs in double-double, which holds the offsets' cancellation.
+
+namespace detail {
+
+// A piece with its direction held exactly: a segment's p1 - p0 (rounded in Linear::direction)
+// as a double-double, scaled by the same power of two as the piece (unit_scaled).
+template <class Real> struct ExactPiece {
+  using DD = DoubleDouble<Real>;
+  const Linear<Real>& piece;
+  std::array<DD, 3> dir;
+  ExactPiece(const Linear<Real>& scaled, const Linear<Real>& original, int exponent) : piece(scaled) {
+    for (int i = 0; i < 3; ++i) {
+      const DD d = original.has_end ? DD::two_sum(original.end[i], -original.origin[i]) : DD(original.direction[i]);
+      dir[i] = DD(std::ldexp(d.hi, -exponent), std::ldexp(d.lo, -exponent));
+    }
+  }
+  bool is_point() const { return !(dir[0].hi != 0 || dir[1].hi != 0 || dir[2].hi != 0); }
+  // origin + s dir, to about eps^2 of the coordinates (a segment's far end is its own p1).
+  std::array<DD, 3> exact_at(Real s) const {
+    if (piece.has_end && s == piece.hi) return {DD(piece.end[0]), DD(piece.end[1]), DD(piece.end[2])};
+    return {DD(piece.origin[0]) + dir[0] * s, DD(piece.origin[1]) + dir[1] * s, DD(piece.origin[2]) + dir[2] * s};
+  }
+  // origin + s dir for a parameter held as a double-double (a quotient): rounding s first would
+  // move the point by eps |s dir| along the piece (1e-10 at 1e6), which a small distance to it
+  // turns into (eps |s dir|)^2 / 2d more.
+  std::array<DD, 3> exact_at(const DD& s) const {
+    return {DD(piece.origin[0]) + dir[0] * s, DD(piece.origin[1]) + dir[1] * s, DD(piece.origin[2]) + dir[2] * s};
+  }
+  // The same, rounded once.
+  Vec3<Real> at(Real s) const {
+    const std::array<DD, 3> x = exact_at(s);
+    return Vec3<Real>(x[0].value(), x[1].value(), x[2].value());
+  }
+};
+
+template <class Real> using ExactVec = std::array<DoubleDouble<Real>, 3>;
+
+template <class Real> ExactVec<Real> exact_offset(const Vec3<Real>& x, const Vec3<Real>& y) {
+  return {DoubleDouble<Real>::two_sum(x[0], -y[0]), DoubleDouble<Real>::two_sum(x[1], -y[1]),
+          DoubleDouble<Real>::two_sum(x[2], -y[2])};
+}
+template <class Real> DoubleDouble<Real> exact_dot(const ExactVec<Real>& x, const ExactVec<Real>& y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+template <class Real> ExactVec<Real> exact_cross(const ExactVec<Real>& x, const ExactVec<Real>& y) {
+  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+}
+template <class Real> Vec3<Real> rounded(const ExactVec<Real>& x) { return Vec3<Real>(x[0].value(), x[1].value(), x[2].value()); }
+template <class Real> Real rounded_norm(const ExactVec<Real>& x) { return rounded(x).norm(); }
+
+// The point x against a piece: the projection's parameter compared with the interval's ends in
+// double-double ((x - o).d against lo |d|^2: the sign of a small difference of large terms), the
+// distance as |(x - o) x d| / |d| (relative to itself, however far o lies along the piece), or
+// the end's exact offset.
+template <class Real> LinearPair<Real> point_to_exact_piece(const Vec3<Real>& x, const ExactPiece<Real>& b) {
+  using DD = DoubleDouble<Real>;
+  const Linear<Real>& l = b.piece;
+  LinearPair<Real> out;
+  out.point_a = x;
+  const ExactVec<Real> e = exact_offset(x, l.origin);
+  const auto at_end = [&](Real t, const Vec3<Real>& end) {
+    out.t = t;
+    out.point_b = end;
+    out.distance = rounded_norm(exact_offset(x, end));
+    return out;
+  };
+  if (b.is_point()) return at_end(clamp_to(Real(0), l.lo, l.hi), l.origin);
+  const DD along = exact_dot(e, b.dir), length2 = exact_dot(b.dir, b.dir);
+  if (std::isfinite(l.lo) && !((along - length2 * l.lo).hi > 0)) return at_end(l.lo, b.at(l.lo));
+  if (std::isfinite(l.hi) && !((along - length2 * l.hi).hi < 0)) return at_end(l.hi, b.at(l.hi));
+  const DD t = along / length2;
+  out.t = t.value();
+  out.point_b = rounded(b.exact_at(t));
+  out.distance = rounded_norm(exact_cross(e, b.dir)) / std::sqrt(length2.value());
+  return out;
+}
+
+// Two pieces (unit_scaled, as linear_pair_scaled takes them): the least of the interior
+// stationary point, when it lies in both intervals (decided in double-double), and the finite
+// ends against the other piece that `contenders` names (the others lost by more than their
+// rounding: each costs about 0.5 us here). `unique` is the caller's (the parallel test does not
+// cancel).
+template <class Real> LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b, unsigned contenders) {
+  using DD = DoubleDouble<Real>;
+  LinearPair<Real> best;
+  const auto take = [&](const LinearPair<Real>& c) {
+    if (c.distance < best.distance) best = c;
+  };
+  const auto swapped = [](LinearPair<Real> c) {
+    std::swap(c.s, c.t);
+    std::swap(c.point_a, c.point_b);
+    return c;
+  };
+  const Linear<Real>&la = a.piece, &lb = b.piece;
+  if (!a.is_point() && !b.is_point()) {
+    const ExactVec<Real> w = exact_offset(la.origin, lb.origin), n = exact_cross(a.dir, b.dir);
+    const DD n2 = exact_dot(n, n);
+    if (n2.hi > 0) {
+      // s = -((w x v).n) / |n|^2, t = -((w x u).n) / |n|^2 (the Binet-Cauchy forms above).
+      const DD s_num = -exact_dot(exact_cross(w, b.dir), n), t_num = -exact_dot(exact_cross(w, a.dir), n);
+      const auto inside = [&](const DD& num, const Linear<Real>& l) {
+        return !(std::isfinite(l.lo) && (num - n2 * l.lo).hi < 0) && !(std::isfinite(l.hi) && (num - n2 * l.hi).hi > 0);
+      };
+      if (inside(s_num, la) && inside(t_num, lb)) {
+        // The distance |W.n| / |n| from W, the offset between the pieces' points at s and t,
+        // not from w: n carries eps^2 / sin(angle) of itself (1e-16 for pieces 5e-17 rad
+        // apart), which |w| (3e10) would turn into 5e-6, and |W| (near the distance) does not.
+        // The point of b is the foot of a's point on b's line, not b's own stationary value: for
+        // pieces 5e-17 rad apart the two stationary values carry independent errors along the
+        // pieces (1e-6 at 3e10 from the origins), which would part the points by as much.
+        LinearPair<Real> c;
+        const DD s = s_num / n2;
+        const ExactVec<Real> pa = a.exact_at(s);
+        const ExactVec<Real> from_b{pa[0] - DD(lb.origin[0]), pa[1] - DD(lb.origin[1]), pa[2] - DD(lb.origin[2])};
+        DD t = exact_dot(from_b, b.dir) / exact_dot(b.dir, b.dir);
+        if (t.hi < lb.lo) t = DD(lb.lo);
+        if (t.hi > lb.hi) t = DD(lb.hi);
+        c.s = s.value();
+        c.t = t.value();
+        const ExactVec<Real> pb = b.exact_at(t);
+        const Vec3<Real> offset = rounded(ExactVec<Real>{pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]});
+        const Vec3<Real> normal = rounded(n);
+        c.point_a = rounded(pa);
+        c.point_b = rounded(pb);
+        c.distance = std::abs(offset.dot(normal)) / normal.norm();
+        take(c);
+      }
+    }
+  }
+  for (const ExactPiece<Real>* p : {&a, &b}) {
+    const ExactPiece<Real>& other = p == &a ? b : a;
+    for (const bool high : {false, true}) {
+      const Real end = high ? p->piece.hi : p->piece.lo;
+      const unsigned bit = p == &a ? (high ? kEndAHi : kEndALo) : (high ? kEndBHi : kEndBLo);
+      if (!(contenders & bit) || !std::isfinite(end)) continue;
+      LinearPair<Real> c = point_to_exact_piece(p->at(end), other);
+      c.s = end;
+      take(p == &a ? c : swapped(c));
+    }
+  }
+  if (!(best.distance < std::numeric_limits<Real>::infinity()) || (contenders & kAnyPoint)) {
+    // Two full lines without a crossing (parallel): any point of one.
+    LinearPair<Real> c = point_to_exact_piece(la.origin, b);
+    c.s = 0;
+    take(c);
+  }
+  return best;
+}
+
+}  // namespace detail
 
 template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
   int ea = 0, eb = 0;
   const Linear<Real> sa = unit_scaled(a, ea), sb = unit_scaled(b, eb);
-  LinearPair<Real> p = linear_pair_scaled(sa, sb);
+  unsigned contenders = 0;
+  LinearPair<Real> p = linear_pair_scaled(sa, sb, contenders);
   p.point_a = sa.origin + p.s * sa.direction;
   p.point_b = sb.origin + p.t * sb.direction;
+  if (contenders) {
+    LinearPair<Real> exact =
+        detail::exact_pair(detail::ExactPiece<Real>(sa, a, ea), detail::ExactPiece<Real>(sb, b, eb), contenders);
+    // Not finite only where products of the offsets overflow (scenes near the largest doubles,
+    // which the front end scales back first): the plain answer stands there.
+    if (std::isfinite(exact.distance) && exact.point_a.allFinite() && exact.point_b.allFinite()) {
+      exact.unique = p.unique;
+      p = exact;
+    }
+  }
   p.s = std::ldexp(p.s, -ea);
   p.t = std::ldexp(p.t, -eb);
   return p;
 }
 
-template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b) {
+template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact) {
   const Vec3<Real>& u = a.direction;
   const Vec3<Real>& v = b.direction;
   const Vec3<Real> w = a.origin - b.origin;
   const Real aa = u.squaredNorm(), bb = u.dot(v), cc = v.squaredNorm(), dd = u.dot(w), ee = v.dot(w);
   const bool a_point = !(aa > 0), b_point = !(cc > 0);
   LinearPair<Real> best;
-  const auto consider = [&](Real s, Real t) {
+  // Each candidate's value and the size of the offsets it was computed from (1-norms: an upper
+  // bound, no square root), whose rounding it carries: w's, s u's, t v's and their sum's, each
+  // within eps / 2 of its own size per component, about eps of the size in all (for the interior
+  // point's |w.n| / |n|, w's and the cross product's, about 2 eps of |w|; its points' as well).
+  struct Evaluated {
+    Real distance, size;
+    unsigned candidate;  // its LinearCandidate bit (0: the interior point, always re-evaluated)
+  };
+  std::array<Evaluated, 6> evaluated;
+  int count = 0;
+  const Real w_size = w.cwiseAbs().sum(), u_size = u.cwiseAbs().sum(), v_size = v.cwiseAbs().sum();
+  const auto consider = [&](Real s, Real t, unsigned candidate) {
     const Real dist = (w + s * u - t * v).norm();
+    evaluated[size_t(count++)] = {dist, w_size + std::abs(s) * u_size + std::abs(t) * v_size, candidate};
     if (dist < best.distance) best = {dist, s, t, true};
   };
   // The stationary value of one parameter with the other fixed, clamped.
@@ -110,17 +301,21 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
         t = t_accurate;
       }
     }
-    if (s >= a.lo && s <= a.hi && t >= b.lo && t <= b.hi)
+    if (s >= a.lo && s <= a.hi && t >= b.lo && t <= b.hi) {
       best = {std::abs(w.dot(n)) / std::sqrt(cross2), s, t, true};
+      // (its size counts s u and t v too: the closest points p + s u and q + t v carry their
+      // rounding, 2e-10 for pieces 1e-8 rad apart passing 1e6 from both origins)
+      evaluated[size_t(count++)] = {best.distance, w_size + std::abs(s) * u_size + std::abs(t) * v_size, 0u};
+    }
   }
-  if (std::isfinite(a.lo)) consider(a.lo, t_for(a.lo));
-  if (std::isfinite(a.hi)) consider(a.hi, t_for(a.hi));
-  if (std::isfinite(b.lo)) consider(s_for(b.lo), b.lo);
-  if (std::isfinite(b.hi)) consider(s_for(b.hi), b.hi);
+  if (std::isfinite(a.lo)) consider(a.lo, t_for(a.lo), detail::kEndALo);
+  if (std::isfinite(a.hi)) consider(a.hi, t_for(a.hi), detail::kEndAHi);
+  if (std::isfinite(b.lo)) consider(s_for(b.lo), b.lo, detail::kEndBLo);
+  if (std::isfinite(b.hi)) consider(s_for(b.hi), b.hi, detail::kEndBHi);
   if (!(best.distance < std::numeric_limits<Real>::infinity())) {
     // Two full lines, parallel (or a degenerate direction): any s gives the distance.
     const Real s = clamp_to(Real(0), a.lo, a.hi);
-    consider(s, t_for(s));
+    consider(s, t_for(s), detail::kAnyPoint);
   }
   if (!a_point && !b_point && !(cross2 > parallel)) {
     // Parallel: the overlap of b's projection onto a's parameter with a's interval.
@@ -133,6 +328,26 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
     const Real scale = std::max({w.norm(), best.distance, Real(1e-300)});
     if (hi > lo && (hi - lo) * std::sqrt(aa) > distinct_points_tolerance(scale)) best.unique = false;
   }
+  // Any candidate that may be the least (within four times its rounding of the best) and whose
+  // rounding may exceed 1024 eps of the best (sizes above 256 times the distance) asks for the
+  // exact evaluation of all that may be the least: the answer is then good to about 2e-13 of
+  // itself in double (1e-16 in long double), as the bars ask. (Random segments in a unit
+  // cube take the exact pass in about 1 case in 200, at about 2.5 us.)
+  constexpr Real rounding = 16 * std::numeric_limits<Real>::epsilon();
+  Real best_size = 0;
+  for (int i = 0; i < count; ++i)
+    if (evaluated[size_t(i)].distance == best.distance) best_size = std::max(best_size, evaluated[size_t(i)].size);
+  unsigned contenders = 0;
+  bool cancels = false;
+  for (int i = 0; i < count; ++i) {
+    const Evaluated& c = evaluated[size_t(i)];
+    if (!(c.distance - rounding * c.size <= best.distance + rounding * best_size)) continue;
+    contenders |= c.candidate;
+    if (!(c.size <= 256 * best.distance)) cancels = true;
+  }
+  // (the interior point has no bit: a nonzero mark asks for the exact pass even when it alone
+  // contends)
+  exact = cancels ? (contenders | 32u) : 0u;
   return best;
 }
 
@@ -187,26 +402,44 @@ template <class Real, class Piece> struct PointLinearQuery {
     return t * scaled.direction - offset;
   }
 
-  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Piece& piece) {
+  // The answer as a LinearPair (t, the distance, the closest point of the piece): the projection
+  // in plain arithmetic, or, where the offsets' rounding (about eps of their size, as in
+  // linear_pair_scaled) may exceed 256 eps of the distance (an origin or segment end far from p,
+  // or p on the piece), from the exact inputs
+  // (detail::point_to_exact_piece).
+  static LinearPair<Real> solve(const Vec3<Real>& p, const Piece& piece) {
     Linear<Real> scaled;
     int exponent = 0;
     const Linear<Real> l = as_linear(piece);
     const Vec3<Real> offset = p - l.origin;
-    const Real t = parameter(offset, l, scaled, exponent);
-    return separation(p, offset, scaled, t).norm();
+    LinearPair<Real> out;
+    out.t = parameter(offset, l, scaled, exponent);
+    out.distance = separation(p, offset, scaled, out.t).norm();
+    const Real size = offset.cwiseAbs().sum() + std::abs(out.t) * scaled.direction.cwiseAbs().sum();
+    if (!(size <= 256 * out.distance)) {
+      const LinearPair<Real> exact = detail::point_to_exact_piece(p, detail::ExactPiece<Real>(scaled, l, exponent));
+      if (std::isfinite(exact.distance) && exact.point_b.allFinite()) {
+        out = exact;
+        out.t = std::ldexp(out.t, -exponent);
+        return out;
+      }
+    }
+    out.point_b = scaled.has_end && out.t == scaled.hi ? scaled.end : Vec3<Real>(scaled.origin + out.t * scaled.direction);
+    out.t = std::ldexp(out.t, -exponent);
+    return out;
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Piece& piece) {
+    return solve(p, piece).distance;
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Piece& piece) {
-    Linear<Real> scaled;
-    int exponent = 0;
-    const Linear<Real> l = as_linear(piece);
-    const Vec3<Real> offset = p - l.origin;
-    const Real t = parameter(offset, l, scaled, exponent);
+    const LinearPair<Real> answer = solve(p, piece);
     Result<Real> r;
     r.point_a = p;
-    r.point_b = scaled.has_end && t == scaled.hi ? scaled.end : Vec3<Real>(scaled.origin + t * scaled.direction);
-    r.distance = separation(p, offset, scaled, t).norm();
-    r.param_b = Vec2<Real>(std::ldexp(t, -exponent), 0);
+    r.point_b = answer.point_b;
+    r.distance = answer.distance;
+    r.param_b = Vec2<Real>(answer.t, 0);
     return r;
   }
 };

@@ -3,7 +3,8 @@
 // Used where a quantity is a small difference of large terms that plain arithmetic cannot hold:
 // the pieces of a Bezier curve 1e5 times larger than the round it passes, cut from control
 // points 1e5 radii away (bezier.hpp, PreciseBezier), and a line's origin far from a round's
-// center (linear.hpp, ExactDifference).
+// center (linear.hpp, ExactDifference), and the distance between lines, rays and segments whose
+// defining points lie far from where they pass each other (linear_linear.hpp, precise_pair).
 #pragma once
 
 #include <cmath>
@@ -45,6 +46,18 @@ template <class Real> struct DoubleDouble {
   friend DoubleDouble operator*(const DoubleDouble& a, Real b) {
     DoubleDouble p = two_product(a.hi, b);
     p.lo += a.lo * b;
+    return fast_two_sum(p.hi, p.lo);
+  }
+  // The quotient to about eps^2 relative: the rounded quotient and one correction.
+  friend DoubleDouble operator/(const DoubleDouble& a, const DoubleDouble& b) {
+    const Real q = a.hi / b.hi;
+    const DoubleDouble r = a - b * q;
+    return fast_two_sum(q, (r.hi + r.lo) / b.hi);
+  }
+  // The product to about eps^2 relative: lo * lo is below that and left out.
+  friend DoubleDouble operator*(const DoubleDouble& a, const DoubleDouble& b) {
+    DoubleDouble p = two_product(a.hi, b.hi);
+    p.lo += a.hi * b.lo + a.lo * b.hi;
     return fast_two_sum(p.hi, p.lo);
   }
 };
