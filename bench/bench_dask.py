@@ -1,7 +1,7 @@
 """circledist.dask on a distributed.LocalCluster against single-process circledist: time and peak
 memory per worker for point-circle and circle-circle distances and a pairs_within.
 
-    python bench/bench_dask.py [--points 1e8] [--circles 1e7] [--pairs 1e6] [--chunk 2e6]
+    python -m bench.bench_dask [--points 1e8] [--circles 1e7] [--pairs 1e6] [--chunk 2e6]
 
 The cluster's shapes are drawn on the workers, chunk by chunk (da.random), so no process holds a
 whole batch; "draw only" times that drawing alone (a sum over the fields), so query time is the

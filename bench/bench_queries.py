@@ -4,7 +4,7 @@ the PyPI package distance3d where it offers the same query, all on the same rand
 the peak memory of a batch of 10^7 point-circle queries. Prints one markdown table and writes it
 with the machine's description to docs/benchmark.md.
 
-    python bench/bench_queries.py [--n 100000] [--binary build/cpp/bench/bench_queries]
+    python -m bench.bench_queries [--n 100000] [--binary build/cpp/bench/bench_queries]
                                   [--kinds point-circle,line-disk,...] [--no-memory] [--quick]
 
 `bash tools/run.sh bench` builds the C++ program (CIRCLEDIST_BUILD_BENCH=ON) and runs this.
@@ -36,7 +36,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Optional
 
-import one_core  # noqa: F401  (before NumPy: one BLAS thread)
+if not __package__:  # run as a file: its sibling one_core would not import
+    sys.exit("bench/bench_queries.py: run it from the repository's root as python -m bench.bench_queries")
+
+from . import one_core  # noqa: F401  (before NumPy: one BLAS thread)
 
 import numpy as np
 
@@ -451,8 +454,8 @@ def run_memory(n, copy=False):
     not exec its last command when another follows) starts the child from the shell's size."""
     print(f"== peak memory, {n:.0e} point-circle queries in a fresh interpreter", flush=True)
     flag = " --memory-copy" if copy else ""
-    command = f'"{sys.executable}" "{Path(__file__).resolve()}" --memory-child {n}{flag}; exit $?'
-    proc = subprocess.run(["/bin/sh", "-c", command], capture_output=True, text=True)
+    command = f'"{sys.executable}" -m bench.bench_queries --memory-child {n}{flag}; exit $?'
+    proc = subprocess.run(["/bin/sh", "-c", command], capture_output=True, text=True, cwd=ROOT)
     if proc.returncode != 0:
         print(proc.stdout, proc.stderr)
         return None

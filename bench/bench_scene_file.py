@@ -5,7 +5,7 @@ scene sizes, and Scene.extend of one large batch.
 
 Prints the seconds of each step and the machine; writes nothing but temporary files.
 
-    python bench/bench_scene_file.py [--n 200000] [--adds 1000 10000 100000] [--batch 1000000]
+    python -m bench.bench_scene_file [--n 200000] [--adds 1000 10000 100000] [--batch 1000000]
 
 Each step prints its wall time and its CPU time (this process's and, for the command line, its
 child's): on a shared machine the CPU time is the steadier figure.
@@ -22,7 +22,10 @@ import sys
 import tempfile
 import time
 
-import one_core  # noqa: F401  (before NumPy: one BLAS thread)
+if not __package__:  # run as a file: its sibling one_core would not import
+    sys.exit("bench/bench_scene_file.py: run it from the repository's root as python -m bench.bench_scene_file")
+
+from . import one_core  # noqa: F401  (before NumPy: one BLAS thread)
 
 import numpy as np
 

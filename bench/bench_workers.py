@@ -4,7 +4,7 @@
 (1, all, 1, all, ...) and the medians are compared, so a slow spell of the machine falls on both.
 Prints a markdown table and writes it, with the machine's description, to docs/workers.md.
 
-    python bench/bench_workers.py [--n 100000] [--repeats 5]
+    python -m bench.bench_workers [--n 100000] [--repeats 5]
 """
 
 from __future__ import annotations
@@ -14,14 +14,18 @@ import datetime
 import os
 import statistics
 import time
+import sys
 from pathlib import Path
 
-import one_core  # noqa: F401  (before NumPy: one BLAS thread, none spinning beside the workers)
+if not __package__:  # run as a file: its sibling one_core would not import
+    sys.exit("bench/bench_workers.py: run it from the repository's root as python -m bench.bench_workers")
+
+from . import one_core  # noqa: F401  (before NumPy: one BLAS thread, none spinning beside the workers)
 
 import numpy as np
 
 import circledist as cd
-from bench_queries import machine
+from .bench_queries import machine
 
 ROOT = Path(__file__).resolve().parent.parent
 REPORT = ROOT / "docs" / "workers.md"
@@ -65,7 +69,7 @@ def main():
     lines = [f"# Batches on several threads (workers=)", "",
              f"{m['model']}, {cores} usable cores, load {m['load']} at the start; Python {m['python']}, "
              f"NumPy {m['numpy']}; {datetime.date.today().isoformat()}. Median of {args.repeats} alternating runs "
-             f"of one batched call; `python bench/bench_workers.py` regenerates this file.", "",
+             f"of one batched call; `python -m bench.bench_workers` regenerates this file.", "",
              f"| pair | entry | queries | ns/query, workers=1 | ns/query, workers=-1 | speedup |",
              "|---|---|---|---|---|---|"]
     for pair, entry, n, one, every, speedup in rows:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Figures of the documentation. Run from anywhere: python bench/figures.py
+"""Figures of the documentation. Run from the repository's root: python -m bench.figures
 
 docs/line_disk.png: the line-disk split of docs/line_disk.md. Left, the scene: the line's
 projection enters the disk at the rim crossing t1 and leaves it at t2, cutting the line into

@@ -17,6 +17,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from mpmath import mpf
 
 # ----------------------------------------------------------------------------
 # hard scenes in the local frame (C = 0, N = +z, R = 1)
@@ -248,3 +249,16 @@ def all_cases():
         out.extend(hard_cases(lk, rk))
     return out
 
+
+# The long differential run reported a far-reaching degree-1 curve passing a ring as answered to
+# double's accuracy in long double (5.9e-13 above its reference). The reference was the one
+# wrong: the distance along the curve has two local minima 2.5e-5 apart in t whose values differ
+# by 5.9e-13, and the reference refined the higher one. Both minima, found by a dense scan of
+# t (4e6 points around the closest approach of a 2e6-point scan of [0, 1]) and refined in
+# 50-digit mpmath: 0.5345388680515342338549768 at t = 0.51695282638890 and
+# 0.5345388680509443148992182 at t = 0.51697755578901, the global one.
+FAR_CURVE_CONTROL = np.array([[-7368.294710182142, 18594.025607135212, 12799.26449390628],
+                              [6887.627156622108, -17377.097254714514, -11960.388731637753]])
+FAR_CURVE_RING = ([1.5206618395599336, -1.792796825287908, -0.6143671334034062],
+                  [-0.5078534011677034, 0.1960660034195697, 0.13630414481520362], 0.7799682209376687)
+FAR_CURVE_DISTANCE = mpf("0.5345388680509443148992182")

@@ -393,7 +393,7 @@ PYBIND11_MODULE(_core, m) {
         "Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' "
         "(shape (3,), not zero), 'length' (a number >= 0) or 'control_points' (shape (k + 1, 3)). Read by the scene "
         "files, the command line and circledist.Scene.");
-  m.attr("_max_control_points") = kMaxBezierDegree + 1;  // a Bezier curve's, from bezier.hpp
+  m.attr("_max_control_points") = kMaxBezierDegree + 1;  // a Bezier curve's, from primitives.hpp
   m.def(
       "_sweep_field", [] { return FieldPair(py::make_tuple(kSweepField.name, field_role(kSweepField))); },
       "The (name, role) of the optional keyword field every kind takes after its own fields.");

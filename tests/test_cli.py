@@ -13,26 +13,7 @@ import pytest
 cd = pytest.importorskip("circledist")
 cli = pytest.importorskip("circledist.cli")
 
-SCENE = {
-    "format": "circledist-scene",
-    "version": 1,
-    "description": "test scene",
-    "shapes": [
-        {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
-        {"name": "rail", "kind": "line", "origin": [-3, 1, 0.5], "direction": [1, 0, 0]},
-        {"name": "coin", "kind": "disk", "center": [3, 0, 0], "normal": [1, 0, 1], "radius": 0.5, "sweep": 0.1},
-        {"name": "probe", "kind": "segment", "p0": [3, 0, -1], "p1": [3, 0, 1]},
-        {"name": "tip", "kind": "point", "p": [0, 0, 2]},
-        {"name": "cable", "kind": "bezier", "control_points": [[-2, -2, 1], [0, 0, 3], [2, -2, 1]]},
-    ],
-    "queries": [
-        {"a": "rail", "b": "ring", "effects": ["intersects", "within", "distance", "closest_points"], "d": 0.6},
-        {"name": "coin vs probe", "a": "coin", "b": "probe", "effects": ["intersects", "closest_points"]},
-        {"a": "ring", "effects": ["nearest"], "k": 2},
-        {"a": "coin", "effects": ["within"], "d": 3.0},
-        {"a": "cable", "b": "ring", "effects": ["distance"]},
-    ],
-}
+from circledist_cases.scene_documents import BAD, SCENE  # noqa: E402
 
 
 def write(tmp_path, data, name="scene.json"):
@@ -96,93 +77,6 @@ def test_plot(tmp_path):
     assert cli.main([write(tmp_path, SCENE), "--plot", str(png)]) == 0
     data = png.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000
-
-
-HEAD = {"format": "circledist-scene", "version": 1}
-# (label, file content, the JSON path, what was expected): each must appear in the one-line message.
-BAD = [
-    ("not json", "{", "", "not valid JSON: Expecting property name"),
-    ("NaN is not JSON", '{"format": "circledist-scene", "version": 1, "x": NaN}', "", "NaN is not a JSON number"),
-    ("not an object", "[1, 2]", "$", "expected an object"),
-    ("no format", {"shapes": SCENE["shapes"]}, "$", "missing field 'format'"),
-    ("wrong format", {"format": "scene", "version": 1, "shapes": SCENE["shapes"]}, "$.format",
-     'expected "circledist-scene", got "scene"'),
-    ("no version", {"format": "circledist-scene", "shapes": SCENE["shapes"]}, "$",
-     "missing field 'version' (this circledist reads version 1)"),
-    ("newer version", {**HEAD, "version": 2, "shapes": SCENE["shapes"]}, "$.version",
-     "version 2 is newer than this circledist reads (version 1): upgrade circledist"),
-    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version", 'expected 1, got "1"'),
-    ("no shapes", {**HEAD, "queries": []}, "$", "missing field 'shapes'"),
-    ("bad radius", {**HEAD, "shapes": [{"name": "r", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
-                                        "radius": -1}]}, "$.shapes[0].radius (shape 'r')",
-     "expected a number >= 0, got -1"),
-    ("missing field", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "radius": 1}]},
-     "$.shapes[0] (shape 'r')", "missing field 'normal'"),
-    ("zero normal", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, 0],
-                                         "radius": 1}]}, "$.shapes[0].normal", "expected a non-zero vector"),
-    ("unknown kind", {**HEAD, "shapes": [{"name": "x", "kind": "torus"}]}, "$.shapes[0].kind (shape 'x')",
-     'expected one of "point", "line", "ray", "segment", "circle", "disk", "bezier", got "torus"'),
-    ("unknown field", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "colour": "red"}]},
-     "$.shapes[0].colour (shape 'p')", "unknown field (allowed: name, kind, count, p, sweep)"),
-    ("short vector", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0]}]},
-     "$.shapes[0].p (shape 'p')", "expected a vector of 3 numbers [x, y, z], got [0, 0]"),
-    ("string in vector", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, "1", 0]}]},
-     "$.shapes[0].p[1] (shape 'p')", 'expected a number, got "1"'),
-    ("overflowing number", '{"format": "circledist-scene", "version": 1, "shapes": [{"name": "p", "kind": "point", '
-                           '"p": [0, 1e400, 0]}]}', "$.shapes[0].p[1]", "expected a finite number"),
-    ("negative sweep", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "sweep": -2}]},
-     "$.shapes[0].sweep (shape 'p')", "expected a number >= 0, got -2"),
-    ("duplicate name", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0]},
-                                           {"name": "p", "kind": "point", "p": [1, 0, 0]}]}, "$.shapes[1].name",
-     'expected a name of its own, got "p"'),
-    ("bracket in name", {**HEAD, "shapes": [{"name": "p[0]", "kind": "point", "p": [0, 0, 0]}]},
-     "$.shapes[0].name", "expected a name: a non-empty string without '[', ']' or '/'"),
-    ("bad bezier", {**HEAD, "shapes": [{"name": "c", "kind": "bezier", "control_points": [[0, 0, 0]]}]},
-     "$.shapes[0].control_points (shape 'c')", "expected 2 to 8 control points"),
-    ("batch column too short", {**HEAD, "shapes": [{"name": "beads", "kind": "point", "count": 3,
-                                                    "p": [[0, 0, 0], [1, 0, 0]]}]},
-     "$.shapes[0].p", "expected 3 vectors (the batch's count) or 1, got 2"),
-    ("batch column not a column", {**HEAD, "shapes": [{"name": "beads", "kind": "point", "count": 2, "p": 5}]},
-     "$.shapes[0].p (shape 'beads')", "expected a vector [x, y, z] (one for all) or an array of count vectors, got 5"),
-    ("batch radius", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "count": 2, "center": [0, 0, 0],
-                                          "normal": [0, 0, 1], "radius": -1}]},
-     "$.shapes[0].radius (shape 'r')", "expected a number >= 0 (one for all) or an array of count of them, got -1"),
-    ("batch zero normal", {**HEAD, "shapes": [{"name": "rings", "kind": "circle", "count": 2, "center": [0, 0, 0],
-                                               "normal": [[0, 0, 1], [0, 0, 0]], "radius": 1}]},
-     "$.shapes[0].normal[1]", "expected a non-zero vector"),
-    ("batch curves of two degrees", {**HEAD, "shapes": [{"name": "c", "kind": "bezier", "count": 2, "control_points": [
-        [[0, 0, 0], [1, 0, 0]], [[0, 0, 0], [1, 0, 0], [2, 1, 0]]]}]},
-     "$.shapes[0].control_points[1]", "expected 2 control points as curve 0 has"),
-    ("bad count", {**HEAD, "shapes": [{"name": "b", "kind": "point", "count": 0, "p": [0, 0, 0]}]},
-     "$.shapes[0].count (shape 'b')", "expected the number of shapes in the batch: an integer >= 1, got 0"),
-    ("unknown shape in query", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "nope",
-                                                                                "effects": ["distance"]}]},
-     "$.queries[0].b", 'expected the name of a shape of the scene, got "nope"'),
-    ("whole batch in query", {**HEAD, "shapes": SCENE["shapes"] + [
-        {"name": "beads", "kind": "point", "count": 2, "p": [[0, 0, 0], [1, 0, 0]]}],
-        "queries": [{"a": "beads", "b": "ring", "effects": ["distance"]}]},
-     "$.queries[0].a", "expected one shape: 'beads' is a batch of 2, name one as beads[i] with i from 0 to 1"),
-    ("batch index out of range", {**HEAD, "shapes": SCENE["shapes"] + [
-        {"name": "beads", "kind": "point", "count": 2, "p": [[0, 0, 0], [1, 0, 0]]}],
-        "queries": [{"a": "beads[2]", "b": "ring", "effects": ["distance"]}]},
-     "$.queries[0].a", "expected an index from 0 to 1 (batch 'beads' has 2 shapes), got 2"),
-    ("unknown effect", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"name": "q", "a": "ring", "b": "rail",
-                                                                        "effects": ["volume"]}]},
-     "$.queries[0].effects[0]", 'expected one of "intersects"'),
-    ("scene effect on a pair", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "rail",
-                                                                                "effects": ["nearest"]}]},
-     "$.queries[0].effects", "expected effects against a pair (with 'b'): intersects, within, distance, "
-                             'closest_points; got "nearest"'),
-    ("within without d", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "rail",
-                                                                          "effects": ["within"]}]},
-     "$.queries[0]", "missing field 'd'"),
-    ("no query for the pair", {**HEAD, "shapes": SCENE["shapes"] + [
-        {"name": "cable2", "kind": "bezier", "control_points": [[0, 0, 0], [1, 1, 1]]}],
-        "queries": [{"a": "cable", "b": "cable2", "effects": ["distance"]}]},
-     "$.queries[0].b", "none exists between a Bezier and a Bezier"),
-    ("bad k", {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "effects": ["nearest"], "k": 0}]},
-     "$.queries[0].k", "expected an integer >= 1, got 0"),
-]
 
 
 @pytest.mark.parametrize("label,data,where,message", BAD, ids=[b[0] for b in BAD])

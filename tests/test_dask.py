@@ -18,7 +18,7 @@ import dask.array as da  # noqa: E402
 
 import circledist as cd  # noqa: E402
 import circledist.dask as cdd  # noqa: E402
-from test_pairs import SUPPORTED, TRAILING, random_batch  # noqa: E402
+from circledist_cases.batches import SUPPORTED, TRAILING, random_batch  # noqa: E402
 
 KIND_PAIRS = sorted(SUPPORTED)
 

@@ -154,10 +154,10 @@ def test_screen_false_alarms_and_reference_misses(results):
 
 # ---- the tools on their own (no library call) ------------------------------------------------
 def far_curve_case():
-    """The long run's false bezier_large finding (tests/test_regressions.py): a degree-1 curve 2e4
+    """The long run's false bezier_large finding (circledist_cases/scenes.py, tests/test_regressions.py): a degree-1 curve 2e4
     long passing a ring of radius 0.78, with two local minima 2.5e-5 apart in t whose values
     differ by 5.9e-13; both tools used to refine only the higher one."""
-    from test_regressions import FAR_CURVE_CONTROL, FAR_CURVE_DISTANCE, FAR_CURVE_RING
+    from circledist_cases.scenes import FAR_CURVE_CONTROL, FAR_CURVE_DISTANCE, FAR_CURVE_RING
     center, normal, radius = FAR_CURVE_RING
     case = dict(family="bezier_large", id="far_curve", a="bezier", a_data=FAR_CURVE_CONTROL.tolist(),
                 b="circle", b_data=list(center) + list(normal) + [radius])

@@ -40,6 +40,14 @@ CASES = scenes.all_cases()
 ORDERS = ["lin_first", "round_first"]
 
 
+def in_both_orders(cases):
+    """Parametrizes a test by every one of `cases` (named by its id) and both argument orders."""
+    def parametrized(test):
+        by_case = pytest.mark.parametrize("case", cases, ids=[c.id for c in cases])(test)
+        return pytest.mark.parametrize("order", ORDERS)(by_case)
+    return parametrized
+
+
 def _refr(case):
     return ref.reference(case.lin_kind, case.lin_data, case.round_kind, case.round_data)
 
@@ -58,8 +66,7 @@ def _fmt(x):
     return mp.nstr(mpf(x), 17)
 
 
-@pytest.mark.parametrize("order", ORDERS)
-@pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
+@in_both_orders(CASES)
 def test_distance(cd, case, order):
     r = _refr(case)
     a, b = _shapes(cd, case, order)
@@ -110,18 +117,13 @@ def _check_closest(case, order, res, r):
     eta = 10 ** (math.ceil(math.log10(eta) * 4) / 4)
     ra, rb = r.near_optimal_radius(eta)
     floor = 1e-6 * float(scale)
-    if math.isfinite(ra):
-        dev = float(ref.mp_vec_distance(p_lin, r.point_lin))
-        lim = max(floor, ra + float(tol) + sl_lin)
-        if dev > lim:
-            problems.append(f"point on {case.lin_kind} is {dev:.3e} from the reference point "
-                            f"(allowed {lim:.3e})")
-    if math.isfinite(rb):
-        dev = float(ref.mp_vec_distance(p_round, r.point_round))
-        lim = max(floor, rb + float(tol) + sl_round)
-        if dev > lim:
-            problems.append(f"point on {case.round_kind} is {dev:.3e} from the reference point "
-                            f"(allowed {lim:.3e})")
+    for kind, point, reference_point, radius, slack in ((case.lin_kind, p_lin, r.point_lin, ra, sl_lin),
+                                                        (case.round_kind, p_round, r.point_round, rb, sl_round)):
+        if math.isfinite(radius):
+            dev = float(ref.mp_vec_distance(point, reference_point))
+            lim = max(floor, radius + float(tol) + slack)
+            if dev > lim:
+                problems.append(f"point on {kind} is {dev:.3e} from the reference point (allowed {lim:.3e})")
     unique = bool(res.unique)
     if r.degenerate and unique:
         problems.append("unique is True but the closest pairs are an exact tie or a continuum")
@@ -131,8 +133,7 @@ def _check_closest(case, order, res, r):
     return problems
 
 
-@pytest.mark.parametrize("order", ORDERS)
-@pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
+@in_both_orders(CASES)
 def test_closest_points(cd, case, order):
     r = _refr(case)
     a, b = _shapes(cd, case, order)
@@ -144,8 +145,7 @@ def test_closest_points(cd, case, order):
 PARAM_CASES = [c for c in CASES if c.lin_kind != "point" and (c.random or c.offset == 0.0)]
 
 
-@pytest.mark.parametrize("order", ORDERS)
-@pytest.mark.parametrize("case", PARAM_CASES, ids=[c.id for c in PARAM_CASES])
+@in_both_orders(PARAM_CASES)
 def test_linear_parameter(cd, case, order):
     """For lines/rays/segments the parameter reported with a point (its first component,
     if a vector) is the t of the API:

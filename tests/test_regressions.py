@@ -20,6 +20,7 @@ from mpmath import mp, mpf
 
 from circledist_cases import reference as L
 from circledist_cases import reference_round as R
+from circledist_cases.scenes import FAR_CURVE_CONTROL, FAR_CURVE_DISTANCE, FAR_CURVE_RING
 
 cd = pytest.importorskip("circledist")
 
@@ -387,20 +388,8 @@ def test_disks_coplanar_within_rounding_points_on_both(solver):
         assert off_disk(r.point_a, dx) <= 8 * EPS * 2 and off_disk(r.point_b, dy) <= 8 * EPS * 2
 
 
-# The long differential run reported a far-reaching degree-1 curve passing a ring as answered to
-# double's accuracy in long double (5.9e-13 above its reference). The reference was the one
-# wrong: the distance along the curve has two local minima 2.5e-5 apart in t whose values differ
-# by 5.9e-13, and the reference refined the higher one. Both minima, found by a dense scan of
-# t (4e6 points around the closest approach of a 2e6-point scan of [0, 1]) and refined in
-# 50-digit mpmath: 0.5345388680515342338549768 at t = 0.51695282638890 and
-# 0.5345388680509443148992182 at t = 0.51697755578901, the global one.
-FAR_CURVE_CONTROL = np.array([[-7368.294710182142, 18594.025607135212, 12799.26449390628],
-                              [6887.627156622108, -17377.097254714514, -11960.388731637753]])
-FAR_CURVE_RING = ([1.5206618395599336, -1.792796825287908, -0.6143671334034062],
-                  [-0.5078534011677034, 0.1960660034195697, 0.13630414481520362], 0.7799682209376687)
-FAR_CURVE_DISTANCE = mpf("0.5345388680509443148992182")
-
-
+# A far-reaching degree-1 curve passing a ring with two local minima 2.5e-5 apart in t whose
+# values differ by 5.9e-13 (the long differential run's false finding; circledist_cases/scenes.py).
 @pytest.mark.parametrize("precision, bar", [("float64", 1e-12), ("longdouble", 1e-15)])
 @pytest.mark.parametrize("kind", ["Bezier", "Segment"])
 def test_far_curve_near_tied_minima(cd, kind, precision, bar):
@@ -516,8 +505,9 @@ def _check_open(a, b, solver, precision, reference, radius):
 # concentric family): its w^6 coefficient cancels to float32 rounding, the stationary polynomial
 # gets one root near -2e7, and Eigen's QR on the balanced companion matrix then returned the roots
 # in [-1, 1] as complex pairs: the companion policy answered 0.1713 for 0.1601 (float32 and
-# float64). The far root is now divided out first (bezier.hpp, without_far_roots); the family is
-# cpp/tests/test_bezier_center.cpp. Reference: the differential run's 50-digit minimization.
+# float64). The far root is now divided out first (detail/curve_roots.hpp, without_far_roots);
+# the family is cpp/tests/test_bezier_center.cpp. Reference: the differential run's 50-digit
+# minimization.
 _BEZIER = np.array([[-0.7396453022956848, -0.739128053188324, -1.4231096506118774],
                     [-0.35104236006736755, 0.1521882861852646, -1.4333250522613525],
                     [-1.105171799659729, -1.6972906589508057, -1.7876821756362915],

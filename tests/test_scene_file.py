@@ -101,7 +101,7 @@ def _mutations(doc):
 
 
 def _corpus():
-    from test_cli import BAD, SCENE
+    from circledist_cases.scene_documents import BAD, SCENE
 
     valid = [SCENE, BATCH_SCENE, json.loads(cli.demo_scene_text())]
     docs = list(valid)

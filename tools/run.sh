@@ -148,10 +148,10 @@ case "$task" in
   bench)
     cpp_build -DCIRCLEDIST_BUILD_BENCH=ON
     cmake --build build/cpp --target accuracy_vs_time
-    "$py" bench/bench_queries.py          # docs/benchmark.md
+    "$py" -m bench.bench_queries          # docs/benchmark.md
     "$py" -m bench.accuracy_vs_time       # docs/accuracy_vs_time.md, .png, docs/stability_sweeps.png
-    "$py" bench/bench_scene.py            # docs/scene_scaling.md, .png
-    "$py" bench/figures.py                # docs/line_disk.png
+    "$py" -m bench.bench_scene            # docs/scene_scaling.md, .png
+    "$py" -m bench.figures                # docs/line_disk.png
     ;;
   *)
     echo "usage: bash tools/run.sh demo|test|bench|docs|fuzz [N]" >&2

@@ -275,6 +275,18 @@ void translated_cases(const A& a, const B& b, const V3d& direction, const Check&
   }
 }
 
+// The cases circle-circle and circle-disk both check, with B a circle or a disk
+// (`check(name, circle, round)`): a circle and a round in general position, and circles a
+// million times smaller and larger than a unit round at the origin.
+template <class Round3> Round3 generic_round() { return {V3d(0.7, -0.4, 0.2), unit(0.3, 1, 2), 0.9}; }
+inline Circle3<double> generic_circle() { return {V3d(0.1, 0.2, 0.3), unit(1, -2, 0.5), 1.3}; }
+template <class Round3, class Check> void circle_round_shared_cases(const Check& check) {
+  check("generic", generic_circle(), generic_round<Round3>());
+  const Round3 big{V3d(0, 0, 0), V3d(0, 0, 1), 1};
+  check("radius ratio 1e-6", Circle3<double>{V3d(1.2, 0.3, 0.1), unit(0.2, 1, 0.4), 1e-6}, big);
+  check("radius ratio 1e6", Circle3<double>{V3d(1e6 + 0.3, 0.1, 0.2), unit(0.1, 0.2, 1), 1e6}, big);
+}
+
 inline BezierCurve3<double> bezier(std::initializer_list<V3d> points) {
   BezierCurve3<double> c;
   c.control.resize(3, int(points.size()));

@@ -1,11 +1,12 @@
 // Bezier curves against lines, rays and segments: docs/bezier_linear.md.
 //
 // A line: in the frame whose z axis is the line's direction, centered at the curve's control
-// point nearest the line (the control points' differences from it exact in the pieces, bezier.hpp),
-// the line's parameter is eliminated by dropping z: the squared distance to the line is that of
-// the curve projected onto z = 0 from the line's trace (x0, y0), a polynomial of degree 2n, and
-// the curve against the line is bezier_point.hpp's curve against a point for the projected curve
-// (roots of degree 2n - 1, end points, polish on the exact distance, pieces for far curves).
+// point nearest the line (the control points' differences from it exact in the pieces,
+// detail/precise_bezier.hpp), the line's parameter is eliminated by dropping z: the squared
+// distance to the line is that of the curve projected onto z = 0 from the line's trace (x0, y0),
+// a polynomial of degree 2n, and the curve against the line is bezier_point.hpp's curve against
+// a point for the projected curve (roots of degree 2n - 1, end points, polish on the exact
+// distance, pieces for far curves).
 //
 // A ray or a segment: a closest pair (t, s) has s inside the piece (then t is a stationary point
 // of the distance to the whole line whose foot lies inside: the line's minima with the foot's
@@ -137,7 +138,7 @@ template <class Real, class Piece> struct CurvePieceQuery {
     if (inside.count == 0) return;
     Result<Real> r;
     Vec3<Real> local;
-    // The piece's point where the best minimum is the whole line's (bezier.hpp's BestPiece).
+    // The piece's point where the best minimum is the whole line's (BestPiece, detail/precise_bezier.hpp).
     const bool same = where.valid && inside.best.x == minima.best.x && inside.best.value == minima.best.value;
     BestPiece<Real> none;
     Solver::best_point(b, f.c, f.round, same ? where : none, inside.best.x, local, r.point_a);

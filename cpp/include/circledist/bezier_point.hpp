@@ -3,21 +3,23 @@
 //
 // Against a point (the local origin, the point subtracted from the control points first) the
 // squared distance |q(t)|^2 is a polynomial of degree 2n; its stationary points are the roots of
-// q . q' (degree 2n - 1), written in the power basis of w = 2t - 1 (bezier.hpp's
-// LocalBezier::coordinate). Against a line parallel to the local z axis the curve is first
+// q . q' (degree 2n - 1), written in the power basis of w = 2t - 1 (LocalBezier::coordinate,
+// detail/local_bezier.hpp). Against a line parallel to the local z axis the curve is first
 // projected onto the plane z = 0 and moved so that the line passes through the origin: the
 // distance to the line is the projected curve's distance to the origin, the same equation.
 // Candidates: t = 0, t = 1 and the roots in [0, 1], each polished on the exact distance
 // (minimize.hpp); the smallest wins.
 //
 // A curve far larger than its distance to the target (one control point 1e10 away, the curve
-// passing 1e-21 from the point at t = 5e-11) is cut into pieces by bezier.hpp's branch and bound
-// (CurveRoundBase::solve_pieces, blossoms in double-double): the target is given the size of the
-// curve's end points' distances to it, which is what the whole curve is solved in when it is of
-// their size.
+// passing 1e-21 from the point at t = 5e-11) is cut into pieces by the curves' branch and bound
+// (CurveRoundBase::solve_pieces in detail/curve_round_base.hpp, blossoms in double-double): the
+// target is given the size of the curve's end points' distances to it, which is what the whole
+// curve is solved in when it is of their size.
 #pragma once
 
-#include "bezier.hpp"
+#include "detail/curve_roots.hpp"
+#include "detail/curve_round_base.hpp"
+#include "query.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +27,7 @@
 
 namespace circledist {
 
-// The local origin as the target of bezier.hpp's curve machinery (LocalBezier::jet): the
+// The local origin as the target of the curves' machinery (LocalBezier::jet): the
 // squared distance |P|^2 and its derivatives 2 P.P', 2 (|P'|^2 + P.P'').
 template <class Real> struct PointTarget {
   static constexpr bool interior = false;
@@ -72,7 +74,7 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   using Base = CurveRoundBase<Real>;
   using Found = typename Base::Found;
 
-  // The size the branch and bound gives the target (bezier.hpp's round radius). A curve is cut
+  // The size the branch and bound gives the target (a round's radius in bezier.hpp). A curve is cut
   // into pieces only when it reaches far beyond its end points (2^20 times farther than they lie
   // from each other and from the target: a control point 1e10 away, the curve back next to the
   // target): it is then halved down to pieces of that size next to the target, where the whole
@@ -89,11 +91,11 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   }
 
   // The minima of the distance to `target` over the curve (its local control points `c` in
-  // `round`'s frame; the round's radius is reach()); the scale of tolerances is bezier.hpp's.
+  // `round`'s frame; the round's radius is reach()); the scale of tolerances is a round's (bezier_round_scale).
   // `bound_of(q)`, the distance of a local point that the pieces' branch and bound prunes on:
   // the target's own (the default) or, for a ray or a segment, the piece's, whose closest pair is
   // sought among the line's minima. `every_minimum` polishes every candidate (no screening on
-  // the best value so far, bezier.hpp's polish): a ray or a segment needs the line's local minima
+  // the best value so far, CurveRoundBase::polish): a ray or a segment needs the line's local minima
   // whose foot lies in the piece, not only the line's best one.
   template <class Roots>
   static Found solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round,
@@ -122,7 +124,7 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   }
 
   // The best minimum's point on the curve, local and world (from its piece when the curve was
-  // cut: bezier.hpp's BestPiece).
+  // cut: BestPiece, detail/precise_bezier.hpp).
   static void best_point(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
                          const BestPiece<Real>& where, Real t, Vec3<Real>& local, Vec3<Real>& world) {
     local = where.valid ? where.piece.at(where.s) : c.at(t);

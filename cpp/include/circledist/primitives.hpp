@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -199,6 +200,54 @@ template <class Real, if_float<Real> = 0> Circle3<double> promoted(const Circle3
 }
 template <class Real, if_float<Real> = 0> Disk3<double> promoted(const Disk3<Real>& d) {
   return {promoted(d.center), promoted(d.normal), double(d.radius)};
+}
+
+// Bezier curves of degree 0 to kMaxBezierDegree (bezier.hpp answers their queries; a curve's
+// polynomials against a round reach degree 6n - 2, detail/local_bezier.hpp).
+constexpr int kMaxBezierDegree = 7;
+
+// Control points P_0 .. P_n as the columns of a fixed-capacity matrix (no heap): the curve is
+// sum_i C(n, i) t^i (1 - t)^(n - i) P_i for t in [0, 1]. A single column is a point; no column
+// is the empty set, at distance +infinity (the infimum over nothing) from everything.
+template <class Real> struct BezierCurve3 {
+  using ControlPoints = Eigen::Matrix<Real, 3, Eigen::Dynamic, Eigen::ColMajor, 3, kMaxBezierDegree + 1>;
+  ControlPoints control;
+
+  int degree() const { return int(control.cols()) - 1; }
+
+  // De Casteljau: convex combinations only, exact at t = 0 and t = 1.
+  Vec3<Real> at(Real t) const {
+    std::array<Vec3<Real>, kMaxBezierDegree + 1> q;
+    const int n = degree();
+    for (int i = 0; i <= n; ++i) q[i] = control.col(i);
+    for (int k = n; k > 0; --k) {
+      for (int i = 0; i < k; ++i) q[i] = (1 - t) * q[i] + t * q[i + 1];
+    }
+    return q[0];
+  }
+};
+
+// The order of same-kind queries (primitives.hpp): by degree, then control point by point.
+template <class Real> bool precedes(const BezierCurve3<Real>& x, const BezierCurve3<Real>& y) {
+  if (x.control.cols() != y.control.cols()) return x.control.cols() < y.control.cols();
+  return std::lexicographical_compare(x.control.data(), x.control.data() + x.control.size(), y.control.data(),
+                                      y.control.data() + y.control.size());
+}
+
+// As for the other primitives (primitives.hpp): the curve scaled by 2^e, its largest
+// coordinate, and the same curve in double.
+template <class Real> BezierCurve3<Real> scaled(const BezierCurve3<Real>& b, int e) {
+  BezierCurve3<Real> out = b;
+  for (int i = 0; i < int(b.control.cols()); ++i) out.control.col(i) = detail::ldexp3(Vec3<Real>(b.control.col(i)), e);
+  return out;
+}
+template <class Real> Real extent(const BezierCurve3<Real>& b) {
+  return b.control.cols() > 0 ? b.control.cwiseAbs().maxCoeff() : Real(0);
+}
+template <class Real, if_float<Real> = 0> BezierCurve3<double> promoted(const BezierCurve3<Real>& b) {
+  BezierCurve3<double> out;
+  out.control = b.control.template cast<double>();
+  return out;
 }
 
 // v / |v| for any finite nonzero v. |v|^2 overflows for |v| beyond about 1.3e154 (double) and

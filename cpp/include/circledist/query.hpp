@@ -50,7 +50,7 @@ struct ordered<A, A, std::enable_if_t<needs_order<A>::value,
 template <class A, class B> constexpr bool ordered_v = ordered<A, B>::value;
 
 // Shapes the front end can promote to double (float primitives) and scale (every primitive):
-// found by argument-dependent lookup where the shape is defined (primitives.hpp, bezier.hpp).
+// found by argument-dependent lookup where the shape is defined (primitives.hpp).
 template <class A, class = void> struct promotable : std::false_type {};
 template <class A> struct promotable<A, std::void_t<decltype(promoted(std::declval<const A&>()))>> : std::true_type {};
 template <class A, class = void> struct scalable : std::false_type {};

@@ -2,9 +2,9 @@
 // about twice Real's precision (Dekker 1971; Shewchuk 1997 for the error-free transformations).
 // Used where a quantity is a small difference of large terms that plain arithmetic cannot hold:
 // the pieces of a Bezier curve 1e5 times larger than the round it passes, cut from control
-// points 1e5 radii away (bezier.hpp, PreciseBezier), and a line's origin far from a round's
-// center (linear.hpp, ExactDifference), and the distance between lines, rays and segments whose
-// defining points lie far from where they pass each other (linear_linear.hpp, precise_pair).
+// points 1e5 radii away (precise_bezier.hpp), a line's origin far from a round's center
+// (linear.hpp, ExactDifference), and the distance between lines, rays and segments whose defining
+// points lie far from where they pass each other (linear_linear.hpp, exact_pair).
 #pragma once
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Trigonometric polynomials of a circle's angle t and the tangent half-angle substitution
 // u = tan(t/2), which turns one of degree K into an ordinary polynomial of degree 2K whose real
 // roots give the stationary angles (docs/circle_circle.md). Shared by every query that
-// parametrizes a circle by its angle: circle_circle.hpp, circle_disk.hpp, disk_disk.hpp, bezier.hpp.
+// parametrizes a circle by its angle: circle_circle.hpp, circle_disk.hpp, disk_disk.hpp.
 #pragma once
 
 #include "../roots.hpp"
