@@ -95,8 +95,9 @@ def far_cases():
 def near_axis_piece_cases():
     """Rays and segments starting near a circle's or disk's axis: their lines mostly pass inside
     the astroid, where the line's distance has a second local minimum; the piece may hold either
-    minimum, or neither (its ends decide). line_circle.hpp answers these from the secular
-    roots and the end points (other_line_minimum); a sign slip there once returned 0.97 for 0.62."""
+    minimum, or neither (its ends decide). The pieces' fast path answers these from the secular
+    roots and the end points (other_line_minimum, detail/line_ring_minimum.hpp); a sign slip
+    there once returned 0.97 for 0.62."""
     rng = np.random.default_rng(33)
     out = []
     for i in range(12):

@@ -6,9 +6,15 @@
 // interval are candidates too. The exact disk distance judges every candidate.
 #pragma once
 
-#include "line_circle.hpp"
+#include "detail/end_point.hpp"
+#include "detail/line_ring_minimum.hpp"
+#include "detail/piece_line.hpp"
+#include "detail/piece_round_query.hpp"
 #include "linear.hpp"
 #include "query.hpp"
+
+#include <cmath>
+#include <limits>
 
 namespace circledist {
 
@@ -25,9 +31,9 @@ template <class Real> Circle3<Real> disk_rim(const Disk3<Real>& disk) { return {
 // under it as to any. So the line-circle solver from the circle's side answers it (one bracketed
 // root). A ray or segment takes the line's answer where it holds the line's point of it (the
 // crossing, or the line's closest point to the rim when the line does not cross the disk), as
-// against a circle (PieceRoundQuery, line_circle.hpp); elsewhere, and for closest points of a
-// line within sqrt(eps) of parallel to the plane (which may touch a continuum), the general path
-// answers (returns false).
+// against a circle (PieceRoundQuery, detail/piece_round_query.hpp); elsewhere, and for closest
+// points of a line within sqrt(eps) of parallel to the plane (which may touch a continuum), the
+// general path answers (returns false).
 // The line's distance to the disk is convex (the distance to a convex set, along a line), so a
 // ray or segment that does not hold the line's minimum is closest at its end nearer that
 // minimum: point-disk's closed form there (strictly closest: a convex function falls strictly

@@ -11,8 +11,8 @@
 //   Policy::bracketed_root(c, degree, lo, hi, p_lo, p_hi)
 // returns the one root in the finite [lo, hi], where the caller knows that p changes sign
 // nowhere else in between and gives p(lo) <= 0 <= p(hi) (from a closed form: more accurate than
-// Horner there, and free; a full line against a circle, line_circle.hpp). Where p_lo is not
-// below zero, lo is the root and is returned as it is.
+// Horner there, and free; a line's minima over a ring, detail/line_ring_minimum.hpp). Where p_lo
+// is not below zero, lo is the root and is returned as it is.
 //   Policy::roots_in(c, degree, intervals, out)
 // is roots() for a union of disjoint intervals (one polynomial solve, however many pieces):
 // bracketing searches each piece, the companion policies solve once and keep the roots inside.

@@ -1,0 +1,42 @@
+// A ray's or segment's end point as a candidate against a circle or a disk: its distance from
+// point-circle's or point-disk's closed form, and its closest points.
+#pragma once
+
+#include "../planar.hpp"
+#include "../point_circle.hpp"
+#include "../point_disk.hpp"
+#include "../primitives.hpp"
+#include "../query.hpp"
+#include "piece_line.hpp"
+#include "round_target.hpp"
+
+#include <cmath>
+
+namespace circledist {
+
+// A piece's end point as a candidate: its distance to the round by point-circle's (point-disk's)
+// closed form from the line's unit normal n (height z = n.(p - c), rho from the axis; over a
+// disk's interior, rho <= R, the height alone), and its closest points (the distance kept the
+// same, so distance() and closest() agree).
+template <class Real, class R, class Target = target_t<R>>
+Real end_point_distance(const Vec3<Real>& p, const R& round, const Vec3<Real>& n) {
+  const Vec3<Real> d = p - round.center;
+  const Real z = n.dot(d);
+  const Real rho = (d - z * n).norm();
+  if constexpr (Target::interior) {
+    if (rho <= round.radius) return std::abs(z);
+  }
+  return length2d(z, rho - round.radius);
+}
+template <class Piece, class Round>
+auto end_point_result(const Piece& piece, decltype(Round::radius) t, const Round& round,
+                      const Vec3<decltype(Round::radius)>& n) {
+  using Real = decltype(Round::radius);
+  const Vec3<Real> p = piece_end(piece, t);
+  Result<Real> r = Query<Vec3<Real>, Round>::closest(p, round);
+  r.distance = end_point_distance(p, round, n);
+  r.param_a = Vec2<Real>(t, 0);
+  return r;
+}
+
+}  // namespace circledist
