@@ -34,6 +34,18 @@ template <class Real> Linear<Real> as_linear(const Segment3<Real>& s) {
   return {s.p0, s.p1 - s.p0, Real(0), Real(1), s.p1, true};
 }
 
+// The answer between two linear pieces (linear_linear.hpp): their parameters and closest points.
+template <class Real> struct LinearPair {
+  Real distance = std::numeric_limits<Real>::infinity();
+  Real s = 0, t = 0;
+  bool unique = true;
+  // The closest points, from the pieces with scaled directions: finite even where s or t is not
+  // representable (a direction of 1e-295 with the closest point 1e38 away: t = 1e333).
+  Vec3<Real> point_a = Vec3<Real>::Zero(), point_b = Vec3<Real>::Zero();
+};
+
+template <class Real> Real clamp_to(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
+
 // a * b - c * d with a single rounding error (Kahan's algorithm with fused multiply-adds).
 template <class Real> Real difference_of_products(Real a, Real b, Real c, Real d) {
   const Real cd = c * d;

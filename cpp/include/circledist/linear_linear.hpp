@@ -10,29 +10,19 @@
 // distance is constant along the overlap of their projections, which contains an end point of one
 // of them unless both are full lines (then any pair at s = 0 does). `unique` is false when that
 // overlap is longer than the distinct-points tolerance (a continuum of closest pairs).
+// Where the pieces' defining points lie far from where they pass, the candidates are evaluated
+// again from the exact inputs (detail/exact_linear.hpp).
 #pragma once
 
-#include "detail/double_double.hpp"
+#include "detail/exact_linear.hpp"
 #include "linear.hpp"
 #include "query.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
 namespace circledist {
-
-template <class Real> struct LinearPair {
-  Real distance = std::numeric_limits<Real>::infinity();
-  Real s = 0, t = 0;
-  bool unique = true;
-  // The closest points, from the pieces with scaled directions: finite even where s or t is not
-  // representable (a direction of 1e-295 with the closest point 1e38 away: t = 1e333).
-  Vec3<Real> point_a = Vec3<Real>::Zero(), point_b = Vec3<Real>::Zero();
-};
-
-template <class Real> Real clamp_to(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
 
 // The piece with its direction scaled by a power of two (exact) to a largest component in
 // [1, 2), its parameter interval scaled inversely: the same points, P(s) = p + s u for s in the
@@ -54,173 +44,11 @@ template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& e
   return out;
 }
 
-namespace detail {
-// The candidates of linear_pair_scaled, as bits of `contenders`.
-enum LinearCandidate : unsigned { kEndALo = 1, kEndAHi = 2, kEndBLo = 4, kEndBHi = 8, kAnyPoint = 16 };
-}  // namespace detail
 
 // `exact` is set to the candidates that may be the least (within their rounding of the best) when
 // the rounding of the pieces' offsets may exceed about 1e3 eps of the answer; else 0.
 template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact);
 
-// ---- Far defining points: the same answer, evaluated from the exact inputs ----------------------
-//
-// The closed forms above lose eps times the pieces' own offsets: w = p - q rounds by eps |w|, and
-// w + s u - t v by eps (|w| + |s u| + |t v|). Where a line's origin, a ray's origin or a segment's
-// ends lie far (1e10) from where the pieces pass each other, that is far more than a small
-// distance between them (a point 6e-9 from a segment whose ends are 1e11 and 1e8 away came out
-// 1.7e-5). The pieces themselves are exact (their defining points and directions are the
-// inputs), so the answer is not ill-posed: below, every candidate is evaluated from exact
-// differences of the inputs in double-double, which holds the offsets' cancellation.
-
-namespace detail {
-
-// A piece with its direction held exactly: a segment's p1 - p0 (rounded in Linear::direction)
-// as a double-double, scaled by the same power of two as the piece (unit_scaled).
-template <class Real> struct ExactPiece {
-  using DD = DoubleDouble<Real>;
-  const Linear<Real>& piece;
-  std::array<DD, 3> dir;
-  ExactPiece(const Linear<Real>& scaled, const Linear<Real>& original, int exponent) : piece(scaled) {
-    for (int i = 0; i < 3; ++i) {
-      const DD d = original.has_end ? DD::two_sum(original.end[i], -original.origin[i]) : DD(original.direction[i]);
-      dir[i] = DD(std::ldexp(d.hi, -exponent), std::ldexp(d.lo, -exponent));
-    }
-  }
-  bool is_point() const { return !(dir[0].hi != 0 || dir[1].hi != 0 || dir[2].hi != 0); }
-  // origin + s dir, to about eps^2 of the coordinates (a segment's far end is its own p1).
-  std::array<DD, 3> exact_at(Real s) const {
-    if (piece.has_end && s == piece.hi) return {DD(piece.end[0]), DD(piece.end[1]), DD(piece.end[2])};
-    return {DD(piece.origin[0]) + dir[0] * s, DD(piece.origin[1]) + dir[1] * s, DD(piece.origin[2]) + dir[2] * s};
-  }
-  // origin + s dir for a parameter held as a double-double (a quotient): rounding s first would
-  // move the point by eps |s dir| along the piece (1e-10 at 1e6), which a small distance to it
-  // turns into (eps |s dir|)^2 / 2d more.
-  std::array<DD, 3> exact_at(const DD& s) const {
-    return {DD(piece.origin[0]) + dir[0] * s, DD(piece.origin[1]) + dir[1] * s, DD(piece.origin[2]) + dir[2] * s};
-  }
-  // The same, rounded once.
-  Vec3<Real> at(Real s) const {
-    const std::array<DD, 3> x = exact_at(s);
-    return Vec3<Real>(x[0].value(), x[1].value(), x[2].value());
-  }
-};
-
-template <class Real> using ExactVec = std::array<DoubleDouble<Real>, 3>;
-
-template <class Real> ExactVec<Real> exact_offset(const Vec3<Real>& x, const Vec3<Real>& y) {
-  return {DoubleDouble<Real>::two_sum(x[0], -y[0]), DoubleDouble<Real>::two_sum(x[1], -y[1]),
-          DoubleDouble<Real>::two_sum(x[2], -y[2])};
-}
-template <class Real> DoubleDouble<Real> exact_dot(const ExactVec<Real>& x, const ExactVec<Real>& y) {
-  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-}
-template <class Real> ExactVec<Real> exact_cross(const ExactVec<Real>& x, const ExactVec<Real>& y) {
-  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-}
-template <class Real> Vec3<Real> rounded(const ExactVec<Real>& x) { return Vec3<Real>(x[0].value(), x[1].value(), x[2].value()); }
-template <class Real> Real rounded_norm(const ExactVec<Real>& x) { return rounded(x).norm(); }
-
-// The point x against a piece: the projection's parameter compared with the interval's ends in
-// double-double ((x - o).d against lo |d|^2: the sign of a small difference of large terms), the
-// distance as |(x - o) x d| / |d| (relative to itself, however far o lies along the piece), or
-// the end's exact offset.
-template <class Real> LinearPair<Real> point_to_exact_piece(const Vec3<Real>& x, const ExactPiece<Real>& b) {
-  using DD = DoubleDouble<Real>;
-  const Linear<Real>& l = b.piece;
-  LinearPair<Real> out;
-  out.point_a = x;
-  const ExactVec<Real> e = exact_offset(x, l.origin);
-  const auto at_end = [&](Real t, const Vec3<Real>& end) {
-    out.t = t;
-    out.point_b = end;
-    out.distance = rounded_norm(exact_offset(x, end));
-    return out;
-  };
-  if (b.is_point()) return at_end(clamp_to(Real(0), l.lo, l.hi), l.origin);
-  const DD along = exact_dot(e, b.dir), length2 = exact_dot(b.dir, b.dir);
-  if (std::isfinite(l.lo) && !((along - length2 * l.lo).hi > 0)) return at_end(l.lo, b.at(l.lo));
-  if (std::isfinite(l.hi) && !((along - length2 * l.hi).hi < 0)) return at_end(l.hi, b.at(l.hi));
-  const DD t = along / length2;
-  out.t = t.value();
-  out.point_b = rounded(b.exact_at(t));
-  out.distance = rounded_norm(exact_cross(e, b.dir)) / std::sqrt(length2.value());
-  return out;
-}
-
-// Two pieces (unit_scaled, as linear_pair_scaled takes them): the least of the interior
-// stationary point, when it lies in both intervals (decided in double-double), and the finite
-// ends against the other piece that `contenders` names (the others lost by more than their
-// rounding: each costs about 0.5 us here). `unique` is the caller's (the parallel test does not
-// cancel).
-template <class Real> LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b, unsigned contenders) {
-  using DD = DoubleDouble<Real>;
-  LinearPair<Real> best;
-  const auto take = [&](const LinearPair<Real>& c) {
-    if (c.distance < best.distance) best = c;
-  };
-  const auto swapped = [](LinearPair<Real> c) {
-    std::swap(c.s, c.t);
-    std::swap(c.point_a, c.point_b);
-    return c;
-  };
-  const Linear<Real>&la = a.piece, &lb = b.piece;
-  if (!a.is_point() && !b.is_point()) {
-    const ExactVec<Real> w = exact_offset(la.origin, lb.origin), n = exact_cross(a.dir, b.dir);
-    const DD n2 = exact_dot(n, n);
-    if (n2.hi > 0) {
-      // s = -((w x v).n) / |n|^2, t = -((w x u).n) / |n|^2 (the Binet-Cauchy forms above).
-      const DD s_num = -exact_dot(exact_cross(w, b.dir), n), t_num = -exact_dot(exact_cross(w, a.dir), n);
-      const auto inside = [&](const DD& num, const Linear<Real>& l) {
-        return !(std::isfinite(l.lo) && (num - n2 * l.lo).hi < 0) && !(std::isfinite(l.hi) && (num - n2 * l.hi).hi > 0);
-      };
-      if (inside(s_num, la) && inside(t_num, lb)) {
-        // The distance |W.n| / |n| from W, the offset between the pieces' points at s and t,
-        // not from w: n carries eps^2 / sin(angle) of itself (1e-16 for pieces 5e-17 rad
-        // apart), which |w| (3e10) would turn into 5e-6, and |W| (near the distance) does not.
-        // The point of b is the foot of a's point on b's line, not b's own stationary value: for
-        // pieces 5e-17 rad apart the two stationary values carry independent errors along the
-        // pieces (1e-6 at 3e10 from the origins), which would part the points by as much.
-        LinearPair<Real> c;
-        const DD s = s_num / n2;
-        const ExactVec<Real> pa = a.exact_at(s);
-        const ExactVec<Real> from_b{pa[0] - DD(lb.origin[0]), pa[1] - DD(lb.origin[1]), pa[2] - DD(lb.origin[2])};
-        DD t = exact_dot(from_b, b.dir) / exact_dot(b.dir, b.dir);
-        if (t.hi < lb.lo) t = DD(lb.lo);
-        if (t.hi > lb.hi) t = DD(lb.hi);
-        c.s = s.value();
-        c.t = t.value();
-        const ExactVec<Real> pb = b.exact_at(t);
-        const Vec3<Real> offset = rounded(ExactVec<Real>{pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]});
-        const Vec3<Real> normal = rounded(n);
-        c.point_a = rounded(pa);
-        c.point_b = rounded(pb);
-        c.distance = std::abs(offset.dot(normal)) / normal.norm();
-        take(c);
-      }
-    }
-  }
-  for (const ExactPiece<Real>* p : {&a, &b}) {
-    const ExactPiece<Real>& other = p == &a ? b : a;
-    for (const bool high : {false, true}) {
-      const Real end = high ? p->piece.hi : p->piece.lo;
-      const unsigned bit = p == &a ? (high ? kEndAHi : kEndALo) : (high ? kEndBHi : kEndBLo);
-      if (!(contenders & bit) || !std::isfinite(end)) continue;
-      LinearPair<Real> c = point_to_exact_piece(p->at(end), other);
-      c.s = end;
-      take(p == &a ? c : swapped(c));
-    }
-  }
-  if (!(best.distance < std::numeric_limits<Real>::infinity()) || (contenders & kAnyPoint)) {
-    // Two full lines without a crossing (parallel): any point of one.
-    LinearPair<Real> c = point_to_exact_piece(la.origin, b);
-    c.s = 0;
-    take(c);
-  }
-  return best;
-}
-
-}  // namespace detail
 
 template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
   int ea = 0, eb = 0;
