@@ -77,7 +77,11 @@ template <class Real> Real rounded_norm(const ExactVec<Real>& x) { return rounde
 // double-double ((x - o).d against lo |d|^2: the sign of a small difference of large terms), the
 // distance as |(x - o) x d| / |d| (relative to itself, however far o lies along the piece), or
 // the end's exact offset.
-template <class Real> LinearPair<Real> point_to_exact_piece(const Vec3<Real>& x, const ExactPiece<Real>& b) {
+template <class Real>
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, cold))  // rare: kept out of the plain path's code
+#endif
+LinearPair<Real> point_to_exact_piece(const Vec3<Real>& x, const ExactPiece<Real>& b) {
   using DD = DoubleDouble<Real>;
   const Linear<Real>& l = b.piece;
   LinearPair<Real> out;
@@ -105,7 +109,11 @@ template <class Real> LinearPair<Real> point_to_exact_piece(const Vec3<Real>& x,
 // ends against the other piece that `contenders` names (the others lost by more than their
 // rounding: each costs about 0.5 us here). `unique` is the caller's (the parallel test does not
 // cancel).
-template <class Real> LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b, unsigned contenders) {
+template <class Real>
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, cold))  // rare: kept out of the plain path's code
+#endif
+LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b, unsigned contenders) {
   using DD = DoubleDouble<Real>;
   LinearPair<Real> best;
   const auto take = [&](const LinearPair<Real>& c) {
