@@ -12,8 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -117,6 +120,56 @@ BoundingVolumeHierarchy<double> tree_of(Volumes volumes, int workers) {
   py::gil_scoped_release release;
   return BoundingVolumeHierarchy<double>(std::move(volumes), 4, workers);
 }
+
+// The culling of queries a against a set b: a's volumes, their spatial order and scale, and the
+// hierarchy over b's volumes. With workers to spare, a's side is made on a thread of its own
+// while b's tree is built on the workers, so that each side's steps that one thread takes (the
+// allocations, the tree's top, the order's last merge) run beside the other's work. Neither side
+// checks for Ctrl-C: milliseconds of work.
+struct Culling {
+  Volumes va;
+  std::vector<BroadIndex> order;
+  double scale_a = 0;
+  BoundingVolumeHierarchy<double> tree;
+
+  Culling(const Shape& a, const Shape& b, int workers) {
+    const auto volumes = [](const Shape& s, int threads) {
+      Volumes out(static_cast<size_t>(flat_size(s)));
+      run_in_chunks(flat_size(s), threads, [&](Index begin, Index end) { fill_volumes(s, begin, end, out.data()); },
+                    [](Index) { return false; });
+      return out;
+    };
+    const auto side_a = [&](int threads) {
+      va = volumes(a, threads);
+      order = spatial_order(va, threads);
+      scale_a = scale_of(va);
+    };
+    py::gil_scoped_release release;
+    std::thread thread;
+    std::exception_ptr failure;
+    if (workers > 1) {
+      try {
+        thread = std::thread([&] {
+          try {
+            side_a(1);
+          } catch (...) {
+            failure = std::current_exception();
+          }
+        });
+      } catch (const std::system_error&) {  // no thread to be had: one side after the other
+      }
+    }
+    if (!thread.joinable()) side_a(workers);
+    try {
+      tree = BoundingVolumeHierarchy<double>(volumes(b, workers), 4, workers);
+    } catch (...) {
+      if (thread.joinable()) thread.join();
+      throw;
+    }
+    if (thread.joinable()) thread.join();
+    if (failure) std::rethrow_exception(failure);
+  }
+};
 
 // progress= of the all-pairs queries: the work is several stages run one after the other (the
 // search for candidates over a's shapes, the candidates' exact distances, ...), each of which
@@ -372,22 +425,16 @@ template <class Real> bool at_most(Real distance, double d) {
 template <class Real>
 py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice& c) {
   const Shape& other = b ? *b : a;
-  const Volumes va = volumes_of({&a}, c.workers);
-  const StagedProgress progress(c.progress, 2, Index(va.size()));  // the search, the distances
+  const StagedProgress progress(c.progress, 2, flat_size(a));  // the search, the distances
   PairList candidates;
   if (b) {
-    const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({b}, c.workers), c.workers);
-    const double limit = cull_limit(d, std::max(tree.scale(), scale_of(va)),
-                                    relative_margin(c));
-    const std::vector<BroadIndex> order = [&] {
-    py::gil_scoped_release release;
-    return spatial_order(va, c.workers);
-  }();
-    candidates = chunked_pairs(Index(va.size()), c.workers, [&](Index begin, Index end, PairList& out) {
-      candidate_pairs(va, order, tree, limit, begin, end, out);
+    const Culling culling(a, *b, c.workers);
+    const double limit = cull_limit(d, std::max(culling.tree.scale(), culling.scale_a), relative_margin(c));
+    candidates = chunked_pairs(flat_size(a), c.workers, [&](Index begin, Index end, PairList& out) {
+      candidate_pairs(culling.va, culling.order, culling.tree, limit, begin, end, out);
     }, progress.stage(0));
   } else {
-    const BoundingVolumeHierarchy<double> tree = tree_of(va, c.workers);
+    const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({&a}, c.workers), c.workers);
     const double limit = cull_limit(d, tree.scale(), relative_margin(c));
     candidates = chunked_pairs(tree.size(), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(tree, limit, begin, end, out);
@@ -423,26 +470,24 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
     }, no_interrupt, slice);
   });
   stats().culled += std::uint64_t(std::max<Index>(
-      0, (b ? Index(va.size()) * flat_size(*b) : Index(va.size()) * (Index(va.size()) - 1) / 2) - Index(candidates.size())));
+      0, (b ? flat_size(a) * flat_size(*b) : flat_size(a) * (flat_size(a) - 1) / 2) - Index(candidates.size())));
   progress.finish();
   const Index m = Index(is.size());
   return py::make_tuple(to_array(is, {m}), to_array(js, {m}), to_array(distances, {m}));
 }
 
 template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index k, const Choice& c) {
-  const Volumes va = volumes_of({&a}, c.workers);
-  const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({&b}, c.workers), c.workers);
+  const Culling culling(a, b, c.workers);
+  const Volumes& va = culling.va;
+  const std::vector<BroadIndex>& order = culling.order;
+  const BoundingVolumeHierarchy<double>& tree = culling.tree;
   const Index n = Index(va.size()), nb = tree.size(), kk = std::min(k, nb);
-  const double scale = std::max(tree.scale(), scale_of(va));
+  const double scale = std::max(tree.scale(), culling.scale_a);
   const Evaluator<Real> evaluate{a, b, c};
   // Four stages: the first search and its distances, the second search and its distances.
   const StagedProgress progress(c.progress, 4, n);
   // 1. The kk shapes of smallest lower bound: their largest exact distance, tau, bounds the
   //    kk-th nearest distance from above.
-  const std::vector<BroadIndex> order = [&] {
-    py::gil_scoped_release release;
-    return spatial_order(va, c.workers);
-  }();
   const PairList first = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
     for (Index p = begin; p < end; ++p) {
       const Index i = order[size_t(p)];

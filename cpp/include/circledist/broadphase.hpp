@@ -33,6 +33,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <map>
@@ -245,16 +246,44 @@ template <class Real> class BoundingVolumeHierarchy {
       (volumes_[size_t(i)].bounded() ? index_ : unbounded).push_back(i);
     scale_ = scale_of(volumes_);
     bounded_ = BroadIndex(index_.size());
-    if (bounded_ > 0) {
-      nodes_.resize(size_t(node_count(bounded_)));
-      build(0, bounded_, 0, threads);
+    // The buffers the volumes are placed in below: with threads to spare, made on a thread of
+    // their own while the tree is built (a large set's first touch of megabytes is a thread's
+    // milliseconds of page faults).
+    std::vector<Volume<Real>> placed;
+    const auto make_buffers = [&] {
+      placed.resize(volumes_.size());
+      position_.resize(volumes_.size());
+    };
+    std::thread making;
+    std::exception_ptr failure;
+    if (threads > 1 && BroadIndex(volumes_.size()) >= kSliceSmallest) {
+      try {
+        making = std::thread([&] {
+          try {
+            make_buffers();
+          } catch (...) {
+            failure = std::current_exception();
+          }
+        });
+      } catch (const std::system_error&) {  // no thread to be had: made after the tree
+      }
     }
+    if (bounded_ > 0) {
+      try {
+        nodes_.resize(size_t(node_count(bounded_)));
+        build(0, bounded_, 0, threads);
+      } catch (...) {
+        if (making.joinable()) making.join();
+        throw;
+      }
+    }
+    if (making.joinable()) making.join();
+    else make_buffers();
+    if (failure) std::rethrow_exception(failure);
     // The volumes in the leaves' order, then the unbounded ones: a leaf's shapes lie side by side
     // in memory (queries read them in runs, not scattered over the whole set). Each position is
     // written once, so slices of them are placed side by side.
     index_.insert(index_.end(), unbounded.begin(), unbounded.end());
-    position_.resize(index_.size());
-    std::vector<Volume<Real>> placed(volumes_.size());
     detail::run_in_slices(BroadIndex(index_.size()), threads, kSliceSmallest, [&](BroadIndex begin, BroadIndex end) {
       for (BroadIndex k = begin; k < end; ++k) {
         placed[size_t(k)] = volumes_[size_t(index_[size_t(k)])];
