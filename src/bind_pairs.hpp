@@ -12,8 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -118,6 +121,56 @@ BoundingVolumeHierarchy<double> tree_of(Volumes volumes, int workers) {
   return BoundingVolumeHierarchy<double>(std::move(volumes), 4, workers);
 }
 
+// The culling of queries a against a set b: a's volumes, their spatial order and scale, and the
+// hierarchy over b's volumes. With workers to spare, a's side is made on a thread of its own
+// while b's tree is built on the workers, so that each side's steps that one thread takes (the
+// allocations, the tree's top, the order's last merge) run beside the other's work. Neither side
+// checks for Ctrl-C: milliseconds of work.
+struct Culling {
+  Volumes va;
+  std::vector<BroadIndex> order;
+  double scale_a = 0;
+  BoundingVolumeHierarchy<double> tree;
+
+  Culling(const Shape& a, const Shape& b, int workers) {
+    const auto volumes = [](const Shape& s, int threads) {
+      Volumes out(static_cast<size_t>(flat_size(s)));
+      run_in_chunks(flat_size(s), threads, [&](Index begin, Index end) { fill_volumes(s, begin, end, out.data()); },
+                    [](Index) { return false; });
+      return out;
+    };
+    const auto side_a = [&](int threads) {
+      va = volumes(a, threads);
+      order = spatial_order(va, threads);
+      scale_a = scale_of(va);
+    };
+    py::gil_scoped_release release;
+    std::thread thread;
+    std::exception_ptr failure;
+    if (workers > 1) {
+      try {
+        thread = std::thread([&] {
+          try {
+            side_a(1);
+          } catch (...) {
+            failure = std::current_exception();
+          }
+        });
+      } catch (const std::system_error&) {  // no thread to be had: one side after the other
+      }
+    }
+    if (!thread.joinable()) side_a(workers);
+    try {
+      tree = BoundingVolumeHierarchy<double>(volumes(b, workers), 4, workers);
+    } catch (...) {
+      if (thread.joinable()) thread.join();
+      throw;
+    }
+    if (thread.joinable()) thread.join();
+    if (failure) std::rethrow_exception(failure);
+  }
+};
+
 // progress= of the all-pairs queries: the work is several stages run one after the other (the
 // search for candidates over a's shapes, the candidates' exact distances, ...), each of which
 // reports (done, total) of its own through run_released. The caller sees one count: `stages`
@@ -167,23 +220,35 @@ struct StagedProgress {
 
 // Candidate pairs (i, j), i in [0, n), found by find(begin, end, out) over chunks of [0, n) (the
 // positions of a spatial order of the queries) on `workers` threads, then sorted by (i, j): the
-// same list for every worker count.
+// same list for every worker count. find's positions [begin, end) must name queries no other
+// chunk names (a permutation's positions do), so that each query's pairs come from one chunk:
+// each chunk then counts its queries' pairs and moves them to their place alone, and no thread
+// joins the parts by itself.
 template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find, py::handle progress = py::none()) {
   const Index chunk = chunk_size(n, workers);
   std::vector<PairList> parts(static_cast<size_t>((n + chunk - 1) / chunk));
-  run_released(n, workers, [&](Index begin, Index end) { find(begin, end, parts[size_t(begin / chunk)]); }, progress, chunk);
-  PairList out;
-  size_t total = 0;
-  for (const PairList& p : parts) total += p.size();
-  out.reserve(total);
-  for (PairList& p : parts) {
-    out.insert(out.end(), p.begin(), p.end());
-    PairList().swap(p);
-  }
-  {
-    py::gil_scoped_release release;
-    sort_pairs(out, n);
-  }
+  std::vector<size_t> start(size_t(n) + 1, 0);  // start[i + 1]: query i's pairs, then where they end
+  run_released(n, workers, [&](Index begin, Index end) {
+    PairList& part = parts[size_t(begin / chunk)];
+    find(begin, end, part);
+    for (const auto& p : part) ++start[size_t(p.first) + 1];
+  }, progress, chunk);
+  py::gil_scoped_release release;
+  for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  PairList out(start.back());
+  std::vector<size_t> at(start.begin(), start.end() - 1);
+  const auto no_interrupt = [](Index) { return false; };  // milliseconds of copying and sorting
+  run_in_chunks(Index(parts.size()), workers, [&](Index first, Index last) {
+    for (Index k = first; k < last; ++k) {
+      for (const auto& p : parts[size_t(k)]) out[at[size_t(p.first)]++] = p;
+      PairList().swap(parts[size_t(k)]);
+    }
+  }, no_interrupt, 1);
+  run_in_chunks(n, workers, [&](Index first, Index last) {
+    for (Index i = first; i < last; ++i)
+      if (start[size_t(i) + 1] - start[size_t(i)] > 1)
+        std::sort(out.begin() + std::ptrdiff_t(start[size_t(i)]), out.begin() + std::ptrdiff_t(start[size_t(i) + 1]));
+  }, no_interrupt);
   return out;
 }
 
@@ -268,17 +333,22 @@ template <class Real> struct Evaluator {
   FieldElements ea{a}, eb{b};
   static constexpr Index kBlock = Index(1) << 20;
 
-  // Calls take(k, distance) for every pair k of the list, in order; reports to `progress`'s
-  // stage `stage`.
-  template <class Take> void run(const PairList& pairs, const StagedProgress& progress, int stage, Take&& take) const {
+  // Calls block(start, count, distances) for the pairs [start, start + count) of the list, block
+  // after block, distances[k] that of pair start + k; reports to `progress`'s stage `stage`.
+  template <class Block> void run_blocks(const PairList& pairs, const StagedProgress& progress, int stage, Block&& block) const {
     std::vector<Index> rows_a, rows_b;
     for (Index start = 0; start < Index(pairs.size()); start += kBlock) {
       const Index count = std::min<Index>(kBlock, Index(pairs.size()) - start);
       rows_a.resize(size_t(count));
       rows_b.resize(size_t(count));
-      for (Index k = 0; k < count; ++k) {
-        rows_a[size_t(k)] = pairs[size_t(start + k)].first;
-        rows_b[size_t(k)] = pairs[size_t(start + k)].second;
+      {
+        py::gil_scoped_release release;
+        run_in_chunks(count, choice.workers, [&](Index first, Index last) {
+          for (Index k = first; k < last; ++k) {
+            rows_a[size_t(k)] = pairs[size_t(start + k)].first;
+            rows_b[size_t(k)] = pairs[size_t(start + k)].second;
+          }
+        }, [](Index) { return false; });  // a copy: over in a millisecond
       }
       const Shape ga = gather(a, ea, rows_a.data(), count, choice.workers);
       const Shape gb = gather(b, eb, rows_b.data(), count, choice.workers);
@@ -287,9 +357,15 @@ template <class Real> struct Evaluator {
           py::module_::import("numpy").attr("asarray")(shapes_distance(ga, gb, choice, progress.part(stage, start, count, Index(pairs.size())))).attr("reshape")(-1),
           py::make_tuple(count));
       const auto values = py::array_t<Real, py::array::c_style | py::array::forcecast>::ensure(answer);
-      const Real* d = values.data();
-      for (Index k = 0; k < count; ++k) take(start + k, d[k]);
+      block(start, count, values.data());
     }
+  }
+
+  // Calls take(k, distance) for every pair k of the list, in order.
+  template <class Take> void run(const PairList& pairs, const StagedProgress& progress, int stage, Take&& take) const {
+    run_blocks(pairs, progress, stage, [&](Index start, Index count, const Real* d) {
+      for (Index k = 0; k < count; ++k) take(start + k, d[k]);
+    });
   }
 };
 
@@ -349,22 +425,16 @@ template <class Real> bool at_most(Real distance, double d) {
 template <class Real>
 py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice& c) {
   const Shape& other = b ? *b : a;
-  const Volumes va = volumes_of({&a}, c.workers);
-  const StagedProgress progress(c.progress, 2, Index(va.size()));  // the search, the distances
+  const StagedProgress progress(c.progress, 2, flat_size(a));  // the search, the distances
   PairList candidates;
   if (b) {
-    const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({b}, c.workers), c.workers);
-    const double limit = cull_limit(d, std::max(tree.scale(), scale_of(va)),
-                                    relative_margin(c));
-    const std::vector<BroadIndex> order = [&] {
-    py::gil_scoped_release release;
-    return spatial_order(va);
-  }();
-    candidates = chunked_pairs(Index(va.size()), c.workers, [&](Index begin, Index end, PairList& out) {
-      candidate_pairs(va, order, tree, limit, begin, end, out);
+    const Culling culling(a, *b, c.workers);
+    const double limit = cull_limit(d, std::max(culling.tree.scale(), culling.scale_a), relative_margin(c));
+    candidates = chunked_pairs(flat_size(a), c.workers, [&](Index begin, Index end, PairList& out) {
+      candidate_pairs(culling.va, culling.order, culling.tree, limit, begin, end, out);
     }, progress.stage(0));
   } else {
-    const BoundingVolumeHierarchy<double> tree = tree_of(va, c.workers);
+    const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({&a}, c.workers), c.workers);
     const double limit = cull_limit(d, tree.scale(), relative_margin(c));
     candidates = chunked_pairs(tree.size(), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(tree, limit, begin, end, out);
@@ -372,33 +442,52 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
   }
   std::vector<Index> is, js;
   std::vector<Real> distances;
-  Evaluator<Real>{a, other, c}.run(candidates, progress, 1, [&](Index k, Real distance) {
-    if (!at_most(distance, d)) return;
-    is.push_back(candidates[size_t(k)].first);
-    js.push_back(candidates[size_t(k)].second);
-    distances.push_back(distance);
+  Evaluator<Real>{a, other, c}.run_blocks(candidates, progress, 1, [&](Index start, Index count, const Real* dist) {
+    // The block's pairs within d, appended in order: each slice of the block counts its own, then
+    // writes them at the offset the slices before it leave.
+    const Index slice = 16384;
+    std::vector<Index> kept(size_t((count + slice - 1) / slice) + 1, 0);
+    const auto no_interrupt = [](Index) { return false; };  // a pass over the block: milliseconds
+    py::gil_scoped_release release;
+    run_in_chunks(count, c.workers, [&](Index first, Index last) {
+      Index within = 0;
+      for (Index k = first; k < last; ++k) within += at_most(dist[k], d);
+      kept[size_t(first / slice) + 1] = within;
+    }, no_interrupt, slice);
+    for (size_t s = 1; s < kept.size(); ++s) kept[s] += kept[s - 1];
+    const size_t base = is.size();
+    is.resize(base + size_t(kept.back()));
+    js.resize(is.size());
+    distances.resize(is.size());
+    run_in_chunks(count, c.workers, [&](Index first, Index last) {
+      size_t at = base + size_t(kept[size_t(first / slice)]);
+      for (Index k = first; k < last; ++k) {
+        if (!at_most(dist[k], d)) continue;
+        is[at] = candidates[size_t(start + k)].first;
+        js[at] = candidates[size_t(start + k)].second;
+        distances[at++] = dist[k];
+      }
+    }, no_interrupt, slice);
   });
   stats().culled += std::uint64_t(std::max<Index>(
-      0, (b ? Index(va.size()) * flat_size(*b) : Index(va.size()) * (Index(va.size()) - 1) / 2) - Index(candidates.size())));
+      0, (b ? flat_size(a) * flat_size(*b) : flat_size(a) * (flat_size(a) - 1) / 2) - Index(candidates.size())));
   progress.finish();
   const Index m = Index(is.size());
   return py::make_tuple(to_array(is, {m}), to_array(js, {m}), to_array(distances, {m}));
 }
 
 template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index k, const Choice& c) {
-  const Volumes va = volumes_of({&a}, c.workers);
-  const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({&b}, c.workers), c.workers);
+  const Culling culling(a, b, c.workers);
+  const Volumes& va = culling.va;
+  const std::vector<BroadIndex>& order = culling.order;
+  const BoundingVolumeHierarchy<double>& tree = culling.tree;
   const Index n = Index(va.size()), nb = tree.size(), kk = std::min(k, nb);
-  const double scale = std::max(tree.scale(), scale_of(va));
+  const double scale = std::max(tree.scale(), culling.scale_a);
   const Evaluator<Real> evaluate{a, b, c};
   // Four stages: the first search and its distances, the second search and its distances.
   const StagedProgress progress(c.progress, 4, n);
   // 1. The kk shapes of smallest lower bound: their largest exact distance, tau, bounds the
   //    kk-th nearest distance from above.
-  const std::vector<BroadIndex> order = [&] {
-    py::gil_scoped_release release;
-    return spatial_order(va);
-  }();
   const PairList first = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
     for (Index p = begin; p < end; ++p) {
       const Index i = order[size_t(p)];

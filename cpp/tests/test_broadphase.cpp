@@ -257,6 +257,16 @@ int main() {
     const std::vector<Volume<double>> v = volumes_of(random_set(30000, 40.0, 3, 6));  // bounded: all in the tree
     const BoundingVolumeHierarchy<double> one(v, 4, 1), four(v, 4, 4), three(v, 8, 3);
     CHECK(one.order() == four.order());
+    // The same volumes at the same positions (placed by slices on several threads).
+    bool same_volumes = true;
+    for (BroadIndex i = 0; i < one.size(); ++i) {
+      const Volume<double>&x = one.volume(i), &y = four.volume(i);
+      same_volumes = same_volumes && x.lo == y.lo && x.hi == y.hi && x.center == y.center && x.radius == y.radius;
+    }
+    CHECK(same_volumes);
+    // The spatial order, keyed and sorted on several threads, is the one thread's.
+    const std::vector<BroadIndex> order = spatial_order(v);
+    for (const int threads : {2, 3, 4, 7}) CHECK(spatial_order(v, threads) == order);
     const double limit = cull_limit(0.3, one.scale());
     const Pairs expected = candidate_pairs(one, limit);
     CHECK(candidate_pairs(four, limit) == expected);

@@ -29,9 +29,11 @@
 #include "bounds.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <map>
@@ -70,6 +72,60 @@ template <class Real> struct Volume {
 };
 
 namespace detail {
+
+// Runs work(begin, end) over up to `threads` contiguous slices of [0, size), side by side, the
+// caller's thread taking the last; a slice is at least `smallest` long (a thread costs tens of
+// microseconds). Where no thread can be had, the caller runs the slices left. `work` must not
+// throw: it runs on threads that have no one to pass an exception to.
+template <class Work> void run_in_slices(std::ptrdiff_t size, int threads, std::ptrdiff_t smallest, Work&& work) {
+  const std::ptrdiff_t slices = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, size / std::max<std::ptrdiff_t>(smallest, 1)));
+  const auto bound = [&](std::ptrdiff_t s) { return size * s / slices; };
+  std::vector<std::thread> pool;
+  std::ptrdiff_t s = 0;
+  for (; s + 1 < slices; ++s) {
+    try {
+      pool.emplace_back([&work, begin = bound(s), end = bound(s + 1)] { work(begin, end); });
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
+  for (; s < slices; ++s) work(bound(s), bound(s + 1));
+  for (std::thread& t : pool) t.join();
+}
+
+// Sorts v on up to `threads` threads: slices sorted side by side, then merged pairwise, the pairs
+// of a round side by side. For elements no two of which compare equal (a total order, as pairs
+// with distinct indices are), the result is std::sort's whatever the thread count.
+template <class T> void sort_in_slices(std::vector<T>& v, int threads, std::ptrdiff_t smallest) {
+  const std::ptrdiff_t size = std::ptrdiff_t(v.size());
+  const std::ptrdiff_t slices = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, size / std::max<std::ptrdiff_t>(smallest, 1)));
+  if (slices == 1) {
+    std::sort(v.begin(), v.end());
+    return;
+  }
+  std::vector<std::ptrdiff_t> bounds;
+  for (std::ptrdiff_t s = 0; s <= slices; ++s) bounds.push_back(size * s / slices);
+  run_in_slices(slices, int(slices), 1, [&](std::ptrdiff_t first, std::ptrdiff_t last) {
+    for (std::ptrdiff_t s = first; s < last; ++s) std::sort(v.begin() + bounds[size_t(s)], v.begin() + bounds[size_t(s + 1)]);
+  });
+  std::vector<T> other(v.size());
+  while (bounds.size() > 2) {
+    // Runs 2r and 2r + 1 merge into run r of the next round; an odd last run is copied over.
+    const std::ptrdiff_t runs = std::ptrdiff_t(bounds.size()) - 1, merges = (runs + 1) / 2;
+    run_in_slices(merges, threads, 1, [&](std::ptrdiff_t first, std::ptrdiff_t last) {
+      for (std::ptrdiff_t r = first; r < last; ++r) {
+        const std::ptrdiff_t a = bounds[size_t(2 * r)], b = bounds[size_t(std::min(2 * r + 1, runs))],
+                             c = bounds[size_t(std::min(2 * r + 2, runs))];
+        std::merge(v.begin() + a, v.begin() + b, v.begin() + b, v.begin() + c, other.begin() + a);
+      }
+    });
+    std::vector<std::ptrdiff_t> next;
+    for (std::ptrdiff_t r = 0; r < runs; r += 2) next.push_back(bounds[size_t(r)]);
+    next.push_back(size);
+    bounds.swap(next);
+    v.swap(other);
+  }
+}
 
 template <class Real> bool finite_box(const Vec3<Real>& lo, const Vec3<Real>& hi) {
   return lo.allFinite() && hi.allFinite();
@@ -183,24 +239,57 @@ template <class Real> class BoundingVolumeHierarchy {
   // subtrees side by side (the tree is the same for any count).
   explicit BoundingVolumeHierarchy(std::vector<Volume<Real>> volumes, int leaf_size = 4, int threads = 1)
       : volumes_(std::move(volumes)), leaf_size_(std::max(1, leaf_size)) {
+    threads = std::max(1, threads);
     std::vector<BroadIndex> unbounded;
+    index_.reserve(volumes_.size());
     for (BroadIndex i = 0; i < BroadIndex(volumes_.size()); ++i)
       (volumes_[size_t(i)].bounded() ? index_ : unbounded).push_back(i);
     scale_ = scale_of(volumes_);
     bounded_ = BroadIndex(index_.size());
+    // The buffers the volumes are placed in below: with threads to spare, made on a thread of
+    // their own while the tree is built (a large set's first touch of megabytes is a thread's
+    // milliseconds of page faults).
+    std::vector<Volume<Real>> placed;
+    const auto make_buffers = [&] {
+      placed.resize(volumes_.size());
+      position_.resize(volumes_.size());
+    };
+    std::thread making;
+    std::exception_ptr failure;
+    if (threads > 1 && BroadIndex(volumes_.size()) >= kSliceSmallest) {
+      try {
+        making = std::thread([&] {
+          try {
+            make_buffers();
+          } catch (...) {
+            failure = std::current_exception();
+          }
+        });
+      } catch (const std::system_error&) {  // no thread to be had: made after the tree
+      }
+    }
     if (bounded_ > 0) {
-      nodes_.resize(size_t(node_count(bounded_)));
-      build(0, bounded_, 0, std::max(1, threads));
+      try {
+        nodes_.resize(size_t(node_count(bounded_)));
+        build(0, bounded_, 0, threads);
+      } catch (...) {
+        if (making.joinable()) making.join();
+        throw;
+      }
     }
+    if (making.joinable()) making.join();
+    else make_buffers();
+    if (failure) std::rethrow_exception(failure);
     // The volumes in the leaves' order, then the unbounded ones: a leaf's shapes lie side by side
-    // in memory (queries read them in runs, not scattered over the whole set).
+    // in memory (queries read them in runs, not scattered over the whole set). Each position is
+    // written once, so slices of them are placed side by side.
     index_.insert(index_.end(), unbounded.begin(), unbounded.end());
-    position_.resize(index_.size());
-    std::vector<Volume<Real>> placed(volumes_.size());
-    for (size_t k = 0; k < index_.size(); ++k) {
-      placed[k] = volumes_[size_t(index_[k])];
-      position_[size_t(index_[k])] = BroadIndex(k);
-    }
+    detail::run_in_slices(BroadIndex(index_.size()), threads, kSliceSmallest, [&](BroadIndex begin, BroadIndex end) {
+      for (BroadIndex k = begin; k < end; ++k) {
+        placed[size_t(k)] = volumes_[size_t(index_[size_t(k)])];
+        position_[size_t(index_[size_t(k)])] = k;
+      }
+    });
     volumes_ = std::move(placed);
   }
 
@@ -301,6 +390,9 @@ template <class Real> class BoundingVolumeHierarchy {
   BroadIndex bounded_ = 0;             // positions [0, bounded_) are in the tree
   std::vector<Node> nodes_;           // depth first: a node's left child follows it
   int leaf_size_ = 4;
+  // The fewest shapes worth a thread of their own in a loop over them (a thread costs tens of
+  // microseconds, a shape a few nanoseconds).
+  static constexpr BroadIndex kSliceSmallest = 8192;
   Real scale_ = 0;
 
   // A lower bound on the distance from q to the shapes under a node, from the node's box and
@@ -344,29 +436,68 @@ template <class Real> class BoundingVolumeHierarchy {
     return count;
   }
 
-  // Builds the subtree of the shapes at positions [first, last) into nodes_[at, ...).
-  void build(BroadIndex first, BroadIndex last, BroadIndex at, int threads) {
-    Vec3<Real> lo = Vec3<Real>::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
-    Vec3<Real> clo = lo, chi = hi;  // the box of the balls' centers: where to split
+  // The box of the boxes (lo, hi) and the box of the balls' centers (clo, chi: where to split) of
+  // the shapes at positions [first, last).
+  struct Extent {
+    Vec3<Real> lo = Vec3<Real>::Constant(std::numeric_limits<Real>::infinity()), hi = -lo, clo = lo, chi = hi;
+    void add(const Extent& e) {
+      lo = lo.cwiseMin(e.lo), hi = hi.cwiseMax(e.hi), clo = clo.cwiseMin(e.clo), chi = chi.cwiseMax(e.chi);
+    }
+  };
+  Extent extent(BroadIndex first, BroadIndex last) const {
+    Extent e;
     for (BroadIndex k = first; k < last; ++k) {
       const Volume<Real>& v = volumes_[size_t(index_[size_t(k)])];
-      lo = lo.cwiseMin(v.lo);
-      hi = hi.cwiseMax(v.hi);
-      clo = clo.cwiseMin(v.center);
-      chi = chi.cwiseMax(v.center);
+      e.lo = e.lo.cwiseMin(v.lo);
+      e.hi = e.hi.cwiseMax(v.hi);
+      e.clo = e.clo.cwiseMin(v.center);
+      e.chi = e.chi.cwiseMax(v.center);
     }
-    // The ball: around the box's center, out to the farthest ball under the node, rounded up a
-    // few ulps so that the rounding of the radius does not make the node's bound exceed a shape's.
-    const Vec3<Real> center = (lo + hi) / 2;
+    return e;
+  }
+  // How far the balls of the shapes at positions [first, last) reach from `center`.
+  Real reach(BroadIndex first, BroadIndex last, const Vec3<Real>& center) const {
     Real radius = 0;
     for (BroadIndex k = first; k < last; ++k) {
       const Volume<Real>& v = volumes_[size_t(index_[size_t(k)])];
       radius = std::max(radius, (v.center - center).norm() + v.radius);
     }
+    return radius;
+  }
+
+  // Builds the subtree of the shapes at positions [first, last) into nodes_[at, ...).
+  void build(BroadIndex first, BroadIndex last, BroadIndex at, int threads) {
+    Extent e;
+    Real radius = 0;
+    // The ball: around the box's center, out to the farthest ball under the node, rounded up a
+    // few ulps (below) so that the rounding of the radius does not make the node's bound exceed a
+    // shape's.
+    Vec3<Real> center;
+    if (threads > 1 && last - first >= 2 * kSliceSmallest) {
+      // The top of the tree, with threads to spare: minima and maxima are the same numbers in any
+      // grouping, so slices of the shapes are taken side by side.
+      const int slices = int(std::min<BroadIndex>(threads, (last - first) / kSliceSmallest));
+      const auto bound = [&](BroadIndex s) { return first + (last - first) * s / slices; };
+      std::vector<Extent> parts(static_cast<size_t>(slices));
+      detail::run_in_slices(slices, slices, 1, [&](BroadIndex s0, BroadIndex s1) {
+        for (BroadIndex s = s0; s < s1; ++s) parts[size_t(s)] = extent(bound(s), bound(s + 1));
+      });
+      for (const Extent& part : parts) e.add(part);
+      center = (e.lo + e.hi) / 2;
+      std::vector<Real> radii(static_cast<size_t>(slices));
+      detail::run_in_slices(slices, slices, 1, [&](BroadIndex s0, BroadIndex s1) {
+        for (BroadIndex s = s0; s < s1; ++s) radii[size_t(s)] = reach(bound(s), bound(s + 1), center);
+      });
+      radius = *std::max_element(radii.begin(), radii.end());
+    } else {
+      e = extent(first, last);
+      center = (e.lo + e.hi) / 2;
+      radius = reach(first, last, center);
+    }
     radius *= 1 + 8 * std::numeric_limits<Real>::epsilon();
     Node& node = nodes_[size_t(at)];
-    node.lo = lo;
-    node.hi = hi;
+    node.lo = e.lo;
+    node.hi = e.hi;
     node.center = center;
     node.radius = radius;
     if (last - first <= leaf_size_) {
@@ -375,7 +506,7 @@ template <class Real> class BoundingVolumeHierarchy {
       return;
     }
     int axis;
-    (chi - clo).maxCoeff(&axis);
+    (e.chi - e.clo).maxCoeff(&axis);
     const BroadIndex middle = first + (last - first) / 2;
     // Ties broken by index: the tree (and every traversal) is the same on every platform.
     std::nth_element(index_.begin() + first, index_.begin() + middle, index_.begin() + last,
@@ -408,7 +539,9 @@ using BroadPairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
 // The order of a Z-order (Morton) curve through the volumes' centers, the unbounded ones last:
 // queries asked in this order visit the tree's nodes while they are still in cache (twice as fast
 // as random order on 10^5 shapes).
-template <class Real> std::vector<BroadIndex> spatial_order(const std::vector<Volume<Real>>& volumes) {
+// `threads`: how many threads compute the keys and sort them (the order is the same for any
+// count: no two keys are equal, each carries its index).
+template <class Real> std::vector<BroadIndex> spatial_order(const std::vector<Volume<Real>>& volumes, int threads = 1) {
   Vec3<Real> lo = Vec3<Real>::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
   for (const Volume<Real>& v : volumes)
     if (v.bounded()) lo = lo.cwiseMin(v.center), hi = hi.cwiseMax(v.center);
@@ -422,21 +555,28 @@ template <class Real> std::vector<BroadIndex> spatial_order(const std::vector<Vo
     x = (x | x << 2) & 0x1249249249249249ull;
     return x;
   };
+  constexpr BroadIndex smallest = 8192;  // keys worth a thread of their own
+  const BroadIndex n = BroadIndex(volumes.size());
   std::vector<std::pair<std::uint64_t, BroadIndex>> keys(volumes.size());
-  for (size_t i = 0; i < volumes.size(); ++i) {
-    std::uint64_t key = ~std::uint64_t(0);  // unbounded: last
-    if (volumes[i].bounded()) {
-      key = 0;
-      for (int a = 0; a < 3; ++a) {
-        const Real t = std::min(std::max((volumes[i].center[a] - lo[a]) / span[a], Real(0)), Real(1));
-        key |= spread(std::uint64_t(t * Real(0x1fffff))) << a;
+  detail::run_in_slices(n, threads, smallest, [&](BroadIndex begin, BroadIndex end) {
+    for (BroadIndex i = begin; i < end; ++i) {
+      const Volume<Real>& v = volumes[size_t(i)];
+      std::uint64_t key = ~std::uint64_t(0);  // unbounded: last
+      if (v.bounded()) {
+        key = 0;
+        for (int a = 0; a < 3; ++a) {
+          const Real t = std::min(std::max((v.center[a] - lo[a]) / span[a], Real(0)), Real(1));
+          key |= spread(std::uint64_t(t * Real(0x1fffff))) << a;
+        }
       }
+      keys[size_t(i)] = {key, i};
     }
-    keys[i] = {key, BroadIndex(i)};
-  }
-  std::sort(keys.begin(), keys.end());
+  });
+  detail::sort_in_slices(keys, threads, smallest);
   std::vector<BroadIndex> out(volumes.size());
-  for (size_t i = 0; i < keys.size(); ++i) out[i] = keys[i].second;
+  detail::run_in_slices(n, threads, smallest, [&](BroadIndex begin, BroadIndex end) {
+    for (BroadIndex i = begin; i < end; ++i) out[size_t(i)] = keys[size_t(i)].second;
+  });
   return out;
 }
 
