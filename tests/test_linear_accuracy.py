@@ -13,6 +13,8 @@ within the inputs' rounding to the floor. Families: random pieces; nearly parall
 cross or pass at a tiny distance (angles 1e-2 .. 1e-12, where the plain cross product of the
 directions cancels); scenes 1e6 .. 1e12 from the world's origin; origins and segment ends 1e6 ..
 1e12 along the pieces from where they pass (crossing, or parallel within 1e-8 .. 1e-16 rad);
+lines and rays 1e-9 .. 1e-13 rad apart whose origins lie near each other and far from where they
+pass;
 zero-length segments; points on the pieces.
 """
 
@@ -87,6 +89,16 @@ def cases():
                     else:  # a ray's origin behind y; a line's on either side
                         pieces.append((y - (1.0 if kind == "ray" else sign) * far * d, d))
                 out.append((f"far origin {far:g} angle {angle:g}", ka, pieces[0], kb, pieces[1]))
+        if "segment" not in (ka, kb) and "point" not in (ka, kb):
+            for angle in (1e-9, 1e-13):  # nearly parallel, passing 1e-9 apart 1/angle from both origins
+                u = rng.normal(size=3)
+                v = rotate(u, np.cross(u, rng.normal(size=3)), angle)
+                pa = rng.normal(size=3)
+                normal = np.cross(u, v)
+                normal /= np.linalg.norm(normal)
+                across = np.cross(normal, u)  # in the pieces' plane: the lines meet 1e-3 / angle away
+                pb = pa + 1e-3 * across / np.linalg.norm(across) + 1e-9 * normal
+                out.append((f"far meeting angle {angle:g}", ka, (pa, u), kb, (pb, v)))
         if "segment" in (ka, kb):  # a zero-length segment
             p = rng.normal(size=3)
             a = (p, p.copy()) if ka == "segment" else (rng.normal(size=3), rng.normal(size=3))

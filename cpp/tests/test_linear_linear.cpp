@@ -92,9 +92,25 @@ void far_origin_cases() {
   CHECK_NEAR(distance(segment_b, ray_a), 65 * h2, 1e-12 * 65 * h2);
 }
 
+// Found by review: lines one ulp of direction apart, passing 9e-10 apart where the stationary
+// point lies 1.8e16 from both origins (the exact pass must not take the offset between the far
+// points there), and a full line against a degenerate one (a zero direction) given second.
+void review_cases() {
+  const Line3<double> a{V(0, 0, 0), V(1, 0.5, 0.25)}, b{V(0, 1e-9, 1), V(1, 0.5, 0.25 + std::ldexp(1.0, -54))};
+  // Reference: |w.n| / |n| in exact arithmetic, n = (2^-55, -2^-54, 0) exactly, w = (0, 1e-9, 1).
+  const double truth = 8.9442719099991593e-10;  // mpmath, 50 digits
+  CHECK_NEAR(distance(a, b), truth, 1e-12 * truth);
+  CHECK_NEAR(distance(b, a), truth, 1e-12 * truth);
+  CHECK_NEAR(closest_points(a, b).distance, truth, 1e-12 * truth);
+  const Line3<double> far_line{V(-1e10, 0, 0), V(1, 0, 0)}, degenerate{V(5, 3e-9, 0), V(0, 0, 0)};
+  CHECK_NEAR(distance(far_line, degenerate), 3e-9, 1e-12 * 3e-9);
+  CHECK_NEAR(distance(degenerate, far_line), 3e-9, 1e-12 * 3e-9);
+}
+
 }  // namespace
 
 int main() {
+  review_cases();
   linear_cases();
   far_origin_cases();
   return check::finish("test_linear_linear");

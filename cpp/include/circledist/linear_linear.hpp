@@ -81,7 +81,7 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
   LinearPair<Real> best;
   // Each candidate's value and the size of the offsets it was computed from (1-norms: an upper
   // bound, no square root), whose rounding it carries: w's, s u's, t v's and their sum's, each
-  // within eps / 2 of its own size per component, about eps of the size in all (for the interior
+  // within eps / 2 of its own size per component, at most about 4 eps of the size in all (for the interior
   // point's |w.n| / |n|, w's and the cross product's, about 2 eps of |w|; its points' as well).
   // Only the largest size is kept: the rare pairs it marks evaluate their candidates again (kept
   // in an array, the candidates cost 12 ns more on every pair).
@@ -152,9 +152,12 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
   const Real interior_distance = best.distance, interior_size = best_size;  // inf, 0: none
   for_each_end(consider);
   const bool any_point = !(best.distance < std::numeric_limits<Real>::infinity());
-  const Real any_s = clamp_to(Real(0), a.lo, a.hi);
-  // Two full lines, parallel (or a degenerate direction): any s gives the distance.
-  if (any_point) consider(any_s, t_for(any_s), detail::kAnyPoint);
+  // Two full lines, parallel: any s gives the distance; a full line and a degenerate one (a zero
+  // direction): that one's point, and its projection on the other.
+  const Real any_t = clamp_to(Real(0), b.lo, b.hi);
+  const Real any_s = b_point ? s_for(any_t) : clamp_to(Real(0), a.lo, a.hi);
+  const Real any_t_for_s = b_point ? any_t : t_for(any_s);
+  if (any_point) consider(any_s, any_t_for_s, detail::kAnyPoint);
   if (!a_point && !b_point && !(cross2 > parallel)) {
     // Parallel: the overlap of b's projection onto a's parameter with a's interval.
     const Real t0 = std::isfinite(b.lo) ? b.lo : -std::numeric_limits<Real>::infinity();
@@ -168,8 +171,9 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
   }
   // Any candidate that may be the least (within four times its rounding of the best) and whose
   // rounding may exceed 1024 eps of the best (sizes above 256 times the distance) asks for the
-  // exact evaluation of all that may be the least: the answer is then good to about 2e-13 of
-  // itself in double (1e-16 in long double), as the bars ask. (Segments with normally
+  // exact evaluation of all that may be the least: a plain answer is then good to about 2e-13
+  // of itself in double (1e-16 in long double), as the bars ask, and an exact one to about
+  // eps^2 times the offsets (detail/exact_linear.hpp). (Segments with normally
   // distributed ends take the exact pass about once in 120 pairs, at about 2.5 us.)
   exact = 0;
   if (largest_size <= 256 * best.distance) return best;
@@ -188,7 +192,7 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
     judge(dist, size, candidate);
   };
   for_each_end(judge_end);
-  if (any_point) judge_end(any_s, t_for(any_s), detail::kAnyPoint);
+  if (any_point) judge_end(any_s, any_t_for_s, detail::kAnyPoint);
   // (the interior point has no bit: a nonzero mark asks for the exact pass even when it alone
   // contends)
   exact = cancels ? (contenders | 32u) : 0u;
@@ -247,11 +251,10 @@ template <class Real, class Piece> struct PointLinearQuery {
   }
 
   // The answer as a LinearPair (t, the distance, the closest point of the piece): the projection
-  // in plain arithmetic, or, where the offsets' rounding (about eps of their size, as in
-  // linear_pair_scaled) may exceed 256 eps of the distance (an origin or segment end far from p,
-  // or p on the piece), from the exact inputs
-  // (detail::point_to_exact_piece).
-  // (distance() leaves the closest point out.)
+  // in plain arithmetic, or, where the offsets' rounding (at most about 4 eps of their size, as in
+  // linear_pair_scaled) may exceed 1024 eps of the distance (an origin or segment end far from p,
+  // or p on the piece), from the exact inputs (detail::point_to_exact_piece). distance() leaves
+  // the closest point out.
   template <bool WithPoint> static LinearPair<Real> solve(const Vec3<Real>& p, const Piece& piece) {
     Linear<Real> scaled;
     int exponent = 0;

@@ -4,7 +4,7 @@
 // the pieces of a Bezier curve 1e5 times larger than the round it passes, cut from control
 // points 1e5 radii away (precise_bezier.hpp), a line's origin far from a round's center
 // (linear.hpp, ExactDifference), and the distance between lines, rays and segments whose defining
-// points lie far from where they pass each other (linear_linear.hpp, exact_pair).
+// points lie far from where they pass each other (exact_linear.hpp, exact_pair).
 #pragma once
 
 #include <cmath>

@@ -21,8 +21,9 @@ namespace detail {
 // origin or a segment's ends lie far (1e10) from where the pieces pass each other, that is far
 // more than a small distance between them (a point 6e-9 from a segment whose ends are 1e11 and
 // 1e8 away came out 1.7e-5). The pieces themselves are exact (their defining points and
-// directions are the inputs), so the answer is not ill-posed: here every candidate is evaluated
-// from exact differences of the inputs in double-double, which holds the offsets' cancellation.
+// directions are the inputs), so the answer is not ill-posed: here the candidates that may be the
+// least are evaluated from exact differences of the inputs in double-double. What is left is
+// about eps^2 times the offsets (absolute: 1e-21 for an origin 1e11 away), not eps times them.
 
 // The candidates of linear_pair_scaled (linear_linear.hpp), as bits of `contenders`.
 enum LinearCandidate : unsigned { kEndALo = 1, kEndAHi = 2, kEndBLo = 4, kEndBHi = 8, kAnyPoint = 16 };
@@ -40,6 +41,7 @@ template <class Real> struct ExactPiece {
     }
   }
   bool is_point() const { return !(dir[0].hi != 0 || dir[1].hi != 0 || dir[2].hi != 0); }
+  Real dir_size() const { return std::abs(dir[0].hi) + std::abs(dir[1].hi) + std::abs(dir[2].hi); }
   // origin + s dir, to about eps^2 of the coordinates (a segment's far end is its own p1).
   std::array<DD, 3> exact_at(Real s) const {
     if (piece.has_end && s == piece.hi) return {DD(piece.end[0]), DD(piece.end[1]), DD(piece.end[2])};
@@ -75,7 +77,7 @@ template <class Real> Real rounded_norm(const ExactVec<Real>& x) { return rounde
 
 // The point x against a piece: the projection's parameter compared with the interval's ends in
 // double-double ((x - o).d against lo |d|^2: the sign of a small difference of large terms), the
-// distance as |(x - o) x d| / |d| (relative to itself, however far o lies along the piece), or
+// distance as |(x - o) x d| / |d| (to about eps^2 of |x - o|, however far o lies along the piece), or
 // the end's exact offset.
 template <class Real>
 #if defined(__GNUC__) || defined(__clang__)
@@ -135,9 +137,12 @@ LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b
         return !(std::isfinite(l.lo) && (num - n2 * l.lo).hi < 0) && !(std::isfinite(l.hi) && (num - n2 * l.hi).hi > 0);
       };
       if (inside(s_num, la) && inside(t_num, lb)) {
-        // The distance |W.n| / |n| from W, the offset between the pieces' points at s and t,
-        // not from w: n carries eps^2 / sin(angle) of itself (1e-16 for pieces 5e-17 rad
-        // apart), which |w| (3e10) would turn into 5e-6, and |W| (near the distance) does not.
+        // The distance |X.n| / |n| from the nearer of two offsets between points of the lines:
+        // n carries about eps^2 |u| |v| per component (eps^2 / sin(angle) of itself, 1e-16 for
+        // pieces 5e-17 rad apart), which an offset X turns into |X| times that. w, between the
+        // origins, is exact; W, between the pieces' points at s and t, is small (near the
+        // distance) but carries eps^2 of their coordinates: where the stationary point lies far
+        // from both origins (lines 1e-16 rad apart passing 1e-9 apart, s = 1e16), w answers.
         // The point of b is the foot of a's point on b's line, not b's own stationary value: for
         // pieces 5e-17 rad apart the two stationary values carry independent errors along the
         // pieces (1e-6 at 3e10 from the origins), which would part the points by as much.
@@ -151,11 +156,13 @@ LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b
         c.s = s.value();
         c.t = t.value();
         const ExactVec<Real> pb = b.exact_at(t);
-        const Vec3<Real> offset = rounded(ExactVec<Real>{pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]});
-        const Vec3<Real> normal = rounded(n);
+        const ExactVec<Real> near{pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]};
+        const Real n_error = rounded(n).norm() > 0 ? a.dir_size() * b.dir_size() / rounded(n).norm() : Real(0);
+        const Real w_error = rounded(w).cwiseAbs().sum() * n_error;
+        const Real near_error = rounded(near).cwiseAbs().sum() * n_error + rounded(pa).cwiseAbs().sum() + rounded(pb).cwiseAbs().sum();
         c.point_a = rounded(pa);
         c.point_b = rounded(pb);
-        c.distance = std::abs(offset.dot(normal)) / normal.norm();
+        c.distance = std::abs(exact_dot(near_error < w_error ? near : w, n).value()) / std::sqrt(n2.value());
         take(c);
       }
     }
@@ -172,10 +179,17 @@ LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b
     }
   }
   if (!(best.distance < std::numeric_limits<Real>::infinity()) || (contenders & kAnyPoint)) {
-    // Two full lines without a crossing (parallel): any point of one.
-    LinearPair<Real> c = point_to_exact_piece(la.origin, b);
-    c.s = 0;
-    take(c);
+    // Two full lines without a crossing (parallel): any point of one; a full line and a
+    // degenerate one (a zero direction): that one's point.
+    if (b.is_point()) {
+      LinearPair<Real> c = point_to_exact_piece(lb.origin, a);
+      c.s = clamp_to(Real(0), lb.lo, lb.hi);
+      take(swapped(c));
+    } else {
+      LinearPair<Real> c = point_to_exact_piece(la.origin, b);
+      c.s = clamp_to(Real(0), la.lo, la.hi);
+      take(c);
+    }
   }
   return best;
 }
