@@ -67,10 +67,10 @@ template <class Real> Vec3<Real> accurate_cross(const Vec3<Real>& x, const Vec3<
 template <class Real> struct ExactDifference {
   Vec3<Real> hi, lo;
   ExactDifference(const Vec3<Real>& x, const Vec3<Real>& y) {
+    const detail::DoubleDouble3<Real> d = detail::exact_difference<Real>(x, y);
     for (int i = 0; i < 3; ++i) {
-      const detail::DoubleDouble<Real> d = detail::DoubleDouble<Real>::two_sum(x[i], -y[i]);
-      hi[i] = d.hi;
-      lo[i] = d.lo;
+      hi[i] = d[i].hi;
+      lo[i] = d[i].lo;
     }
   }
 };

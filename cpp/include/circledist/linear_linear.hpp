@@ -44,11 +44,9 @@ template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& e
   return out;
 }
 
-
 // `exact` is set to the candidates that may be the least (within their rounding of the best) when
 // the rounding of the pieces' offsets may exceed about 1e3 eps of the answer; else 0.
 template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact);
-
 
 template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
   int ea = 0, eb = 0;
@@ -170,20 +168,20 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
     if (hi > lo && (hi - lo) * std::sqrt(aa) > distinct_points_tolerance(scale)) best.unique = false;
   }
   // Any candidate that may be the least (within four times its rounding of the best) and whose
-  // rounding may exceed 1024 eps of the best (sizes above 256 times the distance) asks for the
-  // exact evaluation of all that may be the least: a plain answer is then good to about 2e-13
-  // of itself in double (1e-16 in long double), as the bars ask, and an exact one to about
-  // eps^2 times the offsets (detail/exact_linear.hpp). (Segments with normally
-  // distributed ends take the exact pass about once in 120 pairs, at about 2.5 us.)
+  // rounding may exceed 1024 eps of the best (sizes above detail::kExactPassRatio, 256, times
+  // the distance) asks for the exact evaluation of all that may be the least: a plain answer is
+  // then good to about 2e-13 of itself in double (1e-16 in long double), as the bars ask, and an
+  // exact one to about eps^2 times the offsets (detail/exact_linear.hpp). (Segments with
+  // normally distributed ends take the exact pass about once in 120 pairs, at about 2.5 us.)
   exact = 0;
-  if (largest_size <= 256 * best.distance) return best;
+  if (largest_size <= detail::kExactPassRatio * best.distance) return best;
   constexpr Real rounding = 16 * std::numeric_limits<Real>::epsilon();
   unsigned contenders = 0;
   bool cancels = false;
   const auto judge = [&](Real dist, Real size, unsigned candidate) {
     if (!(dist - rounding * size <= best.distance + rounding * best_size)) return;
     contenders |= candidate;
-    if (!(size <= 256 * best.distance)) cancels = true;
+    if (!(size <= detail::kExactPassRatio * best.distance)) cancels = true;
   };
   judge(interior_distance, interior_size, 0u);
   const auto judge_end = [&](Real s, Real t, unsigned candidate) {
@@ -193,9 +191,7 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
   };
   for_each_end(judge_end);
   if (any_point) judge_end(any_s, any_t_for_s, detail::kAnyPoint);
-  // (the interior point has no bit: a nonzero mark asks for the exact pass even when it alone
-  // contends)
-  exact = cancels ? (contenders | 32u) : 0u;
+  exact = cancels ? (contenders | detail::kExactPass) : 0u;
   return best;
 }
 
@@ -264,7 +260,7 @@ template <class Real, class Piece> struct PointLinearQuery {
     out.t = parameter(offset, l, scaled, exponent);
     out.distance = separation(p, offset, scaled, out.t).norm();
     const Real size = offset.cwiseAbs().sum() + std::abs(out.t) * scaled.direction.cwiseAbs().sum();
-    if (!(size <= 256 * out.distance)) {
+    if (!(size <= detail::kExactPassRatio * out.distance)) {
       const LinearPair<Real> exact = detail::point_to_exact_piece(p, detail::ExactPiece<Real>(scaled, l, exponent));
       if (std::isfinite(exact.distance) && exact.point_b.allFinite()) {
         out = exact;

@@ -7,6 +7,9 @@
 // points lie far from where they pass each other (exact_linear.hpp, exact_pair).
 #pragma once
 
+#include "../primitives.hpp"
+
+#include <array>
 #include <cmath>
 
 namespace circledist::detail {
@@ -61,5 +64,28 @@ template <class Real> struct DoubleDouble {
     return fast_two_sum(p.hi, p.lo);
   }
 };
+
+// A 3-vector of double-doubles, and the operations every user of one needs (the exact offsets of
+// exact_linear.hpp, the local control points of precise_bezier.hpp, linear.hpp's ExactDifference).
+template <class Real> using DoubleDouble3 = std::array<DoubleDouble<Real>, 3>;
+
+// x - y exactly, per component (TwoSum): for any type with x[i] and y[i] (Eigen's vectors too).
+template <class Real, class X, class Y> DoubleDouble3<Real> exact_difference(const X& x, const Y& y) {
+  return {DoubleDouble<Real>::two_sum(x[0], -y[0]), DoubleDouble<Real>::two_sum(x[1], -y[1]),
+          DoubleDouble<Real>::two_sum(x[2], -y[2])};
+}
+template <class Real> DoubleDouble<Real> dot(const DoubleDouble3<Real>& x, const DoubleDouble3<Real>& y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+template <class Real> DoubleDouble3<Real> cross(const DoubleDouble3<Real>& x, const DoubleDouble3<Real>& y) {
+  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+}
+template <class Real> DoubleDouble3<Real> operator-(const DoubleDouble3<Real>& x, const DoubleDouble3<Real>& y) {
+  return {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+}
+// Each component rounded once to Real.
+template <class Real> Vec3<Real> rounded(const DoubleDouble3<Real>& x) {
+  return Vec3<Real>(x[0].value(), x[1].value(), x[2].value());
+}
 
 }  // namespace circledist::detail

@@ -25,8 +25,15 @@ namespace detail {
 // least are evaluated from exact differences of the inputs in double-double. What is left is
 // about eps^2 times the offsets (absolute: 1e-21 for an origin 1e11 away), not eps times them.
 
-// The candidates of linear_pair_scaled (linear_linear.hpp), as bits of `contenders`.
-enum LinearCandidate : unsigned { kEndALo = 1, kEndAHi = 2, kEndBLo = 4, kEndBHi = 8, kAnyPoint = 16 };
+// The candidates of linear_pair_scaled (linear_linear.hpp), as bits of `contenders`; the interior
+// point has none (exact_pair always weighs it), and kExactPass marks a request for the pass even
+// where the interior point alone contends.
+enum LinearCandidate : unsigned { kEndALo = 1, kEndAHi = 2, kEndBLo = 4, kEndBHi = 8, kAnyPoint = 16, kExactPass = 32 };
+
+// Past this ratio of a candidate's offsets (their 1-norms) to the distance, the closed forms'
+// rounding (about 4 eps of the offsets) may exceed 1024 eps of the distance, and the candidates
+// that may be the least are evaluated by this pass.
+constexpr int kExactPassRatio = 256;
 
 // A piece with its direction held exactly: a segment's p1 - p0 (rounded in Linear::direction)
 // as a double-double, scaled by the same power of two as the piece (unit_scaled).
@@ -42,38 +49,17 @@ template <class Real> struct ExactPiece {
   }
   bool is_point() const { return !(dir[0].hi != 0 || dir[1].hi != 0 || dir[2].hi != 0); }
   Real dir_size() const { return std::abs(dir[0].hi) + std::abs(dir[1].hi) + std::abs(dir[2].hi); }
-  // origin + s dir, to about eps^2 of the coordinates (a segment's far end is its own p1).
-  std::array<DD, 3> exact_at(Real s) const {
-    if (piece.has_end && s == piece.hi) return {DD(piece.end[0]), DD(piece.end[1]), DD(piece.end[2])};
+  // origin + s dir, to about eps^2 of the coordinates, for a parameter held as a double-double
+  // (a quotient): rounding s first would move the point by eps |s dir| along the piece (1e-10 at
+  // 1e6), which a small distance to it turns into (eps |s dir|)^2 / 2d more.
+  DoubleDouble3<Real> exact_at(const DD& s) const {
     return {DD(piece.origin[0]) + dir[0] * s, DD(piece.origin[1]) + dir[1] * s, DD(piece.origin[2]) + dir[2] * s};
   }
-  // origin + s dir for a parameter held as a double-double (a quotient): rounding s first would
-  // move the point by eps |s dir| along the piece (1e-10 at 1e6), which a small distance to it
-  // turns into (eps |s dir|)^2 / 2d more.
-  std::array<DD, 3> exact_at(const DD& s) const {
-    return {DD(piece.origin[0]) + dir[0] * s, DD(piece.origin[1]) + dir[1] * s, DD(piece.origin[2]) + dir[2] * s};
-  }
-  // The same, rounded once.
-  Vec3<Real> at(Real s) const {
-    const std::array<DD, 3> x = exact_at(s);
-    return Vec3<Real>(x[0].value(), x[1].value(), x[2].value());
-  }
+  // The point at a parameter of Real, rounded once (a segment's far end is its own p1).
+  Vec3<Real> at(Real s) const { return piece.has_end && s == piece.hi ? piece.end : rounded(exact_at(DD(s))); }
 };
 
-template <class Real> using ExactVec = std::array<DoubleDouble<Real>, 3>;
-
-template <class Real> ExactVec<Real> exact_offset(const Vec3<Real>& x, const Vec3<Real>& y) {
-  return {DoubleDouble<Real>::two_sum(x[0], -y[0]), DoubleDouble<Real>::two_sum(x[1], -y[1]),
-          DoubleDouble<Real>::two_sum(x[2], -y[2])};
-}
-template <class Real> DoubleDouble<Real> exact_dot(const ExactVec<Real>& x, const ExactVec<Real>& y) {
-  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-}
-template <class Real> ExactVec<Real> exact_cross(const ExactVec<Real>& x, const ExactVec<Real>& y) {
-  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-}
-template <class Real> Vec3<Real> rounded(const ExactVec<Real>& x) { return Vec3<Real>(x[0].value(), x[1].value(), x[2].value()); }
-template <class Real> Real rounded_norm(const ExactVec<Real>& x) { return rounded(x).norm(); }
+template <class Real> Real rounded_norm(const DoubleDouble3<Real>& x) { return rounded(x).norm(); }
 
 // The point x against a piece: the projection's parameter compared with the interval's ends in
 // double-double ((x - o).d against lo |d|^2: the sign of a small difference of large terms), the
@@ -88,21 +74,21 @@ LinearPair<Real> point_to_exact_piece(const Vec3<Real>& x, const ExactPiece<Real
   const Linear<Real>& l = b.piece;
   LinearPair<Real> out;
   out.point_a = x;
-  const ExactVec<Real> e = exact_offset(x, l.origin);
+  const DoubleDouble3<Real> e = exact_difference<Real>(x, l.origin);
   const auto at_end = [&](Real t, const Vec3<Real>& end) {
     out.t = t;
     out.point_b = end;
-    out.distance = rounded_norm(exact_offset(x, end));
+    out.distance = rounded_norm(exact_difference<Real>(x, end));
     return out;
   };
   if (b.is_point()) return at_end(clamp_to(Real(0), l.lo, l.hi), l.origin);
-  const DD along = exact_dot(e, b.dir), length2 = exact_dot(b.dir, b.dir);
+  const DD along = dot(e, b.dir), length2 = dot(b.dir, b.dir);
   if (std::isfinite(l.lo) && !((along - length2 * l.lo).hi > 0)) return at_end(l.lo, b.at(l.lo));
   if (std::isfinite(l.hi) && !((along - length2 * l.hi).hi < 0)) return at_end(l.hi, b.at(l.hi));
   const DD t = along / length2;
   out.t = t.value();
   out.point_b = rounded(b.exact_at(t));
-  out.distance = rounded_norm(exact_cross(e, b.dir)) / std::sqrt(length2.value());
+  out.distance = rounded_norm(cross(e, b.dir)) / std::sqrt(length2.value());
   return out;
 }
 
@@ -128,11 +114,11 @@ LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b
   };
   const Linear<Real>&la = a.piece, &lb = b.piece;
   if (!a.is_point() && !b.is_point()) {
-    const ExactVec<Real> w = exact_offset(la.origin, lb.origin), n = exact_cross(a.dir, b.dir);
-    const DD n2 = exact_dot(n, n);
+    const DoubleDouble3<Real> w = exact_difference<Real>(la.origin, lb.origin), n = cross(a.dir, b.dir);
+    const DD n2 = dot(n, n);
     if (n2.hi > 0) {
       // s = -((w x v).n) / |n|^2, t = -((w x u).n) / |n|^2 (the Binet-Cauchy forms above).
-      const DD s_num = -exact_dot(exact_cross(w, b.dir), n), t_num = -exact_dot(exact_cross(w, a.dir), n);
+      const DD s_num = -dot(cross(w, b.dir), n), t_num = -dot(cross(w, a.dir), n);
       const auto inside = [&](const DD& num, const Linear<Real>& l) {
         return !(std::isfinite(l.lo) && (num - n2 * l.lo).hi < 0) && !(std::isfinite(l.hi) && (num - n2 * l.hi).hi > 0);
       };
@@ -148,21 +134,22 @@ LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b
         // pieces (1e-6 at 3e10 from the origins), which would part the points by as much.
         LinearPair<Real> c;
         const DD s = s_num / n2;
-        const ExactVec<Real> pa = a.exact_at(s);
-        const ExactVec<Real> from_b{pa[0] - DD(lb.origin[0]), pa[1] - DD(lb.origin[1]), pa[2] - DD(lb.origin[2])};
-        DD t = exact_dot(from_b, b.dir) / exact_dot(b.dir, b.dir);
+        const DoubleDouble3<Real> pa = a.exact_at(s);
+        const DoubleDouble3<Real> origin_b{DD(lb.origin[0]), DD(lb.origin[1]), DD(lb.origin[2])};
+        DD t = dot(pa - origin_b, b.dir) / dot(b.dir, b.dir);
         if (t.hi < lb.lo) t = DD(lb.lo);
         if (t.hi > lb.hi) t = DD(lb.hi);
         c.s = s.value();
         c.t = t.value();
-        const ExactVec<Real> pb = b.exact_at(t);
-        const ExactVec<Real> near{pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]};
-        const Real n_error = rounded(n).norm() > 0 ? a.dir_size() * b.dir_size() / rounded(n).norm() : Real(0);
+        const DoubleDouble3<Real> pb = b.exact_at(t);
+        const DoubleDouble3<Real> near = pa - pb;
+        const Real n_norm = rounded(n).norm();
+        const Real n_error = n_norm > 0 ? a.dir_size() * b.dir_size() / n_norm : Real(0);
         const Real w_error = rounded(w).cwiseAbs().sum() * n_error;
         const Real near_error = rounded(near).cwiseAbs().sum() * n_error + rounded(pa).cwiseAbs().sum() + rounded(pb).cwiseAbs().sum();
         c.point_a = rounded(pa);
         c.point_b = rounded(pb);
-        c.distance = std::abs(exact_dot(near_error < w_error ? near : w, n).value()) / std::sqrt(n2.value());
+        c.distance = std::abs(dot(near_error < w_error ? near : w, n).value()) / std::sqrt(n2.value());
         take(c);
       }
     }

@@ -21,7 +21,7 @@ namespace circledist {
 // points, and the polynomials built from them, are as accurate as a small curve's.
 template <class Real> struct PreciseBezier {
   using DD = detail::DoubleDouble<Real>;
-  using Point = std::array<DD, 3>;
+  using Point = detail::DoubleDouble3<Real>;
   int n = 0;
   std::array<Point, kMaxBezierDegree + 1> q{};
 
@@ -30,8 +30,7 @@ template <class Real> struct PreciseBezier {
     const Frame<Real>& f = round.frame;
     const Vec3<Real>* axes[3] = {&f.u, &f.v, &f.n};
     for (int i = 0; i <= n; ++i) {
-      Point offset;  // P_i - center, exactly
-      for (int j = 0; j < 3; ++j) offset[j] = DD::two_sum(b.control(j, i), -round.center[j]);
+      const Point offset = detail::exact_difference<Real>(b.control.col(i), round.center);  // P_i - center
       for (int k = 0; k < 3; ++k) {
         DD sum;
         Real small = 0;  // the rotation of the difference's low parts: plain arithmetic suffices
@@ -66,12 +65,12 @@ template <class Real> struct PreciseBezier {
     for (int k = n; k > 0; --k) {
       for (int i = 0; i < k; ++i) p[i] = lerp(p[i], p[i + 1], t);
     }
-    return rounded(p[0]);
+    return detail::rounded(p[0]);
   }
 
   std::array<Vec3<Real>, kMaxBezierDegree + 1> rounded() const {
     std::array<Vec3<Real>, kMaxBezierDegree + 1> out{};
-    for (int i = 0; i <= n; ++i) out[i] = rounded(q[i]);
+    for (int i = 0; i <= n; ++i) out[i] = detail::rounded(q[i]);
     return out;
   }
 
@@ -81,7 +80,6 @@ template <class Real> struct PreciseBezier {
     for (int j = 0; j < 3; ++j) out[j] = a[j] + (b[j] - a[j]) * t;
     return out;
   }
-  static Vec3<Real> rounded(const Point& p) { return Vec3<Real>(p[0].value(), p[1].value(), p[2].value()); }
 };
 
 // Where the best minimum of a curve solved in pieces lies: its piece and the piece's parameter,
