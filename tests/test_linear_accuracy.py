@@ -157,3 +157,49 @@ def test_linear_pairs_against_the_reference(case):
             slack = bar + 4 * np.finfo(float).eps * max(np.abs(pa).max(), np.abs(pb).max())
             assert on_a <= slack and on_b <= slack, f"{name}: points off their pieces by {on_a:.3g}, {on_b:.3g}"
             assert abs(float(np.linalg.norm(np.subtract(pa, pb))) - truth) <= slack
+
+
+def near_largest_cases():
+    """Exact binary configurations near the largest doubles (review finding: a point 1 from a ray
+    whose origin lies 1.5e308 away answered 0; the plain offset's rounding squared past the largest
+    double, and the scene scaled down put the distance among the subnormals)."""
+    out = []
+    for x in (1e306, 1.5e308, 1.7e308):
+        p = np.array([x, 0.0, 1.0])
+        for kind, b in (("ray", ([0.0, 0, 0], [1.9, 0, 0])), ("line", ([0.0, 0, 0], [1.9, 0, 0])),
+                        ("segment", ([0.0, 0, 0], [1.79e308, 0, 0])), ("segment", ([-x, 0, 0], [x, 0, 0]))):
+            out.append((f"point {x:g} from {kind}", "point", (p, p), kind, tuple(np.asarray(v) for v in b)))
+            if kind != "segment" or b[0][0] == 0:  # (the line first: the reference's search runs along it)
+                out.append((f"a line across a {kind} at {x:g}", "line", (p, np.array([0.0, 1.0, 0.0])), kind,
+                            tuple(np.asarray(v) for v in b)))
+    d, m = np.array([3.0, 4.0, 12.0]), np.array([4.0, -3.0, 0.0])  # d.m = 0
+    for k in (1018, 1020):
+        far = np.ldexp(1.0, k)
+        for e in (-30, 0):
+            p = np.ldexp(1.0, e) * m  # 5 h from the line through 0 along d
+            for kind, b in (("line", (-far * d, d)), ("ray", (-far * d, d)), ("segment", (-far * d, far / 2 * d)),
+                            ("segment", (-far * d, 0.25 * d))):
+                out.append((f"point 2^{e} off a {kind} from 2^{k}", "point", (p, p), kind, b))
+    return out
+
+
+NEAR_LARGEST = near_largest_cases()
+
+
+@pytest.mark.parametrize("case", NEAR_LARGEST, ids=[f"{c[1]}-{c[3]}-{i}" for i, c in enumerate(NEAR_LARGEST)])
+def test_near_the_largest_doubles_held_to_the_distance(case):
+    """These configurations are exact in binary, so the answer is held to 1e-12 of itself (the
+    floor of the general bar, 1e-24 of the query's size, would allow anything here). The reference
+    runs at 800 digits: the offsets cancel over more than 300 orders of magnitude; its search runs
+    over A's parameter, whose minimum lies near A's origin here."""
+    name, ka, a, kb, b = case
+    with mp.workdps(800):
+        truth = float(reference(piece(ka, *a), piece(kb, *b)))
+    A, B = make(ka, *a), make(kb, *b)
+    for first, second in ((A, B), (B, A)):
+        for solver in ("bracketing", "companion"):
+            d = float(cd.distance(first, second, solver=solver))
+            assert abs(d - truth) <= 1e-12 * truth, f"{name}: distance {d!r}, truth {truth!r}"
+            assert float(cd.closest_points(first, second, solver=solver).distance) == d
+        d = float(cd.distance(first, second, precision="longdouble"))
+        assert abs(d - truth) <= 1e-15 * truth, f"{name}: long double {d!r}, truth {truth!r}"

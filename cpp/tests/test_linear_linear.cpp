@@ -60,6 +60,47 @@ void linear_cases() {
 // Origins and segment ends 2^36 directions away from where the pieces pass, in configurations
 // built exactly in binary (integer directions, power-of-two offsets), so the distances are known
 // in closed form: the offsets between the origins round by eps |w| ~ 1e-4 in plain arithmetic.
+// Scenes near the largest doubles, in exact binary configurations (review finding): a point 1
+// from a ray along the x axis, 1.5e308 from its origin, answered 0. The plain offset's rounding
+// (eps times an origin 1e306 away) squared past the largest double, and the scene scaled down
+// by the front end put the distance among the subnormals, whose square is 0.
+void near_largest_cases() {
+  for (const double x : {1e300, 1e306, 1e307, 1.5e308, 1.7e308}) {
+    const V p(x, 0, 1), o(0, 0, 0), along(1.9, 0, 0);
+    const Line3<double> line{o, along}, across{p, V(0, 1, 0)};
+    const Ray3<double> ray{o, along};
+    const Segment3<double> to_max{o, V(1.79e308, 0, 0)}, both_sides{V(-x, 0, 0), V(x, 0, 0)};
+    CHECK_NEAR(distance(p, ray), 1.0, 1e-12);
+    CHECK_NEAR(closest_points(p, ray).distance, 1.0, 1e-12);
+    CHECK_NEAR(distance(ray, p), 1.0, 1e-12);
+    CHECK_NEAR(distance(p, line), 1.0, 1e-12);
+    CHECK_NEAR(distance(p, to_max), 1.0, 1e-12);
+    CHECK_NEAR(closest_points(p, to_max).distance, 1.0, 1e-12);
+    CHECK_NEAR(distance(p, both_sides), 1.0, 1e-12);
+    CHECK_NEAR(distance(line, across), 1.0, 1e-12);
+    CHECK_NEAR(distance(ray, across), 1.0, 1e-12);
+    CHECK_NEAR(distance(to_max, across), 1.0, 1e-12);
+  }
+  // Origins 2^1016 .. 2^1020 along d = (3, 4, 12) from a point h m off the line through 0.
+  const V d(3, 4, 12), m(4, -3, 0);  // d.m = 0, |m| = 5
+  for (const int k : {1016, 1018, 1019, 1020}) {
+    const double far = std::ldexp(1.0, k);
+    for (const int e : {-30, 0, 30}) {
+      const double h = std::ldexp(1.0, e), gap = 5 * h;
+      const V p = h * m;
+      const Line3<double> line{-far * d, d};
+      const Ray3<double> ray{-far * d, d};
+      const Segment3<double> both_far{-far * d, (far / 2) * d}, one_far{-far * d, 0.25 * d};
+      CHECK_NEAR(distance(p, line), gap, 1e-12 * gap);
+      CHECK_NEAR(distance(p, ray), gap, 1e-12 * gap);
+      CHECK_NEAR(closest_points(p, ray).distance, gap, 1e-12 * gap);
+      CHECK_NEAR(distance(p, both_far), gap, 1e-12 * gap);
+      CHECK_NEAR(distance(p, one_far), gap, 1e-12 * gap);
+      CHECK_NEAR(distance(both_far, Segment3<double>{p, p + m}), gap, 1e-12 * gap);
+    }
+  }
+}
+
 void far_origin_cases() {
   const double far = std::ldexp(1.0, 36), h = std::ldexp(1.0, -30);
   const V d(3, 4, 12), m(4, -3, 0);  // d.m = 0, |m| = 5
@@ -113,5 +154,6 @@ int main() {
   review_cases();
   linear_cases();
   far_origin_cases();
+  near_largest_cases();
   return check::finish("test_linear_linear");
 }

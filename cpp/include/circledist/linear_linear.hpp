@@ -260,7 +260,9 @@ template <class Real, class Piece> struct PointLinearQuery {
     out.t = parameter(offset, l, scaled, exponent);
     out.distance = separation(p, offset, scaled, out.t).norm();
     const Real size = offset.cwiseAbs().sum() + std::abs(out.t) * scaled.direction.cwiseAbs().sum();
-    if (!(size <= detail::kExactPassRatio * out.distance)) {
+    // (an infinite distance too: the plain offset's rounding, eps times an origin 1e306 away,
+    // squares past the largest double, where the exact offsets do not)
+    if (!(size <= detail::kExactPassRatio * out.distance) || !(out.distance < std::numeric_limits<Real>::infinity())) {
       const LinearPair<Real> exact = detail::point_to_exact_piece(p, detail::ExactPiece<Real>(scaled, l, exponent));
       if (std::isfinite(exact.distance) && exact.point_b.allFinite()) {
         out = exact;

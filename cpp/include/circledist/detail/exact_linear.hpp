@@ -59,7 +59,10 @@ template <class Real> struct ExactPiece {
   Vec3<Real> at(Real s) const { return piece.has_end && s == piece.hi ? piece.end : rounded(exact_at(DD(s))); }
 };
 
-template <class Real> Real rounded_norm(const DoubleDouble3<Real>& x) { return rounded(x).norm(); }
+// The length of a rounded offset, without squares that underflow or overflow: in a scene the
+// front end scaled down from near the largest doubles (a point 1 from a ray whose origin lies
+// 1.5e308 away), the offset between the pieces is subnormal (1e-308), and its square would be 0.
+template <class Real> Real rounded_norm(const DoubleDouble3<Real>& x) { return rounded(x).stableNorm(); }
 
 // The point x against a piece: the projection's parameter compared with the interval's ends in
 // double-double ((x - o).d against lo |d|^2: the sign of a small difference of large terms), the
