@@ -611,3 +611,23 @@ def test_bezier_far_control_against_linear(name, solver):
                     cd.closest_points(x, y, solver=solver, precision=precision).distance):
             p, q = np.longdouble(got).as_integer_ratio()
             assert abs(R.mpf(p) / q - ref.distance) <= bar, (got, ref)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("x", [1e307, 9e307, 1.5e308, 1.79e308])
+def test_segment_ends_at_the_top_of_the_double_range(x, solver):
+    """A segment from -x to x (or x / 2) at height 0.5 crosses the axis of a unit circle and disk
+    centered at 0: the distance is 0.5 exactly (to the rim points (+-1, 0, 0), to the disk's point
+    below), a configuration exact in binary. p1 - p0 overflows from 9e307; the scene scaled down
+    to [1, 2) took the circle into the subnormals and answered 0 (found by a probe of scenes near
+    the largest doubles)."""
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    disk = cd.Disk([0, 0, 0], [0, 0, 1], 1.0)
+    for far_end in (x, x / 2):
+        s = cd.Segment([-x, 0, 0.5], [far_end, 0, 0.5])
+        for round_shape in (ring, disk):
+            for first, second in ((s, round_shape), (round_shape, s)):
+                assert abs(cd.distance(first, second, solver=solver) - 0.5) <= 1e-12
+                assert abs(cd.closest_points(first, second, solver=solver).distance - 0.5) <= 1e-12
+            assert abs(float(cd.distance(s, round_shape, precision="longdouble", solver=solver)) - 0.5) <= 1e-15
+    assert abs(cd.distance(cd.Ray([-x, 0, 0.5], [1, 0, 0]), ring, solver=solver) - 0.5) <= 1e-12

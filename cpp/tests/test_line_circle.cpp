@@ -77,11 +77,35 @@ void radius_cases() {
   }
 }
 
+// Segments whose ends reach the top of the double range (a difference of two of them overflows):
+// from -x to x at height 0.5 over a unit circle and disk centered at 0, whose axis the segment
+// crosses, the distance is 0.5 (to the rim points (+-1, 0, 0), the disk's point below). The scene
+// scaled down to [1, 2) took the circle into the subnormals and answered 0; the front end now
+// scales such a scene by 1/4 first.
+void near_largest_cases() {
+  using V = Vec3<double>;
+  const Circle3<double> ring{V(0, 0, 0), V(0, 0, 1), 1.0};
+  const Disk3<double> disk{V(0, 0, 0), V(0, 0, 1), 1.0};
+  for (const double x : {1e307, 9e307, 1.5e308, 1.79e308}) {
+    for (const double far_end : {x, x / 2}) {
+      const Segment3<double> s{V(-x, 0, 0.5), V(far_end, 0, 0.5)};
+      CHECK_NEAR(distance(s, ring), 0.5, 1e-12);
+      CHECK_NEAR(distance(ring, s), 0.5, 1e-12);
+      CHECK_NEAR(closest_points(s, ring).distance, 0.5, 1e-12);
+      CHECK_NEAR(distance(s, disk), 0.5, 1e-12);
+      CHECK_NEAR(closest_points(s, disk).distance, 0.5, 1e-12);
+    }
+    CHECK_NEAR(distance(Ray3<double>{V(-x, 0, 0.5), V(1, 0, 0)}, ring), 0.5, 1e-12);
+    CHECK_NEAR(distance(Line3<double>{V(-x, 0, 0.5), V(x, 0, 0)}, ring), 0.5, 1e-12);
+  }
+}
+
 int main() {
   analytic_cases<float>();
   analytic_cases<double>();
   analytic_cases<long double>();
   translated_cases();
   radius_cases();
+  near_largest_cases();
   return check::finish("line_circle");
 }

@@ -77,6 +77,18 @@ template <class A, class B> int scene_exponent(const A& a, const B& b) {
   return -std::ilogb(largest);
 }
 
+// A scene whose coordinates reach 2^(max_exponent - 3) (2.2e307 in double) can overflow in a
+// difference or a short sum of them (a segment from -1.5e308 to 1.5e308: p1 - p0
+// is inf), where the query itself would be fine. Before the scene is scaled down to [1, 2), which
+// would take its small features (a unit circle beside it, a height of 0.5) into the subnormals,
+// it is scaled by 1/4 only: -2 for such a scene, else 0.
+template <class A, class B> int overflow_exponent(const A& a, const B& b) {
+  using Real = std::decay_t<decltype(extent(a))>;
+  const Real largest = std::max(extent(a), extent(b));
+  constexpr Real top = power_of_two<Real>(std::numeric_limits<Real>::max_exponent - 3);
+  return largest >= top && largest < std::numeric_limits<Real>::infinity() ? -2 : 0;
+}
+
 // The distance of the scene scaled when its size asks for it (else d, as computed): out of line,
 // so that the common path of ranged_distance stays one comparison.
 template <class Roots, class A, class B, class Real>
@@ -84,6 +96,10 @@ template <class Roots, class A, class B, class Real>
 __attribute__((noinline, cold))
 #endif
 Real rescaled_distance(const A& a, const B& b, Real d) {
+  if (const int e = overflow_exponent(a, b)) {
+    const Real quarter = direct_distance<Roots>(scaled(a, e), scaled(b, e));
+    if (moderate(quarter)) return Real(std::ldexp(quarter, -e));
+  }
   const int e = scene_exponent(a, b);
   return e != 0 ? Real(std::ldexp(direct_distance<Roots>(scaled(a, e), scaled(b, e)), -e)) : d;
 }
@@ -104,9 +120,14 @@ template <class Roots, class A, class B, class R>
 __attribute__((noinline, cold))
 #endif
 R rescaled_closest_points(const A& a, const B& b, const R& computed) {
-  const int e = scene_exponent(a, b);
-  if (e == 0) return computed;
-  R r = direct_closest_points<Roots>(scaled(a, e), scaled(b, e));
+  const int quarter = overflow_exponent(a, b);
+  R r = quarter != 0 ? direct_closest_points<Roots>(scaled(a, quarter), scaled(b, quarter)) : computed;
+  int e = quarter;
+  if (quarter == 0 || !moderate(r.distance)) {
+    e = scene_exponent(a, b);
+    if (e == 0) return computed;
+    r = direct_closest_points<Roots>(scaled(a, e), scaled(b, e));
+  }
   r.distance = std::ldexp(r.distance, -e);
   r.point_a = ldexp3(r.point_a, -e);
   r.point_b = ldexp3(r.point_b, -e);
