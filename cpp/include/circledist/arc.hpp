@@ -73,9 +73,10 @@ template <class Real> struct ArcSpan {
   static Vec3<Real> local(Real radius, Real theta) {
     return Vec3<Real>(radius * std::cos(theta), radius * std::sin(theta), Real(0));
   }
-  Vec3<Real> world(const Vec3<Real>& center, Real radius, Real theta) const {
-    return center + radius * (std::cos(theta) * frame.u + std::sin(theta) * frame.v);
+  Vec3<Real> from_center(Real radius, Real theta) const {
+    return radius * (std::cos(theta) * frame.u + std::sin(theta) * frame.v);
   }
+  Vec3<Real> world(const Vec3<Real>& center, Real radius, Real theta) const { return center + from_center(radius, theta); }
 };
 
 // The answer of a whole arc from its circle's: the arc's parameter is its t, the circle's angle
@@ -128,11 +129,14 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     }
     // Off the arc: the nearer end; both ends as near (P on the plane through the axis that
     // bisects the gap) is two closest pairs.
-    const Vec3<Real> e0 = span.world(arc.center, arc.radius, span.lo()), e1 = span.world(arc.center, arc.radius, span.hi());
-    const Real d0 = (p - e0).norm(), d1 = (p - e1).norm();
+    // From the center (p - c exact for nearby coordinates): the world end points round by an ulp
+    // of their coordinates, 1e-10 at 1e6.
+    const Vec3<Real> d = p - arc.center;
+    const Vec3<Real> e0 = span.from_center(arc.radius, span.lo()), e1 = span.from_center(arc.radius, span.hi());
+    const Real d0 = (d - e0).norm(), d1 = (d - e1).norm();
     const bool first = d0 <= d1;
     r.distance = first ? d0 : d1;
-    r.point_b = first ? e0 : e1;
+    r.point_b = arc.center + (first ? e0 : e1);
     r.param_b = Vec2<Real>(first ? Real(0) : span.angle, 0);
     r.unique = !(std::abs(d0 - d1) <= tie_tolerance(std::max(arc.radius, r.distance)) &&
                  (e0 - e1).norm() > distinct_points_tolerance(arc.radius));
