@@ -294,6 +294,11 @@ void piece_tests() {
   arc_case("ray-arc", "from the axis through the arc", Ray{V3d(0, 0, 0), V3d(1, 2, 0)}, quarter, 0, 1);
   arc_case("ray-arc", "from the axis away from the arc", Ray{V3d(0, 0, 0), V3d(-1, -2, 0)}, quarter,
            ref_piece_arc(Ray{V3d(0, 0, 0), V3d(-1, -2, 0)}, quarter), 0);  // every arc point 1 from the origin
+  // Nearly along the axis: tilted by 1e-10 and 1e-9 off it.
+  arc_case("line-arc", "nearly along the axis", Line{V3d(1e-9, 0, 0), V3d(1e-10, 0, 1)}, quarter,
+           ref_piece_arc(Line{V3d(1e-9, 0, 0), V3d(1e-10, 0, 1)}, quarter));
+  arc_case("segment-arc", "nearly along the axis", Segment{V3d(-1e-9, 0, -1), V3d(1e-9, 1e-9, 1)}, quarter,
+           ref_piece_arc(Segment{V3d(-1e-9, 0, -1), V3d(1e-9, 1e-9, 1)}, quarter));
   arc_case("segment-arc", "zero radius arc", Segment{V3d(1, 0, 1), V3d(-1, 0, 1)}, Arc{o, z, 0, x, 1}, 1);
   arc_case("segment-arc", "a point segment", Segment{V3d(2, 2, 0), V3d(2, 2, 0)}, quarter, std::sqrt(8.0L) - 1, 1);
   // Translated far.
@@ -349,9 +354,22 @@ template <class Round3> void round_tests(const char* kind) {
     const Arc down{o, V3d(0, 1, 0), 1, V3d(0, 0, -1), 1};  // starts at (0, 0, -1), on the round's axis
     arc_case(kind, "arc end on the axis", below, down, ref_round_arc(below, down));
   }
+  {
+    // The arc's start on the round's axis, the arc rising from it along the axis: the start is
+    // closest, to every point of a ring (not unique), to the one point below it on a disk.
+    const Arc rising{V3d(1, 0, 0.5), V3d(0, 1, 0), 1, V3d(-1, 0, 0), 1};  // (1 - cos t, 0, 0.5 + sin t)
+    arc_case(kind, "start on the axis, rising", Round3{o, z, 1}, rising, disk ? 0.5L : std::sqrt(1.25L), disk ? 1 : 0);
+  }
   arc_case(kind, "standing on the end", Round3{V3d(1.5, 0, 0), V3d(0, 1, 0), 0.5}, quarter, 0, 1);
   arc_case(kind, "standing beyond the end", Round3{V3d(std::cos(-0.2) * 1.5, std::sin(-0.2) * 1.5, 0), V3d(-std::sin(-0.2), std::cos(-0.2), 0), 0.5},
            quarter, ref_round_arc(Round3{V3d(std::cos(-0.2) * 1.5, std::sin(-0.2) * 1.5, 0), V3d(-std::sin(-0.2), std::cos(-0.2), 0), 0.5}, quarter), 1);
+  {
+    // Nearly coincident (circle_circle's hard family): centers 1e-12 apart, normals 1e-9, radii 1e-10.
+    const Round3 near{V3d(1e-12, -1e-12, 0), unit(1e-9, 0, 1), 1 + 1e-10};
+    arc_case(kind, "nearly coincident", near, quarter, ref_round_arc(near, quarter));
+    const Arc tilted_back{o, z, 1, V3d(-1, 0.2, 0), 2};
+    arc_case(kind, "nearly coincident, other side", near, tilted_back, ref_round_arc(near, tilted_back));
+  }
   arc_case(kind, "zero radius arc", Round3{o, z, 1}, Arc{V3d(0.5, 0, 2), z, 0, x, 1}, disk ? 2 : std::sqrt(4.25L), 1);
   // Radius ratios 1e-3 and 1e3.
   {
@@ -403,6 +421,14 @@ void arc_arc_tests() {
   arc_arc_case("tangent at both starts", quarter, Arc{V3d(2, 0, 0), z, 1, V3d(-1, 0, 0), 1}, 0, 1);
   arc_arc_case("end on the other's axis", Arc{o, y, 1, V3d(0, 0, 1), 1}, Arc{V3d(0, 0, 2), z, 0.5, x, 2},
                ref_arc_arc(Arc{o, y, 1, V3d(0, 0, 1), 1}, Arc{V3d(0, 0, 2), z, 0.5, x, 2}));
+  arc_arc_case("start on the other's axis, rising", Arc{o, z, 1, x, 2}, Arc{V3d(1, 0, 0.5), y, 1, V3d(-1, 0, 0), 1},
+               std::sqrt(1.25L), 0);
+  {
+    const Arc near{V3d(1e-12, -1e-12, 0), unit(1e-9, 0, 1), 1 + 1e-10, V3d(1, 1, 0), 1};
+    arc_arc_case("nearly coincident, overlapping", quarter, near, ref_arc_arc(quarter, near));
+    const Arc near_apart{V3d(1e-12, -1e-12, 0), unit(1e-9, 0, 1), 1 + 1e-10, V3d(-1, 0.1, 0), 1};
+    arc_arc_case("nearly coincident, apart", quarter, near_apart, ref_arc_arc(quarter, near_apart));
+  }
   arc_arc_case("zero radius", quarter, Arc{V3d(2, 0, 0), z, 0, x, 1}, 1, 1);
   arc_arc_case("both whole", Arc{o, z, 1, x, kTurn}, Arc{V3d(3, 0, 0), y, 1, x, kTurn}, 1);
   Draw d(41);
