@@ -24,6 +24,11 @@ using Segment = Segment3<double>;
 using Circle = Circle3<double>;
 using Disk = Disk3<double>;
 
+// The random draws' multiplier (a longer run: -DARC_RANDOM_SCALE=10).
+#ifndef ARC_RANDOM_SCALE
+#define ARC_RANDOM_SCALE 1
+#endif
+
 namespace {
 
 const double kTurn = 6.283185307179586;
@@ -241,7 +246,7 @@ void point_tests() {
   // No projection of the start: the arc starts at Frame's U, (0, 1, 0) for the normal z.
   arc_case("point-arc", "start along the normal", V3d(2, 0, 0), Arc{o, z, 1, z, 1}, std::sqrt(5.0L), 1);
   Draw d(11);
-  for (int k = 0; k < 200; ++k) {
+  for (int k = 0; k < 200 * ARC_RANDOM_SCALE; ++k) {
     const Arc a = d.arc();
     const V3d p = a.center + 2 * d.vec();
     arc_case("point-arc", "random", p, a, ref_point_arc(p, a));
@@ -256,7 +261,7 @@ void point_tests() {
 }
 
 template <class Piece> void piece_random(const char* kind, Draw& d, const std::function<Piece(Draw&, const Arc&)>& draw) {
-  for (int k = 0; k < 120; ++k) {
+  for (int k = 0; k < 120 * ARC_RANDOM_SCALE; ++k) {
     const Arc a = d.arc();
     const Piece p = draw(d, a);
     arc_case(kind, "random", p, a, ref_piece_arc(p, a));
@@ -320,7 +325,7 @@ void piece_tests() {
   });
   // Lines tangent to an arc's circle at random angles, the arc holding the tangency, ending at
   // it, or missing it; offset by 0 or up to 1e-12..1 off the circle.
-  for (int k = 0; k < 60; ++k) {
+  for (int k = 0; k < 60 * ARC_RANDOM_SCALE; ++k) {
     const V3d c = d.vec(), n = d.vec().normalized();
     const double r = d.radius(), t = kTurn * d.uniform(d.rng);
     const Frame<double> f(n);
@@ -379,7 +384,7 @@ template <class Round3> void round_tests(const char* kind) {
     arc_case(kind, "arc 1e3 the round", Round3{o, z, 1}, big, ref_round_arc(Round3{o, z, 1}, big));
   }
   Draw d(disk ? 31 : 37);
-  for (int k = 0; k < 100; ++k) {
+  for (int k = 0; k < 100 * ARC_RANDOM_SCALE; ++k) {
     const Arc a = d.arc();
     const Round3 s{d.vec(), d.vec(), d.radius()};
     arc_case(kind, "random", s, a, ref_round_arc(s, a));
@@ -432,7 +437,7 @@ void arc_arc_tests() {
   arc_arc_case("zero radius", quarter, Arc{V3d(2, 0, 0), z, 0, x, 1}, 1, 1);
   arc_arc_case("both whole", Arc{o, z, 1, x, kTurn}, Arc{V3d(3, 0, 0), y, 1, x, kTurn}, 1);
   Draw d(41);
-  for (int k = 0; k < 40; ++k) {
+  for (int k = 0; k < 40 * ARC_RANDOM_SCALE; ++k) {
     const Arc a = d.arc(), b{d.vec(), d.vec(), d.radius(), d.vec(), d.angle()};
     const LD truth = ref_arc_arc(a, b);
     arc_arc_case("random", a, b, truth);
@@ -471,7 +476,7 @@ void precision_tests() {
   CHECK_NEAR(closest_points(f_arc, Segment3<float>{s.p0.cast<float>(), s.p1.cast<float>()}).distance, segment_truth, 1e-5);
   // The eigenvalue root policies.
   Draw d(53);
-  for (int k = 0; k < 30; ++k) {
+  for (int k = 0; k < 30 * ARC_RANDOM_SCALE; ++k) {
     const Arc b = d.arc();
     const Circle e{d.vec(), d.vec(), d.radius()};
     const Segment g{b.center + d.vec(), b.center + d.vec()};
@@ -481,6 +486,13 @@ void precision_tests() {
     expect_distance("eigen circle-arc", "random", closest_points<EigenCompanion>(b, e).distance, ce, size);
     expect_distance("eigen segment-arc", "random", distance<EigenPolished>(g, b), ge, b.radius);
     expect_distance("eigen segment-arc", "random", closest_points<EigenCompanion>(g, b).distance, ge, b.radius);
+    if (k % 3 == 0) {
+      const Disk f{d.vec(), d.vec(), d.radius()};
+      const Arc a2 = d.arc();
+      const LD fe = ref_disk_arc(f, b), ae = ref_arc_arc(a2, b);
+      expect_distance("eigen disk-arc", "random", closest_points<EigenPolished>(f, b).distance, fe, std::max(b.radius, f.radius));
+      expect_distance("eigen arc-arc", "random", closest_points<EigenCompanion>(a2, b).distance, ae, std::max(b.radius, a2.radius));
+    }
   }
 }
 

@@ -147,8 +147,8 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
 // ---------------------------------------------------------------------------------------------
 // The arc parametrized against another shape (docs/arc.md, "The arc parametrized").
 
-// Room for every query's candidates: the circle's (24 at most), two end angles, four crossings,
-// and the arc's own starts (its ends and kArcSamples - 1 angles between them).
+// Room for every query's candidates: the circle's (24 at most), two end angles, and the arc's
+// own starts (its ends and kArcSamples - 1 angles between them).
 constexpr int kArcCapacity = 64;
 constexpr int kArcSamples = 8;
 template <class Real> using ArcCandidates = Candidates<Real, kArcCapacity>;
@@ -164,16 +164,17 @@ template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H
 }
 
 // The candidates of the whole circle that fall on the arc (moved to the turn that holds them),
-// the arc's two ends and kArcSamples - 1 angles between them, polished on [lo, hi] on the exact
+// the arc's two ends and `samples` - 1 angles between them, polished on [lo, hi] on the exact
 // distance h (jet: its square's derivatives), as polish_angles does on the whole circle. The
-// ends are exact candidates (the minimum on an interval can sit at an end); the samples are
-// starts where the circle's candidates say nothing about the arc (a circle nearly coincident
-// with the other shape, whose distance is flat to rounding).
+// ends are exact candidates (the minimum on an interval can sit at an end); the samples
+// (kArcSamples against a round or an arc, none against a piece) are starts where the circle's
+// candidates say nothing about the arc (a circle nearly coincident with the other round, whose
+// octic is rounding noise, as circle-circle's eight samples).
 template <class Roots, class Real, int N, class J, class H>
 ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, N>& candidates, const J& jet,
-                              const H& h, Real radius, Real scale) {
+                              const H& h, Real radius, Real scale, int samples = kArcSamples) {
   ArcCandidates<Real> starts;
-  for (int k = 0; k <= kArcSamples; ++k) starts.push(k == kArcSamples ? span.hi() : span.lo() + span.angle * k / kArcSamples);
+  for (int k = 0; k <= samples; ++k) starts.push(k == samples ? span.hi() : span.lo() + span.angle * k / samples);
   for (int i = 0; i < candidates.count; ++i) {
     const Real t = span.offset(candidates.value[i]);
     if (t <= span.angle) starts.push(span.lo() + t);
@@ -232,9 +233,10 @@ template <class Real, class Target> struct ArcRoundQuery {
 // Arc B as the target of a moving point, in B's round frame (center at the origin, normal
 // along z): its distance is point-arc's (above), the ring's where the point's angle falls on the
 // arc, else the nearer end's. Against arc B, A is parametrized (an arc, or a circle as the arc of
-// all its angles) and its candidates are circle-circle's against B's ring, B's ends' own
-// stationary angles on A, and where A crosses the half-planes of B's end radii (where the target
-// changes form).
+// all its angles) and its candidates are circle-circle's against B's ring and B's ends' own
+// stationary angles on A. (Where A's point crosses from the ring's form to an end's, the distance
+// is C^1, both forms having the gradient (P - E) / |P - E|: a minimum there is a root of the ring's
+// octic too, docs/arc.md.)
 template <class Real> struct ArcTarget {
   ArcSpan<Real> span;
   Real radius;
@@ -303,11 +305,6 @@ template <class Real> struct ArcArcQuery {
     ArcCandidates<Real> candidates;
     for (int i = 0; i < circle.count; ++i) candidates.push(circle.value[i]);
     for (const Vec3<Real>& e : target.end) push_nearest_angle(c, e, candidates);
-    for (const Real beta : {target.span.lo(), target.span.hi()}) {
-      // -sin(beta) x + cos(beta) y = 0: A's point on the plane of B's axis and end radius.
-      const Trig<Real, 1> across = (-std::sin(beta)) * c.coordinate(0, scale) + std::cos(beta) * c.coordinate(1, scale);
-      push_trig_roots<Roots>(across, candidates);
-    }
     return polish_on_arc<Roots>(span, candidates, jet, h, c.radius, scale);
   }
 
@@ -380,9 +377,10 @@ template <class Real> struct PieceOverArc {
 // The candidate angles of a piece against the arc's circle (radius R, its frame: P = R (cos, sin, 0)):
 // with w = P - a and L = w.m = R (m_x cos + m_y sin) - a.m, the squared distance to the full line
 // f = |w|^2 - L^2 has f' / 2 = R (a_x sin - a_y cos) - L L', trigonometric of degree 2 (a quartic
-// in tan(theta / 2)); where the piece's foot passes an end (L = lo or hi, first harmonics) the
-// distance changes form; beyond an end it is the end's, least at the end's own angle. Plus
-// t = 0 and pi (the half-angle substitution's blind spot). In units of `scale`.
+// in tan(theta / 2)); beyond an end (the foot L past lo or hi) the distance is the end's, least at
+// the end's own angle (where it changes form the distance is C^1: a minimum there is a root of
+// f' too, docs/arc.md). Plus t = 0 and pi (the half-angle substitution's blind spot). In units
+// of `scale`.
 template <class Roots, class Real, int N>
 void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real scale, Candidates<Real, N>& out) {
   push_circle_candidates(out);
@@ -405,13 +403,8 @@ void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real 
   slope.c[1] -= r * a.y();
   slope.s[1] += r * a.x();
   push_trig_roots<Roots>(slope, out);
-  for (const Real tau : {line.lo, line.hi}) {
-    if (!std::isfinite(tau)) continue;
-    Trig<Real, 1> cut = along;
-    cut.c[0] -= tau / scale;
-    push_trig_roots<Roots>(cut, out);
-    push_end(tau);
-  }
+  for (const Real tau : {line.lo, line.hi})
+    if (std::isfinite(tau)) push_end(tau);
 }
 
 template <class Real, class Piece> struct PieceArcQuery {
@@ -430,7 +423,7 @@ template <class Real, class Piece> struct PieceArcQuery {
     };
     Candidates<Real, 24> candidates;
     push_piece_arc_candidates<Roots>(line, radius, scale, candidates);
-    return polish_on_arc<Roots>(span, candidates, jet, h, radius, scale);
+    return polish_on_arc<Roots>(span, candidates, jet, h, radius, scale, 1);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Arc3<Real>& arc) {
