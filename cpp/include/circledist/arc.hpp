@@ -174,6 +174,11 @@ template <class Roots, class Real, int N, class J, class H>
 ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, N>& candidates, const J& jet,
                               const H& h, Real radius, Real scale, int samples = kArcSamples) {
   ArcCandidates<Real> starts;
+  if (!(span.angle >= 0) || !std::isfinite(span.lo())) {  // a NaN angle or normal: no answer, NaN
+    ArcMinima<Real> none;
+    none.best = Minimum<Real>{span.lo(), std::numeric_limits<Real>::quiet_NaN()};
+    return none;
+  }
   for (int k = 0; k <= samples; ++k) starts.push(k == samples ? span.hi() : span.lo() + span.angle * k / samples);
   for (int i = 0; i < candidates.count; ++i) {
     const Real t = span.offset(candidates.value[i]);

@@ -1,4 +1,4 @@
-// circledist: exact 3D distances between points, lines, rays, segments, circles and disks.
+// circledist: exact 3D distances between points, lines, rays, segments, circles, disks and arcs.
 // Primitives, the per-query Result, and the canonical frame of a plane.
 #pragma once
 
@@ -40,7 +40,7 @@ template <class Real> struct Disk3 {
 // A circular arc: the points center + radius (cos t u + sin t v), t in [0, angle], where n is
 // the unit normal, u the unit projection of `start` onto the plane normal to n and v = n x u
 // (issue 19). 0 < angle <= 2 pi; an angle of 2 pi or more is the whole circle (answered as the
-// Circle3 with the same fields), an angle of 0 or less the start point alone. A `start` with no
+// Circle3 with the same fields), an angle of 0 or less the start point alone, a NaN angle NaN. A `start` with no
 // projection (zero, or along the normal) starts at the circle's angle 0 (Frame's U). Queries
 // report t as the arc's parameter (t, 0), as a circle's angle (arc.hpp).
 template <class Real> struct Arc3 {
