@@ -26,28 +26,39 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
   static constexpr bool defined = true;
   using Starts = Candidates<Real, kMaxDegree + 16>;
 
+  // The candidate angles of the parametrized circle: t = 0 and t = pi, the octic's roots where
+  // the distance can be at most `bound` (a distance the circle reaches: the best of its eight
+  // samples or the caller's; an arc passes one its own points reach, arc.hpp), and the extra
+  // starts below. `samples` are the full circle's (sampled_distances).
   template <class Roots>
-  static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
-                                              Real bound = std::numeric_limits<Real>::infinity()) {
-    const CircleOverRound<Real> view(c, radius);
+  static Starts candidates(const CircleOverRound<Real>& view, Real scale, Real bound,
+                           const SampledDistances<Real>& samples) {
     Starts starts;
     push_circle_candidates(starts);
-    const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
-    const SampledDistances<Real> samples = sampled_distances(c, squared);
-    push_circle_ring_roots<Roots>(view, scale, std::min(bound, samples.best), starts);
+    push_circle_ring_roots<Roots>(view, scale, bound, starts);
     // Where the circle crosses the ring's plane (z = 0, the height roots of circle_disk.hpp):
     // rings that cross lie there. For rings of equal radius whose centers are 1e-14 apart, the
     // octic is so ill-conditioned that the eigenvalue policies' roots led the polish to 0.505
     // for a distance of 1e-14 (tests/test_regressions.py, near-concentric crossing rings).
     // Policies that refine every root to rounding find them from the octic (and skip these
     // starts' cost: 18 % of a circle-circle query).
-    if constexpr (!has_accurate_roots<Roots>::value) push_trig_roots<Roots>(c.coordinate(2, scale), starts);
+    if constexpr (!has_accurate_roots<Roots>::value) push_trig_roots<Roots>(view.c.coordinate(2, scale), starts);
     // Nearly coincident circles (every sample within 1e-3 scale of the ring): the distance is a
     // trigonometric function of low degree in t with few, wide minima; the eight sample angles,
     // polished on the exact distance, reach them too, whatever the roots policy makes of the
     // octic there.
     if (samples.worst <= Real(1e-3) * scale)
       for (int k = -3; k <= 4; ++k) starts.push(k * pi_v<Real>() / 4);
+    return starts;
+  }
+
+  template <class Roots>
+  static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
+                                              Real bound = std::numeric_limits<Real>::infinity()) {
+    const CircleOverRound<Real> view(c, radius);
+    const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
+    const SampledDistances<Real> samples = sampled_distances(c, squared);
+    const Starts starts = candidates<Roots>(view, scale, std::min(bound, samples.best), samples);
     const auto h = [&](Real t) { return view.template distance<RingTarget<Real>>(t); };
     const auto jet = [&](Real t) { return view.template jet<RingTarget<Real>>(t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));

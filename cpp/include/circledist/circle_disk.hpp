@@ -45,17 +45,25 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     return solve<Roots>(c, radius, scale, height_candidates<Roots>(c, scale));
   }
 
+  // The candidate angles: the height candidates, the rim partition (§4.1) and the octic's roots
+  // (§4.3). The octic's roots matter outside the cylinder only, where the disk distance is the
+  // ring's: there the minimum is at most `bound`, any disk distance the circle reaches (its best
+  // sample; an arc passes one its own points reach, arc.hpp) (ring_search_intervals).
+  template <class Roots>
+  static Starts candidates(const CircleOverRound<Real>& view, Real scale, const Heights& heights, Real bound) {
+    Starts starts;
+    for (int i = 0; i < heights.count; ++i) starts.push(heights.value[i]);
+    push_rim_partition<Roots>(view, scale, starts);
+    push_circle_ring_roots<Roots>(view, scale, bound, starts);
+    return starts;
+  }
+
   template <class Roots>
   static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
                                               const Heights& heights) {
     const CircleOverRound<Real> view(c, radius);
-    Starts starts;
-    for (int i = 0; i < heights.count; ++i) starts.push(heights.value[i]);
-    push_rim_partition<Roots>(view, scale, starts);
-    // The octic's roots matter outside the cylinder only, where the disk distance is the ring's:
-    // there the minimum is at most any disk distance A reaches (ring_search_intervals).
     const auto squared = [&](const Vec3<Real>& p) { return DiskTarget<Real>::distance_squared(p, radius); };
-    push_circle_ring_roots<Roots>(view, scale, sampled_distance(c, squared), starts);
+    const Starts starts = candidates<Roots>(view, scale, heights, sampled_distance(c, squared));
     const auto h = [&](Real t) { return view.template distance<DiskTarget<Real>>(t); };
     const auto jet = [&](Real t) { return view.template jet<DiskTarget<Real>>(t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));

@@ -240,6 +240,25 @@ Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& 
   return out;
 }
 
+// The world point of the piece at `tau` of its local line, and its parameter t: an end point
+// exactly when tau sits there; otherwise from the world anchor (accurate relative to its distance
+// from the center, where origin + t direction would err by eps |origin - center| across the line).
+template <class Real>
+Vec3<Real> piece_point(const Linear<Real>& piece, const LocalLinear<Real>& line, const Round<Real>& round, Real tau,
+                       Real& t) {
+  t = line.is_point ? Real(0) : line.t_of(tau);
+  t = std::min(std::max(t, piece.lo), piece.hi);
+  if (line.is_point || tau <= line.lo) {
+    t = line.is_point ? Real(0) : piece.lo;
+    return piece.origin;
+  }
+  if (tau >= line.hi) {
+    t = piece.hi;
+    return piece.has_end ? piece.end : Vec3<Real>(piece.origin + t * piece.direction);
+  }
+  return round.center + (line.anchor_world + tau * line.dir_world);
+}
+
 // Builds the Result from the polished minima: the round's side from round_side_result
 // (round_target.hpp; distinct tied pairs make `unique` false), the piece's point here.
 template <class Target, class Real>
@@ -248,20 +267,8 @@ Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Re
   const Minimum<Real>& best = minima.best;
   Result<Real> r = round_side_result<Target>(minima, [&](Real x) { return line.at(x); }, line.at(best.x), round, scale,
                                              distinct_points_tolerance(scale));
-  // The point on the piece: an end point exactly when the minimum sits there; otherwise from the
-  // world anchor (accurate relative to its distance from the center, where origin + t direction
-  // would err by eps |origin - center| across the line).
-  Real t = line.is_point ? Real(0) : line.t_of(best.x);
-  t = std::min(std::max(t, piece.lo), piece.hi);
-  if (line.is_point || best.x <= line.lo) {
-    t = line.is_point ? Real(0) : piece.lo;
-    r.point_a = piece.origin;
-  } else if (best.x >= line.hi) {
-    t = piece.hi;
-    r.point_a = piece.has_end ? piece.end : Vec3<Real>(piece.origin + t * piece.direction);
-  } else {
-    r.point_a = round.center + (line.anchor_world + best.x * line.dir_world);
-  }
+  Real t;
+  r.point_a = piece_point(piece, line, round, best.x, t);
   r.param_a = Vec2<Real>(t, 0);
   return r;
 }

@@ -1,4 +1,4 @@
-// circledist: exact 3D distances between points, lines, rays, segments, circles and disks.
+// circledist: exact 3D distances between points, lines, rays, segments, circles, disks and arcs.
 // Primitives, the per-query Result, and the canonical frame of a plane.
 #pragma once
 
@@ -35,6 +35,19 @@ template <class Real> struct Circle3 {
 template <class Real> struct Disk3 {
   Vec3<Real> center, normal;
   Real radius;
+};
+
+// A circular arc: the points center + radius (cos t u + sin t v), t in [0, angle], where n is
+// the unit normal, u the unit projection of `start` onto the plane normal to n and v = n x u
+// (issue 19). 0 < angle <= 2 pi; an angle of 2 pi or more is the whole circle (answered as the
+// Circle3 with the same fields), an angle of 0 or less the start point alone, a NaN angle NaN. A `start` with no
+// projection (zero, or along the normal) starts at the circle's angle 0 (Frame's U). Queries
+// report t as the arc's parameter (t, 0), as a circle's angle (arc.hpp).
+template <class Real> struct Arc3 {
+  Vec3<Real> center, normal;
+  Real radius;
+  Vec3<Real> start;
+  Real angle;
 };
 
 // Points origin + t * direction, t in R. `direction` need not be unit length.
@@ -86,10 +99,18 @@ template <class Real> bool precedes(const Circle3<Real>& x, const Circle3<Real>&
 template <class Real> bool precedes(const Disk3<Real>& x, const Disk3<Real>& y) {
   return detail::precedes_round(x, y);
 }
+// Arcs: as circles, then the start and the angle.
+template <class Real> bool precedes(const Arc3<Real>& x, const Arc3<Real>& y) {
+  if (detail::precedes_round(x, y)) return true;
+  if (detail::precedes_round(y, x)) return false;
+  if (precedes(x.start, y.start)) return true;
+  return !precedes(y.start, x.start) && x.angle < y.angle;
+}
 
 // What closest_points() returns. Parameters, per shape kind:
 //   point: (0, 0); line, ray, segment: (t, 0) as in the definitions above;
 //   circle: (theta, 0), the angle in the canonical frame (see Frame);
+//   arc: (t, 0), t in [0, angle] from the arc's start (Arc3);
 //   disk: (s, theta), the closest point being center + s (cos theta U + sin theta V).
 // `unique` is false when another, distinct closest pair reaches the same distance within
 // rounding (a tie between isolated pairs, or a continuum such as a line on a circle's axis).
@@ -159,12 +180,16 @@ template <class Real> Circle3<Real> scaled(const Circle3<Real>& c, int e) {
 template <class Real> Disk3<Real> scaled(const Disk3<Real>& d, int e) {
   return {detail::ldexp3(d.center, e), d.normal, std::ldexp(d.radius, e)};
 }
+template <class Real> Arc3<Real> scaled(const Arc3<Real>& a, int e) {
+  return {detail::ldexp3(a.center, e), a.normal, std::ldexp(a.radius, e), a.start, a.angle};
+}
 template <class Real> Real extent(const Vec3<Real>& p) { return p.cwiseAbs().maxCoeff(); }
 template <class Real> Real extent(const Line3<Real>& l) { return extent(l.origin); }
 template <class Real> Real extent(const Ray3<Real>& r) { return extent(r.origin); }
 template <class Real> Real extent(const Segment3<Real>& s) { return std::max(extent(s.p0), extent(s.p1)); }
 template <class Real> Real extent(const Circle3<Real>& c) { return std::max(extent(c.center), c.radius); }
 template <class Real> Real extent(const Disk3<Real>& d) { return std::max(extent(d.center), d.radius); }
+template <class Real> Real extent(const Arc3<Real>& a) { return std::max(extent(a.center), a.radius); }
 // The parameters of the shape from those of the scaled one: a disk's s is a length; a line's or
 // ray's t follows its direction's scaling (P = o + t' d 2^-k in the scene scaled by 2^e, so
 // t = t' 2^(-k-e)); a segment's t, a curve's t and angles do not change.
@@ -200,6 +225,9 @@ template <class Real, if_float<Real> = 0> Circle3<double> promoted(const Circle3
 }
 template <class Real, if_float<Real> = 0> Disk3<double> promoted(const Disk3<Real>& d) {
   return {promoted(d.center), promoted(d.normal), double(d.radius)};
+}
+template <class Real, if_float<Real> = 0> Arc3<double> promoted(const Arc3<Real>& a) {
+  return {promoted(a.center), promoted(a.normal), double(a.radius), promoted(a.start), double(a.angle)};
 }
 
 // Bezier curves of degree 0 to kMaxBezierDegree (bezier.hpp answers their queries; a curve's

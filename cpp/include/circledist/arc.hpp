@@ -1,0 +1,544 @@
+// Arcs (issue 19; derivation in docs/arc.md). An arc is a circle whose candidates are restricted
+// to its angles, with its two end points added. Against a point: point-circle's closed form
+// (note 000 §1) where the point's angle falls on the arc, else the nearer end. Against a line,
+// ray, segment, circle, disk or arc: the arc is parametrized by its circle's canonical angle theta
+// on [theta0, theta0 + angle] (ArcSpan) and the other shape's exact distance from the arc's point
+// is minimized there (polish_on_arc): the whole circle's stationary angles that fall on the arc
+// (the circle machinery's own candidates, Query<Circle3, Circle3>::candidates and
+// Query<Circle3, Disk3>::candidates; for a piece, the quartic of its line's distance), the arc's
+// ends and, where the other shape's closest point is one of its own ends (a ray's or segment's,
+// another arc's), that end's stationary angle; each polished on the interval (polish_offsets,
+// detail/angle_polish.hpp). An arc of angle 2 pi is its circle, answered by the circle's query.
+#pragma once
+
+#include "circle_circle.hpp"
+#include "circle_disk.hpp"
+#include "detail/point_over_round.hpp"
+#include "line_circle.hpp"
+#include "linear.hpp"
+#include "linear_linear.hpp"
+#include "point_circle.hpp"
+#include "point_disk.hpp"
+#include "detail/trig.hpp"
+#include "query.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace circledist {
+
+// The arc's circle (the same fields), and whether the arc is all of it (angle >= 2 pi).
+template <class Real> Circle3<Real> arc_circle(const Arc3<Real>& a) { return {a.center, a.normal, a.radius}; }
+template <class Real> bool whole_arc(const Arc3<Real>& a) { return a.angle >= 2 * pi_v<Real>(); }
+
+// An arc's interval in its circle's canonical angle (primitives.hpp, Frame: the angle every
+// circle query parametrizes by): the arc's t is theta - theta0, theta0 the canonical angle of u,
+// the start's projection (u = cos theta0 U + sin theta0 V, so v = N x u = cos theta0 V -
+// sin theta0 U and the arc's point at t is the circle's at theta0 + t). docs/arc.md, "The arc".
+template <class Real> struct ArcSpan {
+  Frame<Real> frame;
+  Real theta0 = 0, angle;
+
+  explicit ArcSpan(const Arc3<Real>& a) : frame(a.normal), angle(std::max(a.angle, Real(0))) {
+    const Real x = frame.u.dot(a.start), y = frame.v.dot(a.start);
+    if (x != 0 || y != 0) theta0 = detail::atan2(y, x);  // no projection: U's angle, 0
+  }
+  // A circle as the arc of all its angles from its own angle 0 (its canonical parameter).
+  explicit ArcSpan(const Circle3<Real>& c) : frame(c.normal), angle(2 * pi_v<Real>()) {}
+
+  Real lo() const { return theta0; }
+  Real hi() const { return theta0 + angle; }
+
+  // The arc's t of a canonical angle, in [0, 2 pi).
+  Real offset(Real theta) const {
+    const Real turn = 2 * pi_v<Real>();
+    Real t = theta - theta0;
+    if (!(t >= 0 && t < turn)) t -= turn * std::floor(t / turn);
+    return t;
+  }
+  // The arc's parameter of a circle point's canonical angle: t when it lies on the arc, else the
+  // nearer end (a point rounded past an end).
+  Real param_of(Real theta) const {
+    const Real t = offset(theta);
+    if (t <= angle) return t;
+    return t - angle < 2 * pi_v<Real>() - t ? angle : Real(0);
+  }
+  bool holds(Real theta) const { return offset(theta) <= angle; }
+  // The parameter (t, 0) of an angle polished on [lo, hi].
+  Vec2<Real> param(Real theta) const { return Vec2<Real>(std::min(std::max(theta - theta0, Real(0)), angle), 0); }
+
+  // The point of the circle of `radius` at canonical angle theta: in the circle's own frame
+  // (center at the origin), and in the world.
+  static Vec3<Real> local(Real radius, Real theta) {
+    return Vec3<Real>(radius * std::cos(theta), radius * std::sin(theta), Real(0));
+  }
+  Vec3<Real> from_center(Real radius, Real theta) const {
+    return radius * (std::cos(theta) * frame.u + std::sin(theta) * frame.v);
+  }
+  Vec3<Real> world(const Vec3<Real>& center, Real radius, Real theta) const { return center + from_center(radius, theta); }
+};
+
+// The answer of a whole arc from its circle's: the arc's parameter is its t, the circle's angle
+// less theta0 (`side` 0 for param_a, 1 for param_b).
+template <class Real> Result<Real> as_arc_result(Result<Real> r, const ArcSpan<Real>& span, int side) {
+  Vec2<Real>& p = side == 0 ? r.param_a : r.param_b;
+  p = Vec2<Real>(span.param_of(p.x()), 0);
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Point against arc: closed form (docs/arc.md, "A point"). The distance from P to the circle's
+// point at angle theta is sqrt(z^2 + rho^2 + R^2 - 2 R rho cos(theta - phi)), phi the angle of P's
+// projection: least at phi and rising on both sides to its greatest at phi + pi. So over the arc
+// it is least at phi when phi lies on the arc (point-circle's answer), otherwise at an end. On the
+// axis (rho = 0) every arc point is as close.
+template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
+  static constexpr bool defined = true;
+  using Whole = detail::PointRoundQuery<Real, false>;
+
+  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Arc3<Real>& arc) {
+    if (whole_arc(arc)) return Whole::distance(p, arc_circle(arc));
+    return closest<Roots>(p, arc).distance;
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Arc3<Real>& arc) {
+    const ArcSpan<Real> span(arc);
+    if (whole_arc(arc)) return as_arc_result(Whole::closest(p, arc_circle(arc)), span, 1);
+    Result<Real> r;
+    r.point_a = p;
+    if (!(arc.radius > 0)) {  // the center alone
+      r.distance = (p - arc.center).norm();
+      r.point_b = arc.center;
+      return r;
+    }
+    const detail::PointOverRound<Real> seen(p, arc.center, arc.normal);
+    const Real ring = length2d(seen.height, seen.radial - arc.radius);
+    if (seen.on_axis(arc.radius)) {  // every arc point as close: the start
+      r.distance = ring;
+      r.point_b = span.world(arc.center, arc.radius, span.lo());
+      r.unique = false;
+      return r;
+    }
+    const Real t = span.offset(seen.angle());
+    if (t <= span.angle) {
+      r.distance = ring;
+      r.point_b = seen.on_rim(arc.center, arc.radius);
+      r.param_b = Vec2<Real>(t, 0);
+      return r;
+    }
+    // Off the arc: the nearer end; both ends as near (P on the plane through the axis that
+    // bisects the gap) is two closest pairs.
+    // From the center (p - c exact for nearby coordinates): the world end points round by an ulp
+    // of their coordinates, 1e-10 at 1e6.
+    const Vec3<Real> d = p - arc.center;
+    const Vec3<Real> e0 = span.from_center(arc.radius, span.lo()), e1 = span.from_center(arc.radius, span.hi());
+    const Real d0 = (d - e0).norm(), d1 = (d - e1).norm();
+    const bool first = d0 <= d1;
+    r.distance = first ? d0 : d1;
+    r.point_b = arc.center + (first ? e0 : e1);
+    r.param_b = Vec2<Real>(first ? Real(0) : span.angle, 0);
+    r.unique = !(std::abs(d0 - d1) <= tie_tolerance(std::max(arc.radius, r.distance)) &&
+                 (e0 - e1).norm() > distinct_points_tolerance(arc.radius));
+    return r;
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// The arc parametrized against another shape (docs/arc.md, "The arc parametrized").
+
+// Room for every query's candidates: the circle's (24 at most), two end angles, and the arc's
+// own starts (its ends and kArcSamples - 1 angles between them).
+constexpr int kArcCapacity = 64;
+constexpr int kArcSamples = 8;
+template <class Real> using ArcCandidates = Candidates<Real, kArcCapacity>;
+template <class Real> using ArcMinima = Minima<Real, kArcCapacity>;
+
+// The least distance h reaches at the arc's ends and kArcSamples - 1 angles between them: a
+// distance the arc reaches, the bound its circle's octic is searched under
+// (ring_search_intervals). The whole circle's own samples (sampled_distances) may lie off the arc.
+template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H& h) {
+  Real best = std::numeric_limits<Real>::infinity();
+  for (int k = 0; k <= kArcSamples; ++k) best = std::min(best, h(span.lo() + span.angle * k / kArcSamples));
+  return best;
+}
+
+// The candidates of the whole circle that fall on the arc (moved to the turn that holds them),
+// the arc's two ends and `samples` - 1 angles between them, polished on [lo, hi] on the exact
+// distance h (jet: its square's derivatives), as polish_angles does on the whole circle. The
+// ends are exact candidates (the minimum on an interval can sit at an end); the samples
+// (kArcSamples against a round or an arc, none against a piece) are starts where the circle's
+// candidates say nothing about the arc (a circle nearly coincident with the other round, whose
+// octic is rounding noise, as circle-circle's eight samples).
+template <class Roots, class Real, int N, class J, class H>
+ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, N>& candidates, const J& jet,
+                              const H& h, Real radius, Real scale, int samples = kArcSamples) {
+  ArcCandidates<Real> starts;
+  if (!(span.angle >= 0) || !std::isfinite(span.lo())) {  // a NaN angle or normal: no answer, NaN
+    ArcMinima<Real> none;
+    none.best = Minimum<Real>{span.lo(), std::numeric_limits<Real>::quiet_NaN()};
+    return none;
+  }
+  for (int k = 0; k <= samples; ++k) starts.push(k == samples ? span.hi() : span.lo() + span.angle * k / samples);
+  for (int i = 0; i < candidates.count; ++i) {
+    const Real t = span.offset(candidates.value[i]);
+    if (t <= span.angle) starts.push(span.lo() + t);
+  }
+  return polish_offsets<Roots>(jet, h, starts, Real(1e-3), span.lo(), span.hi(), parameter_tolerance(radius, scale),
+                               screening_margin(scale), pi_v<Real>());
+}
+
+// An arc (or a circle, ArcSpan(Circle3)) against a ring or a disk (Target, round_target.hpp):
+// the arc's circle seen from the round (LocalCircle, CircleOverRound: the distance and jet that
+// circle-circle and circle-disk polish on), the whole circle's candidates from those queries,
+// searched under the arc's own bound.
+template <class Real, class Target> struct ArcRoundQuery {
+  using Shape = typename Target::Shape;
+
+  template <class Roots>
+  static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale) {
+    const CircleOverRound<Real> view(c, radius);
+    const auto h = [&](Real t) { return view.template distance<Target>(t); };
+    const auto jet = [&](Real t) { return view.template jet<Target>(t); };
+    const Real bound = arc_bound(span, h);
+    if constexpr (Target::interior) {
+      using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
+      const auto heights = CircleDisk::template height_candidates<Roots>(c, scale);
+      return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, bound), jet, h,
+                                  c.radius, scale);
+    } else {
+      using CircleCircle = Query<Circle3<Real>, Circle3<Real>>;
+      const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
+      return polish_on_arc<Roots>(
+          span, CircleCircle::template candidates<Roots>(view, scale, bound, sampled_distances(c, squared)), jet, h,
+          c.radius, scale);
+    }
+  }
+
+  // The arc first.
+  template <class Roots> static Real distance(const Arc3<Real>& arc, const Shape& shape) {
+    const Round<Real> round(shape.center, shape.normal, shape.radius);
+    const LocalCircle<Real> c(arc_circle(arc), round);
+    return solve<Roots>(ArcSpan<Real>(arc), c, shape.radius, circle_round_scale(c, shape.radius)).best.value;
+  }
+
+  template <class Roots> static Result<Real> closest(const Arc3<Real>& arc, const Shape& shape) {
+    const Round<Real> round(shape.center, shape.normal, shape.radius);
+    const LocalCircle<Real> c(arc_circle(arc), round);
+    const ArcSpan<Real> span(arc);
+    const Real scale = circle_round_scale(c, shape.radius);
+    const ArcMinima<Real> minima = solve<Roots>(span, c, shape.radius, scale);
+    Result<Real> r = circle_round_result<Target>(arc_circle(arc), c, round, minima, scale);
+    r.param_a = span.param(minima.best.x);
+    return r;
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Arc B as the target of a moving point, in B's round frame (center at the origin, normal
+// along z): its distance is point-arc's (above), the ring's where the point's angle falls on the
+// arc, else the nearer end's. Against arc B, A is parametrized (an arc, or a circle as the arc of
+// all its angles) and its candidates are circle-circle's against B's ring and B's ends' own
+// stationary angles on A. (Where A's point crosses from the ring's form to an end's, the distance
+// is C^1, both forms having the gradient (P - E) / |P - E|: a minimum there is a root of the ring's
+// octic too, docs/arc.md.)
+template <class Real> struct ArcTarget {
+  ArcSpan<Real> span;
+  Real radius;
+  Vec3<Real> end[2];
+
+  explicit ArcTarget(const Arc3<Real>& b)
+      : span(b), radius(b.radius), end{ArcSpan<Real>::local(b.radius, span.lo()), ArcSpan<Real>::local(b.radius, span.hi())} {}
+
+  // -1 where the ring's point is on the arc, else the nearer end's index.
+  int nearest_end(const Vec3<Real>& p) const {
+    if (span.holds(detail::atan2(p.y(), p.x()))) return -1;
+    return (p - end[0]).squaredNorm() <= (p - end[1]).squaredNorm() ? 0 : 1;
+  }
+
+  // The arc's point closest to p. On the axis (within rounding, at the scene's `scale`) every
+  // point is as close: the start, and `ambiguous`.
+  Vec3<Real> point(const Vec3<Real>& p, Real scale, bool& ambiguous) const {
+    if (length2d(p.x(), p.y()) <= 8 * std::numeric_limits<Real>::epsilon() * scale) {
+      ambiguous = ambiguous || radius > 0;
+      return end[0];
+    }
+    const int e = nearest_end(p);
+    return e < 0 ? RingTarget<Real>::point(p, radius, scale, ambiguous) : end[e];
+  }
+  // The parameter (t, 0) of one of its points.
+  Vec2<Real> param(const Vec3<Real>& q) const { return Vec2<Real>(span.param_of(detail::atan2(q.y(), q.x())), 0); }
+};
+
+// The squared distance from a moving point P to a fixed point E and its derivatives.
+template <class Real>
+Jet<Real> point_jet(const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2, const Vec3<Real>& e) {
+  const Vec3<Real> d = p - e;
+  return {d.squaredNorm(), 2 * d.dot(p1), 2 * (p1.squaredNorm() + d.dot(p2))};
+}
+
+// The angle on circle c (LocalCircle: P(t) = O + E1 cos t + E2 sin t, |E1| = |E2|, E1.E2 = 0) of the
+// point nearest a point q: the angle of q - O in the basis E1, E2 (none when q is on the axis).
+template <class Real, int N> void push_nearest_angle(const LocalCircle<Real>& c, const Vec3<Real>& q, Candidates<Real, N>& out) {
+  const Vec3<Real> d = q - c.center;
+  const Real x = d.dot(c.e1), y = d.dot(c.e2);
+  if (x != 0 || y != 0) out.push(std::atan2(y, x));
+}
+
+template <class Real> struct ArcArcQuery {
+  // A (span: an arc, or a circle whole) parametrized against arc B.
+  template <class Roots>
+  static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, const ArcTarget<Real>& target,
+                               Real scale) {
+    const CircleOverRound<Real> view(c, target.radius);
+    const auto h = [&](Real t) {
+      const Vec3<Real> p = c.at(t);
+      const int e = target.nearest_end(p);
+      return e < 0 ? view.template distance<RingTarget<Real>>(t) : (p - target.end[e]).norm();
+    };
+    const auto jet = [&](Real t) {
+      const Real cs = std::cos(t), sn = std::sin(t);
+      const Vec3<Real> w = cs * c.e1 + sn * c.e2, p = c.center + w;
+      const int e = target.nearest_end(p);
+      return e < 0 ? view.template jet<RingTarget<Real>>(t) : point_jet(p, Vec3<Real>(cs * c.e2 - sn * c.e1), Vec3<Real>(-w), target.end[e]);
+    };
+    const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, target.radius); };
+    // The ring's octic under a distance A's arc reaches (the arc's distance is at least the
+    // ring's, so every closest pair with B's point inside B lies under it).
+    const auto circle = Query<Circle3<Real>, Circle3<Real>>::template candidates<Roots>(view, scale, arc_bound(span, h),
+                                                                                         sampled_distances(c, squared));
+    ArcCandidates<Real> candidates;
+    for (int i = 0; i < circle.count; ++i) candidates.push(circle.value[i]);
+    for (const Vec3<Real>& e : target.end) push_nearest_angle(c, e, candidates);
+    return polish_on_arc<Roots>(span, candidates, jet, h, c.radius, scale);
+  }
+
+  // A (an arc or a circle: `a` its circle, `span` its angles) against arc b.
+  template <class Roots> static Real distance(const Circle3<Real>& a, const ArcSpan<Real>& span, const Arc3<Real>& b) {
+    const Round<Real> round(b.center, b.normal, b.radius);
+    const LocalCircle<Real> c(a, round);
+    return solve<Roots>(span, c, ArcTarget<Real>(b), circle_round_scale(c, b.radius)).best.value;
+  }
+
+  // The same with its closest points; A's parameter is its span's (an arc's t; a circle's angle).
+  template <class Roots>
+  static Result<Real> closest(const Circle3<Real>& a, const ArcSpan<Real>& span, const Arc3<Real>& b, bool a_is_arc) {
+    const Round<Real> round(b.center, b.normal, b.radius);
+    const LocalCircle<Real> c(a, round);
+    const ArcTarget<Real> target(b);
+    const Real scale = circle_round_scale(c, b.radius);
+    const ArcMinima<Real> minima = solve<Roots>(span, c, target, scale);
+    const Real best = minima.best.x;
+    const auto at = [&](Real t) { return c.at(t); };
+    const auto arc_point = [&](const Vec3<Real>& q, bool& ambiguous) { return target.point(q, scale, ambiguous); };
+    const Vec3<Real> pa = c.at(best);
+    bool ambiguous = false;
+    const Vec3<Real> pb = arc_point(pa, ambiguous);
+    ambiguous = ambiguous || another_closest_pair(minima, scale, at, arc_point, pa, pb,
+                                                  distinct_points_tolerance(std::min(scale, c.radius)),
+                                                  distinct_points_tolerance(scale));
+    Result<Real> r;
+    r.distance = minima.best.value;
+    r.point_a = span.world(a.center, a.radius, best);
+    r.param_a = a_is_arc ? span.param(best) : Vec2<Real>(wrap_angle(best), 0);
+    r.point_b = round.world(pb);
+    r.param_b = target.param(pb);
+    r.unique = !ambiguous;
+    return r;
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Lines, rays and segments against an arc: the arc parametrized, the piece's exact distance
+// (docs/arc.md, "A line, ray or segment").
+
+// The piece seen from the arc's circle's frame (LocalLinear: anchored at its point nearest the
+// center, a unit direction m, tau in [lo, hi]): the distance from a local point (|w x m| for
+// w = p - a when p's foot lies on the piece, else the distance to the nearer end), its square's
+// jet along the arc, and the piece's closest point.
+template <class Real> struct PieceOverArc {
+  const LocalLinear<Real>& line;
+
+  Real clamped(Real tau) const { return std::min(std::max(tau, line.lo), line.hi); }
+  bool inside(Real tau) const { return !line.is_point && tau >= line.lo && tau <= line.hi; }
+  Real tau_of(const Vec3<Real>& p) const { return line.is_point ? Real(0) : clamped((p - line.anchor).dot(line.dir)); }
+  Vec3<Real> point(const Vec3<Real>& p) const { return line.anchor + tau_of(p) * line.dir; }
+
+  Real distance(const Vec3<Real>& p) const {
+    const Vec3<Real> w = p - line.anchor;
+    const Real tau = w.dot(line.dir);
+    if (inside(tau)) return w.cross(line.dir).norm();
+    return (w - clamped(tau) * line.dir).norm();
+  }
+  Jet<Real> jet(const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2) const {
+    const Vec3<Real> w = p - line.anchor;
+    const Real tau = w.dot(line.dir);
+    if (!inside(tau)) return point_jet(p, p1, p2, Vec3<Real>(line.anchor + clamped(tau) * line.dir));
+    const Vec3<Real> q = w.cross(line.dir), q1 = p1.cross(line.dir), q2 = p2.cross(line.dir);
+    return {q.squaredNorm(), 2 * q.dot(q1), 2 * (q1.squaredNorm() + q.dot(q2))};
+  }
+};
+
+// The candidate angles of a piece against the arc's circle (radius R, its frame: P = R (cos, sin, 0)):
+// with w = P - a and L = w.m = R (m_x cos + m_y sin) - a.m, the squared distance to the full line
+// f = |w|^2 - L^2 has f' / 2 = R (a_x sin - a_y cos) - L L', trigonometric of degree 2 (a quartic
+// in tan(theta / 2)); beyond an end (the foot L past lo or hi) the distance is the end's, least at
+// the end's own angle (where it changes form the distance is C^1: a minimum there is a root of
+// f' too, docs/arc.md). Plus t = 0 and pi (the half-angle substitution's blind spot). In units
+// of `scale`.
+template <class Roots, class Real, int N>
+void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real scale, Candidates<Real, N>& out) {
+  push_circle_candidates(out);
+  const auto push_end = [&](Real tau) {
+    const Vec3<Real> e = line.at(tau);
+    if (e.x() != 0 || e.y() != 0) out.push(std::atan2(e.y(), e.x()));
+  };
+  if (line.is_point) {
+    push_end(Real(0));
+    return;
+  }
+  const Vec3<Real> a = line.anchor / scale;
+  const Vec3<Real>& m = line.dir;
+  const Real r = radius / scale;
+  Trig<Real, 1> along;
+  along.c[0] = -a.dot(m);
+  along.c[1] = r * m.x();
+  along.s[1] = r * m.y();
+  Trig<Real, 2> slope = Real(-1) * (along * along.derivative());
+  slope.c[1] -= r * a.y();
+  slope.s[1] += r * a.x();
+  push_trig_roots<Roots>(slope, out);
+  for (const Real tau : {line.lo, line.hi})
+    if (std::isfinite(tau)) push_end(tau);
+}
+
+template <class Real, class Piece> struct PieceArcQuery {
+  static constexpr bool defined = true;
+  using Circle = Query<Piece, Circle3<Real>>;
+  using Point = Query<Vec3<Real>, Piece>;
+
+  template <class Roots>
+  static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalLinear<Real>& line, Real radius, Real scale) {
+    const PieceOverArc<Real> piece{line};
+    const auto h = [&](Real t) { return piece.distance(ArcSpan<Real>::local(radius, t)); };
+    const auto jet = [&](Real t) {
+      const Real cs = std::cos(t), sn = std::sin(t);
+      const Vec3<Real> p(radius * cs, radius * sn, 0);
+      return piece.jet(p, Vec3<Real>(-radius * sn, radius * cs, 0), Vec3<Real>(-p));
+    };
+    Candidates<Real, 24> candidates;
+    push_piece_arc_candidates<Roots>(line, radius, scale, candidates);
+    return polish_on_arc<Roots>(span, candidates, jet, h, radius, scale, 1);
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Arc3<Real>& arc) {
+    if (whole_arc(arc)) return Circle::template distance<Roots>(piece, arc_circle(arc));
+    if (!(arc.radius > 0)) return Point::template distance<Roots>(arc.center, piece);
+    const Round<Real> round(arc.center, arc.normal, arc.radius);
+    const LocalLinear<Real> line(as_linear(piece), round);
+    return solve<Roots>(ArcSpan<Real>(arc), line, arc.radius, linear_round_scale(line, arc.radius)).best.value;
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Arc3<Real>& arc) {
+    const ArcSpan<Real> span(arc);
+    if (whole_arc(arc)) return as_arc_result(Circle::template closest<Roots>(piece, arc_circle(arc)), span, 1);
+    if (!(arc.radius > 0)) return Point::template closest<Roots>(arc.center, piece).swapped();
+    const Round<Real> round(arc.center, arc.normal, arc.radius);
+    const Linear<Real> linear = as_linear(piece);
+    const LocalLinear<Real> line(linear, round);
+    const Real scale = linear_round_scale(line, arc.radius);
+    const ArcMinima<Real> minima = solve<Roots>(span, line, arc.radius, scale);
+    const PieceOverArc<Real> over{line};
+    const Real best = minima.best.x;
+    const auto at = [&](Real t) { return ArcSpan<Real>::local(arc.radius, t); };
+    const auto piece_point_of = [&](const Vec3<Real>& q, bool&) { return over.point(q); };
+    const Vec3<Real> pa = at(best);
+    const Vec3<Real> pb = over.point(pa);
+    Result<Real> r;
+    r.distance = minima.best.value;
+    Real t;
+    r.point_a = piece_point(linear, line, round, over.tau_of(pa), t);
+    r.param_a = Vec2<Real>(t, 0);
+    r.point_b = span.world(arc.center, arc.radius, best);
+    r.param_b = span.param(best);
+    r.unique = !another_closest_pair(minima, scale, at, piece_point_of, pa, pb,
+                                     distinct_points_tolerance(std::min(scale, arc.radius)),
+                                     distinct_points_tolerance(scale));
+    return r;
+  }
+};
+
+template <class Real> struct Query<Line3<Real>, Arc3<Real>> : PieceArcQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Arc3<Real>> : PieceArcQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Arc3<Real>> : PieceArcQuery<Real, Segment3<Real>> {};
+
+// ---------------------------------------------------------------------------------------------
+// Circle and disk against an arc. A disk: the arc parametrized against it (circle-disk's
+// candidates on the arc). A circle: the smaller of the two parametrized, as circle-circle does
+// (its angle features are then never narrower than the other's): the arc against the ring, or
+// the circle, whole, against the arc (ArcArcQuery).
+template <class Real, class Round3> struct RoundArcQuery {
+  static constexpr bool defined = true;
+  using Target = target_t<Round3>;
+  using Whole = Query<Circle3<Real>, Round3>;  // the arc whole: its circle against the round
+
+  static bool round_parametrized(const Round3& round, const Arc3<Real>& arc) {
+    return !Target::interior && round.radius < arc.radius;
+  }
+
+  template <class Roots = DefaultRoots> static Real distance(const Round3& round, const Arc3<Real>& arc) {
+    if (whole_arc(arc)) return Whole::template distance<Roots>(arc_circle(arc), round);
+    if (!(arc.radius > 0)) return Query<Vec3<Real>, Round3>::template distance<Roots>(arc.center, round);
+    if (round_parametrized(round, arc)) {
+      const Circle3<Real> c{round.center, round.normal, round.radius};
+      return ArcArcQuery<Real>::template distance<Roots>(c, ArcSpan<Real>(c), arc);
+    }
+    return ArcRoundQuery<Real, Target>::template distance<Roots>(arc, round);
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Round3& round, const Arc3<Real>& arc) {
+    if (whole_arc(arc))
+      return as_arc_result(Whole::template closest<Roots>(arc_circle(arc), round), ArcSpan<Real>(arc), 0).swapped();
+    if (!(arc.radius > 0)) return Query<Vec3<Real>, Round3>::template closest<Roots>(arc.center, round).swapped();
+    if (round_parametrized(round, arc)) {
+      const Circle3<Real> c{round.center, round.normal, round.radius};
+      return ArcArcQuery<Real>::template closest<Roots>(c, ArcSpan<Real>(c), arc, false);
+    }
+    return ArcRoundQuery<Real, Target>::template closest<Roots>(arc, round).swapped();
+  }
+};
+
+template <class Real> struct Query<Circle3<Real>, Arc3<Real>> : RoundArcQuery<Real, Circle3<Real>> {};
+template <class Real> struct Query<Disk3<Real>, Arc3<Real>> : RoundArcQuery<Real, Disk3<Real>> {};
+
+// ---------------------------------------------------------------------------------------------
+// Arc against arc: the smaller parametrized against the other (ArcArcQuery); an arc that is
+// whole is a circle (Query<Circle3, Arc3>), a zero radius a point.
+template <class Real> struct Query<Arc3<Real>, Arc3<Real>> {
+  static constexpr bool defined = true;
+  using CircleArc = Query<Circle3<Real>, Arc3<Real>>;
+
+  static bool first_parametrized(const Arc3<Real>& a, const Arc3<Real>& b) { return a.radius <= b.radius; }
+
+  template <class Roots = DefaultRoots> static Real distance(const Arc3<Real>& a, const Arc3<Real>& b) {
+    if (whole_arc(a)) return CircleArc::template distance<Roots>(arc_circle(a), b);
+    if (whole_arc(b)) return CircleArc::template distance<Roots>(arc_circle(b), a);
+    if (!(a.radius > 0)) return Query<Vec3<Real>, Arc3<Real>>::template distance<Roots>(a.center, b);
+    if (!(b.radius > 0)) return Query<Vec3<Real>, Arc3<Real>>::template distance<Roots>(b.center, a);
+    return first_parametrized(a, b) ? ArcArcQuery<Real>::template distance<Roots>(arc_circle(a), ArcSpan<Real>(a), b)
+                                    : ArcArcQuery<Real>::template distance<Roots>(arc_circle(b), ArcSpan<Real>(b), a);
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Arc3<Real>& a, const Arc3<Real>& b) {
+    if (whole_arc(a)) return as_arc_result(CircleArc::template closest<Roots>(arc_circle(a), b), ArcSpan<Real>(a), 0);
+    if (whole_arc(b))
+      return as_arc_result(CircleArc::template closest<Roots>(arc_circle(b), a), ArcSpan<Real>(b), 0).swapped();
+    if (!(a.radius > 0)) return Query<Vec3<Real>, Arc3<Real>>::template closest<Roots>(a.center, b);
+    if (!(b.radius > 0)) return Query<Vec3<Real>, Arc3<Real>>::template closest<Roots>(b.center, a).swapped();
+    return first_parametrized(a, b)
+               ? ArcArcQuery<Real>::template closest<Roots>(arc_circle(a), ArcSpan<Real>(a), b, true)
+               : ArcArcQuery<Real>::template closest<Roots>(arc_circle(b), ArcSpan<Real>(b), a, true).swapped();
+  }
+};
+
+}  // namespace circledist
