@@ -278,7 +278,7 @@ Shape gather(const Shape& s, const FieldElements& e, const Index* rows, Index co
     g.array = decltype(f.array)(shape);
     g.batch = {count};
     g.is_widened = false;
-    g.widened = Field::Wide();
+    g.widened = no_array<Field::Wide>();
     Copy c{f.data(), g.array.mutable_data(), nullptr, nullptr, f.width, k};
     if (f.is_wide) {
       g.wide = Field::Wide(shape);
