@@ -633,7 +633,8 @@ struct SceneBroadphase {
   // Adds the items numbered on from len(self): parts are (shape, items, group, first row), element
   // k of the shape (flat) being item items[k], at row first + k of its group; the parts' items
   // together are the new numbers, each once.
-  void add(const py::list& parts, int workers) {
+  void add(const py::list& parts, int workers_given) {
+    const int workers = workers_of(workers_given);
     struct Part {
       const Shape* shape;
       py::array_t<Index, py::array::c_style | py::array::forcecast> items;
@@ -729,7 +730,8 @@ struct SceneBroadphase {
   // every step on the workers but the list's making (Python objects: the GIL's, here in C, a
   // fraction of what a Python loop over the pairs took). `groups`: the scene's groups as whole
   // batches, in the numbering add() was given; `names`: the items' names.
-  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, int workers) {
+  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, int workers_given) {
+    const int workers = workers_of(workers_given);
     if (Index(names.size()) != tree.size()) throw py::value_error("_Broadphase.pairs_within: one name per item");
     std::vector<const Shape*> shapes;
     for (py::handle g : groups) shapes.push_back(&constructed(g));

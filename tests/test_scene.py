@@ -293,6 +293,9 @@ def test_pairs_within_gives_the_same_pairs_for_every_worker_count():
         fresh.__setstate__(state)
         assert fresh.pairs_within(0.3, workers=workers) == expected
         assert fresh.pairs_within(0.3, workers=workers) == expected  # the hierarchy built
+    assert scene.pairs_within(0.3, workers=-1) == expected
+    with pytest.raises(ValueError, match="workers must be a positive integer or -1"):
+        scene.pairs_within(0.3, workers=0)
 
 
 def test_adds_between_queries_grow_the_hierarchy_and_answers_stay_brute_force():
