@@ -54,6 +54,7 @@ def main():
     ap.add_argument("--no-write", action="store_true", help="print only")
     args = ap.parse_args()
 
+    load = os.getloadavg()
     rng = np.random.default_rng(2026)
     rows = []
     for n in args.sizes:
@@ -140,7 +141,8 @@ def main():
         f"`Scene.within(line, {args.within:g})`; brute force computes every line–disk distance in one",
         "batched `cd.distance` call. *distances* counts exact distance evaluations, *solves* polynomial",
         "solves (`cd.stats()`); the Scene's answers are checked equal to brute force. Best of",
-        f"{args.repeats} runs, on {machine}.",
+        f"{args.repeats} runs, on {machine}; load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start"
+        + (" (other work shared the machine: times are a busy machine's)." if load[0] > 1.5 else "."),
         "",
         table,
         "",
