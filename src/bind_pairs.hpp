@@ -808,6 +808,9 @@ struct SceneBroadphase {
     for (size_t k = 0; k < kept.size(); ++k) {
       PyObject* pair = PyTuple_Pack(2, PyList_GET_ITEM(names.ptr(), kept[k].first), PyList_GET_ITEM(names.ptr(), kept[k].second));
       if (!pair) throw py::error_already_set();
+      // A pair of strings is in no cycle: left out of the collector's lists (CPython untracks
+      // such tuples itself, lazily, in its collections, which 210k new tuples would set off).
+      PyObject_GC_UnTrack(pair);
       PyList_SET_ITEM(out.ptr(), Py_ssize_t(k), pair);
     }
     return py::make_tuple(out, m);
