@@ -4,9 +4,10 @@
 ``circledist.pairs_within`` and ``circledist.nearest`` use (the C++ header
 ``circledist/broadphase.hpp``): a bounding-volume hierarchy over the shapes' boxes and balls,
 which the shapes added since the last query join at the next query (it grows: a few trees,
-merged as they grow, so adds and queries may alternate at O(log^2 n) per shape amortized). A shape or a pair is skipped only when a lower bound on
-its distance (box gap, ball gap, distance from a line to a ball) exceeds the limit by a margin
-far above rounding, so every answer is the one brute force gives: the exact tests that remain go
+merged as they grow, so adds and queries may alternate at O(log^2 n) per shape amortized). A
+shape or a pair is skipped only when a lower bound on its distance (box gap, ball gap, distance
+from a line to a ball) exceeds the limit by a margin far above rounding, so every answer is the
+one brute force gives: the exact tests that remain go
 through ``circledist.within`` / ``circledist.distance_if_within``, which try cheap exact bounds
 again before they solve a polynomial.
 
