@@ -163,16 +163,22 @@ ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precisio
 }
 
 // within() (a bool per element) or, with `want_distance`, distance_if_within() (the distance,
-// inf beyond the limit d), over the broadcast of a, b and `limit`.
+// inf beyond the limit d), over the broadcast of two shapes already read and `limit` (also the
+// scene's all-pairs kernel, bind_pairs.hpp, which reports its progress elsewhere).
+py::object shapes_within(const Shape& a, const Shape& b, const Shape& limit, bool want_distance, const Choice& c,
+                         py::handle progress) {
+  auto within = [want_distance](const auto& call) { return want_distance ? call.distance() : call.within(); };
+  if (!c.single()) return with_call(a, b, &limit, c, within, progress);
+  const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
+  const Shape fd(limit.kind, {rounded_to_float("within", limit.fields[0])});
+  return to_float32(with_call(fa, fb, &fd, c, within, progress), "distance_if_within", "the distance", 1, false);
+}
+
 py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
                       const py::object& solver, int workers, const py::object& progress) {
   const Argument x(a), y(b);
   const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
-  auto within = [want_distance](const auto& call) { return want_distance ? call.distance() : call.within(); };
-  if (!c.single()) return with_call(*x.shape, *y.shape, &limit, c, within);
-  const Shape fa = rounded_to_float(*x.shape), fb = rounded_to_float(*y.shape);
-  const Shape fd(limit.kind, {rounded_to_float("within", limit.fields[0])});
-  return to_float32(with_call(fa, fb, &fd, c, within), "distance_if_within", "the distance", 1, false);
+  return shapes_within(*x.shape, *y.shape, limit, want_distance, c, c.progress);
 }
 
 py::typing::Tuple<py::int_, py::ellipsis> batch_tuple(py::handle self) {

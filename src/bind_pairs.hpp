@@ -278,7 +278,7 @@ Shape gather(const Shape& s, const FieldElements& e, const Index* rows, Index co
     g.array = decltype(f.array)(shape);
     g.batch = {count};
     g.is_widened = false;
-    g.widened = Field::Wide();
+    g.widened = no_array<Field::Wide>();
     Copy c{f.data(), g.array.mutable_data(), nullptr, nullptr, f.width, k};
     if (f.is_wide) {
       g.wide = Field::Wide(shape);
@@ -326,10 +326,13 @@ struct Side {
 
 // The distances of the pairs (a[i], b[j]) of a list, in blocks (bounded memory), through the
 // distance kernels; Real is the answers' type (float for float32, whose answers are rounded).
+// Given a `limit` (a scene's pairs), within(a[i], b[j], limit) instead, through the within
+// kernels: Real is then bool.
 template <class Real> struct Evaluator {
   const Shape& a;
   const Shape& b;
   const Choice& choice;
+  const Shape* limit = nullptr;
   FieldElements ea{a}, eb{b};
   static constexpr Index kBlock = Index(1) << 20;
 
@@ -353,18 +356,24 @@ template <class Real> struct Evaluator {
       const Shape ga = gather(a, ea, rows_a.data(), count, choice.workers);
       const Shape gb = gather(b, eb, rows_b.data(), count, choice.workers);
       // Both single shapes (one element each) answer with a scalar: made an array of the block.
+      const py::object part = progress.part(stage, start, count, Index(pairs.size()));
       const py::object answer = py::module_::import("numpy").attr("broadcast_to")(
-          py::module_::import("numpy").attr("asarray")(shapes_distance(ga, gb, choice, progress.part(stage, start, count, Index(pairs.size())))).attr("reshape")(-1),
+          py::module_::import("numpy").attr("asarray")(limit ? shapes_within(ga, gb, *limit, false, choice, part)
+                                                             : shapes_distance(ga, gb, choice, part)).attr("reshape")(-1),
           py::make_tuple(count));
       const auto values = py::array_t<Real, py::array::c_style | py::array::forcecast>::ensure(answer);
       block(start, count, values.data());
     }
   }
 
-  // Calls take(k, distance) for every pair k of the list, in order.
+  // Calls take(k, answer) for every pair k of the list, on the workers (the GIL released): take
+  // must be safe to call for distinct k side by side.
   template <class Take> void run(const PairList& pairs, const StagedProgress& progress, int stage, Take&& take) const {
     run_blocks(pairs, progress, stage, [&](Index start, Index count, const Real* d) {
-      for (Index k = 0; k < count; ++k) take(start + k, d[k]);
+      py::gil_scoped_release release;
+      run_in_chunks(count, choice.workers, [&](Index first, Index last) {
+        for (Index k = first; k < last; ++k) take(start + k, d[k]);
+      }, [](Index) { return false; });  // a pass over the block: milliseconds
     });
   }
 };
@@ -422,6 +431,28 @@ template <class Real> bool at_most(Real distance, double d) {
   else return double(distance) <= d;
 }
 
+// The elements k of [0, count) for which keep(k) holds, in order, on `workers` threads (the GIL
+// released): each slice counts its own, make_room(total) is called once, then each slice calls
+// put(k, at) for its kept elements, `at` their rank among all kept ones.
+template <class Keep, class Room, class Put> void keep_in_order(Index count, int workers, Keep&& keep, Room&& make_room, Put&& put) {
+  const Index slice = 16384;
+  std::vector<Index> kept(size_t((count + slice - 1) / slice) + 1, 0);
+  const auto no_interrupt = [](Index) { return false; };  // a pass over the elements: milliseconds
+  py::gil_scoped_release release;
+  run_in_chunks(count, workers, [&](Index first, Index last) {
+    Index within = 0;
+    for (Index k = first; k < last; ++k) within += keep(k) ? 1 : 0;
+    kept[size_t(first / slice) + 1] = within;
+  }, no_interrupt, slice);
+  for (size_t s = 1; s < kept.size(); ++s) kept[s] += kept[s - 1];
+  make_room(kept.back());
+  run_in_chunks(count, workers, [&](Index first, Index last) {
+    Index at = kept[size_t(first / slice)];
+    for (Index k = first; k < last; ++k)
+      if (keep(k)) put(k, at++);
+  }, no_interrupt, slice);
+}
+
 template <class Real>
 py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice& c) {
   const Shape& other = b ? *b : a;
@@ -443,37 +474,39 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice
   std::vector<Index> is, js;
   std::vector<Real> distances;
   Evaluator<Real>{a, other, c}.run_blocks(candidates, progress, 1, [&](Index start, Index count, const Real* dist) {
-    // The block's pairs within d, appended in order: each slice of the block counts its own, then
-    // writes them at the offset the slices before it leave.
-    const Index slice = 16384;
-    std::vector<Index> kept(size_t((count + slice - 1) / slice) + 1, 0);
-    const auto no_interrupt = [](Index) { return false; };  // a pass over the block: milliseconds
-    py::gil_scoped_release release;
-    run_in_chunks(count, c.workers, [&](Index first, Index last) {
-      Index within = 0;
-      for (Index k = first; k < last; ++k) within += at_most(dist[k], d);
-      kept[size_t(first / slice) + 1] = within;
-    }, no_interrupt, slice);
-    for (size_t s = 1; s < kept.size(); ++s) kept[s] += kept[s - 1];
+    // The block's pairs within d, appended in order.
     const size_t base = is.size();
-    is.resize(base + size_t(kept.back()));
-    js.resize(is.size());
-    distances.resize(is.size());
-    run_in_chunks(count, c.workers, [&](Index first, Index last) {
-      size_t at = base + size_t(kept[size_t(first / slice)]);
-      for (Index k = first; k < last; ++k) {
-        if (!at_most(dist[k], d)) continue;
-        is[at] = candidates[size_t(start + k)].first;
-        js[at] = candidates[size_t(start + k)].second;
-        distances[at++] = dist[k];
-      }
-    }, no_interrupt, slice);
+    keep_in_order(count, c.workers, [&](Index k) { return at_most(dist[k], d); }, [&](Index total) {
+      is.resize(base + size_t(total));
+      js.resize(is.size());
+      distances.resize(is.size());
+    }, [&](Index k, Index at) {
+      is[base + size_t(at)] = candidates[size_t(start + k)].first;
+      js[base + size_t(at)] = candidates[size_t(start + k)].second;
+      distances[base + size_t(at)] = dist[k];
+    });
   });
   stats().culled += std::uint64_t(std::max<Index>(
       0, (b ? flat_size(a) * flat_size(*b) : flat_size(a) * (flat_size(a) - 1) / 2) - Index(candidates.size())));
   progress.finish();
   const Index m = Index(is.size());
   return py::make_tuple(to_array(is, {m}), to_array(js, {m}), to_array(distances, {m}));
+}
+
+// Where each query's pairs start in a list sorted by query: start[i] for i in [0, n], start[n] the
+// list's end; the chunks of queries find theirs side by side.
+std::vector<size_t> starts_of(const PairList& pairs, Index n, int workers) {
+  std::vector<size_t> start(size_t(n) + 1, pairs.size());
+  py::gil_scoped_release release;
+  run_in_chunks(n, workers, [&](Index first, Index last) {
+    size_t at = size_t(std::lower_bound(pairs.begin(), pairs.end(), first, [](const auto& p, Index i) { return p.first < i; }) -
+                       pairs.begin());
+    for (Index i = first; i < last; ++i) {
+      while (at < pairs.size() && pairs[at].first < i) ++at;
+      start[size_t(i)] = at;
+    }
+  }, [](Index) { return false; });  // bisections and a pass: milliseconds
+  return start;
 }
 
 template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index k, const Choice& c) {
@@ -484,6 +517,7 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   const Index n = Index(va.size()), nb = tree.size(), kk = std::min(k, nb);
   const double scale = std::max(tree.scale(), culling.scale_a);
   const Evaluator<Real> evaluate{a, b, c};
+  const auto no_interrupt = [](Index) { return false; };  // passes over the queries: milliseconds
   // Four stages: the first search and its distances, the second search and its distances.
   const StagedProgress progress(c.progress, 4, n);
   // 1. The kk shapes of smallest lower bound: their largest exact distance, tau, bounds the
@@ -494,45 +528,62 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
       for (const auto& entry : tree.nearest_by_bound(va[size_t(i)], kk)) out.emplace_back(i, entry.second);
     }
   }, progress.stage(0));
-  // Per query, its (distance, index) found so far.
-  std::vector<std::vector<std::pair<Real, Index>>> found(static_cast<size_t>(n));
+  // The lists' distances by position, and where each query's pairs start: every step below is a
+  // pass over the queries, on the workers.
+  std::vector<Real> first_distances(first.size());
+  evaluate.run(first, progress, 1, [&](Index p, Real distance) { first_distances[size_t(p)] = distance; });
+  const std::vector<size_t> first_start = starts_of(first, n, c.workers);
   std::vector<double> tau(static_cast<size_t>(n), -std::numeric_limits<double>::infinity());
-  evaluate.run(first, progress, 1, [&](Index p, Real distance) {
-    const auto [i, j] = first[size_t(p)];
-    found[size_t(i)].emplace_back(distance, j);
-    tau[size_t(i)] = std::max(tau[size_t(i)], double(distance));
-  });
+  {
+    py::gil_scoped_release release;
+    run_in_chunks(n, c.workers, [&](Index begin, Index end) {
+      for (Index i = begin; i < end; ++i)
+        for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
+          tau[size_t(i)] = std::max(tau[size_t(i)], double(first_distances[p]));
+    }, no_interrupt);
+  }
   // 2. Every other shape whose bound is within tau (and the margin): the nearest are among them.
+  PairList second;
+  std::vector<Real> second_distances;
   if (kk < nb) {
-    const PairList second = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
+    second = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
       for (Index p = begin; p < end; ++p) {
         const Index i = order[size_t(p)];
-        const auto& known = found[size_t(i)];
+        const size_t known = first_start[size_t(i)], known_end = first_start[size_t(i) + 1];
         tree.visit_within(va[size_t(i)], cull_limit(tau[size_t(i)], scale, relative_margin(c)), [&](BroadIndex j, double) {
-          for (const auto& e : known)
-            if (e.second == j) return;
+          for (size_t q = known; q < known_end; ++q)
+            if (first[q].second == j) return;
           out.emplace_back(i, j);
         });
       }
     }, progress.stage(2));
-    evaluate.run(second, progress, 3, [&](Index p, Real distance) {
-      const auto [i, j] = second[size_t(p)];
-      found[size_t(i)].emplace_back(distance, j);
-    });
+    second_distances.resize(second.size());
+    evaluate.run(second, progress, 3, [&](Index p, Real distance) { second_distances[size_t(p)] = distance; });
     stats().culled += std::uint64_t(std::max<Index>(0, n * nb - Index(first.size() + second.size())));
   }
   progress.finish();
-  // 3. The k smallest (distance, index) of each query; -1 and inf past the end of b.
+  const std::vector<size_t> second_start = starts_of(second, n, c.workers);
+  // 3. The k smallest (distance, index) of each query's candidates; -1 and inf past the end of b.
   std::vector<Index> indices(static_cast<size_t>(n * k), -1);
   std::vector<Real> distances(static_cast<size_t>(n * k), std::numeric_limits<Real>::infinity());
-  for (Index i = 0; i < n; ++i) {
-    auto& f = found[size_t(i)];
-    const Index take = std::min<Index>(k, Index(f.size()));
-    std::partial_sort(f.begin(), f.begin() + take, f.end());
-    for (Index r = 0; r < take; ++r) {
-      distances[size_t(i * k + r)] = f[size_t(r)].first;
-      indices[size_t(i * k + r)] = f[size_t(r)].second;
-    }
+  {
+    py::gil_scoped_release release;
+    run_in_chunks(n, c.workers, [&](Index begin, Index end) {
+      std::vector<std::pair<Real, Index>> found;
+      for (Index i = begin; i < end; ++i) {
+        found.clear();
+        for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
+          found.emplace_back(first_distances[p], first[p].second);
+        for (size_t p = second_start[size_t(i)]; p < second_start[size_t(i) + 1]; ++p)
+          found.emplace_back(second_distances[p], second[p].second);
+        const Index take = std::min<Index>(k, Index(found.size()));
+        std::partial_sort(found.begin(), found.begin() + take, found.end());
+        for (Index r = 0; r < take; ++r) {
+          distances[size_t(i * k + r)] = found[size_t(r)].first;
+          indices[size_t(i * k + r)] = found[size_t(r)].second;
+        }
+      }
+    }, no_interrupt);
   }
   return py::make_tuple(to_array(indices, {n, k}), to_array(distances, {n, k}));
 }
@@ -571,15 +622,73 @@ py::tuple run_nearest(py::handle a, py::handle b, py::handle k, const py::object
   });
 }
 
-// circledist.Scene's broadphase: the elements of several shapes (a scene's groups), numbered one
-// after the other.
+// circledist.Scene's broadphase: the scene's items (single shapes, numbered in the order they were
+// added) in a GrowingHierarchy, so that adds between queries cost the new shapes' share and not a
+// rebuild; and each item's group (the scene's batch of its kind and dtypes) and row there, which
+// the pairs query gathers its exact tests from.
 struct SceneBroadphase {
-  BoundingVolumeHierarchy<double> tree;
+  GrowingHierarchy<double> tree;
+  std::vector<Index> group, row;
 
-  static SceneBroadphase make(const py::list& shapes, int workers) {
-    std::vector<const Shape*> read;
-    for (py::handle s : shapes) read.push_back(&constructed(s));
-    return {tree_of(volumes_of(read, workers), workers)};
+  // Adds the items numbered on from len(self): parts are (shape, items, group, first row), element
+  // k of the shape (flat) being item items[k], at row first + k of its group; the parts' items
+  // together are the new numbers, each once.
+  void add(const py::list& parts, int workers_given) {
+    const int workers = workers_of(workers_given);
+    struct Part {
+      const Shape* shape;
+      py::array_t<Index, py::array::c_style | py::array::forcecast> items;
+      Index group, first;
+    };
+    std::vector<Part> read;
+    const Index start = tree.size();
+    Index total = 0;
+    for (py::handle p : parts) {
+      const py::tuple t = py::reinterpret_borrow<py::tuple>(p);
+      Part part{&constructed(t[0]), py::array_t<Index, py::array::c_style | py::array::forcecast>::ensure(t[1]),
+                t[2].cast<Index>(), t[3].cast<Index>()};
+      if (!part.items || part.items.size() != flat_size(*part.shape))
+        throw py::value_error("_Broadphase.add: one item number per element of a part's shape");
+      total += part.items.size();
+      read.push_back(std::move(part));
+    }
+    Volumes volumes(static_cast<size_t>(total));
+    group.resize(size_t(start + total));
+    row.resize(group.size());
+    for (const Part& part : read) {
+      const Index count = flat_size(*part.shape);
+      const Index* items = part.items.data();
+      for (Index k = 0; k < count; ++k)
+        if (items[k] < start || items[k] >= start + total)
+          throw py::value_error("_Broadphase.add: item numbers must be the new ones, from len(self) on");
+      // Items in a run (a batch of one kind, or a group's adds alone) are filled in place;
+      // others (a file's mixed kinds) through a buffer.
+      bool run = true;
+      for (Index k = 1; k < count && run; ++k) run = items[k] == items[0] + k;
+      Volumes own(static_cast<size_t>(run ? 0 : count));
+      Volume<double>* to = run && count > 0 ? volumes.data() + (items[0] - start) : own.data();
+      run_released(count, workers, [&](Index begin, Index end) { fill_volumes(*part.shape, begin, end, to); });
+      for (Index k = 0; k < count; ++k) {
+        if (!run) volumes[size_t(items[k] - start)] = own[size_t(k)];
+        group[size_t(items[k])] = part.group;
+        row[size_t(items[k])] = part.first + k;
+      }
+    }
+    py::gil_scoped_release release;
+    tree.add(std::move(volumes), workers);
+  }
+
+  // The groups and rows of items (numbers below len(self)).
+  py::tuple locate(const py::array_t<Index, py::array::c_style | py::array::forcecast>& items) const {
+    const Index n = items.size();
+    py::array_t<Index> groups(n), rows(n);
+    for (Index k = 0; k < n; ++k) {
+      const Index i = items.data()[k];
+      if (i < 0 || i >= tree.size()) throw py::index_error("_Broadphase.locate: no item " + std::to_string(i));
+      groups.mutable_data()[k] = group[size_t(i)];
+      rows.mutable_data()[k] = row[size_t(i)];
+    }
+    return py::make_tuple(groups, rows);
   }
 
   Volume<double> query(py::handle shape) const {
@@ -615,16 +724,96 @@ struct SceneBroadphase {
     return py::make_tuple(to_array(idx, {Index(idx.size())}), to_array(bounds, {Index(bounds.size())}));
   }
 
-  // Candidate pairs i < j of the set within cull_limit(d).
-  py::tuple pairs(double d, int workers) const {
-    const double limit = cull_limit(d, tree.scale());
-    const PairList found = chunked_pairs(tree.size(), workers, [&](Index begin, Index end, PairList& out) {
-      candidate_pairs(tree, limit, begin, end, out);
+  // The pairs (names[i], names[j]) of items i < j for which within(i, j, d) holds, sorted by
+  // (i, j), and how many candidates were tested: the candidates of the merged tree, grouped by
+  // their groups' pair and tested through the within kernels (the path circledist.within takes),
+  // every step on the workers but the list's making (Python objects: the GIL's, here in C, a
+  // fraction of what a Python loop over the pairs took). `groups`: the scene's groups as whole
+  // batches, in the numbering add() was given; `names`: the items' names.
+  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, int workers_given) {
+    const int workers = workers_of(workers_given);
+    if (Index(names.size()) != tree.size()) throw py::value_error("_Broadphase.pairs_within: one name per item");
+    std::vector<const Shape*> shapes;
+    for (py::handle g : groups) shapes.push_back(&constructed(g));
+    const Index G = Index(shapes.size());
+    for (size_t i = 0; i < group.size(); ++i)
+      if (group[i] < 0 || group[i] >= G || row[i] < 0 || row[i] >= flat_size(*shapes[size_t(group[i])]))
+        throw py::value_error("_Broadphase.pairs_within: the groups do not hold the items added");
+    const auto no_interrupt = [](Index) { return false; };  // passes over the candidates: milliseconds
+    const BoundingVolumeHierarchy<double>* all;
+    {
+      py::gil_scoped_release release;
+      all = &tree.merged(workers);
+    }
+    const double limit = cull_limit(d, all->scale());
+    const PairList candidates = chunked_pairs(all->size(), workers, [&](Index begin, Index end, PairList& out) {
+      candidate_pairs(*all, limit, begin, end, out);
     });
-    std::vector<Index> is(found.size());
-    std::vector<Index> js(found.size());
-    for (size_t p = 0; p < found.size(); ++p) is[p] = found[p].first, js[p] = found[p].second;
-    return py::make_tuple(to_array(is, {Index(is.size())}), to_array(js, {Index(js.size())}));
+    // The candidates' positions, bucket after bucket (a bucket per pair of groups), in list order
+    // within each: each slice of the list counts its pairs per bucket, then places them at the
+    // offsets the slices before it leave.
+    const Index m = Index(candidates.size()), buckets = G * G, slice = 65536, slices = (m + slice - 1) / slice;
+    const auto bucket = [&](Index p) {
+      return group[size_t(candidates[size_t(p)].first)] * G + group[size_t(candidates[size_t(p)].second)];
+    };
+    std::vector<Index> at(size_t(slices * buckets), 0), bucket_start(size_t(buckets) + 1, 0);
+    std::vector<Index> placed(static_cast<size_t>(m));
+    {
+      py::gil_scoped_release release;
+      run_in_chunks(m, workers, [&](Index first, Index last) {
+        Index* count = at.data() + (first / slice) * buckets;
+        for (Index p = first; p < last; ++p) ++count[bucket(p)];
+      }, no_interrupt, slice);
+      Index total = 0;
+      for (Index b = 0; b < buckets; ++b) {
+        bucket_start[size_t(b)] = total;
+        for (Index s = 0; s < slices; ++s) {
+          const Index count = at[size_t(s * buckets + b)];
+          at[size_t(s * buckets + b)] = total;
+          total += count;
+        }
+      }
+      bucket_start[size_t(buckets)] = total;
+      run_in_chunks(m, workers, [&](Index first, Index last) {
+        Index* next = at.data() + (first / slice) * buckets;
+        for (Index p = first; p < last; ++p) placed[size_t(next[bucket(p)]++)] = p;
+      }, no_interrupt, slice);
+    }
+    std::vector<char> hit(size_t(m), 0);
+    const Shape limit_d = limit_shape("pairs_within", py::float_(d));
+    const StagedProgress progress(py::none(), 1, m);
+    for (Index b = 0; b < buckets; ++b) {
+      const Index first = bucket_start[size_t(b)], count = bucket_start[size_t(b) + 1] - first;
+      if (count == 0) continue;
+      const Shape &A = *shapes[size_t(b / G)], &B = *shapes[size_t(b % G)];
+      PairList rows(static_cast<size_t>(count));
+      {
+        py::gil_scoped_release release;
+        run_in_chunks(count, workers, [&](Index begin, Index end) {
+          for (Index k = begin; k < end; ++k) {
+            const auto& [i, j] = candidates[size_t(placed[size_t(first + k)])];
+            rows[size_t(k)] = {row[size_t(i)], row[size_t(j)]};
+          }
+        }, no_interrupt);
+      }
+      const Choice choice(py::none(), py::none(), A, B, workers, py::none());
+      Evaluator<bool>{A, B, choice, &limit_d}.run(rows, progress, 0, [&](Index k, bool within) {
+        hit[size_t(placed[size_t(first + k)])] = within;
+      });
+    }
+    PairList kept;
+    keep_in_order(m, workers, [&](Index p) { return hit[size_t(p)] != 0; }, [&](Index total) { kept.resize(size_t(total)); },
+                  [&](Index p, Index at) { kept[size_t(at)] = candidates[size_t(p)]; });
+    py::list out(kept.size());
+    for (size_t k = 0; k < kept.size(); ++k) {
+      PyObject* pair = PyTuple_Pack(2, PyList_GET_ITEM(names.ptr(), kept[k].first), PyList_GET_ITEM(names.ptr(), kept[k].second));
+      if (!pair) throw py::error_already_set();
+      // A pair of strings is in no cycle: left out of the collector's lists (CPython untracks
+      // such tuples itself, lazily, in its collections, which 210k new tuples would set off).
+      PyObject_GC_UnTrack(pair);
+      PyList_SET_ITEM(out.ptr(), Py_ssize_t(k), pair);
+    }
+    return py::make_tuple(out, m);
   }
 };
 
@@ -645,17 +834,23 @@ inline void bind_pairs(py::module_& m) {
       py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kNearest());
 
   py::class_<SceneBroadphase>(m, "_Broadphase",
-                              "The broadphase over a list of shapes' elements, numbered one after the other "
-                              "(used by circledist.Scene).")
-      .def(py::init(&SceneBroadphase::make), py::arg("shapes"), py::arg("workers") = 1)
+                              "The broadphase over a scene's items, numbered in the order added, which can grow "
+                              "between queries (used by circledist.Scene).")
+      .def(py::init<>())
+      .def("add", &SceneBroadphase::add, py::arg("parts"), py::arg("workers") = 1,
+           "Adds items numbered on from len(self): parts are (shape, item numbers, group, first row).")
       .def("__len__", [](const SceneBroadphase& s) { return s.tree.size(); })
       .def_property_readonly("scale", [](const SceneBroadphase& s) { return s.tree.scale(); })
+      .def_property_readonly("trees", [](const SceneBroadphase& s) { return s.tree.trees(); },
+                             "How many trees hold the items (at most log2(len) + 1).")
+      .def("locate", &SceneBroadphase::locate, py::arg("items"), "(groups, rows) of items.")
       .def("limit", &SceneBroadphase::limit, py::arg("shape"), py::arg("d"),
            "cull_limit(d) for a single shape: bounds above it are beyond d.")
       .def("within", &SceneBroadphase::within, py::arg("shape"), py::arg("d"),
            "(indices, lower bounds) of the elements within cull_limit(d) of a single shape, sorted.")
       .def("nearest_by_bound", &SceneBroadphase::nearest_by_bound, py::arg("shape"), py::arg("k"),
            "(indices, lower bounds) of the k elements of smallest lower bound, by bound.")
-      .def("pairs", &SceneBroadphase::pairs, py::arg("d"), py::arg("workers") = 1,
-           "(i, j), i < j: the candidate pairs within cull_limit(d), sorted.");
+      .def("pairs_within", &SceneBroadphase::pairs_within, py::arg("groups"), py::arg("names"), py::arg("d"),
+           py::arg("workers") = 1,
+           "(pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.");
 }

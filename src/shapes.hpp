@@ -20,20 +20,26 @@
 namespace circledist::python {
 
 namespace py = pybind11;
+
+// An array handle holding no object: what a Field's arrays start as. (pybind11's default array_t
+// is a new empty NumPy array: three per field were a fifth of a single shape's construction.)
+template <class A> A no_array() { return py::reinterpret_steal<A>(py::handle()); }
+
 // A field: `width` values per batch element (3 for vectors, 1 for scalars), as float64, and as
 // long double too when it was given as np.longdouble (which float64 would round: a long-double
 // query then reads those values; the other precisions read the float64 ones).
 struct Field {
   using Wide = py::array_t<long double, py::array::c_style | py::array::forcecast>;
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
   const char* name;
-  py::array_t<double, py::array::c_style | py::array::forcecast> array;
+  Array array = no_array<Array>();
   BatchShape batch;
-  Index width;
+  Index width = 0;
   bool single = false;  // given as float32: computing in float reproduces the input exactly
   bool is_wide = false;  // given as np.longdouble (wider than float64): `wide` holds the values
-  Wide wide;
-  mutable bool is_widened = false;  // `widened`: the float64 values as long double, made on a
-  mutable Wide widened;             // long-double query's first use (the GIL held)
+  Wide wide = no_array<Wide>();
+  mutable bool is_widened = false;          // `widened`: the float64 values as long double, made
+  mutable Wide widened = no_array<Wide>();  // on a long-double query's first use (the GIL held)
   const double* data() const { return array.data(); }
   bool has_wide() const { return is_wide; }
 
@@ -88,7 +94,7 @@ inline const NumpyCalls& numpy_calls() {
       for (const char* dtype : {"float64", "longdouble"}) {
         py::dict& kwargs = copy ? (dtype[0] == 'f' ? c->copy_double : c->copy_wide)
                                 : (dtype[0] == 'f' ? c->view_double : c->view_wide);
-        kwargs["dtype"] = py::str(dtype);
+        kwargs["dtype"] = numpy.attr("dtype")(dtype);  // an object: a string is parsed on every call
         kwargs["order"] = py::str("C");
         if (copy) kwargs["copy"] = py::bool_(true);
       }
@@ -134,7 +140,8 @@ inline py::object frozen_copy(const py::object& given, bool wide, bool copy = tr
 
 inline Field make_field(const char* owner, const char* name, py::handle value, Index width, Check check,
                         bool copy = true) {
-  Field f{name, {}, {}, width};
+  Field f{name};
+  f.width = width;
   py::object converted;
   bool real = false;
   try {

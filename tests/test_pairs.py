@@ -186,10 +186,11 @@ def test_every_worker_count_gives_the_same_bits():
     rings = random_batch("Circle", 3000, rng, box=12.0)
     segments = random_batch("Segment", 3000, rng, box=12.0)
     lines = random_batch("Line", 20, rng, box=12.0)
-    results = [cd.pairs_within(rings, segments, 0.2, workers=w) for w in (1, 2, -1)]
-    selfs = [cd.pairs_within(rings, None, 0.1, workers=w) for w in (1, 2, -1)]
-    nears = [cd.nearest(segments, rings, k=3, workers=w) for w in (1, 2, -1)]
-    liness = [cd.pairs_within(lines, rings, 0.05, workers=w) for w in (1, 2, -1)]
+    counts = (1, 2, 3, 7, -1)
+    results = [cd.pairs_within(rings, segments, 0.2, workers=w) for w in counts]
+    selfs = [cd.pairs_within(rings, None, 0.1, workers=w) for w in counts]
+    nears = [cd.nearest(segments, rings, k=3, workers=w) for w in counts]
+    liness = [cd.pairs_within(lines, rings, 0.05, workers=w) for w in counts]
     for group in (results, selfs, nears, liness):
         for other in group[1:]:
             for x, y in zip(group[0], other):

@@ -272,6 +272,73 @@ def test_adding_after_queries_and_mixing_add_and_extend():
     assert scene.pairs_within(0.3, workers=2) == pairs
 
 
+def test_pairs_within_gives_the_same_pairs_for_every_worker_count():
+    """Scene.pairs_within's search, grouping, exact tests and order run on the workers: 1, 2, 3
+    and 7 of them (each on a scene of its own, whose hierarchy they build) give brute force's
+    pairs; Bezier curves and float32 shapes among the groups."""
+    scene, shapes = mixed_scene(31, n=500, box=7.0, kinds=("Disk", "Circle", "Segment", "Point"))
+    rng = np.random.default_rng(31)
+    for k in range(40):
+        c = rng.uniform(-7, 7, 3)
+        s = cd.Circle(np.float32(c), np.float32(rand_dirs(rng, 1)[0]), np.float32(0.5))
+        scene.add(f"f{k}", s)
+        shapes.append(s)
+    names = scene.names
+    expected = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
+                if cd.within(shapes[i], shapes[j], 0.3)]
+    assert len(expected) > 200
+    state = scene.__getstate__()
+    for workers in (1, 2, 3, 7):
+        fresh = cd.Scene()
+        fresh.__setstate__(state)
+        assert fresh.pairs_within(0.3, workers=workers) == expected
+        assert fresh.pairs_within(0.3, workers=workers) == expected  # the hierarchy built
+    assert scene.pairs_within(0.3, workers=-1) == expected
+    with pytest.raises(ValueError, match="workers must be a positive integer or -1"):
+        scene.pairs_within(0.3, workers=0)
+
+
+def test_adds_between_queries_grow_the_hierarchy_and_answers_stay_brute_force():
+    """Single adds and small batches alternating with queries: each query sees every shape
+    (nearest, within, pairs_within equal brute force), the broadphase grows instead of being
+    rebuilt (a few trees, at most log2(n) + 1), and pairs_within merges them."""
+    rng = np.random.default_rng(44)
+    scene = cd.Scene()
+    shapes = []
+    for step in range(400):
+        if step % 25 == 24:
+            count = int(rng.integers(2, 30))
+            batch = cd.Segment(rng.uniform(-6, 6, (count, 3)), rng.uniform(-6, 6, (count, 3)) * 0.1 +
+                               rng.uniform(-6, 6, (count, 3)))
+            scene.extend(f"b{step}_", batch)
+            arrays = batch.to_arrays()
+            shapes += [cd.Segment(arrays["p0"][i], arrays["p1"][i]) for i in range(count)]
+        else:
+            kind = step % 3
+            c = rng.uniform(-6, 6, 3)
+            s = (cd.Disk(c, rand_dirs(rng, 1)[0], rng.uniform(0.1, 0.6)) if kind == 0 else
+                 cd.Point(c, sweep=float(rng.uniform(0, 0.3))) if kind == 1 else
+                 cd.Line(c, rand_dirs(rng, 1)[0]) if step % 30 == 2 else cd.Circle(c, rand_dirs(rng, 1)[0], 0.4))
+            scene.add(f"s{step}", s)
+            shapes.append(s)
+        if step % 7 == 0 or step == 399:
+            probe = cd.Point(rng.uniform(-6, 6, 3))
+            d = np.array([cd.distance(probe, e) for e in shapes])
+            order = np.lexsort((np.arange(len(d)), d))[:3]
+            assert scene.nearest(probe, 3) == [(scene.names[i], d[i]) for i in order]
+            assert scene.within(probe, 1.0) == [scene.names[i] for i in np.flatnonzero(d <= 1.0)]
+            assert 1 <= scene._broadphase.trees <= np.log2(len(shapes)) + 1
+    assert scene._broadphase.trees > 1
+    names = scene.names
+    pairs = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
+             if cd.within(shapes[i], shapes[j], 0.2)]
+    assert scene.pairs_within(0.2, workers=2) == pairs
+    assert scene._broadphase.trees == 1
+    scene.add("last", cd.Point([0, 0, 0]))
+    assert scene.nearest([0, 0, 0])[0] == ("last", 0.0)
+    assert scene._broadphase.trees == 2
+
+
 def as_dtype(shape, dtypes):
     """The shape rebuilt from its arrays, field f in dtypes.get(f) (others as they are)."""
     arrays = {k: np.asarray(v, dtype=dtypes.get(k, v.dtype)) for k, v in shape.to_arrays().items()}

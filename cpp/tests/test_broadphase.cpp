@@ -273,6 +273,45 @@ int main() {
     CHECK(candidate_pairs(three, limit) == expected);
     CHECK(expected.size() > 1000);
   }
+  // A growing hierarchy (batches of 1 to 150 shapes, lines among them, a query after each) answers
+  // as one tree over every shape so far: the same shapes within a limit (with their bounds), the
+  // same k nearest by bound, the same pairs once merged; it keeps at most log2(n) + 1 trees.
+  {
+    const std::vector<Volume<double>> v = volumes_of(random_set(3000, 25.0));
+    const std::vector<Volume<double>> probes = volumes_of(random_set(40, 25.0));
+    GrowingHierarchy<double> growing;
+    BroadIndex added = 0, batches = 0;
+    while (added < BroadIndex(v.size())) {
+      const BroadIndex count = std::min<BroadIndex>(BroadIndex(v.size()) - added, batches % 9 == 8 ? 150 : 1 + batches % 3);
+      growing.add(std::vector<Volume<double>>(v.begin() + added, v.begin() + added + count), 1 + int(batches % 3));
+      added += count;
+      ++batches;
+      CHECK(growing.size() == added);
+      CHECK(double(growing.trees()) <= std::log2(double(added)) + 1);
+      if (batches % 5 != 0 && added < BroadIndex(v.size())) continue;
+      const BoundingVolumeHierarchy<double> one(std::vector<Volume<double>>(v.begin(), v.begin() + added));
+      CHECK(growing.scale() == one.scale());
+      for (const Volume<double>& q : probes) {
+        std::vector<std::pair<BroadIndex, double>> got, expected;
+        const double limit = cull_limit(1.0, growing.scale());
+        growing.visit_within(q, limit, [&](BroadIndex j, double bound) { got.emplace_back(j, bound); });
+        one.visit_within(q, limit, [&](BroadIndex j, double bound) { expected.emplace_back(j, bound); });
+        std::sort(got.begin(), got.end());
+        std::sort(expected.begin(), expected.end());
+        CHECK(got == expected);
+        CHECK(growing.nearest_by_bound(q, 5) == one.nearest_by_bound(q, 5));
+      }
+    }
+    CHECK(batches > 120);
+    const double limit = cull_limit(0.3, growing.scale());
+    const BoundingVolumeHierarchy<double> one(v);
+    CHECK(candidate_pairs(growing.merged(2), limit) == candidate_pairs(one, limit));
+    CHECK(growing.trees() == 1);
+    GrowingHierarchy<double> empty;
+    CHECK(empty.merged().size() == 0 && empty.nearest_by_bound(probes[0], 3).empty());
+    empty.add(std::vector<Volume<double>>(v.begin(), v.begin() + 10));
+    CHECK(empty.size() == 10 && empty.trees() == 1);
+  }
   // Overflowed volumes are always candidates.
   {
     const Volume<double> huge = volume(Segment3<double>{V(-1e308, 0, 0), V(1e308, 0, 0)});

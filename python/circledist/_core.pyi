@@ -674,23 +674,31 @@ class ClosestPoints:
         """
 class _Broadphase:
     """
-    The broadphase over a list of shapes' elements, numbered one after the other (used by circledist.Scene).
+    The broadphase over a scene's items, numbered in the order added, which can grow between queries (used by circledist.Scene).
     """
-    def __init__(self, shapes: list, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+    def __init__(self) -> None:
         ...
     def __len__(self) -> int:
         ...
+    def add(self, parts: list, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+        """
+        Adds items numbered on from len(self): parts are (shape, item numbers, group, first row).
+        """
     def limit(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex) -> float:
         """
         cull_limit(d) for a single shape: bounds above it are beyond d.
+        """
+    def locate(self, items: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> tuple:
+        """
+        (groups, rows) of items.
         """
     def nearest_by_bound(self, shape: typing.Any, k: typing.SupportsInt | typing.SupportsIndex) -> tuple:
         """
         (indices, lower bounds) of the k elements of smallest lower bound, by bound.
         """
-    def pairs(self, d: typing.SupportsFloat | typing.SupportsIndex, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple:
+    def pairs_within(self, groups: list, names: list, d: typing.SupportsFloat | typing.SupportsIndex, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple:
         """
-        (i, j), i < j: the candidate pairs within cull_limit(d), sorted.
+        (pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.
         """
     def within(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex) -> tuple:
         """
@@ -699,6 +707,11 @@ class _Broadphase:
     @property
     def scale(self) -> float:
         ...
+    @property
+    def trees(self) -> int:
+        """
+        How many trees hold the items (at most log2(len) + 1).
+        """
 def _count_culled(n: typing.SupportsInt | typing.SupportsIndex) -> None:
     """
     Adds n to stats()['culled'] (used by circledist.Scene).

@@ -3,9 +3,11 @@
 ``Scene.nearest``, ``Scene.within`` and ``Scene.pairs_within`` cull with the broadphase that
 ``circledist.pairs_within`` and ``circledist.nearest`` use (the C++ header
 ``circledist/broadphase.hpp``): a bounding-volume hierarchy over the shapes' boxes and balls,
-built by the first query after a change. A shape or a pair is skipped only when a lower bound on
-its distance (box gap, ball gap, distance from a line to a ball) exceeds the limit by a margin
-far above rounding, so every answer is the one brute force gives: the exact tests that remain go
+which the shapes added since the last query join at the next query (it grows: a few trees,
+merged as they grow, so adds and queries may alternate at O(log^2 n) per shape amortized). A
+shape or a pair is skipped only when a lower bound on its distance (box gap, ball gap, distance
+from a line to a ball) exceeds the limit by a margin far above rounding, so every answer is the
+one brute force gives: the exact tests that remain go
 through ``circledist.within`` / ``circledist.distance_if_within``, which try cheap exact bounds
 again before they solve a polynomial.
 
@@ -87,6 +89,7 @@ class _Group:
         self.id_column = _Grown((), np.int64)
         self.pending_ids: list[int] = []
         self.size = 0
+        self.indexed = 0  # rows [0, indexed) are in the scene's broadphase
 
     def __len__(self) -> int:
         return self.size
@@ -135,6 +138,10 @@ class _Group:
         """Every shape of the group as one batch, referring to the stored arrays (no copy)."""
         return self._shape([np.ascontiguousarray(f) for f in self.fields], copy=False)
 
+    def rows_from(self, first: int):
+        """The shapes at rows [first, len) as one batch, referring to the stored arrays (no copy)."""
+        return self._shape([f[first:] for f in self.fields], copy=False)
+
     def single(self, row: int):
         return self._shape([f[row] for f in self.fields])
 
@@ -160,8 +167,9 @@ class Scene:
 
     A bounding-volume hierarchy (the C++ broadphase of `circledist.pairs_within`) skips the
     shapes a query cannot reach; every answer is the one brute force over `circledist.within`
-    and `circledist.distance` gives. Adding a shape costs O(1): the hierarchy is rebuilt, in
-    O(n log n), by the first query after a change. A scene pickles and deep-copies.
+    and `circledist.distance` gives. Adding a shape costs O(1); the next query adds the new
+    shapes to the hierarchy, which grows (O(log^2 n) per shape amortized, not a rebuild), so
+    adds and queries may alternate. A scene pickles and deep-copies.
 
     Shapes keep the dtypes they were added with (per field: float32, float64 or long double)
     and come back as added; queries measure them as ``circledist.distance`` measures those
@@ -205,7 +213,7 @@ class Scene:
         self._group_list: list[_Group] = []        # group number -> group
         self._item_group = array("q")  # per item: its group number
         self._item_row = array("q")    # per item: its row in the group
-        self._built = None
+        self._broadphase = None        # made by the first query; holds items [0, len(it))
         self.last_stats: dict = {}
         if shapes is not None:
             items = shapes.items() if hasattr(shapes, "items") else shapes
@@ -238,7 +246,7 @@ class Scene:
             self._group_list.append(g)
         self._item_group = array("q", np.asarray(state["item_group"], dtype=np.int64).tobytes())
         self._item_row = array("q", np.asarray(state["item_row"], dtype=np.int64).tobytes())
-        self._built = None
+        self._broadphase = None
         self.last_stats = dict(state["last_stats"])
 
     # ---- contents --------------------------------------------------------------------------
@@ -304,7 +312,6 @@ class Scene:
         self._item_row.append(group.append(values, item))
         self._index[name] = item
         self._names.append(name)
-        self._built = None
 
     def extend(self, names, batch) -> None:
         """Adds every shape of a batch.
@@ -374,7 +381,6 @@ class Scene:
         self._item_row.frombytes(item_row.tobytes())
         self._index.update(zip(names, range(start, start + len(names))))
         self._names.extend(names)
-        self._built = None
 
     def _check_new_names(self, names: list, distinct: bool) -> None:
         """Raises as `add` would for the first of the names that is no string, or is in the scene
@@ -446,36 +452,37 @@ class Scene:
 
     # ---- the hierarchy ---------------------------------------------------------------------
     def _build(self, workers: int = 1):
-        """The consolidated arrays and the broadphase (built once after any change)."""
-        if self._built is not None:
-            return self._built
-        b = _Built()
-        b.groups = list(self._group_list)
-        b.group = np.array(self._item_group, dtype=np.int64)
-        b.row = np.array(self._item_row, dtype=np.int64)
-        # The broadphase numbers the shapes group after group: order maps its numbers to items.
-        b.order = np.concatenate([g.ids for g in b.groups]) if b.groups else np.zeros(0, np.int64)
-        b.broadphase = _core._Broadphase([g.whole() for g in b.groups], workers)
-        self._built = b
-        return b
+        """The broadphase over every shape: the shapes added since the last query join it here,
+        group by group (its trees grow; none is rebuilt for the shapes already in it)."""
+        if self._broadphase is None:
+            self._broadphase = _core._Broadphase()
+            for g in self._group_list:
+                g.indexed = 0
+        bp = self._broadphase
+        if len(bp) < len(self._names):
+            fresh = [(number, g) for number, g in enumerate(self._group_list) if g.indexed < len(g)]
+            bp.add([(g.rows_from(g.indexed), g.ids[g.indexed:], number, g.indexed) for number, g in fresh], workers)
+            for _, g in fresh:
+                g.indexed = len(g)
+        return bp
 
     # ---- evaluation helpers ----------------------------------------------------------------
     def _check_kinds(self, kind: str, items: Iterable[int] | None = None) -> None:
-        b = self._build()
+        self._build()
         supported = _supported()
-        for g in b.groups:
+        for g in self._group_list:
             if (kind, g.kind) not in supported:
                 raise TypeError(f"circledist has no query between a {kind} and a {g.kind} "
                                 f"(the scene holds {g.kind} shapes)")
 
     def _evaluate(self, shape, items: np.ndarray, fn, *args) -> np.ndarray:
         """fn(shape, batch_of_items, *args) for items grouped by kind; results in items' order."""
-        b = self._built
+        group, row = self._broadphase.locate(items)
         parts = []
-        for gnum in np.unique(b.group[items]):
-            sel = np.flatnonzero(b.group[items] == gnum)
-            g = b.groups[gnum]
-            parts.append((sel, np.asarray(fn(shape, g.batch(b.row[items[sel]]), *args))))
+        for gnum in np.unique(group):
+            sel = np.flatnonzero(group == gnum)
+            g = self._group_list[gnum]
+            parts.append((sel, np.asarray(fn(shape, g.batch(row[sel]), *args))))
         if not parts:
             return np.zeros(0)
         # Groups of different dtypes answer in different dtypes: the widest holds each exactly.
@@ -542,7 +549,7 @@ class Scene:
         k = int(k)
         if k < 1:
             raise ValueError(f"Scene.nearest: k must be an integer >= 1, got {k}")
-        b = self._build()
+        bp = self._build()
         self._check_kinds(shape.kind)
         n = len(self._names)
         available = n - len(skip)
@@ -554,8 +561,7 @@ class Scene:
 
         # 1. An upper bound tau on the k-th distance: the exact distances of the few shapes of
         #    smallest lower bound (the broadphase's best-first search).
-        seeds, _ = b.broadphase.nearest_by_bound(shape, k + 2 + len(skip))
-        seeds = b.order[seeds]
+        seeds, _ = bp.nearest_by_bound(shape, k + 2 + len(skip))
         seeds = seeds[~np.isin(seeds, skip_arr)][:k + 2]
         if len(seeds):
             d = self._evaluate(shape, seeds, _core.distance)
@@ -564,8 +570,7 @@ class Scene:
 
         # 2. Every shape whose lower bound is within tau, nearest bound first, in chunks; each
         #    chunk only evaluates where its bounds cannot show the distance exceeds tau.
-        items, bound = b.broadphase.within(shape, tau)
-        items = b.order[items]
+        items, bound = bp.within(shape, tau)
         fresh = ~np.isin(items, skip_arr) & ~np.isin(items, np.fromiter(known, np.int64, len(known)))
         items, bound = items[fresh], bound[fresh]
         order = np.argsort(bound, kind="stable")
@@ -574,7 +579,7 @@ class Scene:
         chunk = max(16, 2 * k)
         at = 0
         while at < len(items):
-            if np.isfinite(tau) and bound[at] > b.broadphase.limit(shape, tau):
+            if np.isfinite(tau) and bound[at] > bp.limit(shape, tau):
                 break
             part = items[at:at + chunk]
             if np.isfinite(tau):
@@ -629,10 +634,9 @@ class Scene:
         """
         shape, skip = self._resolve(shape)
         d = _limit("Scene.within", d)
-        b = self._build()
+        bp = self._build()
         self._check_kinds(shape.kind)
-        items, _ = b.broadphase.within(shape, d)
-        items = np.sort(b.order[items])
+        items, _ = bp.within(shape, d)
         items = items[~np.isin(items, np.fromiter(skip, np.int64, len(skip)))]
         hit = self._evaluate(shape, items, _core.within, d).astype(bool) if len(items) else np.zeros(0, bool)
         culled = len(self._names) - len(skip) - len(items)
@@ -673,31 +677,24 @@ class Scene:
         [('ball0', 'ball1')]
         """
         d = _limit("Scene.pairs_within", d)
-        b = self._build(workers)
+        bp = self._build(workers)
         supported = _supported()
-        kinds = [g.kind for g in b.groups]
+        groups = self._group_list
+        kinds = [g.kind for g in groups]
         for i, ka in enumerate(kinds):
             for kb in kinds[i:]:
-                if ka == kb and len(b.groups[i]) < 2:
+                if ka == kb and len(groups[i]) < 2:
                     continue
                 if (ka, kb) not in supported:
                     raise TypeError(f"circledist has no query between a {ka} and a {kb} (the scene holds both)")
-        pa, pb = b.broadphase.pairs(d, workers)
-        pa, pb = b.order[pa], b.order[pb]
-        i, j = np.minimum(pa, pb), np.maximum(pa, pb)
-        hit = np.zeros(len(i), bool)
-        for ga in np.unique(b.group[i]) if len(i) else []:
-            for gb in np.unique(b.group[j[b.group[i] == ga]]):
-                sel = np.flatnonzero((b.group[i] == ga) & (b.group[j] == gb))
-                A, B = b.groups[ga], b.groups[gb]
-                hit[sel] = _core.within(A.batch(b.row[i[sel]]), B.batch(b.row[j[sel]]), d, workers=workers)
+        # Candidates, exact tests, their order (i, j) and the list of names, in C++ (on the workers
+        # but the list).
+        pairs, tested = bp.pairs_within([g.whole() for g in groups], self._names, d, workers)
         n = len(self._names)
-        culled = n * (n - 1) // 2 - len(i)
+        culled = n * (n - 1) // 2 - tested
         _core._count_culled(culled)
-        self.last_stats = {"shapes": n, "tested": len(i), "culled": culled}
-        order = np.lexsort((j[hit], i[hit]))
-        names = self._names
-        return [(names[a], names[c]) for a, c in zip(i[hit][order].tolist(), j[hit][order].tolist())]
+        self.last_stats = {"shapes": n, "tested": tested, "culled": culled}
+        return pairs
 
     def distance_matrix(self, a_names: Sequence[str], b_names: Sequence[str]) -> np.ndarray:
         """The distances between every named shape of a_names (rows) and of b_names (columns).
@@ -729,26 +726,23 @@ class Scene:
         >>> s.distance_matrix(["ball0"], ["ball1", "ball2"])
         array([[1., 4.]])
         """
-        b = self._build()
-        ia = np.array([self._lookup(n) for n in a_names], dtype=int)
-        ib = np.array([self._lookup(n) for n in b_names], dtype=int)
+        bp = self._build()
+        ia = np.array([self._lookup(n) for n in a_names], dtype=np.int64)
+        ib = np.array([self._lookup(n) for n in b_names], dtype=np.int64)
+        (group_a, row_a), (group_b, row_b) = bp.locate(ia), bp.locate(ib)
         out = np.empty((len(ia), len(ib)))
-        for ga in np.unique(b.group[ia]) if len(ia) else []:
-            ra = np.flatnonzero(b.group[ia] == ga)
-            for gb in np.unique(b.group[ib]) if len(ib) else []:
-                rb = np.flatnonzero(b.group[ib] == gb)
-                A, B = b.groups[ga], b.groups[gb]
-                out[np.ix_(ra, rb)] = _core.distance(A.batch(b.row[ia[ra]], column=True), B.batch(b.row[ib[rb]]))
+        for ga in np.unique(group_a):
+            ra = np.flatnonzero(group_a == ga)
+            for gb in np.unique(group_b):
+                rb = np.flatnonzero(group_b == gb)
+                A, B = self._group_list[ga], self._group_list[gb]
+                out[np.ix_(ra, rb)] = _core.distance(A.batch(row_a[ra], column=True), B.batch(row_b[rb]))
         return out
 
 
 # The sweep of a shape given none: a zero, only to fill the group's sweep column.
 _NO_SWEEP = np.zeros(())
 _NO_SWEEP.flags.writeable = False
-
-
-class _Built:
-    """The consolidated arrays and the broadphase of a scene (rebuilt after any change)."""
 
 
 _SUPPORTED: set | None = None

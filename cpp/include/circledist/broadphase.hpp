@@ -534,6 +534,85 @@ template <class Real> class BoundingVolumeHierarchy {
 
 };
 
+// A hierarchy that grows: shapes come in batches, numbered on from the ones before, with queries
+// between the batches (a scene's adds). One tree rebuilt for every batch would cost O(n) per
+// batch; here the shapes live in a few trees over consecutive numbers, each at least twice the
+// size of the next newer one (the logarithmic method, Bentley and Saxe 1980): a batch is built
+// into one tree together with the newer trees smaller than twice it, so a shape's tree grows at
+// least 1.5-fold each time it is rebuilt (O(log n) rebuilds of a shape: O(n log^2 n) in all
+// however the n shapes come), and a query searches at most log2(n) + 1 trees. Its answers are
+// those of one tree over every shape: each tree's are brute force's over lower_bound().
+template <class Real> class GrowingHierarchy {
+ public:
+  using Tree = BoundingVolumeHierarchy<Real>;
+
+  // Adds shapes, numbered size(), size() + 1, ...; `threads` build the new tree (as
+  // BoundingVolumeHierarchy's: the trees are the same for any count).
+  void add(std::vector<Volume<Real>> volumes, int threads = 1) {
+    if (volumes.empty()) return;
+    BroadIndex taken = 0;
+    size_t keep = trees_.size();
+    while (keep > 0 && trees_[keep - 1].size() < 2 * (BroadIndex(volumes.size()) + taken)) taken += trees_[--keep].size();
+    if (taken > 0) {
+      std::vector<Volume<Real>> all;
+      all.reserve(size_t(taken) + volumes.size());
+      for (size_t t = keep; t < trees_.size(); ++t)
+        for (BroadIndex i = 0; i < trees_[t].size(); ++i) all.push_back(trees_[t].volume(i));
+      all.insert(all.end(), volumes.begin(), volumes.end());
+      volumes.swap(all);
+    }
+    trees_.resize(keep);
+    first_.resize(keep);
+    first_.push_back(size_ - taken);
+    size_ += BroadIndex(volumes.size()) - taken;
+    trees_.emplace_back(std::move(volumes), kLeafSize, threads);
+    scale_ = std::max(scale_, trees_.back().scale());
+  }
+
+  BroadIndex size() const { return size_; }
+  // The largest reach from the origin of a shape of the set: for cull_limit.
+  Real scale() const { return scale_; }
+  size_t trees() const { return trees_.size(); }
+
+  // One tree over every shape, the trees merged first if there are several: for queries over the
+  // whole set (its pairs), which cost O(n) anyway.
+  const Tree& merged(int threads = 1) {
+    if (trees_.size() != 1) {
+      std::vector<Volume<Real>> all;
+      all.reserve(size_t(size_));
+      for (const Tree& t : trees_)
+        for (BroadIndex i = 0; i < t.size(); ++i) all.push_back(t.volume(i));
+      trees_.clear();
+      first_.assign(1, 0);
+      trees_.emplace_back(std::move(all), kLeafSize, threads);
+    }
+    return trees_.front();
+  }
+
+  // BoundingVolumeHierarchy's visit_within over every tree.
+  template <class Visit> void visit_within(const Volume<Real>& q, Real limit, Visit&& visit) const {
+    for (size_t t = 0; t < trees_.size(); ++t)
+      trees_[t].visit_within(q, limit, [&, first = first_[t]](BroadIndex j, Real bound) { visit(first + j, bound); });
+  }
+
+  // BoundingVolumeHierarchy's nearest_by_bound: the k smallest (bound, index) of every tree's k.
+  std::vector<std::pair<Real, BroadIndex>> nearest_by_bound(const Volume<Real>& q, BroadIndex k) const {
+    std::vector<std::pair<Real, BroadIndex>> best;
+    for (size_t t = 0; t < trees_.size(); ++t)
+      for (const auto& [bound, j] : trees_[t].nearest_by_bound(q, k)) best.emplace_back(bound, first_[t] + j);
+    std::sort(best.begin(), best.end());
+    if (BroadIndex(best.size()) > k) best.resize(size_t(std::max<BroadIndex>(k, 0)));
+    return best;
+  }
+
+ private:
+  static constexpr int kLeafSize = 4;
+  std::vector<Tree> trees_;          // oldest first
+  std::vector<BroadIndex> first_;    // the number of each tree's first shape
+  BroadIndex size_ = 0;
+  Real scale_ = 0;
+};
+
 using BroadPairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
 
 // The order of a Z-order (Morton) curve through the volumes' centers, the unbounded ones last:
