@@ -24,7 +24,19 @@ using Segment = Segment3<double>;
 using Circle = Circle3<double>;
 using Disk = Disk3<double>;
 
-// The random draws' multiplier (a longer run: -DARC_RANDOM_SCALE=10).
+// The random draws' multiplier (a longer run: -DARC_RANDOM_SCALE=10). Under the sanitizers
+// (tools/run.sh test: every C++ test at -O1 with address and undefined-behaviour checks, within
+// 600 s in all) a tenth of the draws: the references' dense sampling is most of this test's
+// time, and the hard cases, all run, are what the sanitizers are for.
+#ifndef ARC_RANDOM_SCALE
+#if defined(__SANITIZE_ADDRESS__)
+#define ARC_RANDOM_SCALE 0.1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define ARC_RANDOM_SCALE 0.1
+#endif
+#endif
+#endif
 #ifndef ARC_RANDOM_SCALE
 #define ARC_RANDOM_SCALE 1
 #endif
@@ -246,7 +258,7 @@ void point_tests() {
   // No projection of the start: the arc starts at Frame's U, (0, 1, 0) for the normal z.
   arc_case("point-arc", "start along the normal", V3d(2, 0, 0), Arc{o, z, 1, z, 1}, std::sqrt(5.0L), 1);
   Draw d(11);
-  for (int k = 0; k < 200 * ARC_RANDOM_SCALE; ++k) {
+  for (int k = 0; k < int(200 * ARC_RANDOM_SCALE); ++k) {
     const Arc a = d.arc();
     const V3d p = a.center + 2 * d.vec();
     arc_case("point-arc", "random", p, a, ref_point_arc(p, a));
@@ -261,7 +273,7 @@ void point_tests() {
 }
 
 template <class Piece> void piece_random(const char* kind, Draw& d, const std::function<Piece(Draw&, const Arc&)>& draw) {
-  for (int k = 0; k < 120 * ARC_RANDOM_SCALE; ++k) {
+  for (int k = 0; k < int(120 * ARC_RANDOM_SCALE); ++k) {
     const Arc a = d.arc();
     const Piece p = draw(d, a);
     arc_case(kind, "random", p, a, ref_piece_arc(p, a));
@@ -325,7 +337,7 @@ void piece_tests() {
   });
   // Lines tangent to an arc's circle at random angles, the arc holding the tangency, ending at
   // it, or missing it; offset by 0 or up to 1e-12..1 off the circle.
-  for (int k = 0; k < 60 * ARC_RANDOM_SCALE; ++k) {
+  for (int k = 0; k < int(60 * ARC_RANDOM_SCALE); ++k) {
     const V3d c = d.vec(), n = d.vec().normalized();
     const double r = d.radius(), t = kTurn * d.uniform(d.rng);
     const Frame<double> f(n);
@@ -384,7 +396,7 @@ template <class Round3> void round_tests(const char* kind) {
     arc_case(kind, "arc 1e3 the round", Round3{o, z, 1}, big, ref_round_arc(Round3{o, z, 1}, big));
   }
   Draw d(disk ? 31 : 37);
-  for (int k = 0; k < 100 * ARC_RANDOM_SCALE; ++k) {
+  for (int k = 0; k < int(100 * ARC_RANDOM_SCALE); ++k) {
     const Arc a = d.arc();
     const Round3 s{d.vec(), d.vec(), d.radius()};
     arc_case(kind, "random", s, a, ref_round_arc(s, a));
@@ -437,7 +449,7 @@ void arc_arc_tests() {
   arc_arc_case("zero radius", quarter, Arc{V3d(2, 0, 0), z, 0, x, 1}, 1, 1);
   arc_arc_case("both whole", Arc{o, z, 1, x, kTurn}, Arc{V3d(3, 0, 0), y, 1, x, kTurn}, 1);
   Draw d(41);
-  for (int k = 0; k < 40 * ARC_RANDOM_SCALE; ++k) {
+  for (int k = 0; k < int(40 * ARC_RANDOM_SCALE); ++k) {
     const Arc a = d.arc(), b{d.vec(), d.vec(), d.radius(), d.vec(), d.angle()};
     const LD truth = ref_arc_arc(a, b);
     arc_arc_case("random", a, b, truth);
@@ -476,7 +488,7 @@ void precision_tests() {
   CHECK_NEAR(closest_points(f_arc, Segment3<float>{s.p0.cast<float>(), s.p1.cast<float>()}).distance, segment_truth, 1e-5);
   // The eigenvalue root policies.
   Draw d(53);
-  for (int k = 0; k < 30 * ARC_RANDOM_SCALE; ++k) {
+  for (int k = 0; k < int(30 * ARC_RANDOM_SCALE); ++k) {
     const Arc b = d.arc();
     const Circle e{d.vec(), d.vec(), d.radius()};
     const Segment g{b.center + d.vec(), b.center + d.vec()};
