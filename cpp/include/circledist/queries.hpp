@@ -16,3 +16,4 @@
 #include "bezier.hpp"
 #include "bezier_point.hpp"
 #include "bezier_linear.hpp"
+#include "bezier_bezier.hpp"
