@@ -6,11 +6,13 @@ Nothing here uses circledist or polynomial root finding. The distance min over s
 * the four edges (s or t at 0 or 1): an end point of one curve against the other curve, by
   reference_round.bezier_other (mpmath: dense sampling of the curve's t, zoomed on its speed
   bound, and golden section on every sampled local minimum);
-* the interior stationary points: the squared distance F(s, t) is sampled in double on a dense
-  grid (coordinates relative to A's first control point), and from each of the grid's local
-  minima (the best few) Newton steps with a backtracking line search on F in 50-digit arithmetic
-  (mpmath, exact conversions of the inputs) descend to the minimum of its basin; a descent that
-  leaves the square is dropped (its minimum is on an edge, above).
+* the interior stationary points: starts are found in double (coordinates relative to A's first
+  control point): the local minima of F(s, t) = |A(s) - B(t)|^2 on a dense grid, and the sampled
+  local minima of min over t of |A(s) - B(t)| (each sample's best t refined by Newton steps, so
+  that a valley narrower than the grid's step is resolved), and the same with the curves'
+  roles exchanged; from each, Newton steps with a backtracking line search on F in 50-digit
+  arithmetic (mpmath, exact conversions of the inputs) descend to the minimum of its basin; a
+  descent that leaves the square is dropped (its minimum is on an edge, above).
 
 Every value kept is the distance between two genuine points of the curves, hence an upper bound
 of the true distance, and the reference is the smallest. `scale` is the largest curve size in
@@ -45,6 +47,55 @@ def _grid_points(ctrl: np.ndarray, origin: np.ndarray, ts: np.ndarray) -> np.nda
     out = np.zeros((len(ts), 3))
     for i in range(k + 1):
         out += math.comb(k, i) * (ts ** i * (1 - ts) ** (k - i))[:, None] * rel[i]
+    return out
+
+
+def _grid_jet(ctrl: np.ndarray, origin: np.ndarray, ts: np.ndarray):
+    """B(t), B'(t), B''(t) at many t in double (the starts only)."""
+    k = len(ctrl) - 1
+    rel = ctrl - origin
+    d1 = k * np.diff(rel, axis=0)
+    d2 = (k - 1) * np.diff(d1, axis=0) if k >= 2 else np.zeros((1, 3))
+    p = _grid_points(rel, np.zeros(3), ts)
+    p1 = _grid_points(d1, np.zeros(3), ts)
+    p2 = _grid_points(d2, np.zeros(3), ts) if k >= 2 else np.zeros_like(p)
+    return p, p1, p2
+
+
+def _starts(ca: np.ndarray, cb: np.ndarray):
+    """Starts for the 50-digit descents, found in double: the local minima of a dense grid of F,
+    and, for each sampled s (then each sampled t), the best t of the grid moved by Newton steps to
+    the closest point of the other curve, g(s) = min over t of |A(s) - B(t)|, whose sampled local
+    minima seed the descents too (a valley narrower than the grid's step, two nearly parallel
+    stretches, is resolved by the inner Newton steps where the grid alone sees noise)."""
+    origin = ca[0]
+    ts = np.linspace(0.0, 1.0, GRID + 1)
+    ga = _grid_points(ca, origin, ts)
+    gb = _grid_points(cb, origin, ts)
+    f = ((ga[:, None, :] - gb[None, :, :]) ** 2).sum(axis=2)
+    padded = np.pad(f, 1, constant_values=np.inf)
+    local = np.ones_like(f, dtype=bool)
+    for di in (-1, 0, 1):
+        for dj in (-1, 0, 1):
+            if di or dj:
+                local &= f <= padded[1 + di:1 + di + f.shape[0], 1 + dj:1 + dj + f.shape[1]]
+    idx = np.argwhere(local)
+    idx = idx[np.argsort(f[local])][:MAX_STARTS]
+    out = [(ts[i], ts[j]) for i, j in idx]
+    for moving, other, fm, swap in ((ca, cb, f, False), (cb, ca, f.T, True)):
+        pm = _grid_points(moving, origin, ts)
+        u = ts[np.argmin(fm, axis=1)].copy()
+        for _ in range(30):  # Newton on |P - Q(u)|^2 in u, for every sample at once
+            q, q1, q2 = _grid_jet(other, origin, u)
+            r = q - pm
+            slope = (r * q1).sum(axis=1)
+            curvature = (q1 * q1).sum(axis=1) + (r * q2).sum(axis=1)
+            step = np.where(curvature > 0, -slope / np.where(curvature > 0, curvature, 1), 0.0)
+            u = np.clip(u + step, 0.0, 1.0)
+        g = (((_grid_points(other, origin, u) - pm) ** 2).sum(axis=1))
+        inner = np.flatnonzero((g[1:-1] <= g[:-2]) & (g[1:-1] <= g[2:])) + 1
+        inner = inner[np.argsort(g[inner])][:MAX_STARTS]
+        out += [((u[i], ts[i]) if swap else (ts[i], u[i])) for i in inner]
     return out
 
 
@@ -137,23 +188,10 @@ def bezier_bezier(ctrl_a: Sequence, ctrl_b: Sequence) -> BezierReference:
         ref = R.bezier_other(ctrl_a, "point", ctrl_b[which])
         for q in ref.pairs[:1]:
             pairs.append(BezierPair(q.value, q.t, mpf(t), q.pa, q.pb))
-    # The interior: the grid's local minima, descended in 50 digits.
+    # The interior: starts from the grid (below), descended in 50 digits.
     if len(pa) > 1 and len(pb) > 1:
-        origin = np.array(ctrl_a[0], dtype=float)
-        ts = np.linspace(0.0, 1.0, GRID + 1)
-        ga = _grid_points(np.array(ctrl_a, dtype=float), origin, ts)
-        gb = _grid_points(np.array(ctrl_b, dtype=float), origin, ts)
-        f = ((ga[:, None, :] - gb[None, :, :]) ** 2).sum(axis=2)
-        padded = np.pad(f, 1, constant_values=np.inf)
-        local = np.ones_like(f, dtype=bool)
-        for di in (-1, 0, 1):
-            for dj in (-1, 0, 1):
-                if di or dj:
-                    local &= f <= padded[1 + di:1 + di + f.shape[0], 1 + dj:1 + dj + f.shape[1]]
-        idx = np.argwhere(local)
-        idx = idx[np.argsort(f[local])][:MAX_STARTS]
-        for i, j in idx:
-            found = _descend(pa, pb, mpf(ts[i]), mpf(ts[j]))
+        for s0, t0 in _starts(np.array(ctrl_a, dtype=float), np.array(ctrl_b, dtype=float)):
+            found = _descend(pa, pb, mpf(s0), mpf(t0))
             if found is None:
                 continue
             value, s, t = found

@@ -140,9 +140,6 @@ template <class Real> struct CurvePairSolver {
     state(s, t, f, g1, g2, h11, h12, h22);
     Real lambda = 0;
     for (int iteration = 0; iteration < 100; ++iteration) {
-#ifdef CD_COUNT_ITER
-      CD_COUNT_ITER;
-#endif
       const Real mu = lambda * (std::abs(h11) + std::abs(h22));
       const Real a11 = h11 + mu, a22 = h22 + mu, det = a11 * a22 - h12 * h12;
       if (!(a11 > 0 && a22 > 0 && det > 0) || !std::isfinite(det)) {
@@ -210,9 +207,6 @@ template <class Real> struct CurvePairSolver {
       heap.pop_back();
       if (p.lower > upper + tie) break;  // best first: every pair left is as far
       ++pairs;
-#ifdef CD_COUNT_PAIR
-      CD_COUNT_PAIR;
-#endif
       // The pieces' end points are points of the curves: the minimum is at most their distance.
       for (const int i : {0, na})
         for (const int j : {0, nb}) upper = std::min(upper, std::sqrt((p.qa[i] - p.qb[j]).squaredNorm()));
@@ -243,9 +237,6 @@ template <class Real> struct CurvePairSolver {
       }
       // §4: a flat pair (or one past the caps): its chords' closest pair seeds the polish.
       ++leaves;
-#ifdef CD_COUNT_LEAF
-      CD_COUNT_LEAF;
-#endif
       const Result<Real> seed = Query<Segment3<Real>, Segment3<Real>>::template closest<Roots>(
           Segment3<Real>{p.qa[0], p.qa[na]}, Segment3<Real>{p.qb[0], p.qb[nb]});
       const Real u = std::isfinite(seed.param_a.x()) ? seed.param_a.x() : Real(0.5);
