@@ -10,7 +10,9 @@
 // minimum from above; pairs that cannot beat the best value so far are dropped, the others are
 // halved (the longer piece, by blossoming from the whole curve) until both pieces are flat. Each
 // surviving flat pair is solved locally (§4): its chords' closest pair (the segment query,
-// linear_linear.hpp) seeds damped Newton steps on the true squared distance of the whole curves.
+// linear_linear.hpp) seeds damped Newton steps on the true squared distance of the whole curves;
+// a descent that ends above what the chords promise (their distance plus the pieces' deviation
+// from them) ran into another basin, and the pair is halved further (§3).
 // The smallest candidate wins; distinct tied candidates make `unique` false (§5).
 #pragma once
 
@@ -91,23 +93,23 @@ template <class Real> struct CurvePairSolver {
   }
 
   // §3: a piece is flat when its control points lie within kFlat of its chord's length from the
-  // chord's line (a piece whose end points meet counts its points' distance from them): two flat
-  // pieces are two nearly straight stretches, whose squared distance has one minimum near their
-  // chords' closest pair. Its extent (the farthest control point from the first) picks the piece
-  // to halve.
+  // chord (the segment between its end points, so that a piece folding back along its chord is
+  // not flat); `off`, that largest distance, bounds how far the piece strays from the chord (its
+  // convex hull does not stray farther). Its extent (the farthest control point from the first)
+  // picks the piece to halve.
   static constexpr Real kFlat = Real(1) / 32;
-  static bool flat(const Points& q, int n, Real& extent) {
+  static bool flat(const Points& q, int n, Real& extent, Real& off) {
     const Vec3<Real> chord = q[n] - q[0];
-    const Real length = std::sqrt(chord.squaredNorm());
+    const Real length2 = chord.squaredNorm();
     extent = 0;
-    Real off = 0;
+    off = 0;
     for (int i = 1; i <= n; ++i) {
       const Vec3<Real> d = q[i] - q[0];
-      const Real norm = std::sqrt(d.squaredNorm());
-      extent = std::max(extent, norm);
-      off = std::max(off, length > 0 ? std::sqrt(d.cross(chord).squaredNorm()) / length : norm);
+      extent = std::max(extent, std::sqrt(d.squaredNorm()));
+      const Real x = length2 > 0 ? std::min(std::max(d.dot(chord) / length2, Real(0)), Real(1)) : Real(0);
+      off = std::max(off, std::sqrt((d - x * chord).squaredNorm()));
     }
-    return off <= kFlat * length;
+    return off <= kFlat * std::sqrt(length2);
   }
 
   // A point, its first and second derivatives along a local curve.
@@ -140,28 +142,38 @@ template <class Real> struct CurvePairSolver {
     state(s, t, f, g1, g2, h11, h12, h22);
     Real lambda = 0;
     for (int iteration = 0; iteration < 100; ++iteration) {
+      // A parameter on its bound where F rises inward is held there (projected Newton): the
+      // step is then one-dimensional along the edge; both held, a corner is the minimum within
+      // reach. The edges' own minima are the point queries' (§2); this keeps a descent that
+      // starts on an edge (a chords' closest pair at an end of a piece) from stopping there
+      // while F falls inward.
+      const bool hold_s = (s == 0 && g1 > 0) || (s == 1 && g1 < 0);
+      const bool hold_t = (t == 0 && g2 > 0) || (t == 1 && g2 < 0);
+      if (hold_s && hold_t) break;
       const Real mu = lambda * (std::abs(h11) + std::abs(h22));
       const Real a11 = h11 + mu, a22 = h22 + mu, det = a11 * a22 - h12 * h12;
-      if (!(a11 > 0 && a22 > 0 && det > 0) || !std::isfinite(det)) {
+      const bool definite =
+          hold_s ? a22 > 0 : hold_t ? a11 > 0 : (a11 > 0 && a22 > 0 && det > 0 && std::isfinite(det));
+      if (!definite) {
         lambda = lambda == 0 ? Real(1e-6) : lambda * 8;
         if (!(lambda < Real(1e12)) || !(std::abs(h11) + std::abs(h22) > 0)) break;
         continue;
       }
-      const Real ds = (-g1 * a22 + g2 * h12) / det, dt = (-g2 * a11 + g1 * h12) / det;
-      // On the square's edge and pushed outward: the minimum within reach lies on the edge,
-      // where the edges' point queries (§2) have it exactly.
-      if ((s == 0 && ds < 0) || (s == 1 && ds > 0) || (t == 0 && dt < 0) || (t == 1 && dt > 0)) break;
+      const Real ds = hold_s ? Real(0) : hold_t ? -g1 / a11 : (-g1 * a22 + g2 * h12) / det;
+      const Real dt = hold_t ? Real(0) : hold_s ? -g2 / a22 : (-g2 * a11 + g1 * h12) / det;
       const Real ns = std::min(std::max(s + ds, Real(0)), Real(1)), nt = std::min(std::max(t + dt, Real(0)), Real(1));
       if (ns == s && nt == t) break;  // converged, or held at the square's edge
       Real nf, n1, n2, m11, m12, m22;
       state(ns, nt, nf, n1, n2, m11, m12, m22);
-      const bool small = std::abs(ns - s) <= tol_s && std::abs(nt - t) <= tol_t;
+      // Converged only on an undamped (Newton) step below the tolerance: a damped step is short
+      // because of the damping, not because the minimum is near.
+      const bool small = lambda == 0 && std::abs(ns - s) <= tol_s && std::abs(nt - t) <= tol_t;
       if (nf < f) {
         s = ns, t = nt, f = nf, g1 = n1, g2 = n2, h11 = m11, h12 = m12, h22 = m22;
         lambda = lambda < Real(1e-5) ? Real(0) : lambda / 8;
         if (small) break;
       } else {
-        if (small) break;  // a step below the tolerance that does not lower F: rounding at the minimum
+        if (small) break;  // a Newton step below the tolerance that does not lower F: rounding at the minimum
         lambda = lambda == 0 ? Real(1e-6) : lambda * 8;
         if (!(lambda < Real(1e12))) break;
       }
@@ -210,40 +222,48 @@ template <class Real> struct CurvePairSolver {
       // The pieces' end points are points of the curves: the minimum is at most their distance.
       for (const int i : {0, na})
         for (const int j : {0, nb}) upper = std::min(upper, std::sqrt((p.qa[i] - p.qb[j]).squaredNorm()));
-      Real extent_a, extent_b;
-      const bool flat_a = flat(p.qa, na, extent_a), flat_b = flat(p.qb, nb, extent_b);
-      const bool split_a = !flat_a && extent_a >= extent_b, split_b = !flat_b && !split_a;
+      Real extent_a, extent_b, off_a, off_b;
+      const bool flat_a = flat(p.qa, na, extent_a, off_a), flat_b = flat(p.qb, nb, extent_b, off_b);
+      bool described = false;
+      if ((flat_a && flat_b) || pairs >= kMaxPairs) {
+        // §4: a flat pair (or one past the caps): its chords' closest pair seeds the polish.
+        ++leaves;
+        const Result<Real> seed = Query<Segment3<Real>, Segment3<Real>>::template closest<Roots>(
+            Segment3<Real>{p.qa[0], p.qa[na]}, Segment3<Real>{p.qb[0], p.qb[nb]});
+        const Real u = std::isfinite(seed.param_a.x()) ? seed.param_a.x() : Real(0.5);
+        const Real v = std::isfinite(seed.param_b.x()) ? seed.param_b.x() : Real(0.5);
+        const Candidate c = polish(ca, cb, p.a0 + u * (p.a1 - p.a0), p.b0 + v * (p.b1 - p.b0), tol_s, tol_t);
+        if (c.value < upper) upper = c.value;
+        out.push_back(c);
+        // §3: the pieces lie within off_a and off_b of their chords, so the pair's minimum is at most
+        // the chords' distance plus both; a descent that ends above that left a better minimum of
+        // the pair behind (it ran into another basin): the pair is halved further, its pieces then
+        // searched in turn.
+        described = !(c.value > seed.distance + off_a + off_b + tie);
+      }
+      if (described || pairs >= kMaxPairs) continue;
+      const bool split_a = flat_a == flat_b ? extent_a >= extent_b : !flat_a;
       const Real mid_a = (p.a0 + p.a1) / 2, mid_b = (p.b0 + p.b1) / 2;
       const bool can_a = mid_a > p.a0 && mid_a < p.a1, can_b = mid_b > p.b0 && mid_b < p.b1;
-      if (pairs < kMaxPairs && ((split_a && can_a) || (split_b && can_b))) {
-        for (int half = 0; half < 2; ++half) {
-          Pair child = p;
-          if (split_a && can_a) {
-            child.a0 = half == 0 ? p.a0 : mid_a;
-            child.a1 = half == 0 ? mid_a : p.a1;
-            child.qa = blossom(ca.q, na, child.a0, child.a1);
-          } else {
-            child.b0 = half == 0 ? p.b0 : mid_b;
-            child.b1 = half == 0 ? mid_b : p.b1;
-            child.qb = blossom(cb.q, nb, child.b0, child.b1);
-          }
-          child.lower = lower_bound(child.qa, na, child.qb, nb);
-          if (child.lower > upper + tie) continue;
-          pool.push_back(child);
-          heap.push_back({child.lower, int(pool.size()) - 1});
-          std::push_heap(heap.begin(), heap.end(), later);
+      const bool halve_a = split_a ? can_a : !can_b && can_a, halve_b = !halve_a && can_b;
+      if (!halve_a && !halve_b) continue;  // neither span splits any more (t at rounding)
+      for (int half = 0; half < 2; ++half) {
+        Pair child = p;
+        if (halve_a) {
+          child.a0 = half == 0 ? p.a0 : mid_a;
+          child.a1 = half == 0 ? mid_a : p.a1;
+          child.qa = blossom(ca.q, na, child.a0, child.a1);
+        } else {
+          child.b0 = half == 0 ? p.b0 : mid_b;
+          child.b1 = half == 0 ? mid_b : p.b1;
+          child.qb = blossom(cb.q, nb, child.b0, child.b1);
         }
-        continue;
+        child.lower = lower_bound(child.qa, na, child.qb, nb);
+        if (child.lower > upper + tie) continue;
+        pool.push_back(child);
+        heap.push_back({child.lower, int(pool.size()) - 1});
+        std::push_heap(heap.begin(), heap.end(), later);
       }
-      // §4: a flat pair (or one past the caps): its chords' closest pair seeds the polish.
-      ++leaves;
-      const Result<Real> seed = Query<Segment3<Real>, Segment3<Real>>::template closest<Roots>(
-          Segment3<Real>{p.qa[0], p.qa[na]}, Segment3<Real>{p.qb[0], p.qb[nb]});
-      const Real u = std::isfinite(seed.param_a.x()) ? seed.param_a.x() : Real(0.5);
-      const Real v = std::isfinite(seed.param_b.x()) ? seed.param_b.x() : Real(0.5);
-      const Candidate c = polish(ca, cb, p.a0 + u * (p.a1 - p.a0), p.b0 + v * (p.b1 - p.b0), tol_s, tol_t);
-      if (c.value < upper) upper = c.value;
-      out.push_back(c);
     }
   }
 };
