@@ -24,6 +24,7 @@ import pytest
 
 import circledist as cd
 from circledist_cases import reference_bezier as RB
+from circledist_cases import bezier_cases as BB
 from circledist_cases import reference_round as R
 
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
@@ -98,6 +99,9 @@ def _hard_cases():
              ((0.3, -1, 1), (0.3, 0, 0.4), (0.3, 0.5, 0.1), (0.3, 1, -0.2))),
         case("collinear_curve", ((-1, 0.2, 0.1), (-0.2, 0.36, 0.14), (1, 0.6, 0.2)), CUBIC_B),
         case("folded_collinear", ((0, 0, 0), (3, 0, 0), (1, 0, 0)), ((1.5, 1, -1), (1.5, 1, 1))),
+        # random degree 5..6 curves whose closest pair a flat leaf's descent once missed
+        case("missed_basin_1", BB.MISSED_A, BB.MISSED_B),
+        case("missed_basin_2", BB.MISSED_C, BB.MISSED_D),
     ]
 
 
