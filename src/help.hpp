@@ -433,8 +433,8 @@ ValueError
     array-like given as a point, (float32) an input beyond float32's range, or a worker count
     that is neither positive nor -1.
 TypeError
-    When there is no query between the two kinds (Bezier curves have queries with every kind
-    but Bezier curves), or `progress` is neither None, a bool nor a callable.
+    When there is no query between the two kinds (every pair of this module's kinds has one),
+    or `progress` is neither None, a bool nor a callable.
 )";
 
 inline const char* kDistance() {

@@ -195,6 +195,7 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<BezierCurve3<Real>, Line3<Real>>();  // bezier_linear.hpp
   v.template add<BezierCurve3<Real>, Ray3<Real>>();
   v.template add<BezierCurve3<Real>, Segment3<Real>>();
+  v.template add<BezierCurve3<Real>, BezierCurve3<Real>>();  // bezier_bezier.hpp
 }
 template <class Real, class Visitor> void for_each_closed_form_pair(Visitor&& v) {
   v.template add<Vec3<Real>, Circle3<Real>>();  // point_circle.hpp

@@ -174,8 +174,8 @@ def test_scene_errors():
     with pytest.raises(ValueError, match="2 names"):
         scene.extend(["a", "b"], cd.Point(np.zeros((3, 3))))
     scene.add("cable", cd.Bezier([[0, 0, 0], [1, 1, 0], [2, 0, 0]]))
-    with pytest.raises(TypeError, match="no query between a Bezier and a Bezier"):
-        scene.nearest(cd.Bezier([[0, 0, 0], [1, 0, 0]]))
+    # every pair of kinds has a query now, curves against curves too (bezier_bezier.hpp)
+    assert ("cable", 0.0) in scene.nearest(cd.Bezier([[0, 0, 0], [1, 0, 0]]), 2)
     with pytest.raises(ValueError, match="single shape"):
         scene.nearest(cd.Point(np.zeros((2, 3))))
 
@@ -236,7 +236,7 @@ def test_pickle_and_deepcopy_round_trip():
 
     lines, _ = mixed_scene(31, n=120, box=5.0, kinds=("Disk", "Circle", "Segment", "Point", "Line"))
     curves, _ = mixed_scene(32, n=60, box=5.0, kinds=("Disk", "Circle"))
-    curves.add("curve", cd.Bezier(np.arange(12.0).reshape(4, 3) / 10))  # curves have no query with curves
+    curves.add("curve", cd.Bezier(np.arange(12.0).reshape(4, 3) / 10))
     for scene in (lines, curves):
         check_copies(scene)
     empty = pickle.loads(pickle.dumps(cd.Scene()))

@@ -781,8 +781,8 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
         array-like given as a point, (float32) an input beyond float32's range, or a worker count
         that is neither positive nor -1.
     TypeError
-        When there is no query between the two kinds (Bezier curves have queries with every kind
-        but Bezier curves), or `progress` is neither None, a bool nor a callable.
+        When there is no query between the two kinds (every pair of this module's kinds has one),
+        or `progress` is neither None, a bool nor a callable.
     
     Examples
     --------
@@ -845,8 +845,8 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
         array-like given as a point, (float32) an input beyond float32's range, or a worker count
         that is neither positive nor -1.
     TypeError
-        When there is no query between the two kinds (Bezier curves have queries with every kind
-        but Bezier curves), or `progress` is neither None, a bool nor a callable.
+        When there is no query between the two kinds (every pair of this module's kinds has one),
+        or `progress` is neither None, a bool nor a callable.
     
     See Also
     --------
@@ -924,8 +924,8 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
         array-like given as a point, (float32) an input beyond float32's range, or a worker count
         that is neither positive nor -1.
     TypeError
-        When there is no query between the two kinds (Bezier curves have queries with every kind
-        but Bezier curves), or `progress` is neither None, a bool nor a callable.
+        When there is no query between the two kinds (every pair of this module's kinds has one),
+        or `progress` is neither None, a bool nor a callable.
         Also ValueError when d is negative, NaN, inf or not a real number.
     
     Examples
@@ -984,8 +984,8 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
         array-like given as a point, (float32) an input beyond float32's range, or a worker count
         that is neither positive nor -1.
     TypeError
-        When there is no query between the two kinds (Bezier curves have queries with every kind
-        but Bezier curves), or `progress` is neither None, a bool nor a callable.
+        When there is no query between the two kinds (every pair of this module's kinds has one),
+        or `progress` is neither None, a bool nor a callable.
     
     Examples
     --------
@@ -1286,8 +1286,8 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
         array-like given as a point, (float32) an input beyond float32's range, or a worker count
         that is neither positive nor -1.
     TypeError
-        When there is no query between the two kinds (Bezier curves have queries with every kind
-        but Bezier curves), or `progress` is neither None, a bool nor a callable.
+        When there is no query between the two kinds (every pair of this module's kinds has one),
+        or `progress` is neither None, a bool nor a callable.
         Also ValueError when d is negative, NaN, inf or not a real number.
     
     Examples

@@ -16,4 +16,5 @@
 #include "bezier.hpp"
 #include "bezier_point.hpp"
 #include "bezier_linear.hpp"
+#include "bezier_bezier.hpp"
 #include "arc.hpp"

@@ -1,0 +1,296 @@
+"""Bezier curves against Bezier curves (bezier_bezier.hpp).
+
+References: circledist_cases/reference_bezier.py, mpmath at 50 digits and nothing from
+circledist: the four edges (an end point against the other curve) by one-parameter minimisation
+(reference_round.bezier_other: dense sampling and golden section), the interior by 50-digit
+Newton descents with a line search from the local minima of a dense grid of the squared distance.
+
+Accuracy rule: |d - d_ref| <= 1e-12 * max(d_ref, scale) in double, 1e-15 * max(d_ref, scale) in
+long double, `scale` the largest curve size in the query (the larger control polygon extent).
+Every solver, both argument orders, closest_points (points on their curves, separation ==
+distance, distance bit-identical to distance()), `unique` where clear-cut (continua of closest
+pairs: false), within / intersects, swept curves, batches with broadcasting (bit-identical to
+single calls), and the degenerate curves against the point and segment queries.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+import pytest
+
+import circledist as cd
+from circledist_cases import reference_bezier as RB
+from circledist_cases import bezier_cases as BB
+from circledist_cases import reference_round as R
+
+SOLVERS = ("bracketing", "companion", "polished", "eigen")
+TOL = {"float64": 1e-12, "longdouble": 1e-15}
+MAX_POINTS = cd._core._max_control_points
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    a: tuple
+    b: tuple
+    unique: Optional[bool] = None  # expected `unique` when clear-cut
+
+
+def _t(v):
+    return tuple(float(x) for x in v)
+
+
+def case(name, a, b, unique=None):
+    return Case(name, tuple(_t(p) for p in a), tuple(_t(p) for p in b), unique)
+
+
+def _shifted(ctrl, by):
+    return tuple(tuple(np.array(p, dtype=float) + np.array(by, dtype=float)) for p in ctrl)
+
+
+def _random_cases():
+    rng = np.random.default_rng(2019)
+    out = []
+    for na, nb in ((2, 2), (2, 2), (3, 3), (3, 3), (3, 3), (3, 2), (1, 3), (1, 1), (4, 5), (5, 3), (7, 2), (6, 7),
+                   (7, 7)):
+        a = rng.uniform(-2, 2, (na + 1, 3))
+        b = rng.uniform(-2, 2, (nb + 1, 3)) + rng.uniform(-1, 1, 3)
+        out.append(case(f"random_deg{na}_deg{nb}_{len(out)}", a, b))
+    return out
+
+
+ARCH = ((-1, 0, 0), (0, 2, 0), (1, 0, 0))  # apex (0, 1, 0), curvature radius 1/2
+CROSS = ((0, 1, -1), (0.5, 1, -0.3), (-0.5, 1, 0.3), (0, 1, 1))  # passes the apex at t = 1/2
+CUBIC_A = ((0, 0, 0), (1, 2, 0.5), (2, -1, -0.3), (3, 1.5, 0.2))
+CUBIC_B = ((0.5, 1, 1.5), (1.5, -1, 1), (2.5, 2, 0.7), (3.5, 0, 1.2))
+LINE = ((0, 0, 0), (1, 0, 0), (2.5, 0, 0), (3, 0, 0))  # collinear, unevenly parametrized
+SHIFT = (1e6, -1e6, 1e6)
+
+
+def _hard_cases():
+    big = tuple(tuple(1e3 * np.array(p)) for p in CUBIC_A)
+    b37 = np.array(R.bezier_point(big, 0.37), dtype=float)
+    small = tuple(tuple(b37 + np.array(d)) for d in ((-0.5, 0.6, -0.2), (0.2, 1.1, 0.3), (0.9, 0.65, 0.1)))
+    # a small curve passing 0.3 over the big one's interior, bent toward it
+    bump = tuple(tuple(b37 + np.array(d)) for d in ((-2, 0, 1), (0, 0, -0.4), (2, 0, 1)))
+    return [
+        case("crossing", ARCH, CROSS, unique=True),
+        case("crossing_translated", _shifted(ARCH, SHIFT), _shifted(CROSS, SHIFT)),
+        case("nearly_touching_1e-9", ARCH, _shifted(CROSS, (0, 1e-9, 0))),
+        case("nearly_touching_1e-13", ARCH, _shifted(CROSS, (0, 1e-13, 0))),
+        case("tangent_arches", ARCH, ((-1, 2, 0), (0, 0, 0), (1, 2, 0))),
+        case("arches_apart", ARCH, _shifted(((-1, 2, 0), (0, 0, 0), (1, 2, 0)), (0.3, 0, 0))),
+        case("nearly_parallel_crossing", CUBIC_A, _shifted(CUBIC_A, (1e-3, 1e-7, 0))),
+        case("parallel_offset", LINE, _shifted(LINE, (0, 0.5, 0)), unique=False),
+        case("parallel_offset_overlap", LINE, _shifted(LINE, (1.25, 0.375, 0.5)), unique=False),
+        case("identical", CUBIC_A, CUBIC_A, unique=False),
+        case("apart_end_to_end", LINE, _shifted(LINE, (4, 0, 0)), unique=True),
+        case("big_small", big, small),
+        case("big_small_interior", big, bump),
+        case("translated", _shifted(CUBIC_A, SHIFT), _shifted(CUBIC_B, SHIFT)),
+        case("translated_quadratics", _shifted(ARCH, SHIFT), _shifted(((-1, 2, 0.5), (0, -0.5, 0), (1, 2, -0.5)), SHIFT)),
+        case("point_curve", ((0.5, 0.5, 0.25),) * 3, CUBIC_A),
+        case("point_on_curve", (tuple(float(x) for x in R.bezier_point(CUBIC_A, 0.3)),) * 4, CUBIC_A),
+        case("collinear_collinear", ((-1, 0.2, 0.1), (-0.2, 0.36, 0.14), (1, 0.6, 0.2)),
+             ((0.3, -1, 1), (0.3, 0, 0.4), (0.3, 0.5, 0.1), (0.3, 1, -0.2))),
+        case("collinear_curve", ((-1, 0.2, 0.1), (-0.2, 0.36, 0.14), (1, 0.6, 0.2)), CUBIC_B),
+        case("folded_collinear", ((0, 0, 0), (3, 0, 0), (1, 0, 0)), ((1.5, 1, -1), (1.5, 1, 1))),
+        # random degree 5..6 curves whose closest pair a flat leaf's descent once missed
+        case("missed_basin_1", BB.MISSED_A, BB.MISSED_B),
+        case("missed_basin_2", BB.MISSED_C, BB.MISSED_D),
+    ]
+
+
+CASES = _random_cases() + _hard_cases()
+IDS = [c.name for c in CASES]
+BY_NAME = {c.name: c for c in CASES}
+
+
+@functools.lru_cache(maxsize=None)
+def reference(name):
+    c = BY_NAME[name]
+    return RB.bezier_bezier(c.a, c.b)
+
+
+def bar_scale(ref) -> float:
+    return max(float(ref.distance), float(ref.scale), 1e-300)
+
+
+def shapes(c: Case, sweeps=(None, None)):
+    return cd.Bezier(np.array(c.a), sweep=sweeps[0]), cd.Bezier(np.array(c.b), sweep=sweeps[1])
+
+
+def error(d, ref, precision):
+    x = R.to_mp(d) if precision == "float64" else R.mpf(np.format_float_scientific(np.longdouble(d), unique=True))
+    return float(abs(x - ref.distance))
+
+
+# ------------------------------------------------------------------------------------------------
+# the references themselves (no circledist)
+# ------------------------------------------------------------------------------------------------
+def test_reference_known_answers():
+    """The crossing is at the arch's apex; the shifted straight curves are as far apart all along
+    as their offset across them (0.5, 0.625); identical curves meet everywhere; the arches touch at
+    the apex (the second is the first mirrored through y = 1); the near crossing passes the apex
+    at the rounded 1e-9 offset."""
+    assert reference("crossing").distance == 0
+    assert abs(reference("parallel_offset").distance - R.mpf("0.5")) < R.mpf("1e-40")
+    assert abs(reference("parallel_offset_overlap").distance - R.mpf("0.625")) < R.mpf("1e-40")
+    assert reference("identical").distance == 0
+    assert abs(reference("nearly_touching_1e-9").distance - R.mpf(1 + 1e-9) + 1) < R.mpf("1e-25")
+    assert reference("tangent_arches").distance < R.mpf("1e-20")
+
+
+# ------------------------------------------------------------------------------------------------
+# the library against them
+# ------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("precision", list(TOL))
+@pytest.mark.parametrize("name", IDS)
+def test_distance(name, precision, solver):
+    c = BY_NAME[name]
+    ref = reference(name)
+    a, b = shapes(c)
+    opts = dict(precision=precision, solver=solver)
+    d = cd.distance(a, b, **opts)
+    assert d == cd.distance(b, a, **opts)  # both orders, to the bit
+    assert error(d, ref, precision) <= TOL[precision] * bar_scale(ref), (d, ref)
+    assert np.asarray(d).dtype == (np.longdouble if precision == "longdouble" else np.float64)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("name", IDS)
+def test_closest_points(name, solver):
+    c = BY_NAME[name]
+    ref = reference(name)
+    a, b = shapes(c)
+    tol = 1e-12 * bar_scale(ref)
+    # Points are world coordinates: within rounding of their own size (a scene 1e6 away).
+    size = max(np.abs(np.array(c.a)).max(), np.abs(np.array(c.b)).max())
+    on = 8 * tol + 16 * np.finfo(float).eps * size
+    r = cd.closest_points(a, b, solver=solver)
+    assert r.distance == cd.distance(a, b, solver=solver)
+    s, t = float(r.param_a[0]), float(r.param_b[0])
+    assert 0 <= s <= 1 and 0 <= t <= 1 and r.param_a[1] == 0 and r.param_b[1] == 0
+    assert float(R.dist(R.vec(r.point_a), R.bezier_point(c.a, s))) <= on
+    assert float(R.dist(R.vec(r.point_b), R.bezier_point(c.b, t))) <= on
+    assert abs(float(R.dist(R.vec(r.point_a), R.vec(r.point_b))) - r.distance) <= on
+    assert abs(float(R.to_mp(r.distance) - ref.distance)) <= tol
+    if c.unique is not None:
+        assert r.unique == c.unique
+    o = cd.closest_points(b, a, solver=solver)  # the other order: the same answer swapped
+    assert o.distance == r.distance and o.unique == r.unique
+    assert np.array_equal(o.point_a, r.point_b) and np.array_equal(o.point_b, r.point_a)
+    assert np.array_equal(o.param_a, r.param_b) and np.array_equal(o.param_b, r.param_a)
+
+
+@pytest.mark.parametrize("name", IDS)
+def test_effects_and_sweeps(name):
+    c = BY_NAME[name]
+    ref = reference(name)
+    scale = bar_scale(ref)
+    a, b = shapes(c)
+    d_ref = float(ref.distance)
+    size = max(np.abs(np.array(c.a)).max(), np.abs(np.array(c.b)).max())
+    margin = 1e-6 * scale + 1e-12 * size
+    for x, y in ((a, b), (b, a)):
+        assert cd.within(x, y, d_ref + 1e-9 * scale)
+        if d_ref > margin:
+            assert not cd.within(x, y, d_ref - margin)
+            assert not cd.intersects(x, y)
+        if d_ref == 0:
+            assert cd.intersects(x, y)
+    # swept: the core distance less both sweeps, never below 0
+    ra, rb = 0.1 * scale, 0.05 * scale
+    sa, sb = shapes(c, (ra, rb))
+    d = cd.distance(a, b)
+    assert cd.distance(sa, sb) == cd.distance(sb, sa)
+    assert abs(cd.distance(sa, sb) - max(0.0, d - ra - rb)) <= 1e-12 * scale
+    if d > ra + rb + 1e-9 * scale:
+        assert not cd.intersects(sa, sb) and not cd.intersects(sb, sa)
+    elif d < ra + rb - 1e-9 * scale:
+        assert cd.intersects(sa, sb) and cd.intersects(sb, sa)
+    r = cd.closest_points(sa, sb)
+    assert r.distance == cd.distance(sa, sb)
+
+
+def _single(c, solver):
+    a, b = shapes(c)
+    return cd.distance(a, b, solver=solver), cd.closest_points(a, b, solver=solver)
+
+
+@pytest.mark.parametrize("solver", ("bracketing", "companion"))
+def test_batch_matches_single(solver):
+    """Batches of curves of one degree pair, both orders, with broadcasting (a batch against one
+    curve; a column against a row), bit for bit against single calls."""
+    groups = {}
+    for c in CASES:
+        groups.setdefault((len(c.a), len(c.b)), []).append(c)
+    for group in groups.values():
+        A = cd.Bezier(np.array([c.a for c in group]))
+        B = cd.Bezier(np.array([c.b for c in group]))
+        d = cd.distance(A, B, solver=solver)
+        assert np.array_equal(d, cd.distance(B, A, solver=solver))
+        r = cd.closest_points(A, B, solver=solver)
+        w = cd.within(A, B, d)
+        for i, c in enumerate(group):
+            ds, single = _single(c, solver)
+            assert d[i] == ds, c.name
+            assert r.distance[i] == single.distance
+            assert np.array_equal(r.point_a[i], single.point_a) and np.array_equal(r.point_b[i], single.point_b)
+            assert np.array_equal(r.param_a[i], single.param_a) and np.array_equal(r.param_b[i], single.param_b)
+            assert r.unique[i] == single.unique
+            assert w[i]
+    # broadcasting: cubics (n, 1) against cubics (m,), and a batch against one curve
+    cubics = [c for c in CASES if len(c.a) == 4 and len(c.b) == 4]
+    A = np.array([c.a for c in cubics])
+    B = np.array([c.b for c in cubics])
+    m = cd.distance(cd.Bezier(A[:, None]), cd.Bezier(B), solver=solver)
+    assert m.shape == (len(cubics), len(cubics))
+    for i in range(len(cubics)):
+        for j in range(len(cubics)):
+            assert m[i, j] == cd.distance(cd.Bezier(A[i]), cd.Bezier(B[j]), solver=solver)
+    one = cd.distance(cd.Bezier(A), cd.Bezier(B[0]), solver=solver)
+    assert np.array_equal(one, m[:, 0])
+
+
+def test_degenerate_curves_agree_with_point_and_segment_queries():
+    """A curve whose control points are equal is a point; collinear control points traversed once
+    are a segment: the answers agree with the point and segment queries (to rounding)."""
+    dot = cd.Bezier(np.array(BY_NAME["point_curve"].a))
+    p = cd.Point(BY_NAME["point_curve"].a[0])
+    cubic = cd.Bezier(np.array(CUBIC_A))
+    assert abs(cd.distance(dot, cubic) - cd.distance(p, cubic)) <= 1e-15
+    c = BY_NAME["collinear_collinear"]
+    sa, sb = cd.Segment(c.a[0], c.a[-1]), cd.Segment(c.b[0], c.b[-1])
+    a, b = shapes(c)
+    assert abs(cd.distance(a, b) - cd.distance(sa, sb)) <= 1e-15
+    assert abs(cd.distance(a, cd.Bezier(np.array(CUBIC_B))) - cd.distance(sa, cd.Bezier(np.array(CUBIC_B)))) <= 1e-15
+    line = cd.Bezier(np.array(LINE))
+    assert abs(cd.distance(line, cd.Bezier(np.array(CUBIC_B))) -
+               cd.distance(cd.Segment(LINE[0], LINE[-1]), cd.Bezier(np.array(CUBIC_B)))) <= 1e-15
+    # an empty batch
+    assert cd.distance(cd.Bezier(np.zeros((0, 3, 3))), cubic).shape == (0,)
+
+
+def test_float32_runs():
+    a, b = shapes(BY_NAME["random_deg3_deg3_2"])
+    ref = reference("random_deg3_deg3_2")
+    a32 = cd.Bezier(np.array(BY_NAME["random_deg3_deg3_2"].a, dtype=np.float32))
+    b32 = cd.Bezier(np.array(BY_NAME["random_deg3_deg3_2"].b, dtype=np.float32))
+    assert abs(cd.distance(a32, b32) - float(ref.distance)) <= 1e-5
+    assert abs(cd.distance(a, b, precision="float32") - float(ref.distance)) <= 1e-5
+
+
+def test_scene_and_pairs_with_curves():
+    """Scenes of curves: nearest and pairs_within through the same kernels."""
+    scene = cd.Scene()
+    scene.add("arch", cd.Bezier(np.array(ARCH)))
+    scene.add("cross", cd.Bezier(np.array(CROSS)))
+    scene.add("far", cd.Bezier(np.array(_shifted(CUBIC_A, (10, 0, 0)))))
+    assert scene.nearest(cd.Bezier(np.array(_shifted(CROSS, (0, 1e-3, 0)))))[0][0] in ("arch", "cross")
+    assert ("arch", "cross") in [tuple(sorted(p)) for p in scene.pairs_within(1e-9)]
