@@ -26,6 +26,7 @@ import circledist as cd
 from circledist_cases import reference_bezier as RB
 from circledist_cases import bezier_cases as BB
 from circledist_cases import reference_round as R
+from circledist_cases.effect_checks import assert_effects_and_sweeps
 
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
 TOL = {"float64": 1e-12, "longdouble": 1e-15}
@@ -196,26 +197,7 @@ def test_effects_and_sweeps(name):
     a, b = shapes(c)
     d_ref = float(ref.distance)
     size = max(np.abs(np.array(c.a)).max(), np.abs(np.array(c.b)).max())
-    margin = 1e-6 * scale + 1e-12 * size
-    for x, y in ((a, b), (b, a)):
-        assert cd.within(x, y, d_ref + 1e-9 * scale)
-        if d_ref > margin:
-            assert not cd.within(x, y, d_ref - margin)
-            assert not cd.intersects(x, y)
-        if d_ref == 0:
-            assert cd.intersects(x, y)
-    # swept: the core distance less both sweeps, never below 0
-    ra, rb = 0.1 * scale, 0.05 * scale
-    sa, sb = shapes(c, (ra, rb))
-    d = cd.distance(a, b)
-    assert cd.distance(sa, sb) == cd.distance(sb, sa)
-    assert abs(cd.distance(sa, sb) - max(0.0, d - ra - rb)) <= 1e-12 * scale
-    if d > ra + rb + 1e-9 * scale:
-        assert not cd.intersects(sa, sb) and not cd.intersects(sb, sa)
-    elif d < ra + rb - 1e-9 * scale:
-        assert cd.intersects(sa, sb) and cd.intersects(sb, sa)
-    r = cd.closest_points(sa, sb)
-    assert r.distance == cd.distance(sa, sb)
+    assert_effects_and_sweeps(a, b, lambda ra, rb: shapes(c, (ra, rb)), d_ref, scale, size)
 
 
 def _single(c, solver):

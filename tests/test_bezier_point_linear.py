@@ -25,6 +25,7 @@ import pytest
 
 import circledist as cd
 from circledist_cases import reference_round as R
+from circledist_cases.effect_checks import assert_effects_and_sweeps
 
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
 TOL = {"float64": 1e-12, "longdouble": 1e-15}
@@ -264,26 +265,7 @@ def test_effects_and_sweeps(name):
     # within()'s tolerance is 64 eps x the pair's size from its bounding balls (effects.hpp):
     # 1e10 for the far curve, whatever the answer's own scale.
     size = max(np.abs(np.array(c.ctrl)).max(), max(np.abs(np.array(d)).max() for d in c.data))
-    margin = 1e-6 * scale + 1e-12 * size
-    for x, y in ((a, b), (b, a)):
-        assert cd.within(x, y, d_ref + 1e-9 * scale)
-        if d_ref > margin:
-            assert not cd.within(x, y, d_ref - margin)
-            assert not cd.intersects(x, y)
-        if d_ref == 0:
-            assert cd.intersects(x, y)
-    # swept: the core distance less both sweeps, never below 0
-    ra, rb = 0.1 * scale, 0.05 * scale
-    sa, sb = shapes(c, (ra, rb))
-    d = cd.distance(a, b)
-    assert cd.distance(sa, sb) == cd.distance(sb, sa)
-    assert abs(cd.distance(sa, sb) - max(0.0, d - ra - rb)) <= 1e-12 * scale
-    if d > ra + rb + 1e-9 * scale:
-        assert not cd.intersects(sa, sb) and not cd.intersects(sb, sa)
-    elif d < ra + rb - 1e-9 * scale:
-        assert cd.intersects(sa, sb) and cd.intersects(sb, sa)
-    r = cd.closest_points(sa, sb)
-    assert r.distance == cd.distance(sa, sb)
+    assert_effects_and_sweeps(a, b, lambda ra, rb: shapes(c, (ra, rb)), d_ref, scale, size)
 
 
 @pytest.mark.parametrize("kind", ["point", "line", "ray", "segment"])
