@@ -1,9 +1,20 @@
-"""The checks of within(), intersects() and swept shapes that every curve family runs against its
-reference distance (tests/test_bezier_point_linear.py, tests/test_bezier_bezier.py)."""
+"""Checks that every curve family runs (tests/test_bezier_point_linear.py,
+tests/test_bezier_bezier.py): within(), intersects() and swept shapes against the reference
+distance, and the other argument order's closest points."""
 
 from __future__ import annotations
 
+import numpy as np
+
 import circledist as cd
+
+
+def assert_other_order_swapped(a, b, r, solver):
+    """closest_points(b, a) is r, closest_points(a, b), with its two sides swapped."""
+    o = cd.closest_points(b, a, solver=solver)
+    assert o.distance == r.distance and o.unique == r.unique
+    assert np.array_equal(o.point_a, r.point_b) and np.array_equal(o.point_b, r.point_a)
+    assert np.array_equal(o.param_a, r.param_b) and np.array_equal(o.param_b, r.param_a)
 
 
 def assert_effects_and_sweeps(a, b, swept, d_ref, scale, size):
