@@ -89,6 +89,21 @@ template <class A, class B> int overflow_exponent(const A& a, const B& b) {
   return largest >= top && largest < std::numeric_limits<Real>::infinity() ? -2 : 0;
 }
 
+// The answer of the scene scaled when its size asks for it, and the exponent `e` it was scaled
+// by (0: no scaling helps, and nothing is solved): by 1/4 first where its coordinates reach the top
+// of the range (overflow_exponent), kept if that distance is moderate; else to [1, 2)
+// (scene_exponent). distance() and closest_points() both choose through it, so they agree.
+template <class A, class B, class Solve, class DistanceOf>
+auto solve_rescaled(const A& a, const B& b, const Solve& solve, const DistanceOf& distance_of, int& e) {
+  e = overflow_exponent(a, b);
+  if (e != 0) {
+    const auto quarter = solve(scaled(a, e), scaled(b, e));
+    if (moderate(distance_of(quarter))) return quarter;
+  }
+  e = scene_exponent(a, b);
+  return e != 0 ? solve(scaled(a, e), scaled(b, e)) : decltype(solve(a, b)){};
+}
+
 // The distance of the scene scaled when its size asks for it (else d, as computed): out of line,
 // so that the common path of ranged_distance stays one comparison.
 template <class Roots, class A, class B, class Real>
@@ -96,12 +111,10 @@ template <class Roots, class A, class B, class Real>
 __attribute__((noinline, cold))
 #endif
 Real rescaled_distance(const A& a, const B& b, Real d) {
-  if (const int e = overflow_exponent(a, b)) {
-    const Real quarter = direct_distance<Roots>(scaled(a, e), scaled(b, e));
-    if (moderate(quarter)) return Real(std::ldexp(quarter, -e));
-  }
-  const int e = scene_exponent(a, b);
-  return e != 0 ? Real(std::ldexp(direct_distance<Roots>(scaled(a, e), scaled(b, e)), -e)) : d;
+  int e = 0;
+  const Real r = solve_rescaled(
+      a, b, [](const auto& x, const auto& y) { return direct_distance<Roots>(x, y); }, [](Real v) { return v; }, e);
+  return e != 0 ? Real(std::ldexp(r, -e)) : d;
 }
 
 // direct_distance, checked for range (`moderate`) and recomputed on the scaled scene.
@@ -120,14 +133,11 @@ template <class Roots, class A, class B, class R>
 __attribute__((noinline, cold))
 #endif
 R rescaled_closest_points(const A& a, const B& b, const R& computed) {
-  const int quarter = overflow_exponent(a, b);
-  R r = quarter != 0 ? direct_closest_points<Roots>(scaled(a, quarter), scaled(b, quarter)) : computed;
-  int e = quarter;
-  if (quarter == 0 || !moderate(r.distance)) {
-    e = scene_exponent(a, b);
-    if (e == 0) return computed;
-    r = direct_closest_points<Roots>(scaled(a, e), scaled(b, e));
-  }
+  int e = 0;
+  R r = solve_rescaled(
+      a, b, [](const auto& x, const auto& y) { return direct_closest_points<Roots>(x, y); },
+      [](const R& answer) { return answer.distance; }, e);
+  if (e == 0) return computed;
   r.distance = std::ldexp(r.distance, -e);
   r.point_a = ldexp3(r.point_a, -e);
   r.point_b = ldexp3(r.point_b, -e);
