@@ -35,6 +35,19 @@ MISSED_D = ((-1.8578544124498564, 0.58430243026410555, -0.42884786932778324),
             (0.21070827799196953, -1.3960938657582826, -0.7238886780354824),
             (1.6505403039981872, 0.66252563211070736, 0.85291341708662005))
 
+# Two nearly parallel straight cubics (hard_scenes' parallel_offset_overlap under the accuracy
+# report's generic rotation, translated by 1e6: the control points rounded there), whose distance
+# varies by 1.4e-12 along their overlap: the polish stopped 4.8e-13 of their size above the
+# lowest point, in double and long double alike (now the valley is searched in one parameter).
+VALLEY_A = ((1000000.0, -700000.0, 400000.0),
+            (1000000.6706493164, -699999.4387242697, 400000.48497324577),
+            (1000001.676623291, -699998.5968106744, 400001.2124331144),
+            (1000002.0119479492, -699998.3161728093, 400001.4549197373))
+VALLEY_B = ((1000000.4452836048, -699999.2462584302, 400001.0893673197),
+            (1000001.1159329212, -699998.6849827, 400001.5743405655),
+            (1000002.1219068958, -699997.8430691047, 400002.3018004341),
+            (1000002.457231554, -699997.5624312395, 400002.544287057))
+
 
 def shifted(ctrl, by):
     return tuple(tuple(np.array(p, dtype=float) + np.array(by, dtype=float)) for p in ctrl)
@@ -82,4 +95,5 @@ def hard_scenes():
         # random degree 5..6 curves whose closest pair a flat leaf's descent once missed
         ("missed_basin_1", MISSED_A, MISSED_B),
         ("missed_basin_2", MISSED_C, MISSED_D),
+        ("flat_valley_translated", VALLEY_A, VALLEY_B),
     ]

@@ -18,6 +18,7 @@
 
 #include "bezier_point.hpp"
 #include "linear_linear.hpp"
+#include "minimize.hpp"
 
 #include <algorithm>
 #include <array>
@@ -124,8 +125,15 @@ template <class Real> struct CurvePairSolver {
   // is the edges' point query's, §2), each kept only if F decreases; the damping grows where the
   // Hessian is not positive definite or a step fails (a saddle, the flat valley of nearly
   // parallel pieces), and shrinks after every success, so that the last steps are Newton's.
+  //
+  // A flat valley (nearly parallel pieces, where F varies by little along a curve of pairs: a
+  // near-continuum of closest pairs) leaves the Hessian nearly singular; the steps along the
+  // valley are then damped to a crawl and stop short of its lowest point, by up to how much F
+  // varies along it (4.8e-13 of the curves' size for two nearly parallel straight cubics
+  // translated by 1e6 and rotated, over the long-double bar). There the valley is searched in one
+  // parameter: g(s) = min over t of F(s, t) (valley_minimum), over the pair's span [s_lo, s_hi].
   static Candidate polish(const LocalBezier<Real>& ca, const LocalBezier<Real>& cb, Real s, Real t, Real tol_s,
-                          Real tol_t) {
+                          Real tol_t, Real s_lo, Real s_hi) {
     Vec3<Real> a, a1, a2, b, b1, b2;
     const auto state = [&](Real x, Real y, Real& f, Real& g1, Real& g2, Real& h11, Real& h12, Real& h22) {
       derivatives(ca, x, a, a1, a2);
@@ -178,6 +186,9 @@ template <class Real> struct CurvePairSolver {
         if (!(lambda < Real(1e12))) break;
       }
     }
+    // Nearly singular: det below 1e-6 of h11 h22 (the tangents within about 1e-3 rad of parallel).
+    if (h11 > 0 && h22 > 0 && h11 * h22 - h12 * h12 <= Real(1e-6) * h11 * h22)
+      valley_minimum(ca, cb, s, t, f, tol_s, tol_t, s_lo, s_hi);
     Candidate c;
     c.s = s;
     c.t = t;
@@ -185,6 +196,47 @@ template <class Real> struct CurvePairSolver {
     c.pb = cb.at(t);
     c.value = std::sqrt((c.pa - c.pb).squaredNorm());
     return c;
+  }
+
+  // t in [0, 1] nearest B(t) to the point p, by Newton on |p - B(t)|^2 from t (clamped to the
+  // interval); near a valley's pairs the minimum over t is simple (B's tangent is not parallel to
+  // itself), so a few steps from the last one's t suffice.
+  static Real nearest_t(const LocalBezier<Real>& cb, const Vec3<Real>& p, Real t, Real tol_t) {
+    Vec3<Real> b, b1, b2;
+    for (int iteration = 0; iteration < 32; ++iteration) {
+      derivatives(cb, t, b, b1, b2);
+      const Vec3<Real> r = p - b;
+      const Real slope = -r.dot(b1), curvature = b1.squaredNorm() - r.dot(b2);
+      if (!(curvature > 0)) break;
+      const Real next = std::min(std::max(t - slope / curvature, Real(0)), Real(1));
+      const bool done = std::abs(next - t) <= tol_t;
+      t = next;
+      if (done) break;
+    }
+    return t;
+  }
+
+  // §4: the valley's lowest point: Brent's minimization (minimize.hpp) of g(s) = min over t of
+  // F(s, t) over [s_lo, s_hi] from s, each g by nearest_t from the last t; (s, t) and f move
+  // only where it finds a lower F.
+  static void valley_minimum(const LocalBezier<Real>& ca, const LocalBezier<Real>& cb, Real& s, Real& t, Real& f,
+                             Real tol_s, Real tol_t, Real s_lo, Real s_hi) {
+    if (!(s_hi > s_lo)) return;
+    Real t_last = t;
+    const auto g = [&](Real x) {
+      const Vec3<Real> a = ca.at(x);
+      t_last = nearest_t(cb, a, t_last, tol_t);
+      return (a - cb.at(t_last)).squaredNorm();
+    };
+    Real value = g(s);
+    const Real x = brent_minimize(g, s_lo, s_hi, std::min(std::max(s, s_lo), s_hi), value, tol_s);
+    const Real y = nearest_t(cb, ca.at(x), t_last, tol_t);
+    const Real fy = (ca.at(x) - cb.at(y)).squaredNorm();
+    if (fy < f) {
+      s = x;
+      t = y;
+      f = fy;
+    }
   }
 
   // §3-§4: the interior candidates, appended to `out`; `upper` is the best value so far (the
@@ -232,7 +284,8 @@ template <class Real> struct CurvePairSolver {
             Segment3<Real>{p.qa[0], p.qa[na]}, Segment3<Real>{p.qb[0], p.qb[nb]});
         const Real u = std::isfinite(seed.param_a.x()) ? seed.param_a.x() : Real(0.5);
         const Real v = std::isfinite(seed.param_b.x()) ? seed.param_b.x() : Real(0.5);
-        const Candidate c = polish(ca, cb, p.a0 + u * (p.a1 - p.a0), p.b0 + v * (p.b1 - p.b0), tol_s, tol_t);
+        const Candidate c =
+            polish(ca, cb, p.a0 + u * (p.a1 - p.a0), p.b0 + v * (p.b1 - p.b0), tol_s, tol_t, p.a0, p.a1);
         if (c.value < upper) upper = c.value;
         out.push_back(c);
         // §3: the pieces lie within off_a and off_b of their chords, so the pair's minimum is at most
