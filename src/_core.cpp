@@ -205,6 +205,11 @@ template <int K> void bind_shape(py::module_& m, const std::string& doc) {
   bind_shape<K>(m, doc, std::make_index_sequence<kFieldCounts[K]>());
 }
 
+// Every kind's class, from the kinds' tables (shapes.hpp's fields, help.hpp's docstrings).
+template <size_t... K> void bind_shapes(py::module_& m, std::index_sequence<K...>) {
+  (bind_shape<int(K)>(m, doc::shape_class(int(K))), ...);
+}
+
 // The constructor's arguments as arrays, by name: float32 fields as float32 (the values they were
 // read from, exactly), np.longdouble ones as long double, the others float64; read-only. The
 // sweep is left out when none was given (the default, whose dtype would otherwise decide the
@@ -350,13 +355,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("_from_arrays", &from_arrays, py::arg("cls"), py::arg("arrays"), py::arg("copy"),
         "cls.from_arrays(arrays, copy=copy): how pickle rebuilds a shape.");
 
-  bind_shape<kPoint>(m, doc::point());
-  bind_shape<kLine>(m, doc::linear("Line"));
-  bind_shape<kRay>(m, doc::linear("Ray"));
-  bind_shape<kSegment>(m, doc::segment());
-  bind_shape<kCircle>(m, doc::round_shape("Circle"));
-  bind_shape<kDisk>(m, doc::round_shape("Disk"));
-  bind_shape<kBezier>(m, doc::bezier());
+  bind_shapes(m, std::make_index_sequence<kKindCount>());
 
   // Properties rather than def_readonly, so that signatures and stubs name the result types.
   py::class_<ClosestPoints>(m, "ClosestPoints", doc::kClosestPoints)

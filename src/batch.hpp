@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace circledist::python {
@@ -103,6 +105,27 @@ template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
     return curve;
   }
 };
+
+// The C++ primitive of each kind, in Kind's order: the one list a new kind adds its type to, so
+// that code over every kind (the broadphase's volumes, bind_pairs.hpp) has no per-kind branch.
+template <class Real>
+using KindTypes = std::tuple<Vec3<Real>, Line3<Real>, Ray3<Real>, Segment3<Real>, Circle3<Real>, Disk3<Real>,
+                             BezierCurve3<Real>>;
+static_assert(std::tuple_size_v<KindTypes<double>> == kKindCount, "a kind without a primitive in KindTypes");
+
+template <class T> struct TypeTag {
+  using type = T;
+};
+
+// fn(TypeTag<S>{}) for the primitive S (of scalar Real) of `kind`.
+template <class Real, class Fn, size_t... K> void visit_kind(int kind, Fn&& fn, std::index_sequence<K...>) {
+  static_assert(((ShapeTraits<std::tuple_element_t<K, KindTypes<Real>>>::kind == int(K)) && ...),
+                "KindTypes and ShapeTraits disagree on a kind");
+  (void)((kind == int(K) ? (fn(TypeTag<std::tuple_element_t<K, KindTypes<Real>>>{}), true) : false) || ...);
+}
+template <class Real, class Fn> void visit_kind(int kind, Fn&& fn) {
+  visit_kind<Real>(kind, std::forward<Fn>(fn), std::make_index_sequence<kKindCount>());
+}
 
 // A shape batch as a query reads it: per field, its values in the storage type T of the query's
 // precision (double, or long double), its width (values per element) and its batch shape. The

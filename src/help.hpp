@@ -3,6 +3,8 @@
 // whose examples run as doctests (tests/test_docstrings.py). No behaviour lives here.
 #pragma once
 
+#include "batch.hpp"
+
 #include <pybind11/pybind11.h>
 #include <pybind11/typing.h>
 
@@ -249,6 +251,15 @@ control_points : numpy.ndarray, shape (..., k + 1, 3)
 0.5
 )");
   return text;
+}
+
+// The class docstring of each kind, in Kind's order (src/batch.hpp): the module binds every kind
+// from this list and shapes.hpp's field table, with no per-kind code.
+inline const std::string& shape_class(int kind) {
+  static const std::string* const docs[] = {&point(),  &linear("Line"),        &linear("Ray"),        &segment(),
+                                            &round_shape("Circle"), &round_shape("Disk"), &bezier()};
+  static_assert(sizeof(docs) / sizeof(docs[0]) == kKindCount, "a kind without a class docstring");
+  return *docs[kind];
 }
 
 inline const char* const kShape = R"(Base class of every shape: a single shape or a batch of them.

@@ -257,6 +257,51 @@ struct Shape {
   }
 };
 
+// Where each field of a shape keeps the element of a flat index of the shape's batch: fields
+// broadcast within a shape (a scalar radius for a batch of centers), so a field's element is the
+// flat index itself (full-size fields), 0 (one value), or a walk over the batch's dimensions.
+struct FieldElements {
+  enum class Mode { Full, One, Strided };
+  struct Map {
+    Mode mode;
+    std::vector<Index> strides;  // elements per step along each batch dimension (Strided)
+  };
+  BatchShape batch;
+  std::vector<Map> maps;
+
+  explicit FieldElements(const Shape& s) : batch(s.batch) {
+    for (const Field& f : s.fields) {
+      Map m{Mode::Strided, std::vector<Index>(batch.size(), 0)};
+      if (f.batch.empty()) {
+        m.mode = Mode::One;
+      } else if (f.batch == batch) {
+        m.mode = Mode::Full;
+      } else {
+        Index step = 1;
+        for (size_t k = 0; k < f.batch.size(); ++k) {
+          const size_t d = batch.size() - 1 - k;
+          const Index extent = f.batch[f.batch.size() - 1 - k];
+          m.strides[d] = extent == 1 ? 0 : step;
+          step *= extent;
+        }
+      }
+      maps.push_back(std::move(m));
+    }
+  }
+
+  Index of(size_t field, Index flat) const {
+    const Map& m = maps[field];
+    if (m.mode == Mode::Full) return flat;
+    if (m.mode == Mode::One) return 0;
+    Index at = 0;
+    for (size_t d = batch.size(); d-- > 0;) {
+      at += (flat % batch[d]) * m.strides[d];
+      flat /= batch[d];
+    }
+    return at;
+  }
+};
+
 inline void check_float_range(const Shape& s) {
   for (const Field& f : s.fields) check_float_range(kind_name(s.kind), f);
 }
