@@ -192,8 +192,10 @@ template <int K, size_t... I> void bind_shape(py::module_& m, const std::string&
   static const FieldSpec* spec = kFieldSpecs[K];
   py::class_<ShapeOf<K>, Shape> cls(m, kind_name(K), doc.c_str());
   cls.def(py::init([](decltype((void)I, ArrayLike())... values, OptionalArrayLike sweep, bool copy) {
-            return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check, copy)...,
-                                  sweep_field(kind_name(K), sweep, copy)});
+            ShapeOf<K> shape(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check, copy)...,
+                                 sweep_field(kind_name(K), sweep, copy)});
+            check_not_along(shape, spec);
+            return shape;
           }),
           py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none(), py::arg("copy") = true);
   (cls.def_property_readonly(
@@ -281,6 +283,7 @@ const char* field_role(const FieldSpec& f) {
   if (f.width == kControlPoints) return "control_points";
   if (f.width == 3) return f.check == Check::NonzeroVector ? "direction" : "vector";
   if (f.width == 1 && f.check == Check::NonNegative) return "length";
+  if (f.width == 1 && f.check == Check::Angle) return "angle";
   throw std::logic_error(std::string("field '") + f.name + "' has no role: give it one in field_role");
 }
 
@@ -396,7 +399,7 @@ PYBIND11_MODULE(_core, m) {
   bind_effects(m);
   m.def("_shape_fields", &shape_fields,
         "Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' "
-        "(shape (3,), not zero), 'length' (a number >= 0) or 'control_points' (shape (k + 1, 3)). Read by the scene "
+        "(shape (3,), not zero), 'length' (a number >= 0), 'angle' (a number in (0, 2 pi]) or 'control_points' (shape (k + 1, 3)). Read by the scene "
         "files, the command line and circledist.Scene.");
   m.attr("_max_control_points") = kMaxBezierDegree + 1;  // a Bezier curve's, from primitives.hpp
   m.def(

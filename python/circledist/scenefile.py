@@ -48,7 +48,7 @@ VERSION = 1
 SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
 
 # kind -> (class name, {field: role}), read from the module's one table of fields (src/shapes.hpp);
-# roles: vector, direction (a non-zero vector), length (>= 0), control_points. The sweep (a length,
+# roles: vector, direction (a non-zero vector), length (>= 0), angle (in (0, 2 pi]), control_points. The sweep (a length,
 # default 0) comes on top of every kind.
 KINDS = {kind.lower(): (kind, dict(fields)) for kind, fields in _core._shape_fields().items()}
 _SWEEP, _SWEEP_ROLE = _core._sweep_field()
@@ -300,7 +300,7 @@ def _entry_from_json(spec: dict, i: int, file: str) -> ShapeEntry:
         array = _finite_array(value, file, where)
         if role == "direction":
             _check_directions(array, file, where, _json_index)
-        rows_word = {"length": "numbers", "control_points": "curves"}.get(role, "vectors")
+        rows_word = {"length": "numbers", "angle": "numbers", "control_points": "curves"}.get(role, "vectors")
         fields[name] = _column(array, role, count, file, where, rows_word)
     entry = ShapeEntry(spec["name"], kind, count, fields)
     try:
@@ -358,6 +358,8 @@ def _refused_rows(kind: str, columns: dict, rows: int) -> np.ndarray:
             bad |= ~np.any(column != 0, axis=-1)
         elif role == "length":
             bad |= column < 0
+        elif role == "angle":
+            bad |= ~((column > 0) & (column <= 2 * math.pi))
     # The rows left, as views where none is bad (a masked copy of 10^6 rows costs more than the check).
     good = slice(None) if not bad.any() else ~bad
     try:
@@ -594,16 +596,18 @@ def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where:
         shape_ok = shape_ok and inner[1:] == (3,) and 2 <= inner[0] <= MAX_CONTROL_POINTS
     if not shape_ok:
         rows = "" if count is None else "[rows (count or 1)] + "
-        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()",
+        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()", "angle": "()",
                   "control_points": f"(m, 3), m from 2 to {MAX_CONTROL_POINTS}"}[role]
         raise _error(file, where, f"expected shape {rows}{wanted}, got {a.shape}")
     array = a.astype(np.float64, copy=False)
     bad = ~np.isfinite(array)
     if role == "length":
         bad |= array < 0
+    if role == "angle":
+        bad |= ~((array > 0) & (array <= 2 * math.pi))
     if bad.any():
         at = np.unravel_index(int(np.argmax(bad)), bad.shape) if bad.ndim else ()
-        what = "a finite number >= 0" if role == "length" else "a finite number"
+        what = {"length": "a finite number >= 0", "angle": "an angle in (0, 2 pi]"}.get(role, "a finite number")
         raise _error(file, _npz_index(where, at), f"expected {what}, got {float(array[at])!r}")
     if role == "direction":
         _check_directions(array, file, where, _npz_index)
