@@ -289,8 +289,8 @@ angle : numpy.ndarray, shape (...)
 >>> quarter = cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], np.pi / 2)  # from (1, 0, 0) to (0, 1, 0)
 >>> cd.distance(quarter, [0, 0, 0])
 1.0
->>> round(cd.distance(quarter, [-2, 0, 0]), 12)  # nearest at the end (0, 1, 0)
-2.236067977499
+>>> round(cd.distance(quarter, [-2, 0, 0]) ** 2, 12)  # nearest at the end (0, 1, 0): sqrt(5)
+5.0
 >>> r = cd.closest_points(quarter, [1, 1, 0])
 >>> round(float(r.param_a[0]), 12)  # the angle t from the start: the middle of the arc
 0.785398163397

@@ -550,7 +550,7 @@ BAD_NPZ = [
     ("missing shapes", _without("shapes"), "array 'shapes'", "missing (a 1-d string array"),
     ("unlisted kind", {**GOOD_NPZ, "shapes": np.array(["rings", "rail", "x"])}, "array 'x/kind'", "missing"),
     ("unknown kind", {**GOOD_NPZ, "rail/kind": np.array("plane")}, "array 'rail/kind'",
-     'expected one of point, line, ray, segment, circle, disk, bezier, got "plane"'),
+     'expected one of point, line, ray, segment, circle, disk, bezier, arc, got "plane"'),
     ("missing field", _without("rings/radius"), "array 'rings/radius'", "missing (a circle needs center, normal, radius)"),
     ("string field", {**GOOD_NPZ, "rings/radius": np.array(["1", "2", "3"])}, "array 'rings/radius'",
      "expected an array of real numbers (float or integer), got dtype <U1"),

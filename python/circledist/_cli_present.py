@@ -98,6 +98,16 @@ def _ring(center, normal, radius, count=120):
     return np.asarray(center, float) + radius * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
 
 
+def _arc(center, normal, radius, start, angle, count=120):
+    """The arc's own definition: u the unit projection of start onto the plane, v = n x u."""
+    n = np.asarray(normal, float) / np.linalg.norm(normal)
+    u = np.asarray(start, float) - np.dot(start, n) * n
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    t = np.linspace(0, float(angle), count)
+    return np.asarray(center, float) + radius * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+
+
 def _bezier(points, count=100):
     p = np.asarray(points, float)
     t = np.linspace(0, 1, count)[:, None, None]
@@ -142,6 +152,7 @@ _CURVES = {
     "circle": lambda values, count: _ring(*values, count),
     "disk": lambda values, count: _ring(*values, count),
     "bezier": lambda values, count: _bezier(values[0], count),
+    "arc": lambda values, count: _arc(*values, count),
 }
 _FILLED = {"disk"}
 

@@ -261,6 +261,13 @@ def _check_directions(array: np.ndarray, file: str, where: str, index_text) -> N
         raise _error(file, index_text(where, at), "expected a non-zero vector, got [0, 0, 0]")
 
 
+def _check_angles(array: np.ndarray, file: str, where: str, index_text) -> None:
+    bad = ~((array > 0) & (array <= 2 * math.pi))
+    if bad.any():
+        at = np.unravel_index(int(np.argmax(bad)), bad.shape) if bad.ndim else ()
+        raise _error(file, index_text(where, at), f"expected an angle in (0, 2 pi], got {float(array[at])!r}")
+
+
 def _json_index(where: str, at) -> str:
     return where + "".join(f"[{i}]" for i in at)
 
@@ -300,6 +307,8 @@ def _entry_from_json(spec: dict, i: int, file: str) -> ShapeEntry:
         array = _finite_array(value, file, where)
         if role == "direction":
             _check_directions(array, file, where, _json_index)
+        elif role == "angle":
+            _check_angles(array, file, where, _json_index)
         rows_word = {"length": "numbers", "angle": "numbers", "control_points": "curves"}.get(role, "vectors")
         fields[name] = _column(array, role, count, file, where, rows_word)
     entry = ShapeEntry(spec["name"], kind, count, fields)
