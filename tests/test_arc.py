@@ -519,3 +519,31 @@ def test_scene_queries_with_arcs_equal_brute_force():
         brute = [(x, y) for i, x in enumerate(names) for y in names[i + 1:] if cd.within(shapes[x], shapes[y], d)]
         assert scene.pairs_within(d) == brute
         assert any("arc" in x + y for x, y in brute) or d == 0.0
+
+
+def test_broadphase_boxes_hold_the_arcs():
+    """The broadphase's box of an arc is tight (its ends and the circle's extremes on it), not the
+    circle's: points on the arcs, and points just off them, must all be found by pairs_within and
+    nearest exactly as brute force finds them (a box missing part of its arc would lose pairs)."""
+    rng = np.random.default_rng(21)
+    n = 300
+    centers = rng.uniform(-20, 20, (n, 3))
+    normals, starts = rng.normal(size=(n, 3)), rng.normal(size=(n, 3))
+    radii_, angles = rng.uniform(0.5, 3, n), rng.uniform(0.05, TWO_PI, n)
+    arcs = cd.Arc(centers, normals, radii_, starts, angles)
+    # a point on each arc at a random t (from the arc's own u, v), and one 1e-3 off it
+    nn = normals / np.linalg.norm(normals, axis=1, keepdims=True)
+    u = starts - np.sum(starts * nn, axis=1, keepdims=True) * nn
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    v = np.cross(nn, u)
+    t = rng.uniform(0, 1, n) * angles
+    on = centers + radii_[:, None] * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+    points = cd.Point(np.concatenate([on, on + 1e-3 * rng.normal(size=(n, 3))]))
+    i, j, d = cd.pairs_within(arcs, points, 0.01)
+    dist = cd.distance(cd.Arc.from_arrays({k: a[:, None] for k, a in arcs.to_arrays().items()}), points)
+    want_i, want_j = np.nonzero(dist <= 0.01)
+    assert np.array_equal(i, want_i) and np.array_equal(j, want_j) and np.array_equal(d, dist[want_i, want_j])
+    assert {(k, k) for k in range(n)} <= set(zip(i.tolist(), j.tolist()))
+    idx, nd = cd.nearest(points, arcs, k=2)
+    order = np.argsort(dist.T, axis=1, kind="stable")[:, :2]
+    assert np.array_equal(nd, np.take_along_axis(dist.T, order, axis=1))
