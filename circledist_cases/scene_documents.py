@@ -4,7 +4,7 @@ and schema tests)."""
 
 SCENE = {
     "format": "circledist-scene",
-    "version": 1,
+    "version": 2,  # it holds an arc
     "description": "test scene",
     "shapes": [
         {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
@@ -27,7 +27,8 @@ SCENE = {
 }
 
 
-HEAD = {"format": "circledist-scene", "version": 1}
+HEAD = {"format": "circledist-scene", "version": 2}  # the current version (arcs need it)
+HEAD1 = {"format": "circledist-scene", "version": 1}
 # (label, file content, the JSON path, what was expected): each must appear in the one-line message.
 BAD = [
     ("not json", "{", "", "not valid JSON: Expecting property name"),
@@ -37,10 +38,12 @@ BAD = [
     ("wrong format", {"format": "scene", "version": 1, "shapes": SCENE["shapes"]}, "$.format",
      'expected "circledist-scene", got "scene"'),
     ("no version", {"format": "circledist-scene", "shapes": SCENE["shapes"]}, "$",
-     "missing field 'version' (this circledist reads version 1)"),
-    ("newer version", {**HEAD, "version": 2, "shapes": SCENE["shapes"]}, "$.version",
-     "version 2 is newer than this circledist reads (version 1): upgrade circledist"),
-    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version", 'expected 1, got "1"'),
+     "missing field 'version' (this circledist reads versions 1 to 2)"),
+    ("newer version", {**HEAD, "version": 3, "shapes": SCENE["shapes"]}, "$.version",
+     "version 3 is newer than this circledist reads (versions 1 to 2): upgrade circledist"),
+    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version", 'expected one of 1, 2, got "1"'),
+    ("arc in a version 1 file", {**HEAD1, "shapes": SCENE["shapes"]}, "$.shapes[6].kind (shape 'hook')",
+     "kind 'arc' needs format version 2 or later, the file says version 1"),
     ("no shapes", {**HEAD, "queries": []}, "$", "missing field 'shapes'"),
     ("bad radius", {**HEAD, "shapes": [{"name": "r", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
                                         "radius": -1}]}, "$.shapes[0].radius (shape 'r')",

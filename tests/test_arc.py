@@ -284,7 +284,7 @@ def test_every_solver(kind, solver):
 def test_long_double(kind):
     """precision='longdouble' on float64 inputs (which it reads exactly): the bar is 1e-15."""
     for a, b in random_cases(kind, 4, 3) + [c[1:3] for c in HARD if c[2][0] == kind]:
-        for solver in ("bracketing", "companion"):
+        for solver in SOLVERS:
             d, _ = both_orders(a, b, precision="longdouble", solver=solver)
             assert isinstance(d, np.longdouble)
             ref = reference(a, b)
@@ -547,3 +547,78 @@ def test_broadphase_boxes_hold_the_arcs():
     idx, nd = cd.nearest(points, arcs, k=2)
     order = np.argsort(dist.T, axis=1, kind="stable")[:, :2]
     assert np.array_equal(nd, np.take_along_axis(dist.T, order, axis=1))
+
+
+# ------------------------------------------------------------------------------------------------
+# scene files and the command line
+# ------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("suffix", [".json", ".npz"])
+def test_scene_file_round_trip_and_version(tmp_path, suffix):
+    """Arcs (single, batched, float32 and swept) write and read back to the bit; a file holding an
+    arc is format version 2, one without stays version 1 (older readers read it), and an arc in a
+    version 1 file is refused."""
+    import json
+
+    sf = cd.scenefile
+    cases = random_cases("disk", 3, 17)
+    shapes = {"hook": make(QUARTER), "hooks": batch_of([a for a, _ in cases]),
+              "bent": cd.Arc([0, 0, 1], [0, 1, 1], 0.5, [1, 0, 0], 5.0, sweep=0.1),
+              "coin": make(cases[0][1])}
+    queries = [{"a": "hook", "b": "coin", "effects": ["distance", "closest_points"]},
+               {"a": "hooks[1]", "effects": ["nearest"], "k": 2}]
+    path = tmp_path / f"arcs{suffix}"
+    cd.write_scene(path, shapes, queries)
+    back = cd.read_scene(str(path))
+    for name, shape in shapes.items():
+        got, want = back.shapes[name].to_arrays(), shape.to_arrays()
+        assert [k for k in got if k != "sweep"] == [k for k in want if k != "sweep"]
+        assert not np.any(got.get("sweep", 0) != want.get("sweep", 0))
+        for field in want:
+            assert np.array_equal(got[field], np.broadcast_to(want[field], got[field].shape)), (name, field)
+        assert np.array_equal(cd.distance(back.shapes[name], shapes["coin"]), cd.distance(shape, shapes["coin"]))
+    if suffix == ".json":
+        data = json.loads(path.read_text())
+        assert data["version"] == 2
+        data["version"] = 1
+        with pytest.raises(cd.SceneFileError, match=r"\$\.shapes\[0\]\.kind \(shape 'hook'\): kind 'arc' needs "
+                                                   r"format version 2 or later, the file says version 1"):
+            sf.scene_from_json(data, "old.json")
+    else:
+        with np.load(path) as npz:
+            arrays = dict(npz)
+        assert int(arrays["version"]) == 2
+        np.savez(tmp_path / "old.npz", **{**arrays, "version": np.array(1)})
+        with pytest.raises(cd.SceneFileError, match="array 'hook/kind': kind 'arc' needs format version 2"):
+            cd.read_scene(str(tmp_path / "old.npz"))
+    plain = tmp_path / f"plain{suffix}"
+    cd.write_scene(plain, {"coin": shapes["coin"]})
+    if suffix == ".json":
+        assert json.loads(plain.read_text())["version"] == 1
+    else:
+        with np.load(plain) as npz:
+            assert int(npz["version"]) == 1
+
+
+def test_command_line_answers_and_draws_an_arc(tmp_path):
+    import importlib.util
+    import json
+
+    from circledist import cli
+
+    doc = {"format": "circledist-scene", "version": 2, "shapes": [
+        {"name": "hook", "kind": "arc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1, "start": [1, 0, 0],
+         "angle": 1.5707963267948966},
+        {"name": "rail", "kind": "line", "origin": [-5, -1, 0], "direction": [1, 0, 0]}],
+        "queries": [{"a": "hook", "b": "rail", "effects": ["distance", "closest_points"]}]}
+    path, answers = tmp_path / "arc.json", tmp_path / "answers.json"
+    path.write_text(json.dumps(doc))
+    argv = [str(path), "--json", str(answers)]
+    picture = tmp_path / "arc.png"
+    if importlib.util.find_spec("matplotlib") is not None:
+        argv += ["--plot", str(picture)]
+    assert cli.main(argv) == 0
+    got = json.loads(answers.read_text())["answers"][0]
+    assert got["distance"] == 1.0  # the start (1, 0, 0) above the line y = -1
+    assert got["closest_points"]["point_b"] == [1.0, -1.0, 0.0]
+    if importlib.util.find_spec("matplotlib") is not None:
+        assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -102,7 +102,7 @@ def test_command_line_describes_and_draws_every_kind(tmp_path, capsys):
               for kind, f in TABLE.items()]
     queries = [{"a": s["name"], "b": "circle", "effects": ["closest_points"]} for s in shapes if s["name"] != "circle"]
     path = tmp_path / "every_kind.json"
-    path.write_text(json.dumps({"format": "circledist-scene", "version": 1, "shapes": shapes, "queries": queries}))
+    path.write_text(json.dumps({"format": "circledist-scene", "version": sf.VERSION, "shapes": shapes, "queries": queries}))
     answers = tmp_path / "answers.json"
     argv = [str(path), "--json", str(answers)]
     if importlib.util.find_spec("matplotlib") is not None:  # the picture draws every kind too

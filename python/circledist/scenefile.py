@@ -7,9 +7,11 @@ the package (``circledist/scene.schema.json``, see ``schema_text()``); the ``.np
 the same content as arrays, for scenes of millions of shapes. ``python -m circledist --help``
 summarizes both; README.md shows their use.
 
-Format version 1. The version goes up with any change to what a valid file may hold or to what
-it means (a new kind, field, effect or array, a changed default); a reader refuses files of a
-newer version with a message saying so instead of misreading them, and keeps reading older ones.
+Format version 2 (version 1 without arcs). The version goes up with any change to what a valid
+file may hold or to what it means (a new kind, field, effect or array, a changed default); a
+reader refuses files of a newer version with a message saying so instead of misreading them, and
+keeps reading older ones. A file of an older version may hold only what that version holds (an
+arc in a version 1 file is refused); `write_scene` writes the oldest version that holds the scene.
 Files must say ``"format": "circledist-scene"`` and ``"version"``: without them a JSON file is
 refused (the message says which two fields to add), so that a file is never read under a version
 it was not written for.
@@ -44,7 +46,12 @@ __all__ = ["FORMAT", "VERSION", "SceneFileError", "SceneFile", "ShapeEntry", "re
            "schema", "schema_text", "SCHEMA_RESOURCE"]
 
 FORMAT = "circledist-scene"
-VERSION = 1
+VERSION = 2
+# The versions this circledist reads: every one up to VERSION. Version 2 added the kind "arc";
+# a file says the first version that holds what it holds (write_scene writes that one, so that a
+# scene without arcs stays readable by a circledist that reads version 1).
+VERSIONS = (1, 2)
+KIND_SINCE = {"arc": 2}
 SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
 
 # kind -> (class name, {field: role}), read from the module's one table of fields (src/shapes.hpp);
@@ -525,11 +532,24 @@ def _check_format(data: dict, file: str, prefix: str = "$") -> None:
     if fmt != FORMAT:
         raise _error(file, member(prefix, "format"), f"expected \"{FORMAT}\", got {shown(fmt)}")
     if "version" not in data:
-        raise _error(file, prefix, f"missing field 'version' (this circledist reads version {VERSION})")
+        raise _error(file, prefix, f"missing field 'version' (this circledist reads versions 1 to {VERSION})")
     if isinstance(version, (int, float)) and not isinstance(version, bool) and version > VERSION \
             and float(version).is_integer():
         raise _error(file, member(prefix, "version"), f"version {int(version)} is newer than this circledist "
-                                                      f"reads (version {VERSION}): upgrade circledist")
+                                                      f"reads (versions 1 to {VERSION}): upgrade circledist")
+
+
+def _check_kind_version(kind: str, version: int, file: str, where: str) -> None:
+    """A kind newer than the file's version (an arc in a version 1 file) is refused."""
+    since = KIND_SINCE.get(kind, 1)
+    if version < since:
+        raise _error(file, where, f"kind {kind!r} needs format version {since} or later, the file says version "
+                                  f"{int(version)}")
+
+
+def _file_version(kinds: Iterable[str]) -> int:
+    """The oldest version that holds shapes of these kinds."""
+    return max([1] + [KIND_SINCE.get(k, 1) for k in kinds])
 
 
 def _parse_json(text: str, file: str) -> Any:
@@ -559,6 +579,8 @@ def scene_from_json(data: Any, file: str) -> SceneFile:
                 where += f" (shape {spec['name']!r})"
         raise _error(file, where, message)
     shapes = data["shapes"]
+    for i, s in enumerate(shapes):
+        _check_kind_version(s["kind"], data["version"], file, f"$.shapes[{i}].kind (shape {s['name']!r})")
     _check_names((s["name"] for s in shapes), file, lambda i: f"$.shapes[{i}].name")
     entries = _entries_from_json(shapes, file)
     queries = _check_queries(data.get("queries", []), entries, file)
@@ -649,12 +671,12 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
         raise _error(file, "array 'format'", f"expected \"{FORMAT}\", got {shown(fmt)}")
     version = _npz_integer(arrays, "version", file)
     if version is None:
-        raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads version {VERSION})")
+        raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads versions 1 to {VERSION})")
     if version > VERSION:
         raise _error(file, "array 'version'", f"version {version} is newer than this circledist reads "
-                                              f"(version {VERSION}): upgrade circledist")
-    if version != VERSION:
-        raise _error(file, "array 'version'", f"expected {VERSION}, got {version}")
+                                              f"(versions 1 to {VERSION}): upgrade circledist")
+    if version not in VERSIONS:
+        raise _error(file, "array 'version'", f"expected one of {', '.join(map(str, VERSIONS))}, got {version}")
     description = _npz_string(arrays, "description", file, required=False) or ""
     if "shapes" not in names:
         raise _error(file, "array 'shapes'", "missing (a 1-d string array of the shapes' names, in order)")
@@ -675,6 +697,7 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
         kind = _npz_string(arrays, f"{name}/kind", file)
         if kind not in KINDS:
             raise _error(file, f"array '{name}/kind'", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
+        _check_kind_version(kind, version, file, f"array '{name}/kind'")
         count = _npz_integer(arrays, f"{name}/count", file)
         if count is not None and count < 1:
             raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
@@ -739,8 +762,8 @@ def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
     """Reads and validates a scene file, JSON or ``.npz``.
 
     The format (``circledist --help``, and the JSON Schema ``scene.schema.json`` in the package):
-    ``"format": "circledist-scene"``, ``"version": 1``, the shapes (single or batches) and the
-    queries.
+    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need), the shapes (single
+    or batches) and the queries.
 
     Parameters
     ----------
@@ -946,7 +969,7 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
     # The queries as a reader gets them back (JSON's types: lists, floats, string keys).
     queries = json.loads(json.dumps([dict(q) for q in queries]))
     if path.endswith(".json"):
-        data = {"format": FORMAT, "version": VERSION}
+        data = {"format": FORMAT, "version": _file_version(kind for _, kind, _, _ in entries)}
         if description:
             data["description"] = description
         data["shapes"] = []
@@ -964,7 +987,7 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
         payload = text.encode("utf-8")
         _write_atomically(path, lambda f: f.write(payload))
         return
-    arrays = {"format": np.array(FORMAT), "version": np.array(VERSION, dtype=np.int64),
+    arrays = {"format": np.array(FORMAT), "version": np.array(_file_version(e[1] for e in entries), dtype=np.int64),
               "shapes": np.array([e[0] for e in entries], dtype=str)}
     if description:
         arrays["description"] = np.array(description)
