@@ -162,7 +162,7 @@ def _block_shape(kind, fields):
 # precision keyword, else the fields' dtypes) instead of restating that rule here.
 _DUMMY = {"p": [1.0, 2.0, 3.0], "origin": [0.0, 0.0, 0.0], "direction": [1.0, 0.0, 0.0],
           "p0": [0.0, 0.0, 0.0], "p1": [1.0, 0.0, 0.0], "center": [0.0, 0.0, 0.0],
-          "normal": [0.0, 0.0, 1.0], "radius": 1.0, "sweep": 0.0}
+          "normal": [0.0, 0.0, 1.0], "radius": 1.0, "start": [1.0, 0.0, 0.0], "angle": 1.0, "sweep": 0.0}
 
 
 def _dummy(shape):
