@@ -308,8 +308,8 @@ py::typing::Dict<py::str, py::typing::Tuple<FieldPair, py::ellipsis>> shape_fiel
 
 PYBIND11_MODULE(_core, m) {
   m.doc() =
-      "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and "
-      "Bezier curves in 3D";
+      "circledist: exact distances and closest points between circles, disks, arcs, lines, rays, segments, points "
+      "and Bezier curves in 3D";
   m.attr("__version__") = CIRCLEDIST_VERSION;  // CMakeLists.txt's project() version
 
   py::class_<Shape> shape(m, "Shape", doc::kShape);

@@ -1,5 +1,5 @@
 """
-circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and Bezier curves in 3D
+circledist: exact distances and closest points between circles, disks, arcs, lines, rays, segments, points and Bezier curves in 3D
 """
 from __future__ import annotations
 import collections.abc
