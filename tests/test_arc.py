@@ -622,3 +622,15 @@ def test_command_line_answers_and_draws_an_arc(tmp_path):
     assert got["closest_points"]["point_b"] == [1.0, -1.0, 0.0]
     if importlib.util.find_spec("matplotlib") is not None:
         assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_scene_with_arcs_and_bezier_curves_raises_for_that_pair():
+    """Arc-Bezier has no query: a Scene holding both answers the other kinds and raises the
+    library's "no query between" error where the pair is asked."""
+    s = cd.Scene({"hook": make(QUARTER), "cable": cd.Bezier([[0, 0, 0], [1, 1, 1]]),
+                  "ring": cd.Circle([0, 0, 0], [0, 0, 1], 2.0)})
+    assert s.nearest("ring", k=1) == [("hook", 1.0)]
+    with pytest.raises(TypeError, match="no query between a Arc and a Bezier"):
+        s.nearest("hook")
+    with pytest.raises(TypeError, match="no query between a Arc and a Bezier"):
+        s.pairs_within(1.0)
