@@ -634,3 +634,27 @@ def test_scene_with_arcs_and_bezier_curves_raises_for_that_pair():
         s.nearest("hook")
     with pytest.raises(TypeError, match="no query between a Arc and a Bezier"):
         s.pairs_within(1.0)
+
+
+def test_bounds_decide_separated_arc_pairs_without_a_solve():
+    """within() against circles and disks tries the bounds first (bounds.hpp: the arc's ball, its
+    height range over the round's plane, points on it): arcs far from a ring, or lying across a
+    disk, are decided with no polynomial solved."""
+    rng = np.random.default_rng(30)
+    n = 200
+    far = cd.Arc(rng.uniform(-1, 1, (n, 3)) + [0, 0, 10], rng.normal(size=(n, 3)), rng.uniform(0.2, 1, n),
+                 rng.normal(size=(n, 3)), rng.uniform(0.3, 6, n))
+    for target in (cd.Circle([0, 0, 0], [0, 0, 1], 1.0), cd.Disk([0, 0, 0], [0, 0, 1], 1.0)):
+        cd.reset_stats()
+        assert not np.any(cd.within(far, target, 1.0))
+        s = cd.stats()
+        assert s["decided_by_bounds"] == n and s["solves"] == 0, s
+    # a quarter arc over a disk's plane, just above it: the height range decides "no" at d = 0
+    above = cd.Arc([0, 0, 0.5], [0, 0, 1], 0.5, [1, 0, 0], 1.0)
+    cd.reset_stats()
+    assert not cd.intersects(above, cd.Disk([0, 0, 0], [0, 0, 1], 1.0))
+    assert cd.stats()["decided_by_bounds"] == 1
+    # an arc through a disk: its end points lie on both sides, a point on it inside: "yes" by bounds
+    through = cd.Arc([0, 0, 0], [1, 0, 0], 0.5, [0, 0, 1], np.pi)
+    cd.reset_stats()
+    assert cd.within(through, cd.Disk([0, 0, 0], [0, 0, 1], 1.0), 0.0)
