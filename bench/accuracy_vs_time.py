@@ -24,9 +24,9 @@
    the random and on the hard cases), writes docs/accuracy_vs_time.md with the recommended
    default policy, docs/accuracy_vs_time.png (error against time) and docs/stability_sweeps.png.
 
-Relative error = |d - d_ref| / max(d_ref, largest radius of the query). The bar is 1e-12 in
-double; float and long double are judged against the same number of ulps (1e-12 eps_p / eps_d:
-5.4e-4 for float, 4.9e-16 for long double).
+Relative error = |d - d_ref| / max(d_ref, largest radius of the query; for two Bezier curves the
+larger curve size). The bar is 1e-12 in double; float and long double are judged against the
+same number of ulps (1e-12 eps_p / eps_d: 5.4e-4 for float, 4.9e-16 for long double).
 """
 
 from __future__ import annotations
@@ -51,7 +51,7 @@ if not __package__:  # run as a file: the shared cases (circledist_cases) would 
 from . import one_core  # noqa: F401  (before NumPy: one BLAS thread)
 
 from circledist_cases import sweeps  # noqa: E402
-from circledist_cases.accuracy import (KINDS, Case, generate_cases, largest_radius, reference_distance,  # noqa: E402
+from circledist_cases.accuracy import (KINDS, Case, generate_cases, bar_scale, reference_distance,  # noqa: E402
                                        relative_error, to_float32)
 from mpmath import mpf  # noqa: E402
 
@@ -198,7 +198,7 @@ def evaluate(cases, refs, dist):
                 continue
             vals = case_inputs(c, prec)
             ref = mpf(c.exact) if c.exact is not None else mpf(refs[_key(c.kind, vals)])
-            radius = largest_radius(c.kind, vals)
+            radius = bar_scale(c.kind, vals)
             for pol in POLICIES:
                 errors[(i, pol, prec)] = relative_error(dist.get((i, pol, prec)), ref, radius)
     return errors
@@ -394,7 +394,8 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
         lines.append(f"- Kinds whose header is missing (not measured): {', '.join(missing)}.")
     lines += [
         "",
-        "Relative error = |d - d_ref| / max(d_ref, largest radius of the query). The bar is 1e-12 in double;",
+        "Relative error = |d - d_ref| / max(d_ref, largest radius of the query; for two Bezier curves the larger",
+        "curve size, their control polygons' extent). The bar is 1e-12 in double;",
         "float and long double are judged against the same number of ulps of their own precision,",
         f"1e-12 eps_p / eps_double: {BAR['float']:.1e} for float, {BAR['longdouble']:.1e} for long double.",
         "The float inputs are the double cases rounded to float, and their references are those of the",
@@ -437,7 +438,9 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
               "crossing, touching), concentric, coaxial, linked, near-coplanar (tilt 1e-9), parallel 1e-9 apart,",
               "perpendicular touching, radius ratios 1e-6 / 1e6. Bezier kinds: straight curves tangent to the",
               "rim (lifted by 1e-9), along the axis, parabolas touching the disk, a wavy quintic, a degree-7",
-              "curve. Each scene is used in the round shape's frame, under a generic rotation, and translated",
+              "curve; two curves: crossing, nearly touching (1e-9, 1e-13), tangent, nearly parallel, parallel",
+              "and identical (continua), a big curve against a small one, degenerate (point, collinear) curves",
+              "(circledist_cases/bezier_cases.py). Each scene is used in the round shape's frame, under a generic rotation, and translated",
               "by 1e6 and 1e8 (both orientations); selected linear scenes also with the scene scaled by",
               "1e-9 / 1e9 and with the radius alone 1e-9 / 1e9 (those not translated: a radius of 1e-9 at 1e8,",
               "where the ulp is 1.5e-8, would ask for an absolute error below the rounding of the line's own",

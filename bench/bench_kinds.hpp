@@ -23,6 +23,7 @@ template <class Real, class Visitor> void for_each_kind(Visitor&& v) {
   v.template add<Disk3<Real>, Disk3<Real>>("disk-disk");
   v.template add<BezierCurve3<Real>, Circle3<Real>>("bezier-circle");
   v.template add<BezierCurve3<Real>, Disk3<Real>>("bezier-disk");
+  v.template add<BezierCurve3<Real>, BezierCurve3<Real>>("bezier-bezier");
 }
 
 }  // namespace circledist::bench

@@ -12,7 +12,7 @@
 // Value layout of one shape:
 //     point x y z | line, ray: origin, direction | segment: p0, p1 |
 //     circle, disk: center, normal, radius | bezier: its control points, x y z each (the count
-//     is whatever the second shape leaves of w).
+//     is whatever the other shape leaves of w; two curves have half of w each).
 // OUTPUT receives "CDBQOUT1", u64 number of kinds, then per kind the name (as above), u64 n and
 // the n distances (0 queries for a kind this build does not know).
 // stdout, one line per kind:
@@ -144,10 +144,12 @@ Timing run(const KindData& data, double min_time, std::vector<double>& distances
     A a;
     B b;
   };
-  constexpr int wb = Width<B>::value;
-  static_assert(wb > 0, "the second shape has a fixed width");
+  // A variable-width shape takes what the other leaves; two of them (two curves) share the
+  // query's values equally (bench_queries.py draws both with the same number of control points).
   const int width = int(data.width);
-  const int wa = Width<A>::value > 0 ? Width<A>::value : width - wb;
+  constexpr int fixed_a = Width<A>::value, fixed_b = Width<B>::value;
+  const int wb = fixed_b > 0 ? fixed_b : fixed_a > 0 ? width - fixed_a : width / 2;
+  const int wa = fixed_a > 0 ? fixed_a : width - wb;
   if (wa <= 0 || wa + wb != width) fail(data.name + ": " + std::to_string(width) + " values per query do not fit");
   const std::size_t n = data.n;
   std::vector<Item> items(n);

@@ -161,6 +161,7 @@ KINDS = [
     Kind("disk-disk", "disk", "disk", _d3d_disk_disk, "disk_to_disk"),
     Kind("bezier-circle", "bezier", "circle"),
     Kind("bezier-disk", "bezier", "disk"),
+    Kind("bezier-bezier", "bezier", "bezier"),
 ]
 
 

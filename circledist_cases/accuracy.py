@@ -22,7 +22,9 @@ from dataclasses import dataclass
 import numpy as np
 from mpmath import mp, mpf
 
+from . import bezier_cases
 from . import reference as LREF  # linear shapes vs circle / disk
+from . import reference_bezier as BREF  # Bezier against Bezier
 from . import reference_round as RREF  # circle, disk and Bezier kinds
 from .scenes import SHARED_LINES, SHARED_POINTS, SHARED_RAYS, SHARED_SEGMENTS
 
@@ -30,7 +32,7 @@ mp.dps = 50
 
 KINDS = ["point-circle", "point-disk", "line-circle", "ray-circle", "segment-circle", "line-disk",
          "ray-disk", "segment-disk", "circle-circle", "circle-disk", "disk-disk", "bezier-disk",
-         "bezier-circle"]
+         "bezier-circle", "bezier-bezier"]
 LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
 SHAPE_SIZE = {"point": 3, "line": 6, "ray": 6, "segment": 6, "circle": 7, "disk": 7}
@@ -51,9 +53,20 @@ def split_values(kind, values):
     return (a, tuple(values[:n])), (b, tuple(values[n:]))
 
 
-def largest_radius(kind, values):
+def _control_points(values):
+    """A Bezier curve's control points from its values (k, then k points)."""
+    return [tuple(values[1 + 3 * i: 4 + 3 * i]) for i in range(int(values[0]))]
+
+
+def bar_scale(kind, values):
+    """The scale the bar multiplies besides the distance: the largest radius in the query, or for
+    two curves the larger curve size (their control polygons' extent, as tests/test_bezier_bezier.py
+    and reference_bezier.py take it)."""
+    (a, va), (b, vb) = split_values(kind, values)
+    if a == "bezier" and b == "bezier":
+        return max(BREF.curve_size(_control_points(va)), BREF.curve_size(_control_points(vb)))
     out = 0.0
-    for shape, vals in split_values(kind, values):
+    for shape, vals in ((a, va), (b, vb)):
         if shape in ROUND:
             out = max(out, abs(float(vals[6])))
     return out
@@ -72,6 +85,8 @@ def reference_distance(kind, values):
     (a, va), (b, vb) = split_values(kind, values)
     if a in LINEAR:
         return mpf(LREF.reference(a, va, b, vb).distance)
+    if b == "bezier":
+        return mpf(str(BREF.bezier_bezier(_control_points(va), _control_points(vb)).distance))
     ra = (va[0:3], va[3:6], va[6]) if a in ROUND else None
     rb = (vb[0:3], vb[3:6], vb[6])
     if a == "circle" and b == "circle":
@@ -81,10 +96,8 @@ def reference_distance(kind, values):
     elif a == "disk" and b == "disk":
         ref = RREF.disk_disk(*ra, *rb)
     elif a == "bezier":
-        k = int(va[0])
-        ctrl = [tuple(va[1 + 3 * i: 4 + 3 * i]) for i in range(k)]
         fn = RREF.bezier_disk if b == "disk" else RREF.bezier_circle
-        ref = fn(ctrl, *rb)
+        ref = fn(_control_points(va), *rb)
     else:
         raise ValueError(kind)
     return mpf(str(ref.distance))
@@ -318,6 +331,10 @@ def hard_scenes(kind):
         out = [(n, x, y, 1.0) for n, (x, y) in CIRCLE_DISK_SCENES.items()]
     elif kind == "disk-disk":
         out = [(n, x, y, 1.0) for n, (x, y) in DISK_DISK_SCENES.items()]
+    elif kind == "bezier-bezier":
+        # tests/test_bezier_bezier.py's hard pairs: crossing, nearly touching, tangent,
+        # parallel and identical curves, big against small, translated, degenerate curves
+        out = [(scene[0], ("bezier", scene[1]), ("bezier", scene[2]), 1.0) for scene in bezier_cases.hard_scenes()]
     elif a == "bezier":
         rnd = UNIT_CIRCLE if b == "circle" else UNIT_DISK
         out = [(n, ("bezier", pts), rnd, 1.0) for n, pts in BEZIER_SCENES.items()]
@@ -361,6 +378,9 @@ def random_cases(kind, n):
         else:
             k = 2 + i % 7  # degrees 1..7
             sa = ("bezier", [c + rng.uniform(-2, 2, 3) for _ in range(k)])
+        if b == "bezier":
+            k = 2 + (3 * i + 2) % 7
+            rb = ("bezier", [c + rng.uniform(-1, 1, 3) + rng.uniform(-2, 2, 3) for _ in range(k)])
         out.append(Case(kind, "random", f"random {i:03d}", scene_values(sa, rb)))
     return out
 

@@ -1,4 +1,9 @@
-"""Bezier-Bezier cases shared by tests/test_bezier_bezier.py and cpp/tests/bezier_bezier_reference.py."""
+"""Bezier-Bezier cases shared by tests/test_bezier_bezier.py, cpp/tests/bezier_bezier_reference.py and the
+accuracy report (circledist_cases/accuracy.py)."""
+
+import numpy as np
+
+from . import reference_round as R
 
 # Random curves whose closest pair a "flat" leaf's descent once missed (it ran into another
 # basin): the pair is now halved further when a descent ends above what its chords promise.
@@ -29,3 +34,52 @@ MISSED_D = ((-1.8578544124498564, 0.58430243026410555, -0.42884786932778324),
             (-1.8916584276318542, -1.2754406790763819, 0.59911589997176817),
             (0.21070827799196953, -1.3960938657582826, -0.7238886780354824),
             (1.6505403039981872, 0.66252563211070736, 0.85291341708662005))
+
+
+def shifted(ctrl, by):
+    return tuple(tuple(np.array(p, dtype=float) + np.array(by, dtype=float)) for p in ctrl)
+
+
+ARCH = ((-1, 0, 0), (0, 2, 0), (1, 0, 0))  # apex (0, 1, 0), curvature radius 1/2
+CROSS = ((0, 1, -1), (0.5, 1, -0.3), (-0.5, 1, 0.3), (0, 1, 1))  # passes the apex at t = 1/2
+CUBIC_A = ((0, 0, 0), (1, 2, 0.5), (2, -1, -0.3), (3, 1.5, 0.2))
+CUBIC_B = ((0.5, 1, 1.5), (1.5, -1, 1), (2.5, 2, 0.7), (3.5, 0, 1.2))
+LINE = ((0, 0, 0), (1, 0, 0), (2.5, 0, 0), (3, 0, 0))  # collinear, unevenly parametrized
+SHIFT = (1e6, -1e6, 1e6)
+
+
+def hard_scenes():
+    """(name, control points a, control points b[, expected `unique`, where clear-cut]):
+    the hard pairs of curves tests/test_bezier_bezier.py and the accuracy report
+    (circledist_cases/accuracy.py) share."""
+    big = tuple(tuple(1e3 * np.array(p)) for p in CUBIC_A)
+    b37 = np.array(R.bezier_point(big, 0.37), dtype=float)
+    small = tuple(tuple(b37 + np.array(d)) for d in ((-0.5, 0.6, -0.2), (0.2, 1.1, 0.3), (0.9, 0.65, 0.1)))
+    # a small curve passing 0.3 over the big one's interior, bent toward it
+    bump = tuple(tuple(b37 + np.array(d)) for d in ((-2, 0, 1), (0, 0, -0.4), (2, 0, 1)))
+    return [
+        ("crossing", ARCH, CROSS, True),
+        ("crossing_translated", shifted(ARCH, SHIFT), shifted(CROSS, SHIFT)),
+        ("nearly_touching_1e-9", ARCH, shifted(CROSS, (0, 1e-9, 0))),
+        ("nearly_touching_1e-13", ARCH, shifted(CROSS, (0, 1e-13, 0))),
+        ("tangent_arches", ARCH, ((-1, 2, 0), (0, 0, 0), (1, 2, 0))),
+        ("arches_apart", ARCH, shifted(((-1, 2, 0), (0, 0, 0), (1, 2, 0)), (0.3, 0, 0))),
+        ("nearly_parallel_crossing", CUBIC_A, shifted(CUBIC_A, (1e-3, 1e-7, 0))),
+        ("parallel_offset", LINE, shifted(LINE, (0, 0.5, 0)), False),
+        ("parallel_offset_overlap", LINE, shifted(LINE, (1.25, 0.375, 0.5)), False),
+        ("identical", CUBIC_A, CUBIC_A, False),
+        ("apart_end_to_end", LINE, shifted(LINE, (4, 0, 0)), True),
+        ("big_small", big, small),
+        ("big_small_interior", big, bump),
+        ("translated", shifted(CUBIC_A, SHIFT), shifted(CUBIC_B, SHIFT)),
+        ("translated_quadratics", shifted(ARCH, SHIFT), shifted(((-1, 2, 0.5), (0, -0.5, 0), (1, 2, -0.5)), SHIFT)),
+        ("point_curve", ((0.5, 0.5, 0.25),) * 3, CUBIC_A),
+        ("point_on_curve", (tuple(float(x) for x in R.bezier_point(CUBIC_A, 0.3)),) * 4, CUBIC_A),
+        ("collinear_collinear", ((-1, 0.2, 0.1), (-0.2, 0.36, 0.14), (1, 0.6, 0.2)),
+             ((0.3, -1, 1), (0.3, 0, 0.4), (0.3, 0.5, 0.1), (0.3, 1, -0.2))),
+        ("collinear_curve", ((-1, 0.2, 0.1), (-0.2, 0.36, 0.14), (1, 0.6, 0.2)), CUBIC_B),
+        ("folded_collinear", ((0, 0, 0), (3, 0, 0), (1, 0, 0)), ((1.5, 1, -1), (1.5, 1, 1))),
+        # random degree 5..6 curves whose closest pair a flat leaf's descent once missed
+        ("missed_basin_1", MISSED_A, MISSED_B),
+        ("missed_basin_2", MISSED_C, MISSED_D),
+    ]

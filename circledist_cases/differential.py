@@ -379,6 +379,21 @@ def _fam_shadow_center(rng, ka, kb):
     return fr.linear(ka, X, d, R / 4), b
 
 
+def _fam_piece_near_plane(rng, ka, kb):
+    """Lines, rays and segments nearly in the round's plane: at heights 1e-12..1e-6 radii,
+    parallel to it or tilted by up to 1e-9. The line's minimum over the ring is then nearly tied
+    with its mirror image, where closest_points takes its pair from the general path and must
+    keep distance()'s value (7112 of 50,000 such segments disagreed by 1-2 ulps before)."""
+    fr = _Frame(rng)
+    R = _radius(rng, fr.exact)
+    b = fr.round(np.zeros(3), EZ, R)
+    r, t = _in_plane(rng, fr.exact)
+    height = _logu(rng, -12, -6) * R * float(rng.choice([-1.0, 1.0]))
+    X = r * fr.param(0, 2) * R + height * EZ
+    d = t + _tiny(rng, -12, -9, 0.5) * EZ
+    return fr.linear(ka, X, d / np.linalg.norm(d), R), b
+
+
 def _fam_coplanar(rng, ka, kb):
     fr = _Frame(rng)
     ex = fr.exact
@@ -830,11 +845,12 @@ FAMILIES = {
     "bezier_crossing": (BL[1:], _fam_bezier_crossing),
     "bezier_far_control_linear": (BL, _fam_bezier_far_control_linear),
     "bezier_large_linear": (BL, _fam_bezier_large_linear),
+    "piece_near_plane": (LR3, _fam_piece_near_plane),
 }
 
 
 def has_round(family):
-    """Whether a family's kind pairs include a circle or disk (the first sixteen families) or
+    """Whether a family's kind pairs include a circle or disk (the sixteen first families and piece_near_plane) or
     not (the pairs among points, lines, rays and segments and Bezier curves against them)."""
     return any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
 
@@ -2213,9 +2229,10 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
                     findings.append(_finding("separation", c, solver, precision, order, "closest_points",
                                              separation=sep[j], library=cl[j], allowed=bar_abs[j] + ulps_o[j],
                                              point_a=np.asarray(r.point_a)[j], point_b=np.asarray(r.point_b)[j]))
-                if not abs(dl[j] - cl[j]) <= 2 * bar_abs[j]:
+                # the same number, to the bit (README: the two never disagree)
+                if not (dl[j] == cl[j] or (np.isnan(dl[j]) and np.isnan(cl[j]))):
                     findings.append(_finding("distance_vs_closest_points", c, solver, precision, order, "both",
-                                             distance=dl[j], closest_points=cl[j], allowed=2 * bar_abs[j]))
+                                             distance=dl[j], closest_points=cl[j], allowed=0.0))
                 if precision == "float32" and float(np.float32(d[j])) != float(d[j]):
                     findings.append(_finding("float32_value", c, solver, precision, order, "distance", library=d[j]))
         # symmetry: distance(a, b) == distance(b, a) (README; the closest points of a non-unique

@@ -156,7 +156,7 @@ def _mp_reference(kind, values):
 
 def reference(case):
     """(50-digit distance, largest radius) of a sweep case's exact float inputs."""
-    radius = accuracy.largest_radius(case.kind, case.values)
+    radius = accuracy.bar_scale(case.kind, case.values)
     if case.exact is not None:
         return accuracy.mpf(case.exact), radius
     return _mp_reference(case.kind, case.values), radius

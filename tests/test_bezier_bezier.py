@@ -25,6 +25,7 @@ import pytest
 import circledist as cd
 from circledist_cases import reference_bezier as RB
 from circledist_cases import bezier_cases as BB
+from circledist_cases.bezier_cases import ARCH, CROSS, CUBIC_A, CUBIC_B, LINE, shifted
 from circledist_cases import reference_round as R
 from circledist_cases.effect_checks import assert_effects_and_sweeps, assert_other_order_swapped
 
@@ -49,10 +50,6 @@ def case(name, a, b, unique=None):
     return Case(name, tuple(_t(p) for p in a), tuple(_t(p) for p in b), unique)
 
 
-def _shifted(ctrl, by):
-    return tuple(tuple(np.array(p, dtype=float) + np.array(by, dtype=float)) for p in ctrl)
-
-
 def _random_cases():
     rng = np.random.default_rng(2019)
     out = []
@@ -64,46 +61,8 @@ def _random_cases():
     return out
 
 
-ARCH = ((-1, 0, 0), (0, 2, 0), (1, 0, 0))  # apex (0, 1, 0), curvature radius 1/2
-CROSS = ((0, 1, -1), (0.5, 1, -0.3), (-0.5, 1, 0.3), (0, 1, 1))  # passes the apex at t = 1/2
-CUBIC_A = ((0, 0, 0), (1, 2, 0.5), (2, -1, -0.3), (3, 1.5, 0.2))
-CUBIC_B = ((0.5, 1, 1.5), (1.5, -1, 1), (2.5, 2, 0.7), (3.5, 0, 1.2))
-LINE = ((0, 0, 0), (1, 0, 0), (2.5, 0, 0), (3, 0, 0))  # collinear, unevenly parametrized
-SHIFT = (1e6, -1e6, 1e6)
-
-
 def _hard_cases():
-    big = tuple(tuple(1e3 * np.array(p)) for p in CUBIC_A)
-    b37 = np.array(R.bezier_point(big, 0.37), dtype=float)
-    small = tuple(tuple(b37 + np.array(d)) for d in ((-0.5, 0.6, -0.2), (0.2, 1.1, 0.3), (0.9, 0.65, 0.1)))
-    # a small curve passing 0.3 over the big one's interior, bent toward it
-    bump = tuple(tuple(b37 + np.array(d)) for d in ((-2, 0, 1), (0, 0, -0.4), (2, 0, 1)))
-    return [
-        case("crossing", ARCH, CROSS, unique=True),
-        case("crossing_translated", _shifted(ARCH, SHIFT), _shifted(CROSS, SHIFT)),
-        case("nearly_touching_1e-9", ARCH, _shifted(CROSS, (0, 1e-9, 0))),
-        case("nearly_touching_1e-13", ARCH, _shifted(CROSS, (0, 1e-13, 0))),
-        case("tangent_arches", ARCH, ((-1, 2, 0), (0, 0, 0), (1, 2, 0))),
-        case("arches_apart", ARCH, _shifted(((-1, 2, 0), (0, 0, 0), (1, 2, 0)), (0.3, 0, 0))),
-        case("nearly_parallel_crossing", CUBIC_A, _shifted(CUBIC_A, (1e-3, 1e-7, 0))),
-        case("parallel_offset", LINE, _shifted(LINE, (0, 0.5, 0)), unique=False),
-        case("parallel_offset_overlap", LINE, _shifted(LINE, (1.25, 0.375, 0.5)), unique=False),
-        case("identical", CUBIC_A, CUBIC_A, unique=False),
-        case("apart_end_to_end", LINE, _shifted(LINE, (4, 0, 0)), unique=True),
-        case("big_small", big, small),
-        case("big_small_interior", big, bump),
-        case("translated", _shifted(CUBIC_A, SHIFT), _shifted(CUBIC_B, SHIFT)),
-        case("translated_quadratics", _shifted(ARCH, SHIFT), _shifted(((-1, 2, 0.5), (0, -0.5, 0), (1, 2, -0.5)), SHIFT)),
-        case("point_curve", ((0.5, 0.5, 0.25),) * 3, CUBIC_A),
-        case("point_on_curve", (tuple(float(x) for x in R.bezier_point(CUBIC_A, 0.3)),) * 4, CUBIC_A),
-        case("collinear_collinear", ((-1, 0.2, 0.1), (-0.2, 0.36, 0.14), (1, 0.6, 0.2)),
-             ((0.3, -1, 1), (0.3, 0, 0.4), (0.3, 0.5, 0.1), (0.3, 1, -0.2))),
-        case("collinear_curve", ((-1, 0.2, 0.1), (-0.2, 0.36, 0.14), (1, 0.6, 0.2)), CUBIC_B),
-        case("folded_collinear", ((0, 0, 0), (3, 0, 0), (1, 0, 0)), ((1.5, 1, -1), (1.5, 1, 1))),
-        # random degree 5..6 curves whose closest pair a flat leaf's descent once missed
-        case("missed_basin_1", BB.MISSED_A, BB.MISSED_B),
-        case("missed_basin_2", BB.MISSED_C, BB.MISSED_D),
-    ]
+    return [case(*scene) for scene in BB.hard_scenes()]
 
 
 CASES = _random_cases() + _hard_cases()
@@ -270,6 +229,6 @@ def test_scene_and_pairs_with_curves():
     scene = cd.Scene()
     scene.add("arch", cd.Bezier(np.array(ARCH)))
     scene.add("cross", cd.Bezier(np.array(CROSS)))
-    scene.add("far", cd.Bezier(np.array(_shifted(CUBIC_A, (10, 0, 0)))))
-    assert scene.nearest(cd.Bezier(np.array(_shifted(CROSS, (0, 1e-3, 0)))))[0][0] in ("arch", "cross")
+    scene.add("far", cd.Bezier(np.array(shifted(CUBIC_A, (10, 0, 0)))))
+    assert scene.nearest(cd.Bezier(np.array(shifted(CROSS, (0, 1e-3, 0)))))[0][0] in ("arch", "cross")
     assert ("arch", "cross") in [tuple(sorted(p)) for p in scene.pairs_within(1e-9)]

@@ -17,12 +17,14 @@ Bars (never loosened here): |d - d_true| <= bar * max(d_true, scale), bar 1e-12 
 in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs; the scale is the largest radius,
 or without a circle or disk the scale of the pairs' own accuracy tests (differential.bar_scale).
 
-872 cases (724 of the sixteen families with a circle or disk, 148 of the ten without: two per
-family and kind pair), 179,016 library answers (every entry point; each within /
-distance_if_within probe counts) and 178 direct references: about 80 s of CPU on the project's
-2-core machine (2026-11-26, the file's user time, other jobs loading it to ~3; the slice without
-the families of the pairs without a round took 61 s in the same conditions, 58 s on 2026-11-25;
-the library's answers take most of it). With scalar calls on every case it was 75 s, ~197,000
+912 cases (764 of the seventeen families with a circle or disk, 148 of the ten without: two per
+family and kind pair); 179,016 library answers (every entry point; each within /
+distance_if_within probe counts) and 178 direct references before the 17th family
+(piece_near_plane, 2026-11-26) added 40 cases: about 51 s of wall time on the project's 2-core
+machine at load ~1 with it (2026-11-26), 80 s of CPU before it with other jobs loading the
+machine to ~3 (the slice without the families of the pairs without a round took 61 s in the same
+conditions, 58 s on 2026-11-25; the library's answers take most of it). With scalar calls on
+every case it was 75 s, ~197,000
 answers, before those families.  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """

@@ -24,7 +24,7 @@ candidates).  Prints counts per family, kind pair, solver and precision and one 
 finding class, writes the JSON report, and exits 1 when any finding is confirmed.
 
 Every case is reproducible from its id "family/seed/index" (differential.case_from_id).
---families restricts a run to some families (comma-separated), "round" to the sixteen of the
+--families restricts a run to some families (comma-separated), "round" to the seventeen of the
 pairs with a circle or disk, "no-round" to the ten of the pairs without one (points, lines, rays,
 segments among themselves, Bezier curves against them; docs/differential_report_linear.json):
 

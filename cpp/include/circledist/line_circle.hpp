@@ -43,21 +43,47 @@ template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
 // Rays and segments. A ray's or segment's distance is the least of its end points' and of the
 // line's local minima that it holds: the global one m (line_ring_minimum) and, inside the
 // astroid, the other (other_line_minimum). End points by point-circle's closed form. Where the
-// other minimum is undecided, where a segment is too long for the line through it
-// (piece_line), or for closest points where a minimum is tied with its mirror image, the
-// general path answers (returns false).
+// other minimum is undecided, or where a segment is too long for the line through it
+// (piece_line), the general path answers (returns false). For closest points, a minimum tied
+// with its mirror image, or an end tied with another candidate, marks the answer `tied`: its
+// pair and `unique` are the general path's to judge (PieceRoundQuery).
 template <class Roots, class Real, class Piece>
 bool choose_from_line(const Piece& piece, const Circle3<Real>& c, PieceChoice<Real>& out, bool for_closest) {
   using Choice = PieceChoice<Real>;
   const PieceLine<Real> pl = piece_line(piece, c.radius);
   out.line = pl.line;
   const LineRingMinimum<Real>& m = out.global;
-  if (!pl.usable || !line_ring_minimum<Roots>(out.line, c, out.global)) return false;
+  if (!pl.usable) return false;
   const Linear<Real> linear = as_linear(piece);
+  // Before the root: where the line has one local minimum (the astroid test), its distance falls
+  // toward that minimum on either side, so an end at which it rises along the piece is the
+  // closest point of the rest (p0 of a segment, a ray's origin), and so is an end at which it
+  // falls toward the piece's end (p1): those pieces need no root (docs/line_circle.md).
+  SecondMinimumTest<Real> second_test;
+  const auto before_root = [&](const LineRingMinimum<Real>& line_data) {
+    second_test = second_minimum_test(line_data, c.radius);
+    if (second_test.verdict != 0) return false;
+    const Vec3<Real>& direction = out.line.direction;
+    if (std::isfinite(linear.lo) &&
+        end_point_slope(piece_end(piece, linear.lo), c, line_data.unit_normal, direction) > 0) {
+      out.t = linear.lo;
+    } else if (std::isfinite(linear.hi) &&
+               end_point_slope(piece_end(piece, linear.hi), c, line_data.unit_normal, direction) < 0) {
+      out.t = linear.hi;
+    } else {
+      return false;
+    }
+    out.winner = Choice::kEnd;
+    out.value = end_point_distance(piece_end(piece, out.t), c, line_data.unit_normal);
+    return true;
+  };
+  const LineRingOutcome outcome = line_ring_minimum<Roots>(out.line, c, out.global, before_root);
+  if (outcome == LineRingOutcome::AnsweredBeforeRoot) return true;
+  if (outcome == LineRingOutcome::Declined) return false;
   const int side = piece_side(out.line, c.center, m.line_point, linear);
   if (side == 0) {
-    // The global minimum on the piece answers, unless it is tied with its mirror image.
-    if (for_closest && tied_with_mirror(c, m)) return false;
+    // The global minimum on the piece answers (tied where its mirror image is as close).
+    if (for_closest) out.tied = tied_with_mirror(c, m);
     out.value = m.distance;
     return true;
   }
@@ -73,7 +99,7 @@ bool choose_from_line(const Piece& piece, const Circle3<Real>& c, PieceChoice<Re
                                                                       (std::isfinite(hi) ? std::abs(hi) : Real(0)));
     return tau_max > 0 ? hi >= -slack && lo <= tau_max + slack : lo <= slack && hi >= tau_max - slack;
   };
-  const int other = other_line_minimum<Roots>(m, c.radius, out.second, may_hold);
+  const int other = other_line_minimum<Roots>(m, c.radius, out.second, may_hold, second_test);
   if (other < 0) return false;
   out.winner = Choice::kEnd;
   if (other == 0) {
@@ -90,8 +116,8 @@ bool choose_from_line(const Piece& piece, const Circle3<Real>& c, PieceChoice<Re
     if (!std::isfinite(t)) continue;
     const Real value = end_point_distance(piece_end(piece, t), c, m.unit_normal);
     // A tie between an end and a line minimum, or between both ends (a segment symmetric about
-    // the axis), is two distinct closest pairs: the general path judges `unique`.
-    if (for_closest && std::abs(value - out.value) <= tie_tolerance(std::max(c.radius, value))) return false;
+    // the axis), is two distinct closest pairs: `tied`, for the general path to judge `unique`.
+    if (for_closest && std::abs(value - out.value) <= tie_tolerance(std::max(c.radius, value))) out.tied = true;
     if (value < out.value) {
       out.value = value;
       out.t = t;

@@ -31,9 +31,10 @@ template <class Real> Circle3<Real> disk_rim(const Disk3<Real>& disk) { return {
 // under it as to any. So the line-circle solver from the circle's side answers it (one bracketed
 // root). A ray or segment takes the line's answer where it holds the line's point of it (the
 // crossing, or the line's closest point to the rim when the line does not cross the disk), as
-// against a circle (PieceRoundQuery, detail/piece_round_query.hpp); elsewhere, and for closest
-// points of a line within sqrt(eps) of parallel to the plane (which may touch a continuum), the
-// general path answers (returns false).
+// against a circle (PieceRoundQuery, detail/piece_round_query.hpp); elsewhere the general path
+// answers (returns false). For closest points, a line within sqrt(eps) of parallel to the plane
+// (which may touch a continuum) or a rim minimum tied with its mirror image marks the answer
+// `tied`: its pair and `unique` are the general path's to judge.
 // The line's distance to the disk is convex (the distance to a convex set, along a line), so a
 // ray or segment that does not hold the line's minimum is closest at its end nearer that
 // minimum: point-disk's closed form there (strictly closest: a convex function falls strictly
@@ -52,8 +53,8 @@ bool choose_from_line(const Piece& piece, const Disk3<Real>& disk, PieceChoice<R
     crosses = out.crossing.squaredNorm() <= disk.radius * disk.radius;
   }
   // A line within sqrt(eps) of parallel to the plane may touch the disk along a chord, or be as
-  // close to a stretch of the rim as to its closest point: the general path judges `unique`.
-  if (for_closest && !(std::abs(slope) > std::sqrt(std::numeric_limits<Real>::epsilon()))) return false;
+  // close to a stretch of the rim as to its closest point: `tied`, the general path judges `unique`.
+  if (for_closest && !(std::abs(slope) > std::sqrt(std::numeric_limits<Real>::epsilon()))) out.tied = true;
   // The line's minimum (the crossing, or the line's point closest to the rim) as a parameter of
   // the piece: inside [lo, hi] the line's answer holds; outside, the nearer end answers.
   const Linear<Real> linear = as_linear(piece);
@@ -69,7 +70,7 @@ bool choose_from_line(const Piece& piece, const Disk3<Real>& disk, PieceChoice<R
     out.value = 0;
     return true;
   }
-  if (for_closest && tied_with_mirror(disk_rim(disk), m)) return false;
+  if (for_closest && tied_with_mirror(disk_rim(disk), m)) out.tied = true;
   out.value = m.distance;
   return true;
 }

@@ -51,10 +51,19 @@ template <class Real> void complete_line_minimum(LineRingMinimum<Real>& out) {
   out.line_point = out.anchor + offset.dot(out.unit_direction) * out.unit_direction;
 }
 
-// False when the line is too extreme for the direct method (a zero or huge direction, a zero
-// radius, non-finite input): LinearCircleQuery then answers.
-template <class Roots, class Real>
-bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, LineRingMinimum<Real>& out) {
+// What line_ring_minimum did: declined (the line is too extreme for the direct method: a zero
+// or huge direction, a zero radius, non-finite input; LinearCircleQuery then answers), solved
+// the root, or stopped before it because the caller's `before_root` answered.
+enum class LineRingOutcome { Declined, Solved, AnsweredBeforeRoot };
+
+// `before_root(out)` is asked once the line's data are in `out` (anchor, unit direction and
+// normal, on_axis, and the secular data b1, b2^2, s^2, a_parallel, a_across) and before the
+// root, the query's main cost: a ray or segment that those data already answer (an end point,
+// piece_round_query.hpp) returns true there and is spared the root.
+template <class Roots, class Real, class BeforeRoot>
+LineRingOutcome line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, LineRingMinimum<Real>& out,
+                                  const BeforeRoot& before_root) {
+  using Outcome = LineRingOutcome;
   const Real radius = circle.radius;
   const Real normal_length = circle.normal.norm();
   const Real d2 = line.direction.squaredNorm();
@@ -62,7 +71,7 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
   // within 2^(+-0.3 max_exponent), 2^+-307 in double, 2^+-38 in float.
   constexpr Real bound = detail::power_of_two<Real>(std::numeric_limits<Real>::max_exponent * 3 / 10);
   const auto moderate = [bound](Real x) { return x > 1 / bound && x < bound; };
-  if (!(moderate(radius) && moderate(d2) && moderate(normal_length))) return false;
+  if (!(moderate(radius) && moderate(d2) && moderate(normal_length))) return Outcome::Declined;
   // Reciprocals once: a division per component would be most of the query's time.
   const Real inverse_normal = 1 / normal_length, inverse_length = 1 / std::sqrt(d2);
   const Vec3<Real> n = circle.normal * inverse_normal;
@@ -71,7 +80,10 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
   const Vec3<Real> m = line.direction * inverse_length;
   const Vec3<Real> a = m.cross(offset_cross(ExactDifference<Real>(line.origin, circle.center), line.direction)) *
                        inverse_length;
-  if (!a.allFinite()) return false;
+  if (!a.allFinite()) return Outcome::Declined;
+  out.anchor = a;
+  out.unit_direction = m;
+  out.unit_normal = n;
   // m x n from the inputs to one rounding per component: for a line nearly along the axis,
   // m - (m.n) n would carry m's rounding, eps, into a tilt of size s, and tip the ring point
   // out of the plane by eps / s.
@@ -83,6 +95,7 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     // Parallel to the axis (to a tilt below eps): the ring point toward the line.
     const Real rho = a_xy.norm();
     out.on_axis = rho <= 8 * std::numeric_limits<Real>::epsilon() * std::max(radius, a.norm());
+    if (before_root(static_cast<const LineRingMinimum<Real>&>(out))) return Outcome::AnsweredBeforeRoot;
     direction = rho > 0 ? a_xy : Frame<Real>(circle.normal).u;  // angle 0 when all are closest
     out.mirror = out.ring_point = radius * direction / direction.norm();
   } else {
@@ -108,6 +121,7 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
     out.s2 = s2;
     out.a_parallel = a_parallel;
     out.a_across = a_across;
+    if (before_root(static_cast<const LineRingMinimum<Real>&>(out))) return Outcome::AnsweredBeforeRoot;
     const Work b_norm = std::sqrt(b1 * b1 + b2_squared);
     const Work lo = std::max(std::abs(b1), b_norm - t2), hi = b_norm;
     const Work c[5] = {-b1 * b1 * t2 * t2, -2 * b1 * b1 * t2, (t2 - b_norm) * (t2 + b_norm), 2 * t2, 1};
@@ -132,15 +146,19 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
       direction = across + (along < 0 ? -rest : rest) / s * m_xy;
     }
     const Real length = direction.norm();
-    if (!(length > 0) || !std::isfinite(length)) return false;
+    if (!(length > 0) || !std::isfinite(length)) return Outcome::Declined;
     out.ring_point = (radius / length) * direction;
     out.mirror = out.ring_point - (2 * out.ring_point.dot(m_xy) * inverse_s2) * m_xy;
   }
-  out.anchor = a;
-  out.unit_direction = m;
-  out.unit_normal = n;
   complete_line_minimum(out);
-  return true;
+  return Outcome::Solved;
+}
+
+// The full line's minimum alone (false: declined).
+template <class Roots, class Real>
+bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, LineRingMinimum<Real>& out) {
+  const auto never = [](const LineRingMinimum<Real>&) { return false; };
+  return line_ring_minimum<Roots>(line, circle, out, never) == LineRingOutcome::Solved;
 }
 
 // The line's other local minimum over the ring, besides the global one m. A ray or segment is
@@ -165,11 +183,24 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
 // -b1 (mu < 0), and its line point is a + tau m with tau = R z.m = R s z1, so tau lies in
 // (0, R s] times the sign of -b1. Where the piece does not reach there, the root is not solved
 // (returns 2: a second minimum exists, off the piece).
-template <class Roots, class Real, class MayHold>
-int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMinimum<Real>& second,
-                       const MayHold& may_hold) {
-  if (m.s2 == 0) return m.on_axis ? -1 : 0;
+// The first half, the astroid test, is second_minimum_test: it needs only the secular data, so a
+// ray or segment asks it before the global root (a line with one local minimum falls toward it
+// on either side, so an end point's slope can answer: choose_from_line, line_circle.hpp); the
+// second half, other_line_minimum, solves the root where the test found one.
+template <class Real> struct SecondMinimumTest {
   using Work = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
+  int verdict = 0;  // 0: no second minimum; 1: one, in (mu0, -|b1|); -1: undecided (the general path)
+  Work one_k = 0, rho = 0;  // 1 + k and rho, for the root (verdict 1)
+};
+
+template <class Real> SecondMinimumTest<Real> second_minimum_test(const LineRingMinimum<Real>& m, Real radius) {
+  using Test = SecondMinimumTest<Real>;
+  using Work = typename Test::Work;
+  Test test;
+  if (m.s2 == 0) {
+    test.verdict = m.on_axis ? -1 : 0;
+    return test;
+  }
   const Work eps = std::numeric_limits<Real>::epsilon();
   const Work b1 = Work(m.b1), b1_squared = b1 * b1, b2_squared = Work(m.b2_squared), t2 = Work(m.s2);
   // b's rounding, 16 eps (|a| / R + 1), bounded without square roots (x^2 + 2 > x + 1).
@@ -178,8 +209,9 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
   // The astroid lies in the disk |b| <= s^2 (its cusps on the circle): outside it, no cube roots
   // (2 |b| <= |b|^2 + 1 bounds the rounding of |b|^2).
   const Work b_norm_squared = b1_squared + b2_squared;
-  if (b_norm_squared - t2 * t2 > Work(1e-6) * t2 * t2 + 2 * (b_norm_squared + 1) * b_error) return 0;
-  if (!(std::abs(b1) > std::sqrt(eps) * t2)) return -1;
+  if (b_norm_squared - t2 * t2 > Work(1e-6) * t2 * t2 + 2 * (b_norm_squared + 1) * b_error) return test;
+  test.verdict = -1;
+  if (!(std::abs(b1) > std::sqrt(eps) * t2)) return test;
   // rho's margin (below): rho's rounding, and b's.
   const Work x = b_error / t2;
   const Work margin = 3 * std::max(Work(1e-6), 64 * eps) + 6 * (x < 1 ? std::sqrt(x) : x);
@@ -194,7 +226,10 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
     const Work unit = 1 / (t2 * t2), x_n = b1_squared * unit, y_n = b2_squared * unit;
     const Work s_far = 1 + margin + Work(1e-3);
     const Work room = s_far - (x_n + y_n);
-    if (!(room > 0) || room * room * room < 27 * s_far * x_n * y_n) return 0;
+    if (!(room > 0) || room * room * room < 27 * s_far * x_n * y_n) {
+      test.verdict = 0;
+      return test;
+    }
   }
   // With k = |b2 / b1|^(2/3) (one cube root): phi(mu0) + 1 = (1 + k)^3 b1^2 / s^4 =: rho and
   // mu0 = -s^2 / (1 + k). rho's rounding: b2's absolute error e moves |b2|^(2/3) by at most
@@ -202,8 +237,24 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
   // 6 (e / s^2)^(2/3) <= 6 max(sqrt(x), x), x = e / s^2.
   const Work k = std::cbrt(b2_squared / b1_squared), one_k = 1 + k;
   const Work rho = b1_squared * (one_k * one_k * one_k) / (t2 * t2);
-  if (rho > 1 + margin) return 0;
-  if (rho > 1 - margin) return -1;
+  if (rho > 1 + margin) test.verdict = 0;
+  if (rho < 1 - margin) {
+    test.verdict = 1;
+    test.one_k = one_k;
+    test.rho = rho;
+  }
+  return test;
+}
+
+// `test`: second_minimum_test(m, radius), asked by the caller (once per query).
+template <class Roots, class Real, class MayHold>
+int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMinimum<Real>& second,
+                       const MayHold& may_hold, const SecondMinimumTest<Real>& test) {
+  if (test.verdict != 1) return test.verdict;
+  using Work = typename SecondMinimumTest<Real>::Work;
+  const Work eps = std::numeric_limits<Real>::epsilon();
+  const Work b1 = Work(m.b1), b1_squared = b1 * b1, b2_squared = Work(m.b2_squared), t2 = Work(m.s2);
+  const Work b_norm_squared = b1_squared + b2_squared, one_k = test.one_k, rho = test.rho;
   if (!may_hold(std::copysign(radius * std::sqrt(m.s2), -m.b1))) return 2;
   const Work mu0 = -t2 / one_k, hi = -std::abs(b1);
   if (!(mu0 < hi)) return -1;

@@ -23,6 +23,10 @@ template <class Real> struct PieceChoice {
   Vec3<Real> crossing = Vec3<Real>::Zero();  // a disk's: where the line meets its plane inside the rim
   enum Winner { kGlobal, kSecond, kCrossing, kEnd } winner = kGlobal;
   Real t = 0, value = std::numeric_limits<Real>::infinity();  // the end's parameter; the winner's distance
+  // For closest points: another candidate as close to rounding (a mirror image, an end, a
+  // continuum), so that which pair is reported and whether it is unique are the general path's
+  // call. `value` is still the answer distance() gives.
+  bool tied = false;
 };
 
 // Each round's hook, defined by its public header (line_circle.hpp, line_disk.hpp). Declared
@@ -36,8 +40,12 @@ bool choose_from_line(const Piece& piece, const Disk3<Real>& disk, PieceChoice<R
 // A piece against a round through its full line (one bracketed root), the general path
 // (LinearRoundQuery) wherever choose_from_line declines: distance() and closest() pick the same
 // candidate with the same formulas. The round's hooks, overloaded on its shape:
-// choose_from_line<Roots>(piece, round, choice, for_closest) (false: the general path answers)
+// choose_from_line<Roots>(piece, round, choice, for_closest) (false: the general path answers;
+// for_closest: mark ties, which distance() need not look for)
 // and line_minimum_result(choice, round) (the Result of a winner on the line's side, not an end).
+// Where the choice is `tied`, the general path reports the pair and `unique`, with the distance
+// the choice found: distance() returns that value, and the two must not differ (the general
+// path's own distance is as exact, but may differ in the last bits).
 template <class Real, class Piece, class Target> struct PieceRoundQuery : LinearRoundQuery<Real, Piece, Target> {
   using General = LinearRoundQuery<Real, Piece, Target>;
   using Round = typename Target::Shape;
@@ -51,6 +59,11 @@ template <class Real, class Piece, class Target> struct PieceRoundQuery : Linear
   template <class Roots = DefaultRoots> static Result<Real> closest(const Piece& piece, const Round& round) {
     PieceChoice<Real> choice;
     if (!choose_from_line<Roots>(piece, round, choice, true)) return General::template closest<Roots>(piece, round);
+    if (choice.tied) {
+      Result<Real> r = General::template closest<Roots>(piece, round);
+      r.distance = choice.value;
+      return r;
+    }
     if (choice.winner == PieceChoice<Real>::kEnd) return end_point_result(piece, choice.t, round, choice.global.unit_normal);
     return line_minimum_result(choice, round);
   }
