@@ -4,7 +4,7 @@ and schema tests)."""
 
 SCENE = {
     "format": "circledist-scene",
-    "version": 1,
+    "version": 2,  # it holds an arc
     "description": "test scene",
     "shapes": [
         {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
@@ -13,6 +13,8 @@ SCENE = {
         {"name": "probe", "kind": "segment", "p0": [3, 0, -1], "p1": [3, 0, 1]},
         {"name": "tip", "kind": "point", "p": [0, 0, 2]},
         {"name": "cable", "kind": "bezier", "control_points": [[-2, -2, 1], [0, 0, 3], [2, -2, 1]]},
+        {"name": "hook", "kind": "arc", "center": [0, 3, 0], "normal": [0, 0, 1], "radius": 1.0, "start": [1, 0, 0],
+         "angle": 4.0},
     ],
     "queries": [
         {"a": "rail", "b": "ring", "effects": ["intersects", "within", "distance", "closest_points"], "d": 0.6},
@@ -20,11 +22,13 @@ SCENE = {
         {"a": "ring", "effects": ["nearest"], "k": 2},
         {"a": "coin", "effects": ["within"], "d": 3.0},
         {"a": "cable", "b": "ring", "effects": ["distance"]},
+        {"a": "hook", "b": "ring", "effects": ["intersects", "distance", "closest_points"]},
     ],
 }
 
 
-HEAD = {"format": "circledist-scene", "version": 1}
+HEAD = {"format": "circledist-scene", "version": 2}  # the current version (arcs need it)
+HEAD1 = {"format": "circledist-scene", "version": 1}
 # (label, file content, the JSON path, what was expected): each must appear in the one-line message.
 BAD = [
     ("not json", "{", "", "not valid JSON: Expecting property name"),
@@ -34,10 +38,12 @@ BAD = [
     ("wrong format", {"format": "scene", "version": 1, "shapes": SCENE["shapes"]}, "$.format",
      'expected "circledist-scene", got "scene"'),
     ("no version", {"format": "circledist-scene", "shapes": SCENE["shapes"]}, "$",
-     "missing field 'version' (this circledist reads version 1)"),
-    ("newer version", {**HEAD, "version": 2, "shapes": SCENE["shapes"]}, "$.version",
-     "version 2 is newer than this circledist reads (version 1): upgrade circledist"),
-    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version", 'expected 1, got "1"'),
+     "missing field 'version' (this circledist reads versions 1 to 2)"),
+    ("newer version", {**HEAD, "version": 3, "shapes": SCENE["shapes"]}, "$.version",
+     "version 3 is newer than this circledist reads (versions 1 to 2): upgrade circledist"),
+    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version", 'expected one of 1, 2, got "1"'),
+    ("arc in a version 1 file", {**HEAD1, "shapes": SCENE["shapes"]}, "$.shapes[6].kind (shape 'hook')",
+     "kind 'arc' needs format version 2 or later, the file says version 1"),
     ("no shapes", {**HEAD, "queries": []}, "$", "missing field 'shapes'"),
     ("bad radius", {**HEAD, "shapes": [{"name": "r", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
                                         "radius": -1}]}, "$.shapes[0].radius (shape 'r')",
@@ -47,7 +53,7 @@ BAD = [
     ("zero normal", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, 0],
                                          "radius": 1}]}, "$.shapes[0].normal", "expected a non-zero vector"),
     ("unknown kind", {**HEAD, "shapes": [{"name": "x", "kind": "torus"}]}, "$.shapes[0].kind (shape 'x')",
-     'expected one of "point", "line", "ray", "segment", "circle", "disk", "bezier", got "torus"'),
+     'expected one of "point", "line", "ray", "segment", "circle", "disk", "bezier", "arc", got "torus"'),
     ("unknown field", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "colour": "red"}]},
      "$.shapes[0].colour (shape 'p')", "unknown field (allowed: name, kind, count, p, sweep)"),
     ("short vector", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0]}]},
@@ -65,6 +71,17 @@ BAD = [
      "$.shapes[0].name", "expected a name: a non-empty string without '[', ']' or '/'"),
     ("bad bezier", {**HEAD, "shapes": [{"name": "c", "kind": "bezier", "control_points": [[0, 0, 0]]}]},
      "$.shapes[0].control_points (shape 'c')", "expected 2 to 8 control points"),
+    ("arc angle 0", {**HEAD, "shapes": [{"name": "h", "kind": "arc", "center": [0, 0, 0], "normal": [0, 0, 1],
+                                         "radius": 1, "start": [1, 0, 0], "angle": 0}]},
+     "$.shapes[0].angle", "expected an angle in (0, 2 pi], got 0.0"),
+    ("arc angles past 2 pi", {**HEAD, "shapes": [{"name": "h", "kind": "arc", "count": 2, "center": [0, 0, 0],
+                                                  "normal": [0, 0, 1], "radius": 1, "start": [1, 0, 0],
+                                                  "angle": [1, 7]}]},
+     "$.shapes[0].angle[1]", "expected an angle in (0, 2 pi], got 7.0"),
+    ("arc start along its normal", {**HEAD, "shapes": [{"name": "h", "kind": "arc", "center": [0, 0, 0],
+                                                        "normal": [0, 0, 1], "radius": 1, "start": [0, 0, 2],
+                                                        "angle": 1}]},
+     "$.shapes[0]", "Arc: start is parallel to normal"),
     ("batch column too short", {**HEAD, "shapes": [{"name": "beads", "kind": "point", "count": 3,
                                                     "p": [[0, 0, 0], [1, 0, 0]]}]},
      "$.shapes[0].p", "expected 3 vectors (the batch's count) or 1, got 2"),

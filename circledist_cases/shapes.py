@@ -9,7 +9,8 @@ import numpy as np
 def random_fields(cd, kind: str, rng, batch=(), dtype=np.float64, sweep: bool = False) -> dict:
     """{field: array} for a batch of random shapes of `kind` (batch shape `batch`, values of
     `dtype`), drawn field by field in the table's order: vectors and directions standard normal,
-    lengths (radii) uniform in [0.2, 2), control points four standard normal points (a cubic);
+    lengths (radii) uniform in [0.2, 2), control points four standard normal points (a cubic),
+    angles (an arc's) uniform in [0.3, 2 pi);
     with `sweep`, a sweep uniform in [0, 0.3) drawn last."""
     batch = tuple(batch)
     out = {}
@@ -20,6 +21,8 @@ def random_fields(cd, kind: str, rng, batch=(), dtype=np.float64, sweep: bool = 
             value = rng.uniform(0.2, 2.0, batch)
         elif role == "control_points":
             value = rng.normal(size=batch + (4, 3))
+        elif role == "angle":
+            value = rng.uniform(0.3, 2 * np.pi, batch)
         else:
             raise ValueError(f"no random values for role {role!r} of {kind}.{name}")
         out[name] = np.asarray(value).astype(dtype)

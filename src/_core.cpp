@@ -192,8 +192,10 @@ template <int K, size_t... I> void bind_shape(py::module_& m, const std::string&
   static const FieldSpec* spec = kFieldSpecs[K];
   py::class_<ShapeOf<K>, Shape> cls(m, kind_name(K), doc.c_str());
   cls.def(py::init([](decltype((void)I, ArrayLike())... values, OptionalArrayLike sweep, bool copy) {
-            return ShapeOf<K>(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check, copy)...,
-                                  sweep_field(kind_name(K), sweep, copy)});
+            ShapeOf<K> shape(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check, copy)...,
+                                 sweep_field(kind_name(K), sweep, copy)});
+            check_not_along(shape, spec);
+            return shape;
           }),
           py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none(), py::arg("copy") = true);
   (cls.def_property_readonly(
@@ -203,6 +205,11 @@ template <int K, size_t... I> void bind_shape(py::module_& m, const std::string&
 
 template <int K> void bind_shape(py::module_& m, const std::string& doc) {
   bind_shape<K>(m, doc, std::make_index_sequence<kFieldCounts[K]>());
+}
+
+// Every kind's class, from the kinds' tables (shapes.hpp's fields, help.hpp's docstrings).
+template <size_t... K> void bind_shapes(py::module_& m, std::index_sequence<K...>) {
+  (bind_shape<int(K)>(m, doc::shape_class(int(K))), ...);
 }
 
 // The constructor's arguments as arrays, by name: float32 fields as float32 (the values they were
@@ -276,6 +283,7 @@ const char* field_role(const FieldSpec& f) {
   if (f.width == kControlPoints) return "control_points";
   if (f.width == 3) return f.check == Check::NonzeroVector ? "direction" : "vector";
   if (f.width == 1 && f.check == Check::NonNegative) return "length";
+  if (f.width == 1 && f.check == Check::Angle) return "angle";
   throw std::logic_error(std::string("field '") + f.name + "' has no role: give it one in field_role");
 }
 
@@ -300,8 +308,8 @@ py::typing::Dict<py::str, py::typing::Tuple<FieldPair, py::ellipsis>> shape_fiel
 
 PYBIND11_MODULE(_core, m) {
   m.doc() =
-      "circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and "
-      "Bezier curves in 3D";
+      "circledist: exact distances and closest points between circles, disks, arcs, lines, rays, segments, points "
+      "and Bezier curves in 3D";
   m.attr("__version__") = CIRCLEDIST_VERSION;  // CMakeLists.txt's project() version
 
   py::class_<Shape> shape(m, "Shape", doc::kShape);
@@ -350,13 +358,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("_from_arrays", &from_arrays, py::arg("cls"), py::arg("arrays"), py::arg("copy"),
         "cls.from_arrays(arrays, copy=copy): how pickle rebuilds a shape.");
 
-  bind_shape<kPoint>(m, doc::point());
-  bind_shape<kLine>(m, doc::linear("Line"));
-  bind_shape<kRay>(m, doc::linear("Ray"));
-  bind_shape<kSegment>(m, doc::segment());
-  bind_shape<kCircle>(m, doc::round_shape("Circle"));
-  bind_shape<kDisk>(m, doc::round_shape("Disk"));
-  bind_shape<kBezier>(m, doc::bezier());
+  bind_shapes(m, std::make_index_sequence<kKindCount>());
 
   // Properties rather than def_readonly, so that signatures and stubs name the result types.
   py::class_<ClosestPoints>(m, "ClosestPoints", doc::kClosestPoints)
@@ -397,7 +399,7 @@ PYBIND11_MODULE(_core, m) {
   bind_effects(m);
   m.def("_shape_fields", &shape_fields,
         "Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' "
-        "(shape (3,), not zero), 'length' (a number >= 0) or 'control_points' (shape (k + 1, 3)). Read by the scene "
+        "(shape (3,), not zero), 'length' (a number >= 0), 'angle' (a number in (0, 2 pi]) or 'control_points' (shape (k + 1, 3)). Read by the scene "
         "files, the command line and circledist.Scene.");
   m.attr("_max_control_points") = kMaxBezierDegree + 1;  // a Bezier curve's, from primitives.hpp
   m.def(

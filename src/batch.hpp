@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace circledist::python {
@@ -19,10 +21,10 @@ namespace circledist::python {
 using Index = std::ptrdiff_t;
 using BatchShape = std::vector<Index>;
 
-enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kBezier, kKindCount };
+enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kBezier, kArc, kKindCount };
 
 inline const char* kind_name(int kind) {
-  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"};
+  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc"};
   return names[kind];
 }
 
@@ -49,7 +51,7 @@ inline std::string index_text(Index flat, const BatchShape& batch) {
   return s.str();
 }
 
-inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1};
+inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1, 5};
 
 // NumPy broadcasting of two batch shapes; `ok` is false when they do not broadcast.
 inline BatchShape broadcast_shapes(const BatchShape& a, const BatchShape& b, bool& ok) {
@@ -104,10 +106,44 @@ template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
   }
 };
 
+// An arc: center, normal, radius, start, angle (shapes.hpp checks 0 < angle <= 2 pi). An angle of
+// float64's 2 pi is the whole circle in every precision: it lies 2.4e-16 below long double's 2 pi,
+// which would leave a long-double query a gap in the circle (arc.hpp takes angle >= 2 pi whole).
+template <class Real> struct ShapeTraits<Arc3<Real>> {
+  static constexpr int kind = kArc;
+  template <class T> static Arc3<Real> make(const T* const* f, int) {
+    const Real angle = Real(*f[4]);
+    const Real whole = 2 * pi_v<Real>();
+    return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2]), vec<Real>(f[3]),
+            angle >= Real(2 * pi_v<double>()) && angle < whole ? whole : angle};
+  }
+};
+
+// The C++ primitive of each kind, in Kind's order: the one list a new kind adds its type to, so
+// that code over every kind (the broadphase's volumes, bind_pairs.hpp) has no per-kind branch.
+template <class Real>
+using KindTypes = std::tuple<Vec3<Real>, Line3<Real>, Ray3<Real>, Segment3<Real>, Circle3<Real>, Disk3<Real>,
+                             BezierCurve3<Real>, Arc3<Real>>;
+static_assert(std::tuple_size_v<KindTypes<double>> == kKindCount, "a kind without a primitive in KindTypes");
+
+template <class T> struct TypeTag {
+  using type = T;
+};
+
+// fn(TypeTag<S>{}) for the primitive S (of scalar Real) of `kind`.
+template <class Real, class Fn, size_t... K> void visit_kind(int kind, Fn&& fn, std::index_sequence<K...>) {
+  static_assert(((ShapeTraits<std::tuple_element_t<K, KindTypes<Real>>>::kind == int(K)) && ...),
+                "KindTypes and ShapeTraits disagree on a kind");
+  (void)((kind == int(K) ? (fn(TypeTag<std::tuple_element_t<K, KindTypes<Real>>>{}), true) : false) || ...);
+}
+template <class Real, class Fn> void visit_kind(int kind, Fn&& fn) {
+  visit_kind<Real>(kind, std::forward<Fn>(fn), std::make_index_sequence<kKindCount>());
+}
+
 // A shape batch as a query reads it: per field, its values in the storage type T of the query's
 // precision (double, or long double), its width (values per element) and its batch shape. The
 // module makes it from a Shape (shapes.hpp) with the GIL held; it borrows the Shape's storage.
-constexpr int kMaxShapeFields = 4;  // a round shape's center, normal, radius, and the sweep
+constexpr int kMaxShapeFields = 6;  // an arc's center, normal, radius, start, angle, and the sweep
 template <class T> struct FieldRef {
   const char* name;
   const T* data;

@@ -25,51 +25,6 @@ namespace {
 using Volumes = std::vector<Volume<double>>;
 using PairList = BroadPairs;
 
-// Where each field of a shape keeps the element of a flat index of the shape's batch: fields
-// broadcast within a shape (a scalar radius for a batch of centers), so a field's element is the
-// flat index itself (full-size fields), 0 (one value), or a walk over the batch's dimensions.
-struct FieldElements {
-  enum class Mode { Full, One, Strided };
-  struct Map {
-    Mode mode;
-    std::vector<Index> strides;  // elements per step along each batch dimension (Strided)
-  };
-  BatchShape batch;
-  std::vector<Map> maps;
-
-  explicit FieldElements(const Shape& s) : batch(s.batch) {
-    for (const Field& f : s.fields) {
-      Map m{Mode::Strided, std::vector<Index>(batch.size(), 0)};
-      if (f.batch.empty()) {
-        m.mode = Mode::One;
-      } else if (f.batch == batch) {
-        m.mode = Mode::Full;
-      } else {
-        Index step = 1;
-        for (size_t k = 0; k < f.batch.size(); ++k) {
-          const size_t d = batch.size() - 1 - k;
-          const Index extent = f.batch[f.batch.size() - 1 - k];
-          m.strides[d] = extent == 1 ? 0 : step;
-          step *= extent;
-        }
-      }
-      maps.push_back(std::move(m));
-    }
-  }
-
-  Index of(size_t field, Index flat) const {
-    const Map& m = maps[field];
-    if (m.mode == Mode::Full) return flat;
-    if (m.mode == Mode::One) return 0;
-    Index at = 0;
-    for (size_t d = batch.size(); d-- > 0;) {
-      at += (flat % batch[d]) * m.strides[d];
-      flat /= batch[d];
-    }
-    return at;
-  }
-};
-
 Index flat_size(const Shape& s) {
   Index n = 1;
   for (const Index d : s.batch) n *= d;
@@ -90,15 +45,7 @@ template <class S> void fill_volumes(const Shape& s, const FieldElements& e, Ind
 
 void fill_volumes(const Shape& s, Index begin, Index end, Volume<double>* out) {
   const FieldElements e(s);
-  switch (s.kind) {
-    case kPoint: return fill_volumes<Vec3<double>>(s, e, begin, end, out);
-    case kLine: return fill_volumes<Line3<double>>(s, e, begin, end, out);
-    case kRay: return fill_volumes<Ray3<double>>(s, e, begin, end, out);
-    case kSegment: return fill_volumes<Segment3<double>>(s, e, begin, end, out);
-    case kCircle: return fill_volumes<Circle3<double>>(s, e, begin, end, out);
-    case kDisk: return fill_volumes<Disk3<double>>(s, e, begin, end, out);
-    default: return fill_volumes<BezierCurve3<double>>(s, e, begin, end, out);
-  }
+  visit_kind<double>(s.kind, [&](auto tag) { fill_volumes<typename decltype(tag)::type>(s, e, begin, end, out); });
 }
 
 // The volumes of several shapes' elements, one after the other (flat indices, in order).

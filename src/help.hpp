@@ -3,6 +3,8 @@
 // whose examples run as doctests (tests/test_docstrings.py). No behaviour lives here.
 #pragma once
 
+#include "batch.hpp"
+
 #include <pybind11/pybind11.h>
 #include <pybind11/typing.h>
 
@@ -60,6 +62,8 @@ inline const char* field(const std::string& name) {
   if (name == "center") return "The center, shape (..., 3): a read-only array, as stored.";
   if (name == "normal") return "The normal as given (not normalized), shape (..., 3): a read-only array.";
   if (name == "radius") return "The radius, of the radius's own batch shape (0-d for one): a read-only array.";
+  if (name == "start") return "The start direction as given (its projection onto the plane starts the arc), shape (..., 3): a read-only array.";
+  if (name == "angle") return "The angle in (0, 2 pi], of the angle's own batch shape (0-d for one): a read-only array.";
   if (name == "control_points") return "The control points, shape (..., k + 1, 3): a read-only array, as stored.";
   if (name == "sweep") return "The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).";
   return "A field of the shape: a read-only array, as stored.";
@@ -83,8 +87,9 @@ Raises
 ------
 ValueError
     When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-    inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-    fields' batch shapes do not broadcast. The message names the class, the field and the first
+    inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+    angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+    shapes do not broadcast. The message names the class, the field and the first
     offending batch index, e.g. ``Circle: radius[1] is negative``.
 
 Notes
@@ -251,18 +256,70 @@ control_points : numpy.ndarray, shape (..., k + 1, 3)
   return text;
 }
 
+inline const std::string& arc() {
+  static const std::string text = shape_doc(
+      "The circular arc ``center + radius * (cos(t) u + sin(t) v)``, t in [0, angle], where u is\n"
+      "the unit projection of `start` onto the plane normal to `normal` and v = n x u.\n\n"
+      "An angle of 2 pi is the whole circle (the circle's answers). `closest_points` reports an\n"
+      "arc point by its angle from the start: ``param = (t, 0)``. There is no query between an\n"
+      "arc and a Bezier curve yet.",
+      R"(
+center : array_like, shape (3,) or (..., 3)
+    Center of the arc's circle.
+normal : array_like, shape (3,) or (..., 3)
+    Normal of the plane, of any finite nonzero length.
+radius : array_like, shape () or (...)
+    Radius >= 0.
+start : array_like, shape (3,) or (..., 3)
+    Direction of the arc's start from the center: its projection onto the plane, which must
+    not be zero (`start` not parallel to `normal`).
+angle : array_like, shape () or (...)
+    The angle the arc turns through from its start, counterclockwise about the normal, in
+    (0, 2 pi].)",
+      R"(
+center : numpy.ndarray, shape (..., 3)
+normal : numpy.ndarray, shape (..., 3)
+radius : numpy.ndarray, shape (...)
+start : numpy.ndarray, shape (..., 3)
+angle : numpy.ndarray, shape (...)
+)",
+      R"(
+>>> import numpy as np
+>>> import circledist as cd
+>>> quarter = cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], np.pi / 2)  # from (1, 0, 0) to (0, 1, 0)
+>>> cd.distance(quarter, [0, 0, 0])
+1.0
+>>> round(cd.distance(quarter, [-2, 0, 0]) ** 2, 12)  # nearest at the end (0, 1, 0): sqrt(5)
+5.0
+>>> r = cd.closest_points(quarter, [1, 1, 0])
+>>> round(float(r.param_a[0]), 12)  # the angle t from the start: the middle of the arc
+0.785398163397
+)");
+  return text;
+}
+
+// The class docstring of each kind, in Kind's order (src/batch.hpp): the module binds every kind
+// from this list and shapes.hpp's field table, with no per-kind code.
+inline const std::string& shape_class(int kind) {
+  static const std::string* const docs[] = {&point(),  &linear("Line"),        &linear("Ray"),        &segment(),
+                                            &round_shape("Circle"), &round_shape("Disk"), &bezier(),
+                                            &arc()};
+  static_assert(sizeof(docs) / sizeof(docs[0]) == kKindCount, "a kind without a class docstring");
+  return *docs[kind];
+}
+
 inline const char* const kShape = R"(Base class of every shape: a single shape or a batch of them.
 
-Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk` or
-`Bezier`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
+Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk`,
+`Bezier` or `Arc`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
 
 Attributes
 ----------
 batch_shape : tuple of int
     Leading batch dimensions; ``()`` for a single shape.
 kind : str
-    The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``
-    or ``'Bezier'``.
+    The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``,
+    ``'Bezier'`` or ``'Arc'``.
 sweep : numpy.ndarray
     The sweep radius.
 

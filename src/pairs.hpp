@@ -196,10 +196,18 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<BezierCurve3<Real>, Ray3<Real>>();
   v.template add<BezierCurve3<Real>, Segment3<Real>>();
   v.template add<BezierCurve3<Real>, BezierCurve3<Real>>();  // bezier_bezier.hpp
+  // arc.hpp: an arc against every kind but Bezier curves (no Arc-Bezier query yet).
+  v.template add<Line3<Real>, Arc3<Real>>();
+  v.template add<Ray3<Real>, Arc3<Real>>();
+  v.template add<Segment3<Real>, Arc3<Real>>();
+  v.template add<Circle3<Real>, Arc3<Real>>();
+  v.template add<Disk3<Real>, Arc3<Real>>();
+  v.template add<Arc3<Real>, Arc3<Real>>();
 }
 template <class Real, class Visitor> void for_each_closed_form_pair(Visitor&& v) {
   v.template add<Vec3<Real>, Circle3<Real>>();  // point_circle.hpp
   v.template add<Vec3<Real>, Disk3<Real>>();    // point_disk.hpp
+  v.template add<Vec3<Real>, Arc3<Real>>();     // arc.hpp (closed form)
   // linear_linear.hpp: points, lines, rays and segments against each other.
   v.template add<Vec3<Real>, Vec3<Real>>();
   v.template add<Vec3<Real>, Line3<Real>>();

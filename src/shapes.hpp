@@ -60,7 +60,12 @@ struct Field {
   py::object value() const { return is_wide ? py::object(wide) : py::object(array); }
 };
 
-enum class Check { Finite, NonzeroVector, NonNegative };
+// Angle: an arc's angle, in (0, 2 pi] (float32's rounding of 2 pi, just above, is 2 pi given as float32).
+enum class Check { Finite, NonzeroVector, NonNegative, Angle };
+
+inline constexpr double kTwoPi = 2 * pi_v<double>();
+// The largest angle a field takes: 2 pi, or its float32 rounding for a field given as float32.
+inline double largest_angle(bool single) { return single ? double(float(kTwoPi)) : kTwoPi; }
 
 // The width of a field of Bezier control points, (..., k + 1, 3): known once the array is seen.
 constexpr Index kControlPoints = -1;
@@ -203,6 +208,13 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
       throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " has zero length");
     if (check == Check::NonNegative && e[0] < 0)
       throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " is negative");
+    if (check == Check::Angle && !(e[0] > 0 && e[0] <= largest_angle(f.single))) {
+      std::ostringstream got;
+      got.precision(17);
+      got << e[0];
+      throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) +
+                            " must be in (0, 2 pi], got " + got.str());
+    }
   }
   return f;
 }
@@ -257,6 +269,51 @@ struct Shape {
   }
 };
 
+// Where each field of a shape keeps the element of a flat index of the shape's batch: fields
+// broadcast within a shape (a scalar radius for a batch of centers), so a field's element is the
+// flat index itself (full-size fields), 0 (one value), or a walk over the batch's dimensions.
+struct FieldElements {
+  enum class Mode { Full, One, Strided };
+  struct Map {
+    Mode mode;
+    std::vector<Index> strides;  // elements per step along each batch dimension (Strided)
+  };
+  BatchShape batch;
+  std::vector<Map> maps;
+
+  explicit FieldElements(const Shape& s) : batch(s.batch) {
+    for (const Field& f : s.fields) {
+      Map m{Mode::Strided, std::vector<Index>(batch.size(), 0)};
+      if (f.batch.empty()) {
+        m.mode = Mode::One;
+      } else if (f.batch == batch) {
+        m.mode = Mode::Full;
+      } else {
+        Index step = 1;
+        for (size_t k = 0; k < f.batch.size(); ++k) {
+          const size_t d = batch.size() - 1 - k;
+          const Index extent = f.batch[f.batch.size() - 1 - k];
+          m.strides[d] = extent == 1 ? 0 : step;
+          step *= extent;
+        }
+      }
+      maps.push_back(std::move(m));
+    }
+  }
+
+  Index of(size_t field, Index flat) const {
+    const Map& m = maps[field];
+    if (m.mode == Mode::Full) return flat;
+    if (m.mode == Mode::One) return 0;
+    Index at = 0;
+    for (size_t d = batch.size(); d-- > 0;) {
+      at += (flat % batch[d]) * m.strides[d];
+      flat /= batch[d];
+    }
+    return at;
+  }
+};
+
 inline void check_float_range(const Shape& s) {
   for (const Field& f : s.fields) check_float_range(kind_name(s.kind), f);
 }
@@ -270,6 +327,7 @@ struct FieldSpec {
   const char* name;
   Index width;
   Check check;
+  int not_along = -1;  // a vector field that must not be parallel to this field of the shape (check_not_along)
 };
 
 inline constexpr FieldSpec kPointFields[] = {{"p", 3, Check::Finite}};
@@ -279,6 +337,13 @@ inline constexpr FieldSpec kRoundFields[] = {
     {"center", 3, Check::Finite}, {"normal", 3, Check::NonzeroVector}, {"radius", 1, Check::NonNegative}};
 
 inline constexpr FieldSpec kBezierFields[] = {{"control_points", kControlPoints, Check::Finite}};
+// An arc (primitives.hpp Arc3): its circle's fields, the start (whose projection onto the plane
+// starts the arc, so not along the normal) and the angle in (0, 2 pi].
+inline constexpr FieldSpec kArcFields[] = {{"center", 3, Check::Finite},
+                                           {"normal", 3, Check::NonzeroVector},
+                                           {"radius", 1, Check::NonNegative},
+                                           {"start", 3, Check::NonzeroVector, 1},
+                                           {"angle", 1, Check::Angle}};
 
 // Every kind takes an optional `sweep` radius (>= 0, default 0) after its own fields: the field
 // is always present, last, so that a shape is swept (sweep.hpp) without per-kind code.
@@ -307,6 +372,37 @@ inline Field sweep_field(const char* owner, py::handle value, bool copy = true) 
 }
 
 inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields, kSegmentFields,
-                                                             kRoundFields,   kRoundFields,  kBezierFields};
+                                                             kRoundFields,   kRoundFields,  kBezierFields,
+                                                             kArcFields};
+
+}  // namespace circledist::python
+
+namespace circledist::python {
+
+// Fields that must not be parallel to another of their shape (FieldSpec::not_along), checked per
+// element of the shape's broadcast batch: parallel within rounding (|a x b| <= 16 eps |a| |b|,
+// each scaled by its largest component first, so no square overflows or underflows) is an error
+// naming the field and the element.
+inline void check_not_along(const Shape& s, const FieldSpec* spec) {
+  for (size_t k = 0; k < kFieldCounts[s.kind]; ++k) {
+    if (spec[k].not_along < 0) continue;
+    const size_t other = size_t(spec[k].not_along);
+    const FieldElements e(s);
+    Index count = 1;
+    for (const Index d : s.batch) count *= d;
+    for (Index i = 0; i < count; ++i) {
+      const double* pa = s.fields[k].data() + 3 * e.of(k, i);
+      const double* pb = s.fields[other].data() + 3 * e.of(other, i);
+      Vec3<double> a(pa[0], pa[1], pa[2]), b(pb[0], pb[1], pb[2]);
+      a /= a.cwiseAbs().maxCoeff();
+      b /= b.cwiseAbs().maxCoeff();
+      const double bound = 16 * std::numeric_limits<double>::epsilon();
+      if (!(a.cross(b).squaredNorm() > bound * bound * a.squaredNorm() * b.squaredNorm()))
+        throw py::value_error(std::string(kind_name(s.kind)) + ": " + spec[k].name + index_text(i, s.batch) +
+                              " is parallel to " + spec[other].name + index_text(i, s.batch) +
+                              " (its projection onto the plane starts the arc)");
+    }
+  }
+}
 
 }  // namespace circledist::python

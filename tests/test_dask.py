@@ -166,7 +166,8 @@ def scene(kind, n, rng, clustered):
 
 
 PAIR_CASES = [("Circle", "Segment"), ("Point", "Circle"), ("Disk", "Disk"), ("Bezier", "Circle"),
-              ("Line", "Disk"), ("Segment", "Ray"), ("Line", "Line"), ("Circle", "Bezier")]
+              ("Line", "Disk"), ("Segment", "Ray"), ("Line", "Line"), ("Circle", "Bezier"), ("Arc", "Segment"),
+              ("Disk", "Arc"), ("Arc", "Arc")]
 
 
 def pairs_cases(clustered, n_a, n_b, cases):

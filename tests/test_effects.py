@@ -28,25 +28,25 @@ def random_batch(kind, rng, n, spread=3.0):
         return getattr(cd, kind)(c, rand_dirs(rng, n), rng.uniform(0.2, 1.5, n))
     if kind == "Bezier":
         return cd.Bezier(c[:, None, :] + rng.uniform(-1.2, 1.2, size=(n, 4, 3)))
+    if kind == "Arc":
+        return cd.Arc(c, rand_dirs(rng, n), rng.uniform(0.2, 1.5, n), rand_dirs(rng, n), rng.uniform(0.3, 2 * np.pi, n))
     raise AssertionError(kind)
 
 
 def with_sweep(shape, sweep):
-    kind = shape.kind
-    fields = {"Point": ("p",), "Line": ("origin", "direction"), "Ray": ("origin", "direction"),
-              "Segment": ("p0", "p1"), "Circle": ("center", "normal", "radius"),
-              "Disk": ("center", "normal", "radius"), "Bezier": ("control_points",)}[kind]
-    return getattr(cd, kind)(*[getattr(shape, f) for f in fields], sweep=sweep)
+    arrays = {name: value for name, value in shape.to_arrays().items() if name != "sweep"}
+    return type(shape)(**arrays, sweep=sweep)
 
 
 PAIRS = [("Line", "Circle"), ("Ray", "Disk"), ("Segment", "Circle"), ("Segment", "Disk"),
          ("Circle", "Circle"), ("Circle", "Disk"), ("Disk", "Disk"), ("Bezier", "Disk"),
          ("Bezier", "Circle"), ("Point", "Disk"), ("Segment", "Segment"), ("Point", "Line"),
-         ("Line", "Ray")]
+         ("Line", "Ray"), ("Arc", "Point"), ("Arc", "Line"), ("Ray", "Arc"), ("Segment", "Arc"),
+         ("Arc", "Circle"), ("Disk", "Arc"), ("Arc", "Arc")]
 
 
 # ---- the sweep keyword ----------------------------------------------------------------------
-@pytest.mark.parametrize("kind", ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"])
+@pytest.mark.parametrize("kind", list(cd._core._shape_fields()))
 def test_every_kind_takes_a_sweep(kind):
     rng = np.random.default_rng(1)
     plain = random_batch(kind, rng, 4)

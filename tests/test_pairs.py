@@ -12,7 +12,7 @@ import pytest
 import circledist as cd
 from circledist_cases.batches import SUPPORTED, TRAILING, random_batch
 
-KINDS = ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"]
+KINDS = list(cd._core._shape_fields())  # every kind, Arc included
 def size(shape):
     return int(np.prod(shape.batch_shape, dtype=np.int64))
 

@@ -13,7 +13,7 @@ from circledist_cases.shapes import random_fields, random_sweep
 
 cd = pytest.importorskip("circledist")
 
-KINDS = ("Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier")
+KINDS = tuple(cd._core._shape_fields())  # every kind, from the module's table
 
 
 def _shapes():

@@ -28,6 +28,8 @@ def _value(role, i):
         return [0.0, 0.6, 0.8 + i]
     if role == "length":
         return 0.75 + i
+    if role == "angle":
+        return 1.25 + i / 8
     assert role == "control_points", role
     return [[0.0, 0.0, i], [1.0, 2.0, 0.0], [2.0, 0.0, 1.0]]
 
@@ -42,7 +44,7 @@ def _shape(kind, sweep=0.25, count=None):
 
 
 def test_table_names_every_shape_class_and_its_fields():
-    assert list(TABLE) == ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier"]
+    assert list(TABLE) == ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc"]
     assert SWEEP == ("sweep", "length")
     for kind, fields in TABLE.items():
         shape, given = _shape(kind)
@@ -50,7 +52,7 @@ def test_table_names_every_shape_class_and_its_fields():
         assert list(shape.to_arrays()) == [name for name, _ in fields] + [SWEEP[0]]
         for name in given:
             assert np.array_equal(getattr(shape, name), given[name]), (kind, name)
-        assert {role for _, role in fields} <= {"vector", "direction", "length", "control_points"}
+        assert {role for _, role in fields} <= {"vector", "direction", "length", "angle", "control_points"}
 
 
 def test_scene_and_scene_files_read_the_table():
@@ -100,7 +102,7 @@ def test_command_line_describes_and_draws_every_kind(tmp_path, capsys):
               for kind, f in TABLE.items()]
     queries = [{"a": s["name"], "b": "circle", "effects": ["closest_points"]} for s in shapes if s["name"] != "circle"]
     path = tmp_path / "every_kind.json"
-    path.write_text(json.dumps({"format": "circledist-scene", "version": 1, "shapes": shapes, "queries": queries}))
+    path.write_text(json.dumps({"format": "circledist-scene", "version": sf.VERSION, "shapes": shapes, "queries": queries}))
     answers = tmp_path / "answers.json"
     argv = [str(path), "--json", str(answers)]
     if importlib.util.find_spec("matplotlib") is not None:  # the picture draws every kind too

@@ -100,3 +100,20 @@ def test_numpy_does_not_unpack_shapes():
     holder = np.empty(2, dtype=object)
     holder[:] = shapes
     assert holder[0] is shapes[0]
+
+
+def test_arc_batches_index_as_the_batch_with_fields_broadcast():
+    """An arc's five fields broadcast among themselves (angles (3, 1) against centers (4,)); every
+    index answers with the bits the whole batch gives it, dtypes kept."""
+    rng = np.random.default_rng(8)
+    for dtype in (np.float64, np.float32, np.longdouble):
+        arcs = cd.Arc(rng.normal(size=(4, 3)).astype(dtype), np.array([0.2, 0.3, 1.0], dtype=dtype),
+                      rng.uniform(0.5, 2, 4).astype(dtype), np.array([1.0, 0.0, 0.0], dtype=dtype),
+                      rng.uniform(0.5, 6, (3, 1)).astype(dtype))
+        assert arcs.batch_shape == (3, 4)
+        target = cd.Segment([0, 0, 0], [1, 2, 0.5])
+        whole = cd.distance(arcs, target)
+        for key in ((1, 2), (slice(None), 0), (Ellipsis, 3), (np.array([2, 0]),), (whole > np.median(whole),)):
+            part = arcs[key]
+            assert part.kind == "Arc" and part.to_arrays()["angle"].dtype == np.dtype(dtype)
+            assert np.array_equal(cd.distance(part, target), whole[key])

@@ -24,7 +24,8 @@ namespace {
 
 using V = Vec3<double>;
 using Any = std::variant<Swept<V>, Swept<Line3<double>>, Swept<Ray3<double>>, Swept<Segment3<double>>,
-                         Swept<Circle3<double>>, Swept<Disk3<double>>, Swept<BezierCurve3<double>>>;
+                         Swept<Circle3<double>>, Swept<Disk3<double>>, Swept<BezierCurve3<double>>,
+                         Swept<Arc3<double>>>;
 using Pairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
 
 test_random::Random source(20261125);
@@ -42,12 +43,14 @@ Any random_shape(const V& at, int first = 0, int last = 7, double sweep = 0.3) {
     case 3: return swept(Segment3<double>{at, V(at + random_vector(1.5))}, r);
     case 4: return swept(Circle3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
     case 5: return swept(Disk3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
-    default: {
+    case 6: {
       BezierCurve3<double> b;
       b.control.resize(3, 4);
       for (int i = 0; i < 4; ++i) b.control.col(i) = at + random_vector(1.0);
       return swept(b, r);
     }
+    default:  // kind 7: an arc (its box is its own, not its circle's)
+      return swept(Arc3<double>{at, random_direction(), uniform(0.1, 1.2), random_direction(), uniform(0.05, 6.3)}, r);
   }
 }
 
@@ -194,6 +197,32 @@ int main() {
     check_nearest(curves, rounds, 4);
     std::vector<Any> mixed = random_set(200, 6.0);
     check_sets(mixed, mixed, true, 0.4);
+  }
+  // Arcs (kind 7) against every kind that has an arc query, and among themselves: their boxes
+  // (the ends and the circle's extremes on the arc) and balls (the chord's up to a half turn)
+  // never cull a pair within d. And the box is the arc's: a quarter arc's is a quarter of its
+  // circle's square, not the whole square.
+  {
+    const std::vector<Any> arcs = random_set(160, 5.0, 7, 8), others = random_set(200, 5.0, 0, 6);
+    for (const double d : {0.0, 0.3}) {
+      check_sets(arcs, others, false, d);
+      check_sets(others, arcs, false, d);
+      check_sets(arcs, arcs, true, d);
+    }
+    check_nearest(arcs, others, 3);
+    check_nearest(others, arcs, 2);
+    const Volume<double> quarter = volume(Arc3<double>{V(0, 0, 0), V(0, 0, 1), 1.0, V(1, 0, 0), 1.5707963267948966});
+    CHECK_NEAR(quarter.lo.x(), 0.0, 1e-15);
+    CHECK_NEAR(quarter.lo.y(), 0.0, 1e-15);
+    CHECK_NEAR(quarter.hi.x(), 1.0, 1e-15);
+    CHECK_NEAR(quarter.hi.y(), 1.0, 1e-15);
+    CHECK_NEAR(quarter.lo.z(), 0.0, 1e-15);
+    CHECK_NEAR(quarter.hi.z(), 0.0, 1e-15);
+    const Volume<double> past_left = volume(Arc3<double>{V(0, 0, 0), V(0, 0, 1), 2.0, V(0, 1, 0), 2.0});
+    CHECK_NEAR(past_left.lo.x(), -2.0, 1e-15);  // through the circle's leftmost point
+    CHECK_NEAR(past_left.hi.y(), 2.0, 1e-15);
+    CHECK(std::abs(past_left.hi.x()) < 1e-15);  // from (0, 2) over (-2, 0) to 2 (-sin 2, cos 2)
+    CHECK_NEAR(past_left.lo.y(), 2 * std::cos(2.0), 1e-15);
   }
   // Only bounded shapes, then only lines and rays.
   {

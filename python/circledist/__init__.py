@@ -1,7 +1,8 @@
-"""circledist: exact distances and closest points between circles, disks, lines, rays, segments
-and points in 3D, single or batched (NumPy broadcasting)."""
+"""circledist: exact distances and closest points between circles, disks, arcs, lines, rays,
+segments, points and Bezier curves in 3D, single or batched (NumPy broadcasting)."""
 
 from ._core import (
+    Arc,
     Bezier,
     Circle,
     ClosestPoints,
@@ -26,6 +27,7 @@ from .scene import Scene
 from .scenefile import SceneFileError, read_scene, write_scene
 
 __all__ = [
+    "Arc",
     "Bezier",
     "Circle",
     "ClosestPoints",

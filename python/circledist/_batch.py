@@ -10,7 +10,7 @@ from . import _core
 
 # Trailing dimensions of a field per element, by the field's role (src/shapes.hpp's table, read
 # through _core._shape_fields): a vector (3,), a number (), control points (k + 1, 3).
-ROLE_TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "control_points": 2}
+ROLE_TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "angle": 0, "control_points": 2}
 TRAILING_DIMS = {name: ROLE_TRAILING_DIMS[role]
                  for fields in [*_core._shape_fields().values(), (_core._sweep_field(),)] for name, role in fields}
 

@@ -98,6 +98,16 @@ def _ring(center, normal, radius, count=120):
     return np.asarray(center, float) + radius * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
 
 
+def _arc(center, normal, radius, start, angle, count=120):
+    """The arc's own definition: u the unit projection of start onto the plane, v = n x u."""
+    n = np.asarray(normal, float) / np.linalg.norm(normal)
+    u = np.asarray(start, float) - np.dot(start, n) * n
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    t = np.linspace(0, float(angle), count)
+    return np.asarray(center, float) + radius * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+
+
 def _bezier(points, count=100):
     p = np.asarray(points, float)
     t = np.linspace(0, 1, count)[:, None, None]
@@ -135,15 +145,27 @@ def _specs(scene: SceneFile) -> dict:
     return out
 
 
+# The kinds drawn as a curve: kind -> the points along it (count of them) from its field values in
+# the table's order; the filled ones are drawn with their face too. Drawing a new curve kind is a
+# row here.
+_CURVES = {
+    "circle": lambda values, count: _ring(*values, count),
+    "disk": lambda values, count: _ring(*values, count),
+    "bezier": lambda values, count: _bezier(values[0], count),
+    "arc": lambda values, count: _arc(*values, count),
+}
+_FILLED = {"disk"}
+
+
 def _outline(kind: str, values) -> list:
     """Points the view must hold: every bounded shape's, the origins of lines and rays."""
     if kind in ("point", "line", "ray"):
         return [values[0]]
     if kind == "segment":
         return list(values)
-    if kind in ("circle", "disk"):
-        return list(_ring(*values, 16))
-    return list(values[0])  # bezier: its control points
+    if kind == "bezier":
+        return list(values[0])  # its control points
+    return list(_CURVES[kind](values, 16))
 
 
 def picture(scene: SceneFile, queries: list[Query]) -> bytes:
@@ -188,14 +210,10 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
             seg = np.array(values, float)
             ax.plot(*seg.T, color=c, lw=width, alpha=alpha, solid_capstyle="round", label=label)
             anchor = seg.mean(axis=0)
-        elif k in ("circle", "disk"):
-            ring = _ring(*values)
-            if k == "disk":
-                ax.add_collection3d(Poly3DCollection([ring], facecolor=c, alpha=0.35, edgecolor="none"))
-            ax.plot(*ring.T, color=c, lw=width, alpha=alpha, label=label)
-            anchor = ring[0]
         else:
-            curve = _bezier(values[0])
+            curve = _CURVES[k](values, 120)
+            if k in _FILLED:
+                ax.add_collection3d(Poly3DCollection([curve], facecolor=c, alpha=0.35, edgecolor="none"))
             ax.plot(*curve.T, color=c, lw=width, alpha=alpha, label=label)
             anchor = curve[len(curve) // 2]
         ax.text(*anchor, f" {name}", color=c, fontsize=9)

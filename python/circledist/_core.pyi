@@ -1,26 +1,26 @@
 """
-circledist: exact distances and closest points between circles, disks, lines, rays, segments, points and Bezier curves in 3D
+circledist: exact distances and closest points between circles, disks, arcs, lines, rays, segments, points and Bezier curves in 3D
 """
 from __future__ import annotations
 import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
+__all__: list[str] = ['Arc', 'Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
 class Shape:
     """
     Base class of every shape: a single shape or a batch of them.
     
-    Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk` or
-    `Bezier`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
+    Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk`,
+    `Bezier` or `Arc`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
     
     Attributes
     ----------
     batch_shape : tuple of int
         Leading batch dimensions; ``()`` for a single shape.
     kind : str
-        The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``
-        or ``'Bezier'``.
+        The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``,
+        ``'Bezier'`` or ``'Arc'``.
     sweep : numpy.ndarray
         The sweep radius.
     
@@ -178,8 +178,9 @@ class Point(Shape):
     ------
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -241,8 +242,9 @@ class Line(Shape):
     ------
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -304,8 +306,9 @@ class Ray(Shape):
     ------
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -364,8 +367,9 @@ class Segment(Shape):
     ------
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -432,8 +436,9 @@ class Circle(Shape):
     ------
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -513,8 +518,9 @@ class Disk(Shape):
     ------
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -582,8 +588,9 @@ class Bezier(Shape):
     ------
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
-        inf, when a direction or normal has zero length, a radius or sweep is negative, or the
-        fields' batch shapes do not broadcast. The message names the class, the field and the first
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -607,6 +614,107 @@ class Bezier(Shape):
     def control_points(self) -> numpy.ndarray:
         """
         The control points, shape (..., k + 1, 3): a read-only array, as stored.
+        """
+class Arc(Shape):
+    """
+    The circular arc ``center + radius * (cos(t) u + sin(t) v)``, t in [0, angle], where u is
+    the unit projection of `start` onto the plane normal to `normal` and v = n x u.
+    
+    An angle of 2 pi is the whole circle (the circle's answers). `closest_points` reports an
+    arc point by its angle from the start: ``param = (t, 0)``. There is no query between an
+    arc and a Bezier curve yet.
+    
+    Parameters
+    ----------
+    center : array_like, shape (3,) or (..., 3)
+        Center of the arc's circle.
+    normal : array_like, shape (3,) or (..., 3)
+        Normal of the plane, of any finite nonzero length.
+    radius : array_like, shape () or (...)
+        Radius >= 0.
+    start : array_like, shape (3,) or (..., 3)
+        Direction of the arc's start from the center: its projection onto the plane, which must
+        not be zero (`start` not parallel to `normal`).
+    angle : array_like, shape () or (...)
+        The angle the arc turns through from its start, counterclockwise about the normal, in
+        (0, 2 pi].
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    center : numpy.ndarray, shape (..., 3)
+    normal : numpy.ndarray, shape (..., 3)
+    radius : numpy.ndarray, shape (...)
+    start : numpy.ndarray, shape (..., 3)
+    angle : numpy.ndarray, shape (...)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
+        shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> quarter = cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], np.pi / 2)  # from (1, 0, 0) to (0, 1, 0)
+    >>> cd.distance(quarter, [0, 0, 0])
+    1.0
+    >>> round(cd.distance(quarter, [-2, 0, 0]) ** 2, 12)  # nearest at the end (0, 1, 0): sqrt(5)
+    5.0
+    >>> r = cd.closest_points(quarter, [1, 1, 0])
+    >>> round(float(r.param_a[0]), 12)  # the angle t from the start: the middle of the arc
+    0.785398163397
+    """
+    def __init__(self, center: numpy.typing.ArrayLike, normal: numpy.typing.ArrayLike, radius: numpy.typing.ArrayLike, start: numpy.typing.ArrayLike, angle: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
+    @property
+    def angle(self) -> numpy.ndarray:
+        """
+        The angle in (0, 2 pi], of the angle's own batch shape (0-d for one): a read-only array.
+        """
+    @property
+    def center(self) -> numpy.ndarray:
+        """
+        The center, shape (..., 3): a read-only array, as stored.
+        """
+    @property
+    def normal(self) -> numpy.ndarray:
+        """
+        The normal as given (not normalized), shape (..., 3): a read-only array.
+        """
+    @property
+    def radius(self) -> numpy.ndarray:
+        """
+        The radius, of the radius's own batch shape (0-d for one): a read-only array.
+        """
+    @property
+    def start(self) -> numpy.ndarray:
+        """
+        The start direction as given (its projection onto the plane starts the arc), shape (..., 3): a read-only array.
         """
 class ClosestPoints:
     """
@@ -726,7 +834,7 @@ def _query_kinds() -> list[tuple[str, str]]:
     """
 def _shape_fields() -> dict[str, tuple[tuple[str, str], ...]]:
     """
-    Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' (shape (3,), not zero), 'length' (a number >= 0) or 'control_points' (shape (k + 1, 3)). Read by the scene files, the command line and circledist.Scene.
+    Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' (shape (3,), not zero), 'length' (a number >= 0), 'angle' (a number in (0, 2 pi]) or 'control_points' (shape (k + 1, 3)). Read by the scene files, the command line and circledist.Scene.
     """
 def _sweep_field() -> tuple[str, str]:
     """

@@ -29,7 +29,7 @@ from dask.highlevelgraph import HighLevelGraph
 from . import _core
 from ._batch import TRAILING_DIMS, index_fields
 
-__all__ = ["Bezier", "Circle", "ClosestPoints", "Disk", "Line", "Point", "Ray", "Segment",
+__all__ = ["Arc", "Bezier", "Circle", "ClosestPoints", "Disk", "Line", "Point", "Ray", "Segment",
            "closest_points", "distance", "pairs_within", "within"]
 
 
@@ -137,7 +137,9 @@ Segment = _shape_class("Segment", ("p0", "p1"))
 Circle = _shape_class("Circle", ("center", "normal", "radius"))
 Disk = _shape_class("Disk", ("center", "normal", "radius"))
 Bezier = _shape_class("Bezier", ("control_points",))
-_CLASSES = {cls.__name__: cls for cls in (Point, Line, Ray, Segment, Circle, Disk, Bezier)}
+Arc = _shape_class("Arc", ("center", "normal", "radius", "start", "angle"))
+_CLASSES = {cls.__name__: cls for cls in (Point, Line, Ray, Segment, Circle, Disk, Bezier, Arc)}
+assert set(_CLASSES) == set(_core._shape_fields()), "a kind without a dask class"
 
 
 def _as_dask_shape(x):
@@ -160,7 +162,7 @@ def _block_shape(kind, fields):
 # precision keyword, else the fields' dtypes) instead of restating that rule here.
 _DUMMY = {"p": [1.0, 2.0, 3.0], "origin": [0.0, 0.0, 0.0], "direction": [1.0, 0.0, 0.0],
           "p0": [0.0, 0.0, 0.0], "p1": [1.0, 0.0, 0.0], "center": [0.0, 0.0, 0.0],
-          "normal": [0.0, 0.0, 1.0], "radius": 1.0, "sweep": 0.0}
+          "normal": [0.0, 0.0, 1.0], "radius": 1.0, "start": [1.0, 0.0, 0.0], "angle": 1.0, "sweep": 0.0}
 
 
 def _dummy(shape):
@@ -313,7 +315,7 @@ def _balls(kind, fields):
     elif kind == "Segment":
         c = (fields["p0"] + fields["p1"]) / 2
         r = np.linalg.norm(fields["p1"] - fields["p0"], axis=-1) / 2
-    elif kind in ("Circle", "Disk"):
+    elif "center" in fields and "radius" in fields:  # a circle, disk or arc: in its circle's ball
         c, r = fields["center"], fields["radius"]
     else:
         # A Bezier curve lies in its control points' convex hull, so in their ball about the mean.

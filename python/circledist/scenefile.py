@@ -7,9 +7,11 @@ the package (``circledist/scene.schema.json``, see ``schema_text()``); the ``.np
 the same content as arrays, for scenes of millions of shapes. ``python -m circledist --help``
 summarizes both; README.md shows their use.
 
-Format version 1. The version goes up with any change to what a valid file may hold or to what
-it means (a new kind, field, effect or array, a changed default); a reader refuses files of a
-newer version with a message saying so instead of misreading them, and keeps reading older ones.
+Format version 2 (version 1 without arcs). The version goes up with any change to what a valid
+file may hold or to what it means (a new kind, field, effect or array, a changed default); a
+reader refuses files of a newer version with a message saying so instead of misreading them, and
+keeps reading older ones. A file of an older version may hold only what that version holds (an
+arc in a version 1 file is refused); `write_scene` writes the oldest version that holds the scene.
 Files must say ``"format": "circledist-scene"`` and ``"version"``: without them a JSON file is
 refused (the message says which two fields to add), so that a file is never read under a version
 it was not written for.
@@ -44,11 +46,16 @@ __all__ = ["FORMAT", "VERSION", "SceneFileError", "SceneFile", "ShapeEntry", "re
            "schema", "schema_text", "SCHEMA_RESOURCE"]
 
 FORMAT = "circledist-scene"
-VERSION = 1
+VERSION = 2
+# The versions this circledist reads: every one up to VERSION. Version 2 added the kind "arc";
+# a file says the first version that holds what it holds (write_scene writes that one, so that a
+# scene without arcs stays readable by a circledist that reads version 1).
+VERSIONS = (1, 2)
+KIND_SINCE = {"arc": 2}
 SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
 
 # kind -> (class name, {field: role}), read from the module's one table of fields (src/shapes.hpp);
-# roles: vector, direction (a non-zero vector), length (>= 0), control_points. The sweep (a length,
+# roles: vector, direction (a non-zero vector), length (>= 0), angle (in (0, 2 pi]), control_points. The sweep (a length,
 # default 0) comes on top of every kind.
 KINDS = {kind.lower(): (kind, dict(fields)) for kind, fields in _core._shape_fields().items()}
 _SWEEP, _SWEEP_ROLE = _core._sweep_field()
@@ -261,6 +268,13 @@ def _check_directions(array: np.ndarray, file: str, where: str, index_text) -> N
         raise _error(file, index_text(where, at), "expected a non-zero vector, got [0, 0, 0]")
 
 
+def _check_angles(array: np.ndarray, file: str, where: str, index_text) -> None:
+    bad = ~((array > 0) & (array <= 2 * math.pi))
+    if bad.any():
+        at = np.unravel_index(int(np.argmax(bad)), bad.shape) if bad.ndim else ()
+        raise _error(file, index_text(where, at), f"expected an angle in (0, 2 pi], got {float(array[at])!r}")
+
+
 def _json_index(where: str, at) -> str:
     return where + "".join(f"[{i}]" for i in at)
 
@@ -300,7 +314,9 @@ def _entry_from_json(spec: dict, i: int, file: str) -> ShapeEntry:
         array = _finite_array(value, file, where)
         if role == "direction":
             _check_directions(array, file, where, _json_index)
-        rows_word = {"length": "numbers", "control_points": "curves"}.get(role, "vectors")
+        elif role == "angle":
+            _check_angles(array, file, where, _json_index)
+        rows_word = {"length": "numbers", "angle": "numbers", "control_points": "curves"}.get(role, "vectors")
         fields[name] = _column(array, role, count, file, where, rows_word)
     entry = ShapeEntry(spec["name"], kind, count, fields)
     try:
@@ -358,6 +374,8 @@ def _refused_rows(kind: str, columns: dict, rows: int) -> np.ndarray:
             bad |= ~np.any(column != 0, axis=-1)
         elif role == "length":
             bad |= column < 0
+        elif role == "angle":
+            bad |= ~((column > 0) & (column <= 2 * math.pi))
     # The rows left, as views where none is bad (a masked copy of 10^6 rows costs more than the check).
     good = slice(None) if not bad.any() else ~bad
     try:
@@ -514,11 +532,24 @@ def _check_format(data: dict, file: str, prefix: str = "$") -> None:
     if fmt != FORMAT:
         raise _error(file, member(prefix, "format"), f"expected \"{FORMAT}\", got {shown(fmt)}")
     if "version" not in data:
-        raise _error(file, prefix, f"missing field 'version' (this circledist reads version {VERSION})")
+        raise _error(file, prefix, f"missing field 'version' (this circledist reads versions 1 to {VERSION})")
     if isinstance(version, (int, float)) and not isinstance(version, bool) and version > VERSION \
             and float(version).is_integer():
         raise _error(file, member(prefix, "version"), f"version {int(version)} is newer than this circledist "
-                                                      f"reads (version {VERSION}): upgrade circledist")
+                                                      f"reads (versions 1 to {VERSION}): upgrade circledist")
+
+
+def _check_kind_version(kind: str, version: int, file: str, where: str) -> None:
+    """A kind newer than the file's version (an arc in a version 1 file) is refused."""
+    since = KIND_SINCE.get(kind, 1)
+    if version < since:
+        raise _error(file, where, f"kind {kind!r} needs format version {since} or later, the file says version "
+                                  f"{int(version)}")
+
+
+def _file_version(kinds: Iterable[str]) -> int:
+    """The oldest version that holds shapes of these kinds."""
+    return max([1] + [KIND_SINCE.get(k, 1) for k in kinds])
 
 
 def _parse_json(text: str, file: str) -> Any:
@@ -548,6 +579,8 @@ def scene_from_json(data: Any, file: str) -> SceneFile:
                 where += f" (shape {spec['name']!r})"
         raise _error(file, where, message)
     shapes = data["shapes"]
+    for i, s in enumerate(shapes):
+        _check_kind_version(s["kind"], data["version"], file, f"$.shapes[{i}].kind (shape {s['name']!r})")
     _check_names((s["name"] for s in shapes), file, lambda i: f"$.shapes[{i}].name")
     entries = _entries_from_json(shapes, file)
     queries = _check_queries(data.get("queries", []), entries, file)
@@ -594,16 +627,18 @@ def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where:
         shape_ok = shape_ok and inner[1:] == (3,) and 2 <= inner[0] <= MAX_CONTROL_POINTS
     if not shape_ok:
         rows = "" if count is None else "[rows (count or 1)] + "
-        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()",
+        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()", "angle": "()",
                   "control_points": f"(m, 3), m from 2 to {MAX_CONTROL_POINTS}"}[role]
         raise _error(file, where, f"expected shape {rows}{wanted}, got {a.shape}")
     array = a.astype(np.float64, copy=False)
     bad = ~np.isfinite(array)
     if role == "length":
         bad |= array < 0
+    if role == "angle":
+        bad |= ~((array > 0) & (array <= 2 * math.pi))
     if bad.any():
         at = np.unravel_index(int(np.argmax(bad)), bad.shape) if bad.ndim else ()
-        what = "a finite number >= 0" if role == "length" else "a finite number"
+        what = {"length": "a finite number >= 0", "angle": "an angle in (0, 2 pi]"}.get(role, "a finite number")
         raise _error(file, _npz_index(where, at), f"expected {what}, got {float(array[at])!r}")
     if role == "direction":
         _check_directions(array, file, where, _npz_index)
@@ -636,12 +671,12 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
         raise _error(file, "array 'format'", f"expected \"{FORMAT}\", got {shown(fmt)}")
     version = _npz_integer(arrays, "version", file)
     if version is None:
-        raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads version {VERSION})")
+        raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads versions 1 to {VERSION})")
     if version > VERSION:
         raise _error(file, "array 'version'", f"version {version} is newer than this circledist reads "
-                                              f"(version {VERSION}): upgrade circledist")
-    if version != VERSION:
-        raise _error(file, "array 'version'", f"expected {VERSION}, got {version}")
+                                              f"(versions 1 to {VERSION}): upgrade circledist")
+    if version not in VERSIONS:
+        raise _error(file, "array 'version'", f"expected one of {', '.join(map(str, VERSIONS))}, got {version}")
     description = _npz_string(arrays, "description", file, required=False) or ""
     if "shapes" not in names:
         raise _error(file, "array 'shapes'", "missing (a 1-d string array of the shapes' names, in order)")
@@ -662,6 +697,7 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
         kind = _npz_string(arrays, f"{name}/kind", file)
         if kind not in KINDS:
             raise _error(file, f"array '{name}/kind'", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
+        _check_kind_version(kind, version, file, f"array '{name}/kind'")
         count = _npz_integer(arrays, f"{name}/count", file)
         if count is not None and count < 1:
             raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
@@ -726,8 +762,8 @@ def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
     """Reads and validates a scene file, JSON or ``.npz``.
 
     The format (``circledist --help``, and the JSON Schema ``scene.schema.json`` in the package):
-    ``"format": "circledist-scene"``, ``"version": 1``, the shapes (single or batches) and the
-    queries.
+    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need), the shapes (single
+    or batches) and the queries.
 
     Parameters
     ----------
@@ -933,7 +969,7 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
     # The queries as a reader gets them back (JSON's types: lists, floats, string keys).
     queries = json.loads(json.dumps([dict(q) for q in queries]))
     if path.endswith(".json"):
-        data = {"format": FORMAT, "version": VERSION}
+        data = {"format": FORMAT, "version": _file_version(kind for _, kind, _, _ in entries)}
         if description:
             data["description"] = description
         data["shapes"] = []
@@ -951,7 +987,7 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
         payload = text.encode("utf-8")
         _write_atomically(path, lambda f: f.write(payload))
         return
-    arrays = {"format": np.array(FORMAT), "version": np.array(VERSION, dtype=np.int64),
+    arrays = {"format": np.array(FORMAT), "version": np.array(_file_version(e[1] for e in entries), dtype=np.int64),
               "shapes": np.array([e[0] for e in entries], dtype=str)}
     if description:
         arrays["description"] = np.array(description)

@@ -59,6 +59,15 @@ template <class Real> Ball<Real> bounding_ball(const BezierCurve3<Real>& b) {
   }
   return out;
 }
+// An arc (docs/arc.md): up to a half turn it lies in the ball on its chord (every point of the
+// arc sees the chord at an inscribed angle of at least 90 degrees), otherwise in its circle's.
+template <class Real> Ball<Real> bounding_ball(const Arc3<Real>& a) {
+  if (!(a.angle <= pi_v<Real>())) return {a.center, a.radius};
+  const ArcSpan<Real> span(a);
+  const Vec3<Real> p0 = span.world(a.center, a.radius, span.lo()), p1 = span.world(a.center, a.radius, span.hi());
+  // Half the chord, and an ulp of the radius for the rounding of the ends.
+  return {(p0 + p1) / 2, (p1 - p0).norm() / 2 + 4 * std::numeric_limits<Real>::epsilon() * a.radius};
+}
 template <class S> Ball<scalar_t<S>> bounding_ball(const Swept<S>& s) {
   Ball<scalar_t<S>> b = bounding_ball(s.shape);
   b.radius += s.sweep;
@@ -124,6 +133,25 @@ template <class Real> Range<Real> height_range(const BezierCurve3<Real>& b, cons
     r.hi = std::max(r.hi, h);
   }
   return r;
+}
+
+// The range of e . (x - c) + base over an arc's points x, c its center and e a unit vector
+// (docs/arc.md "The arc": the arc is its circle's canonical angles [theta0, theta0 + angle]).
+// Along the circle it is base + R (a cos theta + b sin theta), a = e . U, b = e . V, extreme at
+// atan2(b, a) and half a turn on: the ends and whichever of those two angles fall on the arc.
+template <class Real> Range<Real> arc_range(const Arc3<Real>& arc, const Vec3<Real>& e, Real base) {
+  const ArcSpan<Real> span(arc);
+  const Real a = e.dot(span.frame.u), b = e.dot(span.frame.v);
+  const auto at = [&](Real theta) { return base + arc.radius * (a * std::cos(theta) + b * std::sin(theta)); };
+  Range<Real> r{std::min(at(span.lo()), at(span.hi())), std::max(at(span.lo()), at(span.hi()))};
+  const Real reach = arc.radius * std::hypot(a, b);
+  const Real top = std::atan2(b, a);
+  if (span.holds(top)) r.hi = std::max(r.hi, base + reach);
+  if (span.holds(top + pi_v<Real>())) r.lo = std::min(r.lo, base - reach);
+  return r;
+}
+template <class Real> Range<Real> height_range(const Arc3<Real>& arc, const Plane<Real>& plane) {
+  return arc_range(arc, plane.n, plane.height(arc.center));
 }
 
 // A round is a shape with a target policy (detail/round_target.hpp: a circle or a disk).
@@ -223,6 +251,17 @@ void sample_points(const A& a, const R& round, const Visit& visit) {
     visit(Vec3<Real>(foot + y * e2));
   }
 }
+// An arc: its ends, and its point toward the round's center where that angle falls on the arc.
+template <class Real, class R, class Visit> void sample_points(const Arc3<Real>& a, const R& round, const Visit& visit) {
+  const ArcSpan<Real> span(a);
+  visit(span.world(a.center, a.radius, span.lo()));
+  visit(span.world(a.center, a.radius, span.hi()));
+  const Vec3<Real> q = span.frame.to_local(Vec3<Real>(round.center - a.center));
+  if (q.x() != 0 || q.y() != 0) {
+    const Real toward = std::atan2(q.y(), q.x());
+    if (span.holds(toward)) visit(span.world(a.center, a.radius, toward));
+  }
+}
 template <class Real, class R, class Visit>
 void sample_points(const BezierCurve3<Real>& b, const R&, const Visit& visit) {
   if (b.control.cols() == 0) return;
@@ -299,6 +338,9 @@ template <class Real> Ray3<Real> moved_by(const Ray3<Real>& r, const Vec3<Real>&
 template <class Real> Segment3<Real> moved_by(const Segment3<Real>& s, const Vec3<Real>& o) { return {s.p0 - o, s.p1 - o}; }
 template <class R, class = target_t<R>> R moved_by(const R& round, const Vec3<scalar_t<R>>& o) {
   return {round.center - o, round.normal, round.radius};
+}
+template <class Real> Arc3<Real> moved_by(const Arc3<Real>& a, const Vec3<Real>& o) {
+  return {a.center - o, a.normal, a.radius, a.start, a.angle};
 }
 template <class Real> BezierCurve3<Real> moved_by(const BezierCurve3<Real>& b, const Vec3<Real>& o) {
   BezierCurve3<Real> out = b;

@@ -191,6 +191,17 @@ template <class Real> Volume<Real> volume(const BezierCurve3<Real>& b, Real swee
   const Vec3<Real> lo = b.control.rowwise().minCoeff(), hi = b.control.rowwise().maxCoeff();
   return detail::bounded_volume<Real>(lo, hi, bounding_ball(b), sweep);
 }
+// An arc: its box along each axis is arc_range's (bounds.hpp: the ends and the circle's extremes
+// on the arc), not its whole circle's; the ball is bounding_ball's.
+template <class Real> Volume<Real> volume(const Arc3<Real>& a, Real sweep = 0) {
+  Vec3<Real> lo, hi;
+  for (int k = 0; k < 3; ++k) {
+    const Range<Real> r = arc_range(a, Vec3<Real>(Vec3<Real>::Unit(k)), a.center[k]);
+    lo[k] = r.lo;
+    hi[k] = r.hi;
+  }
+  return detail::bounded_volume<Real>(lo, hi, bounding_ball(a), sweep);
+}
 template <class S> Volume<scalar_t<S>> volume(const Swept<S>& s) { return volume(s.shape, s.sweep); }
 
 // The gap between two boxes (0 when they overlap).

@@ -1,0 +1,660 @@
+"""The Arc kind in Python (issue 19): cd.Arc against every kind that has a query, both argument
+orders, scalar and batched, every solver and precision, against an independent reference.
+
+Reference: 50-digit mpmath (circledist_cases/reference_round.py's helpers, no library code). The
+arc is sampled from its own definition, center + R (cos t u + sin t v), t in [0, angle], u the unit
+projection of `start`, v = n x u; the other shape's distance from the arc's point is a closed form
+written here or there (point, line, ray, segment, circle, disk; another arc: the point-arc closed
+form below, which is itself checked against sampling), and the minimum over t is found by
+minimize_1d (dense samples, golden section on every sampled local minimum).
+
+Accuracy rule (the project's, never loosened): |d - d_ref| <= 1e-12 x max(d_ref, largest radius
+in the query) in double, 1e-15 x in long double; float32 answers within 4 float32 ulps of
+max(d_ref, largest radius) of the exact answer for the float32 inputs (README). Arc-Bezier has no
+query: it raises the library's "no query between" error.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import circledist as cd
+from circledist_cases import reference_round as R
+
+mpf, ctx = R.mpf, R.ctx
+SOLVERS = ("bracketing", "companion", "polished", "eigen")
+OTHER_KINDS = ("point", "line", "ray", "segment", "circle", "disk", "arc")
+TWO_PI = 2 * math.pi
+REL = 1e-12
+REL_LD = 1e-15
+
+
+# ------------------------------------------------------------------------------------------------
+# shapes as plain tuples: (kind, *fields), fields as tuples of floats
+# ------------------------------------------------------------------------------------------------
+def _t(v):
+    return tuple(float(x) for x in v)
+
+
+def arc(center, normal, radius, start, angle):
+    return ("arc", _t(center), _t(normal), float(radius), _t(start), float(angle))
+
+
+def make(shape, dtype=np.float64):
+    kind, *f = shape
+    f = [np.asarray(x, dtype=dtype) for x in f]
+    return {"point": cd.Point, "line": cd.Line, "ray": cd.Ray, "segment": cd.Segment, "circle": cd.Circle,
+            "disk": cd.Disk, "arc": cd.Arc}[kind](*f)
+
+
+def rounded(shape, dtype):
+    """The same shape with every number rounded to dtype (and back to float: exact)."""
+    out = [shape[0]]
+    for f in shape[1:]:
+        out.append(_t(np.asarray(f, dtype=dtype)) if isinstance(f, tuple) else float(np.asarray(f, dtype=dtype)))
+    return tuple(out)
+
+
+def radii(shape):
+    kind = shape[0]
+    return [shape[3]] if kind in ("circle", "disk", "arc") else []
+
+
+# ------------------------------------------------------------------------------------------------
+# the reference (50 digits)
+# ------------------------------------------------------------------------------------------------
+class ArcMP:
+    """An arc at 50 digits: its basis from its own definition (not the library's frame)."""
+
+    def __init__(self, shape):
+        _, c, n, r, s, a = shape
+        self.c, self.r, self.angle = R.vec(c), R.to_mp(r), R.to_mp(a)
+        self.n = R.normalize(R.vec(n))
+        s = R.vec(s)
+        self.u = R.normalize(R.sub(s, R.scale(R.dot(s, self.n), self.n)))
+        self.v = R.cross(self.n, self.u)
+
+    def at(self, t):
+        return R.add(self.c, R.scale(self.r, R.add(R.scale(ctx.cos(t), self.u), R.scale(ctx.sin(t), self.v))))
+
+    def point_distance(self, p):
+        """Closed form (a point's distance along the circle rises with the angular gap from the
+        angle of its projection): the ring's distance where that angle is on the arc, else the
+        nearer end's; on the axis every point is as far."""
+        w = R.sub(p, self.c)
+        z, x, y = R.dot(w, self.n), R.dot(w, self.u), R.dot(w, self.v)
+        rho = ctx.sqrt(x * x + y * y)
+        if rho == 0:
+            return ctx.sqrt(z * z + self.r * self.r)
+        phi = ctx.atan2(y, x)
+        if phi < 0:
+            phi += 2 * ctx.pi
+        if phi <= self.angle:
+            return ctx.sqrt(z * z + (rho - self.r) ** 2)
+        return min(R.dist(p, self.at(mpf(0))), R.dist(p, self.at(self.angle)))
+
+
+def point_distance_function(shape):
+    """x (an mp 3-vector) -> the distance from x to `shape`, in closed form."""
+    kind = shape[0]
+    if kind == "point":
+        p = R.vec(shape[1])
+        return lambda x: R.dist(x, p)
+    if kind in ("line", "ray", "segment"):
+        o, d = R.vec(shape[1]), R.vec(shape[2])
+        return lambda x: R.point_linear_closest(x, kind, o, d)[0]
+    if kind in ("circle", "disk"):
+        rnd = R.make_round(shape[1], shape[2], shape[3])
+        f = R.point_circle if kind == "circle" else R.point_disk
+        return lambda x: f(x, rnd)[0]
+    assert kind == "arc"
+    return ArcMP(shape).point_distance
+
+
+@functools.lru_cache(maxsize=None)
+def reference(a, b, intervals=720):
+    """min over the arc a's angle t of the closed-form distance from a(t) to b."""
+    arc_a = ArcMP(a)
+    other = point_distance_function(b)
+    whole = a[5] >= TWO_PI
+    hi = 2 * ctx.pi if whole else arc_a.angle
+    minima = R.minimize_1d(lambda t: other(arc_a.at(t)), mpf(0), hi, intervals, periodic=whole)
+    return float(minima[0].value)
+
+
+def test_point_arc_closed_form_matches_sampling():
+    """The reference's own point-arc closed form (used against arcs) against dense sampling."""
+    rng = np.random.default_rng(5)
+    for _ in range(6):
+        a = arc(rng.normal(size=3), rng.normal(size=3), rng.uniform(0.3, 2), rng.normal(size=3), rng.uniform(0.3, 6.2))
+        p = R.vec(rng.normal(size=3) * 2)
+        arc_mp = ArcMP(a)
+        sampled = min(R.dist(p, arc_mp.at(arc_mp.angle * k / 20000)) for k in range(20001))
+        closed = arc_mp.point_distance(p)
+        assert closed <= sampled + mpf("1e-40") and sampled - closed < 1e-7 * float(arc_mp.r)
+
+
+# ------------------------------------------------------------------------------------------------
+# cases
+# ------------------------------------------------------------------------------------------------
+def random_shape(kind, rng, box=1.5):
+    at = rng.uniform(-box, box, 3)
+    if kind == "point":
+        return ("point", _t(at))
+    if kind in ("line", "ray"):
+        return (kind, _t(at), _t(rng.normal(size=3)))
+    if kind == "segment":
+        return (kind, _t(at), _t(at + rng.uniform(-2, 2, 3)))
+    if kind in ("circle", "disk"):
+        return (kind, _t(at), _t(rng.normal(size=3)), float(rng.uniform(0.2, 2)))
+    return arc(at, rng.normal(size=3), rng.uniform(0.2, 2), rng.normal(size=3), rng.uniform(0.2, TWO_PI))
+
+
+def random_cases(kind, n, seed):
+    rng = np.random.default_rng([seed, OTHER_KINDS.index(kind)])
+    return [(random_shape("arc", rng), random_shape(kind, rng)) for _ in range(n)]
+
+
+Z, X, Y, O = (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 0.0)
+QUARTER = arc(O, Z, 1.0, X, math.pi / 2)  # from (1, 0, 0) to (0, 1, 0)
+
+
+def translated(shape, by):
+    kind, *f = shape
+    moved = {"point": (0,), "line": (0,), "ray": (0,), "segment": (0, 1), "circle": (0,), "disk": (0,), "arc": (0,)}[kind]
+    return (kind, *[tuple(x + y for x, y in zip(v, by)) if i in moved else v for i, v in enumerate(f)])
+
+
+# (name, arc, other, exact distance or None, unique: True / False / None)
+HARD = [
+    # tangent ends: a line touching the circle at the arc's start / end, or just missing it
+    ("line-tangent-at-start", QUARTER, ("line", (1.0, -5.0, 0.0), Y), 0.0, None),
+    ("line-tangent-at-end", QUARTER, ("line", (-5.0, 1.0, 0.0), X), 0.0, None),
+    ("line-tangent-at-end-1e-9-above", QUARTER, ("line", (-5.0, 1.0, 1e-9), X), 1e-9, True),
+    ("line-tangent-off-the-arc", QUARTER, ("line", (-5.0, -1.0, 0.0), X), 1.0, True),  # at the start
+    ("segment-tangent-at-start", QUARTER, ("segment", (1.0, -2.0, 0.0), (1.0, 0.0, 0.0)), 0.0, None),
+    ("circle-tangent-at-end", QUARTER, ("circle", (0.0, 2.0, 0.0), Z, 1.0), 0.0, None),
+    ("disk-tangent-at-start", QUARTER, ("disk", (1.0, 0.0, 1.0), X, 1.0), 0.0, None),
+    ("arc-tangent-at-ends", QUARTER, arc((0.0, 2.0, 0.0), Z, 1.0, (0.0, -1.0, 0.0), 1.0), 0.0, None),
+    # arc ends on the other shape's axis
+    ("circle-axis-through-start", QUARTER, ("circle", (1.0, 0.0, 2.0), Z, 0.5), None, None),
+    ("disk-axis-through-end", QUARTER, ("disk", (0.0, 1.0, -1.5), Z, 0.3), 1.5, False),  # over the disk
+    ("arc-axis-through-start", QUARTER, arc((1.0, 0.0, 2.0), Z, 0.5, X, 2.0), None, None),
+    ("line-along-the-axis", QUARTER, ("line", (0.0, 0.0, 3.0), Z), 1.0, False),
+    ("point-on-the-axis", QUARTER, ("point", (0.0, 0.0, 0.75)), 1.25, False),
+    # concentric coplanar continua
+    ("concentric-coplanar-circle", QUARTER, ("circle", O, Z, 2.0), 1.0, False),
+    ("concentric-coplanar-arcs-overlapping", QUARTER, arc(O, Z, 1.5, (1.0, 1.0, 0.0), 1.0), 0.5, False),
+    ("inside-a-coplanar-disk", QUARTER, ("disk", (0.2, 0.1, 0.0), Z, 3.0), 0.0, False),
+    ("coaxial-circle-above", QUARTER, ("circle", (0.0, 0.0, 0.5), Z, 1.0), 0.5, False),
+    # an arc that misses the other's near side: the ends decide
+    ("point-beyond-the-ends", QUARTER, ("point", (-2.0, -0.5, 0.0)), None, None),
+    ("arc-arc-ends", QUARTER, arc((-1.0, -1.0, 0.3), Z, 0.5, (-1.0, 0.0, 0.0), 1.0), None, None),
+    # extreme radius ratios
+    ("tiny-arc-big-circle", arc((0.3, 0.2, 0.1), (0.3, 1.0, 0.2), 1e-6, X, 2.0), ("circle", O, Z, 1.0), None, None),
+    ("big-arc-small-disk", arc(O, (0.1, 0.2, 1.0), 1e4, X, 0.5), ("disk", (9990.0, 300.0, 2.0), Y, 0.01), None, None),
+    ("big-arc-small-circle", arc(O, Z, 1e3, X, 1.0), ("circle", (995.0, 5.0, 0.5), (0.2, 0.1, 1.0), 1e-3),
+     None, None),
+    ("small-arc-segment", arc((0.5, 0.5, 0.5), (1.0, 1.0, 0.0), 1e-5, Z, 3.0), ("segment", O, (1.0, 1.0, 1.0)),
+     None, None),
+]
+# Translated by 1e6 and 1e8: every random kind and a few of the hard ones.
+FAR = []
+for _shift in (1e6, 1e8):
+    _by = (_shift, -0.5 * _shift, 0.25 * _shift)
+    for _kind in OTHER_KINDS:
+        for _i, (_a, _b) in enumerate(random_cases(_kind, 2, 11)):
+            FAR.append((f"{_kind}-{_i}-translated-{_shift:g}", translated(_a, _by), translated(_b, _by), None, None))
+    for _name, _a, _b, _exact, _unique in HARD[:8]:
+        FAR.append((f"{_name}-translated-{_shift:g}", translated(_a, _by), translated(_b, _by), None, None))
+
+
+def check(a, b, d, scale_rel=REL, ref=None):
+    ref = reference(a, b) if ref is None else ref
+    scale = max([ref] + radii(a) + radii(b))
+    assert abs(float(d) - ref) <= scale_rel * scale, (float(d), ref, abs(float(d) - ref) / scale)
+    return ref
+
+
+def check_closest(a, b, r, ref):
+    """closest_points: the distance is distance()'s, the points lie on their shapes, apart by the
+    distance, and the arc's parameter t gives its point."""
+    pa, pb = np.asarray(r.point_a, float), np.asarray(r.point_b, float)
+    # Points are world coordinates: they carry the rounding of their coordinates (1.5e-8 at 1e8).
+    tol = 1e-9 * max([ref] + radii(a) + radii(b)) + 16 * np.finfo(float).eps * float(np.abs([pa, pb]).max())
+    assert abs(float(np.linalg.norm(pa - pb)) - ref) <= tol
+    arc_mp = ArcMP(a)
+    assert float(arc_mp.point_distance(R.vec(pa))) <= tol
+    assert float(point_distance_function(b)(R.vec(pb))) <= tol
+    t = float(r.param_a[0])
+    assert 0 <= t <= a[5] + 1e-15 and r.param_a[1] == 0
+    assert float(R.dist(arc_mp.at(R.to_mp(t)), R.vec(pa))) <= tol
+
+
+def both_orders(a, b, **kw):
+    x, y = make(a), make(b)
+    d_ab, d_ba = cd.distance(x, y, **kw), cd.distance(y, x, **kw)
+    assert d_ab == d_ba  # one compiled query serves both orders, to the bit
+    r_ab, r_ba = cd.closest_points(x, y, **kw), cd.closest_points(y, x, **kw)
+    assert r_ab.distance == d_ab and r_ba.distance == d_ba
+    assert np.array_equal(r_ab.point_a, r_ba.point_b) and np.array_equal(r_ab.param_a, r_ba.param_b)
+    assert r_ab.unique == r_ba.unique
+    return d_ab, r_ab
+
+
+# ------------------------------------------------------------------------------------------------
+# accuracy: random and hard cases, both orders
+# ------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("kind", OTHER_KINDS)
+def test_random_against_the_reference(kind):
+    for a, b in random_cases(kind, 10, 1):
+        d, r = both_orders(a, b)
+        ref = check(a, b, d)
+        check_closest(a, b, r, ref)
+
+
+@pytest.mark.parametrize("case", HARD + FAR, ids=lambda c: c[0])
+def test_hard_cases(case):
+    name, a, b, exact, unique = case
+    d, r = both_orders(a, b)
+    ref = check(a, b, d)
+    if exact is not None:
+        scale = max([exact] + radii(a) + radii(b))
+        assert abs(ref - exact) <= 1e-14 * scale  # the reference agrees with the analytic answer
+        assert abs(d - exact) <= REL * scale
+    check_closest(a, b, r, ref)
+    if unique is not None:
+        assert bool(r.unique) is unique, name
+
+
+@pytest.mark.parametrize("kind", OTHER_KINDS)
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_every_solver(kind, solver):
+    for a, b in random_cases(kind, 4, 2) + [c[1:3] for c in HARD if c[2][0] == kind]:
+        d, _ = both_orders(a, b, solver=solver)
+        check(a, b, d)
+
+
+@pytest.mark.parametrize("kind", OTHER_KINDS)
+def test_long_double(kind):
+    """precision='longdouble' on float64 inputs (which it reads exactly): the bar is 1e-15."""
+    for a, b in random_cases(kind, 4, 3) + [c[1:3] for c in HARD if c[2][0] == kind]:
+        for solver in SOLVERS:
+            d, _ = both_orders(a, b, precision="longdouble", solver=solver)
+            assert isinstance(d, np.longdouble)
+            ref = reference(a, b)
+            scale = max([ref] + radii(a) + radii(b))
+            assert abs(float(d - np.longdouble(ref))) <= REL_LD * scale, (a, b, float(d), ref)
+
+
+@pytest.mark.parametrize("kind", OTHER_KINDS)
+def test_float32(kind):
+    """float32 inputs give float32 answers within 4 float32 ulps of max(d, radius) of the exact
+    answer for the float32 inputs."""
+    for a, b in random_cases(kind, 4, 4):
+        a32, b32 = rounded(a, np.float32), rounded(b, np.float32)
+        x, y = make(a, np.float32), make(b, np.float32)
+        d = cd.distance(x, y)  # a single float32 answer comes back as a Python float of a float32
+        assert float(np.float32(d)) == d and cd.distance(y, x) == d
+        ref = reference(a32, b32)
+        scale = max([ref] + radii(a32) + radii(b32))
+        assert abs(float(d) - ref) <= 4 * float(np.spacing(np.float32(scale))), (float(d), ref)
+
+
+# ------------------------------------------------------------------------------------------------
+# the whole circle: angle 2 pi answers as the circle, bit for bit
+# ------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("kind", OTHER_KINDS)
+def test_angle_two_pi_is_the_circle_bit_for_bit(kind):
+    for a, b in random_cases(kind, 6, 6) + [(QUARTER, c[2]) for c in HARD if c[2][0] == kind]:
+        whole = a[:5] + (TWO_PI,)
+        circle = ("circle",) + a[1:4]
+        if b[0] == "arc":
+            continue  # arc-arc: against the circle's arc-circle answer below
+        for precision in ("float64", "longdouble"):
+            x, c, y = make(whole), make(circle), make(b)
+            assert cd.distance(x, y, precision=precision) == cd.distance(c, y, precision=precision)
+            rx, rc = cd.closest_points(x, y, precision=precision), cd.closest_points(c, y, precision=precision)
+            assert rx.distance == rc.distance and np.array_equal(rx.point_a, rc.point_a)
+            assert np.array_equal(rx.point_b, rc.point_b) and rx.unique == rc.unique
+    # an arc against a whole arc: the arc against the circle
+    for a, b in random_cases("arc", 6, 7):
+        whole = b[:5] + (TWO_PI,)
+        circle = ("circle",) + b[1:4]
+        assert cd.distance(make(a), make(whole)) == cd.distance(make(a), make(circle))
+
+
+def test_angle_two_pi_given_as_float64_is_whole_in_long_double():
+    """float64's 2 pi is 2.4e-16 below long double's: it still means the whole circle."""
+    a = arc((0.1, 0.2, 0.3), (0.3, -0.2, 1.0), 1.3, (1.0, 2.0, 0.5), TWO_PI)
+    for b in [("point", (2.0, 1.0, 0.5)), ("line", (0.0, -3.0, 0.2), (1.0, 1.0, 0.1)), ("disk", O, Y, 0.8)]:
+        c = ("circle",) + a[1:4]
+        ld = dict(precision="longdouble")
+        assert cd.distance(make(a), make(b), **ld) == cd.distance(make(c), make(b), **ld)
+
+
+# ------------------------------------------------------------------------------------------------
+# batches: scalar == batched, broadcasting, dtypes
+# ------------------------------------------------------------------------------------------------
+def batch_of(shapes, dtype=np.float64):
+    kind = shapes[0][0]
+    fields = list(zip(*[s[1:] for s in shapes]))
+    return make((kind, *[np.asarray(f, dtype=dtype) for f in fields]), dtype)
+
+
+@pytest.mark.parametrize("kind", OTHER_KINDS)
+def test_batched_equals_scalar_and_broadcasts(kind):
+    cases = random_cases(kind, 12, 8)
+    arcs, others = batch_of([a for a, _ in cases]), batch_of([b for _, b in cases])
+    for precision in ("float64", "longdouble"):
+        d = cd.distance(arcs, others, precision=precision)
+        d_rev = cd.distance(others, arcs, precision=precision)
+        r = cd.closest_points(arcs, others, precision=precision)
+        assert d.shape == (12,) and np.array_equal(d, d_rev) and np.array_equal(r.distance, d)
+        for i, (a, b) in enumerate(cases):
+            assert d[i] == cd.distance(make(a), make(b), precision=precision)
+            single = cd.closest_points(make(a), make(b), precision=precision)
+            assert np.array_equal(r.point_a[i], single.point_a) and np.array_equal(r.param_a[i], single.param_a)
+            assert np.array_equal(r.point_b[i], single.point_b) and r.unique[i] == single.unique
+    # (N, 1) against (M,): an N x M matrix of the single answers
+    column = cd.Arc.from_arrays({k: np.expand_dims(v, 1) if v.ndim > (1 if k in ("center", "normal", "start") else 0)
+                                 else v for k, v in arcs[:5].to_arrays().items()})
+    m = cd.distance(column, others[:7])
+    assert m.shape == (5, 7)
+    for i in range(5):
+        for j in range(7):
+            assert m[i, j] == cd.distance(arcs[i], others[j])
+    # one arc against the batch; fields broadcast within the arc (one angle for all)
+    one = cd.Arc([0, 0, 0], [0, 0, 1], [0.5, 1.0, 1.5], [1, 0, 0], 2.0)
+    assert one.batch_shape == (3,)
+    d = cd.distance(one, others[:3])
+    for i in range(3):
+        assert d[i] == cd.distance(cd.Arc([0, 0, 0], [0, 0, 1], [0.5, 1.0, 1.5][i], [1, 0, 0], 2.0), others[i])
+
+
+def test_precision_follows_the_dtypes():
+    a32 = cd.Arc(np.float32([0, 0, 0]), np.float32([0, 0, 1]), np.float32(1), np.float32([1, 0, 0]), np.float32(2))
+    assert cd.distance(a32, np.float32([[2, 0, 0]])).dtype == np.float32
+    ald = cd.Arc([0, 0, 0], [0, 0, 1], np.longdouble(1), [1, 0, 0], 2.0)
+    assert isinstance(cd.distance(ald, [2, 0, 0]), np.longdouble)
+    assert isinstance(cd.distance(cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], 2.0), [2, 0, 0]), float)
+    # float32's rounding of 2 pi (just above 2 pi) is 2 pi given as float32: the whole circle
+    whole32 = cd.Arc(np.float32([0, 0, 0]), np.float32([0, 0, 1]), np.float32(1), np.float32([1, 0, 0]),
+                     np.float32(TWO_PI))
+    assert cd.distance(whole32, np.float32([-2, 0, 0])) == 1.0
+
+
+def test_arc_bezier_has_no_query():
+    a, b = make(QUARTER), cd.Bezier([[0, 0, 0], [1, 1, 1], [2, 0, 0]])
+    for x, y, first, second in ((a, b, "Arc", "Bezier"), (b, a, "Bezier", "Arc")):
+        with pytest.raises(TypeError, match=f"no query between a {first} and a {second}"):
+            cd.distance(x, y)
+        with pytest.raises(TypeError, match="no query"):
+            cd.closest_points(x, y)
+        with pytest.raises(TypeError, match="no query"):
+            cd.within(x, y, 1.0)
+
+
+# ------------------------------------------------------------------------------------------------
+# bad input: the argument and the index named
+# ------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("args,message", [
+    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], 0.0), r"Arc: angle must be in \(0, 2 pi\], got 0"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, -0.5]), r"Arc: angle\[1\] must be in \(0, 2 pi\], got -0.5"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, 2.0, 7.0]), r"Arc: angle\[2\] must be in \(0, 2 pi\]"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], TWO_PI * (1 + 1e-15)), r"Arc: angle must be in \(0, 2 pi\]"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, np.nan]), r"Arc: angle\[1\] contains NaN or inf"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [[1, 0, 0], [0, 0, -3]], 1.0), r"Arc: start\[1\] is parallel to normal\[1\]"),
+    (([0, 0, 0], [[0, 0, 1], [0, 1, 0]], 1.0, [0, 2, 0], 1.0), r"Arc: start\[1\] is parallel to normal\[1\]"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [0, 0, 0], 1.0), r"Arc: start has zero length"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [1, np.inf, 0], 1.0), r"Arc: start contains NaN or inf"),
+    (([0, 0, 0], [0, 0, 1], -1.0, [1, 0, 0], 1.0), r"Arc: radius is negative"),
+    (([0, 0, 0], [0, 0, 0], 1.0, [1, 0, 0], 1.0), r"Arc: normal has zero length"),
+    (([0, 0, np.nan], [0, 0, 1], 1.0, [1, 0, 0], 1.0), r"Arc: center contains NaN or inf"),
+    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [[1.0], [2.0]]), None),  # fine: broadcasts
+    (([0, 0, 0], [0, 0, 1], [1.0, 2.0], [1, 0, 0], [1.0, 2.0, 3.0]), r"does not broadcast"),
+])
+def test_bad_input_names_the_argument_and_index(args, message):
+    if message is None:
+        assert cd.Arc(*args).batch_shape == (2, 1)
+        return
+    with pytest.raises(ValueError, match=message):
+        cd.Arc(*args)
+
+
+def test_angle_two_pi_and_tiny_angles_are_accepted():
+    cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], TWO_PI)
+    cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], 1e-300)
+    cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 1e-12, 1], 1.0)  # nearly along the normal is still an arc
+
+
+# ------------------------------------------------------------------------------------------------
+# values: pickle, to_arrays, indexing, sweeps
+# ------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("dtype", [np.float32, np.float64, np.longdouble])
+def test_pickle_to_arrays_and_indexing_keep_values_and_dtypes(dtype):
+    cases = random_cases("circle", 4, 9)
+    arcs = batch_of([a for a, _ in cases], dtype)
+    swept = cd.Arc.from_arrays({**arcs.to_arrays(), "sweep": np.asarray([0.1, 0.0, 0.2, 0.3], dtype)})
+    for shape in (arcs, swept, arcs[2]):
+        back = pickle.loads(pickle.dumps(shape))
+        assert type(back) is cd.Arc and back.kind == "Arc" and back.batch_shape == shape.batch_shape
+        for name, value in shape.to_arrays().items():
+            got = back.to_arrays()[name]
+            assert got.dtype == value.dtype and np.array_equal(got, value), name
+    assert list(arcs.to_arrays()) == ["center", "normal", "radius", "start", "angle"]
+    assert arcs.to_arrays()["angle"].dtype == dtype
+    other = make(cases[0][1])
+    d = cd.distance(arcs, other)
+    for i in range(4):
+        assert cd.distance(arcs[i], other) == d[i]
+    assert np.array_equal(cd.distance(arcs[[3, 1]], other), d[[3, 1]])
+    assert len(arcs) == 4 and [x.batch_shape for x in arcs] == [()] * 4
+    assert repr(arcs[0]).startswith("Arc(center=")
+
+
+def test_sweep_grows_the_arc():
+    a = cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], math.pi / 2, sweep=0.25)
+    assert cd.distance(a, [0, 0, 3]) == pytest.approx(math.sqrt(10) - 0.25, abs=1e-14)
+    assert cd.distance(a, [-3, 0, 0]) == pytest.approx(math.sqrt(10) - 0.25, abs=1e-14)
+
+
+# ------------------------------------------------------------------------------------------------
+# effects and Scene with arcs among other shapes, against brute force
+# ------------------------------------------------------------------------------------------------
+def mixed_shapes(seed, n=6):
+    rng = np.random.default_rng(seed)
+    out = {}
+    for kind in OTHER_KINDS:
+        for i in range(n):
+            out[f"{kind}{i}"] = make(random_shape(kind, rng, box=3.0))
+    return out
+
+
+def test_effects_on_arcs_agree_with_distance():
+    shapes = mixed_shapes(12)
+    arcs = [s for name, s in shapes.items() if name.startswith("arc")]
+    for a in arcs:
+        for b in shapes.values():
+            d = cd.distance(a, b)
+            for limit in (0.0, 0.3, 1.0, 2.5):
+                tol = 64 * np.finfo(float).eps * 10
+                if abs(d - limit) > 1e-9:
+                    assert cd.within(a, b, limit) == (d <= limit + tol)
+                    assert cd.within(b, a, limit) == (d <= limit + tol)
+                    got = cd.distance_if_within(a, b, limit)
+                    assert got == (d if d <= limit else np.inf)
+            if d > 1e-9:
+                assert not cd.intersects(a, b)
+            elif d == 0:
+                assert cd.intersects(a, b)
+    # touching: an arc through a disk, an arc ending on a line
+    assert cd.intersects(make(QUARTER), cd.Disk([0.7, 0.7, 0], [1, 1, 0], 0.5))
+    assert cd.intersects(make(QUARTER), cd.Line([1, -5, 0], [0, 1, 0]))
+    assert not cd.intersects(make(QUARTER), cd.Circle([-1, -1, 0], [0, 0, 1], 0.5))
+    # batched effects equal single ones
+    cases = random_cases("disk", 8, 13)
+    arcs_b, disks = batch_of([a for a, _ in cases]), batch_of([b for _, b in cases])
+    flags = cd.within(arcs_b, disks, 0.5)
+    for i in range(8):
+        assert flags[i] == cd.within(arcs_b[i], disks[i], 0.5)
+
+
+def test_scene_queries_with_arcs_equal_brute_force():
+    shapes = mixed_shapes(14)
+    scene = cd.Scene(shapes)
+    names = list(shapes)
+    for probe in (cd.Arc([0.5, -0.5, 0.2], [0.3, 0.2, 1.0], 1.5, [1, 0, 0], 4.0), "arc2", "circle1", [0.5, 0.5, 0.5]):
+        shape = shapes[probe] if isinstance(probe, str) else probe
+        others = [n for n in names if n != probe]
+        order = sorted(((cd.distance(shape, shapes[n]), names.index(n)) for n in others))
+        assert scene.nearest(probe, k=6) == [(names[i], d) for d, i in order[:6]]
+        assert scene.within(probe, 1.0) == [n for n in others if cd.within(shape, shapes[n], 1.0)]
+    for d in (0.0, 0.5, 1.5):
+        brute = [(x, y) for i, x in enumerate(names) for y in names[i + 1:] if cd.within(shapes[x], shapes[y], d)]
+        assert scene.pairs_within(d) == brute
+        assert any("arc" in x + y for x, y in brute) or d == 0.0
+
+
+def test_broadphase_boxes_hold_the_arcs():
+    """The broadphase's box of an arc is tight (its ends and the circle's extremes on it), not the
+    circle's: points on the arcs, and points just off them, must all be found by pairs_within and
+    nearest exactly as brute force finds them (a box missing part of its arc would lose pairs)."""
+    rng = np.random.default_rng(21)
+    n = 300
+    centers = rng.uniform(-20, 20, (n, 3))
+    normals, starts = rng.normal(size=(n, 3)), rng.normal(size=(n, 3))
+    radii_, angles = rng.uniform(0.5, 3, n), rng.uniform(0.05, TWO_PI, n)
+    arcs = cd.Arc(centers, normals, radii_, starts, angles)
+    # a point on each arc at a random t (from the arc's own u, v), and one 1e-3 off it
+    nn = normals / np.linalg.norm(normals, axis=1, keepdims=True)
+    u = starts - np.sum(starts * nn, axis=1, keepdims=True) * nn
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    v = np.cross(nn, u)
+    t = rng.uniform(0, 1, n) * angles
+    on = centers + radii_[:, None] * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+    points = cd.Point(np.concatenate([on, on + 1e-3 * rng.normal(size=(n, 3))]))
+    i, j, d = cd.pairs_within(arcs, points, 0.01)
+    dist = cd.distance(cd.Arc.from_arrays({k: a[:, None] for k, a in arcs.to_arrays().items()}), points)
+    want_i, want_j = np.nonzero(dist <= 0.01)
+    assert np.array_equal(i, want_i) and np.array_equal(j, want_j) and np.array_equal(d, dist[want_i, want_j])
+    assert {(k, k) for k in range(n)} <= set(zip(i.tolist(), j.tolist()))
+    idx, nd = cd.nearest(points, arcs, k=2)
+    order = np.argsort(dist.T, axis=1, kind="stable")[:, :2]
+    assert np.array_equal(nd, np.take_along_axis(dist.T, order, axis=1))
+
+
+# ------------------------------------------------------------------------------------------------
+# scene files and the command line
+# ------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("suffix", [".json", ".npz"])
+def test_scene_file_round_trip_and_version(tmp_path, suffix):
+    """Arcs (single, batched, float32 and swept) write and read back to the bit; a file holding an
+    arc is format version 2, one without stays version 1 (older readers read it), and an arc in a
+    version 1 file is refused."""
+    import json
+
+    sf = cd.scenefile
+    cases = random_cases("disk", 3, 17)
+    shapes = {"hook": make(QUARTER), "hooks": batch_of([a for a, _ in cases]),
+              "bent": cd.Arc([0, 0, 1], [0, 1, 1], 0.5, [1, 0, 0], 5.0, sweep=0.1),
+              "coin": make(cases[0][1])}
+    queries = [{"a": "hook", "b": "coin", "effects": ["distance", "closest_points"]},
+               {"a": "hooks[1]", "effects": ["nearest"], "k": 2}]
+    path = tmp_path / f"arcs{suffix}"
+    cd.write_scene(path, shapes, queries)
+    back = cd.read_scene(str(path))
+    for name, shape in shapes.items():
+        got, want = back.shapes[name].to_arrays(), shape.to_arrays()
+        assert [k for k in got if k != "sweep"] == [k for k in want if k != "sweep"]
+        assert not np.any(got.get("sweep", 0) != want.get("sweep", 0))
+        for field in want:
+            assert np.array_equal(got[field], np.broadcast_to(want[field], got[field].shape)), (name, field)
+        assert np.array_equal(cd.distance(back.shapes[name], shapes["coin"]), cd.distance(shape, shapes["coin"]))
+    if suffix == ".json":
+        data = json.loads(path.read_text())
+        assert data["version"] == 2
+        data["version"] = 1
+        with pytest.raises(cd.SceneFileError, match=r"\$\.shapes\[0\]\.kind \(shape 'hook'\): kind 'arc' needs "
+                                                   r"format version 2 or later, the file says version 1"):
+            sf.scene_from_json(data, "old.json")
+    else:
+        with np.load(path) as npz:
+            arrays = dict(npz)
+        assert int(arrays["version"]) == 2
+        np.savez(tmp_path / "old.npz", **{**arrays, "version": np.array(1)})
+        with pytest.raises(cd.SceneFileError, match="array 'hook/kind': kind 'arc' needs format version 2"):
+            cd.read_scene(str(tmp_path / "old.npz"))
+    plain = tmp_path / f"plain{suffix}"
+    cd.write_scene(plain, {"coin": shapes["coin"]})
+    if suffix == ".json":
+        assert json.loads(plain.read_text())["version"] == 1
+    else:
+        with np.load(plain) as npz:
+            assert int(npz["version"]) == 1
+
+
+def test_command_line_answers_and_draws_an_arc(tmp_path):
+    import importlib.util
+    import json
+
+    from circledist import cli
+
+    doc = {"format": "circledist-scene", "version": 2, "shapes": [
+        {"name": "hook", "kind": "arc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1, "start": [1, 0, 0],
+         "angle": 1.5707963267948966},
+        {"name": "rail", "kind": "line", "origin": [-5, -1, 0], "direction": [1, 0, 0]}],
+        "queries": [{"a": "hook", "b": "rail", "effects": ["distance", "closest_points"]}]}
+    path, answers = tmp_path / "arc.json", tmp_path / "answers.json"
+    path.write_text(json.dumps(doc))
+    argv = [str(path), "--json", str(answers)]
+    picture = tmp_path / "arc.png"
+    if importlib.util.find_spec("matplotlib") is not None:
+        argv += ["--plot", str(picture)]
+    assert cli.main(argv) == 0
+    got = json.loads(answers.read_text())["answers"][0]
+    assert got["distance"] == 1.0  # the start (1, 0, 0) above the line y = -1
+    assert got["closest_points"]["point_b"] == [1.0, -1.0, 0.0]
+    if importlib.util.find_spec("matplotlib") is not None:
+        assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_scene_with_arcs_and_bezier_curves_raises_for_that_pair():
+    """Arc-Bezier has no query: a Scene holding both answers the other kinds and raises the
+    library's "no query between" error where the pair is asked."""
+    s = cd.Scene({"hook": make(QUARTER), "cable": cd.Bezier([[0, 0, 0], [1, 1, 1]]),
+                  "ring": cd.Circle([0, 0, 0], [0, 0, 1], 2.0)})
+    assert s.nearest("ring", k=1) == [("hook", 1.0)]
+    with pytest.raises(TypeError, match="no query between a Arc and a Bezier"):
+        s.nearest("hook")
+    with pytest.raises(TypeError, match="no query between a Arc and a Bezier"):
+        s.pairs_within(1.0)
+
+
+def test_bounds_decide_separated_arc_pairs_without_a_solve():
+    """within() against circles and disks tries the bounds first (bounds.hpp: the arc's ball, its
+    height range over the round's plane, points on it): arcs far from a ring, or lying across a
+    disk, are decided with no polynomial solved."""
+    rng = np.random.default_rng(30)
+    n = 200
+    far = cd.Arc(rng.uniform(-1, 1, (n, 3)) + [0, 0, 10], rng.normal(size=(n, 3)), rng.uniform(0.2, 1, n),
+                 rng.normal(size=(n, 3)), rng.uniform(0.3, 6, n))
+    for target in (cd.Circle([0, 0, 0], [0, 0, 1], 1.0), cd.Disk([0, 0, 0], [0, 0, 1], 1.0)):
+        cd.reset_stats()
+        assert not np.any(cd.within(far, target, 1.0))
+        s = cd.stats()
+        assert s["decided_by_bounds"] == n and s["solves"] == 0, s
+    # a quarter arc over a disk's plane, just above it: the height range decides "no" at d = 0
+    above = cd.Arc([0, 0, 0.5], [0, 0, 1], 0.5, [1, 0, 0], 1.0)
+    cd.reset_stats()
+    assert not cd.intersects(above, cd.Disk([0, 0, 0], [0, 0, 1], 1.0))
+    assert cd.stats()["decided_by_bounds"] == 1
+    # an arc through a disk: its end points lie on both sides, a point on it inside: "yes" by bounds
+    through = cd.Arc([0, 0, 0], [1, 0, 0], 0.5, [0, 0, 1], np.pi)
+    cd.reset_stats()
+    assert cd.within(through, cd.Disk([0, 0, 0], [0, 0, 1], 1.0), 0.0)
