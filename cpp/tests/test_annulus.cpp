@@ -437,6 +437,33 @@ void annulus_annulus_tests() {
   }
 }
 
+// Random shapes in the annulus's plane, and tilted out of it by 1e-9 and 1e-5 about a random
+// in-plane axis (coplanar overlaps, circles and disks in the hole or across a rim).
+void coplanar_tests() {
+  Draw d(37);
+  for (int i = 0; i < int(40 * ANNULUS_RANDOM_SCALE) + 6; ++i) {
+    const Annulus a = d.annulus();
+    const Frame<double> f(a.normal);
+    const double tilt = i % 3 == 0 ? 0.0 : i % 3 == 1 ? 1e-9 : 1e-5;
+    const double phi = 6.283185307179586 * d.uniform(d.rng);
+    const V3d axis = std::cos(phi) * f.u + std::sin(phi) * f.v;
+    const V3d n = std::cos(tilt) * f.n + std::sin(tilt) * axis.cross(f.n);
+    const auto in_plane = [&](double spread) {
+      return V3d(a.center + spread * a.outer_radius * (d.normal(d.rng) * f.u + d.normal(d.rng) * f.v));
+    };
+    const Circle c{in_plane(1), n, a.outer_radius * (0.1 + d.uniform(d.rng))};
+    annulus_case("coplanar circle-annulus", "random", c, a, ref_circle_annulus(c, a));
+    const Disk x{in_plane(1), n, a.outer_radius * (0.1 + d.uniform(d.rng))};
+    annulus_case("coplanar disk-annulus", "random", x, a, ref_disk_annulus(x, a));
+    const double ro = a.outer_radius * (0.1 + d.uniform(d.rng));
+    const Annulus b{in_plane(1), n, ro * d.uniform(d.rng), ro};
+    annulus_case("coplanar annulus-annulus", "random", b, a, ref_annulus_annulus(b, a));
+    const V3d p0 = in_plane(1), p1 = in_plane(1);
+    const Segment s{p0, p1 + tilt * a.outer_radius * f.n};
+    annulus_case("coplanar segment-annulus", "random", s, a, ref_piece_annulus(s, a));
+  }
+}
+
 // The eigenvalue root policies on random scenes of the polynomial families.
 void policy_tests() {
   Draw d(29);
@@ -489,7 +516,9 @@ void precision_tests() {
 Disk as_disk(const Annulus& a) { return {a.center, a.normal, a.outer_radius}; }
 template <class X> const X& as_disk(const X& x) { return x; }
 
-// The cost against the disk counterpart: one loop of distance() over random pairs each.
+// The cost against the disk counterpart: one loop of distance() over 2000 random pairs each,
+// the annulus's and the disk's loops alternated 9 times and the fastest of each kept (the
+// machine is shared: the minimum is the least disturbed run).
 template <class X, class Make> void time_pair(const char* name, const Make& make) {
   Draw d(31);
   std::vector<X> xs;
@@ -499,19 +528,22 @@ template <class X, class Make> void time_pair(const char* name, const Make& make
     xs.push_back(make(d, a));
     as.push_back(a);
   }
+  double sum = 0;
   const auto run = [&](bool ring) {
     const auto t0 = std::chrono::steady_clock::now();
-    double sum = 0;
-    for (int rep = 0; rep < 5; ++rep)
-      for (size_t i = 0; i < xs.size(); ++i) {
-        if (ring) sum += distance(xs[i], as[i]);
-        else sum += distance(as_disk(xs[i]), Disk{as[i].center, as[i].normal, as[i].outer_radius});
-      }
-    const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / (5 * xs.size());
-    return std::make_pair(ns, sum);
+    for (size_t i = 0; i < xs.size(); ++i) {
+      if (ring) sum += distance(xs[i], as[i]);
+      else sum += distance(as_disk(xs[i]), Disk{as[i].center, as[i].normal, as[i].outer_radius});
+    }
+    return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / xs.size();
   };
-  const auto disk = run(false), ring = run(true);
-  std::printf("  cost, %s: annulus %.0f ns, disk %.0f ns a distance() (x%.2f)\n", name, ring.first, disk.first, ring.first / disk.first);
+  double disk = 1e300, ring = 1e300;
+  for (int rep = 0; rep < 9; ++rep) {
+    disk = std::min(disk, run(false));
+    ring = std::min(ring, run(true));
+  }
+  std::printf("  cost, %s: annulus %.0f ns, disk %.0f ns a distance() (x%.2f)%s\n", name, ring, disk, ring / disk,
+              sum == 0.5 ? " " : "");
 }
 
 }  // namespace
@@ -525,6 +557,7 @@ int main(int argc, char** argv) {
   circle_tests();
   disk_tests();
   annulus_annulus_tests();
+  coplanar_tests();
   policy_tests();
   precision_tests();
   for (const auto& [kind, n] : counts) std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);

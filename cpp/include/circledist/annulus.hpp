@@ -11,9 +11,10 @@
 //  - a circle (not convex): the least of the interior candidates (circle-disk's height
 //    candidates, z = 0 or z' = 0, kept where their projection lies in the ring) and the circle
 //    against both rims (circle-circle) (docs/annulus.md, "A circle");
-//  - an annulus against an annulus: the least of each rim against the other annulus (the
-//    circle reduction), since a closest pair has a point on a rim, and a common part has its
-//    ends on rims (docs/annulus.md, "Two annuli").
+//  - an annulus against an annulus: the outer disks' closest pair where it lies in both rings,
+//    else the least of each rim against the other annulus (the circle reduction), since a
+//    closest pair has a point on a rim, and a common part has its ends on rims
+//    (docs/annulus.md, "Two annuli").
 // An inner radius of 0 (or less) is the disk, an inner radius equal to the outer one the circle:
 // their own queries answer, to the bit (the annulus's parameter (s, theta) being the disk's, or
 // (R, theta) for the circle's (theta, 0)).
@@ -140,21 +141,34 @@ template <class Real> struct CircleAnnulusCandidates {
 
 // The interior candidates: the circle's points where its height over the plane has z = 0 or
 // z' = 0 (and t = 0, pi), circle-disk's height candidates (circle_disk.hpp), kept where their
-// projection lies in the ring; there the annulus distance is |z| to the point below.
+// projection lies in the ring; there the annulus distance is |z| to the point below. Returns
+// the verdict of circle-disk's shortcut (docs/annulus.md, "A circle"): the lowest |z| over the
+// whole circle is at one of these candidates, and no annulus point is nearer to X(t) than
+// |z(t)|; so when the best kept candidate is that low, it is the distance and the rims need not
+// be solved.
+template <class Real> struct InteriorVerdict {
+  Real best = std::numeric_limits<Real>::infinity();
+  bool decided = false;
+};
 template <class Roots, class Real, class Add>
-void circle_annulus_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bool with_points, const Add& add) {
+InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bool with_points,
+                                              const Add& add) {
   using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
   const Round<Real> round(a.center, a.normal, a.outer_radius);
   const LocalCircle<Real> local(c, round);
   const Real scale = circle_round_scale(local, a.outer_radius);
   const auto heights = CircleDisk::template height_candidates<Roots>(local, scale);
+  InteriorVerdict<Real> verdict;
+  Real lowest = std::numeric_limits<Real>::infinity();
   for (int i = 0; i < heights.count; ++i) {
     const Real t = wrap_angle(heights.value[i]);
     const Vec3<Real> p = local.at(t);
+    lowest = std::min(lowest, std::abs(p.z()));
     const Real rho = length2d(p.x(), p.y());
     if (!(rho >= a.inner_radius && rho <= a.outer_radius)) continue;
     Result<Real> r;
     r.distance = std::abs(p.z());
+    verdict.best = std::min(verdict.best, r.distance);
     if (with_points) {
       const Vec3<Real> below(p.x(), p.y(), 0);
       r.point_a = c.center + c.radius * (std::cos(t) * local.frame.u + std::sin(t) * local.frame.v);
@@ -164,6 +178,8 @@ void circle_annulus_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bo
     }
     add(r);
   }
+  verdict.decided = verdict.best <= lowest + tie_tolerance(scale);
+  return verdict;
 }
 
 // The best of a set of candidate Results, `unique` false when another reaches the same distance
@@ -185,19 +201,24 @@ Result<Real> best_of(const Candidates& candidates, Real scale) {
 }
 
 // A circle against a true ring: the interior candidates and both rims (circle-circle through
-// the front end: the same order distance(circle, circle) takes).
+// the front end: the same order distance(circle, circle) takes). distance() skips the rims when
+// the interior decides (as circle-disk's distance() does); closest() solves them all, for the
+// pair and for `unique`, and reports the same distance.
 template <class Roots, class Real> Real circle_ring_distance(const Circle3<Real>& c, const Annulus3<Real>& a) {
-  Real best = std::min(circledist::distance<Roots>(c, outer_rim(a)), circledist::distance<Roots>(c, inner_rim(a)));
-  circle_annulus_interior<Roots>(c, a, false, [&](const Result<Real>& r) { best = std::min(best, r.distance); });
-  return best;
+  const InteriorVerdict<Real> interior = circle_annulus_interior<Roots>(c, a, false, [](const Result<Real>&) {});
+  if (interior.decided) return interior.best;
+  return std::min({interior.best, circledist::distance<Roots>(c, outer_rim(a)), circledist::distance<Roots>(c, inner_rim(a))});
 }
 template <class Roots, class Real> Result<Real> circle_ring_closest(const Circle3<Real>& c, const Annulus3<Real>& a) {
   CircleAnnulusCandidates<Real> candidates;
+  const InteriorVerdict<Real> interior =
+      circle_annulus_interior<Roots>(c, a, true, [&](const Result<Real>& r) { candidates.add(r); });
   candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, outer_rim(a)), a.outer_radius));
   candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, inner_rim(a)), a.inner_radius));
-  circle_annulus_interior<Roots>(c, a, true, [&](const Result<Real>& r) { candidates.add(r); });
   const Real scale = std::max({a.outer_radius, c.radius, (c.center - a.center).norm()});
-  return best_of(candidates, scale > 0 ? scale : Real(1));
+  Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
+  r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
+  return r;
 }
 
 }  // namespace detail
@@ -267,8 +288,9 @@ template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> {
     if (ka == AnnulusKind::kCircle) return circledist::distance<Roots>(outer_rim(a), b);
     if (ka != AnnulusKind::kRing) return degenerate_annulus_result<Real>(ka).distance;
     if (kb != AnnulusKind::kRing) return distance<Roots>(b, a);  // b as its disk or circle
-    return std::min(std::min(circle_ring_distance<Roots>(outer_rim(a), b), circle_ring_distance<Roots>(inner_rim(a), b)),
-                    std::min(circle_ring_distance<Roots>(outer_rim(b), a), circle_ring_distance<Roots>(inner_rim(b), a)));
+    // Where the outer disks' closest pair lies in both rings it is the annuli's; distance()
+    // needs that pair, so it runs closest() (the same number).
+    return closest<Roots>(a, b).distance;
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Annulus3<Real>& a, const Annulus3<Real>& b) {
@@ -279,6 +301,12 @@ template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> {
       return rim_as_annulus(circledist::closest_points<Roots>(outer_rim(a), b).swapped(), a.outer_radius).swapped();
     if (ka != AnnulusKind::kRing) return degenerate_annulus_result<Real>(ka);
     if (kb != AnnulusKind::kRing) return closest<Roots>(b, a).swapped();
+    // The outer disks first (docs/annulus.md, "Two annuli"): A and B lie in them, so a closest
+    // pair of the disks with both points in the rings (s >= inner on each) is one of the annuli,
+    // and the disks' `unique` is theirs. A contact of the disks in a hole is no contact of the
+    // annuli (the false contacts): the rims answer then.
+    const Result<Real> disks = circledist::closest_points<Roots>(annulus_disk(a), annulus_disk(b));
+    if (disks.param_a.x() >= a.inner_radius && disks.param_b.x() >= b.inner_radius) return disks;
     CircleAnnulusCandidates<Real> candidates;
     // a's rims against b: a's side a rim point, (radius, theta) on a.
     const auto from_a = [](Result<Real> r, Real radius) {
