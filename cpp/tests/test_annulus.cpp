@@ -45,6 +45,7 @@ using Ray = Ray3<double>;
 using Segment = Segment3<double>;
 using Circle = Circle3<double>;
 using Disk = Disk3<double>;
+using Arc = Arc3<double>;
 
 namespace {
 
@@ -128,6 +129,19 @@ LD ref_annulus_annulus(const Annulus& a, const Annulus& b) {
                    ref_rim_min(b, b.outer_radius, a.center, to_a), ref_rim_min(b, b.inner_radius, a.center, to_a)});
 }
 
+// An arc sampled on its own t (its u from the start's projection, v = n x u), against the annulus.
+LD ref_arc_annulus(const Arc& arc, const Annulus& a) {
+  const RefAnnulus ra(a, a.center);
+  const V3 c = arc.center.cast<LD>() - a.center.cast<LD>();
+  const V3 n = arc.normal.cast<LD>() / arc.normal.cast<LD>().norm();
+  const V3 st = arc.start.cast<LD>();
+  const V3 q = st - n.dot(st) * n;
+  const V3 u = q / q.norm(), v = n.cross(u);
+  const bool whole = arc.angle >= 2 * double(ref::kPi);
+  const LD angle = whole ? 2 * ref::kPi : LD(arc.angle);
+  return ref::minimize([&](LD t) { return ra.distance(c + LD(arc.radius) * (std::cos(t) * u + std::sin(t) * v)); }, 0, angle, whole);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The checks.
 
@@ -136,10 +150,13 @@ std::map<std::string, int> counts;
 double size_of(const Annulus& a) { return a.outer_radius; }
 double size_of(const Circle& c) { return c.radius; }
 double size_of(const Disk& d) { return d.radius; }
+double size_of(const Arc& d) { return d.radius; }
 template <class S> double size_of(const S&) { return 0; }
 
 // A point's distance to a shape: the reference's for an annulus, the library's closed forms else.
 LD off(const V3d& p, const Annulus& a) { return ref_point(p, a); }
+// An arc's distance from p, sampled: an annulus of radii 0 about p is the point p.
+LD off(const V3d& p, const Arc& arc) { return ref_arc_annulus(arc, Annulus{p, V3d(0, 0, 1), 0, 0}); }
 template <class S> LD off(const V3d& p, const S& s) { return distance(p, s); }
 
 bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
@@ -178,6 +195,16 @@ void annulus_case(const std::string& kind, const char* name, const X& x, const A
   check::record(ok, name, __FILE__, __LINE__);
   expect_annulus_side(name, a, r.point_b, r.param_b, 1e-12 * std::max(size, (r.point_b - a.center).norm()) + world);
   expect_annulus_side(name, a, s.point_a, s.param_a, 1e-12 * std::max(size, (s.point_a - a.center).norm()) + world);
+  if constexpr (std::is_same_v<X, Arc>) {
+    // The arc's (t, 0) gives its point, t in [0, angle] (its own frame from the start).
+    const V3d nn = x.normal.normalized(), q = x.start - nn.dot(x.start) * nn;
+    const V3d u = q.normalized(), v = nn.cross(u);
+    const double t = r.param_a.x();
+    const V3d at = x.center + x.radius * (std::cos(t) * u + std::sin(t) * v);
+    const bool in = t >= 0 && t <= std::min(x.angle, 2 * double(ref::kPi)) && (at - r.point_a).norm() <= 1e-12 * size + world;
+    if (!in) std::printf("  %s / %s: arc param %.17g off by %.3g\n", kind.c_str(), name, t, (at - r.point_a).norm());
+    check::record(in, name, __FILE__, __LINE__);
+  }
   if (unique >= 0) {
     expect_unique(name, r.unique, unique == 1);
     expect_unique(name, s.unique, unique == 1);
@@ -464,6 +491,47 @@ void coplanar_tests() {
   }
 }
 
+void arc_tests() {
+  const std::string k = "arc-annulus";
+  // In the hole, coplanar and concentric: every arc point at 0.5 from the inner rim.
+  annulus_case(k, "in the hole, concentric", Arc{kO, kZ, 0.5, kX, 2}, kRing, 0.5L, 0);
+  // Over the ring at a height, concentric: a continuum; tilted so that its lowest point is past
+  // its end, over the ring: the end.
+  annulus_case(k, "over the ring, concentric", Arc{V3d(0, 0, 0.4), kZ, 1.5, kX, 1}, kRing, 0.4L, 0);
+  {
+    const Arc tilted{V3d(0, 0, 0.4), unit(0.3, 0, 1), 1.5, kY, 1.2};
+    annulus_case(k, "tilted over the ring, end lowest", tilted, kRing, ref_arc_annulus(tilted, kRing));
+  }
+  // Standing through the hole, crossing the ring once; an arc stopping short of the plane.
+  annulus_case(k, "standing, crossing the ring", Arc{V3d(1, 0, 0), kY, 0.5, kX, 3}, kRing, 0, 1);
+  {
+    const Arc short_arc{V3d(1.5, 0, 0.6), kY, 0.5, kX, 1};
+    annulus_case(k, "standing, short of the plane", short_arc, kRing, ref_arc_annulus(short_arc, kRing));
+  }
+  // Whole: the circle's answer; zero radius: the point's.
+  annulus_case(k, "whole", Arc{V3d(0.2, 0.1, 0.3), unit(1, 2, 3), 0.7, kX, 7}, kRing,
+               ref_circle_annulus(Circle{V3d(0.2, 0.1, 0.3), unit(1, 2, 3), 0.7}, kRing));
+  Draw d(41);
+  for (int i = 0; i < int(40 * ANNULUS_RANDOM_SCALE) + 4; ++i) {
+    const Annulus a = d.annulus();
+    const Arc arc{a.center + a.outer_radius * d.vec(), d.vec(), d.radius(), d.vec(), 6.28 * d.uniform(d.rng)};
+    annulus_case(k, "random", arc, a, ref_arc_annulus(arc, a));
+    expect_same_as("arc, inner 0", arc, Annulus{a.center, a.normal, 0, a.outer_radius});
+    expect_same_as("arc, inner = outer", arc, Annulus{a.center, a.normal, a.outer_radius, a.outer_radius});
+    if (i % 5 == 0) {
+      const LD truth = ref_arc_annulus(arc, a);
+      annulus_case<Arc, EigenCompanion>("eigen arc-annulus", "random", arc, a, truth);
+      annulus_case<Arc, EigenPolished>("eigen arc-annulus", "random", arc, a, truth);
+    }
+    if (i % 4 == 0) {
+      const V3d t = 1e6 * d.vec();
+      const Arc at{arc.center + t, arc.normal, arc.radius, arc.start, arc.angle};
+      const Annulus aa{a.center + t, a.normal, a.inner_radius, a.outer_radius};
+      annulus_case(k, "translated 1e6", at, aa, ref_arc_annulus(at, aa));
+    }
+  }
+}
+
 // The eigenvalue root policies on random scenes of the polynomial families.
 void policy_tests() {
   Draw d(29);
@@ -558,6 +626,7 @@ int main(int argc, char** argv) {
   disk_tests();
   annulus_annulus_tests();
   coplanar_tests();
+  arc_tests();
   policy_tests();
   precision_tests();
   for (const auto& [kind, n] : counts) std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);

@@ -20,6 +20,7 @@
 // (R, theta) for the circle's (theta, 0)).
 #pragma once
 
+#include "arc.hpp"
 #include "circle_circle.hpp"
 #include "circle_disk.hpp"
 #include "disk_disk.hpp"
@@ -150,18 +151,27 @@ template <class Real> struct InteriorVerdict {
   Real best = std::numeric_limits<Real>::infinity();
   bool decided = false;
 };
+// An arc (ArcSpan, arc.hpp) takes the candidates on its angles only, and its two ends.
 template <class Roots, class Real, class Add>
 InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bool with_points,
-                                              const Add& add) {
+                                              const Add& add, const ArcSpan<Real>* span = nullptr) {
   using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
   const Round<Real> round(a.center, a.normal, a.outer_radius);
   const LocalCircle<Real> local(c, round);
   const Real scale = circle_round_scale(local, a.outer_radius);
-  const auto heights = CircleDisk::template height_candidates<Roots>(local, scale);
+  auto heights = CircleDisk::template height_candidates<Roots>(local, scale);
+  if (span) {
+    int kept = 0;
+    for (int i = 0; i < heights.count; ++i)
+      if (span->holds(heights.value[i])) heights.value[kept++] = heights.value[i];
+    heights.count = kept;
+    heights.push(span->lo());
+    heights.push(span->hi());
+  }
   InteriorVerdict<Real> verdict;
   Real lowest = std::numeric_limits<Real>::infinity();
   for (int i = 0; i < heights.count; ++i) {
-    const Real t = wrap_angle(heights.value[i]);
+    const Real t = span ? heights.value[i] : wrap_angle(heights.value[i]);
     const Vec3<Real> p = local.at(t);
     lowest = std::min(lowest, std::abs(p.z()));
     const Real rho = length2d(p.x(), p.y());
@@ -173,7 +183,7 @@ InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annu
       const Vec3<Real> below(p.x(), p.y(), 0);
       r.point_a = c.center + c.radius * (std::cos(t) * local.frame.u + std::sin(t) * local.frame.v);
       r.point_b = round.world(below);
-      r.param_a = Vec2<Real>(t, 0);
+      r.param_a = Vec2<Real>(span ? span->param_of(t) : t, 0);
       r.param_b = DiskTarget<Real>::param(below);
     }
     add(r);
@@ -216,6 +226,29 @@ template <class Roots, class Real> Result<Real> circle_ring_closest(const Circle
   candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, outer_rim(a)), a.outer_radius));
   candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, inner_rim(a)), a.inner_radius));
   const Real scale = std::max({a.outer_radius, c.radius, (c.center - a.center).norm()});
+  Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
+  r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
+  return r;
+}
+
+// An arc (not whole, radius > 0) against a true ring: as a circle (2), on the arc's angles with
+// its ends added to the interior candidates, and the rims by arc-circle (arc.hpp) (docs/annulus.md,
+// "An arc").
+template <class Roots, class Real> Real arc_ring_distance(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+  const ArcSpan<Real> span(arc);
+  const InteriorVerdict<Real> interior =
+      circle_annulus_interior<Roots>(arc_circle(arc), a, false, [](const Result<Real>&) {}, &span);
+  if (interior.decided) return interior.best;
+  return std::min({interior.best, circledist::distance<Roots>(arc, outer_rim(a)), circledist::distance<Roots>(arc, inner_rim(a))});
+}
+template <class Roots, class Real> Result<Real> arc_ring_closest(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+  const ArcSpan<Real> span(arc);
+  CircleAnnulusCandidates<Real> candidates;
+  const InteriorVerdict<Real> interior =
+      circle_annulus_interior<Roots>(arc_circle(arc), a, true, [&](const Result<Real>& r) { candidates.add(r); }, &span);
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(arc, outer_rim(a)), a.outer_radius));
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(arc, inner_rim(a)), a.inner_radius));
+  const Real scale = std::max({a.outer_radius, arc.radius, (arc.center - a.center).norm()});
   Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
   r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
   return r;
@@ -272,6 +305,25 @@ template <class Real> struct Query<Circle3<Real>, Annulus3<Real>> {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(c, a, kind);
     return detail::circle_ring_closest<Roots>(c, a);
+  }
+};
+
+// An arc (docs/annulus.md, "An arc"): an arc of 2 pi is its circle, a zero radius its center.
+template <class Real> struct Query<Arc3<Real>, Annulus3<Real>> {
+  static constexpr bool defined = true;
+  template <class Roots = DefaultRoots> static Real distance(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(arc, a, kind);
+    if (whole_arc(arc)) return detail::circle_ring_distance<Roots>(arc_circle(arc), a);
+    if (!(arc.radius > 0)) return detail::point_annulus_distance(arc.center, a);
+    return detail::arc_ring_distance<Roots>(arc, a);
+  }
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(arc, a, kind);
+    if (whole_arc(arc)) return as_arc_result(detail::circle_ring_closest<Roots>(arc_circle(arc), a), ArcSpan<Real>(arc), 0);
+    if (!(arc.radius > 0)) return Query<Vec3<Real>, Annulus3<Real>>::template closest<Roots>(arc.center, a);
+    return detail::arc_ring_closest<Roots>(arc, a);
   }
 };
 
