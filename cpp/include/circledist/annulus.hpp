@@ -3,14 +3,15 @@
 //
 // The annulus A is the outer disk D minus the open hole of its inner circle K. Its distance from
 // a point is the disk's where the point's projection falls in the ring, else the inner circle's
-// (docs/annulus.md, "A point"). Every query here is one of two reductions:
+// (docs/annulus.md, "A point"). Every query here is one of these reductions:
 //  - a convex shape X (point, line, ray, segment, disk): the distance to X is convex over the
 //    plane, so A's closest point is D's when D's lies in the ring (s >= inner), and otherwise
 //    on K (docs/annulus.md, "Convex shapes"): the disk query, then the inner circle's only where
 //    the disk's point fell in the hole;
-//  - a circle (not convex): the least of the interior candidates (circle-disk's height
-//    candidates, z = 0 or z' = 0, kept where their projection lies in the ring) and the circle
-//    against both rims (circle-circle) (docs/annulus.md, "A circle");
+//  - a circle or an arc (not convex): the least of the interior candidates (circle-disk's
+//    height candidates, z = 0 or z' = 0, on the arc's angles and with its ends for an arc, kept
+//    where their projection lies in the ring) and the shape against both rims (circle-circle,
+//    arc-circle) (docs/annulus.md, "A circle", "An arc");
 //  - an annulus against an annulus: the outer disks' closest pair where it lies in both rings,
 //    else the least of each rim against the other annulus (the circle reduction), since a
 //    closest pair has a point on a rim, and a common part has its ends on rims
