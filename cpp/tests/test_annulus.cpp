@@ -499,6 +499,25 @@ void coplanar_tests() {
   }
 }
 
+// A thin ring, inner = outer (1 - 1e-9): close to the circle, but its interior still counts.
+void thin_ring_tests() {
+  const Annulus thin{kO, kZ, 1 - 1e-9, 1};
+  annulus_case("point-annulus", "thin ring, over it", V3d(1 - 5e-10, 0, 0.3), thin, 0.3L, 1);
+  annulus_case("point-annulus", "thin ring, on the axis", V3d(0, 0, 0.3), thin, ref_point(V3d(0, 0, 0.3), thin), 0);
+  {
+    const Line l{V3d(-2, 1 - 5e-10, 0.2), kX};  // over the ring's chord tangent to nothing: two stretches
+    annulus_case("line-annulus", "thin ring, across above", l, thin, ref_piece_annulus(l, thin));
+  }
+  {
+    const Circle c{V3d(0.3, 0.2, 0.1), unit(0.2, 0.1, 1), 0.9};
+    annulus_case("circle-annulus", "thin ring", c, thin, ref_circle_annulus(c, thin));
+    const Annulus b{V3d(0.1, 0, 0.05), unit(0.1, 0, 1), 0.5, 1.2};
+    annulus_case("annulus-annulus", "thin ring", b, thin, ref_annulus_annulus(b, thin));
+    const Disk x{V3d(0.1, 0, 0.05), unit(0.1, 0, 1), 1.2};
+    annulus_case("disk-annulus", "thin ring", x, thin, ref_disk_annulus(x, thin));
+  }
+}
+
 void arc_tests() {
   const std::string k = "arc-annulus";
   // In the hole, coplanar and concentric: every arc point at 0.5 from the inner rim.
@@ -634,6 +653,7 @@ int main(int argc, char** argv) {
   disk_tests();
   annulus_annulus_tests();
   coplanar_tests();
+  thin_ring_tests();
   arc_tests();
   policy_tests();
   precision_tests();
