@@ -345,6 +345,16 @@ template <class Piece> void piece_tests(const std::string& k) {
 // point lies in the hole, the inner circle meets the continuum once (annulus.hpp's extension).
 void segment_continuum_tests() {
   const std::string k = "segment-annulus";
+  // The same, moved by 1e6 and 1e8: `unique` kept through the coordinates' rounding.
+  for (double shift : {1e6, 1e8}) {
+    const V3d t = shift * V3d(0.6, -0.3, 0.74);
+    const Annulus ring = moved(kRing, t);
+    annulus_case(k, "above, hole to ring, translated", Segment{V3d(0.2, 0.1, 0.5) + t, V3d(1.5, 0.3, 0.5) + t}, ring, 0.5L, 0);
+    annulus_case(k, "in the plane, hole to ring, translated", Segment{V3d(0.2, 0.1, 0) + t, V3d(1.5, 0.3, 0) + t}, ring, 0, 0);
+    annulus_case(k, "above, in the hole, translated", Segment{V3d(0.2, 0.1, 0.5) + t, V3d(0.6, 0.3, 0.5) + t}, ring,
+                 ref_piece_annulus(Segment{V3d(0.2, 0.1, 0.5) + t, V3d(0.6, 0.3, 0.5) + t}, ring), 1);
+    annulus_case("disk-annulus", "parallel, hole to ring, translated", Disk{V3d(0.5, 0, 0.5) + t, kZ, 0.8}, ring, 0.5L, 0);
+  }
   annulus_case(k, "in the plane, hole to ring", Segment{V3d(0.2, 0.1, 0), V3d(1.5, 0.3, 0)}, kRing, 0, 0);
   annulus_case(k, "above, hole to ring", Segment{V3d(0.2, 0.1, 0.5), V3d(1.5, 0.3, 0.5)}, kRing, 0.5L, 0);
   annulus_case(k, "above, in the hole", Segment{V3d(0.2, 0.1, 0.5), V3d(0.6, 0.3, 0.5)}, kRing,

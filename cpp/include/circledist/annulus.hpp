@@ -98,7 +98,8 @@ template <class Real> Real annulus_scale(const Vec3<Real>& other_point, const An
 // (not unique) reaching from the hole across the inner circle, the inner circle may meet it in one
 // point while the annulus keeps a stretch of it: the continuum is followed a distinct-points
 // tolerance past the inner circle's point, away from the disk's, and `unique` is false when that
-// point is still as close to x and on the annulus.
+// point is still as close to x (within the tie tolerance and its own coordinates' rounding) and
+// on the annulus.
 template <class Roots, class X, class Real> Result<Real> convex_annulus_closest(const X& x, const Annulus3<Real>& a) {
   const Result<Real> on_disk = circledist::closest_points<Roots>(x, annulus_disk(a));
   if (!(on_disk.param_b.x() < a.inner_radius)) return on_disk;  // in the ring (or NaN)
@@ -111,7 +112,10 @@ template <class Roots, class X, class Real> Result<Real> convex_annulus_closest(
       const Vec3<Real> beyond = r.point_b + (distinct_points_tolerance(scale) / length) * step;
       const Real rho = (beyond - a.center).norm();
       const Real to_x = circledist::distance<Roots>(beyond, x);
-      if (rho <= a.outer_radius && to_x <= r.distance + tie_tolerance(std::max(scale, r.distance))) r.unique = false;
+      // The tie tolerance, and the rounding of `beyond`'s world coordinates (1.5e-8 at 1e8).
+      const Real slack = tie_tolerance(std::max(scale, r.distance)) +
+                         16 * std::numeric_limits<Real>::epsilon() * beyond.cwiseAbs().maxCoeff();
+      if (rho <= a.outer_radius && to_x <= r.distance + slack) r.unique = false;
     }
   }
   return r;
