@@ -612,6 +612,22 @@ void precision_tests() {
   const F af{a.center.cast<float>(), a.normal.cast<float>(), float(a.inner_radius), float(a.outer_radius)};
   CHECK_NEAR(distance(Circle3<float>{c.center.cast<float>(), c.normal.cast<float>(), float(c.radius)}, af), tc, 1e-5);
   CHECK_NEAR(closest_points(af, Segment3<float>{s.p0.cast<float>(), s.p1.cast<float>()}).distance, ts, 1e-5);
+  // Scenes of 1e180 and 1e-180 (the front end rescales them, query.hpp): the distance of the
+  // scene at unit size, times the same power of two, and the annulus's s scaled back.
+  for (int e : {600, -600}) {
+    const Circle c{V3d(0.7, -0.4, 0.2), V3d(0.3, 1, 2), 0.9};
+    const Annulus b{V3d(0.9, 0.3, -0.2), V3d(0.2, 1, 0.4), 0.3, 1.1};
+    const V3d p(0.2, 0.3, 0.1);
+    const Segment g{V3d(-1, 0.5, 0.2), V3d(1.5, -0.3, 0.9)};
+    const Annulus as = scaled(a, e);
+    const double f = std::ldexp(1.0, e);
+    CHECK_NEAR(distance(scaled(c, e), as) / f, distance(c, a), 1e-12);
+    CHECK_NEAR(distance(scaled(b, e), as) / f, distance(b, a), 1e-12);
+    CHECK_NEAR(distance(scaled(p, e), as) / f, distance(p, a), 1e-12);
+    CHECK_NEAR(distance(scaled(g, e), as) / f, distance(g, a), 1e-12);
+    const Result<double> r = closest_points(scaled(g, e), as), r1 = closest_points(g, a);
+    CHECK_NEAR(r.param_b.x() / f, r1.param_b.x(), 1e-12);
+  }
   // Degenerate definitions: empty (inner > outer) and NaN.
   CHECK(distance(V3d(1, 2, 3), Annulus{kO, kZ, 2, 1}) == std::numeric_limits<double>::infinity());
   CHECK(std::isnan(distance(Circle{kO, kZ, 1}, Annulus{kO, kZ, std::nan(""), 1})));
