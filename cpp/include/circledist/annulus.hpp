@@ -1,5 +1,5 @@
 // Annulus (issue 19; derivation in docs/annulus.md): an annulus against a point, line, ray,
-// segment, circle, disk or annulus, from the disk's and the circle's queries.
+// segment, circle, disk, arc or annulus, from the disk's, the circle's and the arc's queries.
 //
 // The annulus A is the outer disk D minus the open hole of its inner circle K. Its distance from
 // a point is the disk's where the point's projection falls in the ring, else the inner circle's
