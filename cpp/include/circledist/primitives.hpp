@@ -230,6 +230,34 @@ template <class Real, if_float<Real> = 0> Arc3<double> promoted(const Arc3<Real>
   return {promoted(a.center), promoted(a.normal), double(a.radius), promoted(a.start), double(a.angle)};
 }
 
+// An annulus (issue 19): the points of the plane disk of radius `outer_radius` about `center`
+// (normal `normal`, any length) at distance >= `inner_radius` from the center. Its parameter in
+// a Result is a disk's, (s, theta): the point center + s (cos theta U + sin theta V), s in
+// [inner_radius, outer_radius]. inner_radius <= 0 is the disk, inner_radius == outer_radius
+// the circle (both answered by their own queries, annulus.hpp), inner_radius > outer_radius
+// the empty set (distance +inf), a NaN radius NaN. Its order, scaling and promotion follow the
+// disk's (then the inner radius).
+template <class Real> struct Annulus3 {
+  Vec3<Real> center, normal;
+  Real inner_radius, outer_radius;
+};
+template <class Real> bool precedes(const Annulus3<Real>& x, const Annulus3<Real>& y) {
+  if (detail::precedes_pair(x.center, x.normal, y.center, y.normal)) return true;
+  if (detail::precedes_pair(y.center, y.normal, x.center, x.normal)) return false;
+  if (x.outer_radius != y.outer_radius) return x.outer_radius < y.outer_radius;
+  return x.inner_radius < y.inner_radius;
+}
+template <class Real> Annulus3<Real> scaled(const Annulus3<Real>& a, int e) {
+  return {detail::ldexp3(a.center, e), a.normal, std::ldexp(a.inner_radius, e), std::ldexp(a.outer_radius, e)};
+}
+template <class Real> Real extent(const Annulus3<Real>& a) { return std::max(extent(a.center), a.outer_radius); }
+template <class Real> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Annulus3<Real>&, int e) {
+  return Vec2<Real>(std::ldexp(param.x(), -e), param.y());
+}
+template <class Real, if_float<Real> = 0> Annulus3<double> promoted(const Annulus3<Real>& a) {
+  return {promoted(a.center), promoted(a.normal), double(a.inner_radius), double(a.outer_radius)};
+}
+
 // Bezier curves of degree 0 to kMaxBezierDegree (bezier.hpp answers their queries; a curve's
 // polynomials against a round reach degree 6n - 2, detail/local_bezier.hpp).
 constexpr int kMaxBezierDegree = 7;

@@ -18,3 +18,4 @@
 #include "bezier_linear.hpp"
 #include "bezier_bezier.hpp"
 #include "arc.hpp"
+#include "annulus.hpp"

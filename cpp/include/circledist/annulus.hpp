@@ -1,0 +1,382 @@
+// Annulus (issue 19; derivation in docs/annulus.md): an annulus against a point, line, ray,
+// segment, circle, disk, arc or annulus, from the disk's, the circle's and the arc's queries.
+//
+// The annulus A is the outer disk D minus the open hole of its inner circle K. Its distance from
+// a point is the disk's where the point's projection falls in the ring, else the inner circle's
+// (docs/annulus.md, "A point"). Every query here is one of these reductions:
+//  - a convex shape X (point, line, ray, segment, disk): the distance to X is convex over the
+//    plane, so A's closest point is D's when D's lies in the ring (s >= inner), and otherwise
+//    on K (docs/annulus.md, "Convex shapes"): the disk query, then the inner circle's only where
+//    the disk's point fell in the hole;
+//  - a circle or an arc (not convex): the least of the interior candidates (circle-disk's
+//    height candidates, z = 0 or z' = 0, on the arc's angles and with its ends for an arc, kept
+//    where their projection lies in the ring) and the shape against both rims (circle-circle,
+//    arc-circle) (docs/annulus.md, "A circle", "An arc");
+//  - an annulus against an annulus: the outer disks' closest pair where it lies in both rings,
+//    else the least of each rim against the other annulus (the circle reduction), since a
+//    closest pair has a point on a rim, and a common part has its ends on rims
+//    (docs/annulus.md, "Two annuli").
+// An inner radius of 0 (or less) is the disk, an inner radius equal to the outer one the circle:
+// their own queries answer, to the bit (the annulus's parameter (s, theta) being the disk's, or
+// (R, theta) for the circle's (theta, 0)).
+#pragma once
+
+#include "arc.hpp"
+#include "circle_circle.hpp"
+#include "circle_disk.hpp"
+#include "disk_disk.hpp"
+#include "line_circle.hpp"
+#include "line_disk.hpp"
+#include "linear_linear.hpp"
+#include "point_circle.hpp"
+#include "point_disk.hpp"
+#include "query.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace circledist {
+
+namespace detail {
+
+template <class Real> Disk3<Real> annulus_disk(const Annulus3<Real>& a) { return {a.center, a.normal, a.outer_radius}; }
+template <class Real> Circle3<Real> outer_rim(const Annulus3<Real>& a) { return {a.center, a.normal, a.outer_radius}; }
+template <class Real> Circle3<Real> inner_rim(const Annulus3<Real>& a) { return {a.center, a.normal, a.inner_radius}; }
+
+// What an annulus is (Annulus3's definition, primitives.hpp): the disk, the circle, a true ring,
+// the empty set or NaN.
+enum class AnnulusKind { kRing, kDisk, kCircle, kEmpty, kNaN };
+template <class Real> AnnulusKind annulus_kind(const Annulus3<Real>& a) {
+  if (std::isnan(a.inner_radius) || std::isnan(a.outer_radius)) return AnnulusKind::kNaN;
+  if (a.inner_radius > a.outer_radius) return AnnulusKind::kEmpty;
+  if (!(a.inner_radius > 0)) return AnnulusKind::kDisk;
+  if (a.inner_radius == a.outer_radius) return AnnulusKind::kCircle;
+  return AnnulusKind::kRing;
+}
+
+// The Result of the empty set or a NaN annulus (b's side).
+template <class Real> Result<Real> degenerate_annulus_result(AnnulusKind kind) {
+  Result<Real> r;
+  r.distance = kind == AnnulusKind::kEmpty ? std::numeric_limits<Real>::infinity() : std::numeric_limits<Real>::quiet_NaN();
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  r.point_a = r.point_b = Vec3<Real>::Constant(nan);
+  r.param_a = r.param_b = Vec2<Real>::Constant(nan);
+  return r;
+}
+
+// A rim's Result (b's side a circle's (theta, 0)) as the annulus's (radius, theta).
+template <class Real> Result<Real> rim_as_annulus(Result<Real> r, Real radius) {
+  r.param_b = Vec2<Real>(radius, r.param_b.x());
+  return r;
+}
+
+// The front end's answer of x against the annulus's disk or circle (its kinds kDisk, kCircle,
+// kEmpty, kNaN), b's side in the annulus's parameter. (The front end orders two disks as
+// distance(disk, disk) does, so the answers are the disk's to the bit.)
+template <class Roots, class X, class Real> Real degenerate_distance(const X& x, const Annulus3<Real>& a, AnnulusKind kind) {
+  if (kind == AnnulusKind::kDisk) return circledist::distance<Roots>(x, annulus_disk(a));
+  if (kind == AnnulusKind::kCircle) return circledist::distance<Roots>(x, outer_rim(a));
+  return degenerate_annulus_result<Real>(kind).distance;
+}
+template <class Roots, class X, class Real>
+Result<Real> degenerate_closest(const X& x, const Annulus3<Real>& a, AnnulusKind kind) {
+  if (kind == AnnulusKind::kDisk) return circledist::closest_points<Roots>(x, annulus_disk(a));
+  if (kind == AnnulusKind::kCircle) return rim_as_annulus(circledist::closest_points<Roots>(x, outer_rim(a)), a.outer_radius);
+  return degenerate_annulus_result<Real>(kind);
+}
+
+// The length scale of a query against the annulus (tolerances follow it).
+template <class Real> Real annulus_scale(const Vec3<Real>& other_point, const Annulus3<Real>& a) {
+  const Real s = std::max(a.outer_radius, (other_point - a.center).norm());
+  return s > 0 && std::isfinite(s) ? s : Real(1);
+}
+
+// Convex shapes (docs/annulus.md, "Convex shapes"). The disk's closest pair, kept when its
+// point on the disk lies in the ring (s >= inner: s is the disk's parameter); otherwise the
+// inner circle's, which is then the annulus's. When the disk's closest pairs were a continuum
+// (not unique) reaching from the hole across the inner circle, the inner circle may meet it in one
+// point while the annulus keeps a stretch of it: the continuum is followed a distinct-points
+// tolerance past the inner circle's point, away from the disk's, and `unique` is false when that
+// point is still as close to x (within the tie tolerance and its own coordinates' rounding) and
+// on the annulus.
+template <class Roots, class X, class Real> Result<Real> convex_annulus_closest(const X& x, const Annulus3<Real>& a) {
+  const Result<Real> on_disk = circledist::closest_points<Roots>(x, annulus_disk(a));
+  if (!(on_disk.param_b.x() < a.inner_radius)) return on_disk;  // in the ring (or NaN)
+  Result<Real> r = rim_as_annulus(circledist::closest_points<Roots>(x, inner_rim(a)), a.inner_radius);
+  if (r.unique && !on_disk.unique) {
+    const Real scale = annulus_scale(r.point_a, a);
+    const Vec3<Real> step = r.point_b - on_disk.point_b;
+    const Real length = step.norm();
+    if (length > 0) {
+      const Vec3<Real> beyond = r.point_b + (distinct_points_tolerance(scale) / length) * step;
+      const Real rho = (beyond - a.center).norm();
+      const Real to_x = circledist::distance<Roots>(beyond, x);
+      // The tie tolerance, and the rounding of `beyond`'s world coordinates (1.5e-8 at 1e8).
+      const Real slack = tie_tolerance(std::max(scale, r.distance)) +
+                         16 * std::numeric_limits<Real>::epsilon() * beyond.cwiseAbs().maxCoeff();
+      if (rho <= a.outer_radius && to_x <= r.distance + slack) r.unique = false;
+    }
+  }
+  return r;
+}
+
+// The annulus's distance from a point: the disk's over the ring and beyond, the inner circle's
+// over the hole (PointOverRound, as point-disk computes it; the same numbers as the disk's and
+// the circle's closed forms, so distance() and closest() agree to the bit).
+template <class Real> Real point_annulus_distance(const Vec3<Real>& p, const Annulus3<Real>& a) {
+  const PointOverRound<Real> seen(p, a.center, a.normal);
+  if (seen.radial < a.inner_radius) return length2d(seen.height, seen.radial - a.inner_radius);
+  return select(seen.radial <= a.outer_radius, std::abs(seen.height), length2d(seen.height, seen.radial - a.outer_radius));
+}
+
+// A circle against a true ring (docs/annulus.md, "A circle"): the candidates and the best. Each
+// candidate is a Result (a's side the circle, b's the annulus).
+template <class Real> struct CircleAnnulusCandidates {
+  static constexpr int kCapacity = 16;
+  Result<Real> item[kCapacity];
+  int count = 0;
+  int best = -1;
+  void add(const Result<Real>& r) {
+    if (count == kCapacity) return;
+    item[count] = r;
+    if (best < 0 || r.distance < item[best].distance) best = count;
+    ++count;
+  }
+};
+
+// The interior candidates: the circle's points where its height over the plane has z = 0 or
+// z' = 0 (and t = 0, pi), circle-disk's height candidates (circle_disk.hpp), kept where their
+// projection lies in the ring; there the annulus distance is |z| to the point below. Returns
+// the verdict of circle-disk's shortcut (docs/annulus.md, "A circle"): the lowest |z| over the
+// whole circle is at one of these candidates, and no annulus point is nearer to X(t) than
+// |z(t)|; so when the best kept candidate is that low, it is the distance and the rims need not
+// be solved.
+template <class Real> struct InteriorVerdict {
+  Real best = std::numeric_limits<Real>::infinity();
+  bool decided = false;
+};
+// An arc (ArcSpan, arc.hpp) takes the candidates on its angles only, and its two ends.
+template <class Roots, class Real, class Add>
+InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bool with_points,
+                                              const Add& add, const ArcSpan<Real>* span = nullptr) {
+  using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
+  const Round<Real> round(a.center, a.normal, a.outer_radius);
+  const LocalCircle<Real> local(c, round);
+  const Real scale = circle_round_scale(local, a.outer_radius);
+  auto heights = CircleDisk::template height_candidates<Roots>(local, scale);
+  if (span) {
+    int kept = 0;
+    for (int i = 0; i < heights.count; ++i)
+      if (span->holds(heights.value[i])) heights.value[kept++] = heights.value[i];
+    heights.count = kept;
+    heights.push(span->lo());
+    heights.push(span->hi());
+  }
+  InteriorVerdict<Real> verdict;
+  Real lowest = std::numeric_limits<Real>::infinity();
+  for (int i = 0; i < heights.count; ++i) {
+    const Real t = span ? heights.value[i] : wrap_angle(heights.value[i]);
+    const Vec3<Real> p = local.at(t);
+    lowest = std::min(lowest, std::abs(p.z()));
+    const Real rho = length2d(p.x(), p.y());
+    if (!(rho >= a.inner_radius && rho <= a.outer_radius)) continue;
+    Result<Real> r;
+    r.distance = std::abs(p.z());
+    verdict.best = std::min(verdict.best, r.distance);
+    if (with_points) {
+      const Vec3<Real> below(p.x(), p.y(), 0);
+      r.point_a = c.center + c.radius * (std::cos(t) * local.frame.u + std::sin(t) * local.frame.v);
+      r.point_b = round.world(below);
+      r.param_a = Vec2<Real>(span ? span->param_of(t) : t, 0);
+      r.param_b = DiskTarget<Real>::param(below);
+    }
+    add(r);
+  }
+  verdict.decided = verdict.best <= lowest + tie_tolerance(scale);
+  return verdict;
+}
+
+// The best of a set of candidate Results, `unique` false when another reaches the same distance
+// within the tie tolerance at a distinct pair (or the best is a continuum itself).
+template <class Real, class Candidates>
+Result<Real> best_of(const Candidates& candidates, Real scale) {
+  Result<Real> best = candidates.item[candidates.best];
+  const Real tie = tie_tolerance(std::max(scale, best.distance));
+  const Real apart = distinct_points_tolerance(scale);
+  for (int i = 0; i < candidates.count; ++i) {
+    if (i == candidates.best) continue;
+    const Result<Real>& other = candidates.item[i];
+    if (!(other.distance <= best.distance + tie)) continue;
+    const bool same_pair =
+        (other.point_a - best.point_a).norm() <= apart && (other.point_b - best.point_b).norm() <= apart;
+    if (!same_pair || !other.unique) best.unique = false;
+  }
+  return best;
+}
+
+// A circle against a true ring: the interior candidates and both rims (circle-circle through
+// the front end: the same order distance(circle, circle) takes). distance() skips the rims when
+// the interior decides (as circle-disk's distance() does); closest() solves them all, for the
+// pair and for `unique`, and reports the same distance.
+template <class Roots, class Real> Real circle_ring_distance(const Circle3<Real>& c, const Annulus3<Real>& a) {
+  const InteriorVerdict<Real> interior = circle_annulus_interior<Roots>(c, a, false, [](const Result<Real>&) {});
+  if (interior.decided) return interior.best;
+  return std::min({interior.best, circledist::distance<Roots>(c, outer_rim(a)), circledist::distance<Roots>(c, inner_rim(a))});
+}
+template <class Roots, class Real> Result<Real> circle_ring_closest(const Circle3<Real>& c, const Annulus3<Real>& a) {
+  CircleAnnulusCandidates<Real> candidates;
+  const InteriorVerdict<Real> interior =
+      circle_annulus_interior<Roots>(c, a, true, [&](const Result<Real>& r) { candidates.add(r); });
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, outer_rim(a)), a.outer_radius));
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, inner_rim(a)), a.inner_radius));
+  const Real scale = std::max({a.outer_radius, c.radius, (c.center - a.center).norm()});
+  Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
+  r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
+  return r;
+}
+
+// An arc (not whole, radius > 0) against a true ring: as a circle (2), on the arc's angles with
+// its ends added to the interior candidates, and the rims by arc-circle (arc.hpp) (docs/annulus.md,
+// "An arc").
+template <class Roots, class Real> Real arc_ring_distance(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+  const ArcSpan<Real> span(arc);
+  const InteriorVerdict<Real> interior =
+      circle_annulus_interior<Roots>(arc_circle(arc), a, false, [](const Result<Real>&) {}, &span);
+  if (interior.decided) return interior.best;
+  return std::min({interior.best, circledist::distance<Roots>(arc, outer_rim(a)), circledist::distance<Roots>(arc, inner_rim(a))});
+}
+template <class Roots, class Real> Result<Real> arc_ring_closest(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+  const ArcSpan<Real> span(arc);
+  CircleAnnulusCandidates<Real> candidates;
+  const InteriorVerdict<Real> interior =
+      circle_annulus_interior<Roots>(arc_circle(arc), a, true, [&](const Result<Real>& r) { candidates.add(r); }, &span);
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(arc, outer_rim(a)), a.outer_radius));
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(arc, inner_rim(a)), a.inner_radius));
+  const Real scale = std::max({a.outer_radius, arc.radius, (arc.center - a.center).norm()});
+  Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
+  r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
+  return r;
+}
+
+}  // namespace detail
+
+// A point: closed form (docs/annulus.md, "A point").
+template <class Real> struct Query<Vec3<Real>, Annulus3<Real>> {
+  static constexpr bool defined = true;
+  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(p, a, kind);
+    return detail::point_annulus_distance(p, a);
+  }
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(p, a, kind);
+    Result<Real> r = detail::convex_annulus_closest<Roots>(p, a);
+    r.distance = detail::point_annulus_distance(p, a);  // the same number, from the same formulas
+    return r;
+  }
+};
+
+// A line, ray, segment or disk: convex (docs/annulus.md, "Convex shapes"). distance() needs to
+// know where the disk's closest point lies, so it runs closest().
+template <class Real, class X> struct ConvexAnnulusQuery {
+  static constexpr bool defined = true;
+  template <class Roots = DefaultRoots> static Real distance(const X& x, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(x, a, kind);
+    return detail::convex_annulus_closest<Roots>(x, a).distance;
+  }
+  template <class Roots = DefaultRoots> static Result<Real> closest(const X& x, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(x, a, kind);
+    return detail::convex_annulus_closest<Roots>(x, a);
+  }
+};
+template <class Real> struct Query<Line3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Segment3<Real>> {};
+template <class Real> struct Query<Disk3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Disk3<Real>> {};
+
+// A circle (docs/annulus.md, "A circle").
+template <class Real> struct Query<Circle3<Real>, Annulus3<Real>> {
+  static constexpr bool defined = true;
+  template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& c, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(c, a, kind);
+    return detail::circle_ring_distance<Roots>(c, a);
+  }
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& c, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(c, a, kind);
+    return detail::circle_ring_closest<Roots>(c, a);
+  }
+};
+
+// An arc (docs/annulus.md, "An arc"): an arc of 2 pi is its circle, a zero radius its center.
+template <class Real> struct Query<Arc3<Real>, Annulus3<Real>> {
+  static constexpr bool defined = true;
+  template <class Roots = DefaultRoots> static Real distance(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(arc, a, kind);
+    if (whole_arc(arc)) return detail::circle_ring_distance<Roots>(arc_circle(arc), a);
+    if (!(arc.radius > 0)) return detail::point_annulus_distance(arc.center, a);
+    return detail::arc_ring_distance<Roots>(arc, a);
+  }
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Arc3<Real>& arc, const Annulus3<Real>& a) {
+    const detail::AnnulusKind kind = detail::annulus_kind(a);
+    if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(arc, a, kind);
+    if (whole_arc(arc)) return as_arc_result(detail::circle_ring_closest<Roots>(arc_circle(arc), a), ArcSpan<Real>(arc), 0);
+    if (!(arc.radius > 0)) return Query<Vec3<Real>, Annulus3<Real>>::template closest<Roots>(arc.center, a);
+    return detail::arc_ring_closest<Roots>(arc, a);
+  }
+};
+
+// Two annuli (docs/annulus.md, "Two annuli"): an annulus that is a disk or a circle is answered
+// as that shape against the other (the queries above); two true rings by each rim against the
+// other ring.
+template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> {
+  static constexpr bool defined = true;
+
+  template <class Roots = DefaultRoots> static Real distance(const Annulus3<Real>& a, const Annulus3<Real>& b) {
+    using namespace detail;
+    const AnnulusKind ka = annulus_kind(a), kb = annulus_kind(b);
+    if (ka == AnnulusKind::kDisk) return circledist::distance<Roots>(annulus_disk(a), b);
+    if (ka == AnnulusKind::kCircle) return circledist::distance<Roots>(outer_rim(a), b);
+    if (ka != AnnulusKind::kRing) return degenerate_annulus_result<Real>(ka).distance;
+    if (kb != AnnulusKind::kRing) return distance<Roots>(b, a);  // b as its disk or circle
+    // Where the outer disks' closest pair lies in both rings it is the annuli's; distance()
+    // needs that pair, so it runs closest() (the same number).
+    return closest<Roots>(a, b).distance;
+  }
+
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Annulus3<Real>& a, const Annulus3<Real>& b) {
+    using namespace detail;
+    const AnnulusKind ka = annulus_kind(a), kb = annulus_kind(b);
+    if (ka == AnnulusKind::kDisk) return circledist::closest_points<Roots>(annulus_disk(a), b);
+    if (ka == AnnulusKind::kCircle)
+      return rim_as_annulus(circledist::closest_points<Roots>(outer_rim(a), b).swapped(), a.outer_radius).swapped();
+    if (ka != AnnulusKind::kRing) return degenerate_annulus_result<Real>(ka);
+    if (kb != AnnulusKind::kRing) return closest<Roots>(b, a).swapped();
+    // The outer disks first (docs/annulus.md, "Two annuli"): A and B lie in them, so a closest
+    // pair of the disks with both points in the rings (s >= inner on each) is one of the annuli,
+    // and the disks' `unique` is theirs. A contact of the disks in a hole is no contact of the
+    // annuli (the false contacts): the rims answer then.
+    const Result<Real> disks = circledist::closest_points<Roots>(annulus_disk(a), annulus_disk(b));
+    if (disks.param_a.x() >= a.inner_radius && disks.param_b.x() >= b.inner_radius) return disks;
+    CircleAnnulusCandidates<Real> candidates;
+    // a's rims against b: a's side a rim point, (radius, theta) on a.
+    const auto from_a = [](Result<Real> r, Real radius) {
+      r.param_a = Vec2<Real>(radius, r.param_a.x());
+      return r;
+    };
+    candidates.add(from_a(circle_ring_closest<Roots>(outer_rim(a), b), a.outer_radius));
+    candidates.add(from_a(circle_ring_closest<Roots>(inner_rim(a), b), a.inner_radius));
+    candidates.add(from_a(circle_ring_closest<Roots>(outer_rim(b), a), b.outer_radius).swapped());
+    candidates.add(from_a(circle_ring_closest<Roots>(inner_rim(b), a), b.inner_radius).swapped());
+    const Real scale = std::max({a.outer_radius, b.outer_radius, (a.center - b.center).norm()});
+    return best_of(candidates, scale > 0 ? scale : Real(1));
+  }
+};
+
+}  // namespace circledist
