@@ -49,7 +49,7 @@ def test_reference_documents_every_public_object(html):
 
 def test_derivations_and_references_are_included(html):
     for page in ("line_circle", "line_disk", "circle_circle", "circle_disk", "disk_disk", "bezier", "bezier_linear",
-                 "arc",
+                 "arc", "annulus",
                  "references"):
         source = (ROOT / "docs" / f"{page}.md").read_text()
         title = source.splitlines()[0].lstrip("# ").strip()
