@@ -13,7 +13,9 @@
 2. Computes 50-digit references by an independent method: circledist_cases/reference.py (linear
    shapes against circles and disks) and reference_round.py (circle, disk and Bezier kinds)
    minimise a closed-form point-to-shape distance over ONE parameter (dense sampling, then
-   golden-section refinement in mpmath); no polynomial, no root finding. The float run gets the
+   golden-section refinement in mpmath); no polynomial, no root finding. Two Bezier curves:
+   reference_bezier.py (the edges by reference_round, the interior by 50-digit descents from a
+   grid, then one parameter along the valley). The float run gets the
    references of its own float-rounded inputs; the long double run's inputs are the doubles
    extended exactly, so it shares the double references. References are cached in
    build/accuracy_vs_time/references.json (keyed by the reference modules' contents).
@@ -74,7 +76,7 @@ DOCS = ROOT / "docs"
 
 def _reference_version():
     h = hashlib.sha256()
-    for name in ("reference.py", "reference_round.py"):
+    for name in ("reference.py", "reference_round.py", "reference_bezier.py"):
         h.update((ROOT / "circledist_cases" / name).read_bytes())
     return h.hexdigest()[:16]
 
@@ -405,7 +407,10 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
         "References: 50-digit mpmath, by an independent method (circledist_cases/reference.py and",
         "circledist_cases/reference_round.py): the distance is minimised over ONE parameter (an angle of a circle or",
         "the curve/line parameter) of a closed-form point-to-shape distance, by dense sampling and",
-        "golden-section refinement; no polynomial and no root finding.",
+        "golden-section refinement; no polynomial and no root finding. Two Bezier curves",
+        "(circledist_cases/reference_bezier.py): the four edges that way, the interior by 50-digit Newton",
+        "descents from a grid's local minima, the best of them then minimised in one parameter along their",
+        "valley (min over s of the distance from A(s) to B).",
         "",
         f"Timing: ns/query is the median over repeated passes (each ~2 ms, at least {min_time} s per",
         "kind x policy x precision x case set) of one single-threaded loop of `circledist::distance<Policy>`",
