@@ -91,20 +91,30 @@ template <class Real> Result<Real> as_arc_result(Result<Real> r, const ArcSpan<R
 // Point against arc: closed form (docs/arc.md, "A point"). The distance from P to the circle's
 // point at angle theta is sqrt(z^2 + rho^2 + R^2 - 2 R rho cos(theta - phi)), phi the angle of P's
 // projection: least at phi and rising on both sides to its greatest at phi + pi. So over the arc
-// it is least at phi when phi lies on the arc (point-circle's answer), otherwise at an end. On the
-// axis (rho = 0) every arc point is as close.
+// it is least at phi when phi lies on the arc (point-circle's answer), otherwise at the end
+// nearer in angle. On the axis (rho = 0) every arc point is as close.
+// The angle is taken from the arc's own start direction u' (the start's in-plane part), not from
+// the canonical frame: no Frame, no theta0, one atan2 (docs/arc.md, "A point": the cost).
 template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
   static constexpr bool defined = true;
   using Whole = detail::PointRoundQuery<Real, false>;
 
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return Whole::distance(p, arc_circle(arc));
-    return closest<Roots>(p, arc).distance;
+    return solve<false>(p, arc).distance;
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Arc3<Real>& arc) {
-    const ArcSpan<Real> span(arc);
-    if (whole_arc(arc)) return as_arc_result(Whole::closest(p, arc_circle(arc)), span, 1);
+    if (whole_arc(arc)) return as_arc_result(Whole::closest(p, arc_circle(arc)), ArcSpan<Real>(arc), 1);
+    return solve<true>(p, arc);
+  }
+
+ private:
+  // The one computation behind distance() (Points false: the points and parameters are not
+  // formed) and closest(): the same distance to the bit.
+  template <bool Points> CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+    constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+    const Real turn = 2 * pi_v<Real>();
     Result<Real> r;
     r.point_a = p;
     if (!(arc.radius > 0)) {  // the center alone
@@ -113,34 +123,93 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       return r;
     }
     const detail::PointOverRound<Real> seen(p, arc.center, arc.normal);
-    const Real ring = length2d(seen.height, seen.radial - arc.radius);
-    if (seen.on_axis(arc.radius)) {  // every arc point as close: the start
+    const Real radius = arc.radius;
+    const Real angle = arc.angle > 0 ? arc.angle : (arc.angle <= 0 ? Real(0) : nan);  // NaN stays NaN
+    const Real ring = length2d(seen.height, seen.radial - radius);
+    // u' = |W|^2 S - (S.W) W, the start's in-plane part times |W|^2 (seen's W, rescaled if it
+    // had to be: no division), and v' = W x u' (|v'| = s |u'|): the arc's u and v up to their
+    // lengths.
+    const Real k = seen.wx * arc.start.x() + seen.wy * arc.start.y() + seen.wz * arc.start.z();
+    const Vec3<Real> u(seen.norm2 * arc.start.x() - k * seen.wx, seen.norm2 * arc.start.y() - k * seen.wy,
+                       seen.norm2 * arc.start.z() - k * seen.wz);
+    const Real u_norm = u.norm();
+    if (!(u_norm > 0)) return cold_solve(p, arc);  // no projection: Frame's U (the definition's fallback)
+    const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
+                       seen.wx * u.y() - seen.wy * u.x());
+    if (seen.on_axis(radius)) {  // every arc point as close: the start
       r.distance = ring;
-      r.point_b = span.world(arc.center, arc.radius, span.lo());
+      r.point_b = arc.center + (radius / u_norm) * u;
       r.unique = false;
       return r;
     }
-    const Real t = span.offset(seen.angle());
-    if (t <= span.angle) {
-      r.distance = ring;
-      r.point_b = seen.on_rim(arc.center, arc.radius);
-      r.param_b = Vec2<Real>(t, 0);
+    // The point's angle from u toward v, in [0, 2 pi): q = s^2 (d - z N) against u' and v' / s.
+    const typename detail::PointOverRound<Real>::InPlane q = seen.in_plane();
+    Real t = detail::atan2(q.x * v.x() + q.y * v.y() + q.z * v.z(), seen.s * (q.x * u.x() + q.y * u.y() + q.z * u.z()));
+    t = detail::select(t < 0, t + turn, t);
+    if (!(t == t) || !(angle == angle)) {  // a NaN normal or angle (out of line in effect: rare)
+      r.distance = nan;
       return r;
     }
-    // Off the arc: the nearer end; both ends as near (P on the plane through the axis that
-    // bisects the gap) is two closest pairs.
-    // From the center (p - c exact for nearby coordinates): the world end points round by an ulp
-    // of their coordinates, 1e-10 at 1e6.
+    if (t <= angle) {
+      r.distance = ring;
+      if constexpr (Points) {
+        r.point_b = seen.on_rim(arc.center, radius);
+        r.param_b = Vec2<Real>(t, 0);
+      }
+      return r;
+    }
+    // Off the arc: the end nearer in angle is the nearer (the distance rises with the angular
+    // gap, up to pi). Where the gaps are within `margin` of each other (P near the plane through
+    // the axis that bisects the arc's gap) both ends are measured: the nearer, or two closest
+    // pairs when they tie. From the center (p - c exact for nearby coordinates): the world end
+    // points round by an ulp of their coordinates, 1e-10 at 1e6.
+    const Real to_end = t - angle, to_start = turn - t;
+    constexpr Real margin = Real(1) / (1 << 20);
     const Vec3<Real> d = p - arc.center;
-    const Vec3<Real> e0 = span.from_center(arc.radius, span.lo()), e1 = span.from_center(arc.radius, span.hi());
-    const Real d0 = (d - e0).norm(), d1 = (d - e1).norm();
+    const Real to_u = radius / u_norm;
+    const Vec3<Real> e0 = to_u * u;
+    const Real d0 = (d - e0).norm();
+    if (to_start < to_end - margin) {  // the start: no trigonometry
+      r.distance = d0;
+      if constexpr (Points) r.point_b = arc.center + e0;
+      return r;
+    }
+    // The far end, radius (cos a u' / |u'| + sin a v' / (s |u'|)).
+    const Real to_v = to_u / seen.s;
+    const Vec3<Real> e1 = (std::cos(angle) * to_u) * u + (std::sin(angle) * to_v) * v;
+    const Real d1 = (d - e1).norm();
+    if (to_end < to_start - margin) {
+      r.distance = d1;
+      if constexpr (Points) {
+        r.point_b = arc.center + e1;
+        r.param_b = Vec2<Real>(angle, 0);
+      }
+      return r;
+    }
     const bool first = d0 <= d1;
     r.distance = first ? d0 : d1;
     r.point_b = arc.center + (first ? e0 : e1);
-    r.param_b = Vec2<Real>(first ? Real(0) : span.angle, 0);
-    r.unique = !(std::abs(d0 - d1) <= tie_tolerance(std::max(arc.radius, r.distance)) &&
-                 (e0 - e1).norm() > distinct_points_tolerance(arc.radius));
+    r.param_b = Vec2<Real>(first ? Real(0) : angle, 0);
+    r.unique = !(std::abs(d0 - d1) <= tie_tolerance(std::max(radius, r.distance)) &&
+                 (e0 - e1).norm() > distinct_points_tolerance(radius));
     return r;
+  }
+
+  // A start with no in-plane part: the arc starts at Frame's U (ArcSpan's theta0 = 0); the
+  // general form through the canonical angle, out of line (rare).
+#if defined(__GNUC__) || defined(__clang__)
+  __attribute__((noinline, cold))
+#endif
+  static Result<Real> cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+    Arc3<Real> a = arc;
+    a.start = Frame<Real>(arc.normal).u;
+    if (!(a.start.squaredNorm() > 0)) {  // a zero or NaN normal: no answer
+      Result<Real> r;
+      r.point_a = p;
+      r.distance = std::numeric_limits<Real>::quiet_NaN();
+      return r;
+    }
+    return solve<true>(p, a);
   }
 };
 
