@@ -481,6 +481,136 @@ void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real 
     if (std::isfinite(tau)) push_end(tau);
 }
 
+// The fast path (docs/arc.md, "A line, ray or segment: the fast path"). Over the whole circle the
+// squared distance to the full line has at most two local minima, the global one
+// (line_ring_minimum) and, inside the astroid, the other (other_line_minimum). The arc's
+// distance to the piece is least at an arc end, or at an interior angle where it is a local
+// minimum over the whole circle of the distance to the piece: there the piece's closest point is
+// inside the piece (a local minimum of the line's distance, with its foot on the piece) or one of
+// its ends E (the angle of E's projection, point-arc's answer for E). Every candidate value is the
+// distance between a point of the arc and a point of the piece, so the least is the distance.
+// The arc's unit u and v and its end points, relative to its center.
+template <class Real> struct ArcEnds {
+  Vec3<Real> u, v, end[2];
+  Real angle = 0;
+  bool usable = false;  // false: a start along the normal, a zero or huge normal, a NaN angle
+
+  explicit ArcEnds(const Arc3<Real>& a) {
+    const Real n2 = a.normal.squaredNorm();
+    const Vec3<Real> q = n2 * a.start - a.normal.dot(a.start) * a.normal;  // |W|^2 times the in-plane part
+    const Real length = q.norm();
+    usable = length > 0 && std::isfinite(length) && n2 > 0 && std::isfinite(n2) && !std::isnan(a.angle);
+    if (!usable) return;
+    u = q / length;
+    v = a.normal.cross(u) / std::sqrt(n2);
+    angle = std::max(a.angle, Real(0));
+    end[0] = a.radius * u;
+    end[1] = a.radius * (std::cos(angle) * u + std::sin(angle) * v);
+  }
+  // The arc's t of a point relative to the center (its angle from u toward v), in [0, 2 pi).
+  Real offset(const Vec3<Real>& p) const {
+    const Real t = detail::atan2(p.dot(v), p.dot(u));
+    return t < 0 ? t + 2 * pi_v<Real>() : t;
+  }
+};
+
+// A piece moved by -c (its points relative to the arc's center: exact for nearby coordinates).
+template <class Real> Line3<Real> shifted(const Line3<Real>& l, const Vec3<Real>& c) { return {l.origin - c, l.direction}; }
+template <class Real> Ray3<Real> shifted(const Ray3<Real>& r, const Vec3<Real>& c) { return {r.origin - c, r.direction}; }
+template <class Real> Segment3<Real> shifted(const Segment3<Real>& s, const Vec3<Real>& c) { return {s.p0 - c, s.p1 - c}; }
+
+// The fast path's answer: the least candidate, and whether another lies within the tie
+// tolerance at distinct points (closest() then takes the pair and `unique` from the general path).
+template <class Real> struct PieceArcPick {
+  Real value = std::numeric_limits<Real>::infinity();
+  Vec3<Real> piece_point = Vec3<Real>::Zero(), arc_point = Vec3<Real>::Zero();  // world
+  Real piece_param = 0, arc_param = 0;
+  bool unique = true, tied = false;
+};
+
+// False where the fast path does not decide (the general path answers): the line declined by
+// line_ring_minimum or along the axis, the second minimum undecided, a segment too long for its
+// line (piece_line).
+template <class Roots, class Real, class Piece>
+bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real>& out, bool for_closest) {
+  const ArcEnds<Real> ends(arc);
+  if (!ends.usable) return false;
+  const Circle3<Real> c = arc_circle(arc);
+  const PieceLine<Real> pl = piece_line(piece, arc.radius);
+  if (!pl.usable) return false;
+  LineRingMinimum<Real> m;
+  if (!line_ring_minimum<Roots>(pl.line, c, m) || m.on_axis) return false;
+  const SecondMinimumTest<Real> test = second_minimum_test(m, arc.radius);
+  LineRingMinimum<Real> second;
+  const int other = other_line_minimum<Roots>(m, arc.radius, second, [](Real) { return true; }, test);
+  if (other < 0) return false;
+  const Linear<Real> linear = as_linear(piece);
+  PieceArcPick<Real> list[6];
+  int count = 0;
+  const auto add_line_minimum = [&](const LineRingMinimum<Real>& minimum) {
+    const Real t = ends.offset(minimum.ring_point);
+    if (!(t <= ends.angle) || !on_piece(pl.line, c.center, minimum.line_point, linear)) return;
+    PieceArcPick<Real>& k = list[count++];
+    k.value = minimum.distance;
+    if (for_closest) {
+      k.piece_point = c.center + minimum.line_point;
+      k.arc_point = c.center + minimum.ring_point;
+      k.piece_param = line_param(pl.line, c.center, minimum.line_point);
+      k.arc_param = t;
+    }
+  };
+  add_line_minimum(m);
+  if (other == 1) add_line_minimum(second);
+  using PointPiece = Query<Vec3<Real>, Piece>;
+  using PointArc = Query<Vec3<Real>, Arc3<Real>>;
+  const Piece local = shifted(piece, c.center);
+  for (int e = 0; e < 2; ++e) {
+    PieceArcPick<Real>& k = list[count++];
+    if (for_closest) {
+      const Result<Real> r = PointPiece::template closest<Roots>(ends.end[e], local);
+      k.value = r.distance;
+      k.piece_point = c.center + r.point_b;
+      k.piece_param = r.param_b.x();
+      k.arc_point = c.center + ends.end[e];
+      k.arc_param = e == 0 ? Real(0) : ends.angle;
+      k.unique = r.unique;
+    } else {
+      k.value = PointPiece::template distance<Roots>(ends.end[e], local);
+    }
+  }
+  for (const Real tau : {linear.lo, linear.hi}) {
+    if (!std::isfinite(tau)) continue;
+    const Vec3<Real> end = piece_end(piece, tau);
+    PieceArcPick<Real>& k = list[count++];
+    if (for_closest) {
+      const Result<Real> r = PointArc::template closest<Roots>(end, arc);
+      k.value = r.distance;
+      k.piece_point = end;
+      k.piece_param = tau;
+      k.arc_point = r.point_b;
+      k.arc_param = r.param_b.x();
+      k.unique = r.unique;
+    } else {
+      k.value = PointArc::template distance<Roots>(end, arc);
+    }
+  }
+  int best = 0;
+  for (int i = 1; i < count; ++i)
+    if (list[i].value < list[best].value) best = i;
+  out = list[best];
+  if (!(out.value == out.value)) return false;  // NaN: the general path's answer
+  if (for_closest) {
+    const Real scale = std::max(arc.radius, out.value);
+    const Real tie = tie_tolerance(scale), apart = distinct_points_tolerance(scale);
+    for (int i = 0; i < count; ++i)
+      if (i != best && list[i].value <= out.value + tie &&
+          ((list[i].arc_point - out.arc_point).norm() > apart || (list[i].piece_point - out.piece_point).norm() > apart))
+        out.tied = true;
+    if (!out.unique) out.tied = true;
+  }
+  return true;
+}
+
 template <class Real, class Piece> struct PieceArcQuery {
   static constexpr bool defined = true;
   using Circle = Query<Piece, Circle3<Real>>;
@@ -503,6 +633,8 @@ template <class Real, class Piece> struct PieceArcQuery {
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return Circle::template distance<Roots>(piece, arc_circle(arc));
     if (!(arc.radius > 0)) return Point::template distance<Roots>(arc.center, piece);
+    PieceArcPick<Real> pick;
+    if (piece_arc_fast<Roots>(piece, arc, pick, false)) return pick.value;
     const Round<Real> round(arc.center, arc.normal, arc.radius);
     const LocalLinear<Real> line(as_linear(piece), round);
     return solve<Roots>(ArcSpan<Real>(arc), line, arc.radius, linear_round_scale(line, arc.radius)).best.value;
@@ -512,6 +644,17 @@ template <class Real, class Piece> struct PieceArcQuery {
     const ArcSpan<Real> span(arc);
     if (whole_arc(arc)) return as_arc_result(Circle::template closest<Roots>(piece, arc_circle(arc)), span, 1);
     if (!(arc.radius > 0)) return Point::template closest<Roots>(arc.center, piece).swapped();
+    PieceArcPick<Real> pick;
+    const bool fast = piece_arc_fast<Roots>(piece, arc, pick, true);
+    if (fast && !pick.tied) {
+      Result<Real> r;
+      r.distance = pick.value;
+      r.point_a = pick.piece_point;
+      r.param_a = Vec2<Real>(pick.piece_param, 0);
+      r.point_b = pick.arc_point;
+      r.param_b = Vec2<Real>(pick.arc_param, 0);
+      return r;
+    }
     const Round<Real> round(arc.center, arc.normal, arc.radius);
     const Linear<Real> linear = as_linear(piece);
     const LocalLinear<Real> line(linear, round);
@@ -524,7 +667,9 @@ template <class Real, class Piece> struct PieceArcQuery {
     const Vec3<Real> pa = at(best);
     const Vec3<Real> pb = over.point(pa);
     Result<Real> r;
-    r.distance = minima.best.value;
+    // A tie the fast path saw: the general path's pair and `unique`, the fast path's distance
+    // (as distance() answers it).
+    r.distance = fast ? pick.value : minima.best.value;
     Real t;
     r.point_a = piece_point(linear, line, round, over.tau_of(pa), t);
     r.param_a = Vec2<Real>(t, 0);
