@@ -489,27 +489,34 @@ void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real 
 // inside the piece (a local minimum of the line's distance, with its foot on the piece) or one of
 // its ends E (the angle of E's projection, point-arc's answer for E). Every candidate value is the
 // distance between a point of the arc and a point of the piece, so the least is the distance.
-// The arc's unit u and v and its end points, relative to its center.
+// The arc's unit u and v and its end points, relative to its center (u from |W|^2 S - (S.W) W, as
+// point-arc takes it).
 template <class Real> struct ArcEnds {
-  Vec3<Real> u, v, end[2];
-  Real angle = 0;
+  Vec3<Real> u, v;  // |W|^2 times the start's in-plane part (u'), and W x u' (|v| = |W| |u|)
+  Vec3<Real> end[2];
+  Real angle = 0, s = 0, length = 0;  // |W|, |u|
   bool usable = false;  // false: a start along the normal, a zero or huge normal, a NaN angle
 
+  // Unnormalized (no division: the sector test is an angle, scale-free; find_ends scales).
   explicit ArcEnds(const Arc3<Real>& a) {
     const Real n2 = a.normal.squaredNorm();
-    const Vec3<Real> q = n2 * a.start - a.normal.dot(a.start) * a.normal;  // |W|^2 times the in-plane part
-    const Real length = q.norm();
+    u = n2 * a.start - a.normal.dot(a.start) * a.normal;
+    length = u.norm();
     usable = length > 0 && std::isfinite(length) && n2 > 0 && std::isfinite(n2) && !std::isnan(a.angle);
     if (!usable) return;
-    u = q / length;
-    v = a.normal.cross(u) / std::sqrt(n2);
+    s = std::sqrt(n2);
+    v = a.normal.cross(u);
     angle = std::max(a.angle, Real(0));
-    end[0] = a.radius * u;
-    end[1] = a.radius * (std::cos(angle) * u + std::sin(angle) * v);
+  }
+  // The end points (a sine and cosine: only where the ends are candidates).
+  void find_ends(Real radius) {
+    const Real to_u = radius / length, to_v = to_u / s;
+    end[0] = to_u * u;
+    end[1] = (std::cos(angle) * to_u) * u + (std::sin(angle) * to_v) * v;
   }
   // The arc's t of a point relative to the center (its angle from u toward v), in [0, 2 pi).
   Real offset(const Vec3<Real>& p) const {
-    const Real t = detail::atan2(p.dot(v), p.dot(u));
+    const Real t = detail::atan2(p.dot(v), s * p.dot(u));
     return t < 0 ? t + 2 * pi_v<Real>() : t;
   }
 };
@@ -531,43 +538,63 @@ template <class Real> struct PieceArcPick {
 // False where the fast path does not decide (the general path answers): the line declined by
 // line_ring_minimum or along the axis, the second minimum undecided, a segment too long for its
 // line (piece_line).
-template <class Roots, class Real, class Piece>
-bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real>& out, bool for_closest) {
-  const ArcEnds<Real> ends(arc);
+template <class Roots, bool for_closest, class Real, class Piece>
+bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real>& out) {
+  ArcEnds<Real> ends(arc);
   if (!ends.usable) return false;
   const Circle3<Real> c = arc_circle(arc);
   const PieceLine<Real> pl = piece_line(piece, arc.radius);
   if (!pl.usable) return false;
   LineRingMinimum<Real> m;
   if (!line_ring_minimum<Roots>(pl.line, c, m) || m.on_axis) return false;
+  const Linear<Real> linear = as_linear(piece);
+  // The line's global minimum over the whole circle on the arc, its foot on the piece: no point of
+  // the arc is nearer the line, so none nearer the piece, and this pair is the answer. It is the
+  // only pair at that distance unless it is tied with its mirror image (the trust-region
+  // subproblem's global minimizer is unique outside its hard case, b1 = 0, which the mirror
+  // bounds: line_ring_minimum.hpp), where closest() asks the general path.
+  const Real global_t = ends.offset(m.ring_point);
+  if (global_t <= ends.angle && on_piece(pl.line, c.center, m.line_point, linear)) {
+    out.value = m.distance;
+    if constexpr (for_closest) {
+      out.piece_point = c.center + m.line_point;
+      out.arc_point = c.center + m.ring_point;
+      out.piece_param = line_param(pl.line, c.center, m.line_point);
+      out.arc_param = global_t;
+      out.tied = tied_with_mirror(c, m);
+    }
+    return out.value == out.value;
+  }
   const SecondMinimumTest<Real> test = second_minimum_test(m, arc.radius);
   LineRingMinimum<Real> second;
   const int other = other_line_minimum<Roots>(m, arc.radius, second, [](Real) { return true; }, test);
   if (other < 0) return false;
-  const Linear<Real> linear = as_linear(piece);
-  PieceArcPick<Real> list[6];
+  // Closest points keep every candidate (for the tie test); the distance keeps the least value.
+  PieceArcPick<Real> list[for_closest ? 6 : 1];
   int count = 0;
-  const auto add_line_minimum = [&](const LineRingMinimum<Real>& minimum) {
-    const Real t = ends.offset(minimum.ring_point);
-    if (!(t <= ends.angle) || !on_piece(pl.line, c.center, minimum.line_point, linear)) return;
-    PieceArcPick<Real>& k = list[count++];
-    k.value = minimum.distance;
-    if (for_closest) {
-      k.piece_point = c.center + minimum.line_point;
-      k.arc_point = c.center + minimum.ring_point;
-      k.piece_param = line_param(pl.line, c.center, minimum.line_point);
-      k.arc_param = t;
+  Real least = std::numeric_limits<Real>::infinity();
+  if (other == 1) {  // the global minimum is off the arc or the piece (above)
+    const Real t = ends.offset(second.ring_point);
+    if (t <= ends.angle && on_piece(pl.line, c.center, second.line_point, linear)) {
+      least = second.distance;
+      if constexpr (for_closest) {
+        PieceArcPick<Real>& k = list[count++];
+        k.value = second.distance;
+        k.piece_point = c.center + second.line_point;
+        k.arc_point = c.center + second.ring_point;
+        k.piece_param = line_param(pl.line, c.center, second.line_point);
+        k.arc_param = t;
+      }
     }
-  };
-  add_line_minimum(m);
-  if (other == 1) add_line_minimum(second);
+  }
   using PointPiece = Query<Vec3<Real>, Piece>;
   using PointArc = Query<Vec3<Real>, Arc3<Real>>;
   const Piece local = shifted(piece, c.center);
+  ends.find_ends(arc.radius);
   for (int e = 0; e < 2; ++e) {
-    PieceArcPick<Real>& k = list[count++];
-    if (for_closest) {
+    if constexpr (for_closest) {
       const Result<Real> r = PointPiece::template closest<Roots>(ends.end[e], local);
+      PieceArcPick<Real>& k = list[count++];
       k.value = r.distance;
       k.piece_point = c.center + r.point_b;
       k.piece_param = r.param_b.x();
@@ -575,15 +602,15 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
       k.arc_param = e == 0 ? Real(0) : ends.angle;
       k.unique = r.unique;
     } else {
-      k.value = PointPiece::template distance<Roots>(ends.end[e], local);
+      least = std::min(least, PointPiece::template distance<Roots>(ends.end[e], local));
     }
   }
   for (const Real tau : {linear.lo, linear.hi}) {
     if (!std::isfinite(tau)) continue;
     const Vec3<Real> end = piece_end(piece, tau);
-    PieceArcPick<Real>& k = list[count++];
-    if (for_closest) {
+    if constexpr (for_closest) {
       const Result<Real> r = PointArc::template closest<Roots>(end, arc);
+      PieceArcPick<Real>& k = list[count++];
       k.value = r.distance;
       k.piece_point = end;
       k.piece_param = tau;
@@ -591,15 +618,16 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
       k.arc_param = r.param_b.x();
       k.unique = r.unique;
     } else {
-      k.value = PointArc::template distance<Roots>(end, arc);
+      least = std::min(least, PointArc::template distance<Roots>(end, arc));
     }
   }
-  int best = 0;
-  for (int i = 1; i < count; ++i)
-    if (list[i].value < list[best].value) best = i;
-  out = list[best];
-  if (!(out.value == out.value)) return false;  // NaN: the general path's answer
-  if (for_closest) {
+  if constexpr (!for_closest) {
+    out.value = least;
+  } else {
+    int best = 0;
+    for (int i = 1; i < count; ++i)
+      if (list[i].value < list[best].value) best = i;
+    out = list[best];
     const Real scale = std::max(arc.radius, out.value);
     const Real tie = tie_tolerance(scale), apart = distinct_points_tolerance(scale);
     for (int i = 0; i < count; ++i)
@@ -608,7 +636,9 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
         out.tied = true;
     if (!out.unique) out.tied = true;
   }
-  return true;
+  // Non-finite input is declined above (line_ring_minimum, ArcEnds); a NaN least all the same
+  // goes to the general path.
+  return out.value == out.value;
 }
 
 template <class Real, class Piece> struct PieceArcQuery {
@@ -634,7 +664,7 @@ template <class Real, class Piece> struct PieceArcQuery {
     if (whole_arc(arc)) return Circle::template distance<Roots>(piece, arc_circle(arc));
     if (!(arc.radius > 0)) return Point::template distance<Roots>(arc.center, piece);
     PieceArcPick<Real> pick;
-    if (piece_arc_fast<Roots>(piece, arc, pick, false)) return pick.value;
+    if (piece_arc_fast<Roots, false>(piece, arc, pick)) return pick.value;
     const Round<Real> round(arc.center, arc.normal, arc.radius);
     const LocalLinear<Real> line(as_linear(piece), round);
     return solve<Roots>(ArcSpan<Real>(arc), line, arc.radius, linear_round_scale(line, arc.radius)).best.value;
@@ -645,7 +675,7 @@ template <class Real, class Piece> struct PieceArcQuery {
     if (whole_arc(arc)) return as_arc_result(Circle::template closest<Roots>(piece, arc_circle(arc)), span, 1);
     if (!(arc.radius > 0)) return Point::template closest<Roots>(arc.center, piece).swapped();
     PieceArcPick<Real> pick;
-    const bool fast = piece_arc_fast<Roots>(piece, arc, pick, true);
+    const bool fast = piece_arc_fast<Roots, true>(piece, arc, pick);
     if (fast && !pick.tied) {
       Result<Real> r;
       r.distance = pick.value;
