@@ -217,38 +217,41 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
 // The arc parametrized against another shape (docs/arc.md, "The arc parametrized").
 
 // Room for every query's candidates: the circle's (24 at most), two end angles, and the arc's
-// own starts (its ends and kArcSamples - 1 angles between them).
+// two ends.
 constexpr int kArcCapacity = 64;
-constexpr int kArcSamples = 8;
 template <class Real> using ArcCandidates = Candidates<Real, kArcCapacity>;
 template <class Real> using ArcMinima = Minima<Real, kArcCapacity>;
 
-// The least distance h reaches at the arc's ends and kArcSamples - 1 angles between them: a
-// distance the arc reaches, the bound its circle's octic is searched under
-// (ring_search_intervals). The whole circle's own samples (sampled_distances) may lie off the arc.
+// The least distance h reaches at the arc's ends and angles between them spaced at most pi/4
+// apart (a whole circle: eight, as circle-circle samples it): a distance the arc reaches, the
+// bound its circle's octic is searched under (ring_search_intervals; the tighter it is, the
+// fewer intervals searched). The whole circle's own samples (sampled_distances) may lie off the
+// arc. docs/arc.md, "Cost".
 template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H& h) {
+  const int pieces = std::min(8, std::max(1, int(std::ceil(span.angle * (4 / pi_v<Real>())))));
   Real best = std::numeric_limits<Real>::infinity();
-  for (int k = 0; k <= kArcSamples; ++k) best = std::min(best, h(span.lo() + span.angle * k / kArcSamples));
+  for (int k = 0; k <= pieces; ++k) best = std::min(best, h(span.lo() + span.angle * k / pieces));
   return best;
 }
 
-// The candidates of the whole circle that fall on the arc (moved to the turn that holds them),
-// the arc's two ends and `samples` - 1 angles between them, polished on [lo, hi] on the exact
-// distance h (jet: its square's derivatives), as polish_angles does on the whole circle. The
-// ends are exact candidates (the minimum on an interval can sit at an end); the samples
-// (kArcSamples against a round or an arc, none against a piece) are starts where the circle's
-// candidates say nothing about the arc (a circle nearly coincident with the other round, whose
-// octic is rounding noise, as circle-circle's eight samples).
+// The candidates of the whole circle that fall on the arc (moved to the turn that holds them)
+// and the arc's two ends, polished on [lo, hi] on the exact distance h (jet: its square's
+// derivatives), as polish_angles does on the whole circle. The ends are exact candidates (the
+// minimum on an interval can sit at an end). No samples of the arc's own: where the circle's
+// roots say nothing (a circle nearly coincident with the other round, whose octic is rounding
+// noise) the circle's candidates already carry circle-circle's eight samples, and those on the
+// arc with its ends start every basin the arc holds (docs/arc.md, "Why no samples").
 template <class Roots, class Real, int N, class J, class H>
 ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, N>& candidates, const J& jet,
-                              const H& h, Real radius, Real scale, int samples = kArcSamples) {
+                              const H& h, Real radius, Real scale) {
   ArcCandidates<Real> starts;
   if (!(span.angle >= 0) || !std::isfinite(span.lo())) {  // a NaN angle or normal: no answer, NaN
     ArcMinima<Real> none;
     none.best = Minimum<Real>{span.lo(), std::numeric_limits<Real>::quiet_NaN()};
     return none;
   }
-  for (int k = 0; k <= samples; ++k) starts.push(k == samples ? span.hi() : span.lo() + span.angle * k / samples);
+  starts.push(span.lo());
+  starts.push(span.hi());
   for (int i = 0; i < candidates.count; ++i) {
     const Real t = span.offset(candidates.value[i]);
     if (t <= span.angle) starts.push(span.lo() + t);
@@ -657,7 +660,7 @@ template <class Real, class Piece> struct PieceArcQuery {
     };
     Candidates<Real, 24> candidates;
     push_piece_arc_candidates<Roots>(line, radius, scale, candidates);
-    return polish_on_arc<Roots>(span, candidates, jet, h, radius, scale, 1);
+    return polish_on_arc<Roots>(span, candidates, jet, h, radius, scale);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Arc3<Real>& arc) {
