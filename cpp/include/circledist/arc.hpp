@@ -524,10 +524,27 @@ template <class Real> struct ArcEnds {
   }
 };
 
-// A piece moved by -c (its points relative to the arc's center: exact for nearby coordinates).
-template <class Real> Line3<Real> shifted(const Line3<Real>& l, const Vec3<Real>& c) { return {l.origin - c, l.direction}; }
-template <class Real> Ray3<Real> shifted(const Ray3<Real>& r, const Vec3<Real>& c) { return {r.origin - c, r.direction}; }
-template <class Real> Segment3<Real> shifted(const Segment3<Real>& s, const Vec3<Real>& c) { return {s.p0 - c, s.p1 - c}; }
+// The piece relative to the arc's center c along its line's anchor a (its point nearest c, from
+// line_ring_minimum, to one rounding) and unit direction m: tau in [lo, hi] from a, the ends'
+// tau taken as (E - c).m (rounding along the line only). A point's distance |w - clamp(w.m) m|,
+// w = p - a, stays accurate however far the piece's origin lies, where the point-ray closed form
+// from a far origin would carry eps |origin - c| across the line into every distance.
+template <class Real> struct AnchoredPiece {
+  Vec3<Real> anchor, dir;
+  Real lo, hi;
+
+  template <class Piece>
+  AnchoredPiece(const Piece& piece, const Linear<Real>& linear, const LineRingMinimum<Real>& m, const Vec3<Real>& c)
+      : anchor(m.anchor), dir(m.unit_direction), lo(linear.lo), hi(linear.hi) {
+    if (std::isfinite(lo)) lo = (piece_end(piece, lo) - c).dot(dir);
+    if (std::isfinite(hi)) hi = (piece_end(piece, hi) - c).dot(dir);
+  }
+  Vec3<Real> point(const Vec3<Real>& p) const {
+    const Real tau = std::min(std::max((p - anchor).dot(dir), lo), hi);
+    return anchor + tau * dir;
+  }
+  Real distance(const Vec3<Real>& p) const { return (p - point(p)).norm(); }
+};
 
 // The fast path's answer: the least candidate, and whether another lies within the tie
 // tolerance at distinct points (closest() then takes the pair and `unique` from the general path).
@@ -590,22 +607,20 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
       }
     }
   }
-  using PointPiece = Query<Vec3<Real>, Piece>;
   using PointArc = Query<Vec3<Real>, Arc3<Real>>;
-  const Piece local = shifted(piece, c.center);
+  const AnchoredPiece<Real> local(piece, linear, m, c.center);
   ends.find_ends(arc.radius);
   for (int e = 0; e < 2; ++e) {
     if constexpr (for_closest) {
-      const Result<Real> r = PointPiece::template closest<Roots>(ends.end[e], local);
+      const Vec3<Real> q = local.point(ends.end[e]);
       PieceArcPick<Real>& k = list[count++];
-      k.value = r.distance;
-      k.piece_point = c.center + r.point_b;
-      k.piece_param = r.param_b.x();
+      k.value = (ends.end[e] - q).norm();
+      k.piece_point = c.center + q;
+      k.piece_param = line_param(pl.line, c.center, q);  // the piece's own parameter
       k.arc_point = c.center + ends.end[e];
       k.arc_param = e == 0 ? Real(0) : ends.angle;
-      k.unique = r.unique;
     } else {
-      least = std::min(least, PointPiece::template distance<Roots>(ends.end[e], local));
+      least = std::min(least, local.distance(ends.end[e]));
     }
   }
   for (const Real tau : {linear.lo, linear.hi}) {
