@@ -8,7 +8,9 @@
 // Query<Circle3, Disk3>::candidates; for a piece, the quartic of its line's distance), the arc's
 // ends and, where the other shape's closest point is one of its own ends (a ray's or segment's,
 // another arc's), that end's stationary angle; each polished on the interval (polish_offsets,
-// detail/angle_polish.hpp). An arc of angle 2 pi is its circle, answered by the circle's query.
+// detail/angle_polish.hpp). A piece is first asked the fast way (piece_arc_fast): the line's
+// minima over the ring (line_ring_minimum, other_line_minimum) on the arc, the arc's ends and the
+// piece's ends, no quartic. An arc of angle 2 pi is its circle, answered by the circle's query.
 #pragma once
 
 #include "circle_circle.hpp"
