@@ -272,6 +272,12 @@ void point_tests() {
   }
 }
 
+// The piece's origin moved back along it by `far` (a line: the same line; a ray or segment: a
+// longer one): distances near the arc from a far origin (the fast path's anchored piece, arc.hpp).
+Line far_back(const Line& l, double far) { return {l.origin - far * l.direction.normalized(), l.direction}; }
+Ray far_back(const Ray& r, double far) { return {r.origin - far * r.direction.normalized(), r.direction}; }
+Segment far_back(const Segment& s, double far) { return {s.p0 - far * (s.p1 - s.p0).normalized(), s.p1}; }
+
 template <class Piece> void piece_random(const char* kind, Draw& d, const std::function<Piece(Draw&, const Arc&)>& draw) {
   for (int k = 0; k < int(120 * ARC_RANDOM_SCALE); ++k) {
     const Arc a = d.arc();
@@ -282,6 +288,10 @@ template <class Piece> void piece_random(const char* kind, Draw& d, const std::f
       const Piece pt = moved(p, t);
       const Arc at = moved(a, t);
       arc_case(kind, "translated 1e6", pt, at, ref_piece_arc(pt, at));
+    }
+    if (k % 6 == 0) {
+      const Piece pf = far_back(p, 1e5);
+      arc_case(kind, "origin far back", pf, a, ref_piece_arc(pf, a));
     }
     if (k % 10 == 0) whole_case(kind, p, Arc{a.center, a.normal, a.radius, a.start, kTurn});
   }

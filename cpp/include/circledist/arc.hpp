@@ -8,7 +8,9 @@
 // Query<Circle3, Disk3>::candidates; for a piece, the quartic of its line's distance), the arc's
 // ends and, where the other shape's closest point is one of its own ends (a ray's or segment's,
 // another arc's), that end's stationary angle; each polished on the interval (polish_offsets,
-// detail/angle_polish.hpp). An arc of angle 2 pi is its circle, answered by the circle's query.
+// detail/angle_polish.hpp). A piece is first asked the fast way (piece_arc_fast): the line's
+// minima over the ring (line_ring_minimum, other_line_minimum) on the arc, the arc's ends and the
+// piece's ends, no quartic. An arc of angle 2 pi is its circle, answered by the circle's query.
 #pragma once
 
 #include "circle_circle.hpp"
@@ -91,20 +93,30 @@ template <class Real> Result<Real> as_arc_result(Result<Real> r, const ArcSpan<R
 // Point against arc: closed form (docs/arc.md, "A point"). The distance from P to the circle's
 // point at angle theta is sqrt(z^2 + rho^2 + R^2 - 2 R rho cos(theta - phi)), phi the angle of P's
 // projection: least at phi and rising on both sides to its greatest at phi + pi. So over the arc
-// it is least at phi when phi lies on the arc (point-circle's answer), otherwise at an end. On the
-// axis (rho = 0) every arc point is as close.
+// it is least at phi when phi lies on the arc (point-circle's answer), otherwise at the end
+// nearer in angle. On the axis (rho = 0) every arc point is as close.
+// The angle is taken from the arc's own start direction u' (the start's in-plane part), not from
+// the canonical frame: no Frame, no theta0, one atan2 (docs/arc.md, "A point": the cost).
 template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
   static constexpr bool defined = true;
   using Whole = detail::PointRoundQuery<Real, false>;
 
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return Whole::distance(p, arc_circle(arc));
-    return closest<Roots>(p, arc).distance;
+    return solve<false>(p, arc).distance;
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Arc3<Real>& arc) {
-    const ArcSpan<Real> span(arc);
-    if (whole_arc(arc)) return as_arc_result(Whole::closest(p, arc_circle(arc)), span, 1);
+    if (whole_arc(arc)) return as_arc_result(Whole::closest(p, arc_circle(arc)), ArcSpan<Real>(arc), 1);
+    return solve<true>(p, arc);
+  }
+
+ private:
+  // The one computation behind distance() (Points false: the points and parameters are not
+  // formed) and closest(): the same distance to the bit.
+  template <bool Points> CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+    constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+    const Real turn = 2 * pi_v<Real>();
     Result<Real> r;
     r.point_a = p;
     if (!(arc.radius > 0)) {  // the center alone
@@ -113,34 +125,93 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       return r;
     }
     const detail::PointOverRound<Real> seen(p, arc.center, arc.normal);
-    const Real ring = length2d(seen.height, seen.radial - arc.radius);
-    if (seen.on_axis(arc.radius)) {  // every arc point as close: the start
+    const Real radius = arc.radius;
+    const Real angle = arc.angle > 0 ? arc.angle : (arc.angle <= 0 ? Real(0) : nan);  // NaN stays NaN
+    const Real ring = length2d(seen.height, seen.radial - radius);
+    // u' = |W|^2 S - (S.W) W, the start's in-plane part times |W|^2 (seen's W, rescaled if it
+    // had to be: no division), and v' = W x u' (|v'| = s |u'|): the arc's u and v up to their
+    // lengths.
+    const Real k = seen.wx * arc.start.x() + seen.wy * arc.start.y() + seen.wz * arc.start.z();
+    const Vec3<Real> u(seen.norm2 * arc.start.x() - k * seen.wx, seen.norm2 * arc.start.y() - k * seen.wy,
+                       seen.norm2 * arc.start.z() - k * seen.wz);
+    const Real u_norm = u.norm();
+    if (!(u_norm > 0)) return cold_solve(p, arc);  // no projection: Frame's U (the definition's fallback)
+    const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
+                       seen.wx * u.y() - seen.wy * u.x());
+    if (seen.on_axis(radius)) {  // every arc point as close: the start
       r.distance = ring;
-      r.point_b = span.world(arc.center, arc.radius, span.lo());
+      r.point_b = arc.center + (radius / u_norm) * u;
       r.unique = false;
       return r;
     }
-    const Real t = span.offset(seen.angle());
-    if (t <= span.angle) {
-      r.distance = ring;
-      r.point_b = seen.on_rim(arc.center, arc.radius);
-      r.param_b = Vec2<Real>(t, 0);
+    // The point's angle from u toward v, in [0, 2 pi): q = s^2 (d - z N) against u' and v' / s.
+    const typename detail::PointOverRound<Real>::InPlane q = seen.in_plane();
+    Real t = detail::atan2(q.x * v.x() + q.y * v.y() + q.z * v.z(), seen.s * (q.x * u.x() + q.y * u.y() + q.z * u.z()));
+    t = detail::select(t < 0, t + turn, t);
+    if (!(t == t) || !(angle == angle)) {  // a NaN normal or angle (out of line in effect: rare)
+      r.distance = nan;
       return r;
     }
-    // Off the arc: the nearer end; both ends as near (P on the plane through the axis that
-    // bisects the gap) is two closest pairs.
-    // From the center (p - c exact for nearby coordinates): the world end points round by an ulp
-    // of their coordinates, 1e-10 at 1e6.
+    if (t <= angle) {
+      r.distance = ring;
+      if constexpr (Points) {
+        r.point_b = seen.on_rim(arc.center, radius);
+        r.param_b = Vec2<Real>(t, 0);
+      }
+      return r;
+    }
+    // Off the arc: the end nearer in angle is the nearer (the distance rises with the angular
+    // gap, up to pi). Where the gaps are within `margin` of each other (P near the plane through
+    // the axis that bisects the arc's gap) both ends are measured: the nearer, or two closest
+    // pairs when they tie. From the center (p - c exact for nearby coordinates): the world end
+    // points round by an ulp of their coordinates, 1e-10 at 1e6.
+    const Real to_end = t - angle, to_start = turn - t;
+    constexpr Real margin = Real(1) / (1 << 20);
     const Vec3<Real> d = p - arc.center;
-    const Vec3<Real> e0 = span.from_center(arc.radius, span.lo()), e1 = span.from_center(arc.radius, span.hi());
-    const Real d0 = (d - e0).norm(), d1 = (d - e1).norm();
+    const Real to_u = radius / u_norm;
+    const Vec3<Real> e0 = to_u * u;
+    const Real d0 = (d - e0).norm();
+    if (to_start < to_end - margin) {  // the start: no trigonometry
+      r.distance = d0;
+      if constexpr (Points) r.point_b = arc.center + e0;
+      return r;
+    }
+    // The far end, radius (cos a u' / |u'| + sin a v' / (s |u'|)).
+    const Real to_v = to_u / seen.s;
+    const Vec3<Real> e1 = (std::cos(angle) * to_u) * u + (std::sin(angle) * to_v) * v;
+    const Real d1 = (d - e1).norm();
+    if (to_end < to_start - margin) {
+      r.distance = d1;
+      if constexpr (Points) {
+        r.point_b = arc.center + e1;
+        r.param_b = Vec2<Real>(angle, 0);
+      }
+      return r;
+    }
     const bool first = d0 <= d1;
     r.distance = first ? d0 : d1;
     r.point_b = arc.center + (first ? e0 : e1);
-    r.param_b = Vec2<Real>(first ? Real(0) : span.angle, 0);
-    r.unique = !(std::abs(d0 - d1) <= tie_tolerance(std::max(arc.radius, r.distance)) &&
-                 (e0 - e1).norm() > distinct_points_tolerance(arc.radius));
+    r.param_b = Vec2<Real>(first ? Real(0) : angle, 0);
+    r.unique = !(std::abs(d0 - d1) <= tie_tolerance(std::max(radius, r.distance)) &&
+                 (e0 - e1).norm() > distinct_points_tolerance(radius));
     return r;
+  }
+
+  // A start with no in-plane part: the arc starts at Frame's U (ArcSpan's theta0 = 0); the
+  // general form through the canonical angle, out of line (rare).
+#if defined(__GNUC__) || defined(__clang__)
+  __attribute__((noinline, cold))
+#endif
+  static Result<Real> cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+    Arc3<Real> a = arc;
+    a.start = Frame<Real>(arc.normal).u;
+    if (!(a.start.squaredNorm() > 0)) {  // a zero or NaN normal: no answer
+      Result<Real> r;
+      r.point_a = p;
+      r.distance = std::numeric_limits<Real>::quiet_NaN();
+      return r;
+    }
+    return solve<true>(p, a);
   }
 };
 
@@ -148,38 +219,41 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
 // The arc parametrized against another shape (docs/arc.md, "The arc parametrized").
 
 // Room for every query's candidates: the circle's (24 at most), two end angles, and the arc's
-// own starts (its ends and kArcSamples - 1 angles between them).
+// two ends.
 constexpr int kArcCapacity = 64;
-constexpr int kArcSamples = 8;
 template <class Real> using ArcCandidates = Candidates<Real, kArcCapacity>;
 template <class Real> using ArcMinima = Minima<Real, kArcCapacity>;
 
-// The least distance h reaches at the arc's ends and kArcSamples - 1 angles between them: a
-// distance the arc reaches, the bound its circle's octic is searched under
-// (ring_search_intervals). The whole circle's own samples (sampled_distances) may lie off the arc.
+// The least distance h reaches at the arc's ends and angles between them spaced at most pi/4
+// apart (a whole circle: eight, as circle-circle samples it): a distance the arc reaches, the
+// bound its circle's octic is searched under (ring_search_intervals; the tighter it is, the
+// fewer intervals searched). The whole circle's own samples (sampled_distances) may lie off the
+// arc. docs/arc.md, "Cost".
 template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H& h) {
+  const int pieces = std::min(8, std::max(1, int(std::ceil(span.angle * (4 / pi_v<Real>())))));
   Real best = std::numeric_limits<Real>::infinity();
-  for (int k = 0; k <= kArcSamples; ++k) best = std::min(best, h(span.lo() + span.angle * k / kArcSamples));
+  for (int k = 0; k <= pieces; ++k) best = std::min(best, h(span.lo() + span.angle * k / pieces));
   return best;
 }
 
-// The candidates of the whole circle that fall on the arc (moved to the turn that holds them),
-// the arc's two ends and `samples` - 1 angles between them, polished on [lo, hi] on the exact
-// distance h (jet: its square's derivatives), as polish_angles does on the whole circle. The
-// ends are exact candidates (the minimum on an interval can sit at an end); the samples
-// (kArcSamples against a round or an arc, none against a piece) are starts where the circle's
-// candidates say nothing about the arc (a circle nearly coincident with the other round, whose
-// octic is rounding noise, as circle-circle's eight samples).
+// The candidates of the whole circle that fall on the arc (moved to the turn that holds them)
+// and the arc's two ends, polished on [lo, hi] on the exact distance h (jet: its square's
+// derivatives), as polish_angles does on the whole circle. The ends are exact candidates (the
+// minimum on an interval can sit at an end). No samples of the arc's own: where the circle's
+// roots say nothing (a circle nearly coincident with the other round, whose octic is rounding
+// noise) the circle's candidates already carry circle-circle's eight samples, and those on the
+// arc with its ends start every basin the arc holds (docs/arc.md, "Why no samples").
 template <class Roots, class Real, int N, class J, class H>
 ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, N>& candidates, const J& jet,
-                              const H& h, Real radius, Real scale, int samples = kArcSamples) {
+                              const H& h, Real radius, Real scale) {
   ArcCandidates<Real> starts;
   if (!(span.angle >= 0) || !std::isfinite(span.lo())) {  // a NaN angle or normal: no answer, NaN
     ArcMinima<Real> none;
     none.best = Minimum<Real>{span.lo(), std::numeric_limits<Real>::quiet_NaN()};
     return none;
   }
-  for (int k = 0; k <= samples; ++k) starts.push(k == samples ? span.hi() : span.lo() + span.angle * k / samples);
+  starts.push(span.lo());
+  starts.push(span.hi());
   for (int i = 0; i < candidates.count; ++i) {
     const Real t = span.offset(candidates.value[i]);
     if (t <= span.angle) starts.push(span.lo() + t);
@@ -412,6 +486,181 @@ void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real 
     if (std::isfinite(tau)) push_end(tau);
 }
 
+// The fast path (docs/arc.md, "A line, ray or segment: the fast path"). Over the whole circle the
+// squared distance to the full line has at most two local minima, the global one
+// (line_ring_minimum) and, inside the astroid, the other (other_line_minimum). The arc's
+// distance to the piece is least at an arc end, or at an interior angle where it is a local
+// minimum over the whole circle of the distance to the piece: there the piece's closest point is
+// inside the piece (a local minimum of the line's distance, with its foot on the piece) or one of
+// its ends E (the angle of E's projection, point-arc's answer for E). Every candidate value is the
+// distance between a point of the arc and a point of the piece, so the least is the distance.
+// The arc's unit u and v and its end points, relative to its center (u from |W|^2 S - (S.W) W, as
+// point-arc takes it).
+template <class Real> struct ArcEnds {
+  Vec3<Real> u, v;  // |W|^2 times the start's in-plane part (u'), and W x u' (|v| = |W| |u|)
+  Vec3<Real> end[2];
+  Real angle = 0, s = 0, length = 0;  // |W|, |u|
+  bool usable = false;  // false: a start along the normal, a zero or huge normal, a NaN angle
+
+  // Unnormalized (no division: the sector test is an angle, scale-free; find_ends scales).
+  explicit ArcEnds(const Arc3<Real>& a) {
+    const Real n2 = a.normal.squaredNorm();
+    u = n2 * a.start - a.normal.dot(a.start) * a.normal;
+    length = u.norm();
+    usable = length > 0 && std::isfinite(length) && n2 > 0 && std::isfinite(n2) && !std::isnan(a.angle);
+    if (!usable) return;
+    s = std::sqrt(n2);
+    v = a.normal.cross(u);
+    angle = std::max(a.angle, Real(0));
+  }
+  // The end points (a sine and cosine: only where the ends are candidates).
+  void find_ends(Real radius) {
+    const Real to_u = radius / length, to_v = to_u / s;
+    end[0] = to_u * u;
+    end[1] = (std::cos(angle) * to_u) * u + (std::sin(angle) * to_v) * v;
+  }
+  // The arc's t of a point relative to the center (its angle from u toward v), in [0, 2 pi).
+  Real offset(const Vec3<Real>& p) const {
+    const Real t = detail::atan2(p.dot(v), s * p.dot(u));
+    return t < 0 ? t + 2 * pi_v<Real>() : t;
+  }
+};
+
+// The piece relative to the arc's center c along its line's anchor a (its point nearest c, from
+// line_ring_minimum, to one rounding) and unit direction m: tau in [lo, hi] from a, the ends'
+// tau taken as (E - c).m (rounding along the line only). A point's distance |w - clamp(w.m) m|,
+// w = p - a, stays accurate however far the piece's origin lies, where the point-ray closed form
+// from a far origin would carry eps |origin - c| across the line into every distance.
+template <class Real> struct AnchoredPiece {
+  Vec3<Real> anchor, dir;
+  Real lo, hi;
+
+  template <class Piece>
+  AnchoredPiece(const Piece& piece, const Linear<Real>& linear, const LineRingMinimum<Real>& m, const Vec3<Real>& c)
+      : anchor(m.anchor), dir(m.unit_direction), lo(linear.lo), hi(linear.hi) {
+    if (std::isfinite(lo)) lo = (piece_end(piece, lo) - c).dot(dir);
+    if (std::isfinite(hi)) hi = (piece_end(piece, hi) - c).dot(dir);
+  }
+  Vec3<Real> point(const Vec3<Real>& p) const {
+    const Real tau = std::min(std::max((p - anchor).dot(dir), lo), hi);
+    return anchor + tau * dir;
+  }
+  Real distance(const Vec3<Real>& p) const { return (p - point(p)).norm(); }
+};
+
+// The fast path's answer: the least candidate, and whether another lies within the tie
+// tolerance at distinct points (closest() then takes the pair and `unique` from the general path).
+template <class Real> struct PieceArcPick {
+  Real value = std::numeric_limits<Real>::infinity();
+  Vec3<Real> piece_point = Vec3<Real>::Zero(), arc_point = Vec3<Real>::Zero();  // world
+  Real piece_param = 0, arc_param = 0;
+  bool unique = true, tied = false;
+};
+
+// False where the fast path does not decide (the general path answers): the line declined by
+// line_ring_minimum or along the axis, the second minimum undecided, a segment too long for its
+// line (piece_line).
+template <class Roots, bool for_closest, class Real, class Piece>
+bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real>& out) {
+  ArcEnds<Real> ends(arc);
+  if (!ends.usable) return false;
+  const Circle3<Real> c = arc_circle(arc);
+  const PieceLine<Real> pl = piece_line(piece, arc.radius);
+  if (!pl.usable) return false;
+  LineRingMinimum<Real> m;
+  if (!line_ring_minimum<Roots>(pl.line, c, m) || m.on_axis) return false;
+  const Linear<Real> linear = as_linear(piece);
+  // The line's global minimum over the whole circle on the arc, its foot on the piece: no point of
+  // the arc is nearer the line, so none nearer the piece, and this pair is the answer. It is the
+  // only pair at that distance unless it is tied with its mirror image (the trust-region
+  // subproblem's global minimizer is unique outside its hard case, b1 = 0, which the mirror
+  // bounds: line_ring_minimum.hpp), where closest() asks the general path.
+  const Real global_t = ends.offset(m.ring_point);
+  if (global_t <= ends.angle && on_piece(pl.line, c.center, m.line_point, linear)) {
+    out.value = m.distance;
+    if constexpr (for_closest) {
+      out.piece_point = c.center + m.line_point;
+      out.arc_point = c.center + m.ring_point;
+      out.piece_param = line_param(pl.line, c.center, m.line_point);
+      out.arc_param = global_t;
+      out.tied = tied_with_mirror(c, m);
+    }
+    return out.value == out.value;
+  }
+  const SecondMinimumTest<Real> test = second_minimum_test(m, arc.radius);
+  LineRingMinimum<Real> second;
+  const int other = other_line_minimum<Roots>(m, arc.radius, second, [](Real) { return true; }, test);
+  if (other < 0) return false;
+  // Closest points keep every candidate (for the tie test); the distance keeps the least value.
+  PieceArcPick<Real> list[for_closest ? 6 : 1];
+  int count = 0;
+  Real least = std::numeric_limits<Real>::infinity();
+  if (other == 1) {  // the global minimum is off the arc or the piece (above)
+    const Real t = ends.offset(second.ring_point);
+    if (t <= ends.angle && on_piece(pl.line, c.center, second.line_point, linear)) {
+      least = second.distance;
+      if constexpr (for_closest) {
+        PieceArcPick<Real>& k = list[count++];
+        k.value = second.distance;
+        k.piece_point = c.center + second.line_point;
+        k.arc_point = c.center + second.ring_point;
+        k.piece_param = line_param(pl.line, c.center, second.line_point);
+        k.arc_param = t;
+      }
+    }
+  }
+  using PointArc = Query<Vec3<Real>, Arc3<Real>>;
+  const AnchoredPiece<Real> local(piece, linear, m, c.center);
+  ends.find_ends(arc.radius);
+  for (int e = 0; e < 2; ++e) {
+    if constexpr (for_closest) {
+      const Vec3<Real> q = local.point(ends.end[e]);
+      PieceArcPick<Real>& k = list[count++];
+      k.value = (ends.end[e] - q).norm();
+      k.piece_point = c.center + q;
+      k.piece_param = line_param(pl.line, c.center, q);  // the piece's own parameter
+      k.arc_point = c.center + ends.end[e];
+      k.arc_param = e == 0 ? Real(0) : ends.angle;
+    } else {
+      least = std::min(least, local.distance(ends.end[e]));
+    }
+  }
+  for (const Real tau : {linear.lo, linear.hi}) {
+    if (!std::isfinite(tau)) continue;
+    const Vec3<Real> end = piece_end(piece, tau);
+    if constexpr (for_closest) {
+      const Result<Real> r = PointArc::template closest<Roots>(end, arc);
+      PieceArcPick<Real>& k = list[count++];
+      k.value = r.distance;
+      k.piece_point = end;
+      k.piece_param = tau;
+      k.arc_point = r.point_b;
+      k.arc_param = r.param_b.x();
+      k.unique = r.unique;
+    } else {
+      least = std::min(least, PointArc::template distance<Roots>(end, arc));
+    }
+  }
+  if constexpr (!for_closest) {
+    out.value = least;
+  } else {
+    int best = 0;
+    for (int i = 1; i < count; ++i)
+      if (list[i].value < list[best].value) best = i;
+    out = list[best];
+    const Real scale = std::max(arc.radius, out.value);
+    const Real tie = tie_tolerance(scale), apart = distinct_points_tolerance(scale);
+    for (int i = 0; i < count; ++i)
+      if (i != best && list[i].value <= out.value + tie &&
+          ((list[i].arc_point - out.arc_point).norm() > apart || (list[i].piece_point - out.piece_point).norm() > apart))
+        out.tied = true;
+    if (!out.unique) out.tied = true;
+  }
+  // Non-finite input is declined above (line_ring_minimum, ArcEnds); a NaN least all the same
+  // goes to the general path.
+  return out.value == out.value;
+}
+
 template <class Real, class Piece> struct PieceArcQuery {
   static constexpr bool defined = true;
   using Circle = Query<Piece, Circle3<Real>>;
@@ -428,12 +677,14 @@ template <class Real, class Piece> struct PieceArcQuery {
     };
     Candidates<Real, 24> candidates;
     push_piece_arc_candidates<Roots>(line, radius, scale, candidates);
-    return polish_on_arc<Roots>(span, candidates, jet, h, radius, scale, 1);
+    return polish_on_arc<Roots>(span, candidates, jet, h, radius, scale);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const Piece& piece, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return Circle::template distance<Roots>(piece, arc_circle(arc));
     if (!(arc.radius > 0)) return Point::template distance<Roots>(arc.center, piece);
+    PieceArcPick<Real> pick;
+    if (piece_arc_fast<Roots, false>(piece, arc, pick)) return pick.value;
     const Round<Real> round(arc.center, arc.normal, arc.radius);
     const LocalLinear<Real> line(as_linear(piece), round);
     return solve<Roots>(ArcSpan<Real>(arc), line, arc.radius, linear_round_scale(line, arc.radius)).best.value;
@@ -443,6 +694,17 @@ template <class Real, class Piece> struct PieceArcQuery {
     const ArcSpan<Real> span(arc);
     if (whole_arc(arc)) return as_arc_result(Circle::template closest<Roots>(piece, arc_circle(arc)), span, 1);
     if (!(arc.radius > 0)) return Point::template closest<Roots>(arc.center, piece).swapped();
+    PieceArcPick<Real> pick;
+    const bool fast = piece_arc_fast<Roots, true>(piece, arc, pick);
+    if (fast && !pick.tied) {
+      Result<Real> r;
+      r.distance = pick.value;
+      r.point_a = pick.piece_point;
+      r.param_a = Vec2<Real>(pick.piece_param, 0);
+      r.point_b = pick.arc_point;
+      r.param_b = Vec2<Real>(pick.arc_param, 0);
+      return r;
+    }
     const Round<Real> round(arc.center, arc.normal, arc.radius);
     const Linear<Real> linear = as_linear(piece);
     const LocalLinear<Real> line(linear, round);
@@ -455,7 +717,9 @@ template <class Real, class Piece> struct PieceArcQuery {
     const Vec3<Real> pa = at(best);
     const Vec3<Real> pb = over.point(pa);
     Result<Real> r;
-    r.distance = minima.best.value;
+    // A tie the fast path saw: the general path's pair and `unique`, the fast path's distance
+    // (as distance() answers it).
+    r.distance = fast ? pick.value : minima.best.value;
     Real t;
     r.point_a = piece_point(linear, line, round, over.tau_of(pa), t);
     r.param_a = Vec2<Real>(t, 0);
