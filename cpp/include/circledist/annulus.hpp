@@ -215,45 +215,36 @@ Result<Real> best_of(const Candidates& candidates, Real scale) {
   return best;
 }
 
-// A circle against a true ring: the interior candidates and both rims (circle-circle through
-// the front end: the same order distance(circle, circle) takes). distance() skips the rims when
-// the interior decides (as circle-disk's distance() does); closest() solves them all, for the
-// pair and for `unique`, and reports the same distance.
-template <class Roots, class Real> Real circle_ring_distance(const Circle3<Real>& c, const Annulus3<Real>& a) {
-  const InteriorVerdict<Real> interior = circle_annulus_interior<Roots>(c, a, false, [](const Result<Real>&) {});
-  if (interior.decided) return interior.best;
-  return std::min({interior.best, circledist::distance<Roots>(c, outer_rim(a)), circledist::distance<Roots>(c, inner_rim(a))});
+// A circle or an arc against a true ring: the interior candidates and both rims (circle-circle
+// or arc-circle through the front end: the same order distance(circle, circle) takes). An arc
+// (not whole, radius > 0) is the circle on its own angles, with its ends added to the interior
+// candidates (docs/annulus.md, "A circle", "An arc"). distance() skips the rims when the
+// interior decides (as circle-disk's distance() does); closest() solves them all, for the pair
+// and for `unique`, and reports the same distance.
+template <class Roots, class Real, class Add>
+InteriorVerdict<Real> ring_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bool with_points, const Add& add) {
+  return circle_annulus_interior<Roots>(c, a, with_points, add);
 }
-template <class Roots, class Real> Result<Real> circle_ring_closest(const Circle3<Real>& c, const Annulus3<Real>& a) {
+template <class Roots, class Real, class Add>
+InteriorVerdict<Real> ring_interior(const Arc3<Real>& arc, const Annulus3<Real>& a, bool with_points, const Add& add) {
+  const ArcSpan<Real> span(arc);
+  return circle_annulus_interior<Roots>(arc_circle(arc), a, with_points, add, &span);
+}
+template <class Roots, class Real, template <class> class Curve>
+Real curve_ring_distance(const Curve<Real>& curve, const Annulus3<Real>& a) {
+  const InteriorVerdict<Real> interior = ring_interior<Roots>(curve, a, false, [](const Result<Real>&) {});
+  if (interior.decided) return interior.best;
+  return std::min({interior.best, circledist::distance<Roots>(curve, outer_rim(a)),
+                   circledist::distance<Roots>(curve, inner_rim(a))});
+}
+template <class Roots, class Real, template <class> class Curve>
+Result<Real> curve_ring_closest(const Curve<Real>& curve, const Annulus3<Real>& a) {
   CircleAnnulusCandidates<Real> candidates;
   const InteriorVerdict<Real> interior =
-      circle_annulus_interior<Roots>(c, a, true, [&](const Result<Real>& r) { candidates.add(r); });
-  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, outer_rim(a)), a.outer_radius));
-  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(c, inner_rim(a)), a.inner_radius));
-  const Real scale = std::max({a.outer_radius, c.radius, (c.center - a.center).norm()});
-  Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
-  r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
-  return r;
-}
-
-// An arc (not whole, radius > 0) against a true ring: as a circle (2), on the arc's angles with
-// its ends added to the interior candidates, and the rims by arc-circle (arc.hpp) (docs/annulus.md,
-// "An arc").
-template <class Roots, class Real> Real arc_ring_distance(const Arc3<Real>& arc, const Annulus3<Real>& a) {
-  const ArcSpan<Real> span(arc);
-  const InteriorVerdict<Real> interior =
-      circle_annulus_interior<Roots>(arc_circle(arc), a, false, [](const Result<Real>&) {}, &span);
-  if (interior.decided) return interior.best;
-  return std::min({interior.best, circledist::distance<Roots>(arc, outer_rim(a)), circledist::distance<Roots>(arc, inner_rim(a))});
-}
-template <class Roots, class Real> Result<Real> arc_ring_closest(const Arc3<Real>& arc, const Annulus3<Real>& a) {
-  const ArcSpan<Real> span(arc);
-  CircleAnnulusCandidates<Real> candidates;
-  const InteriorVerdict<Real> interior =
-      circle_annulus_interior<Roots>(arc_circle(arc), a, true, [&](const Result<Real>& r) { candidates.add(r); }, &span);
-  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(arc, outer_rim(a)), a.outer_radius));
-  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(arc, inner_rim(a)), a.inner_radius));
-  const Real scale = std::max({a.outer_radius, arc.radius, (arc.center - a.center).norm()});
+      ring_interior<Roots>(curve, a, true, [&](const Result<Real>& r) { candidates.add(r); });
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(curve, outer_rim(a)), a.outer_radius));
+  candidates.add(rim_as_annulus(circledist::closest_points<Roots>(curve, inner_rim(a)), a.inner_radius));
+  const Real scale = std::max({a.outer_radius, curve.radius, (curve.center - a.center).norm()});
   Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
   r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
   return r;
@@ -304,12 +295,12 @@ template <class Real> struct Query<Circle3<Real>, Annulus3<Real>> {
   template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& c, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(c, a, kind);
-    return detail::circle_ring_distance<Roots>(c, a);
+    return detail::curve_ring_distance<Roots>(c, a);
   }
   template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& c, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(c, a, kind);
-    return detail::circle_ring_closest<Roots>(c, a);
+    return detail::curve_ring_closest<Roots>(c, a);
   }
 };
 
@@ -319,16 +310,16 @@ template <class Real> struct Query<Arc3<Real>, Annulus3<Real>> {
   template <class Roots = DefaultRoots> static Real distance(const Arc3<Real>& arc, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(arc, a, kind);
-    if (whole_arc(arc)) return detail::circle_ring_distance<Roots>(arc_circle(arc), a);
+    if (whole_arc(arc)) return detail::curve_ring_distance<Roots>(arc_circle(arc), a);
     if (!(arc.radius > 0)) return detail::point_annulus_distance(arc.center, a);
-    return detail::arc_ring_distance<Roots>(arc, a);
+    return detail::curve_ring_distance<Roots>(arc, a);
   }
   template <class Roots = DefaultRoots> static Result<Real> closest(const Arc3<Real>& arc, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(arc, a, kind);
-    if (whole_arc(arc)) return as_arc_result(detail::circle_ring_closest<Roots>(arc_circle(arc), a), ArcSpan<Real>(arc), 0);
+    if (whole_arc(arc)) return as_arc_result(detail::curve_ring_closest<Roots>(arc_circle(arc), a), ArcSpan<Real>(arc), 0);
     if (!(arc.radius > 0)) return Query<Vec3<Real>, Annulus3<Real>>::template closest<Roots>(arc.center, a);
-    return detail::arc_ring_closest<Roots>(arc, a);
+    return detail::curve_ring_closest<Roots>(arc, a);
   }
 };
 
@@ -370,10 +361,10 @@ template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> {
       r.param_a = Vec2<Real>(radius, r.param_a.x());
       return r;
     };
-    candidates.add(from_a(circle_ring_closest<Roots>(outer_rim(a), b), a.outer_radius));
-    candidates.add(from_a(circle_ring_closest<Roots>(inner_rim(a), b), a.inner_radius));
-    candidates.add(from_a(circle_ring_closest<Roots>(outer_rim(b), a), b.outer_radius).swapped());
-    candidates.add(from_a(circle_ring_closest<Roots>(inner_rim(b), a), b.inner_radius).swapped());
+    candidates.add(from_a(curve_ring_closest<Roots>(outer_rim(a), b), a.outer_radius));
+    candidates.add(from_a(curve_ring_closest<Roots>(inner_rim(a), b), a.inner_radius));
+    candidates.add(from_a(curve_ring_closest<Roots>(outer_rim(b), a), b.outer_radius).swapped());
+    candidates.add(from_a(curve_ring_closest<Roots>(inner_rim(b), a), b.inner_radius).swapped());
     const Real scale = std::max({a.outer_radius, b.outer_radius, (a.center - b.center).norm()});
     return best_of(candidates, scale > 0 ? scale : Real(1));
   }
