@@ -92,6 +92,9 @@ OUT_EPS = {"float64": EPS64, "longdouble": EPSLD, "float32": EPS32}
 ULPS = 8          # closest points: ulps of the scene scale allowed off their shapes
 LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
+# kinds with a radius: the rounds and arcs (an arc is a circle restricted to an angle interval;
+# its data: centre, normal, radius, start, angle -- 11 numbers)
+RIMS = ROUND + ("arc",)
 # the pairs with a circle or disk (the families of the first version), then the pairs among
 # points, lines, rays and segments (point before line before ray before segment) and a Bezier
 # curve against each of them (the curve first)
@@ -1040,9 +1043,14 @@ def _nrm(a):
 
 
 # ---- closed forms (any float dtype; arrays broadcast (n, k, 3) against (n, 1, 3)) -------------
-def _round_dist(w, n, R, disk, with_rho=False):
+def _round_dist(w, n, R, disk, with_rho=False, span=None):
     """Distance of the points w (relative to the centre) from the round; with_rho: also their
-    distance rho from its axis."""
+    distance rho from its axis.  span (an arc: its unit u, v = n x u, angle and whether it is
+    the whole circle, broadcast like n, n, R, R): the circle restricted to the angles [0, angle]
+    from u -- the ring's distance where the angle phi of w's projection lies in the span (or w is
+    on the axis), else the nearer end's (the distance to the ring's point at theta grows with
+    |theta - phi| up to pi, so the nearer end in angle is the nearer in distance; both are taken,
+    each a genuine point's distance)."""
     z = _dot(w, n)
     a = w - z[..., None] * n
     rho = _nrm(a)
@@ -1050,7 +1058,25 @@ def _round_dist(w, n, R, disk, with_rho=False):
     d = np.sqrt(z * z + e * e)
     if disk:
         d = np.where(rho <= R, np.abs(z), d)
+    if span is not None:
+        u, v, ang, whole = span
+        phi = np.arctan2(_dot(w, v), _dot(w, u))
+        two_pi = 2 * np.arctan2(phi.dtype.type(0), phi.dtype.type(-1))
+        phi = np.where(phi < 0, phi + two_pi, phi)
+        off = (whole == 0) & (phi > ang) & (rho > 0)
+        e0 = _nrm(w - R[..., None] * u)
+        e1 = _nrm(w - R[..., None] * (np.cos(ang)[..., None] * u + np.sin(ang)[..., None] * v))
+        d = np.where(off, np.minimum(e0, e1), d)
     return (d, rho) if with_rho else d
+
+
+def _span(P, x1=True):
+    """The span parameters of an arc target in P (None for a circle or disk), shaped for
+    (n, k) points (x1) or (n,) points."""
+    if "tu" not in P:
+        return None
+    f = _x1 if x1 else (lambda v: v)
+    return f(P["tu"]), f(P["tv"]), f(P["tang"]), f(P["twhole"])
 
 
 def _lin_dist(w, m, mm, lo, hi):
@@ -1133,8 +1159,8 @@ class _Form:
 
     def value(self, x, P):
         X = self.points(x, P)
-        if self.target in ("circle", "disk"):
-            return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk")
+        if self.target in RIMS:
+            return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk", span=_span(P))
         d = _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
         if "mperp" not in P:
             return d
@@ -1160,13 +1186,14 @@ class _Form:
     def f_rho(self, x):
         """f and the points' distance from the (round) target's axis, for the zoom."""
         P = self.p.get(x.dtype.type)
-        if self.target not in ROUND:
+        if self.target not in RIMS:
             # a point or a linear piece: its local minima lie apart by about the distance itself
             # (see reference_round.bezier_other), which stands in for rho
             v = self.f(x)
             return v, v
         with np.errstate(invalid="ignore", over="ignore"):
-            v, rho = _round_dist(self.points(x, P), _x1(P["n"]), _x1(P["R"]), self.target == "disk", True)
+            v, rho = _round_dist(self.points(x, P), _x1(P["n"]), _x1(P["R"]), self.target == "disk", True,
+                                 span=_span(P))
         return np.where(np.isnan(v), np.inf, v), rho
 
     def magnitude(self, x):
@@ -1174,7 +1201,7 @@ class _Form:
         P = self.p.get(LD)
         X = self.points(x[:, None], P)[:, 0]
         mag = _nrm(X)
-        if self.target in ("circle", "disk"):
+        if self.target in RIMS:
             mag = mag + P["R"]
         else:
             mag = mag + _nrm(P["tb0"])
@@ -1611,6 +1638,31 @@ def _window(b0, m, lo, hi, R):
     return wlo, whi
 
 
+def _rim_parts(kind, data):
+    """A circle's, disk's or arc's screen parameters (long double) from its data rows (n, 7; an
+    arc's n, 11): the normal n; the moving rim's basis (U, V), interval [0, hi], periodicity and
+    grid (a circle: the frame of _ld_frame, [0, 2 pi) periodic; an arc: u, the unit projection of
+    its start, v = n x u, [0, angle] with both ends sampled, the whole [0, 2 pi] for an angle of
+    at least float64's 2 pi); target: the parameters of its closed form (an arc's span too)."""
+    n, U, V = _ld_frame(data[:, 3:6])
+    Rl = data[:, 6].astype(LD)
+    m = len(data)
+    target = dict(n=n, R=Rl)
+    if kind != "arc":
+        return dict(n=n, U=U, V=V, R=Rl, hi=np.full(m, 2 * math.pi), periodic=True, grid=_THETA_GRID,
+                    target=target)
+    S = data[:, 7:10].astype(LD)
+    S = S / np.max(np.abs(S), axis=1, keepdims=True)
+    u = S - _dot(S, n)[:, None] * n
+    u = u / _nrm(u)[:, None]
+    v = _cross(n, u)
+    ang = data[:, 10]
+    whole = ang >= 2 * math.pi
+    target.update(tu=u, tv=v, tang=ang.astype(LD), twhole=whole.astype(float))
+    return dict(n=n, U=u, V=v, R=Rl, hi=np.where(whole, 2 * math.pi, ang), periodic=False, grid=_S_GRID,
+                target=target)
+
+
 class ScreenResult:
     """value: long-double upper bound per case; slack: its rounding allowance; how: (form name,
     parameter as long double) of the best pair, for a 50-digit re-evaluation."""
@@ -1633,26 +1685,25 @@ def _screen(cases, use_ld):
         return _screen_bezier_linear(cases) if ka == "bezier" else _screen_linear(cases, use_ld)
     n = len(cases)
     B = _stack(cases, "b_data")
-    Cb, Nb, Rb = B[:, :3], B[:, 3:6], B[:, 6]
-    nb, Ub, Vb = _ld_frame(Nb)
-    Rbl = Rb.astype(LD)
+    Cb, Rb = B[:, :3], B[:, 6]
+    rb = _rim_parts(kb, B)
+    nb, Ub, Vb, Rbl, tb = rb["n"], rb["U"], rb["V"], rb["R"], rb["target"]
     forms = []
     if ka == "point":
         A = _stack(cases, "a_data")
         w = _diff_ld(A[:, :3], Cb)
-        v = _round_dist(w[:, None], nb[:, None], Rbl[:, None], kb == "disk")[:, 0]
+        v = _round_dist(w[:, None], nb[:, None], Rbl[:, None], kb == "disk", span=_span(tb))[:, 0]
         slack = 16 * EPSLD * (_nrm(w) + Rbl)
         return ScreenResult(v, slack.astype(float), ["point"] * n, [LD(0)] * n)
     if ka in ("line", "ray", "segment"):
         A = _stack(cases, "a_data")
         tgt = _linear_target(ka, A, Cb)
-        # (1) the round's rim against the linear shape's closed form
+        # (1) the round's rim (an arc's: over its span) against the linear shape's closed form
         p1 = _P(D=np.zeros((n, 3), dtype=LD), Ra=Rbl, Ua=Ub, Va=Vb, **tgt)
-        forms.append(_Form("rim|linear", "rim", "linear", p1, np.zeros(n), np.full(n, 2 * math.pi), True,
-                           _THETA_GRID))
-        # (2) the linear shape's parameter against the round's closed form
+        forms.append(_Form("rim|linear", "rim", "linear", p1, np.zeros(n), rb["hi"], rb["periodic"], rb["grid"]))
+        # (2) the linear shape's parameter against the round's (the arc's) closed form
         wlo, whi = _window(tgt["tb0"], tgt["tm"], tgt["tlo"], tgt["thi"], Rbl)
-        p2 = _P(b0=tgt["tb0"], m=tgt["tm"], n=nb, R=Rbl)
+        p2 = _P(b0=tgt["tb0"], m=tgt["tm"], **tb)
         forms.append(_Form("line|round", "line", kb, p2, wlo, whi, False, _S_GRID))
         # (the point moves by |m| per unit of s; the rim's own form is sampled at 1/80 of its radius)
         speed = np.sqrt(tgt["tmm"].astype(float))
@@ -1669,25 +1720,25 @@ def _screen(cases, use_ld):
         slack = np.zeros(n)
         for name, order in (("bezier|round", slice(None)), ("bezier_reversed|round", slice(None, None, -1))):
             dd = (rel_dd[0][:, order, :].copy(), rel_dd[1][:, order, :].copy())
-            form = _Form(name, "bezier", kb, _P(ctrl=_ld(dd), n=nb, R=Rbl), np.zeros(n), np.full(n, 0.5), False,
+            form = _Form(name, "bezier", kb, _P(ctrl=_ld(dd), **tb), np.zeros(n), np.full(n, 0.5), False,
                          _T_GRID)
             # (always refined in long double: a float32 scene of a curve 1e5 times larger than the
             # round needs it for the float32 bar too)
-            v, a, b, u, mag = _minimize_bezier(form, dd, dict(n=nb, R=Rbl), Rbl)
+            v, a, b, u, mag = _minimize_bezier(form, dd, tb, Rbl)
             for j in np.flatnonzero(v < best):
                 best[j], names[j], params[j] = v[j], name, (float(a[j]), float(b[j]), LD(u[j]))
                 slack[j] = 16 * EPSLD * float(mag[j])
         return ScreenResult(best, slack, names, params)
     else:
+        # two rounds (or arcs): each one's rim (an arc's over its span) against the other's closed form
         A = _stack(cases, "a_data")
-        Ca, Na, Ra = A[:, :3], A[:, 3:6], A[:, 6]
-        na, Ua, Va = _ld_frame(Na)
-        Ral = Ra.astype(LD)
+        Ca, Ra = A[:, :3], A[:, 6]
+        ra = _rim_parts(ka, A)
         Dab = _diff_ld(Ca, Cb)
-        pa = _P(D=Dab, Ra=Ral, Ua=Ua, Va=Va, n=nb, R=Rbl)
-        forms.append(_Form("rim_a|b", "rim", kb, pa, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
-        pb = _P(D=-Dab, Ra=Rbl, Ua=Ub, Va=Vb, n=na, R=Ral)
-        forms.append(_Form("rim_b|a", "rim", ka, pb, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
+        pa = _P(D=Dab, Ra=ra["R"], Ua=ra["U"], Va=ra["V"], **tb)
+        forms.append(_Form("rim_a|b", "rim", kb, pa, np.zeros(n), ra["hi"], ra["periodic"], ra["grid"]))
+        pb = _P(D=-Dab, Ra=Rbl, Ua=Ub, Va=Vb, **ra["target"])
+        forms.append(_Form("rim_b|a", "rim", ka, pb, np.zeros(n), rb["hi"], rb["periodic"], rb["grid"]))
         # a rim point moves by its radius per radian (a huge circle passing a small round)
         zooms = [(lambda c, a, b: Ra[c], Rb), (lambda c, a, b: Rb[c], Ra)]
     best = np.full(n, LD(np.inf), dtype=LD)

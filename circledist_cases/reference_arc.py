@@ -1,0 +1,131 @@
+"""Independent 50-digit reference for arcs (issue 19): one, used by tests/test_arc.py and by the
+differential test's confirmation (circledist_cases/differential.py).
+
+No circledist code.  An arc is built from its own definition, center + R (cos t u + sin t v),
+t in [0, angle], u the unit projection of `start` onto the plane normal to `normal`, v = n x u
+(an angle of at least float64's 2 pi is the whole circle, the library's convention).  A query
+against an arc is the minimum over the arc's angle t of the other shape's closed-form point
+distance (point, line, ray, segment: the clamped projection; circle, disk: note 000 / 001;
+another arc: the point-arc closed form of ArcMP.point_distance, itself checked against sampling
+in tests/test_arc.py), found by reference_round.minimize_1d (dense samples, golden section on
+every sampled local minimum; zoomed where the arc is far larger than a round target, as a huge
+circle passing a small disk is).  Every value is a genuine point's exact distance, an upper
+bound; the least is kept.
+
+Shapes are plain tuples (kind, *fields), fields as tuples of floats: ("arc", center, normal,
+radius, start, angle); shape(kind, data) converts the differential's flat lists.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+from . import reference_round as R
+
+mpf, ctx = R.mpf, R.ctx
+TWO_PI = 2 * math.pi     # float64's 2 pi: an angle >= this is the whole circle (docs/arc.md)
+INTERVALS = 720
+
+
+def _t(v):
+    return tuple(float(x) for x in v)
+
+
+def arc(center, normal, radius, start, angle):
+    return ("arc", _t(center), _t(normal), float(radius), _t(start), float(angle))
+
+
+def shape(kind, data):
+    """The tuple of a shape given as the differential's flat data list."""
+    d = [float(x) for x in data]
+    if kind == "point":
+        return ("point", _t(d[:3]))
+    if kind in ("line", "ray", "segment"):
+        return (kind, _t(d[:3]), _t(d[3:6]))
+    if kind in ("circle", "disk"):
+        return (kind, _t(d[:3]), _t(d[3:6]), d[6])
+    assert kind == "arc", kind
+    return arc(d[:3], d[3:6], d[6], d[7:10], d[10])
+
+
+class ArcMP:
+    """An arc at 50 digits: its basis from its own definition (not the library's frame)."""
+
+    def __init__(self, shape):
+        _, c, n, r, s, a = shape
+        self.c, self.r, self.angle = R.vec(c), R.to_mp(r), R.to_mp(a)
+        self.whole = float(a) >= TWO_PI
+        self.n = R.normalize(R.vec(n))
+        s = R.vec(s)
+        self.u = R.normalize(R.sub(s, R.scale(R.dot(s, self.n), self.n)))
+        self.v = R.cross(self.n, self.u)
+
+    def at(self, t):
+        return R.add(self.c, R.scale(self.r, R.add(R.scale(ctx.cos(t), self.u), R.scale(ctx.sin(t), self.v))))
+
+    def point_distance(self, p):
+        """Closed form (a point's distance along the circle rises with the angular gap from the
+        angle of its projection): the ring's distance where that angle is on the arc, else the
+        nearer end's; on the axis every point is as far."""
+        w = R.sub(p, self.c)
+        z, x, y = R.dot(w, self.n), R.dot(w, self.u), R.dot(w, self.v)
+        rho = ctx.sqrt(x * x + y * y)
+        if rho == 0:
+            return ctx.sqrt(z * z + self.r * self.r)
+        phi = ctx.atan2(y, x)
+        if phi < 0:
+            phi += 2 * ctx.pi
+        if self.whole or phi <= self.angle:
+            return ctx.sqrt(z * z + (rho - self.r) ** 2)
+        return min(R.dist(p, self.at(mpf(0))), R.dist(p, self.at(self.angle)))
+
+
+def point_distance_function(shape):
+    """x (an mp 3-vector) -> the distance from x to `shape`, in closed form."""
+    kind = shape[0]
+    if kind == "point":
+        p = R.vec(shape[1])
+        return lambda x: R.dist(x, p)
+    if kind in ("line", "ray", "segment"):
+        o, d = R.vec(shape[1]), R.vec(shape[2])
+        return lambda x: R.point_linear_closest(x, kind, o, d)[0]
+    if kind in ("circle", "disk"):
+        rnd = R.make_round(shape[1], shape[2], shape[3])
+        f = R.point_circle if kind == "circle" else R.point_disk
+        return lambda x: f(x, rnd)[0]
+    assert kind == "arc"
+    return ArcMP(shape).point_distance
+
+
+def _target_radius(shape):
+    return R.to_mp(shape[3]) if shape[0] in ("circle", "disk", "arc") else None
+
+
+@functools.lru_cache(maxsize=4096)
+def reference_mp(a, b, intervals=INTERVALS):
+    """min over the arc a's angle t of the closed-form distance from a(t) to b (an mpf).  Where a
+    is far larger than a round target b, one sampling step moves a's point by more than b's size
+    and two local minima could share it: the scan is then zoomed (a's point moves by its radius
+    per radian) until one step moves it by at most b's radius / 8 wherever the minimum can lie."""
+    arc_a = ArcMP(a)
+    other = point_distance_function(b)
+    hi = 2 * ctx.pi if arc_a.whole else arc_a.angle
+    rt = _target_radius(b)
+    zoom = {}
+    if rt is not None and rt > 0 and arc_a.r * hi / intervals > rt / R.ZOOM_FRACTION:
+        zoom = dict(lipschitz=lambda lo_, hi_: arc_a.r, resolution=lambda lo_, hi_, lh: rt / R.ZOOM_FRACTION)
+    minima = R.minimize_1d(lambda t: other(arc_a.at(t)), mpf(0), hi, intervals, periodic=arc_a.whole, **zoom)
+    return minima[0].value
+
+
+def reference(a, b, intervals=INTERVALS):
+    """reference_mp as a float."""
+    return float(reference_mp(a, b, intervals))
+
+
+def case_reference(ka, a_data, kb, b_data):
+    """The 50-digit distance of a differential case with an arc (canonical order: the arc second,
+    or both arcs)."""
+    assert kb == "arc", (ka, kb)
+    return reference_mp(shape(kb, b_data), shape(ka, a_data))
