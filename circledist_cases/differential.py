@@ -102,7 +102,11 @@ ROUND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
     ("bezier", "circle"), ("bezier", "disk"), ("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LL = [(lk, rk) for i, lk in enumerate(LINEAR) for rk in LINEAR[i:]]
 BL = [("bezier", lk) for lk in LINEAR]
-KIND_PAIRS = ROUND_PAIRS + LL + BL
+# an arc against every kind with a query, the arc second (as a circle or disk comes after the
+# pieces, and arc after disk); ("bezier", "arc") joins ARC_OTHERS once Arc-Bezier has a query
+ARC_OTHERS = ("point", "line", "ray", "segment", "circle", "disk", "arc")
+ARC_PAIRS = [(k, "arc") for k in ARC_OTHERS]
+KIND_PAIRS = ROUND_PAIRS + LL + BL + ARC_PAIRS
 LD = np.longdouble
 
 
@@ -455,7 +459,7 @@ def _translate(kind, data, T):
     if kind == "bezier":
         return [[float(x) for x in np.asarray(p) + T] for p in data]
     data = list(data)
-    npos = {"point": 3, "line": 3, "ray": 3, "segment": 6, "circle": 3, "disk": 3}[kind]
+    npos = {"point": 3, "line": 3, "ray": 3, "segment": 6, "circle": 3, "disk": 3, "arc": 3}[kind]
     for i in range(npos):
         data[i] = float(data[i] + T[i % 3])
     return data
@@ -810,6 +814,206 @@ def _fam_linear_far_translated(rng, ka, kb):
     return _fam_far_translated(rng, ka, kb, bases=_LINEAR_TRANSLATED_BASES)
 
 
+# ---- arcs: the circle families applied to arcs (issue 19) --------------------------------------
+# An arc family takes a base family's case with every arc drawn as a circle (the base generator
+# called with "circle" for "arc"; a disk stays a disk), then cuts each such circle to an arc
+# (same centre, normal and radius; a start and an angle).  Where the span lies is chosen relative
+# to a feature of the circle found by a float64 search (_feature): its point nearest the other
+# shape (a tangency, a line's closest point, the touching point of nearly touching rounds) or
+# nearest the other round's axis -- an arc END exactly there (theta = 0 or theta = angle), or
+# 1e-16..1e-6 rad beside it; the feature inside the span; or outside it (the ends decide).  In
+# exact frames (normals along the axes) a feature within 1e-5 rad of a coordinate axis is snapped
+# onto it, so that the end sits exactly at the base family's exact touching point.
+def _arc_angle(rng, extreme=False):
+    """An arc's angle: ordinary, quarter / half / three-quarter turns, tiny (1e-12..1e-3 rad),
+    2 pi - (1e-12..1e-3), or float64's 2 pi exactly (the whole circle)."""
+    k = int(rng.integers(0, 8)) if not extreme else int(rng.integers(4, 8))
+    if k <= 2:
+        return float(rng.uniform(0.05, 2 * math.pi - 0.05))
+    if k == 3:
+        return float(rng.choice([0.5, 1.0, 1.5])) * math.pi
+    if k in (4, 5):
+        return _logu(rng, -12, -3)
+    if k == 6:
+        return 2 * math.pi - _logu(rng, -12, -3)
+    return 2 * math.pi      # the library takes angles in (0, 2 pi]
+
+
+def _unit_normal(data):
+    N = np.asarray(data[3:6], float)
+    return N / np.linalg.norm(N)
+
+
+def _snap(e, n):
+    """e snapped onto the coordinate axis it lies within 1e-5 rad of, when the normal n is a
+    coordinate axis (an exact frame) and that axis lies in the plane."""
+    k = int(np.argmax(np.abs(e)))
+    if abs(e[k]) > 1 - 5e-11 and np.max(np.abs(n)) == 1.0 and n[k] == 0.0:
+        out = np.zeros(3)
+        out[k] = math.copysign(1.0, e[k])
+        return out
+    return e
+
+
+def _feature(circle, kind, data):
+    """The unit direction (world) from the circle's centre to its point nearest the shape
+    (kind, data) -- a point, line, ray, segment, circle or disk; "axis": the line along a round's
+    axis -- by a float64 scan of 720 angles and eight re-samplings around the best (a generator's
+    hint, not a reference: its minimiser is good to ~1e-8 rad where the distance is quadratic)."""
+    C, R = np.asarray(circle[:3], float), float(circle[6])
+    n = _unit_normal(circle)
+    u0 = _perp(np.random.default_rng(0), n)
+    v0 = np.cross(n, u0)
+    if kind == "axis":
+        kind, data = "line", list(data[:6])
+    D = np.asarray(data, float)[None]
+    if kind in ROUND:
+        rel = _diff_ld(C[None], D[:, :3]).astype(float)[0]
+        tn = _unit_normal(data)
+
+        def dist(w):
+            return _round_dist(w, tn, float(data[6]), kind == "disk")
+    else:
+        b0, m, lo, hi = (np.asarray(x, float) for x in _anchor(kind, D, C[None]))
+        rel = -b0[0]
+
+        def dist(w):
+            return _lin_dist(w, m[0], float(np.dot(m[0], m[0])), lo[0], hi[0])
+
+    def f(th):
+        return dist(rel + R * (np.cos(th)[:, None] * u0 + np.sin(th)[:, None] * v0))
+
+    th = np.arange(720) * (2 * math.pi / 720)
+    best = th[int(np.argmin(f(th)))]
+    h = 2 * math.pi / 720
+    for _ in range(8):
+        th = best + np.linspace(-2 * h, 2 * h, 65)
+        best = th[int(np.argmin(f(th)))]
+        h /= 16
+    return _snap(math.cos(best) * u0 + math.sin(best) * v0, n)
+
+
+def _offset(rng):
+    """0, or +-1e-16..1e-6 rad: an end exactly at the feature or beside it."""
+    return _tiny(rng, -16, -6, 0.4)
+
+
+def _cut(rng, circle, e, mode, angle):
+    """The arc of the circle (data: centre, normal, radius) with the angle `angle`, placed by
+    mode relative to the feature direction e: "start" (theta = 0 at e, or beside it), "end"
+    (theta = angle at e, or beside it), "inside" (e in the span), "outside" (e beyond both ends),
+    "random"."""
+    n = _unit_normal(circle)
+    if mode == "start":
+        start = _rot(e, n, _offset(rng))
+    elif mode == "end":
+        start = _rot(e, n, -angle + _offset(rng))
+    elif mode == "inside":
+        start = _rot(e, n, -angle * rng.uniform(0.05, 0.95))
+    elif mode == "outside" and angle < 2 * math.pi - 1e-3:
+        start = _rot(e, n, rng.uniform(0, 2 * math.pi - angle))
+    else:
+        start = _rot(_perp(rng, n), n, 0.0)
+    if mode != "random":
+        start = _snap(start / np.linalg.norm(start), n)
+    return [float(x) for x in circle[:7]] + [float(x) for x in start] + [float(angle)]
+
+
+_SPAN_MODES = ("start", "end", "inside", "outside", "random")
+
+
+def _arc_of(rng, circle, other_kind, other, modes=_SPAN_MODES, extreme=False):
+    """Cut a circle to an arc, the span placed by a mode drawn from `modes` relative to the
+    circle's point nearest the other shape or (a round other, half the time) nearest its axis."""
+    mode = str(rng.choice(modes))
+    feature_of = "axis" if other_kind in RIMS and rng.random() < 0.5 else other_kind
+    e = _feature(circle, feature_of, other[:7] if other_kind in RIMS else other)
+    return _cut(rng, circle, e, mode, _arc_angle(rng, extreme))
+
+
+def _arc_base_kind(kind):
+    return "circle" if kind == "arc" else kind
+
+
+def _arc_variant(base, modes=_SPAN_MODES, extreme=False):
+    """The generator of an arc family: the base family's case, its arcs cut from circles."""
+    def gen(rng, ka, kb):
+        a, b = FAMILIES[base][1](rng, _arc_base_kind(ka), _arc_base_kind(kb))
+        a, b = _plain(a), _plain(b)
+        kinds = (_arc_base_kind(ka), _arc_base_kind(kb))
+        a2 = _arc_of(rng, a, kinds[1], b, modes, extreme) if ka == "arc" else a
+        b2 = _arc_of(rng, b, kinds[0], a, modes, extreme) if kb == "arc" else b
+        return a2, b2
+    return gen
+
+
+def _arc_pairs(base_pairs):
+    """The arc pairs whose circle version (arcs drawn as circles) the base family covers."""
+    def covered(k):
+        kk = _arc_base_kind(k)
+        return (kk, "circle") in base_pairs or ("circle", kk) in base_pairs
+    return [p for p in ARC_PAIRS if covered(p[0])]
+
+
+def _fam_arc_spans(rng, ka, kb):
+    """Concentric, coplanar circle / disk / arc against an arc: spans overlapping, disjoint or
+    touching at an end (the other arc starting where this one ends, or ending where it starts,
+    exactly in exact frames), radii equal, 1 + 1e-15..1e-6 or apart; normals equal or opposite
+    (the other arc then runs the other way round)."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    Rb = _radius(rng, ex)
+    Ra = Rb * float(rng.choice([1.0, 1.0 + _tiny(rng, -15, -6, 0), rng.uniform(0.2, 3)]))
+    nb = EZ
+    na = EZ * float(rng.choice([-1.0, 1.0]))
+    angle_b = float(rng.choice([0.5, 1.0, 1.5])) * math.pi if ex else _arc_angle(rng)
+    r, _ = _in_plane(rng, ex)
+    b_end = _rot(r, nb, angle_b)
+    b = fr.round(np.zeros(3), nb, Rb) + fr.dirv(r) + [angle_b]
+    if ka != "arc":
+        return fr.round(np.zeros(3), na, Ra), b
+    angle_a = float(rng.choice([0.5, 1.0, 1.5])) * math.pi if ex else _arc_angle(rng)
+    how = str(rng.choice(["touch_end", "touch_start", "overlap", "disjoint"]))
+    # a's start s_a, its points at s_a rotated about na by [0, angle_a]
+    if how == "touch_end":          # a starts where b ends
+        s_a = b_end
+    elif how == "touch_start":      # a ends where b starts
+        s_a = _rot(r, na, -angle_a)
+    elif how == "overlap":
+        s_a = _rot(r, nb, rng.uniform(0, min(angle_b, 2 * math.pi)))
+    else:                           # starting after b's end, ending before b's start (if it can)
+        gap = max(2 * math.pi - angle_b, 0.0)
+        s_a = _rot(b_end, nb, gap * rng.uniform(0.1, 0.9))
+        angle_a = min(angle_a, gap * rng.uniform(0.05, 0.5)) if gap > 0 else angle_a
+    s_a = np.round(s_a) if ex and np.max(np.abs(s_a - np.round(s_a))) < 1e-12 else s_a
+    return fr.round(np.zeros(3), na, Ra) + fr.dirv(s_a) + [angle_a], b
+
+
+_ARC_TRANSLATED_BASES = ("arc_random", "arc_tangent", "arc_ends", "arc_coplanar", "arc_concentric", "arc_axis",
+                         "arc_near_touching", "arc_spans", "arc_angles")
+
+
+def _fam_arc_far_translated(rng, ka, kb):
+    return _fam_far_translated(rng, ka, kb, bases=_ARC_TRANSLATED_BASES)
+
+
+def _fam_arc_ends(rng, ka, kb):
+    """An arc end (theta = 0 or theta = angle) exactly at, or 1e-16..1e-6 rad beside, the
+    circle's point nearest the other shape (or the other round's axis), over the tangent,
+    coplanar, random and (rounds) nearly touching cases."""
+    bases = [f for f in ("tangent", "coplanar", "random", "near_touching", "shadow_center", "concentric")
+             if (ka, kb) in _arc_pairs(FAMILIES[f][0])]
+    return _arc_variant(str(rng.choice(bases)), modes=("start", "end"))(rng, ka, kb)
+
+
+def _fam_arc_angles(rng, ka, kb):
+    """Tiny angles (1e-12..1e-3 rad), 2 pi - (1e-12..1e-3), float64's 2 pi exactly and above
+    (the whole circle, which must answer as the circle: check_cases compares them to the bit)."""
+    bases = [f for f in ("random", "tangent", "coplanar", "axis", "near_touching")
+             if (ka, kb) in _arc_pairs(FAMILIES[f][0])]
+    return _arc_variant(str(rng.choice(bases)), extreme=True)(rng, ka, kb)
+
+
 RR = [("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LR = [(lk, rk) for lk in LINEAR for rk in ROUND]
 LR3 = [(lk, rk) for lk in ("line", "ray", "segment") for rk in ROUND]
@@ -849,6 +1053,25 @@ FAMILIES = {
     "bezier_far_control_linear": (BL, _fam_bezier_far_control_linear),
     "bezier_large_linear": (BL, _fam_bezier_large_linear),
     "piece_near_plane": (LR3, _fam_piece_near_plane),
+    # arcs (issue 19): the circle families with arcs cut from the circles (_arc_variant), and the
+    # arcs' own (ends at the features, concentric spans, extreme angles)
+    "arc_random": (_arc_pairs(ROUND_PAIRS), _arc_variant("random")),
+    "arc_tangent": (_arc_pairs(ROUND_PAIRS), _arc_variant("tangent")),
+    "arc_ends": (ARC_PAIRS, _fam_arc_ends),
+    "arc_axis": (_arc_pairs(LR), _arc_variant("axis")),
+    "arc_shadow_center": (_arc_pairs(LR3), _arc_variant("shadow_center")),
+    "arc_piece_near_plane": (_arc_pairs(LR3), _arc_variant("piece_near_plane")),
+    "arc_coplanar": (_arc_pairs(ROUND_PAIRS), _arc_variant("coplanar")),
+    "arc_concentric": (_arc_pairs(ROUND_PAIRS), _arc_variant("concentric")),
+    "arc_near_concentric": (_arc_pairs(ROUND_PAIRS), _arc_variant("near_concentric")),
+    "arc_spans": (ARC_PAIRS[4:], _fam_arc_spans),
+    "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
+    "arc_far_origin": (_arc_pairs(LR3), _arc_variant("far_origin")),
+    "arc_radius_ratio": (_arc_pairs(ROUND_PAIRS), _arc_variant("radius_ratio")),
+    "arc_angles": (ARC_PAIRS, _fam_arc_angles),
+    "arc_near_touching": (_arc_pairs(RR), _arc_variant("near_touching")),
+    "arc_parallel_height": (_arc_pairs(RR), _arc_variant("parallel_height")),
+    "arc_huge_circle": (_arc_pairs(RR), _arc_variant("huge_circle")),
 }
 
 
@@ -898,7 +1121,7 @@ def to_float32_case(case):
 
 
 def largest_radius(case):
-    return max([case[k + "_data"][6] for k in ("a", "b") if case[k] in ROUND] + [0.0])
+    return max([case[k + "_data"][6] for k in ("a", "b") if case[k] in RIMS] + [0.0])
 
 
 def bar_scale(case):
@@ -913,7 +1136,7 @@ def bar_scale(case):
     tests/test_bezier_point_linear.py).  Both are translation invariant; points a hair apart
     (zero-length segments) are held to the distance between them."""
     ka, kb = case["a"], case["b"]
-    if ka in ROUND or kb in ROUND:
+    if ka in RIMS or kb in RIMS:
         return largest_radius(case)
     key = _key(case)
     if key not in _SCALE_CACHE:
@@ -936,7 +1159,7 @@ def scene_scale(case):
         kind, data = case[k], case[k + "_data"]
         if kind == "bezier":
             vals += [abs(x) for p in data for x in p]
-        elif kind in ROUND:
+        elif kind in RIMS:
             vals += [abs(x) for x in data[:3]] + [abs(data[6])]
         elif kind == "segment":
             vals += [abs(x) for x in data[:6]]
@@ -1978,11 +2201,12 @@ def residuals(kind, data, pts, params=None):
         bad = ~((t >= 0) & (t <= 1))
         return np.where(bad, LD(np.inf), _nrm(w)), 16 * LD(EPSLD) * mag
     data = np.asarray(data, dtype=float)
-    if kind in ROUND:
-        n, _, _ = _ld_frame(data[:, 3:6])
+    if kind in RIMS:
+        parts = _rim_parts(kind, data)
+        n, tgt = parts["n"], parts["target"]
         w = _pt_minus(P, data[:, :3])
         R = data[:, 6].astype(LD)
-        d = _round_dist(w[:, None], n[:, None], R[:, None], kind == "disk")[:, 0]
+        d = _round_dist(w[:, None], n[:, None], R[:, None], kind == "disk", span=_span(tgt))[:, 0]
         return d, 16 * LD(EPSLD) * (_nrm(w) + R)
     C0 = data[:, :3]
     w = _pt_minus(P, C0)
@@ -2022,6 +2246,8 @@ def make_shape(cd, kind, data, dtype=np.float64):
         return getattr(cd, kind.capitalize())(arr[..., :3], arr[..., 3:6])
     if kind == "segment":
         return cd.Segment(arr[..., :3], arr[..., 3:6])
+    if kind == "arc":
+        return cd.Arc(arr[..., :3], arr[..., 3:6], arr[..., 6], arr[..., 7:10], arr[..., 10])
     return getattr(cd, kind.capitalize())(arr[..., :3], arr[..., 3:6], arr[..., 6])
 
 
@@ -2037,7 +2263,7 @@ def pair_scale(case):
             return d[:3], math.inf
         if kind == "segment":
             return (d[:3] + d[3:6]) / 2, float(np.linalg.norm(d[3:6] - d[:3])) / 2
-        if kind in ROUND:
+        if kind in RIMS:
             return d[:3], float(d[6])
         lo, hi = d.min(axis=0), d.max(axis=0)
         c = (lo + hi) / 2
@@ -2246,7 +2472,7 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             dl, cl = d.astype(LD), cdist.astype(LD)
             ra_, rb_, sep = resid[(solver, precision, order)]
             ulps_o = ulps
-            if ka not in ROUND and kb not in ROUND:
+            if ka not in RIMS and kb not in RIMS:
                 # without a round the closest points can lie far outside the scene (1e5 along two
                 # lines 1e-5 rad apart): each is rounded by ulps of its own size
                 with np.errstate(invalid="ignore"):
@@ -2301,11 +2527,45 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             fw, wres = _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, pscale[scene], bar_abs,
                                      inaccurate, stats)
             findings += fw
+        # an arc of angle 2 pi is the whole circle, answered by the circle's query (docs/arc.md)
+        if "arc" in (ka, kb) and d_orders:
+            A, Bd = data[scene]
+            findings += _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats)
         # batched == scalar
         sel = [j for j, i in enumerate(idx) if i in scalar]
         if sel:
             findings += _check_scalar(cd, ka, kb, res, d_orders, wres, sel, gcases, solver, precision, stats)
     return findings
+
+
+def _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
+    """Cases whose arcs all have angle 2 pi (as given: float32's 2 pi rounds above float64's)
+    must give the distance of the same query with each arc replaced by its circle, to the bit."""
+    rows = np.ones(len(gcases), dtype=bool)
+    for kind, X in ((ka, A), (kb, Bd)):
+        if kind == "arc":
+            rows &= X[:, 10] >= 2 * math.pi
+    sel = np.flatnonzero(rows)
+    if not len(sel):
+        return []
+    kinds = ["circle" if k == "arc" else k for k in (ka, kb)]
+    dt = _dtype(precision)
+    SA = make_shape(cd, kinds[0], A[sel, :7] if ka == "arc" else A[sel], dt)
+    SB = make_shape(cd, kinds[1], Bd[sel, :7] if kb == "arc" else Bd[sel], dt)
+    out = []
+    for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
+        if order not in d_orders:
+            continue
+        d, err = _call(cd.distance, x, y, solver=solver, precision=precision)
+        if err:
+            out.append(_finding("exception", gcases[sel[0]], solver, precision, order, "whole arc as circle", error=err))
+            continue
+        stats["answers"]["distance (whole arc as circle)"] += len(sel)
+        d = np.asarray(d)
+        for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
+            out.append(_finding("whole_arc_vs_circle", gcases[sel[q]], solver, precision, order, "distance",
+                                library=d_orders[order][sel[q]], circle=d[q]))
+    return out
 
 
 def _d_array(x, precision):
@@ -2433,7 +2693,9 @@ def mp_reference(case):
         return _REF_CACHE[key]
     L, R = _load("reference"), _load("reference_round")
     ka, a, kb, b = key
-    if kb in LINEAR and ka in LINEAR:
+    if kb == "arc":
+        ref = _load("reference_arc").case_reference(ka, list(a), kb, list(b))
+    elif kb in LINEAR and ka in LINEAR:
         ref = _load("reference_linear").linear_linear(ka, a, kb, b)
     elif kb in LINEAR:
         ref = R.bezier_other([list(p) for p in a], kb, *_piece_points(kb, b)).distance
@@ -2496,16 +2758,12 @@ def mp_screen_value(case, form, param):
     x = _mpf_ld(param) if not isinstance(param, tuple) else None
     ctx = R.ctx
     if form == "point":
-        rnd = R.make_round(b[:3], b[3:6], b[6])
-        return R.point_disk(a[:3], rnd)[0] if kb == "disk" else R.point_circle(a[:3], rnd)[0]
+        return _mp_rim_distance(R.vec(a[:3]), kb, b)
     if form == "rim|linear":
-        rnd = R.make_round(b[:3], b[3:6], b[6])
-        p = rnd.rim_point(x)
+        p = _mp_rim(kb, b, x)
         return L.Linear(ka, a).distance_to_point(tuple(L.mpf(ctx.nstr(c, 60)) for c in p))
     if form == "line|round":
-        rnd = R.make_round(b[:3], b[3:6], b[6])
-        pr = _mp_line_point(ka, a, b[:3], x)
-        return R.point_disk(pr, rnd)[0] if kb == "disk" else R.point_circle(pr, rnd)[0]
+        return _mp_rim_distance(_mp_line_point(ka, a, b[:3], x), kb, b)
     if form == "point|linear":
         return _mp_piece_distance(R.vec(a[:3]), kb, b)
     if form == "line|linear":
@@ -2516,18 +2774,27 @@ def mp_screen_value(case, form, param):
         t = R.mpf(lo_) + _mpf_ld(u) * (R.mpf(hi_) - R.mpf(lo_))
         return _mp_piece_distance(R.bezier_point(a, t if form == "bezier|linear" else 1 - t), kb, b)
     if form in ("bezier|round", "bezier_reversed|round"):
-        rnd = R.make_round(b[:3], b[3:6], b[6])
         lo_, hi_, u = param
         t = R.mpf(lo_) + _mpf_ld(u) * (R.mpf(hi_) - R.mpf(lo_))
-        p = R.bezier_point(a, t if form == "bezier|round" else 1 - t)
-        return R.point_disk(p, rnd)[0] if kb == "disk" else R.point_circle(p, rnd)[0]
-    A = R.make_round(a[:3], a[3:6], a[6])
-    Bn = R.make_round(b[:3], b[3:6], b[6])
+        return _mp_rim_distance(R.bezier_point(a, t if form == "bezier|round" else 1 - t), kb, b)
     if form == "rim_a|b":
-        p = A.rim_point(x)
-        return R.point_disk(p, Bn)[0] if kb == "disk" else R.point_circle(p, Bn)[0]
-    p = Bn.rim_point(x)
-    return R.point_disk(p, A)[0] if ka == "disk" else R.point_circle(p, A)[0]
+        return _mp_rim_distance(_mp_rim(ka, a, x), kb, b)
+    return _mp_rim_distance(_mp_rim(kb, b, x), ka, a)
+
+
+def _mp_rim(kind, data, x):
+    """The point (reference_round's context) at the screen's angle x of a circle or disk's rim
+    (the frame of _ld_frame, which the references build alike) or of an arc (from its start)."""
+    if kind == "arc":
+        A = _load("reference_arc")
+        return A.ArcMP(A.shape(kind, data)).at(x)
+    return _load("reference_round").make_round(data[:3], data[3:6], data[6]).rim_point(x)
+
+
+def _mp_rim_distance(p, kind, data):
+    """The 50-digit distance from the mp point p to a circle, disk or arc (closed forms)."""
+    A = _load("reference_arc")
+    return A.point_distance_function(A.shape(kind, data))(p)
 
 
 def confirm(finding, case, screen_info):
@@ -2577,6 +2844,9 @@ def confirm_point(finding, case):
         # points are stored exactly (long-double ones as 25-digit text)
         if kind == "bezier":
             offs.append(float(R.bezier_disk(data, list(p), (0.0, 0.0, 1.0), 0.0).distance))
+        elif kind == "arc":
+            A = _load("reference_arc")
+            offs.append(float(A.ArcMP(A.shape(kind, data)).point_distance(tuple(_mp_num(x) for x in p))))
         else:
             offs.append(float(L.distance_to_shape(tuple(L.mpf(x) for x in p), kind, tuple(data))))
     finding["off_a_mp"], finding["off_b_mp"] = offs
@@ -2591,6 +2861,7 @@ MISS_REL = "1e-18"
 
 
 EXACT_CHECKS = ("within", "within_vs_inaccurate_distance", "asymmetric", "batch_scalar", "dtype", "float32_value",
+                "whole_arc_vs_circle",
                 "exception", "non_finite")
 
 
@@ -2649,6 +2920,8 @@ def _ctor_text(kind, data, f32):
         return f"cd.Segment({vec(data[:3])}, {vec(data[3:6])})"
     if kind in ("line", "ray"):
         return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])})"
+    if kind == "arc":
+        return f"cd.Arc({vec(data[:3])}, {vec(data[3:6])}, {scal(data[6])}, {vec(data[7:10])}, {scal(data[10])})"
     return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])}, {scal(data[6])})"
 
 
