@@ -926,7 +926,7 @@ def _arc_of(rng, circle, other_kind, other, modes=_SPAN_MODES, extreme=False):
     """Cut a circle to an arc, the span placed by a mode drawn from `modes` relative to the
     circle's point nearest the other shape or (a round other, half the time) nearest its axis."""
     mode = str(rng.choice(modes))
-    feature_of = "axis" if other_kind in RIMS and rng.random() < 0.5 else other_kind
+    feature_of = "axis" if other_kind in RIMS and rng.random() < 0.5 else _arc_base_kind(other_kind)
     e = _feature(circle, feature_of, other[:7] if other_kind in RIMS else other)
     return _cut(rng, circle, e, mode, _arc_angle(rng, extreme))
 
@@ -990,7 +990,7 @@ def _fam_arc_spans(rng, ka, kb):
 
 
 _ARC_TRANSLATED_BASES = ("arc_random", "arc_tangent", "arc_ends", "arc_coplanar", "arc_concentric", "arc_axis",
-                         "arc_near_touching", "arc_spans", "arc_angles")
+                         "arc_near_touching", "arc_spans", "arc_angles", "arc_end_on_axis")
 
 
 def _fam_arc_far_translated(rng, ka, kb):
@@ -1004,6 +1004,29 @@ def _fam_arc_ends(rng, ka, kb):
     bases = [f for f in ("tangent", "coplanar", "random", "near_touching", "shadow_center", "concentric")
              if (ka, kb) in _arc_pairs(FAMILIES[f][0])]
     return _arc_variant(str(rng.choice(bases)), modes=("start", "end"))(rng, ka, kb)
+
+
+def _fam_arc_end_on_axis(rng, ka, kb):
+    """A circle, disk or arc whose axis passes exactly through the arc's end (theta = 0 or
+    theta = angle; in exact frames quarter turns, the end exact up to cos(pi/2)'s rounding) or
+    1e-16..1e-6 radii beside it, at heights 0..2 radii along the axis: the distance from the end
+    to the round is then the same for every point of its rim (a circle) or attained at the disk's
+    centre region."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    Rb = _radius(rng, ex)
+    r, _ = _in_plane(rng, ex)
+    angle = float(rng.choice([0.5, 1.0, 1.5])) * math.pi if ex else _arc_angle(rng)
+    at_end = rng.random() < 0.5
+    E = Rb * (_snap(_rot(r, EZ, angle), EZ) if at_end else r)
+    b = fr.round(np.zeros(3), EZ, Rb) + fr.dirv(r) + [angle]
+    na = (EZ if rng.random() < 0.5 else EX) if ex else _unit(rng)
+    off = _tiny(rng, -16, -6, 0.5) * Rb * _perp(rng, na)
+    Ra = _radius(rng, ex) * float(rng.choice([1.0, 0.25, 4.0]))
+    a = fr.round(E + off + fr.param(-2, 2) * Rb * na, na, Ra)
+    if ka == "arc":
+        a = _arc_of(rng, a, "arc", b)
+    return a, b
 
 
 def _fam_arc_angles(rng, ka, kb):
@@ -1072,13 +1095,20 @@ FAMILIES = {
     "arc_near_touching": (_arc_pairs(RR), _arc_variant("near_touching")),
     "arc_parallel_height": (_arc_pairs(RR), _arc_variant("parallel_height")),
     "arc_huge_circle": (_arc_pairs(RR), _arc_variant("huge_circle")),
+    "arc_end_on_axis": (ARC_PAIRS[4:], _fam_arc_end_on_axis),
 }
 
 
 def has_round(family):
     """Whether a family's kind pairs include a circle or disk (the sixteen first families and piece_near_plane) or
-    not (the pairs among points, lines, rays and segments and Bezier curves against them)."""
-    return any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
+    not (the pairs among points, lines, rays and segments and Bezier curves against them); the
+    arc families (is_arc) count as neither."""
+    return not is_arc(family) and any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
+
+
+def is_arc(family):
+    """Whether a family is one of the arcs' (its kind pairs have an arc)."""
+    return any("arc" in pair for pair in FAMILIES[family][0])
 
 
 def _plain(data):

@@ -44,6 +44,11 @@ SEED = 20261114
 PER_PAIR = 4          # cases per (family, kind pair) ...
 MIN_PER_FAMILY = 40   # ... and at least this many per family
 PER_PAIR_NO_ROUND = 2  # cases per (family, kind pair) of the families without a circle or disk
+PER_PAIR_ARC = 2       # cases per (family, kind pair) of the arc families
+# The arc families' direct 50-digit comparison (~0.2 s a case with every combination) takes the
+# first case of every third (family, kind pair): the pair whose index in the family's list is the
+# family's index mod 3, so every arc pair is compared directly in some families.
+DIRECT_ARC_EVERY = 3
 SCALAR_EVERY = 4      # scalar calls on every 4th case
 # The direct 50-digit comparison takes the first case of every (family, kind pair), except for a
 # Bezier curve against a point, line, ray or segment (whose reference costs ~0.5 s a case): one
@@ -56,7 +61,9 @@ DIRECT_BEZIER_LINEAR = {("bezier", "point"): "bezier_large_linear", ("bezier", "
 def slice_cases():
     out = []
     for family, (pairs, _) in D.FAMILIES.items():
-        if D.has_round(family):
+        if D.is_arc(family):
+            n = PER_PAIR_ARC * len(pairs)
+        elif D.has_round(family):
             n = max(PER_PAIR * len(pairs), MIN_PER_FAMILY)
         else:
             n = PER_PAIR_NO_ROUND * len(pairs)
@@ -83,6 +90,10 @@ def results():
     firsts = {}
     for c in cases:
         pair = (c["a"], c["b"])
+        if D.is_arc(c["family"]):
+            fam_pairs = D.FAMILIES[c["family"]][0]
+            if fam_pairs.index(pair) % DIRECT_ARC_EVERY != list(D.FAMILIES).index(c["family"]) % DIRECT_ARC_EVERY:
+                continue
         if DIRECT_BEZIER_LINEAR.get(pair, c["family"]) == c["family"]:
             firsts.setdefault((c["family"], c["a"], c["b"]), c)
     ref_findings, diags = D.reference_check(cd, list(firsts.values()))
