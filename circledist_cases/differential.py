@@ -18,13 +18,24 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    Bezier curve against each (random, far-translated, nearly parallel pieces crossing or a hair
    apart or collinear, far origins and ends, zero-length segments, points and ends on the other
    piece, a line tangent to a curve or parallel to its end tangent, a curve crossing a piece,
-   curves with a far control point or 1e2..1e5 times larger than the piece).
+   curves with a far control point or 1e2..1e5 times larger than the piece).  Arcs (issue 19):
+   an arc against a point, line, ray, segment, circle, disk or arc, the arc second (after the
+   other kind, as a circle or disk comes after the pieces; ARC_PAIRS), in the "arc_" families:
+   the circle families applied to arcs (_arc_variant: the base family's case with the arcs drawn
+   as circles, each then cut to an arc whose span is placed relative to the circle's point
+   nearest the other shape or the other round's axis -- an end exactly there or 1e-16..1e-6 rad
+   beside it, the point inside the span, or beyond both ends), and the arcs' own: ends at the
+   features (arc_ends), a round's axis through an arc end (arc_end_on_axis), concentric coplanar
+   spans overlapping, disjoint or touching at an end (arc_spans), tiny angles, 2 pi - tiny and
+   2 pi exactly (arc_angles).
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
    distance is the minimum over one parameter of a closed form (point-circle, point-disk,
-   point-line): a circle's angle against the other shape (both ways round for two rounds), a
-   line's parameter against the round and the round's angle against the line, a Bezier curve's
-   t against the round (each half from its own end, so parameters near an end keep their full
+   point-line; point-arc: the circle's where the angle of the point's projection lies in the
+   span, else the nearer end's): a circle's angle against the other shape (both ways round for
+   two rounds), a line's parameter against the round and the round's angle against the line, an
+   arc's angle over [0, angle] wherever a circle's runs over [0, 2 pi) and the arc's closed form
+   wherever a round's is the target, a Bezier curve's t against the round (each half from its own end, so parameters near an end keep their full
    precision).  Dense sampling, then a vectorised beam search (nested re-sampling around the
    best few sampled local minima) in float64, then long-double levels around the best.  Where
    the sampling step is long for the target round's features (a curve or a huge circle passing a
@@ -53,16 +64,19 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    and (for the chosen cases) scalar, and reports findings: answers above the screen's bound or
    below every verified bound (beyond the bar), closest points off their shapes, separations
    that differ from the reported distance, distance(a, b) != distance(b, a), batch != scalar,
-   within / intersects inconsistent with the distance, non-finite answers or wrong dtypes.
+   within / intersects inconsistent with the distance, non-finite answers or wrong dtypes, and
+   an arc of angle 2 pi whose distance is not its circle's to the bit (docs/arc.md).
    The bound an answer is held against is the screen's, or lower: the separation (plus the
    measured distances off their shapes) of any combination's closest points, a genuine pair too.
    ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
    circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
-   bezier_other) and reference_linear.py (linear pieces among themselves: the search of
+   bezier_other), reference_arc.py (arcs: the arc's angle against the other's closed form) and
+   reference_linear.py (linear pieces among themselves: the search of
    tests/test_linear_accuracy.py), and evaluates the screen's own best pair at 50 digits, so a
    reference that missed the minimum is caught, not trusted.
 
-Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius in the query
+Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius (circle, disk
+or arc) in the query
 (for a query without a circle or disk: the scale of the pairs' own accuracy tests, see
 ``bar_scale``: for the linear pairs 1e-12 x the query's size), bar 1e-12 in float64,
 1e-15 in long double (float64 inputs referenced exactly), 4 float32 ulps (4 * 2^-23) for float32
