@@ -1090,27 +1090,19 @@ FAMILIES = {
     "bezier_far_control_linear": (BL, _fam_bezier_far_control_linear),
     "bezier_large_linear": (BL, _fam_bezier_large_linear),
     "piece_near_plane": (LR3, _fam_piece_near_plane),
-    # arcs (issue 19): the circle families with arcs cut from the circles (_arc_variant), and the
-    # arcs' own (ends at the features, concentric spans, extreme angles)
-    "arc_random": (_arc_pairs(ROUND_PAIRS), _arc_variant("random")),
-    "arc_tangent": (_arc_pairs(ROUND_PAIRS), _arc_variant("tangent")),
-    "arc_ends": (ARC_PAIRS, _fam_arc_ends),
-    "arc_axis": (_arc_pairs(LR), _arc_variant("axis")),
-    "arc_shadow_center": (_arc_pairs(LR3), _arc_variant("shadow_center")),
-    "arc_piece_near_plane": (_arc_pairs(LR3), _arc_variant("piece_near_plane")),
-    "arc_coplanar": (_arc_pairs(ROUND_PAIRS), _arc_variant("coplanar")),
-    "arc_concentric": (_arc_pairs(ROUND_PAIRS), _arc_variant("concentric")),
-    "arc_near_concentric": (_arc_pairs(ROUND_PAIRS), _arc_variant("near_concentric")),
-    "arc_spans": (ARC_PAIRS[4:], _fam_arc_spans),
-    "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
-    "arc_far_origin": (_arc_pairs(LR3), _arc_variant("far_origin")),
-    "arc_radius_ratio": (_arc_pairs(ROUND_PAIRS), _arc_variant("radius_ratio")),
-    "arc_angles": (ARC_PAIRS, _fam_arc_angles),
-    "arc_near_touching": (_arc_pairs(RR), _arc_variant("near_touching")),
-    "arc_parallel_height": (_arc_pairs(RR), _arc_variant("parallel_height")),
-    "arc_huge_circle": (_arc_pairs(RR), _arc_variant("huge_circle")),
-    "arc_end_on_axis": (ARC_PAIRS[4:], _fam_arc_end_on_axis),
 }
+# arcs (issue 19): the circle families applied to arcs (arc_<base>: the base family's cases with
+# their arcs cut from circles, _arc_variant), then the arcs' own
+for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", "coplanar", "concentric",
+              "near_concentric", "far_origin", "radius_ratio", "near_touching", "parallel_height", "huge_circle"):
+    FAMILIES["arc_" + _base] = (_arc_pairs(FAMILIES[_base][0]), _arc_variant(_base))
+FAMILIES.update({
+    "arc_ends": (ARC_PAIRS, _fam_arc_ends),
+    "arc_end_on_axis": (ARC_PAIRS[4:], _fam_arc_end_on_axis),
+    "arc_spans": (ARC_PAIRS[4:], _fam_arc_spans),
+    "arc_angles": (ARC_PAIRS, _fam_arc_angles),
+    "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
+})
 
 
 def has_round(family):
