@@ -8,8 +8,8 @@ against an arc is the minimum over the arc's angle t of the other shape's closed
 distance (point, line, ray, segment: the clamped projection; circle, disk: note 000 / 001;
 another arc: the point-arc closed form of ArcMP.point_distance, itself checked against sampling
 in tests/test_arc.py), found by reference_round.minimize_1d (dense samples, golden section on
-every sampled local minimum; zoomed where the arc is far larger than a round target, as a huge
-circle passing a small disk is).  Every value is a genuine point's exact distance, an upper
+every sampled local minimum; zoomed by Lipschitz bounds where two minima could share a sampling
+step: an arc nearly tangent to a line or ring, or far larger than a round target).  Every value is a genuine point's exact distance, an upper
 bound; the least is kept.
 
 Shapes are plain tuples (kind, *fields), fields as tuples of floats: ("arc", center, normal,
@@ -102,20 +102,43 @@ def _target_radius(shape):
     return R.to_mp(shape[3]) if shape[0] in ("circle", "disk", "arc") else None
 
 
+ZOOM_SAMPLES = 4000   # the zoom's cap on added samples per reference (lowest bounds first)
+
+
 @functools.lru_cache(maxsize=4096)
 def reference_mp(a, b, intervals=INTERVALS):
-    """min over the arc a's angle t of the closed-form distance from a(t) to b (an mpf).  Where a
-    is far larger than a round target b, one sampling step moves a's point by more than b's size
-    and two local minima could share it: the scan is then zoomed (a's point moves by its radius
-    per radian) until one step moves it by at most b's radius / 8 wherever the minimum can lie."""
+    """min over the arc a's angle t of the closed-form distance from a(t) to b (an mpf).
+
+    Zoomed (reference_round.minimize_1d's Lipschitz zoom; a's point moves by its radius per
+    radian): every interval that could hold a value below the best sample is re-sampled until one
+    step moves the point by at most 1/8 of a lower bound of the distance on it (the distance to
+    a point, line, ray, segment or round is smooth on the scale of the distance itself away from
+    a round's axis region), and, where a is far larger than a round target b, by at most b's
+    radius / 8.  Why: an arc passing a line (or a ring) at a height h while nearly tangent to it
+    crosses its neighbourhood twice, 2 sqrt(2 R delta) apart; two such near-tied minima 4e-4 rad
+    apart shared one of the 720 steps (5.9e-3 rad) of the float32 scene of
+    arc_far_origin/20261114/2, and golden section found the higher one (3.7478e-8 against
+    3.7469e-8).  On a continuum of closest points every interval qualifies: the zoom then stops
+    at ZOOM_SAMPLES (any sample there is a minimum)."""
     arc_a = ArcMP(a)
     other = point_distance_function(b)
     hi = 2 * ctx.pi if arc_a.whole else arc_a.angle
     rt = _target_radius(b)
-    zoom = {}
-    if rt is not None and rt > 0 and arc_a.r * hi / intervals > rt / R.ZOOM_FRACTION:
-        zoom = dict(lipschitz=lambda lo_, hi_: arc_a.r, resolution=lambda lo_, hi_, lh: rt / R.ZOOM_FRACTION)
-    minima = R.minimize_1d(lambda t: other(arc_a.at(t)), mpf(0), hi, intervals, periodic=arc_a.whole, **zoom)
+    big = rt is not None and rt > 0 and arc_a.r * hi / intervals > rt / R.ZOOM_FRACTION
+    floor = mpf("1e-20") * max(arc_a.r, rt or 0)
+    seen = {}
+
+    def f(t):
+        v = other(arc_a.at(t))
+        seen[t._mpf_] = v
+        return v
+
+    def resolution(lo_, hi_, lh):
+        res = max(min(seen[lo_._mpf_], seen[hi_._mpf_]) - lh / 2, floor) / R.ZOOM_FRACTION
+        return min(res, rt / R.ZOOM_FRACTION) if big else res
+
+    minima = R.minimize_1d(f, mpf(0), hi, intervals, periodic=arc_a.whole, lipschitz=lambda lo_, hi_: arc_a.r,
+                           resolution=resolution, max_samples=ZOOM_SAMPLES)
     return minima[0].value
 
 
