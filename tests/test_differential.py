@@ -2,16 +2,18 @@
 
 A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to
 (every pair of kinds: a circle or disk with any kind, points / lines / rays / segments among
-themselves, a Bezier curve against each of those);
+themselves, a Bezier curve against each of those, an arc against a point, line, ray, segment,
+circle, disk or arc);
 every solver ("bracketing", "companion", "polished", "eigen") x precision (float64, long double,
 float32); both argument orders; distance(), closest_points(), within(), distance_if_within() and
 intersects(), batched and scalar.  Each answer is judged by the fast NumPy screen (an independent
 one-parameter minimisation, an upper bound from genuine points) and by the closest points the
 library returns (on their shapes, separation == distance); every accuracy finding is confirmed
-against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py and
-reference_linear.py before it counts.  The first case of every (family, kind pair) is also
-compared with those references directly, for every combination (a Bezier curve against a linear
-piece: one family per pair, DIRECT_BEZIER_LINEAR).
+against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py,
+reference_arc.py and reference_linear.py before it counts.  The first case of every (family, kind
+pair) is also compared with those references directly, for every combination (a Bezier curve
+against a linear piece: one family per pair, DIRECT_BEZIER_LINEAR; the arc families: every third
+pair, DIRECT_ARC_EVERY).
 
 Bars (never loosened here): |d - d_true| <= bar * max(d_true, scale), bar 1e-12 in float64, 1e-15
 in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs; the scale is the largest radius,
@@ -25,7 +27,11 @@ machine at load ~1 with it (2026-11-26), 80 s of CPU before it with other jobs l
 machine to ~3 (the slice without the families of the pairs without a round took 61 s in the same
 conditions, 58 s on 2026-11-25; the library's answers take most of it). With scalar calls on
 every case it was 75 s, ~197,000
-answers, before those families.  A failure lists one reproducer per finding class;
+answers, before those families.  The 18 arc families (2026-11-26) add 182 cases (two per family
+and kind pair: 36,720 answers, 1.6 s of CPU) and 30 direct references (7.2 s of CPU): 1094 cases,
+231,336 answers and 214 direct references in all, 61 s of CPU (114 s of wall time with other
+jobs loading the machine to 6-7; at load ~2 the slice gets a core and its wall time is about its
+CPU time).  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
