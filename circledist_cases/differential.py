@@ -117,9 +117,13 @@ ROUND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
 LL = [(lk, rk) for i, lk in enumerate(LINEAR) for rk in LINEAR[i:]]
 BL = [("bezier", lk) for lk in LINEAR]
 # an arc against every kind with a query, the arc second (as a circle or disk comes after the
-# pieces, and arc after disk); ("bezier", "arc") joins ARC_OTHERS once Arc-Bezier has a query
+# pieces, and arc after disk).  Once Arc-Bezier has a query, "bezier" joins ARC_OTHERS (after
+# "segment"); the screen, the families (_arc_variant, _feature), the reference
+# (reference_arc.bezier_arc) and the checker take it as they are.  (Adding a pair re-maps the
+# arc families' case ids: case i is pair i mod the number of pairs.)
 ARC_OTHERS = ("point", "line", "ray", "segment", "circle", "disk", "arc")
 ARC_PAIRS = [(k, "arc") for k in ARC_OTHERS]
+ARC_RR = [p for p in ARC_PAIRS if p[0] in ("circle", "disk", "arc")]   # a circle, disk or arc against an arc
 KIND_PAIRS = ROUND_PAIRS + LL + BL + ARC_PAIRS
 LD = np.longdouble
 
@@ -881,7 +885,16 @@ def _feature(circle, kind, data):
     if kind == "axis":
         kind, data = "line", list(data[:6])
     D = np.asarray(data, float)[None]
-    if kind in ROUND:
+    if kind == "bezier":
+        # (a Bezier curve: the nearest of 401 of its points, relative to the circle's centre)
+        t = np.linspace(0, 1, 401)
+        P = sum(math.comb(len(data) - 1, i) * (t ** i * (1 - t) ** (len(data) - 1 - i))[:, None] * (np.asarray(q) - C)
+                for i, q in enumerate(data))
+        rel = np.zeros(3)
+
+        def dist(w):
+            return np.min(np.linalg.norm(w[:, None, :] - P[None], axis=2), axis=1)
+    elif kind in ROUND:
         rel = _diff_ld(C[None], D[:, :3]).astype(float)[0]
         tn = _unit_normal(data)
 
@@ -1098,8 +1111,8 @@ for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", 
     FAMILIES["arc_" + _base] = (_arc_pairs(FAMILIES[_base][0]), _arc_variant(_base))
 FAMILIES.update({
     "arc_ends": (ARC_PAIRS, _fam_arc_ends),
-    "arc_end_on_axis": (ARC_PAIRS[4:], _fam_arc_end_on_axis),
-    "arc_spans": (ARC_PAIRS[4:], _fam_arc_spans),
+    "arc_end_on_axis": (ARC_RR, _fam_arc_end_on_axis),
+    "arc_spans": (ARC_RR, _fam_arc_spans),
     "arc_angles": (ARC_PAIRS, _fam_arc_angles),
     "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
 })

@@ -121,25 +121,42 @@ def reference_mp(a, b, intervals=INTERVALS):
     3.7469e-8).  On a continuum of closest points every interval qualifies: the zoom then stops
     at ZOOM_SAMPLES (any sample there is a minimum)."""
     arc_a = ArcMP(a)
-    other = point_distance_function(b)
     hi = 2 * ctx.pi if arc_a.whole else arc_a.angle
     rt = _target_radius(b)
     big = rt is not None and rt > 0 and arc_a.r * hi / intervals > rt / R.ZOOM_FRACTION
-    floor = mpf("1e-20") * max(arc_a.r, rt or 0)
+    return _least(arc_a.at, point_distance_function(b), hi, intervals, arc_a.whole, lambda lo_, hi_: arc_a.r,
+                  max(arc_a.r, rt or 0), rt / R.ZOOM_FRACTION if big else None)
+
+
+def _least(point_at, other, hi, intervals, periodic, lipschitz, scale, round_res=None):
+    """The least value of other(point_at(t)) over t in [0, hi], by minimize_1d zoomed as
+    reference_mp says (round_res: the finer resolution a round's features ask for, or None)."""
+    floor = mpf("1e-20") * scale
     seen = {}
 
     def f(t):
-        v = other(arc_a.at(t))
+        v = other(point_at(t))
         seen[t._mpf_] = v
         return v
 
     def resolution(lo_, hi_, lh):
         res = max(min(seen[lo_._mpf_], seen[hi_._mpf_]) - lh / 2, floor) / R.ZOOM_FRACTION
-        return min(res, rt / R.ZOOM_FRACTION) if big else res
+        return res if round_res is None else min(res, round_res)
 
-    minima = R.minimize_1d(f, mpf(0), hi, intervals, periodic=arc_a.whole, lipschitz=lambda lo_, hi_: arc_a.r,
-                           resolution=resolution, max_samples=ZOOM_SAMPLES)
+    minima = R.minimize_1d(f, mpf(0), hi, intervals, periodic=periodic, lipschitz=lipschitz, resolution=resolution,
+                           max_samples=ZOOM_SAMPLES)
     return minima[0].value
+
+
+def bezier_arc(ctrl, arc_shape):
+    """A Bezier curve (control points) against an arc: min over the curve's t of the point-arc
+    closed form, zoomed as above (the curve's speed bounded by its hodograph, reference_round's
+    _speed_bound; the arc's features resolved to its radius / 8 where the curve is far larger)."""
+    arc_b = ArcMP(arc_shape)
+    pts = [R.vec(p) for p in ctrl]
+    extent = max(float(R.norm(R.sub(p, pts[0]))) for p in pts)
+    return _least(lambda t: R.bezier_point(ctrl, t), arc_b.point_distance, mpf(1), R.CURVE_SAMPLES, False,
+                  R._speed_bound(ctrl), max(arc_b.r, extent), arc_b.r / R.ZOOM_FRACTION)
 
 
 def reference(a, b, intervals=INTERVALS):
@@ -149,6 +166,8 @@ def reference(a, b, intervals=INTERVALS):
 
 def case_reference(ka, a_data, kb, b_data):
     """The 50-digit distance of a differential case with an arc (canonical order: the arc second,
-    or both arcs)."""
+    or both arcs; a Bezier curve first: bezier_arc, ready for the Arc-Bezier query)."""
     assert kb == "arc", (ka, kb)
+    if ka == "bezier":
+        return bezier_arc([list(p) for p in a_data], shape(kb, b_data))
     return reference_mp(shape(kb, b_data), shape(ka, a_data))
