@@ -35,8 +35,9 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    span, else the nearer end's): a circle's angle against the other shape (both ways round for
    two rounds), a line's parameter against the round and the round's angle against the line, an
    arc's angle over [0, angle] wherever a circle's runs over [0, 2 pi) and the arc's closed form
-   wherever a round's is the target, a Bezier curve's t against the round (each half from its own end, so parameters near an end keep their full
-   precision).  Dense sampling, then a vectorised beam search (nested re-sampling around the
+   wherever a round's is the target, a Bezier curve's t against the round (each half from its
+   own end, so parameters near an end keep their full precision).  Dense sampling, then a
+   vectorised beam search (nested re-sampling around the
    best few sampled local minima) in float64, then long-double levels around the best.  Where
    the sampling step is long for the target round's features (a curve or a huge circle passing a
    much smaller round) a Lipschitz zoom (``_zoom``: hodograph or radius bounds on the point's
@@ -2607,7 +2608,8 @@ def _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
             continue
         d, err = _call(cd.distance, x, y, solver=solver, precision=precision)
         if err:
-            out.append(_finding("exception", gcases[sel[0]], solver, precision, order, "whole arc as circle", error=err))
+            out.append(_finding("exception", gcases[sel[0]], solver, precision, order, "whole arc as circle",
+                                error=err))
             continue
         stats["answers"]["distance (whole arc as circle)"] += len(sel)
         d = np.asarray(d)

@@ -9,8 +9,10 @@ distance (point, line, ray, segment: the clamped projection; circle, disk: note 
 another arc: the point-arc closed form of ArcMP.point_distance, itself checked against sampling
 in tests/test_arc.py), found by reference_round.minimize_1d (dense samples, golden section on
 every sampled local minimum; zoomed by Lipschitz bounds where two minima could share a sampling
-step: an arc nearly tangent to a line or ring, or far larger than a round target).  Every value is a genuine point's exact distance, an upper
-bound; the least is kept.
+step: an arc nearly tangent to a line or ring, or far larger than a round target).  Every value
+is a genuine point's exact distance, an upper bound; the least is kept.  A Bezier curve against
+an arc (bezier_arc, for the Arc-Bezier query to come): the curve's t against the point-arc closed
+form, zoomed alike.
 
 Shapes are plain tuples (kind, *fields), fields as tuples of floats: ("arc", center, normal,
 radius, start, angle); shape(kind, data) converts the differential's flat lists.
