@@ -261,8 +261,7 @@ inline const std::string& arc() {
       "The circular arc ``center + radius * (cos(t) u + sin(t) v)``, t in [0, angle], where u is\n"
       "the unit projection of `start` onto the plane normal to `normal` and v = n x u.\n\n"
       "An angle of 2 pi is the whole circle (the circle's answers). `closest_points` reports an\n"
-      "arc point by its angle from the start: ``param = (t, 0)``. There is no query between an\n"
-      "arc and a Bezier curve yet.",
+      "arc point by its angle from the start: ``param = (t, 0)``.",
       R"(
 center : array_like, shape (3,) or (..., 3)
     Center of the arc's circle.

@@ -196,7 +196,8 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<BezierCurve3<Real>, Ray3<Real>>();
   v.template add<BezierCurve3<Real>, Segment3<Real>>();
   v.template add<BezierCurve3<Real>, BezierCurve3<Real>>();  // bezier_bezier.hpp
-  // arc.hpp: an arc against every kind but Bezier curves (no Arc-Bezier query yet).
+  // arc.hpp: an arc against every kind; bezier_arc.hpp: against a Bezier curve.
+  v.template add<BezierCurve3<Real>, Arc3<Real>>();
   v.template add<Line3<Real>, Arc3<Real>>();
   v.template add<Ray3<Real>, Arc3<Real>>();
   v.template add<Segment3<Real>, Arc3<Real>>();

@@ -11,8 +11,10 @@ minimize_1d (dense samples, golden section on every sampled local minimum).
 
 Accuracy rule (the project's, never loosened): |d - d_ref| <= 1e-12 x max(d_ref, largest radius
 in the query) in double, 1e-15 x in long double; float32 answers within 4 float32 ulps of
-max(d_ref, largest radius) of the exact answer for the float32 inputs (README). Arc-Bezier has no
-query: it raises the library's "no query between" error.
+max(d_ref, largest radius) of the exact answer for the float32 inputs (README). Arc-Bezier
+(bezier_arc.hpp): the curve evaluated by de Casteljau at 50 digits, the arc's point-arc closed
+form below, minimized over the curve's t in [0, 1]; its bar's size is the largest of the radius
+and the curve's farthest control point from the arc's center.
 """
 
 from __future__ import annotations
@@ -321,15 +323,151 @@ def test_precision_follows_the_dtypes():
     assert cd.distance(whole32, np.float32([-2, 0, 0])) == 1.0
 
 
-def test_arc_bezier_has_no_query():
-    a, b = make(QUARTER), cd.Bezier([[0, 0, 0], [1, 1, 1], [2, 0, 0]])
-    for x, y, first, second in ((a, b, "Arc", "Bezier"), (b, a, "Bezier", "Arc")):
-        with pytest.raises(TypeError, match=f"no query between a {first} and a {second}"):
-            cd.distance(x, y)
-        with pytest.raises(TypeError, match="no query"):
-            cd.closest_points(x, y)
-        with pytest.raises(TypeError, match="no query"):
-            cd.within(x, y, 1.0)
+# ------------------------------------------------------------------------------------------------
+# Arc-Bezier (bezier_arc.hpp, docs/arc.md "A Bezier curve")
+# ------------------------------------------------------------------------------------------------
+def curve_reference(a, ctrl):
+    """min over the curve's t in [0, 1] of the arc's closed-form distance from its point (50 digits)."""
+    arc_a = ArcMP(a)
+    return float(R.minimize_1d(lambda t: arc_a.point_distance(R.bezier_point(ctrl, t)), mpf(0), mpf(1), 720,
+                               periodic=False)[0].value)
+
+
+def curve_scale(a, ctrl, ref):
+    return max([ref, a[3]] + [float(np.linalg.norm(np.subtract(p, a[1]))) for p in ctrl])
+
+
+def random_curve_cases(n, seed):
+    rng = np.random.default_rng([seed, 19])
+    out = []
+    for k in range(n):
+        a = random_shape("arc", rng)
+        around = np.asarray(a[1]) + rng.normal(size=3) * 0.7
+        out.append((a, tuple(_t(around + rng.normal(size=3)) for _ in range(2 + k % 7))))  # degree 1..7
+    return out
+
+
+E1 = (0.0, 1.0, 0.0)  # QUARTER's end
+CURVE_HARD = [
+    # (name, arc, control points, exact distance or None, unique)
+    ("curve-end-at-the-arc-end", QUARTER, (E1, (0.0, 1.5, 0.3), (-0.2, 2.0, -0.2)), 0.0, None),
+    ("curve-end-at-a-tangency", QUARTER, ((0.6, 0.8, 0.0), (0.2, 1.1, 0.0), (-0.3, 1.2, 0.4)), 0.0, None),
+    ("arc-end-on-the-curve", QUARTER, ((0.5, 1.5, 0.5), (0.0, 1.0, 0.0), (-0.5, 0.5, -0.5)), 0.0, None),
+    ("arc-end-below-the-curve", QUARTER, ((0.5, 1.5, 0.55), (0.0, 1.0, 0.05), (-0.5, 0.5, -0.45)), None, True),
+    ("along-the-axis", QUARTER, ((0.0, 0.0, -1.0), (0.0, 0.0, 0.5), (0.0, 0.0, 1.0)), 1.0, False),
+    ("coplanar-across", QUARTER, ((0.0, 0.0, 0.0), (1.0, 0.4, 0.0), (2.0, 1.5, 0.0)), 0.0, None),
+    ("coplanar-off-the-arc", QUARTER, ((-2.0, -0.5, 0.0), (-1.0, -2.0, 0.0), (0.5, -1.5, 0.0)), None, None),
+    ("degree-7-wave", QUARTER, tuple((math.cos(k / 2), math.sin(k / 2), 0.3 * (-1) ** k) for k in range(8)),
+     None, None),
+    ("tiny-arc", arc((0.3, 0.2, 0.1), (0.3, 1.0, 0.2), 1e-6, X, 2.0), ((-1.0, 0.5, 0.2), (0.3, -1.0, 0.4), (1.0, 1.0, -0.3)),
+     None, None),
+    ("huge-arc", arc(O, Z, 1e6, X, 0.2), ((1e6 - 0.5, -0.3, 0.2), (1e6 + 0.2, 0.4, -0.3), (1e6 + 0.7, 0.1, 0.5)),
+     None, None),
+]
+for _shift in (1e6, 1e8):
+    _by = (_shift, -0.5 * _shift, 0.25 * _shift)
+    for _name, _a, _c, _exact, _unique in CURVE_HARD[:4] + [(f"random-{i}", a, c, None, None)
+                                                             for i, (a, c) in enumerate(random_curve_cases(2, 12))]:
+        CURVE_HARD.append((f"{_name}-translated-{_shift:g}", translated(_a, _by),
+                           tuple(tuple(x + y for x, y in zip(p, _by)) for p in _c), None, None))
+
+
+def curve_both_orders(a, ctrl, **kw):
+    x, y = make(a), cd.Bezier(np.asarray(ctrl))
+    d_ab, d_ba = cd.distance(x, y, **kw), cd.distance(y, x, **kw)
+    assert d_ab == d_ba
+    r_ab, r_ba = cd.closest_points(x, y, **kw), cd.closest_points(y, x, **kw)
+    assert r_ab.distance == d_ab and r_ba.distance == d_ba
+    assert np.array_equal(r_ab.point_a, r_ba.point_b) and np.array_equal(r_ab.param_a, r_ba.param_b)
+    assert r_ab.unique == r_ba.unique
+    return d_ab, r_ab
+
+
+def check_curve_closest(a, ctrl, r, ref):
+    """The arc's point on the arc at its parameter t, the curve's at its parameter, apart by the distance."""
+    pa, pb = np.asarray(r.point_a, float), np.asarray(r.point_b, float)
+    tol = 1e-9 * curve_scale(a, ctrl, ref) + 16 * np.finfo(float).eps * float(np.abs([pa, pb]).max())
+    assert abs(float(np.linalg.norm(pa - pb)) - ref) <= tol
+    arc_mp = ArcMP(a)
+    t = float(r.param_a[0])
+    assert 0 <= t <= a[5] + 1e-15 and r.param_a[1] == 0
+    assert float(R.dist(arc_mp.at(R.to_mp(t)), R.vec(pa))) <= tol
+    s = float(r.param_b[0])
+    assert 0 <= s <= 1 and float(R.dist(R.bezier_point(ctrl, s), R.vec(pb))) <= tol
+
+
+def test_arc_bezier_random_against_the_reference():
+    for a, ctrl in random_curve_cases(14, 1):
+        d, r = curve_both_orders(a, ctrl)
+        ref = curve_reference(a, ctrl)
+        assert abs(d - ref) <= REL * curve_scale(a, ctrl, ref), (a, ctrl, d, ref)
+        check_curve_closest(a, ctrl, r, ref)
+
+
+@pytest.mark.parametrize("case", CURVE_HARD, ids=lambda c: c[0])
+def test_arc_bezier_hard_cases(case):
+    name, a, ctrl, exact, unique = case
+    d, r = curve_both_orders(a, ctrl)
+    ref = curve_reference(a, ctrl)
+    scale = curve_scale(a, ctrl, ref)
+    if exact is not None:
+        assert abs(ref - exact) <= 1e-14 * scale
+    assert abs(d - ref) <= REL * scale, (name, d, ref)
+    check_curve_closest(a, ctrl, r, ref)
+    if unique is not None:
+        assert bool(r.unique) is unique, name
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_arc_bezier_every_solver_and_long_double(solver):
+    for a, ctrl in random_curve_cases(4, 2) + [c[1:3] for c in CURVE_HARD[:8]]:
+        ref = curve_reference(a, ctrl)
+        scale = curve_scale(a, ctrl, ref)
+        d, _ = curve_both_orders(a, ctrl, solver=solver)
+        assert abs(d - ref) <= REL * scale, (solver, a, ctrl, d, ref)
+        d_ld, _ = curve_both_orders(a, ctrl, solver=solver, precision="longdouble")
+        assert isinstance(d_ld, np.longdouble)
+        assert abs(float(d_ld - np.longdouble(ref))) <= REL_LD * scale, (solver, a, ctrl, float(d_ld), ref)
+
+
+def test_arc_bezier_float32():
+    """float32 inputs: within 4 float32 ulps of max(d, size) of the exact answer for them."""
+    for a, ctrl in random_curve_cases(4, 4):
+        a32 = rounded(a, np.float32)
+        c32 = tuple(_t(np.asarray(p, np.float32)) for p in ctrl)
+        x, y = make(a32, np.float32), cd.Bezier(np.asarray(c32, np.float32))
+        d = cd.distance(x, y)  # a single float32 answer comes back as a Python float of a float32
+        assert float(np.float32(d)) == d and cd.distance(y, x) == d
+        ref = curve_reference(a32, c32)
+        assert abs(float(d) - ref) <= 4 * float(np.spacing(np.float32(curve_scale(a32, c32, ref)))), (float(d), ref)
+
+
+def test_arc_bezier_whole_arc_is_the_circle_bit_for_bit():
+    for a, ctrl in random_curve_cases(6, 5):
+        whole = arc(a[1], a[2], a[3], a[4], TWO_PI)
+        circle = cd.Circle(a[1], a[2], a[3])
+        curve = cd.Bezier(np.asarray(ctrl))
+        assert cd.distance(make(whole), curve) == cd.distance(circle, curve)
+        r_arc, r_circle = cd.closest_points(curve, make(whole)), cd.closest_points(curve, circle)
+        assert np.array_equal(r_arc.point_a, r_circle.point_a) and np.array_equal(r_arc.point_b, r_circle.point_b)
+
+
+def test_arc_bezier_batches_and_effects():
+    """A batch of arcs against one curve: the single answers, to the bit; within / intersects /
+    distance_if_within agree with the distance."""
+    cases = random_curve_cases(7, 6)
+    ctrl = cases[0][1]
+    curve = cd.Bezier(np.asarray(ctrl))
+    arcs = batch_of([a for a, _ in cases])
+    d = cd.distance(arcs, curve)
+    r = cd.closest_points(curve, arcs)
+    assert np.array_equal(d, cd.distance(curve, arcs)) and np.array_equal(r.distance, d)
+    for i, (a, _) in enumerate(cases):
+        assert d[i] == cd.distance(make(a), curve)
+        assert bool(cd.within(make(a), curve, float(d[i]) * (1 + 1e-9) + 1e-12))
+        assert not cd.within(curve, make(a), float(d[i]) * (1 - 1e-6)) or d[i] == 0
+        assert bool(cd.intersects(make(a), curve)) == (d[i] == 0)
+        assert cd.distance_if_within(make(a), curve, 2 * float(d[i]) + 1) == d[i]
 
 
 # ------------------------------------------------------------------------------------------------
@@ -556,16 +694,15 @@ def test_command_line_answers_and_draws_an_arc(tmp_path):
         assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_scene_with_arcs_and_bezier_curves_raises_for_that_pair():
-    """Arc-Bezier has no query: a Scene holding both answers the other kinds and raises the
-    library's "no query between" error where the pair is asked."""
-    s = cd.Scene({"hook": make(QUARTER), "cable": cd.Bezier([[0, 0, 0], [1, 1, 1]]),
-                  "ring": cd.Circle([0, 0, 0], [0, 0, 1], 2.0)})
+def test_scene_with_arcs_and_bezier_curves_answers_that_pair():
+    """Arc-Bezier has a query (bezier_arc.hpp): a Scene holding both answers it as brute force does."""
+    hook, cable = make(QUARTER), cd.Bezier([[0, 0, 0], [1, 1, 1]])
+    s = cd.Scene({"hook": hook, "cable": cable, "ring": cd.Circle([0, 0, 0], [0, 0, 1], 2.0)})
     assert s.nearest("ring", k=1) == [("hook", 1.0)]
-    with pytest.raises(TypeError, match="no query between a Arc and a Bezier"):
-        s.nearest("hook")
-    with pytest.raises(TypeError, match="no query between a Arc and a Bezier"):
-        s.pairs_within(1.0)
+    near = dict(s.nearest("hook", k=2))
+    assert near["cable"] == cd.distance(hook, cable)
+    got = {tuple(sorted(p)) for p in s.pairs_within(1.0)}
+    assert ("cable", "hook") in got
 
 
 def test_bounds_decide_separated_arc_pairs_without_a_solve():

@@ -23,6 +23,20 @@
 #include <type_traits>
 #include <vector>
 
+// Whether the test runs under the address sanitizer (tools/run.sh test: every C++ test at -O1 with
+// address and undefined-behaviour checks, within 600 s in all), where a test draws a tenth of its
+// random cases: the references' dense sampling is most of its time, and the hard cases, all run,
+// are what the sanitizers are for. (test_bezier_arc.cpp; test_arc.cpp and test_annulus.cpp test
+// the same themselves.)
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CIRCLEDIST_TEST_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) && !defined(CIRCLEDIST_TEST_SANITIZED)
+#define CIRCLEDIST_TEST_SANITIZED 1
+#endif
+
 using namespace circledist;
 using LD = long double;
 using V3 = Vec3<LD>;
@@ -286,6 +300,23 @@ template <class Round3, class Check> void circle_round_shared_cases(const Check&
   check("radius ratio 1e-6", Circle3<double>{V3d(1.2, 0.3, 0.1), unit(0.2, 1, 0.4), 1e-6}, big);
   check("radius ratio 1e6", Circle3<double>{V3d(1e6 + 0.3, 0.1, 0.2), unit(0.1, 0.2, 1), 1e6}, big);
 }
+
+// The random stream the shape tests draw from (test_arc.cpp, test_annulus.cpp,
+// test_bezier_arc.cpp each add their shapes): normal vectors, radii e^(0.7 N).
+struct ShapeDraw {
+  std::mt19937_64 rng;
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform{0, 1};
+  explicit ShapeDraw(std::uint64_t seed) : rng(seed) {}
+  V3d vec() { return V3d(normal(rng), normal(rng), normal(rng)); }
+  double radius() { return std::exp(0.7 * normal(rng)); }
+  // An arc's angle: a tenth below 1e-6..1, a tenth within 1e-3 of 2 pi, the rest up to 2 pi.
+  double angle() {
+    const double turn = 6.283185307179586, x = uniform(rng);
+    return x < 0.1 ? std::pow(10.0, -6 * uniform(rng)) : x < 0.2 ? turn * (1 - 1e-3 * uniform(rng)) : turn * uniform(rng);
+  }
+  Arc3<double> arc() { return {vec(), vec(), radius(), vec(), angle()}; }
+};
 
 inline BezierCurve3<double> bezier(std::initializer_list<V3d> points) {
   BezierCurve3<double> c;

@@ -254,13 +254,8 @@ template <class X> void with_translations(const std::string& kind, const char* n
   }
 }
 
-struct Draw {
-  std::mt19937_64 rng;
-  std::normal_distribution<double> normal;
-  std::uniform_real_distribution<double> uniform{0, 1};
-  explicit Draw(std::uint64_t seed) : rng(seed) {}
-  V3d vec() { return V3d(normal(rng), normal(rng), normal(rng)); }
-  double radius() { return std::exp(0.7 * normal(rng)); }
+struct Draw : ShapeDraw {
+  using ShapeDraw::ShapeDraw;
   Annulus annulus() {
     const double ro = radius();
     return {vec(), vec(), ro * (0.1 + 0.8 * uniform(rng)), ro};

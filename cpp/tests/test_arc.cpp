@@ -211,18 +211,8 @@ template <class S> void whole_case(const char* name, const S& s, const Arc& a) {
 // ---------------------------------------------------------------------------------------------
 // Shapes.
 
-struct Draw {
-  std::mt19937_64 rng;
-  std::normal_distribution<double> normal;
-  std::uniform_real_distribution<double> uniform{0, 1};
-  explicit Draw(std::uint64_t seed) : rng(seed) {}
-  V3d vec() { return V3d(normal(rng), normal(rng), normal(rng)); }
-  double radius() { return std::exp(0.7 * normal(rng)); }
-  double angle() {
-    const double x = uniform(rng);
-    return x < 0.1 ? std::pow(10.0, -6 * uniform(rng)) : x < 0.2 ? kTurn * (1 - 1e-3 * uniform(rng)) : kTurn * uniform(rng);
-  }
-  Arc arc() { return {vec(), vec(), radius(), vec(), angle()}; }
+struct Draw : ShapeDraw {
+  using ShapeDraw::ShapeDraw;
 };
 
 // The arc of circle (c, n, r) from canonical angle t0 (the library's Frame, so that the test can

@@ -621,8 +621,7 @@ class Arc(Shape):
     the unit projection of `start` onto the plane normal to `normal` and v = n x u.
     
     An angle of 2 pi is the whole circle (the circle's answers). `closest_points` reports an
-    arc point by its angle from the start: ``param = (t, 0)``. There is no query between an
-    arc and a Bezier curve yet.
+    arc point by its angle from the start: ``param = (t, 0)``.
     
     Parameters
     ----------

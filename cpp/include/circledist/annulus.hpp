@@ -1,5 +1,6 @@
 // Annulus (issue 19; derivation in docs/annulus.md): an annulus against a point, line, ray,
-// segment, circle, disk, arc or annulus, from the disk's, the circle's and the arc's queries.
+// segment, circle, disk, arc, Bezier curve or annulus, from the disk's, the circle's, the arc's
+// and the curve's queries.
 //
 // The annulus A is the outer disk D minus the open hole of its inner circle K. Its distance from
 // a point is the disk's where the point's projection falls in the ring, else the inner circle's
@@ -8,10 +9,11 @@
 //    plane, so A's closest point is D's when D's lies in the ring (s >= inner), and otherwise
 //    on K (docs/annulus.md, "Convex shapes"): the disk query, then the inner circle's only where
 //    the disk's point fell in the hole;
-//  - a circle or an arc (not convex): the least of the interior candidates (circle-disk's
-//    height candidates, z = 0 or z' = 0, on the arc's angles and with its ends for an arc, kept
-//    where their projection lies in the ring) and the shape against both rims (circle-circle,
-//    arc-circle) (docs/annulus.md, "A circle", "An arc");
+//  - a circle, an arc or a Bezier curve (not convex): the least of the interior candidates
+//    (circle-disk's or bezier-disk's height candidates, z = 0 or z' = 0, on the arc's angles and
+//    with its ends for an arc, with its ends for a curve, kept where their projection lies in the
+//    ring) and the shape against both rims (circle-circle, arc-circle, bezier-circle)
+//    (docs/annulus.md, "A circle", "An arc", "A Bezier curve");
 //  - an annulus against an annulus: the outer disks' closest pair where it lies in both rings,
 //    else the least of each rim against the other annulus (the circle reduction), since a
 //    closest pair has a point on a rim, and a common part has its ends on rims
@@ -22,6 +24,7 @@
 #pragma once
 
 #include "arc.hpp"
+#include "bezier.hpp"
 #include "circle_circle.hpp"
 #include "circle_disk.hpp"
 #include "disk_disk.hpp"
@@ -156,6 +159,37 @@ template <class Real> struct InteriorVerdict {
   Real best = std::numeric_limits<Real>::infinity();
   bool decided = false;
 };
+// The interior candidates kept in the ring, a circle's, an arc's or a curve's (docs/annulus.md,
+// "A circle", "A Bezier curve"): each candidate parameter x, its local point `local_at(x)` in the
+// annulus's frame, kept where its projection lies in the ring, at the distance |z| to the point
+// below (`side_a(x, r)` fills the shape's point and parameter); and the verdict (above), the
+// lowest |z| taken over every candidate.
+template <class Real, int N, class Add, class LocalAt, class SideA>
+InteriorVerdict<Real> interior_in_ring(const Candidates<Real, N>& heights, const Annulus3<Real>& a,
+                                       const Round<Real>& round, Real scale, bool with_points, const Add& add,
+                                       const LocalAt& local_at, const SideA& side_a) {
+  InteriorVerdict<Real> verdict;
+  Real lowest = std::numeric_limits<Real>::infinity();
+  for (int i = 0; i < heights.count; ++i) {
+    const Vec3<Real> p = local_at(heights.value[i]);
+    lowest = std::min(lowest, std::abs(p.z()));
+    const Real rho = length2d(p.x(), p.y());
+    if (!(rho >= a.inner_radius && rho <= a.outer_radius)) continue;
+    Result<Real> r;
+    r.distance = std::abs(p.z());
+    verdict.best = std::min(verdict.best, r.distance);
+    if (with_points) {
+      const Vec3<Real> below(p.x(), p.y(), 0);
+      side_a(heights.value[i], r);
+      r.point_b = round.world(below);
+      r.param_b = DiskTarget<Real>::param(below);
+    }
+    add(r);
+  }
+  verdict.decided = verdict.best <= lowest + tie_tolerance(scale);
+  return verdict;
+}
+
 // An arc (ArcSpan, arc.hpp) takes the candidates on its angles only, and its two ends.
 template <class Roots, class Real, class Add>
 InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bool with_points,
@@ -173,28 +207,13 @@ InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annu
     heights.push(span->lo());
     heights.push(span->hi());
   }
-  InteriorVerdict<Real> verdict;
-  Real lowest = std::numeric_limits<Real>::infinity();
-  for (int i = 0; i < heights.count; ++i) {
-    const Real t = span ? heights.value[i] : wrap_angle(heights.value[i]);
-    const Vec3<Real> p = local.at(t);
-    lowest = std::min(lowest, std::abs(p.z()));
-    const Real rho = length2d(p.x(), p.y());
-    if (!(rho >= a.inner_radius && rho <= a.outer_radius)) continue;
-    Result<Real> r;
-    r.distance = std::abs(p.z());
-    verdict.best = std::min(verdict.best, r.distance);
-    if (with_points) {
-      const Vec3<Real> below(p.x(), p.y(), 0);
-      r.point_a = c.center + c.radius * (std::cos(t) * local.frame.u + std::sin(t) * local.frame.v);
-      r.point_b = round.world(below);
-      r.param_a = Vec2<Real>(span ? span->param_of(t) : t, 0);
-      r.param_b = DiskTarget<Real>::param(below);
-    }
-    add(r);
-  }
-  verdict.decided = verdict.best <= lowest + tie_tolerance(scale);
-  return verdict;
+  return interior_in_ring(
+      heights, a, round, scale, with_points, add, [&](Real x) { return local.at(span ? x : wrap_angle(x)); },
+      [&](Real x, Result<Real>& r) {
+        const Real t = span ? x : wrap_angle(x);
+        r.point_a = c.center + c.radius * (std::cos(t) * local.frame.u + std::sin(t) * local.frame.v);
+        r.param_a = Vec2<Real>(span ? span->param_of(t) : t, 0);
+      });
 }
 
 // The best of a set of candidate Results, `unique` false when another reaches the same distance
@@ -230,6 +249,38 @@ InteriorVerdict<Real> ring_interior(const Arc3<Real>& arc, const Annulus3<Real>&
   const ArcSpan<Real> span(arc);
   return circle_annulus_interior<Roots>(arc_circle(arc), a, with_points, add, &span);
 }
+// A Bezier curve (docs/annulus.md, "A Bezier curve"): the stationary points of its height
+// (push_curve_height_roots, bezier.hpp: bezier-disk's interior candidates) and its two ends.
+// An empty curve has none (its rims' answers are empty too).
+template <class Roots, class Real, class Add>
+InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b, const Annulus3<Real>& a, bool with_points,
+                                    const Add& add) {
+  if (b.control.cols() == 0) return {std::numeric_limits<Real>::infinity(), true};
+  const Round<Real> round(a.center, a.normal, a.outer_radius);
+  const LocalBezier<Real> c(b, round);
+  const Real scale = bezier_round_scale(c, a.outer_radius);
+  Candidates<Real, 2 * kMaxBezierDegree + 8> heights;
+  heights.push(Real(0));
+  heights.push(Real(1));
+  push_curve_height_roots<Roots>(c, scale, heights);
+  return interior_in_ring(heights, a, round, scale, with_points, add, [&](Real t) { return c.at(t); },
+                          [&](Real t, Result<Real>& r) {
+                            r.point_a = b.at(t);
+                            r.param_a = Vec2<Real>(t, 0);
+                          });
+}
+
+// The length scale of a ring query (tolerances follow it): the annulus's radius, the round's
+// radius and the distance between their centers, or a curve's farthest control point.
+template <class Real, class Curve> Real ring_scale(const Curve& curve, const Annulus3<Real>& a) {
+  return std::max({a.outer_radius, curve.radius, (curve.center - a.center).norm()});
+}
+template <class Real> Real ring_scale(const BezierCurve3<Real>& b, const Annulus3<Real>& a) {
+  Real s = a.outer_radius;
+  for (int i = 0; i < int(b.control.cols()); ++i) s = std::max(s, (b.control.col(i) - a.center).norm());
+  return s;
+}
+
 template <class Roots, class Real, template <class> class Curve>
 Real curve_ring_distance(const Curve<Real>& curve, const Annulus3<Real>& a) {
   const InteriorVerdict<Real> interior = ring_interior<Roots>(curve, a, false, [](const Result<Real>&) {});
@@ -244,7 +295,7 @@ Result<Real> curve_ring_closest(const Curve<Real>& curve, const Annulus3<Real>& 
       ring_interior<Roots>(curve, a, true, [&](const Result<Real>& r) { candidates.add(r); });
   candidates.add(rim_as_annulus(circledist::closest_points<Roots>(curve, outer_rim(a)), a.outer_radius));
   candidates.add(rim_as_annulus(circledist::closest_points<Roots>(curve, inner_rim(a)), a.inner_radius));
-  const Real scale = std::max({a.outer_radius, curve.radius, (curve.center - a.center).norm()});
+  const Real scale = ring_scale(curve, a);
   Result<Real> r = best_of(candidates, scale > 0 ? scale : Real(1));
   r.distance = interior.decided ? interior.best : std::min(interior.best, r.distance);
   return r;
@@ -289,20 +340,23 @@ template <class Real> struct Query<Ray3<Real>, Annulus3<Real>> : ConvexAnnulusQu
 template <class Real> struct Query<Segment3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Segment3<Real>> {};
 template <class Real> struct Query<Disk3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Disk3<Real>> {};
 
-// A circle (docs/annulus.md, "A circle").
-template <class Real> struct Query<Circle3<Real>, Annulus3<Real>> {
+// A circle or a Bezier curve (docs/annulus.md, "A circle", "A Bezier curve"): not convex, the
+// interior candidates and both rims.
+template <class Real, class Curve> struct CurveAnnulusQuery {
   static constexpr bool defined = true;
-  template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& c, const Annulus3<Real>& a) {
+  template <class Roots = DefaultRoots> static Real distance(const Curve& c, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_distance<Roots>(c, a, kind);
     return detail::curve_ring_distance<Roots>(c, a);
   }
-  template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& c, const Annulus3<Real>& a) {
+  template <class Roots = DefaultRoots> static Result<Real> closest(const Curve& c, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(c, a, kind);
     return detail::curve_ring_closest<Roots>(c, a);
   }
 };
+template <class Real> struct Query<Circle3<Real>, Annulus3<Real>> : CurveAnnulusQuery<Real, Circle3<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Annulus3<Real>> : CurveAnnulusQuery<Real, BezierCurve3<Real>> {};
 
 // An arc (docs/annulus.md, "An arc"): an arc of 2 pi is its circle, a zero radius its center.
 template <class Real> struct Query<Arc3<Real>, Annulus3<Real>> {

@@ -29,22 +29,46 @@ void push_curve_ring_roots(const LocalBezier<Real>& c, Real radius, Real scale, 
   push_curve_roots<Roots>((dot * dot) * (x * x + y * y) - (r * r) * (h * h), out);
 }
 
-// Note 001 §3: where x^2 + y^2 = R^2 (the pieces' ends), and z z' = 0 (the inside pieces).
+// Where the height over the round's plane has z z' = 0 (degrees n and n - 1): the stationary
+// points of |z|, a disk's inside pieces (note 001 §3), a ring's curve along its axis (below) and
+// an annulus's interior candidates (annulus.hpp, docs/annulus.md "A Bezier curve").
 template <class Roots, class Real, int N>
-void push_curve_disk_roots(const LocalBezier<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
+void push_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<Real, N>& out) {
   if (c.n < 1) return;
-  const CurvePoly<Real> x = c.coordinate(0, scale), y = c.coordinate(1, scale), z = c.coordinate(2, scale);
-  CurvePoly<Real> g = x * x + y * y;
-  const Real r = radius / scale;
-  g.c[0] -= r * r;
-  push_curve_roots<Roots>(g, out);
+  const CurvePoly<Real> z = c.coordinate(2, scale);
   push_curve_roots<Roots>(z, out);
   push_curve_roots<Roots>(z.derivative(), out);
 }
 
-// A curve against a ring or a disk: the end points; the roots of note 001 eq. (2) squared (the
-// ring's stationary points); for a disk, the rim crossings and z z' = 0 (note 001 §3); for a
-// ring, z z' = 0 as well (see below); all polished on the target's exact distance.
+// Note 001 §3: where x^2 + y^2 = R^2 (the pieces' ends), and z z' = 0 (the inside pieces).
+template <class Roots, class Real, int N>
+void push_curve_disk_roots(const LocalBezier<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
+  if (c.n < 1) return;
+  const CurvePoly<Real> x = c.coordinate(0, scale), y = c.coordinate(1, scale);
+  CurvePoly<Real> g = x * x + y * y;
+  const Real r = radius / scale;
+  g.c[0] -= r * r;
+  push_curve_roots<Roots>(g, out);
+  push_curve_height_roots<Roots>(c, scale, out);
+}
+
+// A piece's candidates against a ring or a disk (Target): its end points; the roots of note 001
+// eq. (2) squared (the ring's stationary points); for a disk, the rim crossings and z z' = 0
+// (note 001 §3); for a ring, z z' = 0 as well: eq. (2) squared carries the factor x^2 + y^2, so
+// on a curve lying along the axis it vanishes identically and has no roots, while the distance
+// sqrt(R^2 + z^2) is smallest where z z' = 0; those roots seed the polish there and near it.
+// Also an arc's circle's candidates (bezier_arc.hpp).
+template <class Roots, class Target, class Real, int N>
+void push_curve_round_candidates(const LocalBezier<Real>& piece, Real radius, Real scale, Candidates<Real, N>& out) {
+  out.push(Real(0));
+  out.push(Real(1));
+  if constexpr (Target::interior) push_curve_disk_roots<Roots>(piece, radius, scale, out);
+  push_curve_ring_roots<Roots>(piece, radius, scale, out);
+  if constexpr (!Target::interior) push_curve_height_roots<Roots>(piece, scale, out);
+}
+
+// A curve against a ring or a disk: its candidates (push_curve_round_candidates), polished on
+// the target's exact distance.
 template <class Real, class Target> struct CurveRoundQuery : CurveRoundBase<Real> {
   static constexpr bool defined = true;
   using Base = CurveRoundBase<Real>;
@@ -57,21 +81,7 @@ template <class Real, class Target> struct CurveRoundQuery : CurveRoundBase<Real
     const auto distance_of = [&](const Vec3<Real>& p) { return Target::distance(p, radius); };
     return Base::solve_pieces(c, b, round, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s) {
       typename Base::Starts starts;
-      starts.push(Real(0));
-      starts.push(Real(1));
-      if constexpr (Target::interior) push_curve_disk_roots<Roots>(piece, radius, s, starts);
-      push_curve_ring_roots<Roots>(piece, radius, s, starts);
-      if constexpr (!Target::interior) {
-        // Eq. (2) squared carries the factor x^2 + y^2: on a curve lying along the axis it
-        // vanishes identically and has no roots, while the distance sqrt(R^2 + z^2) is smallest
-        // where z z' = 0. Those roots (degrees n and n - 1, cheap) seed the polish there and near
-        // it. (A disk's candidates hold them already: push_curve_disk_roots.)
-        if (piece.n >= 1) {
-          const CurvePoly<Real> z = piece.coordinate(2, s);
-          push_curve_roots<Roots>(z, starts);
-          push_curve_roots<Roots>(z.derivative(), starts);
-        }
-      }
+      push_curve_round_candidates<Roots, Target>(piece, radius, s, starts);
       const auto h = [&](Real t) { return Target::distance(piece.at(t), radius); };
       const auto jet = [&](Real t) { return piece.template jet<Target>(t, radius); };
       return Base::template polish<Roots>(piece, starts, s, h, jet);

@@ -19,3 +19,4 @@
 #include "bezier_bezier.hpp"
 #include "arc.hpp"
 #include "annulus.hpp"
+#include "bezier_arc.hpp"

@@ -14,19 +14,31 @@
 
 namespace circledist {
 
-// As circle_round_result, for a curve parameter t in [0, 1].
+// As circle_round_result, for a curve parameter t in [0, 1], against a target given by its
+// closest point and parameter (target_side_result, round_target.hpp: a round's, an arc's).
 // A curve solved in pieces reports its point from the best piece (`where`), in local and in world
 // coordinates: plain evaluation at t errs by eps times its farthest control point.
-template <class Target, class Real, int N>
-Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
-                                const BestPiece<Real>& where, const Minima<Real, N>& minima, Real scale) {
+template <class Real, int N, class PointOf, class ParamOf>
+Result<Real> curve_target_result(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
+                                 const BestPiece<Real>& where, const Minima<Real, N>& minima, Real scale,
+                                 const PointOf& point_of, const ParamOf& param_of) {
   const Minimum<Real>& best = minima.best;
   const Vec3<Real> pa = where.valid ? where.piece.at(where.s) : c.at(best.x);
-  Result<Real> r = round_side_result<Target>(minima, [&](Real x) { return c.at(x); }, pa, round, scale,
-                                             distinct_points_tolerance(std::min(scale, c.size)));
+  Result<Real> r = target_side_result(minima, [&](Real x) { return c.at(x); }, pa, round, scale,
+                                      distinct_points_tolerance(std::min(scale, c.size)), point_of, param_of);
   r.point_a = where.valid ? round.world(pa) : b.at(best.x);
   r.param_a = Vec2<Real>(best.x, 0);
   return r;
+}
+
+// Against a round (Target: round_target.hpp).
+template <class Target, class Real, int N>
+Result<Real> curve_round_result(const BezierCurve3<Real>& b, const LocalBezier<Real>& c, const Round<Real>& round,
+                                const BestPiece<Real>& where, const Minima<Real, N>& minima, Real scale) {
+  return curve_target_result(
+      b, c, round, where, minima, scale,
+      [&](const Vec3<Real>& p, bool& ambiguous) { return Target::point(p, round.radius, scale, ambiguous); },
+      [](const Vec3<Real>& q) { return Target::param(q); });
 }
 
 template <class Real> Result<Real> empty_curve_result() {
@@ -37,8 +49,9 @@ template <class Real> Result<Real> empty_curve_result() {
 }
 
 template <class Real> struct CurveRoundBase {
-  // 2 end points + 6n-2 + 2n + n + (n-1) roots for a disk: 69 at degree 7 (a circle: 6n-2 + n + (n-1)).
-  using Starts = Candidates<Real, 72>;
+  // 2 end points + 6n-2 + 2n + n + (n-1) roots for a disk: 69 at degree 7 (a circle: 6n-2 + n + (n-1));
+  // an arc, a circle's and its two ends' 2n-1 each (bezier_arc.hpp): 2 + 8n-3 + 2 (2n-1) = 81.
+  using Starts = Candidates<Real, 84>;
   using Found = Minima<Real, Starts::capacity>;
 
   template <class Roots, class H, class J>

@@ -50,11 +50,19 @@ template <class Real> struct LocalBezier {
 
   Vec3<Real> at(Real t) const { return casteljau(q, n, t); }
 
-  // The target's (round_target.hpp) squared distance and its derivatives at t.
-  template <class Target> Jet<Real> jet(Real t, Real radius) const {
+  // A squared distance's jet at t, `of(P, P', P'')`: a target's with state (an arc's ends,
+  // bezier_arc.hpp) as well as a round's (jet below).
+  template <class Of> Jet<Real> jet_of(Real t, const Of& of) const {
     const Vec3<Real> p1 = n >= 1 ? casteljau(d1, n - 1, t) : Vec3<Real>::Zero();
     const Vec3<Real> p2 = n >= 2 ? casteljau(d2, n - 2, t) : Vec3<Real>::Zero();
-    return Target::jet(at(t), p1, p2, radius);
+    return of(at(t), p1, p2);
+  }
+
+  // The target's (round_target.hpp) squared distance and its derivatives at t.
+  template <class Target> Jet<Real> jet(Real t, Real radius) const {
+    return jet_of(t, [&](const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2) {
+      return Target::jet(p, p1, p2, radius);
+    });
   }
 
   // Coordinate i in the power basis of w = 2t - 1, in units of `scale`:

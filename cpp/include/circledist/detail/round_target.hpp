@@ -122,28 +122,38 @@ template <class Real> struct target_of<Disk3<Real>> {
 };
 template <class Shape> using target_t = typename target_of<Shape>::type;
 
-// The round's side of the Result of a shape A against the target, from the polished minima (the
-// caller adds A's point and parameter): the distance, the target's point closest to `pa`, A's
-// local point at the best minimum (Target::point), with its parameter, and `unique`. That is
-// false when the target's point is not the only one (a point on a ring's axis) or when another
-// tied minimum gives a distinct pair (another_closest_pair: points of A, `at(x)`, told apart at
-// `apart_a`, points of the round at the scene's scale).
-template <class Target, class Real, int N, class At>
-Result<Real> round_side_result(const Minima<Real, N>& minima, const At& at, const Vec3<Real>& pa,
-                               const Round<Real>& round, Real scale, Real apart_a) {
-  const auto round_point = [&](const Vec3<Real>& p, bool& ambiguous) {
-    return Target::point(p, round.radius, scale, ambiguous);
-  };
+// The other side's Result of a shape A against a target given by its closest point to a local
+// point, `point_of(p, ambiguous)`, and that point's parameter, `param_of(q)`, from the polished
+// minima (the caller adds A's point and parameter): the distance, the target's point closest to
+// `pa` (A's local point at the best minimum), with its parameter, and `unique`. That is false
+// when the target's point is not the only one (`point_of` sets `ambiguous`: a point on a ring's
+// or an arc's axis) or when another tied minimum gives a distinct pair (another_closest_pair:
+// points of A, `at(x)`, told apart at `apart_a`, points of the target at the scene's scale).
+// A round (round_side_result below) and an arc (bezier_arc.hpp) are such targets.
+template <class Real, int N, class At, class PointOf, class ParamOf>
+Result<Real> target_side_result(const Minima<Real, N>& minima, const At& at, const Vec3<Real>& pa,
+                                const Round<Real>& round, Real scale, Real apart_a, const PointOf& point_of,
+                                const ParamOf& param_of) {
   bool ambiguous = false;
-  const Vec3<Real> pb = round_point(pa, ambiguous);
-  ambiguous = ambiguous ||
-              another_closest_pair(minima, scale, at, round_point, pa, pb, apart_a, distinct_points_tolerance(scale));
+  const Vec3<Real> pb = point_of(pa, ambiguous);
+  ambiguous =
+      ambiguous || another_closest_pair(minima, scale, at, point_of, pa, pb, apart_a, distinct_points_tolerance(scale));
   Result<Real> r;
   r.distance = minima.best.value;
   r.point_b = round.world(pb);
-  r.param_b = Target::param(pb);
+  r.param_b = param_of(pb);
   r.unique = !ambiguous;
   return r;
+}
+
+// The round's side: Target::point and Target::param.
+template <class Target, class Real, int N, class At>
+Result<Real> round_side_result(const Minima<Real, N>& minima, const At& at, const Vec3<Real>& pa,
+                               const Round<Real>& round, Real scale, Real apart_a) {
+  return target_side_result(
+      minima, at, pa, round, scale, apart_a,
+      [&](const Vec3<Real>& p, bool& ambiguous) { return Target::point(p, round.radius, scale, ambiguous); },
+      [](const Vec3<Real>& q) { return Target::param(q); });
 }
 
 }  // namespace circledist
