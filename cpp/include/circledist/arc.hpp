@@ -103,22 +103,28 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
 
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return Whole::distance(p, arc_circle(arc));
-    return solve<false>(p, arc).distance;
+    bool on_ring;
+    return solve<false>(p, arc, on_ring).distance;
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return as_arc_result(Whole::closest(p, arc_circle(arc)), ArcSpan<Real>(arc), 1);
-    return solve<true>(p, arc);
+    bool on_ring;
+    return solve<true>(p, arc, on_ring);
   }
 
- private:
   // The one computation behind distance() (Points false: the points and parameters are not
-  // formed) and closest(): the same distance to the bit.
-  template <bool Points> CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+  // formed) and closest(): the same distance to the bit. An arc that is not whole; `on_ring`
+  // says whether the answer is the ring's (point-circle's distance: the point's angle on the arc,
+  // or the point on the axis), which a piece's end answered before the root needs
+  // (piece_arc_fast; docs/arc.md, "Before the root").
+  template <bool Points>
+  CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
     constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
     const Real turn = 2 * pi_v<Real>();
     Result<Real> r;
     r.point_a = p;
+    on_ring = false;
     if (!(arc.radius > 0)) {  // the center alone
       r.distance = (p - arc.center).norm();
       r.point_b = arc.center;
@@ -135,10 +141,11 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     const Vec3<Real> u(seen.norm2 * arc.start.x() - k * seen.wx, seen.norm2 * arc.start.y() - k * seen.wy,
                        seen.norm2 * arc.start.z() - k * seen.wz);
     const Real u_norm = u.norm();
-    if (!(u_norm > 0)) return cold_solve(p, arc);  // no projection: Frame's U (the definition's fallback)
+    if (!(u_norm > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
     const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
                        seen.wx * u.y() - seen.wy * u.x());
     if (seen.on_axis(radius)) {  // every arc point as close: the start
+      on_ring = true;
       r.distance = ring;
       r.point_b = arc.center + (radius / u_norm) * u;
       r.unique = false;
@@ -153,6 +160,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       return r;
     }
     if (t <= angle) {
+      on_ring = true;
       r.distance = ring;
       if constexpr (Points) {
         r.point_b = seen.on_rim(arc.center, radius);
@@ -197,12 +205,13 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     return r;
   }
 
+ private:
   // A start with no in-plane part: the arc starts at Frame's U (ArcSpan's theta0 = 0); the
   // general form through the canonical angle, out of line (rare).
 #if defined(__GNUC__) || defined(__clang__)
   __attribute__((noinline, cold))
 #endif
-  static Result<Real> cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+  static Result<Real> cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
     Arc3<Real> a = arc;
     a.start = Frame<Real>(arc.normal).u;
     if (!(a.start.squaredNorm() > 0)) {  // a zero or NaN normal: no answer
@@ -211,7 +220,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       r.distance = std::numeric_limits<Real>::quiet_NaN();
       return r;
     }
-    return solve<true>(p, a);
+    return solve<true>(p, a, on_ring);
   }
 };
 
@@ -567,9 +576,46 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   const Circle3<Real> c = arc_circle(arc);
   const PieceLine<Real> pl = piece_line(piece, arc.radius);
   if (!pl.usable) return false;
-  LineRingMinimum<Real> m;
-  if (!line_ring_minimum<Roots>(pl.line, c, m) || m.on_axis) return false;
   const Linear<Real> linear = as_linear(piece);
+  using PointArc = Query<Vec3<Real>, Arc3<Real>>;
+  // Before the root (docs/arc.md, "Before the root"): where the line has one local minimum over
+  // the ring, an end at which the ring's distance rises along the piece (p0, a ray's origin) or
+  // falls toward the piece's end (p1) is the piece's closest point to the circle, as for a circle
+  // (choose_from_line, line_circle.hpp); it is the arc's answer too where that end's nearest ring
+  // point lies on the arc (point-arc's `on_ring`): the arc is no nearer than its circle anywhere,
+  // and as near at that end. The answer is the end's point-arc candidate the rest of this path
+  // would have found, by the same call.
+  SecondMinimumTest<Real> test;
+  const auto before_root = [&](const LineRingMinimum<Real>& line_data) {
+    test = second_minimum_test(line_data, arc.radius);
+    if (test.verdict != 0 || line_data.on_axis) return false;
+    const Vec3<Real>& direction = pl.line.direction;
+    Real tau;
+    if (std::isfinite(linear.lo) && end_point_slope(piece_end(piece, linear.lo), c, line_data.unit_normal, direction) > 0)
+      tau = linear.lo;
+    else if (std::isfinite(linear.hi) &&
+             end_point_slope(piece_end(piece, linear.hi), c, line_data.unit_normal, direction) < 0)
+      tau = linear.hi;
+    else
+      return false;
+    const Vec3<Real> end = piece_end(piece, tau);
+    bool on_ring;
+    const Result<Real> r = PointArc::template solve<for_closest>(end, arc, on_ring);
+    if (!on_ring) return false;
+    out.value = r.distance;
+    if constexpr (for_closest) {
+      out.piece_point = end;
+      out.piece_param = tau;
+      out.arc_point = r.point_b;
+      out.arc_param = r.param_b.x();
+      out.tied = !r.unique;
+    }
+    return true;
+  };
+  LineRingMinimum<Real> m;
+  const LineRingOutcome outcome = line_ring_minimum<Roots>(pl.line, c, m, before_root);
+  if (outcome == LineRingOutcome::AnsweredBeforeRoot) return out.value == out.value;
+  if (outcome == LineRingOutcome::Declined || m.on_axis) return false;
   // The line's global minimum over the whole circle on the arc, its foot on the piece: no point of
   // the arc is nearer the line, so none nearer the piece, and this pair is the answer. It is the
   // only pair at that distance unless it is tied with its mirror image (the trust-region
@@ -587,7 +633,6 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
     }
     return out.value == out.value;
   }
-  const SecondMinimumTest<Real> test = second_minimum_test(m, arc.radius);
   LineRingMinimum<Real> second;
   const int other = other_line_minimum<Roots>(m, arc.radius, second, [](Real) { return true; }, test);
   if (other < 0) return false;
@@ -609,7 +654,6 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
       }
     }
   }
-  using PointArc = Query<Vec3<Real>, Arc3<Real>>;
   const AnchoredPiece<Real> local(piece, linear, m, c.center);
   ends.find_ends(arc.radius);
   for (int e = 0; e < 2; ++e) {
