@@ -67,6 +67,28 @@ template <class Real> struct ArcSpan {
     return t - angle < 2 * pi_v<Real>() - t ? angle : Real(0);
   }
   bool holds(Real theta) const { return offset(theta) <= angle; }
+  // The arc's angles, widened by 2^-20 rad at each end, as intervals of u = tan(theta / 2) (the
+  // octic's variable): one, or two where the arc passes theta = pi (u = +-infinity); everywhere
+  // for an arc within 2^-19 of the whole turn. Roots in the widening are dropped by the exact
+  // offset test of polish_on_arc, as before (docs/arc.md, "Cost").
+  Intervals<Real> half_angle_range() const {
+    const Real pi = pi_v<Real>(), margin = Real(1) / (1 << 20);
+    Real a = theta0 - margin;
+    const Real width = angle + 2 * margin;
+    if (!(width < 2 * pi)) return Intervals<Real>::everywhere();
+    if (a < -pi) a += 2 * pi;  // theta0 in (-pi, pi]: a into [-pi, pi)
+    if (a >= pi) a -= 2 * pi;
+    const Real b = a + width;  // below a + 2 pi: the two pieces below stay apart
+    Intervals<Real> out;
+    const Real inf = std::numeric_limits<Real>::infinity();
+    if (b < pi) {
+      out.add(std::tan(a / 2), std::tan(b / 2));
+    } else {
+      out.add(-inf, std::tan((b - 2 * pi) / 2));
+      out.add(std::tan(a / 2), inf);
+    }
+    return out;
+  }
   // The parameter (t, 0) of an angle polished on [lo, hi].
   Vec2<Real> param(Real theta) const { return Vec2<Real>(std::min(std::max(theta - theta0, Real(0)), angle), 0); }
 
@@ -237,11 +259,24 @@ template <class Real> using ArcMinima = Minima<Real, kArcCapacity>;
 // apart (a whole circle: eight, as circle-circle samples it): a distance the arc reaches, the
 // bound its circle's octic is searched under (ring_search_intervals; the tighter it is, the
 // fewer intervals searched). The whole circle's own samples (sampled_distances) may lie off the
-// arc. docs/arc.md, "Cost".
+// arc. Against a disk (ArcRoundQuery). docs/arc.md, "Cost".
 template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H& h) {
   const int pieces = std::min(8, std::max(1, int(std::ceil(span.angle * (4 / pi_v<Real>())))));
   Real best = std::numeric_limits<Real>::infinity();
   for (int k = 0; k <= pieces; ++k) best = std::min(best, h(span.lo() + span.angle * k / pieces));
+  return best;
+}
+
+// The same bound against a ring or an arc, without the interior evaluations: the least of h at
+// the arc's two ends and of `sample(i)`, the distance at the circle's sample angle i pi/4
+// (sampled_squared_distances: exact cosines and sines), over the samples the arc holds. Ends and
+// samples are at most pi/4 apart along the arc, as the whole circle's eight are; the samples cost
+// no sine or cosine, and against a ring they are the ones the circle query takes anyway.
+// The whole circle's best sample may lie off the arc. docs/arc.md, "Cost".
+template <class Real, class H, class Sample> Real arc_bound(const ArcSpan<Real>& span, const H& h, const Sample& sample) {
+  Real best = std::min(h(span.lo()), h(span.hi()));
+  for (int i = 0; i < 8; ++i)
+    if (span.holds(i * (pi_v<Real>() / 4))) best = std::min(best, sample(i));
   return best;
 }
 
@@ -283,18 +318,25 @@ template <class Real, class Target> struct ArcRoundQuery {
     const CircleOverRound<Real> view(c, radius);
     const auto h = [&](Real t) { return view.template distance<Target>(t); };
     const auto jet = [&](Real t) { return view.template jet<Target>(t); };
-    const Real bound = arc_bound(span, h);
     if constexpr (Target::interior) {
+      // Against a disk, as before: the bound from h itself, the octic searched on the whole
+      // circle. Restricted to the arc's angles (as against a ring, below), the octic's roots over a
+      // disk parallel to the arc's plane (rounding noise there: the distance is the planes' gap
+      // over the disk) came out differently, and the continuum's `unique` with them, wrong in 4
+      // of 6 changed cases (docs/arc.md, "Cost").
       using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
       const auto heights = CircleDisk::template height_candidates<Roots>(c, scale);
-      return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, bound), jet, h,
-                                  c.radius, scale);
+      return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, arc_bound(span, h)),
+                                  jet, h, c.radius, scale);
     } else {
       using CircleCircle = Query<Circle3<Real>, Circle3<Real>>;
       const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
+      const std::array<Real, 8> samples = sampled_squared_distances(c, squared);
+      const Real bound = arc_bound(span, h, [&](int i) { return std::sqrt(samples[i]); });
+      const Intervals<Real> within = span.half_angle_range();
       return polish_on_arc<Roots>(
-          span, CircleCircle::template candidates<Roots>(view, scale, bound, sampled_distances(c, squared)), jet, h,
-          c.radius, scale);
+          span, CircleCircle::template candidates<Roots>(view, scale, bound, sampled_distances(samples), &within), jet,
+          h, c.radius, scale);
     }
   }
 
@@ -388,8 +430,15 @@ template <class Real> struct ArcArcQuery {
     const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, target.radius); };
     // The ring's octic under a distance A's arc reaches (the arc's distance is at least the
     // ring's, so every closest pair with B's point inside B lies under it).
-    const auto circle = Query<Circle3<Real>, Circle3<Real>>::template candidates<Roots>(view, scale, arc_bound(span, h),
-                                                                                         sampled_distances(c, squared));
+    const Intervals<Real> within = span.half_angle_range();
+    // At the samples: the point from the exact cosines and sines, B's distance as h takes it.
+    const auto sample = [&](int i) {
+      const Vec3<Real> p = c.center + SampleAngles<Real>::cs[i][0] * c.e1 + SampleAngles<Real>::cs[i][1] * c.e2;
+      const int e = target.nearest_end(p);
+      return e < 0 ? std::sqrt(squared(p)) : (p - target.end[e]).norm();
+    };
+    const auto circle = Query<Circle3<Real>, Circle3<Real>>::template candidates<Roots>(
+        view, scale, arc_bound(span, h, sample), sampled_distances(c, squared), &within);
     ArcCandidates<Real> candidates;
     for (int i = 0; i < circle.count; ++i) candidates.push(circle.value[i]);
     for (const Vec3<Real>& e : target.end) push_nearest_angle(c, e, candidates);
