@@ -7,7 +7,8 @@
 //   bench_arc [pairs per kind, default 4000] [repeats, default 7]
 //
 // stdout, one line per pair and call: ns/query for the arc and the circle (the least over the
-// repeats of a full pass's thread CPU time, over the pairs), and their ratio. docs/arc.md "Cost".
+// repeats of a full pass's thread CPU time, over the pairs; the arc's and the circle's passes
+// alternate), and their ratio. docs/arc.md "Cost".
 #include <circledist/circledist.hpp>
 
 #include <algorithm>
@@ -47,33 +48,45 @@ struct Draw {
 
 Circle3<Real> circle_of(const Arc3<Real>& a) { return {a.center, a.normal, a.radius}; }
 
-// The least over `repeats` passes of the ns per query of f over the n inputs; `sink` keeps the
-// answers alive.
-template <class F> double time_pass(int n, int repeats, const F& f, double& sink) {
-  double best = 1e300;
+// The least over `repeats` passes of the ns per query of f (the arc) and of g (its circle) over
+// the n inputs, the two passes interleaved in each repeat so that a load that comes and goes on a
+// shared machine weighs on both alike; `sink` keeps the answers alive.
+struct PairTimes {
+  double arc, circle;
+};
+template <class F> double one_pass(int n, const F& f, double& sink) {
+  const double t0 = thread_seconds();
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += f(i);
+  sink += s;
+  return thread_seconds() - t0;
+}
+template <class F, class G> PairTimes time_pair(int n, int repeats, const F& f, const G& g, double& sink) {
+  double best_f = 1e300, best_g = 1e300;
   for (int k = 0; k < repeats; ++k) {
-    const double t0 = thread_seconds();
-    double s = 0;
-    for (int i = 0; i < n; ++i) s += f(i);
-    best = std::min(best, thread_seconds() - t0);
-    sink += s;
+    best_f = std::min(best_f, one_pass(n, f, sink));
+    best_g = std::min(best_g, one_pass(n, g, sink));
   }
-  return 1e9 * best / n;
+  return {1e9 * best_f / n, 1e9 * best_g / n};
 }
 
-// One pair kind: `first[i]` against arcs[i] and against its circle; `both` makes the first an
-// arc too (compared with circle-circle).
-template <class A> void run(const char* name, const std::vector<A>& first, const std::vector<Arc3<Real>>& arcs,
-                            int repeats, double& sink) {
+void report(const char* name, const char* call, PairTimes t) {
+  std::printf("%-10s %-15s arc %8.1f ns  circle %8.1f ns  ratio %5.2f\n", name, call, t.arc, t.circle,
+              t.arc / t.circle);
+}
+
+// One pair kind: `first[i]` against arcs[i] and against `second[i]` (its circle; for arc-arc,
+// `first` holds arcs and `circles_first` their circles, compared with circle-circle).
+template <class A, class B, class C>
+void run(const char* name, const std::vector<A>& first, const std::vector<Arc3<Real>>& arcs,
+         const std::vector<B>& circle_first, const std::vector<C>& second, int repeats, double& sink) {
   const int n = int(arcs.size());
-  std::vector<Circle3<Real>> circles;
-  for (const auto& a : arcs) circles.push_back(circle_of(a));
-  const double ad = time_pass(n, repeats, [&](int i) { return distance(first[i], arcs[i]); }, sink);
-  const double cd = time_pass(n, repeats, [&](int i) { return distance(first[i], circles[i]); }, sink);
-  const double ac = time_pass(n, repeats, [&](int i) { return closest_points(first[i], arcs[i]).distance; }, sink);
-  const double cc = time_pass(n, repeats, [&](int i) { return closest_points(first[i], circles[i]).distance; }, sink);
-  std::printf("%-10s distance        arc %8.1f ns  circle %8.1f ns  ratio %5.2f\n", name, ad, cd, ad / cd);
-  std::printf("%-10s closest_points  arc %8.1f ns  circle %8.1f ns  ratio %5.2f\n", name, ac, cc, ac / cc);
+  report(name, "distance",
+         time_pair(n, repeats, [&](int i) { return distance(first[i], arcs[i]); },
+                   [&](int i) { return distance(circle_first[i], second[i]); }, sink));
+  report(name, "closest_points",
+         time_pair(n, repeats, [&](int i) { return closest_points(first[i], arcs[i]).distance; },
+                   [&](int i) { return closest_points(circle_first[i], second[i]).distance; }, sink));
 }
 
 }  // namespace
@@ -100,27 +113,21 @@ int main(int argc, char** argv) {
     disks.push_back({draw.vec(2), draw.dir(), draw.radius()});
   }
   double sink = 0;
-  std::printf("bench_arc: %d random pairs per kind, least of %d passes (thread CPU time)\n", n, repeats);
-  run("point", points, arcs, repeats, sink);
-  run("line", lines, arcs, repeats, sink);
-  run("ray", rays, arcs, repeats, sink);
-  run("segment", segments, arcs, repeats, sink);
-  run("circle", circles, arcs, repeats, sink);
-  run("disk", disks, arcs, repeats, sink);
-  // Arc-arc against circle-circle: both arcs become their circles.
-  {
-    std::vector<Circle3<Real>> first;
-    for (const auto& a : others) first.push_back(circle_of(a));
-    const int m = int(arcs.size());
-    std::vector<Circle3<Real>> second;
-    for (const auto& a : arcs) second.push_back(circle_of(a));
-    const double ad = time_pass(m, repeats, [&](int i) { return distance(others[i], arcs[i]); }, sink);
-    const double cd = time_pass(m, repeats, [&](int i) { return distance(first[i], second[i]); }, sink);
-    const double ac = time_pass(m, repeats, [&](int i) { return closest_points(others[i], arcs[i]).distance; }, sink);
-    const double cc = time_pass(m, repeats, [&](int i) { return closest_points(first[i], second[i]).distance; }, sink);
-    std::printf("%-10s distance        arc %8.1f ns  circle %8.1f ns  ratio %5.2f\n", "arc-arc", ad, cd, ad / cd);
-    std::printf("%-10s closest_points  arc %8.1f ns  circle %8.1f ns  ratio %5.2f\n", "arc-arc", ac, cc, ac / cc);
+  std::vector<Circle3<Real>> arc_circles, other_circles;
+  for (int i = 0; i < n; ++i) {
+    arc_circles.push_back(circle_of(arcs[i]));
+    other_circles.push_back(circle_of(others[i]));
   }
+  std::printf("bench_arc: %d random pairs per kind, least of %d passes (thread CPU time), arc and circle "
+              "passes interleaved\n", n, repeats);
+  run("point", points, arcs, points, arc_circles, repeats, sink);
+  run("line", lines, arcs, lines, arc_circles, repeats, sink);
+  run("ray", rays, arcs, rays, arc_circles, repeats, sink);
+  run("segment", segments, arcs, segments, arc_circles, repeats, sink);
+  run("circle", circles, arcs, circles, arc_circles, repeats, sink);
+  run("disk", disks, arcs, disks, arc_circles, repeats, sink);
+  // Arc-arc against circle-circle: both arcs become their circles.
+  run("arc-arc", others, arcs, other_circles, arc_circles, repeats, sink);
   std::printf("(checksum %.6g)\n", sink);
   return 0;
 }

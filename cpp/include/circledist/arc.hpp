@@ -67,6 +67,28 @@ template <class Real> struct ArcSpan {
     return t - angle < 2 * pi_v<Real>() - t ? angle : Real(0);
   }
   bool holds(Real theta) const { return offset(theta) <= angle; }
+  // The arc's angles, widened by 2^-20 rad at each end, as intervals of u = tan(theta / 2) (the
+  // octic's variable): one, or two where the arc passes theta = pi (u = +-infinity); everywhere
+  // for an arc within 2^-19 of the whole turn. Roots in the widening are dropped by the exact
+  // offset test of polish_on_arc, as before (docs/arc.md, "Cost").
+  Intervals<Real> half_angle_range() const {
+    const Real pi = pi_v<Real>(), margin = Real(1) / (1 << 20);
+    Real a = theta0 - margin;
+    const Real width = angle + 2 * margin;
+    if (!(width < 2 * pi)) return Intervals<Real>::everywhere();
+    if (a < -pi) a += 2 * pi;  // theta0 in (-pi, pi]: a into [-pi, pi)
+    if (a >= pi) a -= 2 * pi;
+    const Real b = a + width;  // below a + 2 pi: the two pieces below stay apart
+    Intervals<Real> out;
+    const Real inf = std::numeric_limits<Real>::infinity();
+    if (b < pi) {
+      out.add(std::tan(a / 2), std::tan(b / 2));
+    } else {
+      out.add(-inf, std::tan((b - 2 * pi) / 2));
+      out.add(std::tan(a / 2), inf);
+    }
+    return out;
+  }
   // The parameter (t, 0) of an angle polished on [lo, hi].
   Vec2<Real> param(Real theta) const { return Vec2<Real>(std::min(std::max(theta - theta0, Real(0)), angle), 0); }
 
@@ -103,22 +125,28 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
 
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return Whole::distance(p, arc_circle(arc));
-    return solve<false>(p, arc).distance;
+    bool on_ring;
+    return solve<false>(p, arc, on_ring).distance;
   }
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return as_arc_result(Whole::closest(p, arc_circle(arc)), ArcSpan<Real>(arc), 1);
-    return solve<true>(p, arc);
+    bool on_ring;
+    return solve<true>(p, arc, on_ring);
   }
 
- private:
   // The one computation behind distance() (Points false: the points and parameters are not
-  // formed) and closest(): the same distance to the bit.
-  template <bool Points> CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+  // formed) and closest(): the same distance to the bit. An arc that is not whole; `on_ring`
+  // says whether the answer is the ring's (point-circle's distance: the point's angle on the arc,
+  // or the point on the axis), which a piece's end answered before the root needs
+  // (piece_arc_fast; docs/arc.md, "Before the root").
+  template <bool Points>
+  CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
     constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
     const Real turn = 2 * pi_v<Real>();
     Result<Real> r;
     r.point_a = p;
+    on_ring = false;
     if (!(arc.radius > 0)) {  // the center alone
       r.distance = (p - arc.center).norm();
       r.point_b = arc.center;
@@ -135,10 +163,11 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     const Vec3<Real> u(seen.norm2 * arc.start.x() - k * seen.wx, seen.norm2 * arc.start.y() - k * seen.wy,
                        seen.norm2 * arc.start.z() - k * seen.wz);
     const Real u_norm = u.norm();
-    if (!(u_norm > 0)) return cold_solve(p, arc);  // no projection: Frame's U (the definition's fallback)
+    if (!(u_norm > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
     const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
                        seen.wx * u.y() - seen.wy * u.x());
     if (seen.on_axis(radius)) {  // every arc point as close: the start
+      on_ring = true;
       r.distance = ring;
       r.point_b = arc.center + (radius / u_norm) * u;
       r.unique = false;
@@ -153,6 +182,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       return r;
     }
     if (t <= angle) {
+      on_ring = true;
       r.distance = ring;
       if constexpr (Points) {
         r.point_b = seen.on_rim(arc.center, radius);
@@ -197,12 +227,13 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     return r;
   }
 
+ private:
   // A start with no in-plane part: the arc starts at Frame's U (ArcSpan's theta0 = 0); the
   // general form through the canonical angle, out of line (rare).
 #if defined(__GNUC__) || defined(__clang__)
   __attribute__((noinline, cold))
 #endif
-  static Result<Real> cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc) {
+  static Result<Real> cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
     Arc3<Real> a = arc;
     a.start = Frame<Real>(arc.normal).u;
     if (!(a.start.squaredNorm() > 0)) {  // a zero or NaN normal: no answer
@@ -211,7 +242,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       r.distance = std::numeric_limits<Real>::quiet_NaN();
       return r;
     }
-    return solve<true>(p, a);
+    return solve<true>(p, a, on_ring);
   }
 };
 
@@ -228,11 +259,24 @@ template <class Real> using ArcMinima = Minima<Real, kArcCapacity>;
 // apart (a whole circle: eight, as circle-circle samples it): a distance the arc reaches, the
 // bound its circle's octic is searched under (ring_search_intervals; the tighter it is, the
 // fewer intervals searched). The whole circle's own samples (sampled_distances) may lie off the
-// arc. docs/arc.md, "Cost".
+// arc. Against a disk (ArcRoundQuery). docs/arc.md, "Cost".
 template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H& h) {
   const int pieces = std::min(8, std::max(1, int(std::ceil(span.angle * (4 / pi_v<Real>())))));
   Real best = std::numeric_limits<Real>::infinity();
   for (int k = 0; k <= pieces; ++k) best = std::min(best, h(span.lo() + span.angle * k / pieces));
+  return best;
+}
+
+// The same bound against a ring or an arc, without the interior evaluations: the least of h at
+// the arc's two ends and of `sample(i)`, the distance at the circle's sample angle i pi/4
+// (sampled_squared_distances: exact cosines and sines), over the samples the arc holds. Ends and
+// samples are at most pi/4 apart along the arc, as the whole circle's eight are; the samples cost
+// no sine or cosine, and against a ring they are the ones the circle query takes anyway.
+// The whole circle's best sample may lie off the arc. docs/arc.md, "Cost".
+template <class Real, class H, class Sample> Real arc_bound(const ArcSpan<Real>& span, const H& h, const Sample& sample) {
+  Real best = std::min(h(span.lo()), h(span.hi()));
+  for (int i = 0; i < 8; ++i)
+    if (span.holds(i * (pi_v<Real>() / 4))) best = std::min(best, sample(i));
   return best;
 }
 
@@ -274,18 +318,25 @@ template <class Real, class Target> struct ArcRoundQuery {
     const CircleOverRound<Real> view(c, radius);
     const auto h = [&](Real t) { return view.template distance<Target>(t); };
     const auto jet = [&](Real t) { return view.template jet<Target>(t); };
-    const Real bound = arc_bound(span, h);
     if constexpr (Target::interior) {
+      // Against a disk, as before: the bound from h itself, the octic searched on the whole
+      // circle. Restricted to the arc's angles (as against a ring, below), the octic's roots over a
+      // disk parallel to the arc's plane (rounding noise there: the distance is the planes' gap
+      // over the disk) came out differently, and the continuum's `unique` with them, wrong in 4
+      // of 6 changed cases (docs/arc.md, "Cost").
       using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
       const auto heights = CircleDisk::template height_candidates<Roots>(c, scale);
-      return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, bound), jet, h,
-                                  c.radius, scale);
+      return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, arc_bound(span, h)),
+                                  jet, h, c.radius, scale);
     } else {
       using CircleCircle = Query<Circle3<Real>, Circle3<Real>>;
       const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
+      const std::array<Real, 8> samples = sampled_squared_distances(c, squared);
+      const Real bound = arc_bound(span, h, [&](int i) { return std::sqrt(samples[i]); });
+      const Intervals<Real> within = span.half_angle_range();
       return polish_on_arc<Roots>(
-          span, CircleCircle::template candidates<Roots>(view, scale, bound, sampled_distances(c, squared)), jet, h,
-          c.radius, scale);
+          span, CircleCircle::template candidates<Roots>(view, scale, bound, sampled_distances(samples), &within), jet,
+          h, c.radius, scale);
     }
   }
 
@@ -379,8 +430,15 @@ template <class Real> struct ArcArcQuery {
     const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, target.radius); };
     // The ring's octic under a distance A's arc reaches (the arc's distance is at least the
     // ring's, so every closest pair with B's point inside B lies under it).
-    const auto circle = Query<Circle3<Real>, Circle3<Real>>::template candidates<Roots>(view, scale, arc_bound(span, h),
-                                                                                         sampled_distances(c, squared));
+    const Intervals<Real> within = span.half_angle_range();
+    // At the samples: the point from the exact cosines and sines, B's distance as h takes it.
+    const auto sample = [&](int i) {
+      const Vec3<Real> p = c.center + SampleAngles<Real>::cs[i][0] * c.e1 + SampleAngles<Real>::cs[i][1] * c.e2;
+      const int e = target.nearest_end(p);
+      return e < 0 ? std::sqrt(squared(p)) : (p - target.end[e]).norm();
+    };
+    const auto circle = Query<Circle3<Real>, Circle3<Real>>::template candidates<Roots>(
+        view, scale, arc_bound(span, h, sample), sampled_distances(c, squared), &within);
     ArcCandidates<Real> candidates;
     for (int i = 0; i < circle.count; ++i) candidates.push(circle.value[i]);
     for (const Vec3<Real>& e : target.end) push_nearest_angle(c, e, candidates);
@@ -567,9 +625,46 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   const Circle3<Real> c = arc_circle(arc);
   const PieceLine<Real> pl = piece_line(piece, arc.radius);
   if (!pl.usable) return false;
-  LineRingMinimum<Real> m;
-  if (!line_ring_minimum<Roots>(pl.line, c, m) || m.on_axis) return false;
   const Linear<Real> linear = as_linear(piece);
+  using PointArc = Query<Vec3<Real>, Arc3<Real>>;
+  // Before the root (docs/arc.md, "Before the root"): where the line has one local minimum over
+  // the ring, an end at which the ring's distance rises along the piece (p0, a ray's origin) or
+  // falls toward the piece's end (p1) is the piece's closest point to the circle, as for a circle
+  // (choose_from_line, line_circle.hpp); it is the arc's answer too where that end's nearest ring
+  // point lies on the arc (point-arc's `on_ring`): the arc is no nearer than its circle anywhere,
+  // and as near at that end. The answer is the end's point-arc candidate the rest of this path
+  // would have found, by the same call.
+  SecondMinimumTest<Real> test;
+  const auto before_root = [&](const LineRingMinimum<Real>& line_data) {
+    test = second_minimum_test(line_data, arc.radius);
+    if (test.verdict != 0 || line_data.on_axis) return false;
+    const Vec3<Real>& direction = pl.line.direction;
+    Real tau;
+    if (std::isfinite(linear.lo) && end_point_slope(piece_end(piece, linear.lo), c, line_data.unit_normal, direction) > 0)
+      tau = linear.lo;
+    else if (std::isfinite(linear.hi) &&
+             end_point_slope(piece_end(piece, linear.hi), c, line_data.unit_normal, direction) < 0)
+      tau = linear.hi;
+    else
+      return false;
+    const Vec3<Real> end = piece_end(piece, tau);
+    bool on_ring;
+    const Result<Real> r = PointArc::template solve<for_closest>(end, arc, on_ring);
+    if (!on_ring) return false;
+    out.value = r.distance;
+    if constexpr (for_closest) {
+      out.piece_point = end;
+      out.piece_param = tau;
+      out.arc_point = r.point_b;
+      out.arc_param = r.param_b.x();
+      out.tied = !r.unique;
+    }
+    return true;
+  };
+  LineRingMinimum<Real> m;
+  const LineRingOutcome outcome = line_ring_minimum<Roots>(pl.line, c, m, before_root);
+  if (outcome == LineRingOutcome::AnsweredBeforeRoot) return out.value == out.value;
+  if (outcome == LineRingOutcome::Declined || m.on_axis) return false;
   // The line's global minimum over the whole circle on the arc, its foot on the piece: no point of
   // the arc is nearer the line, so none nearer the piece, and this pair is the answer. It is the
   // only pair at that distance unless it is tied with its mirror image (the trust-region
@@ -587,7 +682,6 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
     }
     return out.value == out.value;
   }
-  const SecondMinimumTest<Real> test = second_minimum_test(m, arc.radius);
   LineRingMinimum<Real> second;
   const int other = other_line_minimum<Roots>(m, arc.radius, second, [](Real) { return true; }, test);
   if (other < 0) return false;
@@ -609,7 +703,6 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
       }
     }
   }
-  using PointArc = Query<Vec3<Real>, Arc3<Real>>;
   const AnchoredPiece<Real> local(piece, linear, m, c.center);
   ends.find_ends(arc.radius);
   for (int e = 0; e < 2; ++e) {

@@ -30,12 +30,13 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
   // the distance can be at most `bound` (a distance the circle reaches: the best of its eight
   // samples or the caller's; an arc passes one its own points reach, arc.hpp), and the extra
   // starts below. `samples` are the full circle's (sampled_distances).
+  // `within`: an arc's angles, where alone its octic is searched (push_circle_ring_roots).
   template <class Roots>
   static Starts candidates(const CircleOverRound<Real>& view, Real scale, Real bound,
-                           const SampledDistances<Real>& samples) {
+                           const SampledDistances<Real>& samples, const Intervals<Real>* within = nullptr) {
     Starts starts;
     push_circle_candidates(starts);
-    push_circle_ring_roots<Roots>(view, scale, bound, starts);
+    push_circle_ring_roots<Roots>(view, scale, bound, starts, within);
     // Where the circle crosses the ring's plane (z = 0, the height roots of circle_disk.hpp):
     // rings that cross lie there. For rings of equal radius whose centers are 1e-14 apart, the
     // octic is so ill-conditioned that the eigenvalue policies' roots led the polish to 0.505

@@ -49,12 +49,14 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
   // (§4.3). The octic's roots matter outside the cylinder only, where the disk distance is the
   // ring's: there the minimum is at most `bound`, any disk distance the circle reaches (its best
   // sample; an arc passes one its own points reach, arc.hpp) (ring_search_intervals).
+  // `within`: an arc's angles, where alone its octic is searched (push_circle_ring_roots).
   template <class Roots>
-  static Starts candidates(const CircleOverRound<Real>& view, Real scale, const Heights& heights, Real bound) {
+  static Starts candidates(const CircleOverRound<Real>& view, Real scale, const Heights& heights, Real bound,
+                           const Intervals<Real>* within = nullptr) {
     Starts starts;
     for (int i = 0; i < heights.count; ++i) starts.push(heights.value[i]);
     push_rim_partition<Roots>(view, scale, starts);
-    push_circle_ring_roots<Roots>(view, scale, bound, starts);
+    push_circle_ring_roots<Roots>(view, scale, bound, starts, within);
     return starts;
   }
 

@@ -88,6 +88,21 @@ template <class Real> struct Intervals {
       if (x >= lo[i] && x <= hi[i]) return true;
     return false;
   }
+  // The parts of these intervals that lie in `other`'s (both sorted and disjoint); these whole
+  // where the parts would not fit (a superset: searching more is never wrong).
+  Intervals within(const Intervals& other) const {
+    Intervals out;
+    int i = 0, j = 0, pieces = 0;
+    while (i < count && j < other.count) {
+      const Real a = std::max(lo[i], other.lo[j]), b = std::min(hi[i], other.hi[j]);
+      if (a <= b) {
+        if (++pieces > capacity) return *this;
+        out.add(a, b);
+      }
+      if (hi[i] < other.hi[j]) ++i; else ++j;
+    }
+    return out;
+  }
 };
 
 // roots_in for the policies that find every root anyway: one solve, every root kept. Their

@@ -177,11 +177,14 @@ template <class Real> std::array<Real, 5> circle_rim_quartic(const CircleOverRou
 
 // Its roots are searched only where the distance can be at most `bound`, a distance A reaches
 // (ring_search_intervals, which searches everywhere for an infinite bound; the margin of
-// 1e-4 scale dwarfs the rounding of its quadratics).
+// 1e-4 scale dwarfs the rounding of its quadratics), and, for an arc, only on its angles
+// (`within`, in u = tan(t/2): ArcSpan::half_angle_range, docs/arc.md "Cost"; null for a circle).
 template <class Roots, class Real, int N>
-void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale, Real bound, Candidates<Real, N>& out) {
+void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale, Real bound, Candidates<Real, N>& out,
+                            const Intervals<Real>* within = nullptr) {
   const std::array<Real, 9> p = circle_ring_octic(v, scale);
-  push_half_angle_roots<Roots>(p.data(), 8, ring_search_intervals(v.c, v.radius, bound + Real(1e-4) * scale), out);
+  const Intervals<Real> where = ring_search_intervals(v.c, v.radius, bound + Real(1e-4) * scale);
+  push_half_angle_roots<Roots>(p.data(), 8, within ? where.within(*within) : where, out);
 }
 
 // Builds the Result for circle A against round B from the polished minima, as

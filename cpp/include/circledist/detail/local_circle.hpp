@@ -63,17 +63,30 @@ template <class Real> Real circle_round_scale(const LocalCircle<Real>& c, Real r
 template <class Real> struct SampledDistances {
   Real best, worst;
 };
+// The eight squared distances themselves, k = 0..7 at t = k pi/4 (an arc keeps those of the
+// angles it holds: arc.hpp, arc_bound).
+template <class Real> struct SampleAngles {
+  static constexpr Real k = Real(0.7071067811865475244008443621048490392848359376884740365883398689953662L);
+  static constexpr Real cs[8][2] = {{1, 0}, {k, k}, {0, 1}, {-k, k}, {-1, 0}, {-k, -k}, {0, -1}, {k, -k}};
+};
 template <class Real, class Squared>
-SampledDistances<Real> sampled_distances(const LocalCircle<Real>& c, const Squared& squared) {
-  const Real k = Real(0.7071067811865475244008443621048490392848359376884740365883398689953662L);
-  const Real angle[8][2] = {{1, 0}, {k, k}, {0, 1}, {-k, k}, {-1, 0}, {-k, -k}, {0, -1}, {k, -k}};
+std::array<Real, 8> sampled_squared_distances(const LocalCircle<Real>& c, const Squared& squared) {
+  std::array<Real, 8> q;
+  for (int i = 0; i < 8; ++i)
+    q[i] = squared(Vec3<Real>(c.center + SampleAngles<Real>::cs[i][0] * c.e1 + SampleAngles<Real>::cs[i][1] * c.e2));
+  return q;
+}
+template <class Real> SampledDistances<Real> sampled_distances(const std::array<Real, 8>& squared) {
   Real best = std::numeric_limits<Real>::infinity(), worst = 0;
-  for (const auto& cs : angle) {
-    const Real q = squared(Vec3<Real>(c.center + cs[0] * c.e1 + cs[1] * c.e2));
+  for (const Real q : squared) {
     best = std::min(best, q);
     worst = std::max(worst, q);
   }
   return {std::sqrt(best), std::sqrt(worst)};
+}
+template <class Real, class Squared>
+SampledDistances<Real> sampled_distances(const LocalCircle<Real>& c, const Squared& squared) {
+  return sampled_distances(sampled_squared_distances(c, squared));
 }
 template <class Real, class Squared> Real sampled_distance(const LocalCircle<Real>& c, const Squared& squared) {
   return sampled_distances(c, squared).best;
