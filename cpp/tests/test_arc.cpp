@@ -510,7 +510,53 @@ void precision_tests() {
 
 }  // namespace
 
+// Only the start's direction counts: a start scaled by 2^e answers bit for bit as the arc's own
+// (the queries are homogeneous in it, and detail::moderate_start brings far lengths back), and
+// one scaled by 1e+-200 (its direction rounded) within the bar. Before moderate_start, point-arc
+// gave NaN or distances off by O(radius) for starts of 1e200 and 1e-200 (the crash fuzz).
+template <class S> void start_length_case(const S& s, const Arc& a, int& same, int& close) {
+  const double base = distance(s, a);
+  const Result<double> base_closest = closest_points(a, s);
+  for (const int e : {-900, -600, -200, 200, 600, 900}) {
+    const Arc scaled{a.center, a.normal, a.radius, detail::ldexp3(a.start, e), a.angle};
+    const Result<double> rs = closest_points(scaled, s);
+    const bool ok = distance(s, scaled) == base && rs.distance == base_closest.distance &&
+                    rs.point_a == base_closest.point_a && rs.point_b == base_closest.point_b &&
+                    rs.param_a == base_closest.param_a && rs.unique == base_closest.unique;
+    if (!ok) std::printf("  start * 2^%d: %.17g, closest %.17g, vs %.17g\n", e, distance(s, scaled), rs.distance, base);
+    same += ok;
+    check::record(ok, "start scaled by a power of two", __FILE__, __LINE__);
+  }
+  for (const double f : {1e-200, 1e200}) {
+    const Arc scaled{a.center, a.normal, a.radius, f * a.start, a.angle};
+    const double d = distance(s, scaled);
+    const bool ok = std::abs(d - base) <= 1e-12 * std::max(base, a.radius) && closest_points(scaled, s).distance == d;
+    if (!ok) std::printf("  start * %g: %.17g vs %.17g\n", f, d, base);
+    close += ok;
+    check::record(ok, "start scaled by 1e+-200", __FILE__, __LINE__);
+  }
+}
+
+void start_length_tests() {
+  Draw d(20261126);
+  int same = 0, close = 0;
+  for (int i = 0; i < int(200 * ARC_RANDOM_SCALE) + 1; ++i) {
+    Arc a = d.arc();
+    a.angle = std::min(a.angle, 6.0);  // a whole arc is its circle, which has no start
+    start_length_case(d.vec(), a, same, close);
+    start_length_case(Line{d.vec(), d.vec()}, a, same, close);
+    start_length_case(Ray{d.vec(), d.vec()}, a, same, close);
+    start_length_case(Segment{d.vec(), d.vec()}, a, same, close);
+    start_length_case(Circle{d.vec(), d.vec(), d.radius()}, a, same, close);
+    start_length_case(Disk{d.vec(), d.vec(), d.radius()}, a, same, close);
+    start_length_case(d.arc(), a, same, close);
+  }
+  counts["start length (bit for bit)"] = same;
+  counts["start length (1e+-200)"] = close;
+}
+
 int main() {
+  start_length_tests();
   point_tests();
   piece_tests();
   round_tests<Circle>("circle-arc");

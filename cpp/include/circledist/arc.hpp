@@ -43,7 +43,8 @@ template <class Real> struct ArcSpan {
   Real theta0 = 0, angle;
 
   explicit ArcSpan(const Arc3<Real>& a) : frame(a.normal), angle(std::max(a.angle, Real(0))) {
-    const Real x = frame.u.dot(a.start), y = frame.v.dot(a.start);
+    const Vec3<Real> start = detail::moderate_start(a.start);
+    const Real x = frame.u.dot(start), y = frame.v.dot(start);
     if (x != 0 || y != 0) theta0 = detail::atan2(y, x);  // no projection: U's angle, 0
   }
   // A circle as the arc of all its angles from its own angle 0 (its canonical parameter).
@@ -159,9 +160,10 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     // u' = |W|^2 S - (S.W) W, the start's in-plane part times |W|^2 (seen's W, rescaled if it
     // had to be: no division), and v' = W x u' (|v'| = s |u'|): the arc's u and v up to their
     // lengths.
-    const Real k = seen.wx * arc.start.x() + seen.wy * arc.start.y() + seen.wz * arc.start.z();
-    const Vec3<Real> u(seen.norm2 * arc.start.x() - k * seen.wx, seen.norm2 * arc.start.y() - k * seen.wy,
-                       seen.norm2 * arc.start.z() - k * seen.wz);
+    const Vec3<Real> start = detail::moderate_start(arc.start);
+    const Real k = seen.wx * start.x() + seen.wy * start.y() + seen.wz * start.z();
+    const Vec3<Real> u(seen.norm2 * start.x() - k * seen.wx, seen.norm2 * start.y() - k * seen.wy,
+                       seen.norm2 * start.z() - k * seen.wz);
     const Real u_norm = u.norm();
     if (!(u_norm > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
     const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
@@ -563,7 +565,8 @@ template <class Real> struct ArcEnds {
   // Unnormalized (no division: the sector test is an angle, scale-free; find_ends scales).
   explicit ArcEnds(const Arc3<Real>& a) {
     const Real n2 = a.normal.squaredNorm();
-    u = n2 * a.start - a.normal.dot(a.start) * a.normal;
+    const Vec3<Real> start = detail::moderate_start(a.start);
+    u = n2 * start - a.normal.dot(start) * a.normal;
     length = u.norm();
     usable = length > 0 && std::isfinite(length) && n2 > 0 && std::isfinite(n2) && !std::isnan(a.angle);
     if (!usable) return;

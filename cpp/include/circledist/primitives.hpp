@@ -162,6 +162,18 @@ template <class Real> int direction_exponent(const Vec3<Real>& d) {
   const Real largest = d.cwiseAbs().maxCoeff();
   return largest > 0 && largest <= std::numeric_limits<Real>::max() ? std::ilogb(largest) : 0;
 }
+
+// An arc's start scaled by a power of two (exact: only its direction counts) to a largest
+// component in [1, 2), where that component lies outside [2^-100, 2^100]: the arc queries form
+// |W|^2 S - (S.W) W and its length, which overflowed for a start of 1e200 (a NaN or wrong
+// point-arc distance) and underflowed to zero, read as "no projection", for one of 1e-200 (the
+// crash fuzz's arcs, 2026-11-26). The common case pays one comparison.
+template <class Real> Vec3<Real> moderate_start(const Vec3<Real>& start) {
+  constexpr Real lo = power_of_two<Real>(-100), hi = power_of_two<Real>(100);
+  const Real largest = start.cwiseAbs().maxCoeff();
+  if (largest >= lo && largest <= hi) return start;
+  return ldexp3(start, -direction_exponent(start));
+}
 }  // namespace detail
 
 template <class Real> Vec3<Real> scaled(const Vec3<Real>& p, int e) { return detail::ldexp3(p, e); }
