@@ -30,6 +30,11 @@ import pytest
 
 import circledist as cd
 from circledist_cases import reference_round as R
+from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
+                                          assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
+                                          assert_scene_equals_brute_force, batch_of, both_orders, make, mixed_shapes,
+                                          radii, random_shape, rounded, translated)
+from circledist_cases.kind_checks import check as _check
 
 mpf, ctx = R.mpf, R.ctx
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
@@ -43,40 +48,12 @@ INTERVALS = 400  # samples of a parameter per minimization (then golden section 
 # ------------------------------------------------------------------------------------------------
 # shapes as plain tuples: (kind, *fields), fields as tuples of floats
 # ------------------------------------------------------------------------------------------------
-def _t(v):
-    return tuple(float(x) for x in v)
-
-
 def annulus(center, normal, inner, outer):
     return ("annulus", _t(center), _t(normal), float(inner), float(outer))
 
 
 def arc(center, normal, radius, start, angle):
     return ("arc", _t(center), _t(normal), float(radius), _t(start), float(angle))
-
-
-CLASSES = {"point": cd.Point, "line": cd.Line, "ray": cd.Ray, "segment": cd.Segment, "circle": cd.Circle,
-           "disk": cd.Disk, "arc": cd.Arc, "annulus": cd.Annulus}
-
-
-def make(shape, dtype=np.float64, **kw):
-    kind, *f = shape
-    return CLASSES[kind](*[np.asarray(x, dtype=dtype) for x in f], **kw)
-
-
-def rounded(shape, dtype):
-    """The same shape with every number rounded to dtype (and back to float: exact)."""
-    out = [shape[0]]
-    for f in shape[1:]:
-        out.append(_t(np.asarray(f, dtype=dtype)) if isinstance(f, tuple) else float(np.asarray(f, dtype=dtype)))
-    return tuple(out)
-
-
-def radii(shape):
-    kind = shape[0]
-    if kind in ("circle", "disk", "arc"):
-        return [shape[3]]
-    return [shape[4]] if kind == "annulus" else []
 
 
 # ------------------------------------------------------------------------------------------------
@@ -215,22 +192,6 @@ def test_point_annulus_closed_form_matches_sampling():
 # ------------------------------------------------------------------------------------------------
 # cases
 # ------------------------------------------------------------------------------------------------
-def random_shape(kind, rng, box=1.5):
-    at = rng.uniform(-box, box, 3)
-    if kind == "point":
-        return ("point", _t(at))
-    if kind in ("line", "ray"):
-        return (kind, _t(at), _t(rng.normal(size=3)))
-    if kind == "segment":
-        return (kind, _t(at), _t(at + rng.uniform(-2, 2, 3)))
-    if kind in ("circle", "disk"):
-        return (kind, _t(at), _t(rng.normal(size=3)), float(rng.uniform(0.2, 2)))
-    if kind == "arc":
-        return arc(at, rng.normal(size=3), rng.uniform(0.2, 2), rng.normal(size=3), rng.uniform(0.2, TWO_PI))
-    outer = rng.uniform(0.3, 2)
-    return annulus(at, rng.normal(size=3), outer * rng.uniform(0.1, 0.9), outer)
-
-
 def random_cases(kind, n, seed):
     rng = np.random.default_rng([seed, OTHER_KINDS.index(kind)])
     return [(random_shape("annulus", rng), random_shape(kind, rng)) for _ in range(n)]
@@ -238,12 +199,6 @@ def random_cases(kind, n, seed):
 
 Z, X, Y, O = (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 0.0)
 WASHER = annulus(O, Z, 1.0, 2.0)
-
-
-def translated(shape, by):
-    kind, *f = shape
-    moved = (0, 1) if kind == "segment" else (0,)
-    return (kind, *[tuple(x + y for x, y in zip(v, by)) if i in moved else v for i, v in enumerate(f)])
 
 
 # (name, annulus, other, exact distance or None, unique: True / False / None)
@@ -298,11 +253,8 @@ for _shift in (1e6, 1e8):
         FAR.append((f"{_name}-translated-{_shift:g}", translated(_a, _by), translated(_b, _by), None, None))
 
 
-def check(a, b, d, scale_rel=REL, ref=None):
-    ref = reference(a, b) if ref is None else ref
-    scale = max([ref] + radii(a) + radii(b))
-    assert abs(float(d) - ref) <= scale_rel * scale, (float(d), ref, abs(float(d) - ref) / scale)
-    return ref
+def check(a, b, d):
+    return _check(a, b, d, reference(a, b), REL)
 
 
 def on_shape_distance(shape, p, toward):
@@ -330,17 +282,6 @@ def check_closest(a, b, r, ref):
     if s > tol:  # the disk's own angle of the point
         disk_param = cd.closest_points(cd.Disk(a[1], a[2], a[4]), pa).param_a
         assert abs(math.remainder(theta - float(disk_param[1]), TWO_PI)) * s <= tol
-
-
-def both_orders(a, b, **kw):
-    x, y = make(a), make(b)
-    d_ab, d_ba = cd.distance(x, y, **kw), cd.distance(y, x, **kw)
-    assert d_ab == d_ba  # one compiled query serves both orders, to the bit
-    r_ab, r_ba = cd.closest_points(x, y, **kw), cd.closest_points(y, x, **kw)
-    assert r_ab.distance == d_ab and r_ba.distance == d_ba
-    assert np.array_equal(r_ab.point_a, r_ba.point_b) and np.array_equal(r_ab.param_a, r_ba.param_b)
-    assert r_ab.unique == r_ba.unique
-    return d_ab, r_ab
 
 
 # ------------------------------------------------------------------------------------------------
@@ -431,26 +372,9 @@ def test_inner_zero_is_the_disk_and_inner_outer_the_circle_bit_for_bit(kind):
 # ------------------------------------------------------------------------------------------------
 # batches: scalar == batched, broadcasting, dtypes
 # ------------------------------------------------------------------------------------------------
-def batch_of(shapes, dtype=np.float64):
-    kind = shapes[0][0]
-    fields = list(zip(*[s[1:] for s in shapes]))
-    return make((kind, *[np.asarray(f, dtype=dtype) for f in fields]), dtype)
-
-
 @pytest.mark.parametrize("kind", OTHER_KINDS)
 def test_batched_equals_scalar_and_broadcasts(kind):
-    cases = random_cases(kind, 10, 8)
-    rings, others = batch_of([a for a, _ in cases]), batch_of([b for _, b in cases])
-    for precision in ("float64", "longdouble"):
-        d = cd.distance(rings, others, precision=precision)
-        d_rev = cd.distance(others, rings, precision=precision)
-        r = cd.closest_points(rings, others, precision=precision)
-        assert d.shape == (10,) and np.array_equal(d, d_rev) and np.array_equal(r.distance, d)
-        for i, (a, b) in enumerate(cases):
-            assert d[i] == cd.distance(make(a), make(b), precision=precision)
-            single = cd.closest_points(make(a), make(b), precision=precision)
-            assert np.array_equal(r.point_a[i], single.point_a) and np.array_equal(r.param_a[i], single.param_a)
-            assert np.array_equal(r.point_b[i], single.point_b) and r.unique[i] == single.unique
+    rings, others = assert_batched_equals_single(random_cases(kind, 10, 8), 10)
     # (N, 1) against (M,): an N x M matrix of the single answers
     column = cd.Annulus.from_arrays({k: np.expand_dims(v, 1) if v.ndim > (1 if k in ("center", "normal") else 0)
                                      else v for k, v in rings[:4].to_arrays().items()})
@@ -554,31 +478,10 @@ def test_sweep_grows_the_annulus():
 # ------------------------------------------------------------------------------------------------
 # effects and Scene with annuli among other shapes, against brute force
 # ------------------------------------------------------------------------------------------------
-def mixed_shapes(seed, n=5):
-    rng = np.random.default_rng(seed)
-    out = {}
-    for kind in OTHER_KINDS:
-        for i in range(n):
-            out[f"{kind}{i}"] = make(random_shape(kind, rng, box=3.0))
-    return out
-
-
 def test_effects_on_annuli_agree_with_distance():
-    shapes = mixed_shapes(12)
-    rings = [s for name, s in shapes.items() if name.startswith("annulus")]
-    for a in rings:
-        for b in shapes.values():
-            d = cd.distance(a, b)
-            for limit in (0.0, 0.3, 1.0, 2.5):
-                tol = 64 * np.finfo(float).eps * 10
-                if abs(d - limit) > 1e-9:
-                    assert cd.within(a, b, limit) == (d <= limit + tol)
-                    assert cd.within(b, a, limit) == (d <= limit + tol)
-                    assert cd.distance_if_within(a, b, limit) == (d if d <= limit else np.inf)
-            if d > 1e-9:
-                assert not cd.intersects(a, b)
-            elif d == 0:
-                assert cd.intersects(a, b)
+    shapes = mixed_shapes(OTHER_KINDS, 12, 5)
+    assert_effects_agree_with_distance([s for name, s in shapes.items() if name.startswith("annulus")],
+                                       shapes.values())
     # touching: a line through the ring, a circle round the outer rim; not: a line through the hole
     assert cd.intersects(make(WASHER), cd.Line([1.5, 0, -1], [0, 0, 1]))
     assert cd.intersects(make(WASHER), cd.Circle([3, 0, 0], [0, 0, 1], 1.0))
@@ -612,19 +515,8 @@ def test_bounds_decide_separated_annulus_pairs_without_a_solve():
 
 
 def test_scene_queries_with_annuli_equal_brute_force():
-    shapes = mixed_shapes(14)
-    scene = cd.Scene(shapes)
-    names = list(shapes)
-    for probe in (cd.Annulus([0.5, -0.5, 0.2], [0.3, 0.2, 1.0], 0.7, 1.5), "annulus2", "circle1", [0.5, 0.5, 0.5]):
-        shape = shapes[probe] if isinstance(probe, str) else probe
-        others = [n for n in names if n != probe]
-        order = sorted(((cd.distance(shape, shapes[n]), names.index(n)) for n in others))
-        assert scene.nearest(probe, k=6) == [(names[i], d) for d, i in order[:6]]
-        assert scene.within(probe, 1.0) == [n for n in others if cd.within(shape, shapes[n], 1.0)]
-    for d in (0.0, 0.5, 1.5):
-        brute = [(x, y) for i, x in enumerate(names) for y in names[i + 1:] if cd.within(shapes[x], shapes[y], d)]
-        assert scene.pairs_within(d) == brute
-        assert any("annulus" in x + y for x, y in brute) or d == 0.0
+    probes = (cd.Annulus([0.5, -0.5, 0.2], [0.3, 0.2, 1.0], 0.7, 1.5), "annulus2", "circle1", [0.5, 0.5, 0.5])
+    assert_scene_equals_brute_force(mixed_shapes(OTHER_KINDS, 14, 5), probes, "annulus")
 
 
 def test_broadphase_boxes_hold_the_annuli():
@@ -645,15 +537,7 @@ def test_broadphase_boxes_hold_the_annuli():
     t = rng.uniform(0, TWO_PI, n)
     s = np.choose(rng.integers(0, 3, n), [inner, outer, inner + (outer - inner) * rng.uniform(0, 1, n)])
     on = centers + s[:, None] * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
-    points = cd.Point(np.concatenate([on, on + 1e-3 * rng.normal(size=(n, 3))]))
-    i, j, d = cd.pairs_within(rings, points, 0.01)
-    dist = cd.distance(cd.Annulus.from_arrays({k: a[:, None] for k, a in rings.to_arrays().items()}), points)
-    want_i, want_j = np.nonzero(dist <= 0.01)
-    assert np.array_equal(i, want_i) and np.array_equal(j, want_j) and np.array_equal(d, dist[want_i, want_j])
-    assert {(k, k) for k in range(n)} <= set(zip(i.tolist(), j.tolist()))
-    idx, nd = cd.nearest(points, rings, k=2)
-    order = np.argsort(dist.T, axis=1, kind="stable")[:, :2]
-    assert np.array_equal(nd, np.take_along_axis(dist.T, order, axis=1))
+    assert_broadphase_finds_points_on(rings, on, rng)
 
 
 def test_scene_with_annuli_and_bezier_curves_raises_for_that_pair():
