@@ -166,3 +166,39 @@ def assert_broadphase_finds_points_on(batch, on, rng):
     idx, nd = cd.nearest(points, batch, k=2)
     order = np.argsort(dist.T, axis=1, kind="stable")[:, :2]
     assert np.array_equal(nd, np.take_along_axis(dist.T, order, axis=1))
+
+
+def assert_exact_and_unique(name, a, b, d, r, ref, exact, unique, rel):
+    """A hard case's analytic distance (when known): the reference agrees with it to 1e-14 and
+    the answer to `rel`, of max(distance, largest radius); its `unique` (when known)."""
+    if exact is not None:
+        scale = max([exact] + radii(a) + radii(b))
+        assert abs(ref - exact) <= 1e-14 * scale  # the reference agrees with the analytic answer
+        assert abs(d - exact) <= rel * scale
+    if unique is not None:
+        assert bool(r.unique) is unique, name
+
+
+def assert_long_double(cases, reference, solvers, rel):
+    """precision='longdouble' on float64 inputs (which it reads exactly), every solver, both orders:
+    a long double within rel x max(reference, largest radius)."""
+    for a, b in cases:
+        for solver in solvers:
+            d, _ = both_orders(a, b, precision="longdouble", solver=solver)
+            assert isinstance(d, np.longdouble)
+            ref = reference(a, b)
+            scale = max([ref] + radii(a) + radii(b))
+            assert abs(float(d - np.longdouble(ref))) <= rel * scale, (a, b, float(d), ref)
+
+
+def assert_float32(cases, reference):
+    """float32 inputs give float32 answers within 4 float32 ulps of max(d, radius) of the exact
+    answer for the float32 inputs (the reference of the rounded shapes)."""
+    for a, b in cases:
+        a32, b32 = rounded(a, np.float32), rounded(b, np.float32)
+        x, y = make(a, np.float32), make(b, np.float32)
+        d = cd.distance(x, y)  # a single float32 answer comes back as a Python float of a float32
+        assert float(np.float32(d)) == d and cd.distance(y, x) == d
+        ref = reference(a32, b32)
+        scale = max([ref] + radii(a32) + radii(b32))
+        assert abs(float(d) - ref) <= 4 * float(np.spacing(np.float32(scale))), (float(d), ref)

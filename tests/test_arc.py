@@ -27,8 +27,9 @@ import circledist as cd
 from circledist_cases import reference_round as R
 from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
                                           assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
+                                          assert_exact_and_unique, assert_float32, assert_long_double,
                                           assert_scene_equals_brute_force, batch_of, both_orders, make, mixed_shapes,
-                                          radii, random_shape, rounded, translated)
+                                          radii, random_shape, translated)
 from circledist_cases.kind_checks import check as _check
 
 mpf, ctx = R.mpf, R.ctx
@@ -211,13 +212,8 @@ def test_hard_cases(case):
     name, a, b, exact, unique = case
     d, r = both_orders(a, b)
     ref = check(a, b, d)
-    if exact is not None:
-        scale = max([exact] + radii(a) + radii(b))
-        assert abs(ref - exact) <= 1e-14 * scale  # the reference agrees with the analytic answer
-        assert abs(d - exact) <= REL * scale
+    assert_exact_and_unique(name, a, b, d, r, ref, exact, unique, REL)
     check_closest(a, b, r, ref)
-    if unique is not None:
-        assert bool(r.unique) is unique, name
 
 
 @pytest.mark.parametrize("kind", OTHER_KINDS)
@@ -231,27 +227,14 @@ def test_every_solver(kind, solver):
 @pytest.mark.parametrize("kind", OTHER_KINDS)
 def test_long_double(kind):
     """precision='longdouble' on float64 inputs (which it reads exactly): the bar is 1e-15."""
-    for a, b in random_cases(kind, 4, 3) + [c[1:3] for c in HARD if c[2][0] == kind]:
-        for solver in SOLVERS:
-            d, _ = both_orders(a, b, precision="longdouble", solver=solver)
-            assert isinstance(d, np.longdouble)
-            ref = reference(a, b)
-            scale = max([ref] + radii(a) + radii(b))
-            assert abs(float(d - np.longdouble(ref))) <= REL_LD * scale, (a, b, float(d), ref)
+    cases = random_cases(kind, 4, 3) + [c[1:3] for c in HARD if c[2][0] == kind]
+    assert_long_double(cases, reference, SOLVERS, REL_LD)
 
 
 @pytest.mark.parametrize("kind", OTHER_KINDS)
 def test_float32(kind):
-    """float32 inputs give float32 answers within 4 float32 ulps of max(d, radius) of the exact
-    answer for the float32 inputs."""
-    for a, b in random_cases(kind, 4, 4):
-        a32, b32 = rounded(a, np.float32), rounded(b, np.float32)
-        x, y = make(a, np.float32), make(b, np.float32)
-        d = cd.distance(x, y)  # a single float32 answer comes back as a Python float of a float32
-        assert float(np.float32(d)) == d and cd.distance(y, x) == d
-        ref = reference(a32, b32)
-        scale = max([ref] + radii(a32) + radii(b32))
-        assert abs(float(d) - ref) <= 4 * float(np.spacing(np.float32(scale))), (float(d), ref)
+    """float32 inputs: within 4 float32 ulps of max(d, radius) of the exact answer for them."""
+    assert_float32(random_cases(kind, 4, 4), reference)
 
 
 # ------------------------------------------------------------------------------------------------
