@@ -202,3 +202,53 @@ def assert_float32(cases, reference):
         ref = reference(a32, b32)
         scale = max([ref] + radii(a32) + radii(b32))
         assert abs(float(d) - ref) <= 4 * float(np.spacing(np.float32(scale))), (float(d), ref)
+
+
+def assert_scene_file_round_trip(path, shapes, queries, other):
+    """shapes written to `path` (.json or .npz) with the queries read back to the bit (every field,
+    the sweep where one was given), answering as before against the shape named `other`."""
+    cd.write_scene(path, shapes, queries)
+    back = cd.read_scene(str(path))
+    for name, shape in shapes.items():
+        got, want = back.shapes[name].to_arrays(), shape.to_arrays()
+        assert [k for k in got if k != "sweep"] == [k for k in want if k != "sweep"]
+        assert not np.any(got.get("sweep", 0) != want.get("sweep", 0))
+        for field in want:
+            assert np.array_equal(got[field], np.broadcast_to(want[field], got[field].shape)), (name, field)
+        assert np.array_equal(cd.distance(back.shapes[name], shapes[other]), cd.distance(shape, shapes[other]))
+
+
+def file_version(path):
+    """The format version a scene file (.json or .npz) says."""
+    import json
+
+    if str(path).endswith(".json"):
+        return json.loads(path.read_text())["version"]
+    with np.load(path) as npz:
+        return int(npz["version"])
+
+
+def assert_older_version_refused(path, version, name, kind):
+    """The file at `path` (.json or .npz) says `version`; said one lower, it is refused at the
+    shape `name` of `kind`, the kind that version lacks."""
+    import json
+
+    import pytest
+
+    assert file_version(path) == version
+    older = version - 1
+    if str(path).endswith(".json"):
+        data = json.loads(path.read_text())
+        data["version"] = older
+        message = (rf"\$\.shapes\[0\]\.kind \(shape '{name}'\): kind '{kind}' needs format version {version} or "
+                   rf"later, the file says version {older}")
+        with pytest.raises(cd.SceneFileError, match=message):
+            cd.scenefile.scene_from_json(data, "old.json")
+    else:
+        with np.load(path) as npz:
+            arrays = dict(npz)
+        old = path.parent / "old.npz"
+        np.savez(old, **{**arrays, "version": np.array(older)})
+        message = f"array '{name}/kind': kind '{kind}' needs format version {version}"
+        with pytest.raises(cd.SceneFileError, match=message):
+            cd.read_scene(str(old))

@@ -33,6 +33,7 @@ from circledist_cases import reference_round as R
 from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
                                           assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
                                           assert_exact_and_unique, assert_float32, assert_long_double,
+                                          assert_older_version_refused, assert_scene_file_round_trip, file_version,
                                           assert_scene_equals_brute_force, batch_of, both_orders, make, mixed_shapes,
                                           radii, random_shape, translated)
 from circledist_cases.kind_checks import check as _check
@@ -539,9 +540,6 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     """Annuli (single, batched, float32 and swept) write and read back to the bit; a file holding
     an annulus is format version 3, one with only an arc stays version 2 and one with neither
     version 1 (older readers read them), and an annulus in a version 2 file is refused."""
-    import json
-
-    sf = cd.scenefile
     cases = random_cases("disk", 3, 17)
     shapes = {"washer": make(WASHER), "washers": batch_of([a for a, _ in cases]),
               "thin": cd.Annulus(np.float32([0, 0, 1]), np.float32([0, 1, 1]), np.float32(0.4), np.float32(0.5),
@@ -550,37 +548,12 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     queries = [{"a": "washer", "b": "coin", "effects": ["distance", "closest_points"]},
                {"a": "washers[1]", "effects": ["nearest"], "k": 2}]
     path = tmp_path / f"annuli{suffix}"
-    cd.write_scene(path, shapes, queries)
-    back = cd.read_scene(str(path))
-    for name, shape in shapes.items():
-        got, want = back.shapes[name].to_arrays(), shape.to_arrays()
-        assert [k for k in got if k != "sweep"] == [k for k in want if k != "sweep"]
-        assert not np.any(got.get("sweep", 0) != want.get("sweep", 0))
-        for field in want:
-            assert np.array_equal(got[field], np.broadcast_to(want[field], got[field].shape)), (name, field)
-        assert np.array_equal(cd.distance(back.shapes[name], shapes["coin"]), cd.distance(shape, shapes["coin"]))
-    if suffix == ".json":
-        data = json.loads(path.read_text())
-        assert data["version"] == 3
-        data["version"] = 2
-        with pytest.raises(cd.SceneFileError, match=r"\$\.shapes\[0\]\.kind \(shape 'washer'\): kind 'annulus' "
-                                                   r"needs format version 3 or later, the file says version 2"):
-            sf.scene_from_json(data, "old.json")
-    else:
-        with np.load(path) as npz:
-            arrays = dict(npz)
-        assert int(arrays["version"]) == 3
-        np.savez(tmp_path / "old.npz", **{**arrays, "version": np.array(2)})
-        with pytest.raises(cd.SceneFileError, match="array 'washer/kind': kind 'annulus' needs format version 3"):
-            cd.read_scene(str(tmp_path / "old.npz"))
+    assert_scene_file_round_trip(path, shapes, queries, "coin")
+    assert_older_version_refused(path, 3, "washer", "annulus")
     for kept, version in (({"coin": shapes["coin"]}, 1), ({"hook": make(arc(O, Z, 1, X, 1))}, 2)):
         plain = tmp_path / f"plain{version}{suffix}"
         cd.write_scene(plain, kept)
-        if suffix == ".json":
-            assert json.loads(plain.read_text())["version"] == version
-        else:
-            with np.load(plain) as npz:
-                assert int(npz["version"]) == version
+        assert file_version(plain) == version
 
 
 def test_command_line_answers_and_draws_an_annulus(tmp_path):

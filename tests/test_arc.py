@@ -28,6 +28,7 @@ from circledist_cases import reference_round as R
 from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
                                           assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
                                           assert_exact_and_unique, assert_float32, assert_long_double,
+                                          assert_older_version_refused, assert_scene_file_round_trip, file_version,
                                           assert_scene_equals_brute_force, batch_of, both_orders, make, mixed_shapes,
                                           radii, random_shape, translated)
 from circledist_cases.kind_checks import check as _check
@@ -429,9 +430,6 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     """Arcs (single, batched, float32 and swept) write and read back to the bit; a file holding an
     arc is format version 2, one without stays version 1 (older readers read it), and an arc in a
     version 1 file is refused."""
-    import json
-
-    sf = cd.scenefile
     cases = random_cases("disk", 3, 17)
     shapes = {"hook": make(QUARTER), "hooks": batch_of([a for a, _ in cases]),
               "bent": cd.Arc([0, 0, 1], [0, 1, 1], 0.5, [1, 0, 0], 5.0, sweep=0.1),
@@ -439,36 +437,11 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     queries = [{"a": "hook", "b": "coin", "effects": ["distance", "closest_points"]},
                {"a": "hooks[1]", "effects": ["nearest"], "k": 2}]
     path = tmp_path / f"arcs{suffix}"
-    cd.write_scene(path, shapes, queries)
-    back = cd.read_scene(str(path))
-    for name, shape in shapes.items():
-        got, want = back.shapes[name].to_arrays(), shape.to_arrays()
-        assert [k for k in got if k != "sweep"] == [k for k in want if k != "sweep"]
-        assert not np.any(got.get("sweep", 0) != want.get("sweep", 0))
-        for field in want:
-            assert np.array_equal(got[field], np.broadcast_to(want[field], got[field].shape)), (name, field)
-        assert np.array_equal(cd.distance(back.shapes[name], shapes["coin"]), cd.distance(shape, shapes["coin"]))
-    if suffix == ".json":
-        data = json.loads(path.read_text())
-        assert data["version"] == 2
-        data["version"] = 1
-        with pytest.raises(cd.SceneFileError, match=r"\$\.shapes\[0\]\.kind \(shape 'hook'\): kind 'arc' needs "
-                                                   r"format version 2 or later, the file says version 1"):
-            sf.scene_from_json(data, "old.json")
-    else:
-        with np.load(path) as npz:
-            arrays = dict(npz)
-        assert int(arrays["version"]) == 2
-        np.savez(tmp_path / "old.npz", **{**arrays, "version": np.array(1)})
-        with pytest.raises(cd.SceneFileError, match="array 'hook/kind': kind 'arc' needs format version 2"):
-            cd.read_scene(str(tmp_path / "old.npz"))
+    assert_scene_file_round_trip(path, shapes, queries, "coin")
+    assert_older_version_refused(path, 2, "hook", "arc")
     plain = tmp_path / f"plain{suffix}"
     cd.write_scene(plain, {"coin": shapes["coin"]})
-    if suffix == ".json":
-        assert json.loads(plain.read_text())["version"] == 1
-    else:
-        with np.load(plain) as npz:
-            assert int(npz["version"]) == 1
+    assert file_version(plain) == 1
 
 
 def test_command_line_answers_and_draws_an_arc(tmp_path):
