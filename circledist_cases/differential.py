@@ -18,14 +18,26 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    Bezier curve against each (random, far-translated, nearly parallel pieces crossing or a hair
    apart or collinear, far origins and ends, zero-length segments, points and ends on the other
    piece, a line tangent to a curve or parallel to its end tangent, a curve crossing a piece,
-   curves with a far control point or 1e2..1e5 times larger than the piece).
+   curves with a far control point or 1e2..1e5 times larger than the piece).  Arcs (issue 19):
+   an arc against a point, line, ray, segment, circle, disk or arc, the arc second (after the
+   other kind, as a circle or disk comes after the pieces; ARC_PAIRS), in the "arc_" families:
+   the circle families applied to arcs (_arc_variant: the base family's case with the arcs drawn
+   as circles, each then cut to an arc whose span is placed relative to the circle's point
+   nearest the other shape or the other round's axis -- an end exactly there or 1e-16..1e-6 rad
+   beside it, the point inside the span, or beyond both ends), and the arcs' own: ends at the
+   features (arc_ends), a round's axis through an arc end (arc_end_on_axis), concentric coplanar
+   spans overlapping, disjoint or touching at an end (arc_spans), tiny angles, 2 pi - tiny and
+   2 pi exactly (arc_angles).
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
    distance is the minimum over one parameter of a closed form (point-circle, point-disk,
-   point-line): a circle's angle against the other shape (both ways round for two rounds), a
-   line's parameter against the round and the round's angle against the line, a Bezier curve's
-   t against the round (each half from its own end, so parameters near an end keep their full
-   precision).  Dense sampling, then a vectorised beam search (nested re-sampling around the
+   point-line; point-arc: the circle's where the angle of the point's projection lies in the
+   span, else the nearer end's): a circle's angle against the other shape (both ways round for
+   two rounds), a line's parameter against the round and the round's angle against the line, an
+   arc's angle over [0, angle] wherever a circle's runs over [0, 2 pi) and the arc's closed form
+   wherever a round's is the target, a Bezier curve's t against the round (each half from its
+   own end, so parameters near an end keep their full precision).  Dense sampling, then a
+   vectorised beam search (nested re-sampling around the
    best few sampled local minima) in float64, then long-double levels around the best.  Where
    the sampling step is long for the target round's features (a curve or a huge circle passing a
    much smaller round) a Lipschitz zoom (``_zoom``: hodograph or radius bounds on the point's
@@ -53,16 +65,19 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    and (for the chosen cases) scalar, and reports findings: answers above the screen's bound or
    below every verified bound (beyond the bar), closest points off their shapes, separations
    that differ from the reported distance, distance(a, b) != distance(b, a), batch != scalar,
-   within / intersects inconsistent with the distance, non-finite answers or wrong dtypes.
+   within / intersects inconsistent with the distance, non-finite answers or wrong dtypes, and
+   an arc of angle 2 pi whose distance is not its circle's to the bit (docs/arc.md).
    The bound an answer is held against is the screen's, or lower: the separation (plus the
    measured distances off their shapes) of any combination's closest points, a genuine pair too.
    ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
    circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
-   bezier_other) and reference_linear.py (linear pieces among themselves: the search of
+   bezier_other), reference_arc.py (arcs: the arc's angle against the other's closed form) and
+   reference_linear.py (linear pieces among themselves: the search of
    tests/test_linear_accuracy.py), and evaluates the screen's own best pair at 50 digits, so a
    reference that missed the minimum is caught, not trusted.
 
-Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius in the query
+Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius (circle, disk
+or arc) in the query
 (for a query without a circle or disk: the scale of the pairs' own accuracy tests, see
 ``bar_scale``: for the linear pairs 1e-12 x the query's size), bar 1e-12 in float64,
 1e-15 in long double (float64 inputs referenced exactly), 4 float32 ulps (4 * 2^-23) for float32
@@ -92,6 +107,9 @@ OUT_EPS = {"float64": EPS64, "longdouble": EPSLD, "float32": EPS32}
 ULPS = 8          # closest points: ulps of the scene scale allowed off their shapes
 LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
+# kinds with a radius: the rounds and arcs (an arc is a circle restricted to an angle interval;
+# its data: centre, normal, radius, start, angle -- 11 numbers)
+RIMS = ROUND + ("arc",)
 # the pairs with a circle or disk (the families of the first version), then the pairs among
 # points, lines, rays and segments (point before line before ray before segment) and a Bezier
 # curve against each of them (the curve first)
@@ -99,7 +117,15 @@ ROUND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
     ("bezier", "circle"), ("bezier", "disk"), ("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LL = [(lk, rk) for i, lk in enumerate(LINEAR) for rk in LINEAR[i:]]
 BL = [("bezier", lk) for lk in LINEAR]
-KIND_PAIRS = ROUND_PAIRS + LL + BL
+# an arc against every kind with a query, the arc second (as a circle or disk comes after the
+# pieces, and arc after disk).  Once Arc-Bezier has a query, "bezier" joins ARC_OTHERS (after
+# "segment"); the screen, the families (_arc_variant, _feature), the reference
+# (reference_arc.bezier_arc) and the checker take it as they are.  (Adding a pair re-maps the
+# arc families' case ids: case i is pair i mod the number of pairs.)
+ARC_OTHERS = ("point", "line", "ray", "segment", "circle", "disk", "arc")
+ARC_PAIRS = [(k, "arc") for k in ARC_OTHERS]
+ARC_RR = [p for p in ARC_PAIRS if p[0] in ("circle", "disk", "arc")]   # a circle, disk or arc against an arc
+KIND_PAIRS = ROUND_PAIRS + LL + BL + ARC_PAIRS
 LD = np.longdouble
 
 
@@ -452,7 +478,7 @@ def _translate(kind, data, T):
     if kind == "bezier":
         return [[float(x) for x in np.asarray(p) + T] for p in data]
     data = list(data)
-    npos = {"point": 3, "line": 3, "ray": 3, "segment": 6, "circle": 3, "disk": 3}[kind]
+    npos = {"point": 3, "line": 3, "ray": 3, "segment": 6, "circle": 3, "disk": 3, "arc": 3}[kind]
     for i in range(npos):
         data[i] = float(data[i] + T[i % 3])
     return data
@@ -807,6 +833,238 @@ def _fam_linear_far_translated(rng, ka, kb):
     return _fam_far_translated(rng, ka, kb, bases=_LINEAR_TRANSLATED_BASES)
 
 
+# ---- arcs: the circle families applied to arcs (issue 19) --------------------------------------
+# An arc family takes a base family's case with every arc drawn as a circle (the base generator
+# called with "circle" for "arc"; a disk stays a disk), then cuts each such circle to an arc
+# (same centre, normal and radius; a start and an angle).  Where the span lies is chosen relative
+# to a feature of the circle found by a float64 search (_feature): its point nearest the other
+# shape (a tangency, a line's closest point, the touching point of nearly touching rounds) or
+# nearest the other round's axis -- an arc END exactly there (theta = 0 or theta = angle), or
+# 1e-16..1e-6 rad beside it; the feature inside the span; or outside it (the ends decide).  In
+# exact frames (normals along the axes) a feature within 1e-5 rad of a coordinate axis is snapped
+# onto it, so that the end sits exactly at the base family's exact touching point.
+def _arc_angle(rng, extreme=False):
+    """An arc's angle: ordinary, quarter / half / three-quarter turns, tiny (1e-12..1e-3 rad),
+    2 pi - (1e-12..1e-3), or float64's 2 pi exactly (the whole circle)."""
+    k = int(rng.integers(0, 8)) if not extreme else int(rng.integers(4, 8))
+    if k <= 2:
+        return float(rng.uniform(0.05, 2 * math.pi - 0.05))
+    if k == 3:
+        return float(rng.choice([0.5, 1.0, 1.5])) * math.pi
+    if k in (4, 5):
+        return _logu(rng, -12, -3)
+    if k == 6:
+        return 2 * math.pi - _logu(rng, -12, -3)
+    return 2 * math.pi      # the library takes angles in (0, 2 pi]
+
+
+def _unit_normal(data):
+    N = np.asarray(data[3:6], float)
+    return N / np.linalg.norm(N)
+
+
+def _snap(e, n):
+    """e snapped onto the coordinate axis it lies within 1e-5 rad of, when the normal n is a
+    coordinate axis (an exact frame) and that axis lies in the plane."""
+    k = int(np.argmax(np.abs(e)))
+    if abs(e[k]) > 1 - 5e-11 and np.max(np.abs(n)) == 1.0 and n[k] == 0.0:
+        out = np.zeros(3)
+        out[k] = math.copysign(1.0, e[k])
+        return out
+    return e
+
+
+def _feature(circle, kind, data):
+    """The unit direction (world) from the circle's centre to its point nearest the shape
+    (kind, data) -- a point, line, ray, segment, circle or disk; "axis": the line along a round's
+    axis -- by a float64 scan of 720 angles and eight re-samplings around the best (a generator's
+    hint, not a reference: its minimiser is good to ~1e-8 rad where the distance is quadratic)."""
+    C, R = np.asarray(circle[:3], float), float(circle[6])
+    n = _unit_normal(circle)
+    u0 = _perp(np.random.default_rng(0), n)
+    v0 = np.cross(n, u0)
+    if kind == "axis":
+        kind, data = "line", list(data[:6])
+    D = np.asarray(data, float)[None]
+    if kind == "bezier":
+        # (a Bezier curve: the nearest of 401 of its points, relative to the circle's centre)
+        t = np.linspace(0, 1, 401)
+        P = sum(math.comb(len(data) - 1, i) * (t ** i * (1 - t) ** (len(data) - 1 - i))[:, None] * (np.asarray(q) - C)
+                for i, q in enumerate(data))
+        rel = np.zeros(3)
+
+        def dist(w):
+            return np.min(np.linalg.norm(w[:, None, :] - P[None], axis=2), axis=1)
+    elif kind in ROUND:
+        rel = _diff_ld(C[None], D[:, :3]).astype(float)[0]
+        tn = _unit_normal(data)
+
+        def dist(w):
+            return _round_dist(w, tn, float(data[6]), kind == "disk")
+    else:
+        b0, m, lo, hi = (np.asarray(x, float) for x in _anchor(kind, D, C[None]))
+        rel = -b0[0]
+
+        def dist(w):
+            return _lin_dist(w, m[0], float(np.dot(m[0], m[0])), lo[0], hi[0])
+
+    def f(th):
+        return dist(rel + R * (np.cos(th)[:, None] * u0 + np.sin(th)[:, None] * v0))
+
+    th = np.arange(720) * (2 * math.pi / 720)
+    best = th[int(np.argmin(f(th)))]
+    h = 2 * math.pi / 720
+    for _ in range(8):
+        th = best + np.linspace(-2 * h, 2 * h, 65)
+        best = th[int(np.argmin(f(th)))]
+        h /= 16
+    return _snap(math.cos(best) * u0 + math.sin(best) * v0, n)
+
+
+def _offset(rng):
+    """0, or +-1e-16..1e-6 rad: an end exactly at the feature or beside it."""
+    return _tiny(rng, -16, -6, 0.4)
+
+
+def _cut(rng, circle, e, mode, angle):
+    """The arc of the circle (data: centre, normal, radius) with the angle `angle`, placed by
+    mode relative to the feature direction e: "start" (theta = 0 at e, or beside it), "end"
+    (theta = angle at e, or beside it), "inside" (e in the span), "outside" (e beyond both ends),
+    "random"."""
+    n = _unit_normal(circle)
+    if mode == "start":
+        start = _rot(e, n, _offset(rng))
+    elif mode == "end":
+        start = _rot(e, n, -angle + _offset(rng))
+    elif mode == "inside":
+        start = _rot(e, n, -angle * rng.uniform(0.05, 0.95))
+    elif mode == "outside" and angle < 2 * math.pi - 1e-3:
+        start = _rot(e, n, rng.uniform(0, 2 * math.pi - angle))
+    else:
+        start = _rot(_perp(rng, n), n, 0.0)
+    if mode != "random":
+        start = _snap(start / np.linalg.norm(start), n)
+    return [float(x) for x in circle[:7]] + [float(x) for x in start] + [float(angle)]
+
+
+_SPAN_MODES = ("start", "end", "inside", "outside", "random")
+
+
+def _arc_of(rng, circle, other_kind, other, modes=_SPAN_MODES, extreme=False):
+    """Cut a circle to an arc, the span placed by a mode drawn from `modes` relative to the
+    circle's point nearest the other shape or (a round other, half the time) nearest its axis."""
+    mode = str(rng.choice(modes))
+    feature_of = "axis" if other_kind in RIMS and rng.random() < 0.5 else _arc_base_kind(other_kind)
+    e = _feature(circle, feature_of, other[:7] if other_kind in RIMS else other)
+    return _cut(rng, circle, e, mode, _arc_angle(rng, extreme))
+
+
+def _arc_base_kind(kind):
+    return "circle" if kind == "arc" else kind
+
+
+def _arc_variant(base, modes=_SPAN_MODES, extreme=False):
+    """The generator of an arc family: the base family's case, its arcs cut from circles."""
+    def gen(rng, ka, kb):
+        a, b = FAMILIES[base][1](rng, _arc_base_kind(ka), _arc_base_kind(kb))
+        a, b = _plain(a), _plain(b)
+        kinds = (_arc_base_kind(ka), _arc_base_kind(kb))
+        a2 = _arc_of(rng, a, kinds[1], b, modes, extreme) if ka == "arc" else a
+        b2 = _arc_of(rng, b, kinds[0], a, modes, extreme) if kb == "arc" else b
+        return a2, b2
+    return gen
+
+
+def _arc_pairs(base_pairs):
+    """The arc pairs whose circle version (arcs drawn as circles) the base family covers."""
+    def covered(k):
+        kk = _arc_base_kind(k)
+        return (kk, "circle") in base_pairs or ("circle", kk) in base_pairs
+    return [p for p in ARC_PAIRS if covered(p[0])]
+
+
+def _fam_arc_spans(rng, ka, kb):
+    """Concentric, coplanar circle / disk / arc against an arc: spans overlapping, disjoint or
+    touching at an end (the other arc starting where this one ends, or ending where it starts,
+    exactly in exact frames), radii equal, 1 + 1e-15..1e-6 or apart; normals equal or opposite
+    (the other arc then runs the other way round)."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    Rb = _radius(rng, ex)
+    Ra = Rb * float(rng.choice([1.0, 1.0 + _tiny(rng, -15, -6, 0), rng.uniform(0.2, 3)]))
+    nb = EZ
+    na = EZ * float(rng.choice([-1.0, 1.0]))
+    angle_b = float(rng.choice([0.5, 1.0, 1.5])) * math.pi if ex else _arc_angle(rng)
+    r, _ = _in_plane(rng, ex)
+    b_end = _rot(r, nb, angle_b)
+    b = fr.round(np.zeros(3), nb, Rb) + fr.dirv(r) + [angle_b]
+    if ka != "arc":
+        return fr.round(np.zeros(3), na, Ra), b
+    angle_a = float(rng.choice([0.5, 1.0, 1.5])) * math.pi if ex else _arc_angle(rng)
+    how = str(rng.choice(["touch_end", "touch_start", "overlap", "disjoint"]))
+    # a's start s_a, its points at s_a rotated about na by [0, angle_a]
+    if how == "touch_end":          # a starts where b ends
+        s_a = b_end
+    elif how == "touch_start":      # a ends where b starts
+        s_a = _rot(r, na, -angle_a)
+    elif how == "overlap":
+        s_a = _rot(r, nb, rng.uniform(0, min(angle_b, 2 * math.pi)))
+    else:                           # starting after b's end, ending before b's start (if it can)
+        gap = max(2 * math.pi - angle_b, 0.0)
+        s_a = _rot(b_end, nb, gap * rng.uniform(0.1, 0.9))
+        angle_a = min(angle_a, gap * rng.uniform(0.05, 0.5)) if gap > 0 else angle_a
+    s_a = np.round(s_a) if ex and np.max(np.abs(s_a - np.round(s_a))) < 1e-12 else s_a
+    return fr.round(np.zeros(3), na, Ra) + fr.dirv(s_a) + [angle_a], b
+
+
+_ARC_TRANSLATED_BASES = ("arc_random", "arc_tangent", "arc_ends", "arc_coplanar", "arc_concentric", "arc_axis",
+                         "arc_near_touching", "arc_spans", "arc_angles", "arc_end_on_axis")
+
+
+def _fam_arc_far_translated(rng, ka, kb):
+    return _fam_far_translated(rng, ka, kb, bases=_ARC_TRANSLATED_BASES)
+
+
+def _fam_arc_ends(rng, ka, kb):
+    """An arc end (theta = 0 or theta = angle) exactly at, or 1e-16..1e-6 rad beside, the
+    circle's point nearest the other shape (or the other round's axis), over the tangent,
+    coplanar, random and (rounds) nearly touching cases."""
+    bases = [f for f in ("tangent", "coplanar", "random", "near_touching", "shadow_center", "concentric")
+             if (ka, kb) in _arc_pairs(FAMILIES[f][0])]
+    return _arc_variant(str(rng.choice(bases)), modes=("start", "end"))(rng, ka, kb)
+
+
+def _fam_arc_end_on_axis(rng, ka, kb):
+    """A circle, disk or arc whose axis passes exactly through the arc's end (theta = 0 or
+    theta = angle; in exact frames quarter turns, the end exact up to cos(pi/2)'s rounding) or
+    1e-16..1e-6 radii beside it, at heights 0..2 radii along the axis: the distance from the end
+    to the round is then the same for every point of its rim (a circle) or attained at the disk's
+    centre region."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    Rb = _radius(rng, ex)
+    r, _ = _in_plane(rng, ex)
+    angle = float(rng.choice([0.5, 1.0, 1.5])) * math.pi if ex else _arc_angle(rng)
+    at_end = rng.random() < 0.5
+    E = Rb * (_snap(_rot(r, EZ, angle), EZ) if at_end else r)
+    b = fr.round(np.zeros(3), EZ, Rb) + fr.dirv(r) + [angle]
+    na = (EZ if rng.random() < 0.5 else EX) if ex else _unit(rng)
+    off = _tiny(rng, -16, -6, 0.5) * Rb * _perp(rng, na)
+    Ra = _radius(rng, ex) * float(rng.choice([1.0, 0.25, 4.0]))
+    a = fr.round(E + off + fr.param(-2, 2) * Rb * na, na, Ra)
+    if ka == "arc":
+        a = _arc_of(rng, a, "arc", b)
+    return a, b
+
+
+def _fam_arc_angles(rng, ka, kb):
+    """Tiny angles (1e-12..1e-3 rad), 2 pi - (1e-12..1e-3), float64's 2 pi exactly and above
+    (the whole circle, which must answer as the circle: check_cases compares them to the bit)."""
+    bases = [f for f in ("random", "tangent", "coplanar", "axis", "near_touching")
+             if (ka, kb) in _arc_pairs(FAMILIES[f][0])]
+    return _arc_variant(str(rng.choice(bases)), extreme=True)(rng, ka, kb)
+
+
 RR = [("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LR = [(lk, rk) for lk in LINEAR for rk in ROUND]
 LR3 = [(lk, rk) for lk in ("line", "ray", "segment") for rk in ROUND]
@@ -847,12 +1105,30 @@ FAMILIES = {
     "bezier_large_linear": (BL, _fam_bezier_large_linear),
     "piece_near_plane": (LR3, _fam_piece_near_plane),
 }
+# arcs (issue 19): the circle families applied to arcs (arc_<base>: the base family's cases with
+# their arcs cut from circles, _arc_variant), then the arcs' own
+for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", "coplanar", "concentric",
+              "near_concentric", "far_origin", "radius_ratio", "near_touching", "parallel_height", "huge_circle"):
+    FAMILIES["arc_" + _base] = (_arc_pairs(FAMILIES[_base][0]), _arc_variant(_base))
+FAMILIES.update({
+    "arc_ends": (ARC_PAIRS, _fam_arc_ends),
+    "arc_end_on_axis": (ARC_RR, _fam_arc_end_on_axis),
+    "arc_spans": (ARC_RR, _fam_arc_spans),
+    "arc_angles": (ARC_PAIRS, _fam_arc_angles),
+    "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
+})
 
 
 def has_round(family):
     """Whether a family's kind pairs include a circle or disk (the sixteen first families and piece_near_plane) or
-    not (the pairs among points, lines, rays and segments and Bezier curves against them)."""
-    return any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
+    not (the pairs among points, lines, rays and segments and Bezier curves against them); the
+    arc families (is_arc) count as neither."""
+    return not is_arc(family) and any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
+
+
+def is_arc(family):
+    """Whether a family is one of the arcs' (its kind pairs have an arc)."""
+    return any("arc" in pair for pair in FAMILIES[family][0])
 
 
 def _plain(data):
@@ -895,7 +1171,7 @@ def to_float32_case(case):
 
 
 def largest_radius(case):
-    return max([case[k + "_data"][6] for k in ("a", "b") if case[k] in ROUND] + [0.0])
+    return max([case[k + "_data"][6] for k in ("a", "b") if case[k] in RIMS] + [0.0])
 
 
 def bar_scale(case):
@@ -910,7 +1186,7 @@ def bar_scale(case):
     tests/test_bezier_point_linear.py).  Both are translation invariant; points a hair apart
     (zero-length segments) are held to the distance between them."""
     ka, kb = case["a"], case["b"]
-    if ka in ROUND or kb in ROUND:
+    if ka in RIMS or kb in RIMS:
         return largest_radius(case)
     key = _key(case)
     if key not in _SCALE_CACHE:
@@ -933,7 +1209,7 @@ def scene_scale(case):
         kind, data = case[k], case[k + "_data"]
         if kind == "bezier":
             vals += [abs(x) for p in data for x in p]
-        elif kind in ROUND:
+        elif kind in RIMS:
             vals += [abs(x) for x in data[:3]] + [abs(data[6])]
         elif kind == "segment":
             vals += [abs(x) for x in data[:6]]
@@ -1040,9 +1316,14 @@ def _nrm(a):
 
 
 # ---- closed forms (any float dtype; arrays broadcast (n, k, 3) against (n, 1, 3)) -------------
-def _round_dist(w, n, R, disk, with_rho=False):
+def _round_dist(w, n, R, disk, with_rho=False, span=None):
     """Distance of the points w (relative to the centre) from the round; with_rho: also their
-    distance rho from its axis."""
+    distance rho from its axis.  span (an arc: its unit u, v = n x u, angle and whether it is
+    the whole circle, broadcast like n, n, R, R): the circle restricted to the angles [0, angle]
+    from u -- the ring's distance where the angle phi of w's projection lies in the span (or w is
+    on the axis), else the nearer end's (the distance to the ring's point at theta grows with
+    |theta - phi| up to pi, so the nearer end in angle is the nearer in distance; both are taken,
+    each a genuine point's distance)."""
     z = _dot(w, n)
     a = w - z[..., None] * n
     rho = _nrm(a)
@@ -1050,7 +1331,25 @@ def _round_dist(w, n, R, disk, with_rho=False):
     d = np.sqrt(z * z + e * e)
     if disk:
         d = np.where(rho <= R, np.abs(z), d)
+    if span is not None:
+        u, v, ang, whole = span
+        phi = np.arctan2(_dot(w, v), _dot(w, u))
+        two_pi = 2 * np.arctan2(phi.dtype.type(0), phi.dtype.type(-1))
+        phi = np.where(phi < 0, phi + two_pi, phi)
+        off = (whole == 0) & (phi > ang) & (rho > 0)
+        e0 = _nrm(w - R[..., None] * u)
+        e1 = _nrm(w - R[..., None] * (np.cos(ang)[..., None] * u + np.sin(ang)[..., None] * v))
+        d = np.where(off, np.minimum(e0, e1), d)
     return (d, rho) if with_rho else d
+
+
+def _span(P, x1=True):
+    """The span parameters of an arc target in P (None for a circle or disk), shaped for
+    (n, k) points (x1) or (n,) points."""
+    if "tu" not in P:
+        return None
+    f = _x1 if x1 else (lambda v: v)
+    return f(P["tu"]), f(P["tv"]), f(P["tang"]), f(P["twhole"])
 
 
 def _lin_dist(w, m, mm, lo, hi):
@@ -1133,8 +1432,8 @@ class _Form:
 
     def value(self, x, P):
         X = self.points(x, P)
-        if self.target in ("circle", "disk"):
-            return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk")
+        if self.target in RIMS:
+            return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk", span=_span(P))
         d = _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
         if "mperp" not in P:
             return d
@@ -1160,13 +1459,14 @@ class _Form:
     def f_rho(self, x):
         """f and the points' distance from the (round) target's axis, for the zoom."""
         P = self.p.get(x.dtype.type)
-        if self.target not in ROUND:
+        if self.target not in RIMS:
             # a point or a linear piece: its local minima lie apart by about the distance itself
             # (see reference_round.bezier_other), which stands in for rho
             v = self.f(x)
             return v, v
         with np.errstate(invalid="ignore", over="ignore"):
-            v, rho = _round_dist(self.points(x, P), _x1(P["n"]), _x1(P["R"]), self.target == "disk", True)
+            v, rho = _round_dist(self.points(x, P), _x1(P["n"]), _x1(P["R"]), self.target == "disk", True,
+                                 span=_span(P))
         return np.where(np.isnan(v), np.inf, v), rho
 
     def magnitude(self, x):
@@ -1174,7 +1474,7 @@ class _Form:
         P = self.p.get(LD)
         X = self.points(x[:, None], P)[:, 0]
         mag = _nrm(X)
-        if self.target in ("circle", "disk"):
+        if self.target in RIMS:
             mag = mag + P["R"]
         else:
             mag = mag + _nrm(P["tb0"])
@@ -1611,6 +1911,31 @@ def _window(b0, m, lo, hi, R):
     return wlo, whi
 
 
+def _rim_parts(kind, data):
+    """A circle's, disk's or arc's screen parameters (long double) from its data rows (n, 7; an
+    arc's n, 11): the normal n; the moving rim's basis (U, V), interval [0, hi], periodicity and
+    grid (a circle: the frame of _ld_frame, [0, 2 pi) periodic; an arc: u, the unit projection of
+    its start, v = n x u, [0, angle] with both ends sampled, the whole [0, 2 pi] for an angle of
+    at least float64's 2 pi); target: the parameters of its closed form (an arc's span too)."""
+    n, U, V = _ld_frame(data[:, 3:6])
+    Rl = data[:, 6].astype(LD)
+    m = len(data)
+    target = dict(n=n, R=Rl)
+    if kind != "arc":
+        return dict(n=n, U=U, V=V, R=Rl, hi=np.full(m, 2 * math.pi), periodic=True, grid=_THETA_GRID,
+                    target=target)
+    S = data[:, 7:10].astype(LD)
+    S = S / np.max(np.abs(S), axis=1, keepdims=True)
+    u = S - _dot(S, n)[:, None] * n
+    u = u / _nrm(u)[:, None]
+    v = _cross(n, u)
+    ang = data[:, 10]
+    whole = ang >= 2 * math.pi
+    target.update(tu=u, tv=v, tang=ang.astype(LD), twhole=whole.astype(float))
+    return dict(n=n, U=u, V=v, R=Rl, hi=np.where(whole, 2 * math.pi, ang), periodic=False, grid=_S_GRID,
+                target=target)
+
+
 class ScreenResult:
     """value: long-double upper bound per case; slack: its rounding allowance; how: (form name,
     parameter as long double) of the best pair, for a 50-digit re-evaluation."""
@@ -1633,26 +1958,25 @@ def _screen(cases, use_ld):
         return _screen_bezier_linear(cases) if ka == "bezier" else _screen_linear(cases, use_ld)
     n = len(cases)
     B = _stack(cases, "b_data")
-    Cb, Nb, Rb = B[:, :3], B[:, 3:6], B[:, 6]
-    nb, Ub, Vb = _ld_frame(Nb)
-    Rbl = Rb.astype(LD)
+    Cb, Rb = B[:, :3], B[:, 6]
+    rb = _rim_parts(kb, B)
+    nb, Ub, Vb, Rbl, tb = rb["n"], rb["U"], rb["V"], rb["R"], rb["target"]
     forms = []
     if ka == "point":
         A = _stack(cases, "a_data")
         w = _diff_ld(A[:, :3], Cb)
-        v = _round_dist(w[:, None], nb[:, None], Rbl[:, None], kb == "disk")[:, 0]
+        v = _round_dist(w[:, None], nb[:, None], Rbl[:, None], kb == "disk", span=_span(tb))[:, 0]
         slack = 16 * EPSLD * (_nrm(w) + Rbl)
         return ScreenResult(v, slack.astype(float), ["point"] * n, [LD(0)] * n)
     if ka in ("line", "ray", "segment"):
         A = _stack(cases, "a_data")
         tgt = _linear_target(ka, A, Cb)
-        # (1) the round's rim against the linear shape's closed form
+        # (1) the round's rim (an arc's: over its span) against the linear shape's closed form
         p1 = _P(D=np.zeros((n, 3), dtype=LD), Ra=Rbl, Ua=Ub, Va=Vb, **tgt)
-        forms.append(_Form("rim|linear", "rim", "linear", p1, np.zeros(n), np.full(n, 2 * math.pi), True,
-                           _THETA_GRID))
-        # (2) the linear shape's parameter against the round's closed form
+        forms.append(_Form("rim|linear", "rim", "linear", p1, np.zeros(n), rb["hi"], rb["periodic"], rb["grid"]))
+        # (2) the linear shape's parameter against the round's (the arc's) closed form
         wlo, whi = _window(tgt["tb0"], tgt["tm"], tgt["tlo"], tgt["thi"], Rbl)
-        p2 = _P(b0=tgt["tb0"], m=tgt["tm"], n=nb, R=Rbl)
+        p2 = _P(b0=tgt["tb0"], m=tgt["tm"], **tb)
         forms.append(_Form("line|round", "line", kb, p2, wlo, whi, False, _S_GRID))
         # (the point moves by |m| per unit of s; the rim's own form is sampled at 1/80 of its radius)
         speed = np.sqrt(tgt["tmm"].astype(float))
@@ -1669,25 +1993,25 @@ def _screen(cases, use_ld):
         slack = np.zeros(n)
         for name, order in (("bezier|round", slice(None)), ("bezier_reversed|round", slice(None, None, -1))):
             dd = (rel_dd[0][:, order, :].copy(), rel_dd[1][:, order, :].copy())
-            form = _Form(name, "bezier", kb, _P(ctrl=_ld(dd), n=nb, R=Rbl), np.zeros(n), np.full(n, 0.5), False,
+            form = _Form(name, "bezier", kb, _P(ctrl=_ld(dd), **tb), np.zeros(n), np.full(n, 0.5), False,
                          _T_GRID)
             # (always refined in long double: a float32 scene of a curve 1e5 times larger than the
             # round needs it for the float32 bar too)
-            v, a, b, u, mag = _minimize_bezier(form, dd, dict(n=nb, R=Rbl), Rbl)
+            v, a, b, u, mag = _minimize_bezier(form, dd, tb, Rbl)
             for j in np.flatnonzero(v < best):
                 best[j], names[j], params[j] = v[j], name, (float(a[j]), float(b[j]), LD(u[j]))
                 slack[j] = 16 * EPSLD * float(mag[j])
         return ScreenResult(best, slack, names, params)
     else:
+        # two rounds (or arcs): each one's rim (an arc's over its span) against the other's closed form
         A = _stack(cases, "a_data")
-        Ca, Na, Ra = A[:, :3], A[:, 3:6], A[:, 6]
-        na, Ua, Va = _ld_frame(Na)
-        Ral = Ra.astype(LD)
+        Ca, Ra = A[:, :3], A[:, 6]
+        ra = _rim_parts(ka, A)
         Dab = _diff_ld(Ca, Cb)
-        pa = _P(D=Dab, Ra=Ral, Ua=Ua, Va=Va, n=nb, R=Rbl)
-        forms.append(_Form("rim_a|b", "rim", kb, pa, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
-        pb = _P(D=-Dab, Ra=Rbl, Ua=Ub, Va=Vb, n=na, R=Ral)
-        forms.append(_Form("rim_b|a", "rim", ka, pb, np.zeros(n), np.full(n, 2 * math.pi), True, _THETA_GRID))
+        pa = _P(D=Dab, Ra=ra["R"], Ua=ra["U"], Va=ra["V"], **tb)
+        forms.append(_Form("rim_a|b", "rim", kb, pa, np.zeros(n), ra["hi"], ra["periodic"], ra["grid"]))
+        pb = _P(D=-Dab, Ra=Rbl, Ua=Ub, Va=Vb, **ra["target"])
+        forms.append(_Form("rim_b|a", "rim", ka, pb, np.zeros(n), rb["hi"], rb["periodic"], rb["grid"]))
         # a rim point moves by its radius per radian (a huge circle passing a small round)
         zooms = [(lambda c, a, b: Ra[c], Rb), (lambda c, a, b: Rb[c], Ra)]
     best = np.full(n, LD(np.inf), dtype=LD)
@@ -1927,11 +2251,12 @@ def residuals(kind, data, pts, params=None):
         bad = ~((t >= 0) & (t <= 1))
         return np.where(bad, LD(np.inf), _nrm(w)), 16 * LD(EPSLD) * mag
     data = np.asarray(data, dtype=float)
-    if kind in ROUND:
-        n, _, _ = _ld_frame(data[:, 3:6])
+    if kind in RIMS:
+        parts = _rim_parts(kind, data)
+        n, tgt = parts["n"], parts["target"]
         w = _pt_minus(P, data[:, :3])
         R = data[:, 6].astype(LD)
-        d = _round_dist(w[:, None], n[:, None], R[:, None], kind == "disk")[:, 0]
+        d = _round_dist(w[:, None], n[:, None], R[:, None], kind == "disk", span=_span(tgt))[:, 0]
         return d, 16 * LD(EPSLD) * (_nrm(w) + R)
     C0 = data[:, :3]
     w = _pt_minus(P, C0)
@@ -1971,6 +2296,8 @@ def make_shape(cd, kind, data, dtype=np.float64):
         return getattr(cd, kind.capitalize())(arr[..., :3], arr[..., 3:6])
     if kind == "segment":
         return cd.Segment(arr[..., :3], arr[..., 3:6])
+    if kind == "arc":
+        return cd.Arc(arr[..., :3], arr[..., 3:6], arr[..., 6], arr[..., 7:10], arr[..., 10])
     return getattr(cd, kind.capitalize())(arr[..., :3], arr[..., 3:6], arr[..., 6])
 
 
@@ -1986,7 +2313,7 @@ def pair_scale(case):
             return d[:3], math.inf
         if kind == "segment":
             return (d[:3] + d[3:6]) / 2, float(np.linalg.norm(d[3:6] - d[:3])) / 2
-        if kind in ROUND:
+        if kind in RIMS:
             return d[:3], float(d[6])
         lo, hi = d.min(axis=0), d.max(axis=0)
         c = (lo + hi) / 2
@@ -2195,7 +2522,7 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             dl, cl = d.astype(LD), cdist.astype(LD)
             ra_, rb_, sep = resid[(solver, precision, order)]
             ulps_o = ulps
-            if ka not in ROUND and kb not in ROUND:
+            if ka not in RIMS and kb not in RIMS:
                 # without a round the closest points can lie far outside the scene (1e5 along two
                 # lines 1e-5 rad apart): each is rounded by ulps of its own size
                 with np.errstate(invalid="ignore"):
@@ -2250,11 +2577,46 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             fw, wres = _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, pscale[scene], bar_abs,
                                      inaccurate, stats)
             findings += fw
+        # an arc of angle 2 pi is the whole circle, answered by the circle's query (docs/arc.md)
+        if "arc" in (ka, kb) and d_orders:
+            A, Bd = data[scene]
+            findings += _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats)
         # batched == scalar
         sel = [j for j, i in enumerate(idx) if i in scalar]
         if sel:
             findings += _check_scalar(cd, ka, kb, res, d_orders, wres, sel, gcases, solver, precision, stats)
     return findings
+
+
+def _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
+    """Cases whose arcs all have angle 2 pi (as given: float32's 2 pi rounds above float64's)
+    must give the distance of the same query with each arc replaced by its circle, to the bit."""
+    rows = np.ones(len(gcases), dtype=bool)
+    for kind, X in ((ka, A), (kb, Bd)):
+        if kind == "arc":
+            rows &= X[:, 10] >= 2 * math.pi
+    sel = np.flatnonzero(rows)
+    if not len(sel):
+        return []
+    kinds = ["circle" if k == "arc" else k for k in (ka, kb)]
+    dt = _dtype(precision)
+    SA = make_shape(cd, kinds[0], A[sel, :7] if ka == "arc" else A[sel], dt)
+    SB = make_shape(cd, kinds[1], Bd[sel, :7] if kb == "arc" else Bd[sel], dt)
+    out = []
+    for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
+        if order not in d_orders:
+            continue
+        d, err = _call(cd.distance, x, y, solver=solver, precision=precision)
+        if err:
+            out.append(_finding("exception", gcases[sel[0]], solver, precision, order, "whole arc as circle",
+                                error=err))
+            continue
+        stats["answers"]["distance (whole arc as circle)"] += len(sel)
+        d = np.asarray(d)
+        for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
+            out.append(_finding("whole_arc_vs_circle", gcases[sel[q]], solver, precision, order, "distance",
+                                library=d_orders[order][sel[q]], circle=d[q]))
+    return out
 
 
 def _d_array(x, precision):
@@ -2382,7 +2744,9 @@ def mp_reference(case):
         return _REF_CACHE[key]
     L, R = _load("reference"), _load("reference_round")
     ka, a, kb, b = key
-    if kb in LINEAR and ka in LINEAR:
+    if kb == "arc":
+        ref = _load("reference_arc").case_reference(ka, list(a), kb, list(b))
+    elif kb in LINEAR and ka in LINEAR:
         ref = _load("reference_linear").linear_linear(ka, a, kb, b)
     elif kb in LINEAR:
         ref = R.bezier_other([list(p) for p in a], kb, *_piece_points(kb, b)).distance
@@ -2445,16 +2809,12 @@ def mp_screen_value(case, form, param):
     x = _mpf_ld(param) if not isinstance(param, tuple) else None
     ctx = R.ctx
     if form == "point":
-        rnd = R.make_round(b[:3], b[3:6], b[6])
-        return R.point_disk(a[:3], rnd)[0] if kb == "disk" else R.point_circle(a[:3], rnd)[0]
+        return _mp_rim_distance(R.vec(a[:3]), kb, b)
     if form == "rim|linear":
-        rnd = R.make_round(b[:3], b[3:6], b[6])
-        p = rnd.rim_point(x)
+        p = _mp_rim(kb, b, x)
         return L.Linear(ka, a).distance_to_point(tuple(L.mpf(ctx.nstr(c, 60)) for c in p))
     if form == "line|round":
-        rnd = R.make_round(b[:3], b[3:6], b[6])
-        pr = _mp_line_point(ka, a, b[:3], x)
-        return R.point_disk(pr, rnd)[0] if kb == "disk" else R.point_circle(pr, rnd)[0]
+        return _mp_rim_distance(_mp_line_point(ka, a, b[:3], x), kb, b)
     if form == "point|linear":
         return _mp_piece_distance(R.vec(a[:3]), kb, b)
     if form == "line|linear":
@@ -2465,18 +2825,27 @@ def mp_screen_value(case, form, param):
         t = R.mpf(lo_) + _mpf_ld(u) * (R.mpf(hi_) - R.mpf(lo_))
         return _mp_piece_distance(R.bezier_point(a, t if form == "bezier|linear" else 1 - t), kb, b)
     if form in ("bezier|round", "bezier_reversed|round"):
-        rnd = R.make_round(b[:3], b[3:6], b[6])
         lo_, hi_, u = param
         t = R.mpf(lo_) + _mpf_ld(u) * (R.mpf(hi_) - R.mpf(lo_))
-        p = R.bezier_point(a, t if form == "bezier|round" else 1 - t)
-        return R.point_disk(p, rnd)[0] if kb == "disk" else R.point_circle(p, rnd)[0]
-    A = R.make_round(a[:3], a[3:6], a[6])
-    Bn = R.make_round(b[:3], b[3:6], b[6])
+        return _mp_rim_distance(R.bezier_point(a, t if form == "bezier|round" else 1 - t), kb, b)
     if form == "rim_a|b":
-        p = A.rim_point(x)
-        return R.point_disk(p, Bn)[0] if kb == "disk" else R.point_circle(p, Bn)[0]
-    p = Bn.rim_point(x)
-    return R.point_disk(p, A)[0] if ka == "disk" else R.point_circle(p, A)[0]
+        return _mp_rim_distance(_mp_rim(ka, a, x), kb, b)
+    return _mp_rim_distance(_mp_rim(kb, b, x), ka, a)
+
+
+def _mp_rim(kind, data, x):
+    """The point (reference_round's context) at the screen's angle x of a circle or disk's rim
+    (the frame of _ld_frame, which the references build alike) or of an arc (from its start)."""
+    if kind == "arc":
+        A = _load("reference_arc")
+        return A.ArcMP(A.shape(kind, data)).at(x)
+    return _load("reference_round").make_round(data[:3], data[3:6], data[6]).rim_point(x)
+
+
+def _mp_rim_distance(p, kind, data):
+    """The 50-digit distance from the mp point p to a circle, disk or arc (closed forms)."""
+    A = _load("reference_arc")
+    return A.point_distance_function(A.shape(kind, data))(p)
 
 
 def confirm(finding, case, screen_info):
@@ -2526,6 +2895,9 @@ def confirm_point(finding, case):
         # points are stored exactly (long-double ones as 25-digit text)
         if kind == "bezier":
             offs.append(float(R.bezier_disk(data, list(p), (0.0, 0.0, 1.0), 0.0).distance))
+        elif kind == "arc":
+            A = _load("reference_arc")
+            offs.append(float(A.ArcMP(A.shape(kind, data)).point_distance(tuple(_mp_num(x) for x in p))))
         else:
             offs.append(float(L.distance_to_shape(tuple(L.mpf(x) for x in p), kind, tuple(data))))
     finding["off_a_mp"], finding["off_b_mp"] = offs
@@ -2540,6 +2912,7 @@ MISS_REL = "1e-18"
 
 
 EXACT_CHECKS = ("within", "within_vs_inaccurate_distance", "asymmetric", "batch_scalar", "dtype", "float32_value",
+                "whole_arc_vs_circle",
                 "exception", "non_finite")
 
 
@@ -2598,6 +2971,8 @@ def _ctor_text(kind, data, f32):
         return f"cd.Segment({vec(data[:3])}, {vec(data[3:6])})"
     if kind in ("line", "ray"):
         return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])})"
+    if kind == "arc":
+        return f"cd.Arc({vec(data[:3])}, {vec(data[3:6])}, {scal(data[6])}, {vec(data[7:10])}, {scal(data[10])})"
     return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])}, {scal(data[6])})"
 
 

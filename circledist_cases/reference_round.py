@@ -244,7 +244,7 @@ def _sample_grid(lo, hi, intervals: int, periodic: bool):
     return xs, h
 
 
-def _zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, best):
+def _zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, best, max_samples=MAX_ZOOM_SAMPLES):
     """Re-sample, ZOOM_SPLIT pieces at a time, every interval between neighbouring samples that
     could hold a value below the best sample and on which one step can still move the point by
     more than resolution(a, b, L (b - a)).  f is L-Lipschitz on [a, b] (L = lipschitz(a, b)), so
@@ -252,7 +252,7 @@ def _zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, bes
     are dropped.  pts: sorted [x, f(x)] lists, extended in place.  The intervals are taken
     lowest bound first, so a zoom stopped by MAX_ZOOM_SAMPLES has spent them where the minimum is."""
     added = 0
-    while added < MAX_ZOOM_SAMPLES:
+    while added < max_samples:
         todo = []
         for i, ((a, fa), (b, fb)) in enumerate(zip(pts, pts[1:])):
             lh = lipschitz(a, b) * (b - a)
@@ -262,7 +262,7 @@ def _zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, bes
             break
         todo.sort(key=lambda x: x[0])
         new = {}
-        for _, i in todo[:(MAX_ZOOM_SAMPLES - added) // (ZOOM_SPLIT - 1)]:
+        for _, i in todo[:(max_samples - added) // (ZOOM_SPLIT - 1)]:
             (a, _fa), (b, _fb) = pts[i], pts[i + 1]
             step = (b - a) / ZOOM_SPLIT
             new[i] = [[a + j * step, None] for j in range(1, ZOOM_SPLIT)]
@@ -281,7 +281,7 @@ def _zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, bes
 
 
 def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: Optional[Callable] = None,
-                resolution=None) -> List[LocalMin]:
+                resolution=None, max_samples=MAX_ZOOM_SAMPLES) -> List[LocalMin]:
     """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first.
 
     lipschitz(a, b) (optional): a bound on |f'| over [a, b]; with resolution(a, b, step) (the
@@ -301,7 +301,7 @@ def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: 
         if periodic:  # the interval that wraps round, closed by the first sample one period on
             x_end = to_mp(hi) + (xs[0] - to_mp(lo))
             pts.append([x_end, f(x_end)])
-        _zoom(f, pts, lipschitz, resolution, min(fs))
+        _zoom(f, pts, lipschitz, resolution, min(fs), max_samples)
         if periodic:
             pts.pop()
         xs, fs = [p[0] for p in pts], [p[1] for p in pts]

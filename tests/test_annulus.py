@@ -30,6 +30,7 @@ import pytest
 
 import circledist as cd
 from circledist_cases import reference_round as R
+from circledist_cases.reference_arc import ArcMP, arc
 from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
                                           assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
                                           assert_exact_and_unique, assert_float32, assert_long_double,
@@ -52,10 +53,6 @@ INTERVALS = 400  # samples of a parameter per minimization (then golden section 
 # ------------------------------------------------------------------------------------------------
 def annulus(center, normal, inner, outer):
     return ("annulus", _t(center), _t(normal), float(inner), float(outer))
-
-
-def arc(center, normal, radius, start, angle):
-    return ("arc", _t(center), _t(normal), float(radius), _t(start), float(angle))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -110,12 +107,11 @@ def curves_of(shape, toward):
         u, v, _ = R.frame(shape[2])
         at, speed = rim_curve(R.vec(shape[1]), u, v, R.to_mp(shape[3]))
         return [(at, mpf(0), 2 * ctx.pi, True, speed)]
-    if kind == "arc":
-        _, c, n, r, s, a = shape
-        n, s = R.normalize(R.vec(n)), R.vec(s)
-        u = R.normalize(R.sub(s, R.scale(R.dot(s, n), n)))
-        at, speed = rim_curve(R.vec(c), u, R.cross(n, u), R.to_mp(r))
-        return [(at, mpf(0), R.to_mp(a), False, speed)] if a < TWO_PI else [(at, mpf(0), 2 * ctx.pi, True, speed)]
+    if kind == "arc":  # the arc's own definition (reference_arc.ArcMP)
+        arc_mp = ArcMP(shape)
+        if shape[5] < TWO_PI:
+            return [(arc_mp.at, mpf(0), arc_mp.angle, False, arc_mp.r)]
+        return [(arc_mp.at, mpf(0), 2 * ctx.pi, True, arc_mp.r)]
     if kind == "annulus":
         return [(at, mpf(0), 2 * ctx.pi, True, speed) for at, speed in AnnulusMP(shape).rims()]
     # a line, ray or segment: the stretch where a closest point can lie. A point of the line at

@@ -1,11 +1,12 @@
 """The Arc kind in Python (issue 19): cd.Arc against every kind that has a query, both argument
 orders, scalar and batched, every solver and precision, against an independent reference.
 
-Reference: 50-digit mpmath (circledist_cases/reference_round.py's helpers, no library code). The
-arc is sampled from its own definition, center + R (cos t u + sin t v), t in [0, angle], u the unit
+Reference: 50-digit mpmath (circledist_cases/reference_arc.py, on reference_round.py's helpers,
+no library code; the differential test confirms its arc findings with the same one). The arc is
+sampled from its own definition, center + R (cos t u + sin t v), t in [0, angle], u the unit
 projection of `start`, v = n x u; the other shape's distance from the arc's point is a closed form
-written here or there (point, line, ray, segment, circle, disk; another arc: the point-arc closed
-form below, which is itself checked against sampling), and the minimum over t is found by
+(point, line, ray, segment, circle, disk; another arc: the point-arc closed form there, checked
+against sampling below), and the minimum over t is found by
 minimize_1d (dense samples, golden section on every sampled local minimum).
 
 Accuracy rule (the project's, never loosened): |d - d_ref| <= 1e-12 x max(d_ref, largest radius
@@ -16,7 +17,6 @@ query: it raises the library's "no query between" error.
 
 from __future__ import annotations
 
-import functools
 import math
 import pickle
 
@@ -25,12 +25,13 @@ import pytest
 
 import circledist as cd
 from circledist_cases import reference_round as R
-from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
-                                          assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
-                                          assert_exact_and_unique, assert_float32, assert_long_double,
-                                          assert_older_version_refused, assert_scene_file_round_trip, file_version,
-                                          assert_scene_equals_brute_force, batch_of, both_orders, make, mixed_shapes,
-                                          radii, random_shape, translated)
+# the reference (50 digits), shared with the differential test
+from circledist_cases.reference_arc import ArcMP, _t, arc, point_distance_function, reference
+from circledist_cases.kind_checks import (assert_batched_equals_single, assert_broadphase_finds_points_on,
+                                          assert_effects_agree_with_distance, assert_exact_and_unique, assert_float32,
+                                          assert_long_double, assert_older_version_refused, assert_scene_file_round_trip,
+                                          file_version, assert_scene_equals_brute_force, batch_of, both_orders, make,
+                                          mixed_shapes, radii, random_shape, translated)
 from circledist_cases.kind_checks import check as _check
 
 mpf, ctx = R.mpf, R.ctx
@@ -39,75 +40,6 @@ OTHER_KINDS = ("point", "line", "ray", "segment", "circle", "disk", "arc")
 TWO_PI = 2 * math.pi
 REL = 1e-12
 REL_LD = 1e-15
-
-
-# ------------------------------------------------------------------------------------------------
-# shapes as plain tuples: (kind, *fields), fields as tuples of floats
-# ------------------------------------------------------------------------------------------------
-def arc(center, normal, radius, start, angle):
-    return ("arc", _t(center), _t(normal), float(radius), _t(start), float(angle))
-
-
-# ------------------------------------------------------------------------------------------------
-# the reference (50 digits)
-# ------------------------------------------------------------------------------------------------
-class ArcMP:
-    """An arc at 50 digits: its basis from its own definition (not the library's frame)."""
-
-    def __init__(self, shape):
-        _, c, n, r, s, a = shape
-        self.c, self.r, self.angle = R.vec(c), R.to_mp(r), R.to_mp(a)
-        self.n = R.normalize(R.vec(n))
-        s = R.vec(s)
-        self.u = R.normalize(R.sub(s, R.scale(R.dot(s, self.n), self.n)))
-        self.v = R.cross(self.n, self.u)
-
-    def at(self, t):
-        return R.add(self.c, R.scale(self.r, R.add(R.scale(ctx.cos(t), self.u), R.scale(ctx.sin(t), self.v))))
-
-    def point_distance(self, p):
-        """Closed form (a point's distance along the circle rises with the angular gap from the
-        angle of its projection): the ring's distance where that angle is on the arc, else the
-        nearer end's; on the axis every point is as far."""
-        w = R.sub(p, self.c)
-        z, x, y = R.dot(w, self.n), R.dot(w, self.u), R.dot(w, self.v)
-        rho = ctx.sqrt(x * x + y * y)
-        if rho == 0:
-            return ctx.sqrt(z * z + self.r * self.r)
-        phi = ctx.atan2(y, x)
-        if phi < 0:
-            phi += 2 * ctx.pi
-        if phi <= self.angle:
-            return ctx.sqrt(z * z + (rho - self.r) ** 2)
-        return min(R.dist(p, self.at(mpf(0))), R.dist(p, self.at(self.angle)))
-
-
-def point_distance_function(shape):
-    """x (an mp 3-vector) -> the distance from x to `shape`, in closed form."""
-    kind = shape[0]
-    if kind == "point":
-        p = R.vec(shape[1])
-        return lambda x: R.dist(x, p)
-    if kind in ("line", "ray", "segment"):
-        o, d = R.vec(shape[1]), R.vec(shape[2])
-        return lambda x: R.point_linear_closest(x, kind, o, d)[0]
-    if kind in ("circle", "disk"):
-        rnd = R.make_round(shape[1], shape[2], shape[3])
-        f = R.point_circle if kind == "circle" else R.point_disk
-        return lambda x: f(x, rnd)[0]
-    assert kind == "arc"
-    return ArcMP(shape).point_distance
-
-
-@functools.lru_cache(maxsize=None)
-def reference(a, b, intervals=720):
-    """min over the arc a's angle t of the closed-form distance from a(t) to b."""
-    arc_a = ArcMP(a)
-    other = point_distance_function(b)
-    whole = a[5] >= TWO_PI
-    hi = 2 * ctx.pi if whole else arc_a.angle
-    minima = R.minimize_1d(lambda t: other(arc_a.at(t)), mpf(0), hi, intervals, periodic=whole)
-    return float(minima[0].value)
 
 
 def test_point_arc_closed_form_matches_sampling():

@@ -2,16 +2,18 @@
 
 A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to
 (every pair of kinds: a circle or disk with any kind, points / lines / rays / segments among
-themselves, a Bezier curve against each of those);
+themselves, a Bezier curve against each of those, an arc against a point, line, ray, segment,
+circle, disk or arc);
 every solver ("bracketing", "companion", "polished", "eigen") x precision (float64, long double,
 float32); both argument orders; distance(), closest_points(), within(), distance_if_within() and
 intersects(), batched and scalar.  Each answer is judged by the fast NumPy screen (an independent
 one-parameter minimisation, an upper bound from genuine points) and by the closest points the
 library returns (on their shapes, separation == distance); every accuracy finding is confirmed
-against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py and
-reference_linear.py before it counts.  The first case of every (family, kind pair) is also
-compared with those references directly, for every combination (a Bezier curve against a linear
-piece: one family per pair, DIRECT_BEZIER_LINEAR).
+against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py,
+reference_arc.py and reference_linear.py before it counts.  The first case of every (family, kind
+pair) is also compared with those references directly, for every combination (a Bezier curve
+against a linear piece: one family per pair, DIRECT_BEZIER_LINEAR; the arc families: every third
+pair, DIRECT_ARC_EVERY).
 
 Bars (never loosened here): |d - d_true| <= bar * max(d_true, scale), bar 1e-12 in float64, 1e-15
 in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs; the scale is the largest radius,
@@ -25,7 +27,11 @@ machine at load ~1 with it (2026-11-26), 80 s of CPU before it with other jobs l
 machine to ~3 (the slice without the families of the pairs without a round took 61 s in the same
 conditions, 58 s on 2026-11-25; the library's answers take most of it). With scalar calls on
 every case it was 75 s, ~197,000
-answers, before those families.  A failure lists one reproducer per finding class;
+answers, before those families.  The 18 arc families (2026-11-26) add 182 cases (two per family
+and kind pair: 36,720 answers, 1.6 s of CPU) and 30 direct references (7.2 s of CPU): 1094 cases,
+231,336 answers and 214 direct references in all, 61 s of CPU (114 s of wall time with other
+jobs loading the machine to 6-7; at load ~2 the slice gets a core and its wall time is about its
+CPU time).  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
@@ -44,6 +50,11 @@ SEED = 20261114
 PER_PAIR = 4          # cases per (family, kind pair) ...
 MIN_PER_FAMILY = 40   # ... and at least this many per family
 PER_PAIR_NO_ROUND = 2  # cases per (family, kind pair) of the families without a circle or disk
+PER_PAIR_ARC = 2       # cases per (family, kind pair) of the arc families
+# The arc families' direct 50-digit comparison (~0.2 s a case with every combination) takes the
+# first case of every third (family, kind pair): the pair whose index in the family's list is the
+# family's index mod 3, so every arc pair is compared directly in some families.
+DIRECT_ARC_EVERY = 3
 SCALAR_EVERY = 4      # scalar calls on every 4th case
 # The direct 50-digit comparison takes the first case of every (family, kind pair), except for a
 # Bezier curve against a point, line, ray or segment (whose reference costs ~0.5 s a case): one
@@ -56,7 +67,9 @@ DIRECT_BEZIER_LINEAR = {("bezier", "point"): "bezier_large_linear", ("bezier", "
 def slice_cases():
     out = []
     for family, (pairs, _) in D.FAMILIES.items():
-        if D.has_round(family):
+        if D.is_arc(family):
+            n = PER_PAIR_ARC * len(pairs)
+        elif D.has_round(family):
             n = max(PER_PAIR * len(pairs), MIN_PER_FAMILY)
         else:
             n = PER_PAIR_NO_ROUND * len(pairs)
@@ -83,6 +96,10 @@ def results():
     firsts = {}
     for c in cases:
         pair = (c["a"], c["b"])
+        if D.is_arc(c["family"]):
+            fam_pairs = D.FAMILIES[c["family"]][0]
+            if fam_pairs.index(pair) % DIRECT_ARC_EVERY != list(D.FAMILIES).index(c["family"]) % DIRECT_ARC_EVERY:
+                continue
         if DIRECT_BEZIER_LINEAR.get(pair, c["family"]) == c["family"]:
             firsts.setdefault((c["family"], c["a"], c["b"]), c)
     ref_findings, diags = D.reference_check(cd, list(firsts.values()))

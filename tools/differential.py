@@ -26,10 +26,14 @@ finding class, writes the JSON report, and exits 1 when any finding is confirmed
 Every case is reproducible from its id "family/seed/index" (differential.case_from_id).
 --families restricts a run to some families (comma-separated), "round" to the seventeen of the
 pairs with a circle or disk, "no-round" to the ten of the pairs without one (points, lines, rays,
-segments among themselves, Bezier curves against them; docs/differential_report_linear.json):
+segments among themselves, Bezier curves against them; docs/differential_report_linear.json),
+"arc" to the seventeen of the arc against every kind with a query (issue 19;
+docs/differential_report_arc.json):
 
     python -m tools.differential --answers 200000 --seed 1 --families no-round \
         --report docs/differential_report_linear.json
+    python -m tools.differential --answers 10000000 --seed 1 --families arc \
+        --report docs/differential_report_arc.json
 """
 
 from __future__ import annotations
@@ -175,7 +179,8 @@ def main(argv=None):
     ap.add_argument("--report", default=os.path.join(ROOT, "docs", "differential_report.json"))
     ap.add_argument("--batch", type=int, default=2000, help="cases per chunk (one library batch per kind pair)")
     ap.add_argument("--families", default="all", help="comma-separated subset of the families, or \"round\" "
-                    "(the pairs with a circle or disk) or \"no-round\" (the others)")
+                    "(the pairs with a circle or disk), \"no-round\" (the pairs among points, lines, rays, "
+                    "segments and Bezier curves) or \"arc\" (the arc families)")
     ap.add_argument("--solvers", default="all")
     ap.add_argument("--precisions", default="all")
     ap.add_argument("--scalar", type=int, default=16, help="scalar-vs-batch sample per chunk")
@@ -187,7 +192,8 @@ def main(argv=None):
 
     D = load_differential()
     families = {"all": list(D.FAMILIES), "round": [f for f in D.FAMILIES if D.has_round(f)],
-                "no-round": [f for f in D.FAMILIES if not D.has_round(f)]}.get(args.families)
+                "no-round": [f for f in D.FAMILIES if not D.has_round(f) and not D.is_arc(f)],
+                "arc": [f for f in D.FAMILIES if D.is_arc(f)]}.get(args.families)
     families = families or args.families.split(",")
     for f in families:
         if f not in D.FAMILIES:

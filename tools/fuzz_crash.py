@@ -29,7 +29,7 @@ import time
 
 import numpy as np
 
-KINDS = ("point", "line", "ray", "segment", "circle", "disk", "bezier")
+KINDS = ("point", "line", "ray", "segment", "circle", "disk", "bezier", "arc")
 ENTRY_POINTS = ("distance", "closest_points", "within", "intersects", "distance_if_within")
 PRECISIONS = (None, "float32", "float64", "longdouble")
 SOLVERS = (None, "bracketing", "companion", "polished", "eigen")
@@ -68,6 +68,33 @@ def _direction(rng):
     return v
 
 
+def _arc_start(rng, normal):
+    """An arc's start direction: any, often nearly or exactly along the normal (its projection
+    onto the plane tiny, or zero: a clear error), of any length."""
+    r = rng.random()
+    if r < 0.1:
+        return list(normal)  # parallel: the constructor's error
+    if r < 0.25:  # a projection 1e-300..1e-8 of the start's length
+        tilt = _vector(rng, 10.0 ** rng.uniform(-300, -8))
+        return [n + t * abs(n) for n, t in zip(normal, tilt)]
+    return _direction(rng)
+
+
+def _arc_angle(rng):
+    """An arc's angle: the whole circle, tiny (down to 1e-300), a hair short of 2 pi, random in
+    (0, 2 pi], or now and then outside (0, 2 pi] (the constructor's error)."""
+    r = rng.random()
+    if r < 0.15:
+        return 2 * math.pi
+    if r < 0.3:
+        return float(10.0 ** rng.uniform(-300, -1))
+    if r < 0.4:
+        return 2 * math.pi - float(10.0 ** rng.uniform(-16, -3))
+    if r < 0.45:
+        return float(rng.choice([0.0, -1.0, 7.0, math.inf, math.nan]))
+    return float(rng.uniform(0, 2 * math.pi)) or math.pi
+
+
 def _shape(rng, kind, scale, center):
     def near():
         return [c + x for c, x in zip(center, _vector(rng, scale))]
@@ -79,9 +106,12 @@ def _shape(rng, kind, scale, center):
     if kind == "segment":
         p0 = near()
         return {"p0": p0, "p1": list(p0) if rng.random() < 0.1 else near()}
-    if kind in ("circle", "disk"):
+    if kind in ("circle", "disk", "arc"):
         radius = 0.0 if rng.random() < 0.05 else abs(scale * rng.uniform(0.1, 3))
-        return {"center": near(), "normal": _direction(rng), "radius": radius}
+        round_fields = {"center": near(), "normal": _direction(rng), "radius": radius}
+        if kind == "arc":
+            round_fields.update(start=_arc_start(rng, round_fields["normal"]), angle=_arc_angle(rng))
+        return round_fields
     count = int(rng.integers(2, 9))
     points = [near() for _ in range(count)]
     if rng.random() < 0.3:  # one dominant control point (issue 15 item 1)
@@ -98,7 +128,7 @@ def generate(seed: int, count: int):
         a, b = _shape(rng, ka, scale, center), _shape(rng, kb, scale, center)
         if rng.random() < 0.2:
             a["sweep"] = abs(_magnitude(rng) * rng.random())
-        if ka in ("circle", "disk") and kb in ("circle", "disk") and rng.random() < 0.3:
+        if ka in ("circle", "disk", "arc") and kb in ("circle", "disk", "arc") and rng.random() < 0.3:
             b["center"] = list(a["center"])  # concentric
         yield {
             "index": index,
@@ -168,8 +198,8 @@ def run_case(cd, case):
             if not (np.all(np.isfinite(pa[finite.ravel()])) and np.all(np.isfinite(pb[finite.ravel()]))):
                 return "non-finite closest points for a finite distance"
             d2 = np.asarray(cd.distance(a, b, **kw), dtype=np.longdouble)
-            if not np.array_equal(np.isinf(d2), np.isinf(d)):
-                return "distance() and closest_points().distance disagree on inf"
+            if not np.array_equal(d2, d):
+                return "distance() and closest_points().distance disagree"
         elif entry in ("within", "intersects"):
             out = cd.within(a, b, case["d"], **kw) if entry == "within" else cd.intersects(a, b, **kw)
             np.asarray(out, dtype=bool)
@@ -219,7 +249,9 @@ def run_batch(cd, cases):
             pb = np.asarray(r.point_b, dtype=np.longdouble)
             finite = np.isfinite(d)
             bad = np.isnan(d) | (finite & ~(np.isfinite(pa).all(-1) & np.isfinite(pb).all(-1)))
-            return (int(np.argmax(bad)), "NaN distance or non-finite points (batch)") if bad.any() else None
+            bad |= np.asarray(cd.distance(a, b, **kw), dtype=np.longdouble) != d
+            return (int(np.argmax(bad)), "NaN distance, non-finite points, or distance() and "
+                    "closest_points().distance disagree (batch)") if bad.any() else None
         if entry in ("within", "intersects"):
             out = cd.within(a, b, d_limit, **kw) if entry == "within" else cd.intersects(a, b, **kw)
             np.asarray(out, dtype=bool)

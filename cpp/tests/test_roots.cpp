@@ -929,6 +929,31 @@ template <class P, class Real> void degenerate() {
   check_candidates<P>("roots_in (no pieces)", p, Region{}, empty);
 }
 
+// A polynomial whose balanced companion matrix Eigen's real Schur iteration does not reduce
+// (NoConvergence: no eigenvalues at all): the octic of circle-circle (detail/local_circle.hpp) for
+// a circle through the other ring's axis at two opposite angles, (9 u^8 - 40 u^6 + 62 u^4 -
+// 40 u^2 + 9) / 729 = (u^2 - 1)^2 (9 u^4 - 22 u^2 + 9) / 729, with these exact double coefficients
+// (a circle of radius 1/2 in x = 0 about the origin against the ring of radius 1/2 about
+// (0, 3/2, 0) in y = 3/2). Its simple roots u^2 = (11 +- 2 sqrt 10) / 9 are the minima; the
+// eigenvalue policies returned none (the arc-circle differential finding of 2026-11-26). Every
+// policy must return all four to 1e-12, whichever way it finds them (roots.hpp:
+// roots_without_eigenvalues); in long double the same coefficients do not stall, and must agree.
+template <class P, class Real> void stalling_companion() {
+  const Real c[9] = {Real(1.0 / 81), 0, Real(-40.0 / 729), 0, Real(62.0 / 729), 0, Real(-40.0 / 729), 0, Real(1.0 / 81)};
+  const Real inf = std::numeric_limits<Real>::infinity();
+  Candidates<Real> out;
+  P::roots(c, 8, -inf, inf, out);
+  for (const LD v : {(11 + 2 * std::sqrt(10.0L)) / 9, (11 - 2 * std::sqrt(10.0L)) / 9})
+    for (const LD sign : {-1.0L, 1.0L}) {
+      const LD root = sign * std::sqrt(v);
+      bool found = false;
+      for (int i = 0; i < out.count; ++i) found = found || std::abs(LD(out.value[i]) - root) <= 1e-12L;
+      if (!found) std::printf("[%s, %s] stalling companion: root %.17Lg not found\n", policy_name<P>().c_str(),
+                              precision_name<Real>(), root);
+      CHECK(found);
+    }
+}
+
 template <class Real> struct Sets {
   std::vector<Problem<Real>> simple = simple_problems<Real>(), multiple = multiple_problems<Real>(),
                              clusters = cluster_problems<Real>(), leads = lead_problems<Real>(),
@@ -946,6 +971,7 @@ template <class P, class Real> void run_policy(const Sets<Real>& sets) {
   capacity<P, Real>();
   high_degrees<P>(sets.high);
   degenerate<P, Real>();
+  stalling_companion<P, Real>();
 }
 
 // SelectedEigenPolicy (the Python module's one unit for the three eigenvalue policies) is the

@@ -185,20 +185,28 @@ template <class Real> bool near_real(const std::complex<Real>& z, Real tolerance
 // The near-real eigenvalues of the balanced companion matrix of a trimmed polynomial of degree
 // >= 3. `Matrix` fixes the storage: the degree-8 one every line/circle query instantiates, or a
 // dynamic one for the curve degrees (instantiated only where a large Candidates asks for it).
+// False when Eigen's real Schur iteration did not converge: then it has no eigenvalues at all.
 template <class Matrix, class Real, int Capacity>
-void companion_roots(const Real* c, int degree, Real tol, Candidates<Real, Capacity>& out) {
+bool companion_roots(const Real* c, int degree, Real tol, Candidates<Real, Capacity>& out) {
   Matrix companion = Matrix::Zero(degree, degree);
   for (int i = 0; i + 1 < degree; ++i) companion(i + 1, i) = 1;
   for (int i = 0; i < degree; ++i) companion(i, degree - 1) = -c[i] / c[degree];
   balance(companion);
   Eigen::EigenSolver<Matrix> solver(companion, /*computeEigenvectors=*/false);
-  if (solver.info() != Eigen::Success) return;
+  if (solver.info() != Eigen::Success) return false;
   const auto& eigenvalues = solver.eigenvalues();
   for (int i = 0; i < degree; ++i) {
     const std::complex<Real> z = eigenvalues[i];
     if (near_real(z, tol)) out.push(z.real());
   }
+  return true;
 }
+
+// The real roots of a trimmed polynomial (degree >= 1) whose companion matrix the QR iteration
+// could not reduce (below): found without eigenvalues, by the bracketing policy's isolation over
+// the root bound, or none where that finds more values than a polynomial of this degree has
+// roots (rounding noise) or the degree is beyond its buffers. Defined after isolate_roots.
+template <class Real, int Capacity> void roots_without_eigenvalues(const Real* c, int degree, Candidates<Real, Capacity>& out);
 
 // A few Newton steps on p from x, kept only while |p| decreases (multiple roots converge slowly
 // and are left to the distance polish).
@@ -260,14 +268,21 @@ struct EigenCompanion {
       }
       return;
     }
+    // Eigen's real Schur iteration can stall: the balanced companion of the even, palindromic
+    // octic of a circle through the other ring's axis at two opposite angles (double roots at
+    // u = +-1, simple ones at u and -u) gave NoConvergence after its iteration limit, and no
+    // roots at all (tests/test_regressions.py, circle through a ring's axis). Such a polynomial's
+    // roots come from detail::roots_without_eigenvalues.
     using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDegree, kMaxDegree>;
+    bool converged = true;
     if (degree <= kMaxDegree) {
-      detail::companion_roots<Matrix>(c, degree, tol, out);
+      converged = detail::companion_roots<Matrix>(c, degree, tol, out);
     } else if constexpr (Capacity > kMaxDegree + 8) {
       if (degree <= Capacity - 8) {
-        detail::companion_roots<Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>>(c, degree, tol, out);
+        converged = detail::companion_roots<Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>>(c, degree, tol, out);
       }
     }
+    if (!converged) detail::roots_without_eigenvalues(c, degree, out);
   }
 
   template <class Real, int Capacity>
@@ -313,6 +328,12 @@ struct EigenPolynomialSolver {
     const Eigen::Matrix<Real, Eigen::Dynamic, 1> polynomial =
         Eigen::Map<const Eigen::Matrix<Real, Eigen::Dynamic, 1>>(coefficients, degree + 1);
     const Eigen::PolynomialSolver<Real, Eigen::Dynamic> solver(polynomial);
+    // Eigen's solver does not report an iteration that did not converge (EigenCompanion above):
+    // its eigenvalue solver then leaves the roots unset, none instead of `degree` of them.
+    if (solver.roots().size() != degree || !solver.roots().allFinite()) {
+      detail::roots_without_eigenvalues(coefficients, degree, out);
+      return;
+    }
     const Real tol = EigenCompanion::near_real_tolerance<Real>();
     for (Eigen::Index i = 0; i < solver.roots().size(); ++i)
       if (detail::near_real(std::complex<Real>(solver.roots()[i]), tol)) out.push(solver.roots()[i].real());
@@ -646,6 +667,15 @@ template <class Real> Real root_bound(const Real* c, int n) {
     exponent = std::max(exponent, e >= 0 ? (e + k - 1) / k : -((-e) / k));
   }
   return exponent == std::numeric_limits<int>::min() ? Real(1) : std::ldexp(Real(2), exponent);
+}
+
+template <class Real, int Capacity> void roots_without_eigenvalues(const Real* c, int degree, Candidates<Real, Capacity>& out) {
+  if (degree < 1 || degree > kMaxCurveDegree) return;
+  const Real bound = root_bound(c, degree);
+  Real found[kIsolateCapacity];
+  int count = 0;
+  if (isolate_roots(c, degree, -bound, bound, 2 * std::numeric_limits<Real>::epsilon(), found, count, kIsolateCapacity))
+    for (int i = 0; i < count; ++i) out.push(found[i]);
 }
 
 }  // namespace detail
