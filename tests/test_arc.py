@@ -29,9 +29,10 @@ from circledist_cases import reference_round as R
 from circledist_cases.reference_arc import ArcMP, _t, arc, point_distance_function, reference
 from circledist_cases.kind_checks import (assert_batched_equals_single, assert_broadphase_finds_points_on,
                                           assert_effects_agree_with_distance, assert_exact_and_unique, assert_float32,
-                                          assert_long_double, assert_older_version_refused, assert_scene_file_round_trip,
-                                          file_version, assert_scene_equals_brute_force, batch_of, both_orders, make,
-                                          mixed_shapes, radii, random_shape, translated)
+                                          assert_long_double, assert_older_version_refused,
+                                          assert_scene_equals_brute_force, assert_scene_file_round_trip, batch_of,
+                                          both_orders, file_version, make, mixed_shapes, radii, random_shape,
+                                          translated)
 from circledist_cases.kind_checks import check as _check
 
 mpf, ctx = R.mpf, R.ctx
