@@ -4,7 +4,7 @@ and schema tests)."""
 
 SCENE = {
     "format": "circledist-scene",
-    "version": 2,  # it holds an arc
+    "version": 3,  # it holds an annulus (and an arc)
     "description": "test scene",
     "shapes": [
         {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
@@ -15,6 +15,8 @@ SCENE = {
         {"name": "cable", "kind": "bezier", "control_points": [[-2, -2, 1], [0, 0, 3], [2, -2, 1]]},
         {"name": "hook", "kind": "arc", "center": [0, 3, 0], "normal": [0, 0, 1], "radius": 1.0, "start": [1, 0, 0],
          "angle": 4.0},
+        {"name": "washer", "kind": "annulus", "center": [0, -3, 0], "normal": [0, 1, 1], "inner_radius": 0.4,
+         "outer_radius": 1.0},
     ],
     "queries": [
         {"a": "rail", "b": "ring", "effects": ["intersects", "within", "distance", "closest_points"], "d": 0.6},
@@ -23,12 +25,14 @@ SCENE = {
         {"a": "coin", "effects": ["within"], "d": 3.0},
         {"a": "cable", "b": "ring", "effects": ["distance"]},
         {"a": "hook", "b": "ring", "effects": ["intersects", "distance", "closest_points"]},
+        {"a": "washer", "b": "rail", "effects": ["intersects", "distance", "closest_points"]},
     ],
 }
 
 
-HEAD = {"format": "circledist-scene", "version": 2}  # the current version (arcs need it)
+HEAD = {"format": "circledist-scene", "version": 3}  # the current version (annuli need it)
 HEAD1 = {"format": "circledist-scene", "version": 1}
+HEAD2 = {"format": "circledist-scene", "version": 2}
 # (label, file content, the JSON path, what was expected): each must appear in the one-line message.
 BAD = [
     ("not json", "{", "", "not valid JSON: Expecting property name"),
@@ -38,12 +42,15 @@ BAD = [
     ("wrong format", {"format": "scene", "version": 1, "shapes": SCENE["shapes"]}, "$.format",
      'expected "circledist-scene", got "scene"'),
     ("no version", {"format": "circledist-scene", "shapes": SCENE["shapes"]}, "$",
-     "missing field 'version' (this circledist reads versions 1 to 2)"),
-    ("newer version", {**HEAD, "version": 3, "shapes": SCENE["shapes"]}, "$.version",
-     "version 3 is newer than this circledist reads (versions 1 to 2): upgrade circledist"),
-    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version", 'expected one of 1, 2, got "1"'),
+     "missing field 'version' (this circledist reads versions 1 to 3)"),
+    ("newer version", {**HEAD, "version": 4, "shapes": SCENE["shapes"]}, "$.version",
+     "version 4 is newer than this circledist reads (versions 1 to 3): upgrade circledist"),
+    ("bad version", {**HEAD, "version": "1", "shapes": SCENE["shapes"]}, "$.version",
+     'expected one of 1, 2, 3, got "1"'),
     ("arc in a version 1 file", {**HEAD1, "shapes": SCENE["shapes"]}, "$.shapes[6].kind (shape 'hook')",
      "kind 'arc' needs format version 2 or later, the file says version 1"),
+    ("annulus in a version 2 file", {**HEAD2, "shapes": SCENE["shapes"]}, "$.shapes[7].kind (shape 'washer')",
+     "kind 'annulus' needs format version 3 or later, the file says version 2"),
     ("no shapes", {**HEAD, "queries": []}, "$", "missing field 'shapes'"),
     ("bad radius", {**HEAD, "shapes": [{"name": "r", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
                                         "radius": -1}]}, "$.shapes[0].radius (shape 'r')",
@@ -53,7 +60,7 @@ BAD = [
     ("zero normal", {**HEAD, "shapes": [{"name": "r", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, 0],
                                          "radius": 1}]}, "$.shapes[0].normal", "expected a non-zero vector"),
     ("unknown kind", {**HEAD, "shapes": [{"name": "x", "kind": "torus"}]}, "$.shapes[0].kind (shape 'x')",
-     'expected one of "point", "line", "ray", "segment", "circle", "disk", "bezier", "arc", got "torus"'),
+     'expected one of "point", "line", "ray", "segment", "circle", "disk", "bezier", "arc", "annulus", got "torus"'),
     ("unknown field", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0], "colour": "red"}]},
      "$.shapes[0].colour (shape 'p')", "unknown field (allowed: name, kind, count, p, sweep)"),
     ("short vector", {**HEAD, "shapes": [{"name": "p", "kind": "point", "p": [0, 0]}]},
@@ -82,6 +89,14 @@ BAD = [
                                                         "normal": [0, 0, 1], "radius": 1, "start": [0, 0, 2],
                                                         "angle": 1}]},
      "$.shapes[0]", "Arc: start is parallel to normal"),
+    ("annulus inner past outer", {**HEAD, "shapes": [{"name": "w", "kind": "annulus", "count": 2,
+                                                      "center": [0, 0, 0], "normal": [0, 0, 1],
+                                                      "inner_radius": [0.5, 2], "outer_radius": 1}]},
+     "$.shapes[0]", "Annulus: inner_radius[1] exceeds outer_radius[1] (2 > 1)"),
+    ("annulus negative inner radius", {**HEAD, "shapes": [{"name": "w", "kind": "annulus", "center": [0, 0, 0],
+                                                           "normal": [0, 0, 1], "inner_radius": -0.5,
+                                                           "outer_radius": 1}]},
+     "$.shapes[0].inner_radius (shape 'w')", "expected a number >= 0, got -0.5"),
     ("batch column too short", {**HEAD, "shapes": [{"name": "beads", "kind": "point", "count": 3,
                                                     "p": [[0, 0, 0], [1, 0, 0]]}]},
      "$.shapes[0].p", "expected 3 vectors (the batch's count) or 1, got 2"),

@@ -10,7 +10,8 @@ def random_fields(cd, kind: str, rng, batch=(), dtype=np.float64, sweep: bool = 
     """{field: array} for a batch of random shapes of `kind` (batch shape `batch`, values of
     `dtype`), drawn field by field in the table's order: vectors and directions standard normal,
     lengths (radii) uniform in [0.2, 2), control points four standard normal points (a cubic),
-    angles (an arc's) uniform in [0.3, 2 pi);
+    angles (an arc's) uniform in [0.3, 2 pi), an annulus's inner radius drawn as a fraction of its
+    outer one (uniform in [0, 1): the table's order puts it first, so it is set after the loop);
     with `sweep`, a sweep uniform in [0, 0.3) drawn last."""
     batch = tuple(batch)
     out = {}
@@ -26,6 +27,8 @@ def random_fields(cd, kind: str, rng, batch=(), dtype=np.float64, sweep: bool = 
         else:
             raise ValueError(f"no random values for role {role!r} of {kind}.{name}")
         out[name] = np.asarray(value).astype(dtype)
+    if "inner_radius" in out:  # at most the outer radius (shapes.hpp's at_most)
+        out["inner_radius"] = (rng.uniform(0.0, 1.0, batch) * out["outer_radius"]).astype(dtype)
     if sweep:
         out[cd._core._sweep_field()[0]] = random_sweep(rng, batch, dtype)
     return out

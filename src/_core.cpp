@@ -194,7 +194,7 @@ template <int K, size_t... I> void bind_shape(py::module_& m, const std::string&
   cls.def(py::init([](decltype((void)I, ArrayLike())... values, OptionalArrayLike sweep, bool copy) {
             ShapeOf<K> shape(K, {make_field(kind_name(K), spec[I].name, values, spec[I].width, spec[I].check, copy)...,
                                  sweep_field(kind_name(K), sweep, copy)});
-            check_not_along(shape, spec);
+            check_across_fields(shape, spec);
             return shape;
           }),
           py::arg(spec[I].name)..., py::kw_only(), py::arg(kSweepField.name) = py::none(), py::arg("copy") = true);
@@ -308,7 +308,7 @@ py::typing::Dict<py::str, py::typing::Tuple<FieldPair, py::ellipsis>> shape_fiel
 
 PYBIND11_MODULE(_core, m) {
   m.doc() =
-      "circledist: exact distances and closest points between circles, disks, arcs, lines, rays, segments, points "
+      "circledist: exact distances and closest points between circles, disks, arcs, annuli, lines, rays, segments, points "
       "and Bezier curves in 3D";
   m.attr("__version__") = CIRCLEDIST_VERSION;  // CMakeLists.txt's project() version
 

@@ -21,10 +21,10 @@ namespace circledist::python {
 using Index = std::ptrdiff_t;
 using BatchShape = std::vector<Index>;
 
-enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kBezier, kArc, kKindCount };
+enum Kind : int { kPoint, kLine, kRay, kSegment, kCircle, kDisk, kBezier, kArc, kAnnulus, kKindCount };
 
 inline const char* kind_name(int kind) {
-  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc"};
+  static const char* names[] = {"Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc", "Annulus"};
   return names[kind];
 }
 
@@ -51,7 +51,7 @@ inline std::string index_text(Index flat, const BatchShape& batch) {
   return s.str();
 }
 
-inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1, 5};
+inline constexpr size_t kFieldCounts[kKindCount] = {1, 2, 2, 2, 3, 3, 1, 5, 4};
 
 // NumPy broadcasting of two batch shapes; `ok` is false when they do not broadcast.
 inline BatchShape broadcast_shapes(const BatchShape& a, const BatchShape& b, bool& ok) {
@@ -119,11 +119,19 @@ template <class Real> struct ShapeTraits<Arc3<Real>> {
   }
 };
 
+// An annulus: center, normal, inner radius, outer radius (shapes.hpp checks 0 <= inner <= outer).
+template <class Real> struct ShapeTraits<Annulus3<Real>> {
+  static constexpr int kind = kAnnulus;
+  template <class T> static Annulus3<Real> make(const T* const* f, int) {
+    return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2]), Real(*f[3])};
+  }
+};
+
 // The C++ primitive of each kind, in Kind's order: the one list a new kind adds its type to, so
 // that code over every kind (the broadphase's volumes, bind_pairs.hpp) has no per-kind branch.
 template <class Real>
 using KindTypes = std::tuple<Vec3<Real>, Line3<Real>, Ray3<Real>, Segment3<Real>, Circle3<Real>, Disk3<Real>,
-                             BezierCurve3<Real>, Arc3<Real>>;
+                             BezierCurve3<Real>, Arc3<Real>, Annulus3<Real>>;
 static_assert(std::tuple_size_v<KindTypes<double>> == kKindCount, "a kind without a primitive in KindTypes");
 
 template <class T> struct TypeTag {

@@ -64,6 +64,8 @@ inline const char* field(const std::string& name) {
   if (name == "radius") return "The radius, of the radius's own batch shape (0-d for one): a read-only array.";
   if (name == "start") return "The start direction as given (its projection onto the plane starts the arc), shape (..., 3): a read-only array.";
   if (name == "angle") return "The angle in (0, 2 pi], of the angle's own batch shape (0-d for one): a read-only array.";
+  if (name == "inner_radius") return "The inner radius (of the hole), of its own batch shape (0-d for one): a read-only array.";
+  if (name == "outer_radius") return "The outer radius, of its own batch shape (0-d for one): a read-only array.";
   if (name == "control_points") return "The control points, shape (..., k + 1, 3): a read-only array, as stored.";
   if (name == "sweep") return "The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).";
   return "A field of the shape: a read-only array, as stored.";
@@ -88,8 +90,8 @@ Raises
 ValueError
     When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
     inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-    angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-    shapes do not broadcast. The message names the class, the field and the first
+    angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+    radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
     offending batch index, e.g. ``Circle: radius[1] is negative``.
 
 Notes
@@ -297,12 +299,51 @@ angle : numpy.ndarray, shape (...)
   return text;
 }
 
+inline const std::string& annulus() {
+  static const std::string text = shape_doc(
+      "The annulus (a flat ring, a washer): the points of the plane disk of `outer_radius` about\n"
+      "`center` at distance >= `inner_radius` from the center.\n\n"
+      "An inner radius of 0 is the disk (the disk's answers), an inner radius equal to the outer\n"
+      "one the circle (the circle's answers). `closest_points` reports an annulus point as a disk\n"
+      "point: ``param = (s, theta)``, s in [inner_radius, outer_radius] its distance from the\n"
+      "center. There is no query between an annulus and a Bezier curve yet.",
+      R"(
+center : array_like, shape (3,) or (..., 3)
+    Center.
+normal : array_like, shape (3,) or (..., 3)
+    Normal of the plane, of any finite nonzero length.
+inner_radius : array_like, shape () or (...)
+    Radius >= 0 of the hole, at most `outer_radius`.
+outer_radius : array_like, shape () or (...)
+    Radius >= 0 of the outer rim.)",
+      R"(
+center : numpy.ndarray, shape (..., 3)
+normal : numpy.ndarray, shape (..., 3)
+inner_radius : numpy.ndarray, shape (...)
+outer_radius : numpy.ndarray, shape (...)
+)",
+      R"(
+>>> import circledist as cd
+>>> washer = cd.Annulus([0, 0, 0], [0, 0, 1], 1.0, 2.0)
+>>> cd.distance(washer, [0, 0, 0])  # the center lies in the hole
+1.0
+>>> cd.distance(washer, [1.5, 0, 3])  # above the ring
+3.0
+>>> r = cd.closest_points(washer, [0.5, 0, 0])
+>>> r.point_a  # on the inner rim
+array([1., 0., 0.])
+>>> float(r.param_a[0])  # s, the point's distance from the center
+1.0
+)");
+  return text;
+}
+
 // The class docstring of each kind, in Kind's order (src/batch.hpp): the module binds every kind
 // from this list and shapes.hpp's field table, with no per-kind code.
 inline const std::string& shape_class(int kind) {
   static const std::string* const docs[] = {&point(),  &linear("Line"),        &linear("Ray"),        &segment(),
                                             &round_shape("Circle"), &round_shape("Disk"), &bezier(),
-                                            &arc()};
+                                            &arc(), &annulus()};
   static_assert(sizeof(docs) / sizeof(docs[0]) == kKindCount, "a kind without a class docstring");
   return *docs[kind];
 }
@@ -310,7 +351,7 @@ inline const std::string& shape_class(int kind) {
 inline const char* const kShape = R"(Base class of every shape: a single shape or a batch of them.
 
 Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk`,
-`Bezier` or `Arc`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
+`Bezier`, `Arc` or `Annulus`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
 
 Attributes
 ----------
@@ -318,7 +359,7 @@ batch_shape : tuple of int
     Leading batch dimensions; ``()`` for a single shape.
 kind : str
     The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``,
-    ``'Bezier'`` or ``'Arc'``.
+    ``'Bezier'``, ``'Arc'`` or ``'Annulus'``.
 sweep : numpy.ndarray
     The sweep radius.
 

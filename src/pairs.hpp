@@ -204,11 +204,20 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<Circle3<Real>, Arc3<Real>>();
   v.template add<Disk3<Real>, Arc3<Real>>();
   v.template add<Arc3<Real>, Arc3<Real>>();
+  // annulus.hpp: an annulus against every kind but Bezier curves (no Bezier-annulus query yet).
+  v.template add<Line3<Real>, Annulus3<Real>>();
+  v.template add<Ray3<Real>, Annulus3<Real>>();
+  v.template add<Segment3<Real>, Annulus3<Real>>();
+  v.template add<Circle3<Real>, Annulus3<Real>>();
+  v.template add<Disk3<Real>, Annulus3<Real>>();
+  v.template add<Arc3<Real>, Annulus3<Real>>();
+  v.template add<Annulus3<Real>, Annulus3<Real>>();
 }
 template <class Real, class Visitor> void for_each_closed_form_pair(Visitor&& v) {
   v.template add<Vec3<Real>, Circle3<Real>>();  // point_circle.hpp
   v.template add<Vec3<Real>, Disk3<Real>>();    // point_disk.hpp
   v.template add<Vec3<Real>, Arc3<Real>>();     // arc.hpp (closed form)
+  v.template add<Vec3<Real>, Annulus3<Real>>();  // annulus.hpp (closed form)
   // linear_linear.hpp: points, lines, rays and segments against each other.
   v.template add<Vec3<Real>, Vec3<Real>>();
   v.template add<Vec3<Real>, Line3<Real>>();

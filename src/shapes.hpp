@@ -327,7 +327,8 @@ struct FieldSpec {
   const char* name;
   Index width;
   Check check;
-  int not_along = -1;  // a vector field that must not be parallel to this field of the shape (check_not_along)
+  int not_along = -1;  // a vector field that must not be parallel to this field of the shape (check_across_fields)
+  int at_most = -1;    // a number field that must not exceed this field of the shape (check_across_fields)
 };
 
 inline constexpr FieldSpec kPointFields[] = {{"p", 3, Check::Finite}};
@@ -344,6 +345,13 @@ inline constexpr FieldSpec kArcFields[] = {{"center", 3, Check::Finite},
                                            {"radius", 1, Check::NonNegative},
                                            {"start", 3, Check::NonzeroVector, 1},
                                            {"angle", 1, Check::Angle}};
+// An annulus (primitives.hpp Annulus3): a disk's center and normal, then the inner radius, at most
+// the outer one (inner 0 is the disk, inner = outer the circle; inner > outer, the empty set in
+// C++, is refused here as a mistake).
+inline constexpr FieldSpec kAnnulusFields[] = {{"center", 3, Check::Finite},
+                                               {"normal", 3, Check::NonzeroVector},
+                                               {"inner_radius", 1, Check::NonNegative, -1, 3},
+                                               {"outer_radius", 1, Check::NonNegative}};
 
 // Every kind takes an optional `sweep` radius (>= 0, default 0) after its own fields: the field
 // is always present, last, so that a shape is swept (sweep.hpp) without per-kind code.
@@ -373,24 +381,42 @@ inline Field sweep_field(const char* owner, py::handle value, bool copy = true) 
 
 inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields, kSegmentFields,
                                                              kRoundFields,   kRoundFields,  kBezierFields,
-                                                             kArcFields};
+                                                             kArcFields,     kAnnulusFields};
 
 }  // namespace circledist::python
 
 namespace circledist::python {
 
-// Fields that must not be parallel to another of their shape (FieldSpec::not_along), checked per
-// element of the shape's broadcast batch: parallel within rounding (|a x b| <= 16 eps |a| |b|,
-// each scaled by its largest component first, so no square overflows or underflows) is an error
-// naming the field and the element.
-inline void check_not_along(const Shape& s, const FieldSpec* spec) {
+// The checks of a field against another of its shape (FieldSpec::not_along, FieldSpec::at_most),
+// per element of the shape's broadcast batch, each an error naming both fields and the element:
+//  - not_along: parallel within rounding (|a x b| <= 16 eps |a| |b|, each scaled by its largest
+//    component first, so no square overflows or underflows);
+//  - at_most: the field's value above the other's (compared as given: in long double for a field
+//    given as np.longdouble).
+inline long double field_value(const Field& f, Index at) { return f.is_wide ? f.wide.data()[at] : f.data()[at]; }
+inline void check_across_fields(const Shape& s, const FieldSpec* spec) {
   for (size_t k = 0; k < kFieldCounts[s.kind]; ++k) {
-    if (spec[k].not_along < 0) continue;
-    const size_t other = size_t(spec[k].not_along);
+    if (spec[k].not_along < 0 && spec[k].at_most < 0) continue;
+    const size_t other = size_t(spec[k].not_along >= 0 ? spec[k].not_along : spec[k].at_most);
     const FieldElements e(s);
     Index count = 1;
     for (const Index d : s.batch) count *= d;
+    const auto fail = [&](Index i, const std::string& relation, const std::string& why) {
+      throw py::value_error(std::string(kind_name(s.kind)) + ": " + spec[k].name + index_text(i, s.batch) + relation +
+                            spec[other].name + index_text(i, s.batch) + why);
+    };
     for (Index i = 0; i < count; ++i) {
+      if (spec[k].at_most >= 0) {
+        const long double value = field_value(s.fields[k], e.of(k, i));
+        const long double limit = field_value(s.fields[other], e.of(other, i));
+        if (value > limit) {
+          std::ostringstream got;
+          got.precision(17);
+          got << " (" << double(value) << " > " << double(limit) << ")";
+          fail(i, " exceeds ", got.str());
+        }
+        continue;
+      }
       const double* pa = s.fields[k].data() + 3 * e.of(k, i);
       const double* pb = s.fields[other].data() + 3 * e.of(other, i);
       Vec3<double> a(pa[0], pa[1], pa[2]), b(pb[0], pb[1], pb[2]);
@@ -398,9 +424,7 @@ inline void check_not_along(const Shape& s, const FieldSpec* spec) {
       b /= b.cwiseAbs().maxCoeff();
       const double bound = 16 * std::numeric_limits<double>::epsilon();
       if (!(a.cross(b).squaredNorm() > bound * bound * a.squaredNorm() * b.squaredNorm()))
-        throw py::value_error(std::string(kind_name(s.kind)) + ": " + spec[k].name + index_text(i, s.batch) +
-                              " is parallel to " + spec[other].name + index_text(i, s.batch) +
-                              " (its projection onto the plane starts the arc)");
+        fail(i, " is parallel to ", " (its projection onto the plane starts the arc)");
     }
   }
 }

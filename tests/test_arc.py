@@ -29,6 +29,13 @@ import circledist as cd
 from circledist_cases import reference_round as R
 # the reference (50 digits), shared with the differential test
 from circledist_cases.reference_arc import ArcMP, _t, arc, point_distance_function, reference
+from circledist_cases.kind_checks import (assert_batched_equals_single, assert_broadphase_finds_points_on,
+                                          assert_effects_agree_with_distance, assert_exact_and_unique, assert_float32,
+                                          assert_long_double, assert_older_version_refused,
+                                          assert_scene_equals_brute_force, assert_scene_file_round_trip, batch_of,
+                                          both_orders, file_version, make, mixed_shapes, radii, random_shape,
+                                          translated)
+from circledist_cases.kind_checks import check as _check
 
 mpf, ctx = R.mpf, R.ctx
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
@@ -36,29 +43,6 @@ OTHER_KINDS = ("point", "line", "ray", "segment", "circle", "disk", "arc")
 TWO_PI = 2 * math.pi
 REL = 1e-12
 REL_LD = 1e-15
-
-
-# ------------------------------------------------------------------------------------------------
-# shapes as plain tuples: (kind, *fields), fields as tuples of floats
-# ------------------------------------------------------------------------------------------------
-def make(shape, dtype=np.float64):
-    kind, *f = shape
-    f = [np.asarray(x, dtype=dtype) for x in f]
-    return {"point": cd.Point, "line": cd.Line, "ray": cd.Ray, "segment": cd.Segment, "circle": cd.Circle,
-            "disk": cd.Disk, "arc": cd.Arc}[kind](*f)
-
-
-def rounded(shape, dtype):
-    """The same shape with every number rounded to dtype (and back to float: exact)."""
-    out = [shape[0]]
-    for f in shape[1:]:
-        out.append(_t(np.asarray(f, dtype=dtype)) if isinstance(f, tuple) else float(np.asarray(f, dtype=dtype)))
-    return tuple(out)
-
-
-def radii(shape):
-    kind = shape[0]
-    return [shape[3]] if kind in ("circle", "disk", "arc") else []
 
 
 def test_point_arc_closed_form_matches_sampling():
@@ -76,19 +60,6 @@ def test_point_arc_closed_form_matches_sampling():
 # ------------------------------------------------------------------------------------------------
 # cases
 # ------------------------------------------------------------------------------------------------
-def random_shape(kind, rng, box=1.5):
-    at = rng.uniform(-box, box, 3)
-    if kind == "point":
-        return ("point", _t(at))
-    if kind in ("line", "ray"):
-        return (kind, _t(at), _t(rng.normal(size=3)))
-    if kind == "segment":
-        return (kind, _t(at), _t(at + rng.uniform(-2, 2, 3)))
-    if kind in ("circle", "disk"):
-        return (kind, _t(at), _t(rng.normal(size=3)), float(rng.uniform(0.2, 2)))
-    return arc(at, rng.normal(size=3), rng.uniform(0.2, 2), rng.normal(size=3), rng.uniform(0.2, TWO_PI))
-
-
 def random_cases(kind, n, seed):
     rng = np.random.default_rng([seed, OTHER_KINDS.index(kind)])
     return [(random_shape("arc", rng), random_shape(kind, rng)) for _ in range(n)]
@@ -96,12 +67,6 @@ def random_cases(kind, n, seed):
 
 Z, X, Y, O = (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 0.0)
 QUARTER = arc(O, Z, 1.0, X, math.pi / 2)  # from (1, 0, 0) to (0, 1, 0)
-
-
-def translated(shape, by):
-    kind, *f = shape
-    moved = {"point": (0,), "line": (0,), "ray": (0,), "segment": (0, 1), "circle": (0,), "disk": (0,), "arc": (0,)}[kind]
-    return (kind, *[tuple(x + y for x, y in zip(v, by)) if i in moved else v for i, v in enumerate(f)])
 
 
 # (name, arc, other, exact distance or None, unique: True / False / None)
@@ -148,11 +113,8 @@ for _shift in (1e6, 1e8):
         FAR.append((f"{_name}-translated-{_shift:g}", translated(_a, _by), translated(_b, _by), None, None))
 
 
-def check(a, b, d, scale_rel=REL, ref=None):
-    ref = reference(a, b) if ref is None else ref
-    scale = max([ref] + radii(a) + radii(b))
-    assert abs(float(d) - ref) <= scale_rel * scale, (float(d), ref, abs(float(d) - ref) / scale)
-    return ref
+def check(a, b, d):
+    return _check(a, b, d, reference(a, b), REL)
 
 
 def check_closest(a, b, r, ref):
@@ -168,17 +130,6 @@ def check_closest(a, b, r, ref):
     t = float(r.param_a[0])
     assert 0 <= t <= a[5] + 1e-15 and r.param_a[1] == 0
     assert float(R.dist(arc_mp.at(R.to_mp(t)), R.vec(pa))) <= tol
-
-
-def both_orders(a, b, **kw):
-    x, y = make(a), make(b)
-    d_ab, d_ba = cd.distance(x, y, **kw), cd.distance(y, x, **kw)
-    assert d_ab == d_ba  # one compiled query serves both orders, to the bit
-    r_ab, r_ba = cd.closest_points(x, y, **kw), cd.closest_points(y, x, **kw)
-    assert r_ab.distance == d_ab and r_ba.distance == d_ba
-    assert np.array_equal(r_ab.point_a, r_ba.point_b) and np.array_equal(r_ab.param_a, r_ba.param_b)
-    assert r_ab.unique == r_ba.unique
-    return d_ab, r_ab
 
 
 # ------------------------------------------------------------------------------------------------
@@ -197,13 +148,8 @@ def test_hard_cases(case):
     name, a, b, exact, unique = case
     d, r = both_orders(a, b)
     ref = check(a, b, d)
-    if exact is not None:
-        scale = max([exact] + radii(a) + radii(b))
-        assert abs(ref - exact) <= 1e-14 * scale  # the reference agrees with the analytic answer
-        assert abs(d - exact) <= REL * scale
+    assert_exact_and_unique(name, a, b, d, r, ref, exact, unique, REL)
     check_closest(a, b, r, ref)
-    if unique is not None:
-        assert bool(r.unique) is unique, name
 
 
 @pytest.mark.parametrize("kind", OTHER_KINDS)
@@ -217,27 +163,14 @@ def test_every_solver(kind, solver):
 @pytest.mark.parametrize("kind", OTHER_KINDS)
 def test_long_double(kind):
     """precision='longdouble' on float64 inputs (which it reads exactly): the bar is 1e-15."""
-    for a, b in random_cases(kind, 4, 3) + [c[1:3] for c in HARD if c[2][0] == kind]:
-        for solver in SOLVERS:
-            d, _ = both_orders(a, b, precision="longdouble", solver=solver)
-            assert isinstance(d, np.longdouble)
-            ref = reference(a, b)
-            scale = max([ref] + radii(a) + radii(b))
-            assert abs(float(d - np.longdouble(ref))) <= REL_LD * scale, (a, b, float(d), ref)
+    cases = random_cases(kind, 4, 3) + [c[1:3] for c in HARD if c[2][0] == kind]
+    assert_long_double(cases, reference, SOLVERS, REL_LD)
 
 
 @pytest.mark.parametrize("kind", OTHER_KINDS)
 def test_float32(kind):
-    """float32 inputs give float32 answers within 4 float32 ulps of max(d, radius) of the exact
-    answer for the float32 inputs."""
-    for a, b in random_cases(kind, 4, 4):
-        a32, b32 = rounded(a, np.float32), rounded(b, np.float32)
-        x, y = make(a, np.float32), make(b, np.float32)
-        d = cd.distance(x, y)  # a single float32 answer comes back as a Python float of a float32
-        assert float(np.float32(d)) == d and cd.distance(y, x) == d
-        ref = reference(a32, b32)
-        scale = max([ref] + radii(a32) + radii(b32))
-        assert abs(float(d) - ref) <= 4 * float(np.spacing(np.float32(scale))), (float(d), ref)
+    """float32 inputs: within 4 float32 ulps of max(d, radius) of the exact answer for them."""
+    assert_float32(random_cases(kind, 4, 4), reference)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -275,26 +208,9 @@ def test_angle_two_pi_given_as_float64_is_whole_in_long_double():
 # ------------------------------------------------------------------------------------------------
 # batches: scalar == batched, broadcasting, dtypes
 # ------------------------------------------------------------------------------------------------
-def batch_of(shapes, dtype=np.float64):
-    kind = shapes[0][0]
-    fields = list(zip(*[s[1:] for s in shapes]))
-    return make((kind, *[np.asarray(f, dtype=dtype) for f in fields]), dtype)
-
-
 @pytest.mark.parametrize("kind", OTHER_KINDS)
 def test_batched_equals_scalar_and_broadcasts(kind):
-    cases = random_cases(kind, 12, 8)
-    arcs, others = batch_of([a for a, _ in cases]), batch_of([b for _, b in cases])
-    for precision in ("float64", "longdouble"):
-        d = cd.distance(arcs, others, precision=precision)
-        d_rev = cd.distance(others, arcs, precision=precision)
-        r = cd.closest_points(arcs, others, precision=precision)
-        assert d.shape == (12,) and np.array_equal(d, d_rev) and np.array_equal(r.distance, d)
-        for i, (a, b) in enumerate(cases):
-            assert d[i] == cd.distance(make(a), make(b), precision=precision)
-            single = cd.closest_points(make(a), make(b), precision=precision)
-            assert np.array_equal(r.point_a[i], single.point_a) and np.array_equal(r.param_a[i], single.param_a)
-            assert np.array_equal(r.point_b[i], single.point_b) and r.unique[i] == single.unique
+    arcs, others = assert_batched_equals_single(random_cases(kind, 12, 8), 12)
     # (N, 1) against (M,): an N x M matrix of the single answers
     column = cd.Arc.from_arrays({k: np.expand_dims(v, 1) if v.ndim > (1 if k in ("center", "normal", "start") else 0)
                                  else v for k, v in arcs[:5].to_arrays().items()})
@@ -537,32 +453,9 @@ def test_sweep_grows_the_arc():
 # ------------------------------------------------------------------------------------------------
 # effects and Scene with arcs among other shapes, against brute force
 # ------------------------------------------------------------------------------------------------
-def mixed_shapes(seed, n=6):
-    rng = np.random.default_rng(seed)
-    out = {}
-    for kind in OTHER_KINDS:
-        for i in range(n):
-            out[f"{kind}{i}"] = make(random_shape(kind, rng, box=3.0))
-    return out
-
-
 def test_effects_on_arcs_agree_with_distance():
-    shapes = mixed_shapes(12)
-    arcs = [s for name, s in shapes.items() if name.startswith("arc")]
-    for a in arcs:
-        for b in shapes.values():
-            d = cd.distance(a, b)
-            for limit in (0.0, 0.3, 1.0, 2.5):
-                tol = 64 * np.finfo(float).eps * 10
-                if abs(d - limit) > 1e-9:
-                    assert cd.within(a, b, limit) == (d <= limit + tol)
-                    assert cd.within(b, a, limit) == (d <= limit + tol)
-                    got = cd.distance_if_within(a, b, limit)
-                    assert got == (d if d <= limit else np.inf)
-            if d > 1e-9:
-                assert not cd.intersects(a, b)
-            elif d == 0:
-                assert cd.intersects(a, b)
+    shapes = mixed_shapes(OTHER_KINDS, 12, 6)
+    assert_effects_agree_with_distance([s for name, s in shapes.items() if name.startswith("arc")], shapes.values())
     # touching: an arc through a disk, an arc ending on a line
     assert cd.intersects(make(QUARTER), cd.Disk([0.7, 0.7, 0], [1, 1, 0], 0.5))
     assert cd.intersects(make(QUARTER), cd.Line([1, -5, 0], [0, 1, 0]))
@@ -576,19 +469,8 @@ def test_effects_on_arcs_agree_with_distance():
 
 
 def test_scene_queries_with_arcs_equal_brute_force():
-    shapes = mixed_shapes(14)
-    scene = cd.Scene(shapes)
-    names = list(shapes)
-    for probe in (cd.Arc([0.5, -0.5, 0.2], [0.3, 0.2, 1.0], 1.5, [1, 0, 0], 4.0), "arc2", "circle1", [0.5, 0.5, 0.5]):
-        shape = shapes[probe] if isinstance(probe, str) else probe
-        others = [n for n in names if n != probe]
-        order = sorted(((cd.distance(shape, shapes[n]), names.index(n)) for n in others))
-        assert scene.nearest(probe, k=6) == [(names[i], d) for d, i in order[:6]]
-        assert scene.within(probe, 1.0) == [n for n in others if cd.within(shape, shapes[n], 1.0)]
-    for d in (0.0, 0.5, 1.5):
-        brute = [(x, y) for i, x in enumerate(names) for y in names[i + 1:] if cd.within(shapes[x], shapes[y], d)]
-        assert scene.pairs_within(d) == brute
-        assert any("arc" in x + y for x, y in brute) or d == 0.0
+    probes = (cd.Arc([0.5, -0.5, 0.2], [0.3, 0.2, 1.0], 1.5, [1, 0, 0], 4.0), "arc2", "circle1", [0.5, 0.5, 0.5])
+    assert_scene_equals_brute_force(mixed_shapes(OTHER_KINDS, 14, 6), probes, "arc")
 
 
 def test_broadphase_boxes_hold_the_arcs():
@@ -608,15 +490,7 @@ def test_broadphase_boxes_hold_the_arcs():
     v = np.cross(nn, u)
     t = rng.uniform(0, 1, n) * angles
     on = centers + radii_[:, None] * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
-    points = cd.Point(np.concatenate([on, on + 1e-3 * rng.normal(size=(n, 3))]))
-    i, j, d = cd.pairs_within(arcs, points, 0.01)
-    dist = cd.distance(cd.Arc.from_arrays({k: a[:, None] for k, a in arcs.to_arrays().items()}), points)
-    want_i, want_j = np.nonzero(dist <= 0.01)
-    assert np.array_equal(i, want_i) and np.array_equal(j, want_j) and np.array_equal(d, dist[want_i, want_j])
-    assert {(k, k) for k in range(n)} <= set(zip(i.tolist(), j.tolist()))
-    idx, nd = cd.nearest(points, arcs, k=2)
-    order = np.argsort(dist.T, axis=1, kind="stable")[:, :2]
-    assert np.array_equal(nd, np.take_along_axis(dist.T, order, axis=1))
+    assert_broadphase_finds_points_on(arcs, on, rng)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -627,9 +501,6 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     """Arcs (single, batched, float32 and swept) write and read back to the bit; a file holding an
     arc is format version 2, one without stays version 1 (older readers read it), and an arc in a
     version 1 file is refused."""
-    import json
-
-    sf = cd.scenefile
     cases = random_cases("disk", 3, 17)
     shapes = {"hook": make(QUARTER), "hooks": batch_of([a for a, _ in cases]),
               "bent": cd.Arc([0, 0, 1], [0, 1, 1], 0.5, [1, 0, 0], 5.0, sweep=0.1),
@@ -637,36 +508,11 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     queries = [{"a": "hook", "b": "coin", "effects": ["distance", "closest_points"]},
                {"a": "hooks[1]", "effects": ["nearest"], "k": 2}]
     path = tmp_path / f"arcs{suffix}"
-    cd.write_scene(path, shapes, queries)
-    back = cd.read_scene(str(path))
-    for name, shape in shapes.items():
-        got, want = back.shapes[name].to_arrays(), shape.to_arrays()
-        assert [k for k in got if k != "sweep"] == [k for k in want if k != "sweep"]
-        assert not np.any(got.get("sweep", 0) != want.get("sweep", 0))
-        for field in want:
-            assert np.array_equal(got[field], np.broadcast_to(want[field], got[field].shape)), (name, field)
-        assert np.array_equal(cd.distance(back.shapes[name], shapes["coin"]), cd.distance(shape, shapes["coin"]))
-    if suffix == ".json":
-        data = json.loads(path.read_text())
-        assert data["version"] == 2
-        data["version"] = 1
-        with pytest.raises(cd.SceneFileError, match=r"\$\.shapes\[0\]\.kind \(shape 'hook'\): kind 'arc' needs "
-                                                   r"format version 2 or later, the file says version 1"):
-            sf.scene_from_json(data, "old.json")
-    else:
-        with np.load(path) as npz:
-            arrays = dict(npz)
-        assert int(arrays["version"]) == 2
-        np.savez(tmp_path / "old.npz", **{**arrays, "version": np.array(1)})
-        with pytest.raises(cd.SceneFileError, match="array 'hook/kind': kind 'arc' needs format version 2"):
-            cd.read_scene(str(tmp_path / "old.npz"))
+    assert_scene_file_round_trip(path, shapes, queries, "coin")
+    assert_older_version_refused(path, 2, "hook", "arc")
     plain = tmp_path / f"plain{suffix}"
     cd.write_scene(plain, {"coin": shapes["coin"]})
-    if suffix == ".json":
-        assert json.loads(plain.read_text())["version"] == 1
-    else:
-        with np.load(plain) as npz:
-            assert int(npz["version"]) == 1
+    assert file_version(plain) == 1
 
 
 def test_command_line_answers_and_draws_an_arc(tmp_path):

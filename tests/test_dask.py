@@ -167,7 +167,8 @@ def scene(kind, n, rng, clustered):
 
 PAIR_CASES = [("Circle", "Segment"), ("Point", "Circle"), ("Disk", "Disk"), ("Bezier", "Circle"),
               ("Line", "Disk"), ("Segment", "Ray"), ("Line", "Line"), ("Circle", "Bezier"), ("Arc", "Segment"),
-              ("Disk", "Arc"), ("Arc", "Arc")]
+              ("Disk", "Arc"), ("Arc", "Arc"), ("Annulus", "Circle"), ("Segment", "Annulus"),
+              ("Annulus", "Annulus")]
 
 
 def pairs_cases(clustered, n_a, n_b, cases):

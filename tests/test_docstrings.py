@@ -11,7 +11,7 @@ import pytest
 import circledist
 
 PUBLIC = [name for name in circledist.__all__ if name != "__version__"]
-SHAPE_CLASSES = ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc"]
+SHAPE_CLASSES = ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc", "Annulus"]
 QUERIES = ["distance", "closest_points", "within", "distance_if_within", "intersects"]
 
 

@@ -30,6 +30,9 @@ def random_batch(kind, rng, n, spread=3.0):
         return cd.Bezier(c[:, None, :] + rng.uniform(-1.2, 1.2, size=(n, 4, 3)))
     if kind == "Arc":
         return cd.Arc(c, rand_dirs(rng, n), rng.uniform(0.2, 1.5, n), rand_dirs(rng, n), rng.uniform(0.3, 2 * np.pi, n))
+    if kind == "Annulus":
+        outer = rng.uniform(0.2, 1.5, n)
+        return cd.Annulus(c, rand_dirs(rng, n), outer * rng.uniform(0, 1, n), outer)
     raise AssertionError(kind)
 
 
@@ -42,7 +45,9 @@ PAIRS = [("Line", "Circle"), ("Ray", "Disk"), ("Segment", "Circle"), ("Segment",
          ("Circle", "Circle"), ("Circle", "Disk"), ("Disk", "Disk"), ("Bezier", "Disk"),
          ("Bezier", "Circle"), ("Point", "Disk"), ("Segment", "Segment"), ("Point", "Line"),
          ("Line", "Ray"), ("Arc", "Point"), ("Arc", "Line"), ("Ray", "Arc"), ("Segment", "Arc"),
-         ("Arc", "Circle"), ("Disk", "Arc"), ("Arc", "Arc")]
+         ("Arc", "Circle"), ("Disk", "Arc"), ("Arc", "Arc"), ("Annulus", "Point"), ("Line", "Annulus"),
+         ("Annulus", "Ray"), ("Segment", "Annulus"), ("Annulus", "Circle"), ("Disk", "Annulus"),
+         ("Annulus", "Arc"), ("Annulus", "Annulus")]
 
 
 # ---- the sweep keyword ----------------------------------------------------------------------

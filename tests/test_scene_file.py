@@ -59,7 +59,7 @@ def test_schema_ships_in_the_package_and_is_valid_draft_2020_12():
     jsonschema.Draft202012Validator.check_schema(schema)
     assert schema == sf.schema()
     assert schema["properties"]["format"] == {"const": "circledist-scene"}
-    assert schema["properties"]["version"] == {"enum": list(sf.VERSIONS)} and sf.VERSIONS == (1, 2) == (1, sf.VERSION)
+    assert schema["properties"]["version"] == {"enum": list(sf.VERSIONS)} and sf.VERSIONS == (1, 2, 3) == (1, 2, sf.VERSION)
     assert set(schema["$defs"]["shape"]["properties"]["kind"]["enum"]) == set(sf.KINDS)
     demo = json.loads(resources.files("circledist").joinpath("scenes", "demo.json").read_text())
     assert demo["format"] == "circledist-scene" and demo["version"] == 1
@@ -125,7 +125,7 @@ def test_validator_agrees_with_jsonschema_on_a_corpus():
         accepted += theirs
         rejected += not theirs
         # The loader is the schema plus what a schema cannot say: it accepts nothing the schema refuses.
-        if not theirs and isinstance(doc, dict) and doc.get("format") == "circledist-scene" and doc.get("version") in (1, 2):
+        if not theirs and isinstance(doc, dict) and doc.get("format") == "circledist-scene" and doc.get("version") in sf.VERSIONS:
             with pytest.raises(sf.SceneFileError):
                 sf.scene_from_json(doc, "corpus.json")
     assert accepted > 200 and rejected > 1000, (accepted, rejected)
@@ -544,14 +544,14 @@ def _without(key):
 BAD_NPZ = [
     ("missing format", _without("format"), "array 'format'", "missing (a 0-d string array)"),
     ("wrong format", {**GOOD_NPZ, "format": np.array("other")}, "array 'format'", 'expected "circledist-scene"'),
-    ("newer version", {**GOOD_NPZ, "version": np.array(3)}, "array 'version'",
-     "version 3 is newer than this circledist reads (versions 1 to 2): upgrade circledist"),
-    ("version 0", {**GOOD_NPZ, "version": np.array(0)}, "array 'version'", "expected one of 1, 2, got 0"),
+    ("newer version", {**GOOD_NPZ, "version": np.array(4)}, "array 'version'",
+     "version 4 is newer than this circledist reads (versions 1 to 3): upgrade circledist"),
+    ("version 0", {**GOOD_NPZ, "version": np.array(0)}, "array 'version'", "expected one of 1, 2, 3, got 0"),
     ("float version", {**GOOD_NPZ, "version": np.array(1.0)}, "array 'version'", "expected a 0-d integer array"),
     ("missing shapes", _without("shapes"), "array 'shapes'", "missing (a 1-d string array"),
     ("unlisted kind", {**GOOD_NPZ, "shapes": np.array(["rings", "rail", "x"])}, "array 'x/kind'", "missing"),
     ("unknown kind", {**GOOD_NPZ, "rail/kind": np.array("plane")}, "array 'rail/kind'",
-     'expected one of point, line, ray, segment, circle, disk, bezier, arc, got "plane"'),
+     'expected one of point, line, ray, segment, circle, disk, bezier, arc, annulus, got "plane"'),
     ("missing field", _without("rings/radius"), "array 'rings/radius'", "missing (a circle needs center, normal, radius)"),
     ("string field", {**GOOD_NPZ, "rings/radius": np.array(["1", "2", "3"])}, "array 'rings/radius'",
      "expected an array of real numbers (float or integer), got dtype <U1"),
@@ -618,7 +618,7 @@ def test_bad_files_exit_2_with_one_line_from_the_console(tmp_path):
         assert r.stderr.startswith(f"circledist: error: {path}: ") and r.stderr.count("\n") == 1, (name, r.stderr)
     r = subprocess.run([sys.executable, "-m", "circledist", str(tmp_path / "old.json")], capture_output=True,
                        text=True, timeout=120)
-    assert 'missing field \'format\': a circledist scene starts with "format": "circledist-scene", "version": 2' \
+    assert 'missing field \'format\': a circledist scene starts with "format": "circledist-scene", "version": 3' \
         in r.stderr
 
 

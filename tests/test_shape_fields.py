@@ -44,7 +44,7 @@ def _shape(kind, sweep=0.25, count=None):
 
 
 def test_table_names_every_shape_class_and_its_fields():
-    assert list(TABLE) == ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc"]
+    assert list(TABLE) == ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc", "Annulus"]
     assert SWEEP == ("sweep", "length")
     for kind, fields in TABLE.items():
         shape, given = _shape(kind)

@@ -25,7 +25,7 @@ namespace {
 using V = Vec3<double>;
 using Any = std::variant<Swept<V>, Swept<Line3<double>>, Swept<Ray3<double>>, Swept<Segment3<double>>,
                          Swept<Circle3<double>>, Swept<Disk3<double>>, Swept<BezierCurve3<double>>,
-                         Swept<Arc3<double>>>;
+                         Swept<Arc3<double>>, Swept<Annulus3<double>>>;
 using Pairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
 
 test_random::Random source(20261125);
@@ -49,8 +49,12 @@ Any random_shape(const V& at, int first = 0, int last = 7, double sweep = 0.3) {
       for (int i = 0; i < 4; ++i) b.control.col(i) = at + random_vector(1.0);
       return swept(b, r);
     }
-    default:  // kind 7: an arc (its box is its own, not its circle's)
+    case 7:  // an arc (its box is its own, not its circle's)
       return swept(Arc3<double>{at, random_direction(), uniform(0.1, 1.2), random_direction(), uniform(0.05, 6.3)}, r);
+    default: {  // kind 8: an annulus (its box is its outer disk's)
+      const double outer = uniform(0.1, 1.2);
+      return swept(Annulus3<double>{at, random_direction(), outer * uniform(0, 1), outer}, r);
+    }
   }
 }
 
@@ -223,6 +227,25 @@ int main() {
     CHECK_NEAR(past_left.hi.y(), 2.0, 1e-15);
     CHECK(std::abs(past_left.hi.x()) < 1e-15);  // from (0, 2) over (-2, 0) to 2 (-sin 2, cos 2)
     CHECK_NEAR(past_left.lo.y(), 2 * std::cos(2.0), 1e-15);
+  }
+  // Annuli (kind 8) against every kind that has an annulus query (not Bezier curves), and among
+  // themselves: their boxes and balls (the outer disk's) never cull a pair within d.
+  {
+    const std::vector<Any> rings = random_set(160, 5.0, 8, 9);
+    std::vector<Any> others = random_set(160, 5.0, 0, 6), arcs = random_set(40, 5.0, 7, 8);
+    others.insert(others.end(), arcs.begin(), arcs.end());
+    for (const double d : {0.0, 0.3}) {
+      check_sets(rings, others, false, d);
+      check_sets(others, rings, false, d);
+      check_sets(rings, rings, true, d);
+    }
+    check_nearest(rings, others, 3);
+    check_nearest(others, rings, 2);
+    const Volume<double> tilted = volume(Annulus3<double>{V(1, 2, 3), V(0, 0, 2), 0.5, 1.5});
+    CHECK_NEAR(tilted.lo.x(), -0.5, 1e-15);
+    CHECK_NEAR(tilted.hi.y(), 3.5, 1e-15);
+    CHECK_NEAR(tilted.lo.z(), 3.0, 1e-15);
+    CHECK_NEAR(tilted.hi.z(), 3.0, 1e-15);
   }
   // Only bounded shapes, then only lines and rays.
   {

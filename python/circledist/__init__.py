@@ -1,7 +1,8 @@
-"""circledist: exact distances and closest points between circles, disks, arcs, lines, rays,
-segments, points and Bezier curves in 3D, single or batched (NumPy broadcasting)."""
+"""circledist: exact distances and closest points between circles, disks, arcs, annuli, lines,
+rays, segments, points and Bezier curves in 3D, single or batched (NumPy broadcasting)."""
 
 from ._core import (
+    Annulus,
     Arc,
     Bezier,
     Circle,
@@ -27,6 +28,7 @@ from .scene import Scene
 from .scenefile import SceneFileError, read_scene, write_scene
 
 __all__ = [
+    "Annulus",
     "Arc",
     "Bezier",
     "Circle",

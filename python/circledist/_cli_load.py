@@ -14,7 +14,7 @@ from .scenefile import KINDS, SCHEMA_RESOURCE, SceneFile, SceneFileError, read_s
 # Bad files raise this; the message names the file, the JSON path (or .npz array) and what was expected.
 SceneError = SceneFileError
 
-_FORMAT_TEMPLATE = """scene files, format version 2 (version 1: without arcs); JSON Schema: {schema}
+_FORMAT_TEMPLATE = """scene files, format version 3 (version 2: without annuli; version 1: without arcs either); JSON Schema: {schema}
 
   {{"format": "circledist-scene", "version": 1, "description": "optional text",
    "shapes": [

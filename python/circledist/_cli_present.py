@@ -145,16 +145,23 @@ def _specs(scene: SceneFile) -> dict:
     return out
 
 
-# The kinds drawn as a curve: kind -> the points along it (count of them) from its field values in
-# the table's order; the filled ones are drawn with their face too. Drawing a new curve kind is a
-# row here.
+# The kinds drawn as curves: kind -> the curves (each the points along it, count of them) from its
+# field values in the table's order, an annulus its outer and inner rim; the filled ones are drawn
+# with their face too (between the rims for an annulus). Drawing a new curve kind is a row here.
 _CURVES = {
-    "circle": lambda values, count: _ring(*values, count),
-    "disk": lambda values, count: _ring(*values, count),
-    "bezier": lambda values, count: _bezier(values[0], count),
-    "arc": lambda values, count: _arc(*values, count),
+    "circle": lambda values, count: [_ring(*values, count)],
+    "disk": lambda values, count: [_ring(*values, count)],
+    "bezier": lambda values, count: [_bezier(values[0], count)],
+    "arc": lambda values, count: [_arc(*values, count)],
+    "annulus": lambda values, count: [_ring(*values[:2], values[3], count), _ring(*values[:3], count)],
 }
-_FILLED = {"disk"}
+_FILLED = {"disk", "annulus"}
+
+
+def _face(curves):
+    """The polygon of a filled kind's face: its rim, or for two rims the outer one and the inner one
+    walked back (a ring with a hole: the two joined where both start, at angle 0)."""
+    return curves[0] if len(curves) == 1 else np.concatenate([curves[0], curves[1][::-1]])
 
 
 def _outline(kind: str, values) -> list:
@@ -165,7 +172,7 @@ def _outline(kind: str, values) -> list:
         return list(values)
     if kind == "bezier":
         return list(values[0])  # its control points
-    return list(_CURVES[kind](values, 16))
+    return [p for curve in _CURVES[kind](values, 16) for p in curve]
 
 
 def picture(scene: SceneFile, queries: list[Query]) -> bytes:
@@ -211,11 +218,12 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
             ax.plot(*seg.T, color=c, lw=width, alpha=alpha, solid_capstyle="round", label=label)
             anchor = seg.mean(axis=0)
         else:
-            curve = _CURVES[k](values, 120)
+            curves = _CURVES[k](values, 120)
             if k in _FILLED:
-                ax.add_collection3d(Poly3DCollection([curve], facecolor=c, alpha=0.35, edgecolor="none"))
-            ax.plot(*curve.T, color=c, lw=width, alpha=alpha, label=label)
-            anchor = curve[len(curve) // 2]
+                ax.add_collection3d(Poly3DCollection([_face(curves)], facecolor=c, alpha=0.35, edgecolor="none"))
+            for j, curve in enumerate(curves):
+                ax.plot(*curve.T, color=c, lw=width, alpha=alpha, label=label if j == 0 else None)
+            anchor = curves[0][len(curves[0]) // 2]
         ax.text(*anchor, f" {name}", color=c, fontsize=9)
     for q in queries:
         r = q.answers.get("closest_points")

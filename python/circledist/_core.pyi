@@ -1,18 +1,18 @@
 """
-circledist: exact distances and closest points between circles, disks, arcs, lines, rays, segments, points and Bezier curves in 3D
+circledist: exact distances and closest points between circles, disks, arcs, annuli, lines, rays, segments, points and Bezier curves in 3D
 """
 from __future__ import annotations
 import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Arc', 'Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
+__all__: list[str] = ['Annulus', 'Arc', 'Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
 class Shape:
     """
     Base class of every shape: a single shape or a batch of them.
     
     Not constructed directly: build a `Point`, `Line`, `Ray`, `Segment`, `Circle`, `Disk`,
-    `Bezier` or `Arc`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
+    `Bezier`, `Arc` or `Annulus`. ``isinstance(x, Shape)`` tells shapes from the array-likes a query takes as points.
     
     Attributes
     ----------
@@ -20,7 +20,7 @@ class Shape:
         Leading batch dimensions; ``()`` for a single shape.
     kind : str
         The class name: ``'Point'``, ``'Line'``, ``'Ray'``, ``'Segment'``, ``'Circle'``, ``'Disk'``,
-        ``'Bezier'`` or ``'Arc'``.
+        ``'Bezier'``, ``'Arc'`` or ``'Annulus'``.
     sweep : numpy.ndarray
         The sweep radius.
     
@@ -179,8 +179,8 @@ class Point(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -243,8 +243,8 @@ class Line(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -307,8 +307,8 @@ class Ray(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -368,8 +368,8 @@ class Segment(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -437,8 +437,8 @@ class Circle(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -519,8 +519,8 @@ class Disk(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -589,8 +589,8 @@ class Bezier(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -663,8 +663,8 @@ class Arc(Shape):
     ValueError
         When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
         inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
-        angle is outside (0, 2 pi] or its start is parallel to its normal, or the fields' batch
-        shapes do not broadcast. The message names the class, the field and the first
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
         offending batch index, e.g. ``Circle: radius[1] is negative``.
     
     Notes
@@ -714,6 +714,99 @@ class Arc(Shape):
     def start(self) -> numpy.ndarray:
         """
         The start direction as given (its projection onto the plane starts the arc), shape (..., 3): a read-only array.
+        """
+class Annulus(Shape):
+    """
+    The annulus (a flat ring, a washer): the points of the plane disk of `outer_radius` about
+    `center` at distance >= `inner_radius` from the center.
+    
+    An inner radius of 0 is the disk (the disk's answers), an inner radius equal to the outer
+    one the circle (the circle's answers). `closest_points` reports an annulus point as a disk
+    point: ``param = (s, theta)``, s in [inner_radius, outer_radius] its distance from the
+    center. There is no query between an annulus and a Bezier curve yet.
+    
+    Parameters
+    ----------
+    center : array_like, shape (3,) or (..., 3)
+        Center.
+    normal : array_like, shape (3,) or (..., 3)
+        Normal of the plane, of any finite nonzero length.
+    inner_radius : array_like, shape () or (...)
+        Radius >= 0 of the hole, at most `outer_radius`.
+    outer_radius : array_like, shape () or (...)
+        Radius >= 0 of the outer rim.
+    sweep : array_like, optional
+        Keyword only. Radius >= 0 by which the shape is grown (a point becomes a ball, a segment a
+        capsule, a circle a torus, a curve a tube); broadcasts with the other fields. Default 0.
+    copy : bool, default True
+        Keyword only. True keeps a read-only copy of every field, so later changes to the caller's
+        arrays change nothing. False makes the shape refer to float64 C-contiguous arrays without
+        copying them (a read-only view, validated once, of arrays the caller promises not to
+        change); other dtypes and layouts are still converted, which copies.
+    
+    Attributes
+    ----------
+    center : numpy.ndarray, shape (..., 3)
+    normal : numpy.ndarray, shape (..., 3)
+    inner_radius : numpy.ndarray, shape (...)
+    outer_radius : numpy.ndarray, shape (...)
+    sweep : numpy.ndarray
+        The sweep radius, of the sweep's batch shape.
+    batch_shape : tuple of int
+        Leading batch dimensions; ``()`` for a single shape.
+    
+    Raises
+    ------
+    ValueError
+        When a field is not an array of real numbers, has the wrong trailing shape, contains NaN or
+        inf, when a direction or normal has zero length, a radius or sweep is negative, an arc's
+        angle is outside (0, 2 pi] or its start is parallel to its normal, an annulus's inner
+        radius exceeds its outer radius, or the fields' batch shapes do not broadcast. The message names the class, the field and the first
+        offending batch index, e.g. ``Circle: radius[1] is negative``.
+    
+    Notes
+    -----
+    Every field may carry leading batch dimensions; the shape's ``batch_shape`` is their broadcast,
+    and queries broadcast it against the other argument's like NumPy. Fields are stored as float64
+    (float32 and integer inputs convert exactly; the shape remembers float32 inputs, which
+    ``precision=None`` follows), or as ``numpy.longdouble`` when given as such, so that
+    ``precision='longdouble'`` reads them unrounded.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> washer = cd.Annulus([0, 0, 0], [0, 0, 1], 1.0, 2.0)
+    >>> cd.distance(washer, [0, 0, 0])  # the center lies in the hole
+    1.0
+    >>> cd.distance(washer, [1.5, 0, 3])  # above the ring
+    3.0
+    >>> r = cd.closest_points(washer, [0.5, 0, 0])
+    >>> r.point_a  # on the inner rim
+    array([1., 0., 0.])
+    >>> float(r.param_a[0])  # s, the point's distance from the center
+    1.0
+    """
+    def __init__(self, center: numpy.typing.ArrayLike, normal: numpy.typing.ArrayLike, inner_radius: numpy.typing.ArrayLike, outer_radius: numpy.typing.ArrayLike, *, sweep: numpy.typing.ArrayLike | None = None, copy: bool = True) -> None:
+        ...
+    @property
+    def center(self) -> numpy.ndarray:
+        """
+        The center, shape (..., 3): a read-only array, as stored.
+        """
+    @property
+    def inner_radius(self) -> numpy.ndarray:
+        """
+        The inner radius (of the hole), of its own batch shape (0-d for one): a read-only array.
+        """
+    @property
+    def normal(self) -> numpy.ndarray:
+        """
+        The normal as given (not normalized), shape (..., 3): a read-only array.
+        """
+    @property
+    def outer_radius(self) -> numpy.ndarray:
+        """
+        The outer radius, of its own batch shape (0-d for one): a read-only array.
         """
 class ClosestPoints:
     """

@@ -29,7 +29,7 @@ from dask.highlevelgraph import HighLevelGraph
 from . import _core
 from ._batch import TRAILING_DIMS, index_fields
 
-__all__ = ["Arc", "Bezier", "Circle", "ClosestPoints", "Disk", "Line", "Point", "Ray", "Segment",
+__all__ = ["Annulus", "Arc", "Bezier", "Circle", "ClosestPoints", "Disk", "Line", "Point", "Ray", "Segment",
            "closest_points", "distance", "pairs_within", "within"]
 
 
@@ -138,7 +138,8 @@ Circle = _shape_class("Circle", ("center", "normal", "radius"))
 Disk = _shape_class("Disk", ("center", "normal", "radius"))
 Bezier = _shape_class("Bezier", ("control_points",))
 Arc = _shape_class("Arc", ("center", "normal", "radius", "start", "angle"))
-_CLASSES = {cls.__name__: cls for cls in (Point, Line, Ray, Segment, Circle, Disk, Bezier, Arc)}
+Annulus = _shape_class("Annulus", ("center", "normal", "inner_radius", "outer_radius"))
+_CLASSES = {cls.__name__: cls for cls in (Point, Line, Ray, Segment, Circle, Disk, Bezier, Arc, Annulus)}
 assert set(_CLASSES) == set(_core._shape_fields()), "a kind without a dask class"
 
 
@@ -162,7 +163,8 @@ def _block_shape(kind, fields):
 # precision keyword, else the fields' dtypes) instead of restating that rule here.
 _DUMMY = {"p": [1.0, 2.0, 3.0], "origin": [0.0, 0.0, 0.0], "direction": [1.0, 0.0, 0.0],
           "p0": [0.0, 0.0, 0.0], "p1": [1.0, 0.0, 0.0], "center": [0.0, 0.0, 0.0],
-          "normal": [0.0, 0.0, 1.0], "radius": 1.0, "start": [1.0, 0.0, 0.0], "angle": 1.0, "sweep": 0.0}
+          "normal": [0.0, 0.0, 1.0], "radius": 1.0, "start": [1.0, 0.0, 0.0], "angle": 1.0,
+          "inner_radius": 0.5, "outer_radius": 1.0, "sweep": 0.0}
 
 
 def _dummy(shape):
@@ -317,6 +319,8 @@ def _balls(kind, fields):
         r = np.linalg.norm(fields["p1"] - fields["p0"], axis=-1) / 2
     elif "center" in fields and "radius" in fields:  # a circle, disk or arc: in its circle's ball
         c, r = fields["center"], fields["radius"]
+    elif "outer_radius" in fields:  # an annulus: in its outer disk's ball
+        c, r = fields["center"], fields["outer_radius"]
     else:
         # A Bezier curve lies in its control points' convex hull, so in their ball about the mean.
         c = fields["control_points"].mean(axis=1)

@@ -7,11 +7,11 @@ the package (``circledist/scene.schema.json``, see ``schema_text()``); the ``.np
 the same content as arrays, for scenes of millions of shapes. ``python -m circledist --help``
 summarizes both; README.md shows their use.
 
-Format version 2 (version 1 without arcs). The version goes up with any change to what a valid
+Format version 3 (version 2 without annuli, version 1 without arcs either). The version goes up with any change to what a valid
 file may hold or to what it means (a new kind, field, effect or array, a changed default); a
 reader refuses files of a newer version with a message saying so instead of misreading them, and
 keeps reading older ones. A file of an older version may hold only what that version holds (an
-arc in a version 1 file is refused); `write_scene` writes the oldest version that holds the scene.
+arc in a version 1 file, an annulus in a version 2 one, is refused); `write_scene` writes the oldest version that holds the scene.
 Files must say ``"format": "circledist-scene"`` and ``"version"``: without them a JSON file is
 refused (the message says which two fields to add), so that a file is never read under a version
 it was not written for.
@@ -46,12 +46,13 @@ __all__ = ["FORMAT", "VERSION", "SceneFileError", "SceneFile", "ShapeEntry", "re
            "schema", "schema_text", "SCHEMA_RESOURCE"]
 
 FORMAT = "circledist-scene"
-VERSION = 2
-# The versions this circledist reads: every one up to VERSION. Version 2 added the kind "arc";
-# a file says the first version that holds what it holds (write_scene writes that one, so that a
-# scene without arcs stays readable by a circledist that reads version 1).
-VERSIONS = (1, 2)
-KIND_SINCE = {"arc": 2}
+VERSION = 3
+# The versions this circledist reads: every one up to VERSION. Version 2 added the kind "arc",
+# version 3 the kind "annulus"; a file says the first version that holds what it holds
+# (write_scene writes that one, so that a scene without arcs stays readable by a circledist that
+# reads version 1, and one without annuli by one that reads version 2).
+VERSIONS = (1, 2, 3)
+KIND_SINCE = {"arc": 2, "annulus": 3}
 SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
 
 # kind -> (class name, {field: role}), read from the module's one table of fields (src/shapes.hpp);
@@ -762,7 +763,7 @@ def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
     """Reads and validates a scene file, JSON or ``.npz``.
 
     The format (``circledist --help``, and the JSON Schema ``scene.schema.json`` in the package):
-    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need), the shapes (single
+    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need, or 3, which annuli need), the shapes (single
     or batches) and the queries.
 
     Parameters

@@ -68,6 +68,8 @@ template <class Real> Ball<Real> bounding_ball(const Arc3<Real>& a) {
   // Half the chord, and an ulp of the radius for the rounding of the ends.
   return {(p0 + p1) / 2, (p1 - p0).norm() / 2 + 4 * std::numeric_limits<Real>::epsilon() * a.radius};
 }
+// An annulus (docs/annulus.md): it lies in its outer disk, so in that disk's ball.
+template <class Real> Ball<Real> bounding_ball(const Annulus3<Real>& a) { return {a.center, a.outer_radius}; }
 template <class S> Ball<scalar_t<S>> bounding_ball(const Swept<S>& s) {
   Ball<scalar_t<S>> b = bounding_ball(s.shape);
   b.radius += s.sweep;
@@ -152,6 +154,11 @@ template <class Real> Range<Real> arc_range(const Arc3<Real>& arc, const Vec3<Re
 }
 template <class Real> Range<Real> height_range(const Arc3<Real>& arc, const Plane<Real>& plane) {
   return arc_range(arc, plane.n, plane.height(arc.center));
+}
+
+// An annulus: its outer disk's range, which holds the annulus's (a lower bound from it holds).
+template <class Real> Range<Real> height_range(const Annulus3<Real>& a, const Plane<Real>& plane) {
+  return height_range(detail::annulus_disk(a), plane);
 }
 
 // A round is a shape with a target policy (detail/round_target.hpp: a circle or a disk).
@@ -262,6 +269,14 @@ template <class Real, class R, class Visit> void sample_points(const Arc3<Real>&
     if (span.holds(toward)) visit(span.world(a.center, a.radius, toward));
   }
 }
+// An annulus: its outer disk's points that lie in the ring (not in the hole), and its inner rim's
+// (the annulus's point where the disk's fell in the hole, docs/annulus.md "Convex shapes").
+template <class Real, class R, class Visit> void sample_points(const Annulus3<Real>& a, const R& round, const Visit& visit) {
+  sample_points(detail::annulus_disk(a), round, [&](const Vec3<Real>& p) {
+    if ((p - a.center).norm() >= a.inner_radius) visit(p);
+  });
+  sample_points(detail::inner_rim(a), round, visit);
+}
 template <class Real, class R, class Visit>
 void sample_points(const BezierCurve3<Real>& b, const R&, const Visit& visit) {
   if (b.control.cols() == 0) return;
@@ -341,6 +356,9 @@ template <class R, class = target_t<R>> R moved_by(const R& round, const Vec3<sc
 }
 template <class Real> Arc3<Real> moved_by(const Arc3<Real>& a, const Vec3<Real>& o) {
   return {a.center - o, a.normal, a.radius, a.start, a.angle};
+}
+template <class Real> Annulus3<Real> moved_by(const Annulus3<Real>& a, const Vec3<Real>& o) {
+  return {a.center - o, a.normal, a.inner_radius, a.outer_radius};
 }
 template <class Real> BezierCurve3<Real> moved_by(const BezierCurve3<Real>& b, const Vec3<Real>& o) {
   BezierCurve3<Real> out = b;

@@ -202,6 +202,10 @@ template <class Real> Volume<Real> volume(const Arc3<Real>& a, Real sweep = 0) {
   }
   return detail::bounded_volume<Real>(lo, hi, bounding_ball(a), sweep);
 }
+// An annulus: its outer disk's volume (the annulus lies in the disk; docs/annulus.md).
+template <class Real> Volume<Real> volume(const Annulus3<Real>& a, Real sweep = 0) {
+  return volume(detail::annulus_disk(a), sweep);
+}
 template <class S> Volume<scalar_t<S>> volume(const Swept<S>& s) { return volume(s.shape, s.sweep); }
 
 // The gap between two boxes (0 when they overlap).

@@ -1,7 +1,7 @@
 // Swept shapes: a shape grown by a sweep radius r >= 0, the set of points within r of it (its
 // Minkowski sum with a ball). A point becomes a ball, a segment a capsule, a ray a half-infinite
 // capsule, a line an infinite cylinder, a circle a solid torus, a disk a rounded disk, a Bezier
-// curve or an arc a tube.
+// curve or an arc a tube, an annulus a rounded washer.
 //
 // With d the distance between the cores, the distance between swept shapes is
 //   max(0, d - r_a - r_b),
@@ -38,6 +38,7 @@ template <class Real> Real scalar_tag(const Circle3<Real>&);
 template <class Real> Real scalar_tag(const Disk3<Real>&);
 template <class Real> Real scalar_tag(const BezierCurve3<Real>&);
 template <class Real> Real scalar_tag(const Arc3<Real>&);
+template <class Real> Real scalar_tag(const Annulus3<Real>&);
 template <class S> using scalar_t = decltype(scalar_tag(std::declval<const S&>()));
 
 // A primitive S grown by `sweep` (>= 0).
