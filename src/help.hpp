@@ -306,7 +306,7 @@ inline const std::string& annulus() {
       "An inner radius of 0 is the disk (the disk's answers), an inner radius equal to the outer\n"
       "one the circle (the circle's answers). `closest_points` reports an annulus point as a disk\n"
       "point: ``param = (s, theta)``, s in [inner_radius, outer_radius] its distance from the\n"
-      "center. There is no query between an annulus and a Bezier curve yet.",
+      "center.",
       R"(
 center : array_like, shape (3,) or (..., 3)
     Center.

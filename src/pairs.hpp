@@ -204,7 +204,8 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<Circle3<Real>, Arc3<Real>>();
   v.template add<Disk3<Real>, Arc3<Real>>();
   v.template add<Arc3<Real>, Arc3<Real>>();
-  // annulus.hpp: an annulus against every kind but Bezier curves (no Bezier-annulus query yet).
+  // annulus.hpp: an annulus against every kind.
+  v.template add<BezierCurve3<Real>, Annulus3<Real>>();
   v.template add<Line3<Real>, Annulus3<Real>>();
   v.template add<Ray3<Real>, Annulus3<Real>>();
   v.template add<Segment3<Real>, Annulus3<Real>>();

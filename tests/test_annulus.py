@@ -16,7 +16,8 @@ each rim's minimum against the other region (the closed forms of point-disk and 
 Accuracy rule (the project's, never loosened): |d - d_ref| <= 1e-12 x max(d_ref, largest radius
 in the query) in double, 1e-15 x in long double; float32 answers within 4 float32 ulps of
 max(d_ref, largest radius) of the exact answer for the float32 inputs (README), as for the arc.
-Annulus-Bezier has no query: it raises the library's "no query between" error.
+Against a Bezier curve the reference is the minimum over the curve's t of the same closed form
+(test_annulus_bezier_against_the_reference).
 """
 
 from __future__ import annotations
@@ -378,16 +379,84 @@ def test_precision_follows_the_dtypes():
     assert isinstance(cd.distance(cd.Annulus([0, 0, 0], [0, 0, 1], 0.5, 1.0), [2, 0, 0]), float)
 
 
-def test_annulus_bezier_has_no_query():
-    """The message is the shared template's, as for the arc and a Bezier curve."""
-    a, b = make(WASHER), cd.Bezier([[0, 0, 0], [1, 1, 1], [2, 0, 0]])
-    for x, y, first, second in ((a, b, "Annulus", "Bezier"), (b, a, "Bezier", "Annulus")):
-        with pytest.raises(TypeError, match=f"no query between a {first} and a {second}"):
-            cd.distance(x, y)
-        with pytest.raises(TypeError, match="no query"):
-            cd.closest_points(x, y)
-        with pytest.raises(TypeError, match="no query"):
-            cd.within(x, y, 1.0)
+def _exact(values):
+    """The mp values of float64 or long double numbers, exactly (R.vec goes through float)."""
+    out = []
+    for x in values:
+        num, den = np.longdouble(x).as_integer_ratio()
+        out.append(mpf(num) / den)
+    return tuple(out)
+
+
+def _bezier_reference(a, ctrl):
+    """The distance between the annulus a and the Bezier curve `ctrl` at 50 digits: the least of
+    the point-annulus closed form over the curve's t (its speed bounded by n max |P_i+1 - P_i|)."""
+    pts = [R.vec(p) for p in ctrl]
+    speed = (len(pts) - 1) * max([R.norm(R.sub(q, p)) for p, q in zip(pts, pts[1:])] + [mpf(0)])
+    curve = (lambda t: R.bezier_point(ctrl, t), mpf(0), mpf(1), False, speed)
+    return float(_minimum(curve, AnnulusMP(a).point_distance, mpf(min(radii(a))) / 8))
+
+
+def _bezier_cases():
+    """(name, annulus, control points): random curves of degree 1..5 about random annuli, and
+    curves through the hole along the axis, lying in the plane across the ring and the hole, in
+    the hole, touching the face, far larger than the annulus, and translated by 1e6."""
+    rng = np.random.default_rng(20261126)
+    out = []
+    for i in range(12):
+        a = random_shape("annulus", rng)
+        k = 2 + i % 5
+        at = np.asarray(a[1])
+        out.append((f"random-{i}", a, tuple(_t(at + rng.uniform(-2, 2, 3)) for _ in range(k))))
+    out += [
+        ("down-the-axis", WASHER, ((0.0, 0.0, 3.0), (0.0, 0.0, 1.0), (0.0, 0.0, -0.5))),
+        ("in-the-plane-across", WASHER, ((-3.0, 0.1, 0.0), (0.0, 0.5, 0.0), (3.0, 0.1, 0.0))),
+        ("in-the-hole", WASHER, ((-0.5, 0.0, 0.0), (0.0, 0.6, 0.0), (0.5, 0.0, 0.0))),
+        ("arch-over-the-ring", WASHER, ((1.5, -1.0, 1.0), (1.5, 0.0, -0.75), (1.5, 1.0, 1.0))),
+        ("through-the-hole-slanted", WASHER, ((0.3, 0.0, 2.0), (0.0, 0.2, 0.0), (-0.3, 0.1, -2.0), (0.0, 0.0, -3.0))),
+        ("large-passing-the-rim", WASHER, ((-500.0, 2.5, 0.3), (0.0, 2.0, 0.3), (500.0, 2.5, 0.3))),
+    ]
+    by = (1e6, -5e5, 2.5e5)
+    for name, a, ctrl in out[12:15]:
+        out.append((name + "-translated-1e6", translated(a, by), tuple(_t(np.add(p, by)) for p in ctrl)))
+    return out
+
+
+BEZIER_CASES = _bezier_cases()
+
+
+@pytest.mark.parametrize("case", BEZIER_CASES, ids=lambda c: c[0])
+def test_annulus_bezier_against_the_reference(case):
+    """Every solver in double and long double, both orders: the distance against the 50-digit
+    reference, closest_points().distance == distance() to the bit, the curve's point on the curve
+    at its param and the annulus's point in the annulus, apart by the distance."""
+    name, a, ctrl = case
+    ref = _bezier_reference(a, ctrl)
+    curve = cd.Bezier(np.asarray(ctrl, float))
+    ring = make(a)
+    scale = max(ref, a[4])
+    extent = float(np.abs(np.asarray(ctrl)).max())
+    for solver in ("bracketing", "companion", "polished", "eigen"):
+        for precision, rel in (("float64", REL), ("longdouble", REL_LD)):
+            ulp = float(np.finfo(np.longdouble if precision == "longdouble" else np.float64).eps)
+            d = cd.distance(ring, curve, solver=solver, precision=precision)
+            assert d == cd.distance(curve, ring, solver=solver, precision=precision)
+            assert abs(float(d) - ref) <= rel * scale + 4 * ulp * scale, (name, solver, precision, float(d), ref)
+            r = cd.closest_points(curve, ring, solver=solver, precision=precision)
+            assert r.distance == d
+            tol = rel * scale + 16 * ulp * max(extent, scale)
+            pa, pb = np.asarray(r.point_a, np.longdouble), np.asarray(r.point_b, np.longdouble)
+            assert abs(float(np.linalg.norm(pa - pb)) - float(d)) <= tol
+            assert float(R.dist(_exact(pa), R.bezier_point(ctrl, _exact([r.param_a[0]])[0]))) <= tol
+            assert float(AnnulusMP(a).point_distance(_exact(pb))) <= tol
+
+
+def test_annulus_bezier_batched_equals_scalar():
+    rings = batch_of([a for _, a, _ in BEZIER_CASES[:5]])
+    curves = cd.Bezier(np.asarray([_t(p) for _, _, c in BEZIER_CASES[:5] for p in c[:2]], float).reshape(5, 2, 3))
+    d = cd.distance(rings, curves)
+    for i, (_, a, ctrl) in enumerate(BEZIER_CASES[:5]):
+        assert d[i] == cd.distance(make(a), cd.Bezier(np.asarray(ctrl[:2], float)))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -518,14 +587,15 @@ def test_broadphase_boxes_hold_the_annuli():
     assert_broadphase_finds_points_on(rings, on, rng)
 
 
-def test_scene_with_annuli_and_bezier_curves_raises_for_that_pair():
-    s = cd.Scene({"washer": make(WASHER), "cable": cd.Bezier([[5, 0, 0], [6, 1, 1]]),
-                  "ring": cd.Circle([0, 0, 0], [0, 0, 1], 0.5)})
+def test_scene_with_annuli_and_bezier_curves_answers_that_pair():
+    shapes = {"washer": make(WASHER), "cable": cd.Bezier([[5, 0, 0], [6, 1, 1]]),
+              "ring": cd.Circle([0, 0, 0], [0, 0, 1], 0.5)}
+    s = cd.Scene(shapes)
     assert s.nearest("ring", k=1) == [("washer", 0.5)]
-    with pytest.raises(TypeError, match="no query between a Annulus and a Bezier"):
-        s.nearest("washer")
-    with pytest.raises(TypeError, match="no query between a Annulus and a Bezier"):
-        s.pairs_within(1.0)
+    assert s.nearest("washer", k=2) == sorted(((n, cd.distance(shapes["washer"], x)) for n, x in shapes.items()
+                                               if n != "washer"), key=lambda e: e[1])
+    assert abs(cd.distance(shapes["washer"], shapes["cable"]) - 3.0) <= 1e-12 * 3  # the cable's end to the rim
+    assert ("cable", "washer") in {tuple(sorted(p[:2])) for p in s.pairs_within(3.0)}
 
 
 # ------------------------------------------------------------------------------------------------

@@ -33,7 +33,7 @@ from circledist_cases.kind_checks import (assert_batched_equals_single, assert_b
                                           assert_effects_agree_with_distance, assert_exact_and_unique, assert_float32,
                                           assert_long_double, assert_older_version_refused,
                                           assert_scene_equals_brute_force, assert_scene_file_round_trip, batch_of,
-                                          both_orders, file_version, make, mixed_shapes, radii, random_shape,
+                                          both_orders, file_version, make, mixed_shapes, radii, random_shape, rounded,
                                           translated)
 from circledist_cases.kind_checks import check as _check
 

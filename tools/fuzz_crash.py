@@ -29,7 +29,8 @@ import time
 
 import numpy as np
 
-KINDS = ("point", "line", "ray", "segment", "circle", "disk", "bezier", "arc")
+KINDS = ("point", "line", "ray", "segment", "circle", "disk", "bezier", "arc", "annulus")
+ROUNDS = ("circle", "disk", "arc", "annulus")  # the kinds with a center: concentric pairs
 ENTRY_POINTS = ("distance", "closest_points", "within", "intersects", "distance_if_within")
 PRECISIONS = (None, "float32", "float64", "longdouble")
 SOLVERS = (None, "bracketing", "companion", "polished", "eigen")
@@ -106,6 +107,12 @@ def _shape(rng, kind, scale, center):
     if kind == "segment":
         p0 = near()
         return {"p0": p0, "p1": list(p0) if rng.random() < 0.1 else near()}
+    if kind == "annulus":  # inner radius 0 (the disk), equal to the outer one (the circle), tiny, or now and then past it
+        outer = 0.0 if rng.random() < 0.05 else abs(scale * rng.uniform(0.1, 3))
+        r = rng.random()
+        inner = 0.0 if r < 0.1 else outer if r < 0.2 else outer * 10.0 ** rng.uniform(-300, -1) if r < 0.3 else (
+            outer * rng.uniform(1, 2) if r < 0.35 else outer * rng.uniform(0, 1))
+        return {"center": near(), "normal": _direction(rng), "inner_radius": inner, "outer_radius": outer}
     if kind in ("circle", "disk", "arc"):
         radius = 0.0 if rng.random() < 0.05 else abs(scale * rng.uniform(0.1, 3))
         round_fields = {"center": near(), "normal": _direction(rng), "radius": radius}
@@ -128,7 +135,7 @@ def generate(seed: int, count: int):
         a, b = _shape(rng, ka, scale, center), _shape(rng, kb, scale, center)
         if rng.random() < 0.2:
             a["sweep"] = abs(_magnitude(rng) * rng.random())
-        if ka in ("circle", "disk", "arc") and kb in ("circle", "disk", "arc") and rng.random() < 0.3:
+        if ka in ROUNDS and kb in ROUNDS and rng.random() < 0.3:
             b["center"] = list(a["center"])  # concentric
         yield {
             "index": index,

@@ -723,7 +723,7 @@ class Annulus(Shape):
     An inner radius of 0 is the disk (the disk's answers), an inner radius equal to the outer
     one the circle (the circle's answers). `closest_points` reports an annulus point as a disk
     point: ``param = (s, theta)``, s in [inner_radius, outer_radius] its distance from the
-    center. There is no query between an annulus and a Bezier curve yet.
+    center.
     
     Parameters
     ----------
