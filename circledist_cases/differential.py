@@ -118,11 +118,11 @@ ROUND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
 LL = [(lk, rk) for i, lk in enumerate(LINEAR) for rk in LINEAR[i:]]
 BL = [("bezier", lk) for lk in LINEAR]
 # an arc against every kind with a query, the arc second (as a circle or disk comes after the
-# pieces, and arc after disk).  Once Arc-Bezier has a query, "bezier" joins ARC_OTHERS (after
-# "segment"); the screen, the families (_arc_variant, _feature), the reference
+# pieces, and arc after disk), a Bezier curve too (after "segment", since Arc-Bezier has its query,
+# bezier_arc.hpp): the screen, the families (_arc_variant, _feature), the reference
 # (reference_arc.bezier_arc) and the checker take it as they are.  (Adding a pair re-maps the
 # arc families' case ids: case i is pair i mod the number of pairs.)
-ARC_OTHERS = ("point", "line", "ray", "segment", "circle", "disk", "arc")
+ARC_OTHERS = ("point", "line", "ray", "segment", "bezier", "circle", "disk", "arc")
 ARC_PAIRS = [(k, "arc") for k in ARC_OTHERS]
 ARC_RR = [p for p in ARC_PAIRS if p[0] in ("circle", "disk", "arc")]   # a circle, disk or arc against an arc
 KIND_PAIRS = ROUND_PAIRS + LL + BL + ARC_PAIRS
