@@ -684,12 +684,22 @@ template <class Real> Real root_bound(const Real* c, int n) {
   return exponent == std::numeric_limits<int>::min() ? Real(1) : std::ldexp(Real(2), exponent);
 }
 
+// The roots of a trimmed polynomial in [lo, hi] to a relative 2 eps, and its critical points
+// there where it vanishes within rounding (isolate_roots), into `found` (kIsolateCapacity
+// values); false where the degree is beyond isolate_roots' buffers or it found more values than
+// they hold (rounding noise). The Bracketing policy's search, and the eigenvalue policies'
+// fallback (roots_without_eigenvalues).
+template <class Real> bool isolated_roots(const Real* c, int degree, Real lo, Real hi, Real* found, int& count) {
+  return degree <= kMaxCurveDegree &&
+         isolate_roots(c, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count, kIsolateCapacity);
+}
+
 template <class Real, int Capacity> void roots_without_eigenvalues(const Real* c, int degree, Candidates<Real, Capacity>& out) {
-  if (degree < 1 || degree > kMaxCurveDegree) return;
+  if (degree < 1) return;
   const Real bound = root_bound(c, degree);
   Real found[kIsolateCapacity];
   int count = 0;
-  if (isolate_roots(c, degree, -bound, bound, 2 * std::numeric_limits<Real>::epsilon(), found, count, kIsolateCapacity))
+  if (isolated_roots(c, degree, -bound, bound, found, count))
     for (int i = 0; i < count; ++i) out.push(found[i]);
 }
 
@@ -717,10 +727,7 @@ struct Bracketing {
     // isolate_roots' buffers hold degrees up to kMaxCurveDegree (the septic curve's).
     Real found[detail::kIsolateCapacity];
     int count = 0;
-    if (degree <= kMaxCurveDegree &&
-        detail::isolate_roots(coefficients, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count,
-                              detail::kIsolateCapacity) &&
-        count <= Capacity - out.count) {
+    if (detail::isolated_roots(coefficients, degree, lo, hi, found, count) && count <= Capacity - out.count) {
       for (int i = 0; i < count; ++i) out.push(found[i]);
       return;
     }
