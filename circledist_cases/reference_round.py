@@ -70,6 +70,9 @@ def to_mp(x) -> object:
         return mpf(x)
     if isinstance(x, int):
         return mpf(x)
+    if hasattr(x, "as_integer_ratio") and math.isfinite(x):  # floats, NumPy's long double too: exactly
+        p, q = x.as_integer_ratio()
+        return mpf(p) / q
     return mpf(float(x))
 
 

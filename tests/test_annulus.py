@@ -379,15 +379,6 @@ def test_precision_follows_the_dtypes():
     assert isinstance(cd.distance(cd.Annulus([0, 0, 0], [0, 0, 1], 0.5, 1.0), [2, 0, 0]), float)
 
 
-def _exact(values):
-    """The mp values of float64 or long double numbers, exactly (R.vec goes through float)."""
-    out = []
-    for x in values:
-        num, den = np.longdouble(x).as_integer_ratio()
-        out.append(mpf(num) / den)
-    return tuple(out)
-
-
 def _bezier_reference(a, ctrl):
     """The distance between the annulus a and the Bezier curve `ctrl` at 50 digits: the least of
     the point-annulus closed form over the curve's t (its speed bounded by n max |P_i+1 - P_i|)."""
@@ -447,8 +438,8 @@ def test_annulus_bezier_against_the_reference(case):
             tol = rel * scale + 16 * ulp * max(extent, scale)
             pa, pb = np.asarray(r.point_a, np.longdouble), np.asarray(r.point_b, np.longdouble)
             assert abs(float(np.linalg.norm(pa - pb)) - float(d)) <= tol
-            assert float(R.dist(_exact(pa), R.bezier_point(ctrl, _exact([r.param_a[0]])[0]))) <= tol
-            assert float(AnnulusMP(a).point_distance(_exact(pb))) <= tol
+            assert float(R.dist(R.vec(pa), R.bezier_point(ctrl, R.to_mp(r.param_a[0])))) <= tol
+            assert float(AnnulusMP(a).point_distance(R.vec(pb))) <= tol
 
 
 def test_annulus_bezier_batched_equals_scalar():

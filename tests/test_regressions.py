@@ -21,6 +21,7 @@ from mpmath import mp, mpf
 from circledist_cases import reference as L
 from circledist_cases import reference_arc as A
 from circledist_cases import reference_round as R
+from circledist_cases.kind_checks import make as make_shape
 from circledist_cases.scenes import FAR_CURVE_CONTROL, FAR_CURVE_DISTANCE, FAR_CURVE_RING
 
 cd = pytest.importorskip("circledist")
@@ -667,11 +668,6 @@ ARC_THROUGH_AXIS = [
 ]
 
 
-def _arc_case_shape(shape):
-    kind, *fields = shape
-    return {"circle": cd.Circle, "disk": cd.Disk, "arc": cd.Arc}[kind](*[np.asarray(f, float) for f in fields])
-
-
 @pytest.fixture(scope="module")
 def arc_through_axis_references():
     return {case[0]: A.reference_mp(case[2], case[1]) for case in ARC_THROUGH_AXIS}
@@ -692,10 +688,9 @@ def test_circle_through_ring_axis_arc(case, solver, precision, arc_through_axis_
     name, other, arc, _, _ = case
     ref = arc_through_axis_references[name]
     bar = BARS[precision] * max(float(ref), other[3], arc[3])
-    for x, y in ((_arc_case_shape(other), _arc_case_shape(arc)), (_arc_case_shape(arc), _arc_case_shape(other))):
+    for x, y in ((make_shape(other), make_shape(arc)), (make_shape(arc), make_shape(other))):
         d = cd.distance(x, y, solver=solver, precision=precision)
-        num, den = np.longdouble(d).as_integer_ratio()
-        assert abs(mpf(num) / den - ref) <= bar, (name, solver, precision)  # the answer exactly, against 50 digits
+        assert abs(R.to_mp(d) - ref) <= bar, (name, solver, precision)  # the answer exactly, against 50 digits
         r = cd.closest_points(x, y, solver=solver, precision=precision)
         assert r.distance == d
         separation = np.linalg.norm(np.asarray(r.point_a, np.longdouble) - np.asarray(r.point_b, np.longdouble))
