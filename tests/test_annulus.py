@@ -22,7 +22,6 @@ Against a Bezier curve the reference is the minimum over the curve's t of the sa
 
 from __future__ import annotations
 
-import functools
 import math
 import pickle
 
@@ -31,7 +30,9 @@ import pytest
 
 import circledist as cd
 from circledist_cases import reference_round as R
-from circledist_cases.reference_arc import ArcMP, arc
+from circledist_cases.reference_annulus import (AnnulusMP, annulus, bezier_reference, curves_of, minimum_along,
+                                                point_distance_function, reference, rim_curve)
+from circledist_cases.reference_arc import arc
 from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
                                           assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
                                           assert_exact_and_unique, assert_float32, assert_long_double,
@@ -46,132 +47,6 @@ OTHER_KINDS = ("point", "line", "ray", "segment", "circle", "disk", "arc", "annu
 TWO_PI = 2 * math.pi
 REL = 1e-12
 REL_LD = 1e-15
-INTERVALS = 400  # samples of a parameter per minimization (then golden section on every local minimum)
-
-
-# ------------------------------------------------------------------------------------------------
-# shapes as plain tuples: (kind, *fields), fields as tuples of floats
-# ------------------------------------------------------------------------------------------------
-def annulus(center, normal, inner, outer):
-    return ("annulus", _t(center), _t(normal), float(inner), float(outer))
-
-
-# ------------------------------------------------------------------------------------------------
-# the reference (50 digits)
-# ------------------------------------------------------------------------------------------------
-class AnnulusMP:
-    """An annulus at 50 digits: center, unit normal, radii, and its rims (own frame)."""
-
-    def __init__(self, shape):
-        _, c, n, inner, outer = shape
-        self.c, self.inner, self.outer = R.vec(c), R.to_mp(inner), R.to_mp(outer)
-        self.u, self.v, self.n = R.frame(n)
-
-    def point_distance(self, p):
-        w = R.sub(p, self.c)
-        z = R.dot(w, self.n)
-        rho = R.norm(R.sub(w, R.scale(z, self.n)))
-        if rho < self.inner:
-            return ctx.sqrt(z * z + (self.inner - rho) ** 2)
-        if rho > self.outer:
-            return ctx.sqrt(z * z + (rho - self.outer) ** 2)
-        return abs(z)
-
-    def rims(self):
-        """Its rims as curves (point at angle t, speed), the outer first."""
-        return [rim_curve(self.c, self.u, self.v, r) for r in (self.outer, self.inner)]
-
-
-def rim_curve(c, u, v, r):
-    """The circle c + r (cos t u + sin t v): (point at t, |d point / dt|)."""
-    return (lambda t: R.add(c, R.scale(r, R.add(R.scale(ctx.cos(t), u), R.scale(ctx.sin(t), v))))), r
-
-
-def point_distance_function(shape):
-    """x (an mp 3-vector) -> the distance from x to `shape` (a point, disk or annulus), in closed form."""
-    kind = shape[0]
-    if kind == "point":
-        p = R.vec(shape[1])
-        return lambda x: R.dist(x, p)
-    if kind == "disk":
-        rnd = R.make_round(shape[1], shape[2], shape[3])
-        return lambda x: R.point_disk(x, rnd)[0]
-    assert kind == "annulus"
-    return AnnulusMP(shape).point_distance
-
-
-def curves_of(shape, toward):
-    """[(point at t, lo, hi, periodic, speed)]: the curves whose minimum against the annulus `toward`
-    is the distance (a curve's own points; a disk's or an annulus's rims, see the module docstring)."""
-    kind = shape[0]
-    if kind in ("circle", "disk"):
-        u, v, _ = R.frame(shape[2])
-        at, speed = rim_curve(R.vec(shape[1]), u, v, R.to_mp(shape[3]))
-        return [(at, mpf(0), 2 * ctx.pi, True, speed)]
-    if kind == "arc":  # the arc's own definition (reference_arc.ArcMP)
-        arc_mp = ArcMP(shape)
-        if shape[5] < TWO_PI:
-            return [(arc_mp.at, mpf(0), arc_mp.angle, False, arc_mp.r)]
-        return [(arc_mp.at, mpf(0), 2 * ctx.pi, True, arc_mp.r)]
-    if kind == "annulus":
-        return [(at, mpf(0), 2 * ctx.pi, True, speed) for at, speed in AnnulusMP(shape).rims()]
-    # a line, ray or segment: the stretch where a closest point can lie. A point of the line at
-    # |P(t) - c| > |P(t*) - c| + 2 outer (t* nearest the center c) is farther from the annulus than P(t*).
-    o, d = R.vec(shape[1]), R.vec(shape[2])
-    if kind == "segment":
-        d = R.sub(d, o)
-    ring = AnnulusMP(toward)
-    dd = R.dot(d, d)
-    t_star = R.dot(R.sub(ring.c, o), d) / dd
-    reach = (R.dist(R.add(o, R.scale(t_star, d)), ring.c) + 2 * ring.outer + 1) / ctx.sqrt(dd)
-    lo, hi = t_star - reach, t_star + reach
-    if kind in ("ray", "segment"):
-        lo = max(lo, mpf(0))
-    if kind == "segment":
-        hi = min(hi, mpf(1))
-    if lo > hi:  # the stretch lies wholly past the piece's end: only that end can be closest
-        lo = hi = mpf(0) if kind == "ray" or t_star < 0 else mpf(1)
-    return [(lambda t: R.add(o, R.scale(t, d)), lo, hi, False, ctx.sqrt(dd))]
-
-
-def _feature(a, b):
-    """The smallest length either shape's features must be resolved to (a zoom's target)."""
-    lengths = [x for x in radii(a) + radii(b) if x > 0]
-    for s in (a, b):
-        if s[0] == "annulus" and s[4] > s[3]:
-            lengths += [s[4] - s[3]] + ([s[3]] if s[3] > 0 else [])
-    return mpf(min(lengths)) / 8
-
-
-def _minimum(curve, other, feature):
-    """The least of other(point) along the curve. Two local minima can share a sample interval only
-    where a step moves the point by more than the structure there: the target's features, or the
-    distance itself (the scale on which the distance varies). Where a step is longer than both,
-    the samples are zoomed (minimize_1d's lipschitz bound: the curve's speed) down to them."""
-    at, lo, hi, periodic, speed = curve
-    if lo == hi:
-        return other(at(lo))
-    f = lambda t: other(at(t))  # noqa: E731
-    plain = R.minimize_1d(f, lo, hi, INTERVALS, periodic)[0].value
-    resolution = max(feature, plain / 8)
-    if speed * (hi - lo) / INTERVALS <= resolution:
-        return plain
-    return R.minimize_1d(f, lo, hi, INTERVALS, periodic, lipschitz=lambda x, y: speed,
-                         resolution=lambda x, y, step: resolution)[0].value
-
-
-@functools.lru_cache(maxsize=None)
-def reference(a, b):
-    """The distance between the annulus a and the shape b, at 50 digits (module docstring)."""
-    ring = AnnulusMP(a)
-    feature = _feature(a, b)
-    if b[0] == "point":
-        return float(ring.point_distance(R.vec(b[1])))
-    values = [_minimum(c, ring.point_distance, feature) for c in curves_of(b, a)]
-    if b[0] in ("disk", "annulus"):  # a's rims against the region b
-        values += [_minimum(c, point_distance_function(b), feature) for c in curves_of(a, a)]
-    return float(min(values))
-
 
 def test_point_annulus_closed_form_matches_sampling():
     """The reference's own point-annulus closed form against a dense polar grid of the annulus."""
@@ -263,7 +138,7 @@ def on_shape_distance(shape, p, toward):
         return float(point_distance_function(shape)(x))
     if shape[0] in ("line", "ray", "segment"):
         return float(R.point_linear_closest(x, shape[0], R.vec(shape[1]), R.vec(shape[2]))[0])
-    return float(min(_minimum(c, lambda y: R.dist(x, y), mpf(1)) for c in curves_of(shape, toward)))
+    return float(min(minimum_along(c, lambda y: R.dist(x, y), mpf(1)) for c in curves_of(shape, toward)))
 
 
 def check_closest(a, b, r, ref):
@@ -379,15 +254,6 @@ def test_precision_follows_the_dtypes():
     assert isinstance(cd.distance(cd.Annulus([0, 0, 0], [0, 0, 1], 0.5, 1.0), [2, 0, 0]), float)
 
 
-def _bezier_reference(a, ctrl):
-    """The distance between the annulus a and the Bezier curve `ctrl` at 50 digits: the least of
-    the point-annulus closed form over the curve's t (its speed bounded by n max |P_i+1 - P_i|)."""
-    pts = [R.vec(p) for p in ctrl]
-    speed = (len(pts) - 1) * max([R.norm(R.sub(q, p)) for p, q in zip(pts, pts[1:])] + [mpf(0)])
-    curve = (lambda t: R.bezier_point(ctrl, t), mpf(0), mpf(1), False, speed)
-    return float(_minimum(curve, AnnulusMP(a).point_distance, mpf(min(radii(a))) / 8))
-
-
 def _bezier_cases():
     """(name, annulus, control points): random curves of degree 1..5 about random annuli, and
     curves through the hole along the axis, lying in the plane across the ring and the hole, in
@@ -422,7 +288,7 @@ def test_annulus_bezier_against_the_reference(case):
     reference, closest_points().distance == distance() to the bit, the curve's point on the curve
     at its param and the annulus's point in the annulus, apart by the distance."""
     name, a, ctrl = case
-    ref = _bezier_reference(a, ctrl)
+    ref = bezier_reference(a, ctrl)
     curve = cd.Bezier(np.asarray(ctrl, float))
     ring = make(a)
     scale = max(ref, a[4])
