@@ -215,12 +215,39 @@ template <class T> class Broadcast {
   // the pair, PairKernels::kFields), so that the pointers stay in registers and advance by a fixed
   // step (most of the loop's own cost on the point queries), in one copy of the loop.
   template <int Count, class Fn> void for_each(Fn&& fn, Index begin, Index end) const {
+    walk<Count>([&](const T* const* base, const Index* step, Index start, Index n) { run<Count>(fn, base, step, start, n); },
+                begin, end);
+  }
+
+  // As for_each, but block(first_index, field_pointers, field_steps) answers each Width
+  // consecutive elements of a run at once (the elements first_index ... first_index + Width - 1,
+  // field f of element k at pointers[f] + k * steps[f]), and fn the few left at a run's end.
+  template <int Count, int Width, class Block, class Fn>
+  void for_each_block(const Block& block, Fn&& fn, Index begin, Index end) const {
+    walk<Count>(
+        [&](const T* const* base, const Index* step, Index start, Index n) {
+          std::array<const T*, Count> ptr{};
+          for (int f = 0; f < Count; ++f) ptr[f] = base[f];
+          Index i = 0;
+          for (; i + Width <= n; i += Width) {
+            block(start + i, ptr.data(), step);
+            for (int f = 0; f < Count; ++f) ptr[f] += Width * step[f];
+          }
+          run<Count>(fn, ptr.data(), step, start + i, n - i);
+        },
+        begin, end);
+  }
+
+ private:
+  // runner(field_pointers, field_steps, first_index, count) over runs covering [begin, end): one
+  // run where every field steps linearly, else chunks gathered into contiguous scratch.
+  template <int Count, class Runner> void walk(const Runner& runner, Index begin, Index end) const {
     static_assert(Count <= kMaxFields, "kMaxFields");
     if (count_ != Count) throw std::logic_error("circledist: a pair's field count disagrees with its shapes");
     if (linear_) {
       std::array<const T*, kMaxFields> base{};
       for (int f = 0; f < count_; ++f) base[f] = base_[f] + begin * step_[f];
-      return run<Count>(fn, base.data(), step_.data(), begin, end - begin);
+      return runner(base.data(), step_.data(), begin, end - begin);
     }
     // Other broadcasts (e.g. (N, 1) against (M,)) walk an odometer that gathers each chunk of
     // elements into contiguous scratch, over which the same loop runs: the query is compiled
@@ -254,11 +281,10 @@ template <class T> class Broadcast {
           idx[d] = 0;
         }
       }
-      run<Count>(fn, base.data(), step.data(), start, n);
+      runner(base.data(), step.data(), start, n);
     }
   }
 
- private:
   // fn(start + i, pointers) for i in [0, n), each field's pointer advancing by its step.
   template <int N, class Fn>
   void run(Fn& fn, const T* const* base, const Index* step, Index start, Index n) const {

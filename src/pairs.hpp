@@ -6,6 +6,7 @@
 
 #include "batch.hpp"
 
+#include <circledist/detail/point_round_lanes.hpp>
 #include <circledist/effects.hpp>
 
 #include <array>
@@ -59,6 +60,10 @@ template <class Real> struct Request {
 // and the answers' arrays, see Request), so the two orders agree to the bit by construction
 // (circledist::distance(b, a) calls the (A, B) query too, query.hpp).
 template <class Roots, class A, class B, class Real> struct PairKernels {
+  // A point against a circle or a disk in double: closest_points answers kLanes elements at once
+  // (detail/point_round_lanes.hpp: the scalar query's answers, bit for bit).
+  static constexpr bool kPointRoundLanes =
+      std::is_same_v<A, Vec3<double>> && (std::is_same_v<B, Circle3<double>> || std::is_same_v<B, Disk3<double>>);
   // Fields of both shapes, each with its sweep (within() adds the limit after them).
   static constexpr int kFields =
       int(kFieldCounts[ShapeTraits<A>::kind] + 1 + kFieldCounts[ShapeTraits<B>::kind] + 1);
@@ -107,6 +112,18 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
   }
 
   static void closest(const Request<Real>& r, Index begin, Index end) {
+#if CIRCLEDIST_POINT_ROUND_LANES
+    if constexpr (kPointRoundLanes) {
+      if (!r.swept && detail::has_lanes()) {
+        r.elements.template for_each_block<kFields, detail::kLanes>(
+            PointRoundBlock{r}, [&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
+              r.store(i, circledist::closest_points<Roots>(first_core(r, f), second_core(r, f)));
+            }, begin, end);
+        stats().closest_points += std::uint64_t(end - begin);
+        return;
+      }
+    }
+#endif
     if (!r.swept) {
       r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
         r.store(i, circledist::closest_points<Roots>(first_core(r, f), second_core(r, f)));
@@ -118,6 +135,53 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
     }
     stats().closest_points += std::uint64_t(end - begin);
   }
+
+#if CIRCLEDIST_POINT_ROUND_LANES
+  // closest_points of kLanes consecutive elements of a point-round pair (fields: the point, its
+  // sweep, the round's center, normal, radius, its sweep): loads the lanes, lets the query answer
+  // them, and stores the answers in the caller's layout; where the lanes decline, the scalar query
+  // answers each element.
+  struct PointRoundBlock {
+    const Request<Real>& r;
+    __attribute__((target("avx"))) void operator()(Index i, Fields f, const Index* step) const {
+      // Component c of field j of the kLanes elements (no lambda: it would not be compiled for AVX).
+#define CIRCLEDIST_FIELD_LANES(j, c) detail::strided_lanes(f[j] + (c), step[j])
+      const detail::PointRoundLanes in{
+          CIRCLEDIST_FIELD_LANES(0, 0),        CIRCLEDIST_FIELD_LANES(0, 1),        CIRCLEDIST_FIELD_LANES(0, 2),
+          CIRCLEDIST_FIELD_LANES(kBAt, 0),     CIRCLEDIST_FIELD_LANES(kBAt, 1),     CIRCLEDIST_FIELD_LANES(kBAt, 2),
+          CIRCLEDIST_FIELD_LANES(kBAt + 1, 0), CIRCLEDIST_FIELD_LANES(kBAt + 1, 1), CIRCLEDIST_FIELD_LANES(kBAt + 1, 2),
+          CIRCLEDIST_FIELD_LANES(kBAt + 2, 0)};
+#undef CIRCLEDIST_FIELD_LANES
+      detail::PointRoundAnswerLanes out;
+      if (!detail::point_round_closest_lanes<std::is_same_v<B, Disk3<double>>>(in, out)) {
+        for (int k = 0; k < detail::kLanes; ++k) {
+          std::array<const Real*, kFields> g{};
+          for (int j = 0; j < kFields; ++j) g[j] = f[j] + k * step[j];
+          r.store(i + k, circledist::closest_points<Roots>(first_core(r, g.data()), second_core(r, g.data())));
+        }
+        return;
+      }
+      alignas(32) Real bx[detail::kLanes], by[detail::kLanes], bz[detail::kLanes], t0[detail::kLanes], t1[detail::kLanes];
+      out.distance.to(r.distance + i);
+      out.bx.to(bx);
+      out.by.to(by);
+      out.bz.to(bz);
+      out.param0.to(t0);
+      out.param1.to(t1);
+      for (int k = 0; k < detail::kLanes; ++k) {
+        const Index at = i + k;
+        const Real* p = f[0] + k * step[0];
+        Real* a = r.point_a + 3 * at;
+        Real* b = r.point_b + 3 * at;
+        a[0] = p[0], a[1] = p[1], a[2] = p[2];
+        b[0] = bx[k], b[1] = by[k], b[2] = bz[k];
+        r.param_a[2 * at] = 0, r.param_a[2 * at + 1] = 0;
+        r.param_b[2 * at] = t0[k], r.param_b[2 * at + 1] = t1[k];
+        r.flag[at] = true;
+      }
+    }
+  };
+#endif
 };
 
 template <class Real> using KernelFn = void (*)(const Request<Real>&, Index begin, Index end);
