@@ -144,14 +144,20 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
   struct PointRoundBlock {
     const Request<Real>& r;
     __attribute__((target("avx"))) void operator()(Index i, Fields f, const Index* step) const {
-      // Component c of field j of the kLanes elements (no lambda: it would not be compiled for AVX).
-#define CIRCLEDIST_FIELD_LANES(j, c) detail::strided_lanes(f[j] + (c), step[j])
-      const detail::PointRoundLanes in{
-          CIRCLEDIST_FIELD_LANES(0, 0),        CIRCLEDIST_FIELD_LANES(0, 1),        CIRCLEDIST_FIELD_LANES(0, 2),
-          CIRCLEDIST_FIELD_LANES(kBAt, 0),     CIRCLEDIST_FIELD_LANES(kBAt, 1),     CIRCLEDIST_FIELD_LANES(kBAt, 2),
-          CIRCLEDIST_FIELD_LANES(kBAt + 1, 0), CIRCLEDIST_FIELD_LANES(kBAt + 1, 1), CIRCLEDIST_FIELD_LANES(kBAt + 1, 2),
-          CIRCLEDIST_FIELD_LANES(kBAt + 2, 0)};
-#undef CIRCLEDIST_FIELD_LANES
+      // Field j (a 3-vector, or a number) of the kLanes elements: twelve consecutive numbers where
+      // the field's elements are consecutive (the usual layout), else gathered lane by lane.
+      const auto vector_lanes = [&](int j, detail::Lanes& x, detail::Lanes& y, detail::Lanes& z)
+          __attribute__((target("avx"))) {
+        if (step[j] == 3) return detail::load_triples(f[j], x, y, z);
+        x = detail::strided_lanes(f[j], step[j]);
+        y = detail::strided_lanes(f[j] + 1, step[j]);
+        z = detail::strided_lanes(f[j] + 2, step[j]);
+      };
+      detail::PointRoundLanes in;
+      vector_lanes(0, in.px, in.py, in.pz);
+      vector_lanes(kBAt, in.cx, in.cy, in.cz);
+      vector_lanes(kBAt + 1, in.wx, in.wy, in.wz);
+      in.radius = detail::strided_lanes(f[kBAt + 2], step[kBAt + 2]);
       detail::PointRoundAnswerLanes out;
       if (!detail::point_round_closest_lanes<std::is_same_v<B, Disk3<double>>>(in, out)) {
         for (int k = 0; k < detail::kLanes; ++k) {
@@ -161,24 +167,12 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
         }
         return;
       }
-      alignas(32) Real bx[detail::kLanes], by[detail::kLanes], bz[detail::kLanes], t0[detail::kLanes], t1[detail::kLanes];
       out.distance.to(r.distance + i);
-      out.bx.to(bx);
-      out.by.to(by);
-      out.bz.to(bz);
-      out.param0.to(t0);
-      out.param1.to(t1);
-      for (int k = 0; k < detail::kLanes; ++k) {
-        const Index at = i + k;
-        const Real* p = f[0] + k * step[0];
-        Real* a = r.point_a + 3 * at;
-        Real* b = r.point_b + 3 * at;
-        a[0] = p[0], a[1] = p[1], a[2] = p[2];
-        b[0] = bx[k], b[1] = by[k], b[2] = bz[k];
-        r.param_a[2 * at] = 0, r.param_a[2 * at + 1] = 0;
-        r.param_b[2 * at] = t0[k], r.param_b[2 * at + 1] = t1[k];
-        r.flag[at] = true;
-      }
+      detail::store_triples(in.px, in.py, in.pz, r.point_a + 3 * i);  // the point itself
+      detail::store_triples(out.bx, out.by, out.bz, r.point_b + 3 * i);
+      detail::store_pairs(detail::Lanes::both(0), detail::Lanes::both(0), r.param_a + 2 * i);
+      detail::store_pairs(out.param0, out.param1, r.param_b + 2 * i);
+      for (int k = 0; k < detail::kLanes; ++k) r.flag[i + k] = true;
     }
   };
 #endif

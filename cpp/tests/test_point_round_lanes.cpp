@@ -42,44 +42,53 @@ int answered = 0, declined = 0;
 #if CIRCLEDIST_POINT_ROUND_LANES
 constexpr int kLanes = detail::kLanes;
 
-// The lanes' answers for cases[0..kLanes), as the batch stores them: false where they decline.
-template <bool Interior> __attribute__((target("avx"))) bool lanes_answer(const Case* cases, Result<double>* out) {
-  double fields[10][kLanes];
+// The lanes' answers for cases[0..kLanes), loaded and stored as the batch does (src/pairs.hpp:
+// 3-vectors as twelve consecutive numbers, or lane by lane at a stride): false where they decline.
+template <bool Interior>
+__attribute__((target("avx"))) bool lanes_answer(const Case* cases, Result<double>* out, bool consecutive) {
+  double points[3 * kLanes], centers[3 * kLanes], normals[3 * kLanes], radii[kLanes];
   for (int k = 0; k < kLanes; ++k) {
-    const Case& c = cases[k];
-    const double values[10] = {c.point.x(),  c.point.y(),  c.point.z(),  c.center.x(), c.center.y(),
-                               c.center.z(), c.normal.x(), c.normal.y(), c.normal.z(), c.radius};
-    for (int j = 0; j < 10; ++j) fields[j][k] = values[j];
+    for (int j = 0; j < 3; ++j) {
+      points[3 * k + j] = cases[k].point[j];
+      centers[3 * k + j] = cases[k].center[j];
+      normals[3 * k + j] = cases[k].normal[j];
+    }
+    radii[k] = cases[k].radius;
   }
-  const auto lanes = [&](int j) { return &fields[j][0]; };
-  const detail::PointRoundLanes in{
-      detail::strided_lanes(lanes(0), 1), detail::strided_lanes(lanes(1), 1), detail::strided_lanes(lanes(2), 1),
-      detail::strided_lanes(lanes(3), 1), detail::strided_lanes(lanes(4), 1), detail::strided_lanes(lanes(5), 1),
-      detail::strided_lanes(lanes(6), 1), detail::strided_lanes(lanes(7), 1), detail::strided_lanes(lanes(8), 1),
-      detail::strided_lanes(lanes(9), 1)};
+  detail::PointRoundLanes in;
+  const auto load = [&](const double* x, detail::Lanes& a, detail::Lanes& b, detail::Lanes& c) __attribute__((target("avx"))) {
+    if (consecutive) return detail::load_triples(x, a, b, c);
+    a = detail::strided_lanes(x, 3), b = detail::strided_lanes(x + 1, 3), c = detail::strided_lanes(x + 2, 3);
+  };
+  load(points, in.px, in.py, in.pz);
+  load(centers, in.cx, in.cy, in.cz);
+  load(normals, in.wx, in.wy, in.wz);
+  in.radius = detail::strided_lanes(radii, 1);
   detail::PointRoundAnswerLanes answer;
   if (!detail::point_round_closest_lanes<Interior>(in, answer)) return false;
-  double d[kLanes], bx[kLanes], by[kLanes], bz[kLanes], t0[kLanes], t1[kLanes];
+  double d[kLanes], point_a[3 * kLanes], point_b[3 * kLanes], param_a[2 * kLanes], param_b[2 * kLanes];
   answer.distance.to(d);
-  answer.bx.to(bx);
-  answer.by.to(by);
-  answer.bz.to(bz);
-  answer.param0.to(t0);
-  answer.param1.to(t1);
+  detail::store_triples(in.px, in.py, in.pz, point_a);
+  detail::store_triples(answer.bx, answer.by, answer.bz, point_b);
+  detail::store_pairs(detail::Lanes::both(0), detail::Lanes::both(0), param_a);
+  detail::store_pairs(answer.param0, answer.param1, param_b);
   for (int k = 0; k < kLanes; ++k) {
     out[k].distance = d[k];
-    out[k].point_a = cases[k].point;  // the batch's convention (src/pairs.hpp)
-    out[k].point_b = V(bx[k], by[k], bz[k]);
-    out[k].param_a = Vec2<double>(0, 0);
-    out[k].param_b = Vec2<double>(t0[k], t1[k]);
-    out[k].unique = true;
+    out[k].point_a = V(point_a[3 * k], point_a[3 * k + 1], point_a[3 * k + 2]);
+    out[k].point_b = V(point_b[3 * k], point_b[3 * k + 1], point_b[3 * k + 2]);
+    out[k].param_a = Vec2<double>(param_a[2 * k], param_a[2 * k + 1]);
+    out[k].param_b = Vec2<double>(param_b[2 * k], param_b[2 * k + 1]);
+    out[k].unique = true;  // the batch's flag (src/pairs.hpp)
   }
   return true;
 }
 
 template <class Round, bool Interior> void check_lanes(const Case* cases) {
-  Result<double> lanes[kLanes];
-  if (lanes_answer<Interior>(cases, lanes)) {
+  Result<double> lanes[kLanes], strided[kLanes];
+  const bool answered_consecutive = lanes_answer<Interior>(cases, lanes, true);
+  CHECK(answered_consecutive == lanes_answer<Interior>(cases, strided, false));
+  for (int k = 0; answered_consecutive && k < kLanes; ++k) CHECK(same_bits(lanes[k], strided[k]));
+  if (answered_consecutive) {
     ++answered;
     for (int k = 0; k < kLanes; ++k) {
       const Round round{cases[k].center, cases[k].normal, cases[k].radius};

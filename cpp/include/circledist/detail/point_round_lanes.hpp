@@ -1,24 +1,25 @@
-// closest_points of two point-round pairs at once, in the two lanes of an SSE2 register: the
-// batched query of the point kinds (src/pairs.hpp), issue 14's "closest_points at most 2x
-// distance".
+// closest_points of four point-round pairs at once, in the lanes of an AVX register: the batched
+// query of the point kinds (src/pairs.hpp), issue 14's "closest_points at most 2x distance".
 //
 // Why: a point-circle distance is about 35 floating-point operations and three square roots;
 // its closest points about 120, a third of them the angle (atan2.hpp). One at a time, the closest
 // points cost three distances (measured 19.8 against 6.5 ns a pair in a C++ loop shaped like the
 // batch kernel, on a 2-core AMD EPYC), and neither memory nor the divider is the limit: the count
-// of operations is. Two pairs a register halve it, and the square roots and divisions, which the
-// processor issues one at a time, go two lanes a time.
+// of operations is. Four pairs a register take it to 10.6 ns (1.65x the distance; two lanes of
+// SSE2 gave 17.5 ns, the loads and stores around the lanes then costing as much as they saved).
 //
 // Exactness: every lane runs the operations of PointRoundQuery::closest and detail::atan2<double>
 // (point_over_round.hpp, atan2.hpp) in the same order, each an IEEE operation rounded once
 // (additions, products, quotients, square roots; selections and sign copies are exact), so each
-// lane's answer is the scalar query's to the bit. cpp/tests/test_point_round_lanes.cpp holds the
-// two to the bit. Compiled only where that holds: SSE2 without FMA (a compiler allowed to fuse a
-// product and a sum might fuse differently in the two codes). Elsewhere, and for every pair where
-// a lane leaves the common path (a normal out of [2^-50, 2^50], a point on a circle's axis, an
-// angle's arguments out of atan2's fast range, a distance out of the front end's moderate range,
-// or anything not finite), both pairs take the scalar query instead: the answers are the scalar
-// query's in every case.
+// lane's answer is the scalar query's to the bit; cpp/tests/test_point_round_lanes.cpp and
+// tests/test_point_round_lanes.py hold the two to the bit. The code is a mirror of the scalar
+// code, not a template shared with it: it is compiled for AVX (target attribute) in any x86 build,
+// and a function compiled for AVX cannot be inlined into code that must run without it. Not FMA,
+// which could fuse a product and a sum the scalar code rounds apart. Where the processor has no
+// AVX (has_lanes()), off x86, and for every block where a lane leaves the common path (a normal
+// out of [2^-50, 2^50], a point on a circle's axis, an angle's arguments out of atan2's fast
+// range, a distance out of the front end's moderate range, anything not finite), the scalar query
+// answers: the answers are the scalar query's in every case.
 #pragma once
 
 #include "point_over_round.hpp"
@@ -57,6 +58,32 @@ struct Lanes {
   static CIRCLEDIST_LANES_FN Lanes both(double x) { return {_mm256_set1_pd(x)}; }
   CIRCLEDIST_LANES_FN void to(double* out) const { _mm256_storeu_pd(out, v); }
 };
+// Stores the lanes of a and b interleaved: a0 b0 a1 b1 a2 b2 a3 b3 (a param's two numbers).
+CIRCLEDIST_LANES_FN void store_pairs(Lanes a, Lanes b, double* out) {
+  const __m256d low = _mm256_unpacklo_pd(a.v, b.v), high = _mm256_unpackhi_pd(a.v, b.v);  // a0 b0 a2 b2, a1 b1 a3 b3
+  _mm256_storeu_pd(out, _mm256_permute2f128_pd(low, high, 0x20));
+  _mm256_storeu_pd(out + 4, _mm256_permute2f128_pd(low, high, 0x31));
+}
+// Twelve consecutive numbers x0 y0 z0 x1 ... z3 (four 3-vectors) as the lanes x, y, z, and back:
+// a transpose by 128-bit halves and shuffles, where loading lane by lane costs twice the operations.
+CIRCLEDIST_LANES_FN void load_triples(const double* p, Lanes& x, Lanes& y, Lanes& z) {
+  const __m256d xy02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p)), _mm_loadu_pd(p + 6), 1);
+  const __m256d zx02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 2)), _mm_loadu_pd(p + 8), 1);
+  const __m256d yz13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 4)), _mm_loadu_pd(p + 10), 1);
+  x = {_mm256_shuffle_pd(xy02, zx02, 0b1010)};
+  y = {_mm256_shuffle_pd(xy02, yz13, 0b0101)};
+  z = {_mm256_shuffle_pd(zx02, yz13, 0b1010)};
+}
+CIRCLEDIST_LANES_FN void store_triples(Lanes x, Lanes y, Lanes z, double* p) {
+  const __m256d xy02 = _mm256_shuffle_pd(x.v, y.v, 0b0000), zx02 = _mm256_shuffle_pd(z.v, x.v, 0b1010);
+  const __m256d yz13 = _mm256_shuffle_pd(y.v, z.v, 0b1111);
+  _mm_storeu_pd(p, _mm256_castpd256_pd128(xy02));
+  _mm_storeu_pd(p + 2, _mm256_castpd256_pd128(zx02));
+  _mm_storeu_pd(p + 4, _mm256_castpd256_pd128(yz13));
+  _mm_storeu_pd(p + 6, _mm256_extractf128_pd(xy02, 1));
+  _mm_storeu_pd(p + 8, _mm256_extractf128_pd(zx02, 1));
+  _mm_storeu_pd(p + 10, _mm256_extractf128_pd(yz13, 1));
+}
 // The lanes x[0], x[stride], x[2 stride], x[3 stride].
 CIRCLEDIST_LANES_FN Lanes strided_lanes(const double* x, std::ptrdiff_t stride) {
   return {_mm256_set_pd(x[3 * stride], x[2 * stride], x[stride], x[0])};
