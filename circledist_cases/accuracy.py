@@ -105,6 +105,8 @@ def reference_distance(kind, values):
         ring = _plain_shape(b, vb)
         if a == "bezier":
             return mpf(NREF.bezier_reference_mp(ring, _control_points(va)))
+        if a == "segment" and tuple(va[:3]) == tuple(va[3:6]):  # zero length: its point (the
+            return mpf(NREF.reference_mp(ring, ("point", tuple(va[:3]))))  # reference divides by |p1 - p0|^2)
         return mpf(NREF.reference_mp(ring, _plain_shape(a, va)))
     if b == "arc":  # reference_arc: the arc's angle against the other shape's closed form
         arc_b = _plain_shape(b, vb)
