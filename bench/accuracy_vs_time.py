@@ -31,8 +31,9 @@
    default policy, docs/accuracy_vs_time.png (error against time) and docs/stability_sweeps.png.
 
 Relative error = |d - d_ref| / max(d_ref, largest radius of the query (an arc's radius, an
-annulus's outer radius); for two Bezier curves the larger curve size). The bar is 1e-12 in double; float and long double are judged against the
-same number of ulps (1e-12 eps_p / eps_d: 5.4e-4 for float, 4.9e-16 for long double).
+annulus's outer radius); for two Bezier curves the larger curve size). The bar is 1e-12 in
+double; float and long double are judged against the same number of ulps (1e-12 eps_p / eps_d:
+5.4e-4 for float, 4.9e-16 for long double).
 """
 
 from __future__ import annotations

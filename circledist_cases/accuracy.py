@@ -602,8 +602,8 @@ def hard_scenes(kind):
         scenes = _PAIR_SCENES[kind]
         out = [(n, x, y, 1.0) for n, (x, y) in scenes.items()]
         bases = ROUND_ARC_VARIANT_BASES if b == "arc" else ROUND_ANNULUS_VARIANT_BASES
-        out += [(n, x, y, 1.0) for n, x, y in _variants({n: x for n, (x, y) in scenes.items() if y == _ROUND_TARGETS[b]},
-                                                          b, bases)]
+        standard = {n: x for n, (x, y) in scenes.items() if y == _ROUND_TARGETS[b]}  # against the local one
+        out += [(n, x, y, 1.0) for n, x, y in _variants(standard, b, bases)]
     elif kind == "circle-circle":
         out = [(n, x, y, 1.0) for n, (x, y) in CIRCLE_CIRCLE_SCENES.items()]
     elif kind == "circle-disk":
