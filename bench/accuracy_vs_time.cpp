@@ -13,7 +13,8 @@
 // them to float (to nearest), the long double run extends them exactly.
 // Value layout, the first shape then the second:
 //     point x y z | line, ray ox oy oz dx dy dz | segment p0 p1 |
-//     circle, disk cx cy cz nx ny nz r | bezier k x0 y0 z0 ... (k control points)
+//     circle, disk cx cy cz nx ny nz r | bezier k x0 y0 z0 ... (k control points) |
+//     arc cx cy cz nx ny nz r sx sy sz angle | annulus cx cy cz nx ny nz inner outer
 //
 // OUT receives
 //     K <kind> <compiled 0/1>                                   one line per kind of the table
@@ -79,6 +80,19 @@ template <class Real> struct Reader {
   void read(Segment3<Real>& s) { s.p0 = vec(); s.p1 = vec(); }
   void read(Circle3<Real>& c) { c.center = vec(); c.normal = vec(); c.radius = next(); }
   void read(Disk3<Real>& d) { d.center = vec(); d.normal = vec(); d.radius = next(); }
+  void read(Arc3<Real>& a) {
+    a.center = vec();
+    a.normal = vec();
+    a.radius = next();
+    a.start = vec();
+    a.angle = next();
+  }
+  void read(Annulus3<Real>& a) {
+    a.center = vec();
+    a.normal = vec();
+    a.inner_radius = next();
+    a.outer_radius = next();
+  }
   void read(BezierCurve3<Real>& b) {
     const int k = int(next());
     if (k < 1 || k > kMaxBezierDegree + 1) {

@@ -7,11 +7,15 @@
 
 1. Generates the cases (circledist_cases/accuracy.py): seeded random ones and the hard families
    (tangent lines, lines on or near the axis, near-parallel lines, rim crossings, coplanar /
-   concentric / linked / near-coplanar circles, curves grazing a disk, ...), each placed in the round shape's own
+   concentric / linked / near-coplanar circles, curves grazing a disk, arc ends at tangency and on
+   an axis, arcs of angle 2 pi - 1e-9 and 2 pi, lines, circles and disks in an annulus's hole,
+   coplanar and concentric annuli, ...), each placed in the round shape's own
    frame, under a generic rotation, and translated by 1e6 and 1e8, plus radii 1e-9 and 1e9.
    The stability sweeps of circledist_cases/sweeps.py are appended (double only, not timed).
 2. Computes 50-digit references by an independent method: circledist_cases/reference.py (linear
-   shapes against circles and disks) and reference_round.py (circle, disk and Bezier kinds)
+   shapes against circles and disks), reference_round.py (circle, disk and Bezier kinds),
+   reference_arc.py (every kind against an arc: the arc's angle) and reference_annulus.py (every
+   kind against an annulus: the other shape's parameter, or both regions' rims)
    minimise a closed-form point-to-shape distance over ONE parameter (dense sampling, then
    golden-section refinement in mpmath); no polynomial, no root finding. Two Bezier curves:
    reference_bezier.py (the edges by reference_round, the interior by 50-digit descents from a
@@ -26,14 +30,16 @@
    the random and on the hard cases), writes docs/accuracy_vs_time.md with the recommended
    default policy, docs/accuracy_vs_time.png (error against time) and docs/stability_sweeps.png.
 
-Relative error = |d - d_ref| / max(d_ref, largest radius of the query; for two Bezier curves the
-larger curve size). The bar is 1e-12 in double; float and long double are judged against the
-same number of ulps (1e-12 eps_p / eps_d: 5.4e-4 for float, 4.9e-16 for long double).
+Relative error = |d - d_ref| / max(d_ref, largest radius of the query (an arc's radius, an
+annulus's outer radius); for two Bezier curves the larger curve size). The bar is 1e-12 in
+double; float and long double are judged against the same number of ulps (1e-12 eps_p / eps_d:
+5.4e-4 for float, 4.9e-16 for long double).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import hashlib
 import json
 import math
@@ -76,7 +82,8 @@ DOCS = ROOT / "docs"
 
 def _reference_version():
     h = hashlib.sha256()
-    for name in ("reference.py", "reference_round.py", "reference_bezier.py"):
+    for name in ("reference.py", "reference_round.py", "reference_bezier.py", "reference_arc.py",
+                 "reference_annulus.py"):
         h.update((ROOT / "circledist_cases" / name).read_bytes())
     return h.hexdigest()[:16]
 
@@ -112,18 +119,20 @@ def compute_references(jobs_list, jobs, log=print):
         log(f"== references: {len(todo)} to compute ({len(cache)} cached), {jobs} processes")
         t0 = time.time()
         items = list(todo.values())
-        if jobs > 1:
-            with multiprocessing.Pool(jobs) as pool:
-                for i, (k, v) in enumerate(pool.imap_unordered(_ref_job, items, chunksize=4)):
-                    cache[k] = v
-                    if (i + 1) % 500 == 0:
-                        log(f"   {i + 1}/{len(items)} ({time.time() - t0:.0f} s)")
-        else:
-            for item in items:
-                k, v = _ref_job(item)
+        def save():  # every 500 references too: an interrupted run keeps what it computed
+            tmp = path.with_suffix(".tmp")
+            tmp.write_text(json.dumps({"version": version, "references": cache}))
+            tmp.replace(path)
+
+        with multiprocessing.Pool(jobs) if jobs > 1 else contextlib.nullcontext() as pool:
+            results = pool.imap_unordered(_ref_job, items, chunksize=4) if pool else map(_ref_job, items)
+            for i, (k, v) in enumerate(results):
                 cache[k] = v
+                if (i + 1) % 500 == 0:
+                    log(f"   {i + 1}/{len(items)} ({time.time() - t0:.0f} s)")
+                    save()
         log(f"   done in {time.time() - t0:.1f} s")
-        path.write_text(json.dumps({"version": version, "references": cache}))
+        save()
     return cache
 
 
@@ -396,8 +405,8 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
         lines.append(f"- Kinds whose header is missing (not measured): {', '.join(missing)}.")
     lines += [
         "",
-        "Relative error = |d - d_ref| / max(d_ref, largest radius of the query; for two Bezier curves the larger",
-        "curve size, their control polygons' extent). The bar is 1e-12 in double;",
+        "Relative error = |d - d_ref| / max(d_ref, largest radius of the query, an annulus's outer radius; for two",
+        "Bezier curves the larger curve size, their control polygons' extent). The bar is 1e-12 in double;",
         "float and long double are judged against the same number of ulps of their own precision,",
         f"1e-12 eps_p / eps_double: {BAR['float']:.1e} for float, {BAR['longdouble']:.1e} for long double.",
         "The float inputs are the double cases rounded to float, and their references are those of the",
@@ -410,7 +419,11 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
         "golden-section refinement; no polynomial and no root finding. Two Bezier curves",
         "(circledist_cases/reference_bezier.py): the four edges that way, the interior by 50-digit Newton",
         "descents from a grid's local minima, the best of them then minimised in one parameter along their",
-        "valley (min over s of the distance from A(s) to B).",
+        "valley (min over s of the distance from A(s) to B). Arcs (circledist_cases/reference_arc.py): the arc's",
+        "angle against the other shape's closed-form point distance (the point-arc closed form for two arcs",
+        "and a Bezier curve's t). Annuli (circledist_cases/reference_annulus.py): the other shape's parameter",
+        "against the closed-form point-annulus distance; a disk or annulus against an annulus, each region's",
+        "rims against the other region.",
         "",
         f"Timing: ns/query is the median over repeated passes (each ~2 ms, at least {min_time} s per",
         "kind x policy x precision x case set) of one single-threaded loop of `circledist::distance<Policy>`",
@@ -445,7 +458,17 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
               "rim (lifted by 1e-9), along the axis, parabolas touching the disk, a wavy quintic, a degree-7",
               "curve; two curves: crossing, nearly touching (1e-9, 1e-13), tangent, nearly parallel, parallel",
               "and identical (continua), a big curve against a small one, degenerate (point, collinear) curves",
-              "(circledist_cases/bezier_cases.py). Each scene is used in the round shape's frame, under a generic rotation, and translated",
+              "(circledist_cases/bezier_cases.py). Arcs (the unit circle's from +x over 3 pi / 2): the circle's",
+              "scenes (several tangent to or crossing at its start end, or on its axis), lines tangent at either",
+              "end (lifted by 1e-9), tangent 1e-9 past an end (the circle's closest point just off the arc),",
+              "through both ends and through the gap; circles, disks and arcs touching an end, with an end on",
+              "their axis, concentric and coaxial, linked through the gap, two arcs of one circle 1e-9 apart;",
+              "selected scenes also against arcs of angle 2 pi - 1e-9, 2 pi (the circle) and pi / 2. Annuli",
+              "(radii 0.5 and 1): the circle's scenes, lines along the axis through the hole, 1e-9 inside, on and",
+              "outside the inner rim, crossing the plane in the hole; circles, disks and arcs in the hole",
+              "(coplanar, concentric, lifted, perpendicular, 1e-9 from the inner rim), covering it, coplanar",
+              "overlapping, concentric and stacked annuli; selected scenes also against inner radius 0 (the",
+              "disk), = outer (the circle) and 1e-9 of outer. Each scene is used in the round shape's frame, under a generic rotation, and translated",
               "by 1e6 and 1e8 (both orientations); selected linear scenes also with the scene scaled by",
               "1e-9 / 1e9 and with the radius alone 1e-9 / 1e9 (those not translated: a radius of 1e-9 at 1e8,",
               "where the ulp is 1.5e-8, would ask for an absolute error below the rounding of the line's own",

@@ -24,6 +24,24 @@ template <class Real, class Visitor> void for_each_kind(Visitor&& v) {
   v.template add<BezierCurve3<Real>, Circle3<Real>>("bezier-circle");
   v.template add<BezierCurve3<Real>, Disk3<Real>>("bezier-disk");
   v.template add<BezierCurve3<Real>, BezierCurve3<Real>>("bezier-bezier");
+  // Arcs and annuli (issue 19): the arc or annulus second, the order the front end answers in.
+  v.template add<Vec3<Real>, Arc3<Real>>("point-arc");
+  v.template add<Line3<Real>, Arc3<Real>>("line-arc");
+  v.template add<Ray3<Real>, Arc3<Real>>("ray-arc");
+  v.template add<Segment3<Real>, Arc3<Real>>("segment-arc");
+  v.template add<Circle3<Real>, Arc3<Real>>("circle-arc");
+  v.template add<Disk3<Real>, Arc3<Real>>("disk-arc");
+  v.template add<Arc3<Real>, Arc3<Real>>("arc-arc");
+  v.template add<BezierCurve3<Real>, Arc3<Real>>("bezier-arc");
+  v.template add<Vec3<Real>, Annulus3<Real>>("point-annulus");
+  v.template add<Line3<Real>, Annulus3<Real>>("line-annulus");
+  v.template add<Ray3<Real>, Annulus3<Real>>("ray-annulus");
+  v.template add<Segment3<Real>, Annulus3<Real>>("segment-annulus");
+  v.template add<Circle3<Real>, Annulus3<Real>>("circle-annulus");
+  v.template add<Disk3<Real>, Annulus3<Real>>("disk-annulus");
+  v.template add<Arc3<Real>, Annulus3<Real>>("arc-annulus");
+  v.template add<Annulus3<Real>, Annulus3<Real>>("annulus-annulus");
+  v.template add<BezierCurve3<Real>, Annulus3<Real>>("bezier-annulus");
 }
 
 }  // namespace circledist::bench

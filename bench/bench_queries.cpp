@@ -11,7 +11,8 @@
 //               second's.
 // Value layout of one shape:
 //     point x y z | line, ray: origin, direction | segment: p0, p1 |
-//     circle, disk: center, normal, radius | bezier: its control points, x y z each (the count
+//     circle, disk: center, normal, radius | arc: center, normal, radius, start, angle |
+//     annulus: center, normal, inner radius, outer radius | bezier: its control points, x y z each (the count
 //     is whatever the other shape leaves of w; two curves have half of w each).
 // OUTPUT receives "CDBQOUT1", u64 number of kinds, then per kind the name (as above), u64 n and
 // the n distances (0 queries for a kind this build does not know).
@@ -48,6 +49,8 @@ using Ray = circledist::Ray3<Real>;
 using Segment = circledist::Segment3<Real>;
 using Circle = circledist::Circle3<Real>;
 using Disk = circledist::Disk3<Real>;
+using Arc = circledist::Arc3<Real>;
+using Annulus = circledist::Annulus3<Real>;
 
 // ---- shape readers: Width<S>::value doubles per shape (0: variable, takes what is left) ------
 template <class S> struct Width;
@@ -57,6 +60,8 @@ template <> struct Width<Ray> { static constexpr int value = 6; };
 template <> struct Width<Segment> { static constexpr int value = 6; };
 template <> struct Width<Circle> { static constexpr int value = 7; };
 template <> struct Width<Disk> { static constexpr int value = 7; };
+template <> struct Width<Arc> { static constexpr int value = 11; };
+template <> struct Width<Annulus> { static constexpr int value = 8; };
 
 Vec3<Real> vec(const double* v) { return Vec3<Real>(v[0], v[1], v[2]); }
 
@@ -66,6 +71,8 @@ bool read(Ray& r, const double* v, int) { r = {vec(v), vec(v + 3)}; return true;
 bool read(Segment& s, const double* v, int) { s = {vec(v), vec(v + 3)}; return true; }
 bool read(Circle& c, const double* v, int) { c = {vec(v), vec(v + 3), v[6]}; return true; }
 bool read(Disk& d, const double* v, int) { d = {vec(v), vec(v + 3), v[6]}; return true; }
+bool read(Arc& a, const double* v, int) { a = {vec(v), vec(v + 3), v[6], vec(v + 7), v[10]}; return true; }
+bool read(Annulus& a, const double* v, int) { a = {vec(v), vec(v + 3), v[6], v[7]}; return true; }
 
 using Bezier = circledist::BezierCurve3<Real>;
 template <> struct Width<Bezier> { static constexpr int value = 0; };
