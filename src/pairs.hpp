@@ -60,10 +60,11 @@ template <class Real> struct Request {
 // and the answers' arrays, see Request), so the two orders agree to the bit by construction
 // (circledist::distance(b, a) calls the (A, B) query too, query.hpp).
 template <class Roots, class A, class B, class Real> struct PairKernels {
-  // A point against a circle or a disk in double: closest_points answers kLanes elements at once
-  // (detail/point_round_lanes.hpp: the scalar query's answers, bit for bit).
+  // A point against a circle, a disk or an annulus in double: closest_points answers kLanes
+  // elements at once (detail/point_round_lanes.hpp: the scalar query's answers, bit for bit).
   static constexpr bool kPointRoundLanes =
-      std::is_same_v<A, Vec3<double>> && (std::is_same_v<B, Circle3<double>> || std::is_same_v<B, Disk3<double>>);
+      std::is_same_v<A, Vec3<double>> && (std::is_same_v<B, Circle3<double>> || std::is_same_v<B, Disk3<double>> ||
+                                          std::is_same_v<B, Annulus3<double>>);
   // Fields of both shapes, each with its sweep (within() adds the limit after them).
   static constexpr int kFields =
       int(kFieldCounts[ShapeTraits<A>::kind] + 1 + kFieldCounts[ShapeTraits<B>::kind] + 1);
@@ -138,9 +139,9 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
 
 #if CIRCLEDIST_POINT_ROUND_LANES
   // closest_points of kLanes consecutive elements of a point-round pair (fields: the point, its
-  // sweep, the round's center, normal, radius, its sweep): loads the lanes, lets the query answer
-  // them, and stores the answers in the caller's layout; where the lanes decline, the scalar query
-  // answers each element.
+  // sweep, the round's center, normal, radius (an annulus's inner and outer ones), its sweep):
+  // loads the lanes, lets the query answer them, and stores the answers in the caller's layout;
+  // where the lanes decline, the scalar query answers each element.
   struct PointRoundBlock {
     const Request<Real>& r;
     __attribute__((target("avx"))) void operator()(Index i, Fields f, const Index* step) const {
@@ -157,9 +158,15 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
       vector_lanes(0, in.px, in.py, in.pz);
       vector_lanes(kBAt, in.cx, in.cy, in.cz);
       vector_lanes(kBAt + 1, in.wx, in.wy, in.wz);
-      in.radius = detail::strided_lanes(f[kBAt + 2], step[kBAt + 2]);
+      constexpr bool annulus = std::is_same_v<B, Annulus3<double>>;  // fields: inner, outer radius
+      constexpr auto target = annulus ? detail::LaneTarget::kRing
+                              : std::is_same_v<B, Disk3<double>> ? detail::LaneTarget::kDisk
+                                                                 : detail::LaneTarget::kCircle;
+      constexpr int outer = annulus ? kBAt + 3 : kBAt + 2;
+      in.radius = detail::strided_lanes(f[outer], step[outer]);
+      in.inner = annulus ? detail::strided_lanes(f[kBAt + 2], step[kBAt + 2]) : in.radius;
       detail::PointRoundAnswerLanes out;
-      if (!detail::point_round_closest_lanes<std::is_same_v<B, Disk3<double>>>(in, out)) {
+      if (!detail::point_round_closest_lanes<target>(in, out)) {
         for (int k = 0; k < detail::kLanes; ++k) {
           std::array<const Real*, kFields> g{};
           for (int j = 0; j < kFields; ++j) g[j] = f[j] + k * step[j];

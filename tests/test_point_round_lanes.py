@@ -1,10 +1,10 @@
-"""Batched closest_points of a point against a circle or a disk answers four elements at a time
-(AVX lanes, cpp/include/circledist/detail/point_round_lanes.hpp) where the processor has AVX:
+"""Batched closest_points of a point against a circle, a disk or an annulus answers four elements
+at a time (AVX lanes, cpp/include/circledist/detail/point_round_lanes.hpp) where the processor has AVX:
 the answers must be the single queries', bit for bit, in every field, whatever the batch's length
 (the elements left after the last block of four), its layout (a field repeated, broadcast over a
 grid, strided views), the argument order, the dtype and the thread count, and wherever a lane
 leaves the common path (points on the axis, on the rim, normals of extreme length, huge and
-tiny scenes, non-finite values), alone in its block or not. cpp/tests/test_point_round_lanes.cpp
+tiny scenes, points over an annulus's hole and on its inner rim), alone in its block or not. cpp/tests/test_point_round_lanes.cpp
 checks the lanes themselves against the scalar query."""
 
 import numpy as np
@@ -13,7 +13,13 @@ import pytest
 import circledist as cd
 
 FIELDS = ("distance", "point_a", "point_b", "param_a", "param_b", "unique")
-KINDS = (cd.Circle, cd.Disk)
+def annulus(center, normal, radius):
+    """An annulus of outer radius `radius` and a hole of 0.4 of it."""
+    return cd.Annulus(center, normal, 0.4 * np.asarray(radius), radius)
+
+
+annulus.__name__ = "Annulus"
+KINDS = (cd.Circle, cd.Disk, annulus)
 
 
 def same_bits(x, y):
@@ -71,7 +77,7 @@ def hard_points():
     return np.array([
         [0, 0, 1], [0, 0, 0], [0, 0, -3], [1e-300, 0, 0.5], [1, 0, 0], [0, 1, 0], [1 + e, 0, 0], [0.5, 0.5, 0],
         [1, 0, 1e-300], [2, 0, 0], [1e-17, 1e-17, 1], [1e200, 1e200, 0],
-        [3e-310, 0, 0], [0.3, -0.4, 5],
+        [3e-310, 0, 0], [0.3, -0.4, 5], [0.4, 0, 0.2], [0.4 * (1 - 1e-16), 0, 0], [0.2, 0.1, -1], [1e-9, 0, 2],
     ], dtype=float)
 
 

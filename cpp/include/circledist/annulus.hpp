@@ -125,12 +125,10 @@ template <class Roots, class X, class Real> Result<Real> convex_annulus_closest(
 }
 
 // The annulus's distance from a point: the disk's over the ring and beyond, the inner circle's
-// over the hole (PointOverRound, as point-disk computes it; the same numbers as the disk's and
-// the circle's closed forms, so distance() and closest() agree to the bit).
+// over the hole (detail/point_over_round.hpp, PointRingQuery: the same numbers as the disk's and
+// the circle's closed forms, and closest() takes them too, so the two agree to the bit).
 template <class Real> Real point_annulus_distance(const Vec3<Real>& p, const Annulus3<Real>& a) {
-  const PointOverRound<Real> seen(p, a.center, a.normal);
-  if (seen.radial < a.inner_radius) return length2d(seen.height, seen.radial - a.inner_radius);
-  return select(seen.radial <= a.outer_radius, std::abs(seen.height), length2d(seen.height, seen.radial - a.outer_radius));
+  return PointRingQuery<Real>::distance(p, a.center, a.normal, a.inner_radius, a.outer_radius);
 }
 
 // A circle against a true ring (docs/annulus.md, "A circle"): the candidates and the best. Each
@@ -314,9 +312,7 @@ template <class Real> struct Query<Vec3<Real>, Annulus3<Real>> {
   template <class Roots = DefaultRoots> static Result<Real> closest(const Vec3<Real>& p, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(p, a, kind);
-    Result<Real> r = detail::convex_annulus_closest<Roots>(p, a);
-    r.distance = detail::point_annulus_distance(p, a);  // the same number, from the same formulas
-    return r;
+    return detail::PointRingQuery<Real>::closest(p, a.center, a.normal, a.inner_radius, a.outer_radius);
   }
 };
 

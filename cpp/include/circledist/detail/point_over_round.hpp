@@ -123,58 +123,109 @@ template <class Real> struct PointOverRound {
   }
 };
 
+// The answers of a point seen from a round's plane, one per region of the plane its projection
+// falls in: on a rim (the round's own circle, or an annulus's inner one over its hole) and over a
+// disk's or an annulus's face. Each fills the round's side of r (b's); distance() and closest()
+// below take the same numbers, so the two agree to the bit.
+template <class Real> struct PointRoundAnswers {
+  using Seen = PointOverRound<Real>;
+
+  // The rim point in the direction of the point's in-plane part, param (theta, 0), or (radius,
+  // theta) with `as_ring_param` (an annulus's rim); a point on the axis (rho within rounding of
+  // 0) is as close to every rim point: the one at angle 0, and `unique` false.
+  CIRCLEDIST_INLINE static void on_rim(const Seen& seen, const Vec3<Real>& center, Real radius, bool as_ring_param,
+                                       Result<Real>& r) {
+    r.distance = length2d(seen.height, seen.radial - radius);
+    if (seen.on_axis(radius)) {
+      r.point_b = seen.rim_at_zero(center, radius);
+      r.param_b = as_ring_param ? Vec2<Real>(radius, 0) : Vec2<Real>(0, 0);
+      r.unique = !(radius > 0);
+      return;
+    }
+    r.point_b = seen.on_rim(center, radius);
+    const Real theta = seen.angle();
+    r.param_b = as_ring_param ? Vec2<Real>(radius, theta) : Vec2<Real>(theta, 0);
+  }
+
+  // Over a disk of `radius` (or beyond it): the point below P, param (rho, theta), or the rim
+  // point, param (radius, theta). Both cases' numbers are computed and one is selected, without
+  // a jump (detail/select.hpp: GCC 12 had made jumps of the conditional expressions): over a
+  // batch of points on both sides of the rim a jump is mispredicted about as often as not
+  // (measured 43.6 against 36.5 ns a query in a C++ loop). A point on the axis over the disk has
+  // q = 0 and takes the point below it (rho <= R); the rim's q has a direction (rho > R >= 0).
+  CIRCLEDIST_INLINE static void over_disk(const Seen& seen, const Vec3<Real>& center, Real radius, Result<Real>& r) {
+    const bool over = seen.radial <= radius;
+    const typename Seen::InPlane q = seen.in_plane();
+    const Real to_plane = Real(1) / seen.norm2, to_rim = Seen::to_rim(q, radius);
+    const Real above = std::abs(seen.height), off_rim = length2d(seen.height, seen.radial - radius);
+    r.distance = select(over, above, off_rim);
+    r.point_b = Seen::at(center, q, select(over, to_plane, to_rim));
+    r.param_b = Vec2<Real>(select(over, seen.radial, radius), seen.angle());
+  }
+
+  // The distance over a disk: |z| over it (rho <= R, note 001 §2), from the rim beyond. Both
+  // numbers and a selection, not a jump, as in over_disk(): over a batch of points on both sides
+  // of the rim the jump was mispredicted about half the time (measured 17.5 against 11.5 ns a
+  // query in a C++ loop over random pairs).
+  CIRCLEDIST_INLINE static Real over_disk_distance(const Seen& seen, Real radius) {
+    return select(seen.radial <= radius, std::abs(seen.height), length2d(seen.height, seen.radial - radius));
+  }
+};
+
 // The queries of a point against a round (point_circle.hpp, point_disk.hpp): Interior false for
 // a circle (the rim), true for a disk (the rim and the interior it bounds), the one difference.
-// distance() and closest() take the same height and distance from the axis, so the two agree to
-// the bit.
 template <class Real, bool Interior> struct PointRoundQuery {
   static constexpr bool defined = true;
   using Round = std::conditional_t<Interior, Disk3<Real>, Circle3<Real>>;
+  using Answers = PointRoundAnswers<Real>;
 
   // F = sqrt(z^2 + (rho - R)^2) from the rim (note 000 §1), |z| over a disk (rho <= R, note 001
   // §2).
   template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Round& round) {
     const PointOverRound<Real> seen(p, round.center, round.normal);
-    const Real off_rim = length2d(seen.height, seen.radial - round.radius);
-    // Both numbers and a selection, not a jump, as in closest() below: over a batch of points on
-    // both sides of the rim the jump was mispredicted about half the time (measured 17.5 against
-    // 11.5 ns a query in a C++ loop over random pairs).
-    if constexpr (Interior) return select(seen.radial <= round.radius, std::abs(seen.height), off_rim);
-    return off_rim;
+    if constexpr (Interior) return Answers::over_disk_distance(seen, round.radius);
+    return length2d(seen.height, seen.radial - round.radius);
   }
 
   // The rim point in the direction of the point's in-plane part, param (theta, 0) on a circle and
   // (R, theta) on a disk; over a disk, the point below P, param (rho, theta); theta = atan2(y, x)
   // in the round's frame.
   template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Result<Real> closest(const Vec3<Real>& p, const Round& round) {
-    using Seen = PointOverRound<Real>;
-    const Seen seen(p, round.center, round.normal);
+    const PointOverRound<Real> seen(p, round.center, round.normal);
     Result<Real> r;
     r.point_a = p;
     if constexpr (Interior) {
-      // Both cases' numbers are computed and one is selected, without a jump (detail/select.hpp:
-      // GCC 12 had made jumps of the conditional expressions): over a batch of points on both
-      // sides of the rim a jump is mispredicted about as often as not (measured 43.6 against
-      // 36.5 ns a query in a C++ loop). A point on the axis over the disk has q = 0 and takes
-      // the point below it (rho <= R); the rim's q has a direction (rho > R >= 0).
-      const bool over = seen.radial <= round.radius;
-      const typename Seen::InPlane q = seen.in_plane();
-      const Real to_plane = Real(1) / seen.norm2, to_rim = Seen::to_rim(q, round.radius);
-      const Real above = std::abs(seen.height), off_rim = length2d(seen.height, seen.radial - round.radius);
-      r.distance = select(over, above, off_rim);
-      r.point_b = Seen::at(round.center, q, select(over, to_plane, to_rim));
-      r.param_b = Vec2<Real>(select(over, seen.radial, round.radius), seen.angle());
+      Answers::over_disk(seen, round.center, round.radius, r);
     } else {
-      r.distance = length2d(seen.height, seen.radial - round.radius);
-      // A point on the axis (rho within rounding of 0) is as close to every rim point: the one at
-      // angle 0, and `unique` false.
-      if (seen.on_axis(round.radius)) {
-        r.point_b = seen.rim_at_zero(round.center, round.radius);
-        r.unique = !(round.radius > 0);
-        return r;
-      }
-      r.point_b = seen.on_rim(round.center, round.radius);
-      r.param_b = Vec2<Real>(seen.angle(), 0);
+      Answers::on_rim(seen, round.center, round.radius, false, r);
+    }
+    return r;
+  }
+};
+
+// A point against a true ring, an annulus with 0 < inner < outer (annulus.hpp): the inner
+// circle's answer over the hole (rho < inner), the disk's over the ring and beyond
+// (docs/annulus.md), from one PointOverRound; param (rho, theta) over the ring, (R, theta) on a
+// rim.
+template <class Real> struct PointRingQuery {
+  using Answers = PointRoundAnswers<Real>;
+
+  CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Vec3<Real>& center, const Vec3<Real>& normal,
+                                         Real inner, Real outer) {
+    const PointOverRound<Real> seen(p, center, normal);
+    if (seen.radial < inner) return length2d(seen.height, seen.radial - inner);
+    return Answers::over_disk_distance(seen, outer);
+  }
+
+  CIRCLEDIST_INLINE static Result<Real> closest(const Vec3<Real>& p, const Vec3<Real>& center, const Vec3<Real>& normal,
+                                                Real inner, Real outer) {
+    const PointOverRound<Real> seen(p, center, normal);
+    Result<Real> r;
+    r.point_a = p;
+    if (seen.radial < inner) {
+      Answers::on_rim(seen, center, inner, true, r);
+    } else {
+      Answers::over_disk(seen, center, outer, r);
     }
     return r;
   }

@@ -42,6 +42,7 @@ namespace circledist::detail {
 // any x86-64 processor, and the caller asks the processor first (has_lanes()). Not FMA: the
 // lanes must round as the scalar code does, one operation at a time.
 #define CIRCLEDIST_LANES_FN inline __attribute__((always_inline, target("avx")))
+#define CIRCLEDIST_LANES_FN_LAMBDA __attribute__((always_inline, target("avx")))
 
 constexpr int kLanes = 4;
 
@@ -156,27 +157,37 @@ CIRCLEDIST_LANES_FN bool atan2_lanes(Lanes y, Lanes x, Lanes& angle) {
   return true;
 }
 
-// A point and a round (circle or disk) per lane, and closest_points' answer per lane; the caller
-// moves them from and to its own layout.
+// What the lanes' points are measured against: circles, disks, or true rings (annuli with
+// 0 < inner < outer, PointRingQuery).
+enum class LaneTarget { kCircle, kDisk, kRing };
+
+// A point and a round (circle, disk or ring) per lane, and closest_points' answer per lane; the
+// caller moves them from and to its own layout.
 struct PointRoundLanes {
   Lanes px, py, pz;  // the point
   Lanes cx, cy, cz;  // the round's center
   Lanes wx, wy, wz;  // its normal, as given
-  Lanes radius;
+  Lanes radius;      // its radius (a ring's outer one)
+  Lanes inner;       // a ring's inner radius (unused for circles and disks)
 };
 struct PointRoundAnswerLanes {
   Lanes distance;
   Lanes bx, by, bz;        // the closest point of the round (the point itself is the other)
-  Lanes param0, param1;    // the round's param (theta, 0) on a circle, (rho, theta) on a disk
+  Lanes param0, param1;    // the round's param: (theta, 0) on a circle, (rho, theta) on a disk or ring
 };
 
-// PointRoundQuery<double, Interior>::closest in every lane, as the front end's closest_points
-// answers it (no promotion for double; the moderate-range check): the point's param is (0, 0) and
-// `unique` true. False, with `out` untouched, where a lane leaves the common path (the caller
-// then asks the scalar query for every lane).
-template <bool Interior>
+// PointRoundQuery<double, Target == kDisk>::closest (PointRingQuery::closest for rings) in every
+// lane, as the front end's closest_points answers it (no promotion for double; the moderate-range
+// check): the point's param is (0, 0) and `unique` true. False, with `out` untouched, where a lane
+// leaves the common path (the caller then asks the scalar query for every lane).
+template <LaneTarget Target>
 CIRCLEDIST_LANES_FN bool point_round_closest_lanes(const PointRoundLanes& in, PointRoundAnswerLanes& out) {
+  constexpr bool circle = Target == LaneTarget::kCircle, ring = Target == LaneTarget::kRing;
   const Lanes wx = in.wx, wy = in.wy, wz = in.wz, radius = in.radius;
+  // A ring in every lane, else the annulus's other kinds (annulus_kind) answer.
+  if constexpr (ring) {
+    if (lanes_set((in.inner > Lanes::both(0)) & (in.inner < radius)) != kAllLanes) return false;
+  }
   // PointOverRound's constructor.
   const Lanes dx = in.px - in.cx, dy = in.py - in.cy, dz = in.pz - in.cz;
   const Lanes norm2 = wx * wx + wy * wy + wz * wz;
@@ -188,30 +199,53 @@ CIRCLEDIST_LANES_FN bool point_round_closest_lanes(const PointRoundLanes& in, Po
   const Lanes cross = sqrt(mx * mx + my * my + mz * mz);
   const Lanes height = (wx * dx + wy * dy + wz * dz) * inv_s;
   const Lanes radial = cross * inv_s;
-  if constexpr (!Interior) {  // on_axis: the scalar query's own branch
-    constexpr double tol = 8 * std::numeric_limits<double>::epsilon();
-    if (lanes_set(cross <= Lanes::both(tol) * s * (radius + (abs(dx) + abs(dy) + abs(dz))))) return false;
+  // on_axis() of a rim the answer is on (a circle's; a ring's inner one over its hole): the
+  // scalar query's own branch.
+  constexpr double tol = 8 * std::numeric_limits<double>::epsilon();
+  const auto on_axis = [&](Lanes rim_radius) CIRCLEDIST_LANES_FN_LAMBDA {
+    return cross <= Lanes::both(tol) * s * (rim_radius + (abs(dx) + abs(dy) + abs(dz)));
+  };
+  Lanes hole;  // a ring's lanes over its hole (rho < inner)
+  if constexpr (circle) {
+    if (lanes_set(on_axis(radius))) return false;
+  } else if constexpr (ring) {
+    hole = radial < in.inner;
+    if (lanes_set(hole & on_axis(in.inner))) return false;
   }
   // in_plane() and to_rim().
   const Lanes qx = my * wz - mz * wy, qy = mz * wx - mx * wz, qz = mx * wy - my * wx;
   const Lanes length = sqrt(qx * qx + qy * qy + qz * qz);
-  const Lanes to_rim = select(length > Lanes::both(0), radius / length, Lanes::both(0));
+  const auto to_rim = [&](Lanes rim_radius) CIRCLEDIST_LANES_FN_LAMBDA {
+    return select(length > Lanes::both(0), rim_radius / length, Lanes::both(0));
+  };
   // angle().
   const Lanes x_major = abs(wx) > abs(wy);
   const Lanes along_u = select(x_major, wx * dz - wz * dx, wz * dy - wy * dz) + Lanes::both(0);
   const Lanes along_v = select(x_major, wz * mx - wx * mz, wy * mz - wz * my) + Lanes::both(0);
   Lanes theta;
   if (!atan2_lanes(along_v, s * along_u, theta)) return false;
-  const Lanes off_rim_z = radial - radius;
-  const Lanes off_rim = sqrt(height * height + off_rim_z * off_rim_z);  // length2d
-  Lanes distance = off_rim, scale = to_rim, param0 = theta, param1 = Lanes::both(0);
-  if constexpr (Interior) {
+  const auto from_rim = [&](Lanes rim_radius) CIRCLEDIST_LANES_FN_LAMBDA {  // length2d
+    const Lanes off = radial - rim_radius;
+    return sqrt(height * height + off * off);
+  };
+  Lanes distance, scale, param0, param1;
+  if constexpr (circle) {  // PointRoundAnswers::on_rim
+    distance = from_rim(radius);
+    scale = to_rim(radius);
+    param0 = theta;
+    param1 = Lanes::both(0);
+  } else {  // PointRoundAnswers::over_disk
     const Lanes over = radial <= radius;
     const Lanes to_plane = Lanes::both(1) / norm2;
-    distance = select(over, abs(height), off_rim);
-    scale = select(over, to_plane, to_rim);
+    distance = select(over, abs(height), from_rim(radius));
+    scale = select(over, to_plane, to_rim(radius));
     param0 = select(over, radial, radius);
     param1 = theta;
+  }
+  if constexpr (ring) {  // PointRingQuery: the inner rim over the hole, param (inner, theta)
+    distance = select(hole, from_rim(in.inner), distance);
+    scale = select(hole, to_rim(in.inner), scale);
+    param0 = select(hole, in.inner, param0);
   }
   // ranged_closest_points: a distance out of the moderate range is the scalar path's.
   constexpr double lowest = power_of_two<double>(std::numeric_limits<double>::min_exponent / 4);
