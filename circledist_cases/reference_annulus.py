@@ -116,6 +116,8 @@ def curves_of(shape, toward):
         d = R.sub(d, o)
     ring = AnnulusMP(toward)
     dd = R.dot(d, d)
+    if dd == 0:  # a zero-length segment: its one point
+        return [(lambda t: o, mpf(0), mpf(0), False, mpf(0))]
     t_star = R.dot(R.sub(ring.c, o), d) / dd
     reach = (R.dist(R.add(o, R.scale(t_star, d)), ring.c) + 2 * ring.outer + 1) / ctx.sqrt(dd)
     lo, hi = t_star - reach, t_star + reach
@@ -155,22 +157,33 @@ def minimum_along(curve, other, feature):
 
 
 @functools.lru_cache(maxsize=None)
-def reference(a, b):
-    """The distance between the annulus a and the shape b, at 50 digits (module docstring)."""
+def reference_mp(a, b):
+    """The distance between the annulus a and the shape b, at 50 digits (an mpf; module docstring)."""
     ring = AnnulusMP(a)
     feature = _feature(a, b)
     if b[0] == "point":
-        return float(ring.point_distance(R.vec(b[1])))
+        return ring.point_distance(R.vec(b[1]))
     values = [minimum_along(c, ring.point_distance, feature) for c in curves_of(b, a)]
     if b[0] in ("disk", "annulus"):  # a's rims against the region b
         values += [minimum_along(c, point_distance_function(b), feature) for c in curves_of(a, a)]
-    return float(min(values))
+    return min(values)
 
 
-def bezier_reference(a, ctrl):
-    """The distance between the annulus a and the Bezier curve `ctrl` at 50 digits: the least of
-    the point-annulus closed form over the curve's t (its speed bounded by n max |P_i+1 - P_i|)."""
+def reference(a, b):
+    """reference_mp as a float."""
+    return float(reference_mp(a, b))
+
+
+def bezier_reference_mp(a, ctrl):
+    """The distance between the annulus a and the Bezier curve `ctrl` at 50 digits (an mpf): the
+    least of the point-annulus closed form over the curve's t (its speed bounded by
+    n max |P_i+1 - P_i|)."""
     pts = [R.vec(p) for p in ctrl]
     speed = (len(pts) - 1) * max([R.norm(R.sub(q, p)) for p, q in zip(pts, pts[1:])] + [mpf(0)])
     curve = (lambda t: R.bezier_point(ctrl, t), mpf(0), mpf(1), False, speed)
-    return float(minimum_along(curve, AnnulusMP(a).point_distance, mpf(a[4]) / 8))
+    return minimum_along(curve, AnnulusMP(a).point_distance, _feature(a, ("bezier",)))
+
+
+def bezier_reference(a, ctrl):
+    """bezier_reference_mp as a float."""
+    return float(bezier_reference_mp(a, ctrl))

@@ -52,10 +52,11 @@ PER_PAIR = 4          # cases per (family, kind pair) ...
 MIN_PER_FAMILY = 40   # ... and at least this many per family
 PER_PAIR_NO_ROUND = 2  # cases per (family, kind pair) of the families without a circle or disk
 PER_PAIR_ARC = 2       # cases per (family, kind pair) of the arc families
+PER_PAIR_ANN = 2       # ... and of the annulus families
 # The arc families' direct 50-digit comparison (~0.2 s a case with every combination) takes the
 # first case of every third (family, kind pair): the pair whose index in the family's list is the
 # family's index mod 3, so every arc pair is compared directly in some families.
-DIRECT_ARC_EVERY = 3
+DIRECT_ARC_EVERY = 3   # (the annulus families alike)
 SCALAR_EVERY = 4      # scalar calls on every 4th case
 # The direct 50-digit comparison takes the first case of every (family, kind pair), except for a
 # Bezier curve against a point, line, ray or segment (whose reference costs ~0.5 s a case): one
@@ -70,6 +71,8 @@ def slice_cases():
     for family, (pairs, _) in D.FAMILIES.items():
         if D.is_arc(family):
             n = PER_PAIR_ARC * len(pairs)
+        elif D.is_annulus(family):
+            n = PER_PAIR_ANN * len(pairs)
         elif D.has_round(family):
             n = max(PER_PAIR * len(pairs), MIN_PER_FAMILY)
         else:
@@ -97,7 +100,7 @@ def results():
     firsts = {}
     for c in cases:
         pair = (c["a"], c["b"])
-        if D.is_arc(c["family"]):
+        if D.is_arc(c["family"]) or D.is_annulus(c["family"]):
             fam_pairs = D.FAMILIES[c["family"]][0]
             if fam_pairs.index(pair) % DIRECT_ARC_EVERY != list(D.FAMILIES).index(c["family"]) % DIRECT_ARC_EVERY:
                 continue
