@@ -3,16 +3,18 @@
 A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to
 (every pair of kinds: a circle or disk with any kind, points / lines / rays / segments among
 themselves, a Bezier curve against each of those, an arc against a point, line, ray, segment,
-circle, disk or arc);
+circle, disk or arc, an annulus against every kind);
 every solver ("bracketing", "companion", "polished", "eigen") x precision (float64, long double,
 float32); both argument orders; distance(), closest_points(), within(), distance_if_within() and
 intersects(), batched and scalar.  Each answer is judged by the fast NumPy screen (an independent
 one-parameter minimisation, an upper bound from genuine points) and by the closest points the
 library returns (on their shapes, separation == distance); every accuracy finding is confirmed
 against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py,
-reference_arc.py and reference_linear.py before it counts.  The first case of every (family, kind
+reference_arc.py, reference_annulus.py and reference_linear.py before it counts; closest_points().unique is
+checked where differential.expected_unique's independent rule decides it (exact continua by symmetry:
+False; closed forms and strict convexity with a margin: True).  The first case of every (family, kind
 pair) is also compared with those references directly, for every combination (a Bezier curve
-against a linear piece: one family per pair, DIRECT_BEZIER_LINEAR; the arc families: every third
+against a linear piece: one family per pair, DIRECT_BEZIER_LINEAR; the arc and annulus families: every third
 pair, DIRECT_ARC_EVERY).
 
 Bars (never loosened here): |d - d_true| <= bar * max(d_true, scale), bar 1e-12 in float64, 1e-15
@@ -32,7 +34,10 @@ and kind pair: 36,720 answers, 1.6 s of CPU) and 30 direct references (7.2 s of 
 231,336 answers and 214 direct references in all, 61 s of CPU (114 s of wall time with other
 jobs loading the machine to 6-7; at load ~2 the slice gets a core and its wall time is about its
 CPU time).  Arc-Bezier (2026-11-27) adds its two cases per arc family: 48 tests passed in 80 s
-of wall time and 78 s of CPU at load ~2.  A failure lists one reproducer per finding class;
+of wall time and 78 s of CPU at load ~2.  The 18 annulus families (2026-11-27) add 238
+cases (two per family and kind pair) and 39 direct references, and the unique check runs on
+every case: 1350 cases, 295,480 answers, 257 direct references, 66 tests in 343 s of wall time
+and 99 s of CPU at load ~5 (another long run and three other workers on the 2 cores).  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
