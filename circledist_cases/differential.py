@@ -27,7 +27,19 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    beside it, the point inside the span, or beyond both ends), and the arcs' own: ends at the
    features (arc_ends), a round's axis through an arc end (arc_end_on_axis), concentric coplanar
    spans overlapping, disjoint or touching at an end (arc_spans), tiny angles, 2 pi - tiny and
-   2 pi exactly (arc_angles).
+   2 pi exactly (arc_angles).  Annuli (issue 19): an annulus against every kind, the annulus
+   second (ANN_PAIRS; an annulus's data is centre, normal, OUTER radius, inner radius), in the
+   "ann_" families: the disk families applied to annuli (_ann_variant: the base family's case
+   with its annuli drawn as disks, each then holed -- inner radius 0, equal to the outer, 1e-9
+   or 1e-9..1e-6 of it, a dyadic quarter / half / three quarters in exact frames, or any
+   fraction -- and its arcs cut from circles as above; ann_axis is a line through the hole along
+   or near the axis), and the annuli's own: pieces in the hole, coplanar or lifted 1e-9..1e-3
+   (ann_hole: points, short segments inside the inner rim, lines through the hole, curves,
+   circles, arcs, disks and annuli inside it, up to 1e-12 short of touching), coplanar rounds
+   and annuli over the ring (ann_overlap), inner 0 / = outer / 1e-9 x outer (ann_degenerate;
+   inner 0 must answer as the disk and inner = outer as the circle, to the bit: _check_hole), a
+   piece tangent to or 1e-16..1e-4 off the inner rim (ann_inner_tangent), far-translated scenes
+   (ann_far_translated).
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
    distance is the minimum over one parameter of a closed form (point-circle, point-disk,
@@ -35,7 +47,12 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    span, else the nearer end's): a circle's angle against the other shape (both ways round for
    two rounds), a line's parameter against the round and the round's angle against the line, an
    arc's angle over [0, angle] wherever a circle's runs over [0, 2 pi) and the arc's closed form
-   wherever a round's is the target, a Bezier curve's t against the round (each half from its
+   wherever a round's is the target; an annulus as a target: the point-annulus closed form (|z|
+   over the ring, the inner rim's distance over the hole, the outer's beyond), and as a moving
+   shape both its rims (its inner rim is one more form: against a region, the rims of each
+   region against the other's closed form are exact, see reference_annulus's docstring; against
+   a curve the other's parameter against the closed form is exact, the rims only add genuine
+   pairs), a Bezier curve's t against the round (each half from its
    own end, so parameters near an end keep their full precision).  Dense sampling, then a
    vectorised beam search (nested re-sampling around the
    best few sampled local minima) in float64, then long-double levels around the best.  Where
@@ -73,8 +90,20 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
    bezier_other), reference_arc.py (arcs: the arc's angle against the other's closed form) and
    reference_linear.py (linear pieces among themselves: the search of
-   tests/test_linear_accuracy.py), and evaluates the screen's own best pair at 50 digits, so a
-   reference that missed the minimum is caught, not trusted.
+   tests/test_linear_accuracy.py), reference_annulus.py (annuli: the other shape's parameter
+   against the point-annulus closed form, rim by rim for regions), and evaluates the screen's own
+   best pair at 50 digits, so a reference that missed the minimum is caught, not trusted.
+   closest_points().unique is checked against an independent rule (expected_unique, the comment
+   above it gives it in full) on every kind pair: it must be False where the inputs are exactly
+   (rational arithmetic on the given floats) a configuration with a continuum of closest pairs
+   by symmetry -- a point, line, ray or segment on the axis of a circle, an arc or an annulus
+   with a hole; two coaxial shapes among circle, disk, annulus and arc (not two arcs) -- and True
+   where a closed form or strict convexity proves one closest pair with a margin of 1e-6 (a
+   point against a point, a linear piece or a disk; a point against a circle, an arc or an
+   annulus, its nearest candidate better than the others by 1e-6 x max(d, R); two linear pieces
+   at least 1e-3 rad from parallel).  Elsewhere (curve pairs, near-continua that rounding breaks)
+   it is not checked: the one-parameter references do not certify that the other shape's
+   closest point is unique.
 
 Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius (circle, disk
 or arc) in the query
