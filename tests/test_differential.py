@@ -12,7 +12,8 @@ library returns (on their shapes, separation == distance); every accuracy findin
 against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py,
 reference_arc.py, reference_annulus.py and reference_linear.py before it counts; closest_points().unique is
 checked where differential.expected_unique's independent rule decides it (exact continua by symmetry:
-False; closed forms and strict convexity with a margin: True).  The first case of every (family, kind
+False; closed forms and strict convexity with a margin: True), and in the direct comparisons also where
+the 50-digit reference's own local minima show a single strict minimum (differential.reference_unique).  The first case of every (family, kind
 pair) is also compared with those references directly, for every combination (a Bezier curve
 against a linear piece: one family per pair, DIRECT_BEZIER_LINEAR; the arc and annulus families: every third
 pair, DIRECT_ARC_EVERY).
@@ -39,7 +40,9 @@ cases (two per family and kind pair) and 39 direct references, and the unique ch
 every case: 1350 cases, 295,480 answers, 257 direct references, 66 tests (one xfail: the
 polished policy's unique flag on an arc lying on a coaxial circle, KNOWN_FAILURES) in 343..381 s
 of wall time and 99..102 s of CPU at load ~5-6 (another long run and three other workers on the
-2 cores): about 23 s of CPU more than before.  A failure lists one reproducer per finding class;
+2 cores): about 23 s of CPU more than before.  The direct comparison's unique check from the
+reference's own minima (differential.reference_unique: a circle or arc against a line, ray,
+segment or disk, float64 scenes) adds 6 s: 107.6 s of CPU, 277 s of wall time at load ~5.  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
