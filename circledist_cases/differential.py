@@ -27,7 +27,19 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    beside it, the point inside the span, or beyond both ends), and the arcs' own: ends at the
    features (arc_ends), a round's axis through an arc end (arc_end_on_axis), concentric coplanar
    spans overlapping, disjoint or touching at an end (arc_spans), tiny angles, 2 pi - tiny and
-   2 pi exactly (arc_angles).
+   2 pi exactly (arc_angles).  Annuli (issue 19): an annulus against every kind, the annulus
+   second (ANN_PAIRS; an annulus's data is centre, normal, OUTER radius, inner radius), in the
+   "ann_" families: the disk families applied to annuli (_ann_variant: the base family's case
+   with its annuli drawn as disks, each then holed -- inner radius 0, equal to the outer, 1e-9
+   or 1e-9..1e-6 of it, a dyadic quarter / half / three quarters in exact frames, or any
+   fraction -- and its arcs cut from circles as above; ann_axis is a line through the hole along
+   or near the axis), and the annuli's own: pieces in the hole, coplanar or lifted 1e-9..1e-3
+   (ann_hole: points, short segments inside the inner rim, lines through the hole, curves,
+   circles, arcs, disks and annuli inside it, up to 1e-12 short of touching), coplanar rounds
+   and annuli over the ring (ann_overlap), inner 0 / = outer / 1e-9 x outer (ann_degenerate;
+   inner 0 must answer as the disk and inner = outer as the circle, to the bit: _check_hole), a
+   piece tangent to or 1e-16..1e-4 off the inner rim (ann_inner_tangent), far-translated scenes
+   (ann_far_translated).
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
    distance is the minimum over one parameter of a closed form (point-circle, point-disk,
@@ -35,7 +47,12 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    span, else the nearer end's): a circle's angle against the other shape (both ways round for
    two rounds), a line's parameter against the round and the round's angle against the line, an
    arc's angle over [0, angle] wherever a circle's runs over [0, 2 pi) and the arc's closed form
-   wherever a round's is the target, a Bezier curve's t against the round (each half from its
+   wherever a round's is the target; an annulus as a target: the point-annulus closed form (|z|
+   over the ring, the inner rim's distance over the hole, the outer's beyond), and as a moving
+   shape both its rims (its inner rim is one more form: against a region, the rims of each
+   region against the other's closed form are exact, see reference_annulus's docstring; against
+   a curve the other's parameter against the closed form is exact, the rims only add genuine
+   pairs), a Bezier curve's t against the round (each half from its
    own end, so parameters near an end keep their full precision).  Dense sampling, then a
    vectorised beam search (nested re-sampling around the
    best few sampled local minima) in float64, then long-double levels around the best.  Where
@@ -73,8 +90,23 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
    bezier_other), reference_arc.py (arcs: the arc's angle against the other's closed form) and
    reference_linear.py (linear pieces among themselves: the search of
-   tests/test_linear_accuracy.py), and evaluates the screen's own best pair at 50 digits, so a
-   reference that missed the minimum is caught, not trusted.
+   tests/test_linear_accuracy.py), reference_annulus.py (annuli: the other shape's parameter
+   against the point-annulus closed form, rim by rim for regions), and evaluates the screen's own
+   best pair at 50 digits, so a reference that missed the minimum is caught, not trusted.
+   closest_points().unique is checked against an independent rule (expected_unique, the comment
+   above it gives it in full) on every kind pair: it must be False where the inputs are exactly
+   (rational arithmetic on the given floats) a configuration with a continuum of closest pairs
+   by symmetry -- a point, line, ray or segment on the axis of a circle, an arc or an annulus
+   with a hole; two coaxial shapes among circle, disk, annulus and arc (not two arcs) -- and True
+   where a closed form or strict convexity proves one closest pair with a margin of 1e-6 (a
+   point against a point, a linear piece or a disk; a point against a circle, an arc or an
+   annulus, its nearest candidate better than the others by 1e-6 x max(d, R); two linear pieces
+   at least 1e-3 rad from parallel).  Elsewhere (curve pairs, near-continua that rounding breaks)
+   it is not checked by the screen-driven checker; the direct 50-digit comparison
+   (reference_check, the CI slice's first case of each family and pair) adds True where the
+   reference's own local minima show it for a circle or arc against a convex shape (line, ray,
+   segment, disk: reference_unique -- a single strict minimum over the rim's angle, every other
+   distinct local minimum worse by 1e-6 x max(d, R), not flat within 1e-4 rad).
 
 Bars: |d - d_true| <= bar * max(d_true, scale), the scale being the largest radius (circle, disk
 or arc) in the query
@@ -109,7 +141,11 @@ LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
 # kinds with a radius: the rounds and arcs (an arc is a circle restricted to an angle interval;
 # its data: centre, normal, radius, start, angle -- 11 numbers)
-RIMS = ROUND + ("arc",)
+RIMS = ROUND + ("arc", "annulus")
+# an annulus's data: centre, normal, OUTER radius, inner radius (8 numbers: the outer radius at
+# index 6, where a round's radius is, so scales, translations and frames read it alike); the
+# library's constructor takes (centre, normal, inner, outer)
+TARGET_REGION = ("disk", "annulus")   # closed forms with a face (a disk's |z|, an annulus's too)
 # the pairs with a circle or disk (the families of the first version), then the pairs among
 # points, lines, rays and segments (point before line before ray before segment) and a Bezier
 # curve against each of them (the curve first)
@@ -125,7 +161,13 @@ BL = [("bezier", lk) for lk in LINEAR]
 ARC_OTHERS = ("point", "line", "ray", "segment", "bezier", "circle", "disk", "arc")
 ARC_PAIRS = [(k, "arc") for k in ARC_OTHERS]
 ARC_RR = [p for p in ARC_PAIRS if p[0] in ("circle", "disk", "arc")]   # a circle, disk or arc against an arc
-KIND_PAIRS = ROUND_PAIRS + LL + BL + ARC_PAIRS
+# an annulus against every kind (issue 19), the annulus second (after the arc, and after another
+# annulus: (annulus, annulus)); the "ann_" families (_ann_variant: the disk families with a hole
+# cut in each annulus, arcs cut from circles as the arc families do; then the annuli's own)
+ANN_OTHERS = ("point", "line", "ray", "segment", "bezier", "circle", "disk", "arc", "annulus")
+ANN_PAIRS = [(k, "annulus") for k in ANN_OTHERS]
+ANN_RR = [p for p in ANN_PAIRS if p[0] in ("circle", "disk", "arc", "annulus")]
+KIND_PAIRS = ROUND_PAIRS + LL + BL + ARC_PAIRS + ANN_PAIRS
 LD = np.longdouble
 
 
@@ -478,7 +520,7 @@ def _translate(kind, data, T):
     if kind == "bezier":
         return [[float(x) for x in np.asarray(p) + T] for p in data]
     data = list(data)
-    npos = {"point": 3, "line": 3, "ray": 3, "segment": 6, "circle": 3, "disk": 3, "arc": 3}[kind]
+    npos = {"point": 3, "line": 3, "ray": 3, "segment": 6, "circle": 3, "disk": 3, "arc": 3, "annulus": 3}[kind]
     for i in range(npos):
         data[i] = float(data[i] + T[i % 3])
     return data
@@ -1065,6 +1107,194 @@ def _fam_arc_angles(rng, ka, kb):
     return _arc_variant(str(rng.choice(bases)), extreme=True)(rng, ka, kb)
 
 
+# ---- annuli: the disk families applied to annuli, and the annuli's own (issue 19) -------------
+# An annulus family takes a base family's case with every annulus drawn as a disk (and every arc
+# as a circle, cut to an arc as the arc families do), then cuts a hole in each such disk: inner
+# radius 0 (the disk), the outer radius (the circle), 1e-9..1e-6 of it, a quarter, half or three
+# quarters (exact in exact frames) or any fraction.  Annulus data: centre, normal, OUTER radius,
+# inner radius (RIMS).
+def _ann_base_kind(kind):
+    return {"arc": "circle", "annulus": "disk"}.get(kind, kind)
+
+
+def _axis_normal(data):
+    """Whether a round's normal is a coordinate axis (an exact frame's)."""
+    return sum(1 for x in data[3:6] if x != 0.0) == 1
+
+
+_HOLES = ("zero", "outer", "tiny", "fraction", "any")
+
+
+def _hole(rng, disk, holes=_HOLES):
+    """The disk's data with a hole: [centre, normal, outer, inner]."""
+    R = float(disk[6])
+    how = str(rng.choice(holes))
+    if how == "zero":
+        inner = 0.0
+    elif how == "outer":
+        inner = R
+    elif how == "tiny":
+        inner = R * (1e-9 if rng.random() < 0.5 else _logu(rng, -9, -6))
+    elif how == "fraction" and _axis_normal(disk):
+        inner = R * float(rng.choice([0.25, 0.5, 0.75]))
+    else:
+        inner = R * float(rng.uniform(0.05, 0.95))
+    return [float(x) for x in disk[:7]] + [float(inner)]
+
+
+def _ann_variant(base, holes=_HOLES):
+    """The generator of an annulus family: the base family's case (annuli drawn as disks, arcs as
+    circles), its arcs cut (_arc_of) and its annuli holed (_hole)."""
+    def gen(rng, ka, kb):
+        bka, bkb = _ann_base_kind(ka), _ann_base_kind(kb)
+        a, b = FAMILIES[base][1](rng, bka, bkb)
+        a, b = _plain(a), _plain(b)
+        if ka == "arc":
+            a = _arc_of(rng, a, bkb, b)
+        if ka == "annulus":
+            a = _hole(rng, a, holes)
+        return a, _hole(rng, b, holes)
+    return gen
+
+
+def _ann_pairs(base_pairs):
+    """The annulus pairs whose disk version (annuli drawn as disks, arcs as circles) the base
+    family covers."""
+    return [p for p in ANN_PAIRS if (_ann_base_kind(p[0]), "disk") in base_pairs]
+
+
+def _ann_local(rng, fr, lo=0.3, hi=0.8):
+    """The annulus of a local frame (centre 0, normal z): (data, outer, inner); in exact frames
+    dyadic radii."""
+    Ro = _radius(rng, fr.exact)
+    Ri = Ro * (float(rng.choice([0.25, 0.5, 0.75])) if fr.exact else float(rng.uniform(lo, hi)))
+    return fr.round(np.zeros(3), EZ, Ro) + [Ri], Ro, Ri
+
+
+def _lift(rng, R):
+    """0 (coplanar) or +-1e-9..1e-3 x R."""
+    return _tiny(rng, -9, -3, 0.4) * R
+
+
+def _inner_circle(b, fr, Ri):
+    """The inner rim of the local annulus as a circle's data (world)."""
+    return fr.round(np.zeros(3), EZ, Ri)
+
+
+def _fam_ann_hole(rng, ka, kb):
+    """Something in the hole: a point, a segment, a Bezier curve, a circle, arc, disk or annulus
+    inside the inner rim, coplanar or lifted by 1e-9..1e-3 radii, concentric or not (a circle's
+    radius up to 1e-12 short of touching the inner rim); lines and rays through the hole, in the
+    plane (crossing the ring) or tilted through it."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    b, Ro, Ri = _ann_local(rng, fr)
+    h = _lift(rng, Ro)
+    r, t = _in_plane(rng, ex)
+    if ka == "point":
+        return fr.pos(r * Ri * fr.param(0, 0.875) + h * EZ), b
+    if ka in ("line", "ray", "segment"):
+        X = r * Ri * fr.param(0, 0.875) + h * EZ
+        if ka == "segment" and rng.random() < 0.5:
+            # a short segment wholly inside the hole
+            room = math.sqrt(max(Ri * Ri - float(np.dot(X[:2], X[:2])), 0.0))
+            s0, s1 = room * rng.uniform(-0.9, 0.9), room * rng.uniform(-0.9, 0.9)
+            return fr.pos(X + s0 * t) + fr.pos(X + s1 * t), b
+        psi = 0.0 if rng.random() < 0.5 else float(rng.uniform(0.1, 1.5))
+        d = math.cos(psi) * t + math.sin(psi) * EZ
+        return fr.linear(ka, X, d, Ri), b
+    if ka == "bezier":
+        ctrl = [np.array([*(rng.normal(size=2) * 0.3 * Ri), h]) for _ in range(_npts(rng))]
+        return fr.bezier(ctrl), b
+    off = 0.0 if rng.random() < 0.4 else fr.param(0, 0.375)
+    c = r * Ri * off + h * EZ
+    room = Ri * (1 - off)
+    if rng.random() < 0.3:
+        Rc = room * (1 - _logu(rng, -12, -3))
+    else:
+        Rc = room * (float(rng.choice([0.5, 0.75])) if ex else float(rng.uniform(0.1, 0.95)))
+    n = EZ * float(rng.choice([-1.0, 1.0]))
+    if rng.random() < 0.2 and not ex:
+        n = _rot(n, _perp(rng, EZ), _logu(rng, -12, -3))
+    a = fr.round(c, n, Rc)
+    if ka == "arc":
+        a = _arc_of(rng, a, "circle", _inner_circle(b, fr, Ri))
+    elif ka == "annulus":
+        a = _hole(rng, a, ("fraction", "any", "tiny"))
+    return a, b
+
+
+def _fam_ann_overlap(rng, ka, kb):
+    """Coplanar (or parallel at heights 1e-16..1e-6) circles, arcs, disks and annuli over the
+    ring: centres anywhere from concentric (exactly, in exact frames) to beyond the outer rim,
+    the other's radii from inside the hole to beyond the outer rim."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    b, Ro, Ri = _ann_local(rng, fr)
+    h = _tiny(rng, -16, -6, 0.5) * Ro
+    r, _ = _in_plane(rng, ex)
+    Ra = Ro * (float(rng.choice([0.25, 0.5, 0.75, 1.0, 1.5])) if ex else float(rng.uniform(0.1, 2)))
+    off = 0.0 if rng.random() < 0.25 else fr.param(0, 1.5) * (Ra + Ro) / 2
+    a = fr.round(off * r + h * EZ, EZ * float(rng.choice([-1.0, 1.0])), Ra)
+    if ka == "arc":
+        a = _arc_of(rng, a, "circle", _inner_circle(b, fr, Ri) if rng.random() < 0.5 else b[:7])
+    elif ka == "annulus":
+        a = _hole(rng, a, ("fraction", "any"))
+    return a, b
+
+
+def _fam_ann_degenerate(rng, ka, kb):
+    """Annuli of inner radius 0 (the disk's answers, to the bit: _check_hole), equal to the outer
+    one (the circle's) or 1e-9 of it, over the random, tangent, axis, coplanar, concentric and
+    nearly touching cases."""
+    bases = [f for f in ("random", "tangent", "axis", "coplanar", "concentric", "near_touching")
+             if (ka, kb) in _ann_pairs(FAMILIES[f][0])]
+    return _ann_variant(str(rng.choice(bases)), holes=("zero", "outer", "tiny"))(rng, ka, kb)
+
+
+def _fam_ann_inner_tangent(rng, ka, kb):
+    """A piece tangent to the inner rim, or 1e-16..1e-4 radii inside or outside it: points by the
+    inner rim, lines, rays and segments through the hole grazing it (tilted from the plane by
+    0.1..1.4 rad), a Bezier arch grazing it, circles, arcs, disks and annuli touching it from
+    inside the hole (coplanar) or standing on it."""
+    fr = _Frame(rng)
+    ex = fr.exact
+    b, Ro, Ri = _ann_local(rng, fr)
+    r, t = _in_plane(rng, ex)
+    X = Ri * r
+    h = _tiny(rng, -16, -4, 0.3) * Ri
+    if ka == "point":
+        return fr.pos(X + h * (r if ex or rng.random() < 0.5 else _unit(rng))), b
+    if ka in ("line", "ray", "segment", "bezier"):
+        psi = float(rng.uniform(0.1, 1.4))
+        d = math.cos(psi) * t + math.sin(psi) * EZ
+        Y = X + h * r
+        if ka == "bezier":
+            L = Ri * rng.uniform(0.3, 2)
+            delta = -r * Ri * rng.uniform(0.05, 0.5)        # bulging into the hole
+            ctrl = _elevate([Y - L * d - delta, Y + delta, Y + L * d - delta], max(3, _npts(rng)))
+            return fr.bezier(ctrl), b
+        return fr.linear(ka, Y, d, Ri), b
+    phi = float(rng.choice([0.0, math.pi / 2, rng.uniform(0, 2 * math.pi)]))
+    Rc = Ri * (float(rng.choice([0.25, 0.5])) if ex else float(rng.uniform(0.1, 0.9))) if phi == 0.0 else \
+        _radius(rng, ex) * Ri
+    c, n, w = _tangent_round(rng, Ri, Rc, ex, phi=phi)
+    a = fr.round(c + h * w, n, Rc)
+    if ka == "arc":
+        a = _arc_of(rng, a, "circle", _inner_circle(b, fr, Ri))
+    elif ka == "annulus":
+        a = _hole(rng, a, ("fraction", "any"))
+    return a, b
+
+
+_ANN_TRANSLATED_BASES = ("ann_random", "ann_tangent", "ann_axis", "ann_coplanar", "ann_concentric",
+                         "ann_near_touching", "ann_parallel_height", "ann_hole", "ann_overlap", "ann_inner_tangent")
+
+
+def _fam_ann_far_translated(rng, ka, kb):
+    return _fam_far_translated(rng, ka, kb, bases=_ANN_TRANSLATED_BASES)
+
+
 RR = [("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LR = [(lk, rk) for lk in LINEAR for rk in ROUND]
 LR3 = [(lk, rk) for lk in ("line", "ray", "segment") for rk in ROUND]
@@ -1117,18 +1347,36 @@ FAMILIES.update({
     "arc_angles": (ARC_PAIRS, _fam_arc_angles),
     "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
 })
+# annuli (issue 19): the disk families applied to annuli (ann_<base>: the base family's cases with
+# their annuli holed from disks and their arcs cut from circles, _ann_variant), then the annuli's own
+for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", "coplanar", "concentric",
+              "near_concentric", "far_origin", "radius_ratio", "near_touching", "parallel_height", "huge_circle"):
+    FAMILIES["ann_" + _base] = (_ann_pairs(FAMILIES[_base][0]), _ann_variant(_base))
+FAMILIES.update({
+    "ann_hole": (ANN_PAIRS, _fam_ann_hole),
+    "ann_overlap": (ANN_RR, _fam_ann_overlap),
+    "ann_degenerate": (ANN_PAIRS, _fam_ann_degenerate),
+    "ann_inner_tangent": (ANN_PAIRS, _fam_ann_inner_tangent),
+    "ann_far_translated": (ANN_PAIRS, _fam_ann_far_translated),
+})
 
 
 def has_round(family):
     """Whether a family's kind pairs include a circle or disk (the sixteen first families and piece_near_plane) or
     not (the pairs among points, lines, rays and segments and Bezier curves against them); the
-    arc families (is_arc) count as neither."""
-    return not is_arc(family) and any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
+    arc families (is_arc) and the annulus families (is_annulus) count as neither."""
+    return not is_arc(family) and not is_annulus(family) and any(set(ROUND) & set(pair)
+                                                                 for pair in FAMILIES[family][0])
 
 
 def is_arc(family):
-    """Whether a family is one of the arcs' (its kind pairs have an arc)."""
-    return any("arc" in pair for pair in FAMILIES[family][0])
+    """Whether a family is one of the arcs' (its kind pairs have an arc, and no annulus)."""
+    return not is_annulus(family) and any("arc" in pair for pair in FAMILIES[family][0])
+
+
+def is_annulus(family):
+    """Whether a family is one of the annuli's (its kind pairs have an annulus)."""
+    return any("annulus" in pair for pair in FAMILIES[family][0])
 
 
 def _plain(data):
@@ -1316,7 +1564,7 @@ def _nrm(a):
 
 
 # ---- closed forms (any float dtype; arrays broadcast (n, k, 3) against (n, 1, 3)) -------------
-def _round_dist(w, n, R, disk, with_rho=False, span=None):
+def _round_dist(w, n, R, disk, with_rho=False, span=None, inner=None):
     """Distance of the points w (relative to the centre) from the round; with_rho: also their
     distance rho from its axis.  span (an arc: its unit u, v = n x u, angle and whether it is
     the whole circle, broadcast like n, n, R, R): the circle restricted to the angles [0, angle]
@@ -1331,6 +1579,9 @@ def _round_dist(w, n, R, disk, with_rho=False, span=None):
     d = np.sqrt(z * z + e * e)
     if disk:
         d = np.where(rho <= R, np.abs(z), d)
+    if inner is not None:
+        # an annulus (disk=True): over its hole the inner rim's distance (docs/annulus.md (1))
+        d = np.where(rho < inner, np.sqrt(z * z + (inner - rho) * (inner - rho)), d)
     if span is not None:
         u, v, ang, whole = span
         phi = np.arctan2(_dot(w, v), _dot(w, u))
@@ -1350,6 +1601,15 @@ def _span(P, x1=True):
         return None
     f = _x1 if x1 else (lambda v: v)
     return f(P["tu"]), f(P["tv"]), f(P["tang"]), f(P["twhole"])
+
+
+def _tdist(X, P, kind, x1=True, with_rho=False):
+    """The closed-form distance of the points X from a circle, disk, arc or annulus target whose
+    parameters (_rim_parts' "target": n, R, an arc's span, an annulus's inner radius Rin) are in
+    P, shaped (n, k) (x1) or (n,)."""
+    f = _x1 if x1 else (lambda v: v)
+    inner = f(P["Rin"]) if "Rin" in P else None
+    return _round_dist(X, f(P["n"]), f(P["R"]), kind in TARGET_REGION, with_rho, span=_span(P, x1), inner=inner)
 
 
 def _lin_dist(w, m, mm, lo, hi):
@@ -1433,7 +1693,7 @@ class _Form:
     def value(self, x, P):
         X = self.points(x, P)
         if self.target in RIMS:
-            return _round_dist(X, _x1(P["n"]), _x1(P["R"]), self.target == "disk", span=_span(P))
+            return _tdist(X, P, self.target)
         d = _lin_dist(X - _x1(P["tb0"]), _x1(P["tm"]), _x1(P["tmm"]), _x1(P["tlo"]), _x1(P["thi"]))
         if "mperp" not in P:
             return d
@@ -1465,8 +1725,7 @@ class _Form:
             v = self.f(x)
             return v, v
         with np.errstate(invalid="ignore", over="ignore"):
-            v, rho = _round_dist(self.points(x, P), _x1(P["n"]), _x1(P["R"]), self.target == "disk", True,
-                                 span=_span(P))
+            v, rho = _tdist(self.points(x, P), P, self.target, with_rho=True)
         return np.where(np.isnan(v), np.inf, v), rho
 
     def magnitude(self, x):
@@ -1921,9 +2180,18 @@ def _rim_parts(kind, data):
     Rl = data[:, 6].astype(LD)
     m = len(data)
     target = dict(n=n, R=Rl)
+    if kind == "annulus":
+        # (its inner rim moves too: "inner"; its features' scale, for the zooms: the least of its
+        # positive radii and width)
+        Rin = data[:, 7].astype(LD)
+        target.update(Rin=Rin)
+        width = data[:, 6] - data[:, 7]
+        feat = np.min(np.where(np.stack([data[:, 7], width]) > 0, np.stack([data[:, 7], width]), np.inf), axis=0)
+        return dict(n=n, U=U, V=V, R=Rl, inner=Rin, feature=np.minimum(data[:, 6], feat), hi=np.full(m, 2 * math.pi),
+                    periodic=True, grid=_THETA_GRID, target=target)
     if kind != "arc":
         return dict(n=n, U=U, V=V, R=Rl, hi=np.full(m, 2 * math.pi), periodic=True, grid=_THETA_GRID,
-                    target=target)
+                    target=target, feature=data[:, 6])
     S = data[:, 7:10].astype(LD)
     S = S / np.max(np.abs(S), axis=1, keepdims=True)
     u = S - _dot(S, n)[:, None] * n
@@ -1933,7 +2201,7 @@ def _rim_parts(kind, data):
     whole = ang >= 2 * math.pi
     target.update(tu=u, tv=v, tang=ang.astype(LD), twhole=whole.astype(float))
     return dict(n=n, U=u, V=v, R=Rl, hi=np.where(whole, 2 * math.pi, ang), periodic=False, grid=_S_GRID,
-                target=target)
+                target=target, feature=data[:, 6])
 
 
 class ScreenResult:
@@ -1965,7 +2233,7 @@ def _screen(cases, use_ld):
     if ka == "point":
         A = _stack(cases, "a_data")
         w = _diff_ld(A[:, :3], Cb)
-        v = _round_dist(w[:, None], nb[:, None], Rbl[:, None], kb == "disk", span=_span(tb))[:, 0]
+        v = _tdist(w[:, None], tb, kb)[:, 0]
         slack = 16 * EPSLD * (_nrm(w) + Rbl)
         return ScreenResult(v, slack.astype(float), ["point"] * n, [LD(0)] * n)
     if ka in ("line", "ray", "segment"):
@@ -1974,13 +2242,19 @@ def _screen(cases, use_ld):
         # (1) the round's rim (an arc's: over its span) against the linear shape's closed form
         p1 = _P(D=np.zeros((n, 3), dtype=LD), Ra=Rbl, Ua=Ub, Va=Vb, **tgt)
         forms.append(_Form("rim|linear", "rim", "linear", p1, np.zeros(n), rb["hi"], rb["periodic"], rb["grid"]))
+        zooms = [None]
+        if "inner" in rb:
+            # (1') an annulus's inner rim too (every form is an upper bound from genuine points)
+            p1i = _P(D=np.zeros((n, 3), dtype=LD), Ra=rb["inner"], Ua=Ub, Va=Vb, **tgt)
+            forms.append(_Form("rim_inner|linear", "rim", "linear", p1i, np.zeros(n), rb["hi"], True, rb["grid"]))
+            zooms.append(None)
         # (2) the linear shape's parameter against the round's (the arc's) closed form
         wlo, whi = _window(tgt["tb0"], tgt["tm"], tgt["tlo"], tgt["thi"], Rbl)
         p2 = _P(b0=tgt["tb0"], m=tgt["tm"], **tb)
         forms.append(_Form("line|round", "line", kb, p2, wlo, whi, False, _S_GRID))
         # (the point moves by |m| per unit of s; the rim's own form is sampled at 1/80 of its radius)
         speed = np.sqrt(tgt["tmm"].astype(float))
-        zooms = [None, (lambda c, a, b: speed[c], Rb)]
+        zooms.append((lambda c, a, b: speed[c], rb["feature"]))
     elif ka == "bezier":
         # two halves, each parametrised from its end (t on [0, 1/2], and s = 1 - t on [0, 1/2] with
         # the control points reversed): parameters near an end keep their full relative precision,
@@ -1997,7 +2271,7 @@ def _screen(cases, use_ld):
                          _T_GRID)
             # (always refined in long double: a float32 scene of a curve 1e5 times larger than the
             # round needs it for the float32 bar too)
-            v, a, b, u, mag = _minimize_bezier(form, dd, tb, Rbl)
+            v, a, b, u, mag = _minimize_bezier(form, dd, tb, rb["feature"].astype(LD))
             for j in np.flatnonzero(v < best):
                 best[j], names[j], params[j] = v[j], name, (float(a[j]), float(b[j]), LD(u[j]))
                 slack[j] = 16 * EPSLD * float(mag[j])
@@ -2013,7 +2287,18 @@ def _screen(cases, use_ld):
         pb = _P(D=-Dab, Ra=Rbl, Ua=Ub, Va=Vb, **ra["target"])
         forms.append(_Form("rim_b|a", "rim", ka, pb, np.zeros(n), rb["hi"], rb["periodic"], rb["grid"]))
         # a rim point moves by its radius per radian (a huge circle passing a small round)
-        zooms = [(lambda c, a, b: Ra[c], Rb), (lambda c, a, b: Rb[c], Ra)]
+        zooms = [(lambda c, a, b: Ra[c], rb["feature"]), (lambda c, a, b: Rb[c], ra["feature"])]
+        # an annulus's inner rim against the other's closed form too
+        if "inner" in ra:
+            Ria = A[:, 7]
+            pai = _P(D=Dab, Ra=ra["inner"], Ua=ra["U"], Va=ra["V"], **tb)
+            forms.append(_Form("rim_a_inner|b", "rim", kb, pai, np.zeros(n), ra["hi"], True, ra["grid"]))
+            zooms.append((lambda c, a, b: Ria[c], rb["feature"]))
+        if "inner" in rb:
+            Rib = B[:, 7]
+            pbi = _P(D=-Dab, Ra=rb["inner"], Ua=Ub, Va=Vb, **ra["target"])
+            forms.append(_Form("rim_b_inner|a", "rim", ka, pbi, np.zeros(n), rb["hi"], True, rb["grid"]))
+            zooms.append((lambda c, a, b: Rib[c], ra["feature"]))
     best = np.full(n, LD(np.inf), dtype=LD)
     best_x = np.zeros(n, dtype=LD)
     best_f = np.zeros(n, dtype=int)
@@ -2256,7 +2541,7 @@ def residuals(kind, data, pts, params=None):
         n, tgt = parts["n"], parts["target"]
         w = _pt_minus(P, data[:, :3])
         R = data[:, 6].astype(LD)
-        d = _round_dist(w[:, None], n[:, None], R[:, None], kind == "disk", span=_span(tgt))[:, 0]
+        d = _tdist(w[:, None], tgt, kind)[:, 0]
         return d, 16 * LD(EPSLD) * (_nrm(w) + R)
     C0 = data[:, :3]
     w = _pt_minus(P, C0)
@@ -2298,6 +2583,8 @@ def make_shape(cd, kind, data, dtype=np.float64):
         return cd.Segment(arr[..., :3], arr[..., 3:6])
     if kind == "arc":
         return cd.Arc(arr[..., :3], arr[..., 3:6], arr[..., 6], arr[..., 7:10], arr[..., 10])
+    if kind == "annulus":
+        return cd.Annulus(arr[..., :3], arr[..., 3:6], arr[..., 7], arr[..., 6])
     return getattr(cd, kind.capitalize())(arr[..., :3], arr[..., 3:6], arr[..., 6])
 
 
@@ -2419,7 +2706,7 @@ def check_cases(cd, cases, combo_list=None, scalar=None, screens=None, within=Tr
     findings = []
     # answers: every value the library returned for one query, per entry point (a batched call of
     # n cases gives n; each within / distance_if_within probe is one)
-    stats = {"cases": len(cases), "answers": collections.Counter()}
+    stats = {"cases": len(cases), "answers": collections.Counter(), "unique_checked": collections.Counter()}
     screens = {} if screens is None else screens
     for (ka, kb, _), idx in _group(cases).items():
         group = [cases[i] for i in idx]
@@ -2581,6 +2868,14 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
         if "arc" in (ka, kb) and d_orders:
             A, Bd = data[scene]
             findings += _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats)
+        # an annulus of inner radius 0 is the disk, of inner radius = outer the circle: the disk's
+        # or circle's query answers it (docs/annulus.md), to the bit
+        if "annulus" in (ka, kb) and d_orders:
+            A, Bd = data[scene]
+            findings += _check_hole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats)
+        # closest_points().unique against the independent rule (expected_unique)
+        if d_orders:
+            findings += _check_unique(res, d_orders, solver, precision, gcases, stats)
         # batched == scalar
         sel = [j for j, i in enumerate(idx) if i in scalar]
         if sel:
@@ -2616,6 +2911,286 @@ def _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
         for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
             out.append(_finding("whole_arc_vs_circle", gcases[sel[q]], solver, precision, order, "distance",
                                 library=d_orders[order][sel[q]], circle=d[q]))
+    return out
+
+
+def _check_hole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
+    """Cases with an annulus of inner radius 0 or inner = outer (as given: float32 scenes keep
+    both) must give the distance of the same query with that annulus replaced by its disk or its
+    outer circle, to the bit (docs/annulus.md: the disk's / circle's query is called).  An
+    annulus-annulus case with only one degenerate annulus is compared with the disk-annulus or
+    circle-annulus query."""
+    out = []
+    for which, kind, X in (("a", ka, A), ("b", kb, Bd)):
+        if kind != "annulus":
+            continue
+        for as_kind, rows in (("disk", X[:, 7] == 0), ("circle", X[:, 7] == X[:, 6])):
+            sel = np.flatnonzero(rows)
+            if not len(sel):
+                continue
+            dt = _dtype(precision)
+            if which == "a":
+                SA, SB = make_shape(cd, as_kind, A[sel, :7], dt), make_shape(cd, kb, Bd[sel], dt)
+            else:
+                SA, SB = make_shape(cd, ka, A[sel], dt), make_shape(cd, as_kind, Bd[sel, :7], dt)
+            for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
+                if order not in d_orders:
+                    continue
+                d, err = _call(cd.distance, x, y, solver=solver, precision=precision)
+                if err:
+                    out.append(_finding("exception", gcases[sel[0]], solver, precision, order,
+                                        f"annulus as {as_kind}", error=err))
+                    continue
+                stats["answers"][f"distance (annulus as {as_kind})"] += len(sel)
+                d = np.asarray(d)
+                for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
+                    out.append(_finding("degenerate_annulus_vs_" + as_kind, gcases[sel[q]], solver, precision, order,
+                                        "distance", library=d_orders[order][sel[q]], **{as_kind: d[q]}))
+    return out
+
+
+# ---- closest_points().unique ------------------------------------------------------------------
+# The rule (independent of the library; exact rational tests on the inputs as given, or closed
+# forms in float64 with a margin far above their rounding):
+#   unique must be False where the inputs are EXACTLY (in rationals) a configuration with a
+#   continuum of closest pairs, by symmetry:
+#     - a point, line, ray or segment lying on the axis of a circle, an arc (angle >= 1e-3) or an
+#       annulus with a hole (inner > 0): every rim (inner rim) point is as far from each point of
+#       the axis, so the closest pairs of any closest axis point form a circle (an arc);
+#     - two coaxial shapes among circle, disk, annulus and arc (not two arcs; an arc's angle
+#       >= 1e-3): common axis (normals parallel, the centres' offset along it).  The set of closest
+#       pairs is invariant under the rotations about the axis (for an arc: every arc point is as
+#       far from the other shape); a pair off the axis has distinct rotated copies, and a pair on
+#       the axis needs both shapes to meet the axis (two disks), whose every vertical pair over
+#       the smaller one (coplanar: the overlap) is as close.
+#   unique must be True where a closed form or strict convexity proves a single closest pair with a
+#   clear margin:
+#     - a point against a point, line, ray, segment or disk (a convex set: one nearest point);
+#     - a point against a circle, or an annulus's hole (the inner rim), at distance rho from the
+#       axis: the nearest rim point is unique, and the farthest (the only other critical point)
+#       is worse by sqrt(z^2 + (R + rho)^2) - sqrt(z^2 + (R - rho)^2) > UNIQUE_MARGIN x max(d, R);
+#       an annulus over its ring or beyond: the clamped projection (unique);
+#     - a point against an arc: the nearer of the in-span rim point and the two ends (the arc
+#       point at angle theta is farther the larger the angular gap to the point's own angle, up
+#       to pi) better than the other candidates by that margin;
+#     - two lines, rays or segments whose directions are at least 1e-3 rad from parallel: the
+#       squared distance between their points is strictly convex in the two parameters.
+#   Elsewhere the checker does not check unique (curve pairs: the screen does not certify that a
+#   minimum is single, nor that the other shape's closest point is unique).  The direct 50-digit
+#   comparison (reference_check) adds True for a circle or arc against a line, ray, segment or disk
+#   where the reference's local minima show a single strict minimum (reference_unique).
+UNIQUE_MARGIN = 1e-6
+UNIQUE_MIN_ARC = 1e-3
+
+
+def _fr(v):
+    return [Fraction(float(x)) for x in v]
+
+
+def _fcross_zero(a, b):
+    return (a[1] * b[2] - a[2] * b[1] == 0 and a[2] * b[0] - a[0] * b[2] == 0
+            and a[0] * b[1] - a[1] * b[0] == 0)
+
+
+def _fsub(a, b):
+    return [x - y for x, y in zip(a, b)]
+
+
+def _on_axis(kind, data, C, N):
+    """Whether a point, line, ray or segment lies exactly on the axis (C, N)."""
+    if kind == "point":
+        return _fcross_zero(_fsub(_fr(data[:3]), C), N)
+    if kind == "segment":
+        return _fcross_zero(_fsub(_fr(data[:3]), C), N) and _fcross_zero(_fsub(_fr(data[3:6]), C), N)
+    return _fcross_zero(_fsub(_fr(data[:3]), C), N) and _fcross_zero(_fr(data[3:6]), N)
+
+
+def _continuum_round(kind, data):
+    """Whether a round-like shape has every one of its (rim) points as far from each axis point:
+    a circle, an arc of angle >= UNIQUE_MIN_ARC, an annulus with a hole."""
+    if kind == "circle":
+        return True
+    if kind == "arc":
+        return data[10] >= UNIQUE_MIN_ARC
+    if kind == "annulus":
+        return data[7] > 0
+    return False
+
+
+def _np(v):
+    return np.asarray(v, dtype=float)
+
+
+def _point_round_unique(p, kind, data):
+    """unique for a point against a circle, disk, arc or annulus (see the rule above): True,
+    False or None (too close to call)."""
+    C, N = _np(data[:3]), _np(data[3:6])
+    N = N / np.linalg.norm(N)
+    w = _np(p) - C
+    z = float(np.dot(w, N))
+    a = w - z * N
+    rho = float(np.linalg.norm(a))
+    R = float(data[6])
+    if kind == "disk":
+        return True
+    if kind == "annulus":
+        if rho >= data[7]:
+            return True
+        R = float(data[7])
+    near, far = math.hypot(z, R - rho), math.hypot(z, R + rho)
+    margin = UNIQUE_MARGIN * max(near, float(data[6]))
+    if kind in ("circle", "annulus"):
+        return True if far - near > margin else None
+    # an arc: the in-span point (if the point's angle is in the span) and both ends
+    u = _np(data[7:10])
+    u = u - np.dot(u, N) * N
+    u = u / np.linalg.norm(u)
+    v = np.cross(N, u)
+    ang = float(data[10])
+    whole = ang >= 2 * math.pi
+    phi = math.atan2(float(np.dot(w, v)), float(np.dot(w, u))) % (2 * math.pi)
+    ends = [float(np.linalg.norm(w - R * u)), float(np.linalg.norm(w - R * (math.cos(ang) * u + math.sin(ang) * v)))]
+    if whole:
+        return True if far - near > margin else None
+    if rho > 0 and (phi <= ang or abs(phi - ang) < 1e-9 or abs(phi - 2 * math.pi) < 1e-9):
+        if abs(phi - ang) < 1e-9 or phi < 1e-9 or abs(phi - 2 * math.pi) < 1e-9:
+            return None          # the point's angle at an end: the in-span point is the end
+        cands = sorted([near] + ends)
+    else:
+        cands = sorted(ends)
+    return True if cands[1] - cands[0] > margin and far - near > margin else None
+
+
+def expected_unique(case):
+    """(expected unique, why) for a case (its own inputs: float32 scenes are passed rounded), by
+    the rule above; (None, "") where it says nothing."""
+    key = _key(case)
+    if key in _UNIQUE_CACHE:
+        return _UNIQUE_CACHE[key]
+    out = _expected_unique(case)
+    _UNIQUE_CACHE[key] = out
+    return out
+
+
+_UNIQUE_CACHE = {}
+_SYM = ("circle", "disk", "annulus", "arc")
+
+
+def _expected_unique(case):
+    ka, kb = case["a"], case["b"]
+    a, b = case["a_data"], case["b_data"]
+    # continua by symmetry (exact)
+    for (k1, d1), (k2, d2) in (((ka, a), (kb, b)), ((kb, b), (ka, a))):
+        if k1 in LINEAR and k2 in _SYM and _continuum_round(k2, d2):
+            if _on_axis(k1, d1, _fr(d2[:3]), _fr(d2[3:6])):
+                return False, f"the {k1} lies on the {k2}'s axis"
+    if ka in _SYM and kb in _SYM and not (ka == "arc" and kb == "arc"):
+        arcs_ok = all(d[10] >= UNIQUE_MIN_ARC for k, d in ((ka, a), (kb, b)) if k == "arc")
+        Na, Nb = _fr(a[3:6]), _fr(b[3:6])
+        if arcs_ok and _fcross_zero(Na, Nb) and _fcross_zero(_fsub(_fr(b[:3]), _fr(a[:3])), Na):
+            return False, "coaxial rounds"
+    # single pairs with a margin
+    if ka == "point" and kb in ("point", "line", "ray", "segment"):
+        return True, "a point against a convex set"
+    if ka == "point" and kb in _SYM:
+        u = _point_round_unique(a[:3], kb, b)
+        return (u, "point against a round, closed form") if u else (None, "")
+    if ka in LINEAR and kb in LINEAR:
+        def direction(kind, d):
+            m = _np(d[3:6]) - (_np(d[:3]) if kind == "segment" else 0)
+            return m
+        ma, mb = direction(ka, a), direction(kb, b)
+        na, nb = np.linalg.norm(ma), np.linalg.norm(mb)
+        if na == 0 or nb == 0:
+            return True, "a zero-length segment (a point) against a convex set"
+        if not (np.isfinite(na) and np.isfinite(nb)):
+            return None, ""
+        sin = np.linalg.norm(np.cross(ma / na, mb / nb))
+        if sin > UNIQUE_MIN_ARC:
+            return True, "two linear pieces 1e-3 rad or more from parallel (strictly convex)"
+    return None, ""
+
+
+REF_UNIQUE_REL = "1e-6"      # the second-best distinct local minimum must be worse by this x max(d, R)
+REF_UNIQUE_RISE = "1e-12"    # and the minimum not flat: d(x* +- 1e-4 rad) - d > this x max(d, R)
+
+
+def reference_unique(case):
+    """(True, why) or (None, "") from the 50-digit reference's local minima, for a circle or arc
+    against a convex shape (line, ray, segment, disk; canonical order): the other shape's closest
+    point to each rim point is unique (convexity), so the pair is unique iff the rim's parameter
+    minimising the distance is -- which the reference's one-parameter search (reference_round.
+    minimize_1d over the rim's angle of the convex shape's closed form, zoomed as reference_arc's)
+    shows where its best local minimum beats every other distinct one by REF_UNIQUE_REL x max(d, R)
+    and rises by REF_UNIQUE_RISE x max(d, R) within 1e-4 rad on each side inside the span (not a
+    flat run of minima: a circle over or through a disk's face).  Used by reference_check (the
+    direct 50-digit comparison of a few cases), not by the screen."""
+    ka, kb = case["a"], case["b"]
+    if (ka, kb) == ("circle", "disk"):
+        (mk, md), (tk, td) = (ka, case["a_data"]), (kb, case["b_data"])
+    elif kb in ("circle", "arc") and ka in ("line", "ray", "segment", "disk"):
+        (mk, md), (tk, td) = (kb, case["b_data"]), (ka, case["a_data"])
+    else:
+        return None, ""
+    A, R = _load("reference_arc"), _load("reference_round")
+    target = A.point_distance_function(A.shape(tk, td))
+    rad = R.to_mp(md[6])
+    if mk == "circle":
+        at, hi, periodic = R.make_round(md[:3], md[3:6], md[6]).rim_point, 2 * R.ctx.pi, True
+    else:
+        arc = A.ArcMP(A.shape(mk, md))
+        at, periodic = arc.at, arc.whole
+        hi = 2 * R.ctx.pi if arc.whole else arc.angle
+    seen = {}
+    floor = R.mpf("1e-20") * rad
+
+    def f(t):
+        v = target(at(t))
+        seen[t._mpf_] = v
+        return v
+
+    def resolution(lo_, hi_, lh):
+        return max(min(seen[lo_._mpf_], seen[hi_._mpf_]) - lh / 2, floor) / R.ZOOM_FRACTION
+
+    minima = R.minimize_1d(f, R.mpf(0), hi, A.INTERVALS, periodic=periodic, lipschitz=lambda a_, b_: rad,
+                           resolution=resolution, max_samples=A.ZOOM_SAMPLES)
+    if not minima:
+        return None, ""
+    best = minima[0]
+    scale = max(best.value, R.mpf(largest_radius(case)))
+    period = hi if periodic else None
+    for m in minima[1:]:
+        gap = abs(m.x - best.x)
+        if period is not None:
+            gap = min(gap, abs(period - gap))
+        if gap > R.mpf("1e-9") and m.value - best.value <= R.mpf(REF_UNIQUE_REL) * scale:
+            return None, ""
+    delta = R.mpf("1e-4")
+    sides = [best.x + delta, best.x - delta]
+    if not periodic:
+        sides = [x for x in sides if 0 <= x <= hi]
+    if not sides or any(f(x) - best.value <= R.mpf(REF_UNIQUE_RISE) * scale for x in sides):
+        return None, ""
+    return True, f"the 50-digit reference's minimum over the {mk}'s angle is single and strict (convex {tk})"
+
+
+def _check_unique(res, d_orders, solver, precision, gcases, stats):
+    """closest_points().unique against expected_unique, both orders."""
+    out = []
+    exp = [expected_unique(c) for c in gcases]
+    rows = [j for j, (e, _) in enumerate(exp) if e is not None]
+    if not rows:
+        return out
+    for order in d_orders:
+        u = np.asarray(res[order]["r"].unique)
+        # (not library answers of their own: counted apart, by expectation)
+        for j in rows:
+            stats["unique_checked"][str(exp[j][0])] += 1
+        for j in rows:
+            if bool(u[j]) != exp[j][0]:
+                out.append(_finding("unique", gcases[j], solver, precision, order, "closest_points",
+                                    library=bool(u[j]), expected=exp[j][0], why=exp[j][1],
+                                    distance=np.asarray(res[order]["r"].distance)[j]))
     return out
 
 
@@ -2744,7 +3319,9 @@ def mp_reference(case):
         return _REF_CACHE[key]
     L, R = _load("reference"), _load("reference_round")
     ka, a, kb, b = key
-    if kb == "arc":
+    if kb == "annulus":
+        ref = _ann_reference(ka, a, b)
+    elif kb == "arc":
         ref = _load("reference_arc").case_reference(ka, list(a), kb, list(b))
     elif kb in LINEAR and ka in LINEAR:
         ref = _load("reference_linear").linear_linear(ka, a, kb, b)
@@ -2761,6 +3338,25 @@ def mp_reference(case):
         ref = f(a[:3], a[3:6], a[6], b[:3], b[3:6], b[6]).distance
     _REF_CACHE[key] = ref
     return ref
+
+
+def ann_shape(kind, data):
+    """reference_annulus's tuple of a shape given as the differential's flat data list (an
+    annulus: centre, normal, outer, inner here; (center, normal, inner, outer) there)."""
+    if kind == "annulus":
+        d = [float(x) for x in data]
+        return _load("reference_annulus").annulus(d[:3], d[3:6], d[7], d[6])
+    return _load("reference_arc").shape(kind, data)
+
+
+def _ann_reference(ka, a, b):
+    """The 50-digit distance of a case with an annulus (canonical order: the annulus second):
+    reference_annulus's minimum of closed forms over the other shape's parameter, and rim by
+    rim for regions (its docstring says why that is exact); a Bezier curve: over its t."""
+    RA = _load("reference_annulus")
+    if ka == "bezier":
+        return RA.bezier_reference_mp(ann_shape("annulus", b), [list(p) for p in a])
+    return RA.reference_mp(ann_shape("annulus", b), ann_shape(ka, a))
 
 
 def _piece_points(kind, data):
@@ -2810,8 +3406,8 @@ def mp_screen_value(case, form, param):
     ctx = R.ctx
     if form == "point":
         return _mp_rim_distance(R.vec(a[:3]), kb, b)
-    if form == "rim|linear":
-        p = _mp_rim(kb, b, x)
+    if form in ("rim|linear", "rim_inner|linear"):
+        p = _mp_rim(kb, b, x, inner=form == "rim_inner|linear")
         return L.Linear(ka, a).distance_to_point(tuple(L.mpf(ctx.nstr(c, 60)) for c in p))
     if form == "line|round":
         return _mp_rim_distance(_mp_line_point(ka, a, b[:3], x), kb, b)
@@ -2828,22 +3424,25 @@ def mp_screen_value(case, form, param):
         lo_, hi_, u = param
         t = R.mpf(lo_) + _mpf_ld(u) * (R.mpf(hi_) - R.mpf(lo_))
         return _mp_rim_distance(R.bezier_point(a, t if form == "bezier|round" else 1 - t), kb, b)
-    if form == "rim_a|b":
-        return _mp_rim_distance(_mp_rim(ka, a, x), kb, b)
-    return _mp_rim_distance(_mp_rim(kb, b, x), ka, a)
+    if form in ("rim_a|b", "rim_a_inner|b"):
+        return _mp_rim_distance(_mp_rim(ka, a, x, inner=form == "rim_a_inner|b"), kb, b)
+    return _mp_rim_distance(_mp_rim(kb, b, x, inner=form == "rim_b_inner|a"), ka, a)
 
 
-def _mp_rim(kind, data, x):
+def _mp_rim(kind, data, x, inner=False):
     """The point (reference_round's context) at the screen's angle x of a circle or disk's rim
-    (the frame of _ld_frame, which the references build alike) or of an arc (from its start)."""
+    (the frame of _ld_frame, which the references build alike), of an annulus's outer or (inner)
+    inner rim (the same frame) or of an arc (from its start)."""
     if kind == "arc":
         A = _load("reference_arc")
         return A.ArcMP(A.shape(kind, data)).at(x)
-    return _load("reference_round").make_round(data[:3], data[3:6], data[6]).rim_point(x)
+    return _load("reference_round").make_round(data[:3], data[3:6], data[7] if inner else data[6]).rim_point(x)
 
 
 def _mp_rim_distance(p, kind, data):
-    """The 50-digit distance from the mp point p to a circle, disk or arc (closed forms)."""
+    """The 50-digit distance from the mp point p to a circle, disk, arc or annulus (closed forms)."""
+    if kind == "annulus":
+        return _load("reference_annulus").AnnulusMP(ann_shape(kind, data)).point_distance(p)
     A = _load("reference_arc")
     return A.point_distance_function(A.shape(kind, data))(p)
 
@@ -2898,6 +3497,8 @@ def confirm_point(finding, case):
         elif kind == "arc":
             A = _load("reference_arc")
             offs.append(float(A.ArcMP(A.shape(kind, data)).point_distance(tuple(_mp_num(x) for x in p))))
+        elif kind == "annulus":
+            offs.append(float(_mp_rim_distance(tuple(_mp_num(x) for x in p), kind, data)))
         else:
             offs.append(float(L.distance_to_shape(tuple(L.mpf(x) for x in p), kind, tuple(data))))
     finding["off_a_mp"], finding["off_b_mp"] = offs
@@ -2912,7 +3513,7 @@ MISS_REL = "1e-18"
 
 
 EXACT_CHECKS = ("within", "within_vs_inaccurate_distance", "asymmetric", "batch_scalar", "dtype", "float32_value",
-                "whole_arc_vs_circle",
+                "whole_arc_vs_circle", "degenerate_annulus_vs_disk", "degenerate_annulus_vs_circle", "unique",
                 "exception", "non_finite")
 
 
@@ -2973,6 +3574,8 @@ def _ctor_text(kind, data, f32):
         return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])})"
     if kind == "arc":
         return f"cd.Arc({vec(data[:3])}, {vec(data[3:6])}, {scal(data[6])}, {vec(data[7:10])}, {scal(data[10])})"
+    if kind == "annulus":
+        return f"cd.Annulus({vec(data[:3])}, {vec(data[3:6])}, {scal(data[7])}, {scal(data[6])})"
     return f"cd.{kind.capitalize()}({vec(data[:3])}, {vec(data[3:6])}, {scal(data[6])})"
 
 
@@ -2990,6 +3593,9 @@ def reproducer(f):
         for p in f.get("problems", []):
             lines.append(f"# {p}")
         lines.append(f"print(cd.within(a, b, d, {kw}), cd.intersects(a, b, {kw}))  # d from the lines above")
+    elif check == "unique":
+        lines.append(f"r = cd.closest_points(a, b, {kw})")
+        lines.append(f"print(r.unique, repr(r.distance))   # expected {f.get('expected')}: {f.get('why')}")
     elif check in ("point_off_shape", "separation"):
         lines.append(f"r = cd.closest_points(a, b, {kw})")
         lines.append("print(repr(r.distance), r.point_a, r.point_b)")
@@ -3036,6 +3642,10 @@ def reference_check(cd, cases, combo_list=None):
                                   screen=float(scr.value[0]), float32=f32))
             sa = make_shape(cd, c["a"], c["a_data"], np.float32 if f32 else np.float64)
             sb = make_shape(cd, c["b"], c["b_data"], np.float32 if f32 else np.float64)
+            uexp = expected_unique(c)
+            if uexp[0] is None and not f32:
+                # (the float64 scene only: ~0.2 s of 50-digit sampling a case)
+                uexp = reference_unique(c)
             for solver, precision in combo_list:
                 if (precision == "float32") != f32:
                     continue
@@ -3047,6 +3657,11 @@ def reference_check(cd, cases, combo_list=None):
                         if err:
                             findings.append(_finding("exception", c, solver, precision, order, entry, error=err))
                             continue
+                        if entry == "closest_points" and uexp[0] is not None and bool(v.unique) != uexp[0]:
+                            f = _finding("unique", c, solver, precision, order, entry, library=bool(v.unique),
+                                         expected=uexp[0], why=uexp[1] + " (direct)")
+                            f["confirmed"] = True
+                            findings.append(f)
                         v = v if entry == "distance" else v.distance
                         e = abs(_mp_num(_jsonable(np.longdouble(v)) if precision == "longdouble" else float(v)) - best)
                         if e > bar:

@@ -116,6 +116,8 @@ def curves_of(shape, toward):
         d = R.sub(d, o)
     ring = AnnulusMP(toward)
     dd = R.dot(d, d)
+    if dd == 0:  # a zero-length segment: its one point
+        return [(lambda t: o, mpf(0), mpf(0), False, mpf(0))]
     t_star = R.dot(R.sub(ring.c, o), d) / dd
     reach = (R.dist(R.add(o, R.scale(t_star, d)), ring.c) + 2 * ring.outer + 1) / ctx.sqrt(dd)
     lo, hi = t_star - reach, t_star + reach
@@ -179,7 +181,7 @@ def bezier_reference_mp(a, ctrl):
     pts = [R.vec(p) for p in ctrl]
     speed = (len(pts) - 1) * max([R.norm(R.sub(q, p)) for p, q in zip(pts, pts[1:])] + [mpf(0)])
     curve = (lambda t: R.bezier_point(ctrl, t), mpf(0), mpf(1), False, speed)
-    return minimum_along(curve, AnnulusMP(a).point_distance, mpf(a[4]) / 8)
+    return minimum_along(curve, AnnulusMP(a).point_distance, _feature(a, ("bezier",)))
 
 
 def bezier_reference(a, ctrl):

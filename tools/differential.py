@@ -28,12 +28,19 @@ Every case is reproducible from its id "family/seed/index" (differential.case_fr
 pairs with a circle or disk, "no-round" to the ten of the pairs without one (points, lines, rays,
 segments among themselves, Bezier curves against them; docs/differential_report_linear.json),
 "arc" to the seventeen of the arc against every kind with a query (issue 19;
-docs/differential_report_arc.json):
+docs/differential_report_arc.json), "annulus" to the eighteen of an annulus against every kind
+(issue 19; docs/differential_report_annulus.json):
 
     python -m tools.differential --answers 200000 --seed 1 --families no-round \
         --report docs/differential_report_linear.json
     python -m tools.differential --answers 10000000 --seed 1 --families arc \
         --report docs/differential_report_arc.json
+    python -m tools.differential --answers 1000000 --seed 1 --families annulus \
+        --report docs/differential_report_annulus.json
+
+closest_points().unique is checked where differential.expected_unique's rule decides it (the
+module's docstring); the report counts those checks apart ("unique_checked": per expectation,
+one per case, combination and order), since they are part of closest_points' answers.
 """
 
 from __future__ import annotations
@@ -147,12 +154,14 @@ def run_chunk(job):
         c["n_cases"] = len(c["cases"])
         c["cases"] = sorted(c["cases"])[:keep * 4]
     return dict(count=len(cases), by_family=dict(collections.Counter(c["family"] for c in cases)), pairs=dict(pairs),
-                answers=dict(stats["answers"]), seconds=seconds, classes=classes)
+                answers=dict(stats["answers"]), unique_checked=dict(stats["unique_checked"]), seconds=seconds,
+                classes=classes)
 
 
 def merge(total, part):
     total["cases"] += part["count"]
     total["answers"].update(part["answers"])
+    total["unique_checked"].update(part.get("unique_checked", {}))
     total["by_family"].update(part["by_family"])
     for p, n in part["pairs"].items():
         total["by_pair"][p] += n
@@ -180,7 +189,7 @@ def main(argv=None):
     ap.add_argument("--batch", type=int, default=2000, help="cases per chunk (one library batch per kind pair)")
     ap.add_argument("--families", default="all", help="comma-separated subset of the families, or \"round\" "
                     "(the pairs with a circle or disk), \"no-round\" (the pairs among points, lines, rays, "
-                    "segments and Bezier curves) or \"arc\" (the arc families)")
+                    "segments and Bezier curves), \"arc\" (the arc families) or \"annulus\" (the annulus families)")
     ap.add_argument("--solvers", default="all")
     ap.add_argument("--precisions", default="all")
     ap.add_argument("--scalar", type=int, default=16, help="scalar-vs-batch sample per chunk")
@@ -192,8 +201,9 @@ def main(argv=None):
 
     D = load_differential()
     families = {"all": list(D.FAMILIES), "round": [f for f in D.FAMILIES if D.has_round(f)],
-                "no-round": [f for f in D.FAMILIES if not D.has_round(f) and not D.is_arc(f)],
-                "arc": [f for f in D.FAMILIES if D.is_arc(f)]}.get(args.families)
+                "no-round": [f for f in D.FAMILIES if not D.has_round(f) and not D.is_arc(f) and not D.is_annulus(f)],
+                "arc": [f for f in D.FAMILIES if D.is_arc(f)],
+                "annulus": [f for f in D.FAMILIES if D.is_annulus(f)]}.get(args.families)
     families = families or args.families.split(",")
     for f in families:
         if f not in D.FAMILIES:
@@ -217,7 +227,8 @@ def main(argv=None):
     if not args.quiet:
         print(f"{n_cases} cases x {per_case} batched answers each (+ the scalar sample)"
               + (f" for --answers {args.answers}" if args.answers is not None else ""), flush=True)
-    total = {"cases": 0, "answers": collections.Counter(), "by_family": collections.Counter(),
+    total = {"cases": 0, "answers": collections.Counter(), "unique_checked": collections.Counter(),
+             "by_family": collections.Counter(),
              "by_pair": collections.Counter(), "classes": {}}
     t0 = time.perf_counter()
     if args.workers > 1:
@@ -259,6 +270,8 @@ def main(argv=None):
              f"({1e3 * seconds / max(total['cases'], 1):.2f} ms/case, {n_answers / max(seconds, 1e-9):.0f} answers/s), "
              f"seed {args.seed}",
              "answers per entry point: " + ", ".join(f"{k} {v}" for k, v in sorted(total["answers"].items())),
+             "unique checked (expected value: count): " + ", ".join(
+                 f"{k} {v}" for k, v in sorted(total["unique_checked"].items())),
              "", "cases / confirmed findings per family:"]
     lines += [f"  {fam:20s} {total['by_family'][fam]:>9} {by_family_f[fam]:>7}" for fam in families]
     lines += ["", "cases / confirmed findings per kind pair:"]
@@ -283,6 +296,7 @@ def main(argv=None):
     report = {
         "command": " ".join(sys.argv),
         "cases": total["cases"], "answers": n_answers, "answers_by_entry": dict(total["answers"]),
+        "unique_checked": dict(total["unique_checked"]),
         "answers_per_case_batched": per_case, "seconds": seconds, "ms_per_case": 1e3 * seconds / max(total["cases"], 1),
         "answers_per_second": n_answers / max(seconds, 1e-9), "seed": args.seed,
         "combos": [list(c) for c in combo_list], "families": families,
