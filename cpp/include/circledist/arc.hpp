@@ -308,6 +308,19 @@ ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, 
                                screening_margin(scale), pi_v<Real>());
 }
 
+// closest(): the arc's ends as minima of their own (at their distance `distance_at(t)`), for
+// `unique` only (another_closest_pair), not for the best, which the polished minima hold. Where
+// the distance is flat along the arc (an arc coaxial and coplanar with a round: every point as
+// close), polishing can take every start to one point (a Newton step on rounding noise runs to
+// the interval's end), so the polished minima alone showed one pair; an end as close at a
+// distinct point is a second closest pair. (A whole circle's starts hold eight samples; an arc's
+// hold its ends, which the polish may move.)
+template <class Real, class DistanceAt>
+void add_ends_for_ties(ArcMinima<Real>& minima, const ArcSpan<Real>& span, const DistanceAt& distance_at) {
+  for (const Real end : {span.lo(), span.hi()})
+    if (minima.count < kArcCapacity) minima.item[minima.count++] = Minimum<Real>{end, distance_at(end)};
+}
+
 // An arc (or a circle, ArcSpan(Circle3)) against a ring or a disk (Target, round_target.hpp):
 // the arc's circle seen from the round (LocalCircle, CircleOverRound: the distance and jet that
 // circle-circle and circle-disk polish on), the whole circle's candidates from those queries,
@@ -354,7 +367,12 @@ template <class Real, class Target> struct ArcRoundQuery {
     const LocalCircle<Real> c(arc_circle(arc), round);
     const ArcSpan<Real> span(arc);
     const Real scale = circle_round_scale(c, shape.radius);
-    const ArcMinima<Real> minima = solve<Roots>(span, c, shape.radius, scale);
+    ArcMinima<Real> minima = solve<Roots>(span, c, shape.radius, scale);
+    add_ends_for_ties(minima, span, [&](Real t) {
+      bool unused = false;
+      const Vec3<Real> p = c.at(t);
+      return (p - Target::point(p, shape.radius, scale, unused)).norm();
+    });
     Result<Real> r = circle_round_result<Target>(arc_circle(arc), c, round, minima, scale);
     r.param_a = span.param(minima.best.x);
     return r;
@@ -461,10 +479,16 @@ template <class Real> struct ArcArcQuery {
     const LocalCircle<Real> c(a, round);
     const ArcTarget<Real> target(b);
     const Real scale = circle_round_scale(c, b.radius);
-    const ArcMinima<Real> minima = solve<Roots>(span, c, target, scale);
+    ArcMinima<Real> minima = solve<Roots>(span, c, target, scale);
     const Real best = minima.best.x;
     const auto at = [&](Real t) { return c.at(t); };
     const auto arc_point = [&](const Vec3<Real>& q, bool& ambiguous) { return target.point(q, scale, ambiguous); };
+    if (a_is_arc) {
+      add_ends_for_ties(minima, span, [&](Real t) {
+        bool unused = false;
+        return (at(t) - arc_point(at(t), unused)).norm();
+      });
+    }
     const Vec3<Real> pa = c.at(best);
     bool ambiguous = false;
     const Vec3<Real> pb = arc_point(pa, ambiguous);
@@ -805,11 +829,12 @@ template <class Real, class Piece> struct PieceArcQuery {
     const Linear<Real> linear = as_linear(piece);
     const LocalLinear<Real> line(linear, round);
     const Real scale = linear_round_scale(line, arc.radius);
-    const ArcMinima<Real> minima = solve<Roots>(span, line, arc.radius, scale);
+    ArcMinima<Real> minima = solve<Roots>(span, line, arc.radius, scale);
     const PieceOverArc<Real> over{line};
     const Real best = minima.best.x;
     const auto at = [&](Real t) { return ArcSpan<Real>::local(arc.radius, t); };
     const auto piece_point_of = [&](const Vec3<Real>& q, bool&) { return over.point(q); };
+    add_ends_for_ties(minima, span, [&](Real t) { return (at(t) - over.point(at(t))).norm(); });
     const Vec3<Real> pa = at(best);
     const Vec3<Real> pb = over.point(pa);
     Result<Real> r;
