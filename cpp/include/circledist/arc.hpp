@@ -315,8 +315,23 @@ ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, 
 template <class Real, class Target> struct ArcRoundQuery {
   using Shape = typename Target::Shape;
 
+  using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
+  using Heights = typename CircleDisk::Heights;
+
   template <class Roots>
   static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale) {
+    if constexpr (Target::interior) {
+      return solve<Roots>(span, c, radius, scale, CircleDisk::template height_candidates<Roots>(c, scale));
+    } else {
+      return solve<Roots>(span, c, radius, scale, Heights());
+    }
+  }
+
+  // `heights`: against a disk, circle-disk's height candidates (computed once for the verdict
+  // and the solve); unused against a ring.
+  template <class Roots>
+  static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
+                               const Heights& heights) {
     const CircleOverRound<Real> view(c, radius);
     const auto h = [&](Real t) { return view.template distance<Target>(t); };
     const auto jet = [&](Real t) { return view.template jet<Target>(t); };
@@ -326,11 +341,10 @@ template <class Real, class Target> struct ArcRoundQuery {
       // disk parallel to the arc's plane (rounding noise there: the distance is the planes' gap
       // over the disk) came out differently, and the continuum's `unique` with them, wrong in 4
       // of 6 changed cases (docs/arc.md, "Cost").
-      using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
-      const auto heights = CircleDisk::template height_candidates<Roots>(c, scale);
       return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, arc_bound(span, h)),
                                   jet, h, c.radius, scale);
     } else {
+      (void)heights;
       using CircleCircle = Query<Circle3<Real>, Circle3<Real>>;
       const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
       const std::array<Real, 8> samples = sampled_squared_distances(c, squared);
@@ -342,21 +356,80 @@ template <class Real, class Target> struct ArcRoundQuery {
     }
   }
 
+  // Against a disk, distance()'s early answer (circle-disk's height verdict restricted to the
+  // arc; docs/arc.md, "Cost"): the disk's distance is at least the height |z| everywhere, and
+  // over the arc |z| is least at an end, at a root of z (z = 0) or at a root of z' (an interior
+  // local extremum of z): the arc's points among circle-disk's height candidates (z = 0, z' = 0,
+  // t = 0, pi) and its two ends hold the arc's least |z|, `lowest`. Where the least disk
+  // distance among those same points, `best`, is no more than that (within circle-disk's tie
+  // tolerance, the rounding of z at the rounded roots), no point of the arc is closer than
+  // `best`, an arc point's distance: the answer, without the octic. A root rounded just off the
+  // arc is dropped, but |z| at the arc's end next to it is then within rounding of its value.
+  struct HeightVerdict {
+    Real best;
+    bool decided;
+  };
+  static HeightVerdict height_verdict(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
+                                      const Heights& heights) {
+    // One sine and cosine per point: |z| at each, then the disk's distance only at the points
+    // whose |z| is within the tolerance of the lowest (elsewhere it is at least |z|, above
+    // lowest + tolerance: such a point can neither decide nor be the decided best).
+    const CircleOverRound<Real> view(c, radius);
+    Real cs[Heights::capacity + 2], sn[Heights::capacity + 2], z[Heights::capacity + 2];
+    int n = 0;
+    Real lowest = std::numeric_limits<Real>::infinity();
+    const auto take = [&](Real t) {
+      cs[n] = std::cos(t);
+      sn[n] = std::sin(t);
+      z[n] = std::abs(c.center.z() + cs[n] * c.e1.z() + sn[n] * c.e2.z());
+      lowest = std::min(lowest, z[n]);
+      ++n;
+    };
+    take(span.lo());
+    take(span.hi());
+    for (int i = 0; i < heights.count; ++i) {
+      const Real t = span.offset(heights.value[i]);
+      if (t <= span.angle) take(span.lo() + t);
+    }
+    const Real level = lowest + tie_tolerance(scale);
+    Real best = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < n; ++i)
+      if (z[i] <= level) best = std::min(best, view.template distance<Target>(cs[i], sn[i]));
+    return {best, best <= level};
+  }
+
   // The arc first.
   template <class Roots> static Real distance(const Arc3<Real>& arc, const Shape& shape) {
     const Round<Real> round(shape.center, shape.normal, shape.radius);
     const LocalCircle<Real> c(arc_circle(arc), round);
-    return solve<Roots>(ArcSpan<Real>(arc), c, shape.radius, circle_round_scale(c, shape.radius)).best.value;
+    const ArcSpan<Real> span(arc);
+    const Real scale = circle_round_scale(c, shape.radius);
+    if constexpr (Target::interior) {
+      const Heights heights = CircleDisk::template height_candidates<Roots>(c, scale);
+      const HeightVerdict early = height_verdict(span, c, shape.radius, scale, heights);
+      if (early.decided) return early.best;
+      return std::min(early.best, solve<Roots>(span, c, shape.radius, scale, heights).best.value);
+    } else {
+      return solve<Roots>(span, c, shape.radius, scale).best.value;
+    }
   }
 
+  // Against a disk the distance is distance()'s (the verdict's where it decides), as circle-disk
+  // reports it: the two agree to the bit.
   template <class Roots> static Result<Real> closest(const Arc3<Real>& arc, const Shape& shape) {
     const Round<Real> round(shape.center, shape.normal, shape.radius);
     const LocalCircle<Real> c(arc_circle(arc), round);
     const ArcSpan<Real> span(arc);
     const Real scale = circle_round_scale(c, shape.radius);
-    const ArcMinima<Real> minima = solve<Roots>(span, c, shape.radius, scale);
+    Heights heights;
+    if constexpr (Target::interior) heights = CircleDisk::template height_candidates<Roots>(c, scale);
+    const ArcMinima<Real> minima = solve<Roots>(span, c, shape.radius, scale, heights);
     Result<Real> r = circle_round_result<Target>(arc_circle(arc), c, round, minima, scale);
     r.param_a = span.param(minima.best.x);
+    if constexpr (Target::interior) {
+      const HeightVerdict early = height_verdict(span, c, shape.radius, scale, heights);
+      r.distance = early.decided ? early.best : std::min(early.best, minima.best.value);
+    }
     return r;
   }
 };
