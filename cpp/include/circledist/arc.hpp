@@ -369,6 +369,7 @@ template <class Real, class Target> struct ArcRoundQuery {
     Real best;
     bool decided;
   };
+  template <class Roots>
   static HeightVerdict height_verdict(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
                                       const Heights& heights) {
     // One sine and cosine per point: |z| at each, then the disk's distance only at the points
@@ -395,7 +396,31 @@ template <class Real, class Target> struct ArcRoundQuery {
     Real best = std::numeric_limits<Real>::infinity();
     for (int i = 0; i < n; ++i)
       if (z[i] <= level) best = std::min(best, view.template distance<Target>(cs[i], sn[i]));
-    return {best, best <= level};
+    if (!(best <= level)) return {best, false};
+    // Decided. The answer is then polished as the full solve would polish it: those same starts
+    // (each polished alone, polish_offsets, on the same h and jet over the same interval), which
+    // the full solve holds too and, being within rounding of the least |z|, polishes too (its
+    // screening margin is 16 sqrt(eps) scale). So the decided answer is the full solve's (the
+    // least over a superset of these starts) wherever its best comes from one of them, and a
+    // crossing of the disk, where an unpolished root of z leaves |z| at rounding noise, reaches
+    // what the polish reaches.
+    ArcCandidates<Real> starts;
+    const auto keep = [&](int i, Real t) {
+      if (z[i] <= level) starts.push(t);
+    };
+    int i = 0;
+    keep(i++, span.lo());
+    keep(i++, span.hi());
+    for (int k = 0; k < heights.count; ++k) {
+      const Real t = span.offset(heights.value[k]);
+      if (t <= span.angle) keep(i++, span.lo() + t);
+    }
+    const auto h = [&](Real t) { return view.template distance<Target>(t); };
+    const auto jet = [&](Real t) { return view.template jet<Target>(t); };
+    const ArcMinima<Real> polished =
+        polish_offsets<Roots>(jet, h, starts, Real(1e-3), span.lo(), span.hi(), parameter_tolerance(c.radius, scale),
+                              screening_margin(scale), pi_v<Real>());
+    return {std::min(best, polished.best.value), true};
   }
 
   // The arc first.
@@ -406,7 +431,7 @@ template <class Real, class Target> struct ArcRoundQuery {
     const Real scale = circle_round_scale(c, shape.radius);
     if constexpr (Target::interior) {
       const Heights heights = CircleDisk::template height_candidates<Roots>(c, scale);
-      const HeightVerdict early = height_verdict(span, c, shape.radius, scale, heights);
+      const HeightVerdict early = height_verdict<Roots>(span, c, shape.radius, scale, heights);
       if (early.decided) return early.best;
       return std::min(early.best, solve<Roots>(span, c, shape.radius, scale, heights).best.value);
     } else {
@@ -427,7 +452,7 @@ template <class Real, class Target> struct ArcRoundQuery {
     Result<Real> r = circle_round_result<Target>(arc_circle(arc), c, round, minima, scale);
     r.param_a = span.param(minima.best.x);
     if constexpr (Target::interior) {
-      const HeightVerdict early = height_verdict(span, c, shape.radius, scale, heights);
+      const HeightVerdict early = height_verdict<Roots>(span, c, shape.radius, scale, heights);
       r.distance = early.decided ? early.best : std::min(early.best, minima.best.value);
     }
     return r;
