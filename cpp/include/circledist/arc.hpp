@@ -269,6 +269,14 @@ template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H
   return best;
 }
 
+// h with its values at the arc's two ends kept: arc_bound takes h there, and polish_on_arc's
+// screening takes it there again (the ends are starts). The same numbers (h is a function of
+// t alone), each computed once.
+template <class Real, class H> auto with_end_values(const ArcSpan<Real>& span, const H& h) {
+  const Real lo = span.lo(), hi = span.hi(), at_lo = h(lo), at_hi = h(hi);
+  return [=, &h](Real t) { return t == lo ? at_lo : (t == hi ? at_hi : h(t)); };
+}
+
 // The same bound against a ring or an arc, without the interior evaluations: the least of h at
 // the arc's two ends and of `sample(i)`, the distance at the circle's sample angle i pi/4
 // (sampled_squared_distances: exact cosines and sines), over the samples the arc holds. Ends and
@@ -333,7 +341,8 @@ template <class Real, class Target> struct ArcRoundQuery {
   static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
                                const Heights& heights) {
     const CircleOverRound<Real> view(c, radius);
-    const auto h = [&](Real t) { return view.template distance<Target>(t); };
+    const auto distance = [&](Real t) { return view.template distance<Target>(t); };
+    const auto h = with_end_values(span, distance);
     const auto jet = [&](Real t) { return view.template jet<Target>(t); };
     if constexpr (Target::interior) {
       // Against a disk, as before: the bound from h itself, the octic searched on the whole
@@ -550,16 +559,21 @@ template <class Real> struct ArcArcQuery {
   static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, const ArcTarget<Real>& target,
                                Real scale) {
     const CircleOverRound<Real> view(c, target.radius);
-    const auto h = [&](Real t) {
-      const Vec3<Real> p = c.at(t);
+    // One sine and cosine per evaluation: the point for the sector test and the ring's form
+    // from the same cos t and sin t (CircleOverRound's overloads: the values of the angle forms
+    // to the bit; c.at(t) is c.center + cos t e1 + sin t e2, as here).
+    const auto distance = [&](Real t) {
+      const Real cs = std::cos(t), sn = std::sin(t);
+      const Vec3<Real> p = c.center + cs * c.e1 + sn * c.e2;
       const int e = target.nearest_end(p);
-      return e < 0 ? view.template distance<RingTarget<Real>>(t) : (p - target.end[e]).norm();
+      return e < 0 ? view.template distance<RingTarget<Real>>(cs, sn) : (p - target.end[e]).norm();
     };
+    const auto h = with_end_values(span, distance);
     const auto jet = [&](Real t) {
       const Real cs = std::cos(t), sn = std::sin(t);
       const Vec3<Real> w = cs * c.e1 + sn * c.e2, p = c.center + w;
       const int e = target.nearest_end(p);
-      return e < 0 ? view.template jet<RingTarget<Real>>(t) : point_jet(p, Vec3<Real>(cs * c.e2 - sn * c.e1), Vec3<Real>(-w), target.end[e]);
+      return e < 0 ? view.template jet<RingTarget<Real>>(cs, sn) : point_jet(p, Vec3<Real>(cs * c.e2 - sn * c.e1), Vec3<Real>(-w), target.end[e]);
     };
     const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, target.radius); };
     // The ring's octic under a distance A's arc reaches (the arc's distance is at least the

@@ -97,9 +97,11 @@ template <class Real> struct CircleOverRound {
   // w' (rho + R) + w rho' = s',  w'' (rho + R) + 2 w' rho' + w rho'' = s'',  2 rho rho' = s',
   // rho'' = (s''/2 - rho'^2) / rho. On the axis (rho = 0) the curvature is NaN, as in
   // RoundTarget::jet. Over a disk's interior (s <= 0), the height squared (height_jet).
-  template <class Target> Jet<Real> jet(Real t) const {
-    if (!expanded) return c.template jet<Target>(t, radius);
-    const Terms v = terms(t);
+  template <class Target> Jet<Real> jet(Real t) const { return jet<Target>(std::cos(t), std::sin(t)); }
+  // The same from cos t and sin t (the same value to the bit).
+  template <class Target> Jet<Real> jet(Real cs, Real sn) const {
+    if (!expanded) return c.template jet<Target>(cs, sn, radius);
+    const Terms v = terms(cs, sn);
     if constexpr (Target::interior) {
       if (v.s <= 0) return height_jet(v.z, v.z1, v.z2);
     }
