@@ -164,26 +164,41 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     const Real k = seen.wx * start.x() + seen.wy * start.y() + seen.wz * start.z();
     const Vec3<Real> u(seen.norm2 * start.x() - k * seen.wx, seen.norm2 * start.y() - k * seen.wy,
                        seen.norm2 * start.z() - k * seen.wz);
-    const Real u_norm = u.norm();
-    if (!(u_norm > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
+    // |u'| = sqrt(|u'|^2) (Eigen's norm()): zero exactly where its square is, so the test needs
+    // no square root; the length itself only where an end point is formed.
+    if (!(u.squaredNorm() > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
     const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
                        seen.wx * u.y() - seen.wy * u.x());
     if (seen.on_axis(radius)) {  // every arc point as close: the start
       on_ring = true;
       r.distance = ring;
-      r.point_b = arc.center + (radius / u_norm) * u;
+      r.point_b = arc.center + (radius / u.norm()) * u;
       r.unique = false;
       return r;
     }
     // The point's angle from u toward v, in [0, 2 pi): q = s^2 (d - z N) against u' and v' / s.
     const typename detail::PointOverRound<Real>::InPlane q = seen.in_plane();
-    Real t = detail::atan2(q.x * v.x() + q.y * v.y() + q.z * v.z(), seen.s * (q.x * u.x() + q.y * u.y() + q.z * u.z()));
-    t = detail::select(t < 0, t + turn, t);
-    if (!(t == t) || !(angle == angle)) {  // a NaN normal or angle (out of line in effect: rare)
-      r.distance = nan;
-      return r;
+    const Real y = q.x * v.x() + q.y * v.y() + q.z * v.z(), x = seen.s * (q.x * u.x() + q.y * u.y() + q.z * u.z());
+    // Off the arc: the end nearer in angle is the nearer (the distance rises with the angular
+    // gap, up to pi). Where the gaps are within `margin` of each other (P near the plane through
+    // the axis that bisects the arc's gap) both ends are measured: the nearer, or two closest
+    // pairs when they tie.
+    constexpr Real margin = Real(1) / (1 << 20);
+    // Where the answer is: 0 the ring (t <= angle), 1 the start, 2 the far end, 3 both ends.
+    int where = -1;
+    Real t = 0;
+    if constexpr (!Points) where = sector_without_angle(x, y, angle, margin);
+    if (where < 0) {
+      t = detail::atan2(y, x);
+      t = detail::select(t < 0, t + turn, t);
+      if (!(t == t) || !(angle == angle)) {  // a NaN normal or angle (out of line in effect: rare)
+        r.distance = nan;
+        return r;
+      }
+      const Real to_end = t - angle, to_start = turn - t;
+      where = t <= angle ? 0 : (to_start < to_end - margin ? 1 : (to_end < to_start - margin ? 2 : 3));
     }
-    if (t <= angle) {
+    if (where == 0) {
       on_ring = true;
       r.distance = ring;
       if constexpr (Points) {
@@ -192,18 +207,13 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       }
       return r;
     }
-    // Off the arc: the end nearer in angle is the nearer (the distance rises with the angular
-    // gap, up to pi). Where the gaps are within `margin` of each other (P near the plane through
-    // the axis that bisects the arc's gap) both ends are measured: the nearer, or two closest
-    // pairs when they tie. From the center (p - c exact for nearby coordinates): the world end
-    // points round by an ulp of their coordinates, 1e-10 at 1e6.
-    const Real to_end = t - angle, to_start = turn - t;
-    constexpr Real margin = Real(1) / (1 << 20);
+    // From the center (p - c exact for nearby coordinates): the world end points round by an
+    // ulp of their coordinates, 1e-10 at 1e6.
     const Vec3<Real> d = p - arc.center;
-    const Real to_u = radius / u_norm;
+    const Real to_u = radius / u.norm();
     const Vec3<Real> e0 = to_u * u;
     const Real d0 = (d - e0).norm();
-    if (to_start < to_end - margin) {  // the start: no trigonometry
+    if (where == 1) {  // the start: no trigonometry
       r.distance = d0;
       if constexpr (Points) r.point_b = arc.center + e0;
       return r;
@@ -212,7 +222,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     const Real to_v = to_u / seen.s;
     const Vec3<Real> e1 = (std::cos(angle) * to_u) * u + (std::sin(angle) * to_v) * v;
     const Real d1 = (d - e1).norm();
-    if (to_end < to_start - margin) {
+    if (where == 2) {
       r.distance = d1;
       if constexpr (Points) {
         r.point_b = arc.center + e1;
@@ -230,6 +240,38 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
   }
 
  private:
+  // distance()'s sector test without the atan2 (docs/arc.md, "Cost"): the answer's place (0
+  // the ring, 1 the start, 2 the far end, 3 both ends, as solve() derives them from t) where the
+  // octant of (x, y) decides it, else -1 (then t decides). The octant comes from exact
+  // comparisons of x and y, the very numbers atan2 takes: t = atan2(y, x), moved into [0, 2 pi),
+  // lies in [k pi/4, (k + 1) pi/4] up to atan2's error (2.5 ulp in double, detail/atan2.hpp;
+  // std::atan2's in other types) and the rounding of t + 2 pi, both far below
+  // slack = 64 eps 2 pi. Each of solve()'s comparisons, t <= angle, to_start < to_end - margin
+  // (t beyond (2 pi + angle + margin) / 2, each difference rounding by an ulp of 2 pi) and
+  // to_end < to_start - margin, is taken here only where the octant, widened by 2 slack on
+  // each side, lies wholly on one side of its threshold: there t gives the same answer.
+  // A NaN or infinite x, y or angle: -1.
+  CIRCLEDIST_INLINE static int sector_without_angle(Real x, Real y, Real angle, Real margin) {
+    const Real inf = std::numeric_limits<Real>::infinity();
+    if (!(std::abs(x) + std::abs(y) < inf) || !(angle < inf)) return -1;  // NaN too
+    const Real quarter = pi_v<Real>() / 4, turn = 2 * pi_v<Real>();
+    const Real slack = 128 * std::numeric_limits<Real>::epsilon() * turn;
+    // Octants 0..7 counterclockwise from u; y < 0 is the lower half (t = atan2 + 2 pi), y = -0
+    // the upper (atan2(-0, x) is -0 or -pi, t then 0 or pi).
+    const bool lower = y < 0, left = x < 0, steep = std::abs(y) > std::abs(x);
+    static constexpr int octants[8] = {0, 1, 3, 2, 7, 6, 4, 5};  // by 4 lower + 2 left + steep
+    const int k = octants[4 * lower + 2 * left + steep];
+    const Real lo = k * quarter - slack, hi = (k + 1) * quarter + slack;
+    if (hi < angle) return 0;
+    if (!(lo > angle)) return -1;
+    const Real start_side = (turn + angle + margin) / 2, end_side = (turn + angle - margin) / 2;
+    if (lo > start_side + slack) return 1;  // to_start < to_end - margin
+    if (!(hi < start_side - slack)) return -1;
+    if (hi < end_side - slack) return 2;  // to_end < to_start - margin
+    if (lo > end_side + slack) return 3;  // neither
+    return -1;
+  }
+
   // A start with no in-plane part: the arc starts at Frame's U (ArcSpan's theta0 = 0); the
   // general form through the canonical angle, out of line (rare).
 #if defined(__GNUC__) || defined(__clang__)
