@@ -30,6 +30,28 @@
 
 namespace circledist {
 
+namespace detail {
+// The octant of (x, y), from exact comparisons of the two numbers atan2(y, x) takes: that angle,
+// moved into [0, 2 pi) as the arc's sector tests move it (t < 0: t + 2 pi), lies in
+// [k pi/4, (k + 1) pi/4] up to atan2's error (2.5 ulp in double, detail/atan2.hpp; std::atan2's
+// in other types) and the rounding of t + 2 pi, both far below octant_slack(); [lo, hi] is that
+// octant widened by the slack. y < 0 is the lower half; y = -0 the upper (atan2(-0, x) is -0 or
+// -pi, t then 0 or pi). False for a NaN or infinite x or y. A comparison of t with a threshold
+// is decided by the octant where [lo, hi], widened by another slack for the threshold's own
+// rounding, lies wholly on one side: there t answers the same (docs/arc.md, "Cost").
+template <class Real> constexpr Real octant_slack() { return 128 * std::numeric_limits<Real>::epsilon() * 2 * pi_v<Real>(); }
+template <class Real> CIRCLEDIST_INLINE bool octant_bounds(Real x, Real y, Real& lo, Real& hi) {
+  if (!(std::abs(x) + std::abs(y) < std::numeric_limits<Real>::infinity())) return false;  // NaN too
+  const Real quarter = pi_v<Real>() / 4, slack = octant_slack<Real>();
+  const bool lower = y < 0, left = x < 0, steep = std::abs(y) > std::abs(x);
+  static constexpr int octants[8] = {0, 1, 3, 2, 7, 6, 4, 5};  // by 4 lower + 2 left + steep
+  const int k = octants[4 * lower + 2 * left + steep];
+  lo = k * quarter - slack;
+  hi = (k + 1) * quarter + slack;
+  return true;
+}
+}  // namespace detail
+
 // The arc's circle (the same fields), and whether the arc is all of it (angle >= 2 pi).
 template <class Real> Circle3<Real> arc_circle(const Arc3<Real>& a) { return {a.center, a.normal, a.radius}; }
 template <class Real> bool whole_arc(const Arc3<Real>& a) { return a.angle >= 2 * pi_v<Real>(); }
@@ -252,16 +274,9 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
   // each side, lies wholly on one side of its threshold: there t gives the same answer.
   // A NaN or infinite x, y or angle: -1.
   CIRCLEDIST_INLINE static int sector_without_angle(Real x, Real y, Real angle, Real margin) {
-    const Real inf = std::numeric_limits<Real>::infinity();
-    if (!(std::abs(x) + std::abs(y) < inf) || !(angle < inf)) return -1;  // NaN too
-    const Real quarter = pi_v<Real>() / 4, turn = 2 * pi_v<Real>();
-    const Real slack = 128 * std::numeric_limits<Real>::epsilon() * turn;
-    // Octants 0..7 counterclockwise from u; y < 0 is the lower half (t = atan2 + 2 pi), y = -0
-    // the upper (atan2(-0, x) is -0 or -pi, t then 0 or pi).
-    const bool lower = y < 0, left = x < 0, steep = std::abs(y) > std::abs(x);
-    static constexpr int octants[8] = {0, 1, 3, 2, 7, 6, 4, 5};  // by 4 lower + 2 left + steep
-    const int k = octants[4 * lower + 2 * left + steep];
-    const Real lo = k * quarter - slack, hi = (k + 1) * quarter + slack;
+    Real lo, hi;
+    if (!(angle < std::numeric_limits<Real>::infinity()) || !detail::octant_bounds(x, y, lo, hi)) return -1;  // NaN too
+    const Real turn = 2 * pi_v<Real>(), slack = detail::octant_slack<Real>();
     if (hi < angle) return 0;
     if (!(lo > angle)) return -1;
     const Real start_side = (turn + angle + margin) / 2, end_side = (turn + angle - margin) / 2;
@@ -773,6 +788,16 @@ template <class Real> struct ArcEnds {
     const Real t = detail::atan2(p.dot(v), s * p.dot(u));
     return t < 0 ? t + 2 * pi_v<Real>() : t;
   }
+  // offset(p) <= angle, the atan2 only where the octant of the same two numbers does not decide
+  // (detail::octant_bounds: where it does, offset answers the same).
+  bool holds(const Vec3<Real>& p) const {
+    Real lo, hi;
+    if (detail::octant_bounds(s * p.dot(u), p.dot(v), lo, hi)) {
+      if (hi < angle) return true;
+      if (lo > angle) return false;
+    }
+    return offset(p) <= angle;
+  }
 };
 
 // The piece relative to the arc's center c along its line's anchor a (its point nearest c, from
@@ -861,8 +886,16 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   // only pair at that distance unless it is tied with its mirror image (the trust-region
   // subproblem's global minimizer is unique outside its hard case, b1 = 0, which the mirror
   // bounds: line_ring_minimum.hpp), where closest() asks the general path.
-  const Real global_t = ends.offset(m.ring_point);
-  if (global_t <= ends.angle && on_piece(pl.line, c.center, m.line_point, linear)) {
+  // distance() needs only whether the point is on the arc (ArcEnds::holds), closest() its t.
+  Real global_t = 0;
+  bool on_arc;
+  if constexpr (for_closest) {
+    global_t = ends.offset(m.ring_point);
+    on_arc = global_t <= ends.angle;
+  } else {
+    on_arc = ends.holds(m.ring_point);
+  }
+  if (on_arc && on_piece(pl.line, c.center, m.line_point, linear)) {
     out.value = m.distance;
     if constexpr (for_closest) {
       out.piece_point = c.center + m.line_point;
@@ -881,8 +914,15 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   int count = 0;
   Real least = std::numeric_limits<Real>::infinity();
   if (other == 1) {  // the global minimum is off the arc or the piece (above)
-    const Real t = ends.offset(second.ring_point);
-    if (t <= ends.angle && on_piece(pl.line, c.center, second.line_point, linear)) {
+    Real t = 0;
+    bool on_arc_too;
+    if constexpr (for_closest) {
+      t = ends.offset(second.ring_point);
+      on_arc_too = t <= ends.angle;
+    } else {
+      on_arc_too = ends.holds(second.ring_point);
+    }
+    if (on_arc_too && on_piece(pl.line, c.center, second.line_point, linear)) {
       least = second.distance;
       if constexpr (for_closest) {
         PieceArcPick<Real>& k = list[count++];
