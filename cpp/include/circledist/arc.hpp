@@ -30,6 +30,28 @@
 
 namespace circledist {
 
+namespace detail {
+// The octant of (x, y), from exact comparisons of the two numbers atan2(y, x) takes: that angle,
+// moved into [0, 2 pi) as the arc's sector tests move it (t < 0: t + 2 pi), lies in
+// [k pi/4, (k + 1) pi/4] up to atan2's error (2.5 ulp in double, detail/atan2.hpp; std::atan2's
+// in other types) and the rounding of t + 2 pi, both far below octant_slack(); [lo, hi] is that
+// octant widened by the slack. y < 0 is the lower half; y = -0 the upper (atan2(-0, x) is -0 or
+// -pi, t then 0 or pi). False for a NaN or infinite x or y. A comparison of t with a threshold
+// is decided by the octant where [lo, hi], widened by another slack for the threshold's own
+// rounding, lies wholly on one side: there t answers the same (docs/arc.md, "Cost").
+template <class Real> constexpr Real octant_slack() { return 128 * std::numeric_limits<Real>::epsilon() * 2 * pi_v<Real>(); }
+template <class Real> CIRCLEDIST_INLINE bool octant_bounds(Real x, Real y, Real& lo, Real& hi) {
+  if (!(std::abs(x) + std::abs(y) < std::numeric_limits<Real>::infinity())) return false;  // NaN too
+  const Real quarter = pi_v<Real>() / 4, slack = octant_slack<Real>();
+  const bool lower = y < 0, left = x < 0, steep = std::abs(y) > std::abs(x);
+  static constexpr int octants[8] = {0, 1, 3, 2, 7, 6, 4, 5};  // by 4 lower + 2 left + steep
+  const int k = octants[4 * lower + 2 * left + steep];
+  lo = k * quarter - slack;
+  hi = (k + 1) * quarter + slack;
+  return true;
+}
+}  // namespace detail
+
 // The arc's circle (the same fields), and whether the arc is all of it (angle >= 2 pi).
 template <class Real> Circle3<Real> arc_circle(const Arc3<Real>& a) { return {a.center, a.normal, a.radius}; }
 template <class Real> bool whole_arc(const Arc3<Real>& a) { return a.angle >= 2 * pi_v<Real>(); }
@@ -164,26 +186,41 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     const Real k = seen.wx * start.x() + seen.wy * start.y() + seen.wz * start.z();
     const Vec3<Real> u(seen.norm2 * start.x() - k * seen.wx, seen.norm2 * start.y() - k * seen.wy,
                        seen.norm2 * start.z() - k * seen.wz);
-    const Real u_norm = u.norm();
-    if (!(u_norm > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
+    // |u'| = sqrt(|u'|^2) (Eigen's norm()): zero exactly where its square is, so the test needs
+    // no square root; the length itself only where an end point is formed.
+    if (!(u.squaredNorm() > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
     const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
                        seen.wx * u.y() - seen.wy * u.x());
     if (seen.on_axis(radius)) {  // every arc point as close: the start
       on_ring = true;
       r.distance = ring;
-      r.point_b = arc.center + (radius / u_norm) * u;
+      r.point_b = arc.center + (radius / u.norm()) * u;
       r.unique = false;
       return r;
     }
     // The point's angle from u toward v, in [0, 2 pi): q = s^2 (d - z N) against u' and v' / s.
     const typename detail::PointOverRound<Real>::InPlane q = seen.in_plane();
-    Real t = detail::atan2(q.x * v.x() + q.y * v.y() + q.z * v.z(), seen.s * (q.x * u.x() + q.y * u.y() + q.z * u.z()));
-    t = detail::select(t < 0, t + turn, t);
-    if (!(t == t) || !(angle == angle)) {  // a NaN normal or angle (out of line in effect: rare)
-      r.distance = nan;
-      return r;
+    const Real y = q.x * v.x() + q.y * v.y() + q.z * v.z(), x = seen.s * (q.x * u.x() + q.y * u.y() + q.z * u.z());
+    // Off the arc: the end nearer in angle is the nearer (the distance rises with the angular
+    // gap, up to pi). Where the gaps are within `margin` of each other (P near the plane through
+    // the axis that bisects the arc's gap) both ends are measured: the nearer, or two closest
+    // pairs when they tie.
+    constexpr Real margin = Real(1) / (1 << 20);
+    // Where the answer is: 0 the ring (t <= angle), 1 the start, 2 the far end, 3 both ends.
+    int where = -1;
+    Real t = 0;
+    if constexpr (!Points) where = sector_without_angle(x, y, angle, margin);
+    if (where < 0) {
+      t = detail::atan2(y, x);
+      t = detail::select(t < 0, t + turn, t);
+      if (!(t == t) || !(angle == angle)) {  // a NaN normal or angle (out of line in effect: rare)
+        r.distance = nan;
+        return r;
+      }
+      const Real to_end = t - angle, to_start = turn - t;
+      where = t <= angle ? 0 : (to_start < to_end - margin ? 1 : (to_end < to_start - margin ? 2 : 3));
     }
-    if (t <= angle) {
+    if (where == 0) {
       on_ring = true;
       r.distance = ring;
       if constexpr (Points) {
@@ -192,18 +229,13 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
       }
       return r;
     }
-    // Off the arc: the end nearer in angle is the nearer (the distance rises with the angular
-    // gap, up to pi). Where the gaps are within `margin` of each other (P near the plane through
-    // the axis that bisects the arc's gap) both ends are measured: the nearer, or two closest
-    // pairs when they tie. From the center (p - c exact for nearby coordinates): the world end
-    // points round by an ulp of their coordinates, 1e-10 at 1e6.
-    const Real to_end = t - angle, to_start = turn - t;
-    constexpr Real margin = Real(1) / (1 << 20);
+    // From the center (p - c exact for nearby coordinates): the world end points round by an
+    // ulp of their coordinates, 1e-10 at 1e6.
     const Vec3<Real> d = p - arc.center;
-    const Real to_u = radius / u_norm;
+    const Real to_u = radius / u.norm();
     const Vec3<Real> e0 = to_u * u;
     const Real d0 = (d - e0).norm();
-    if (to_start < to_end - margin) {  // the start: no trigonometry
+    if (where == 1) {  // the start: no trigonometry
       r.distance = d0;
       if constexpr (Points) r.point_b = arc.center + e0;
       return r;
@@ -212,7 +244,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     const Real to_v = to_u / seen.s;
     const Vec3<Real> e1 = (std::cos(angle) * to_u) * u + (std::sin(angle) * to_v) * v;
     const Real d1 = (d - e1).norm();
-    if (to_end < to_start - margin) {
+    if (where == 2) {
       r.distance = d1;
       if constexpr (Points) {
         r.point_b = arc.center + e1;
@@ -230,6 +262,31 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
   }
 
  private:
+  // distance()'s sector test without the atan2 (docs/arc.md, "Cost"): the answer's place (0
+  // the ring, 1 the start, 2 the far end, 3 both ends, as solve() derives them from t) where the
+  // octant of (x, y) decides it, else -1 (then t decides). The octant comes from exact
+  // comparisons of x and y, the very numbers atan2 takes: t = atan2(y, x), moved into [0, 2 pi),
+  // lies in [k pi/4, (k + 1) pi/4] up to atan2's error (2.5 ulp in double, detail/atan2.hpp;
+  // std::atan2's in other types) and the rounding of t + 2 pi, both far below
+  // slack = 64 eps 2 pi. Each of solve()'s comparisons, t <= angle, to_start < to_end - margin
+  // (t beyond (2 pi + angle + margin) / 2, each difference rounding by an ulp of 2 pi) and
+  // to_end < to_start - margin, is taken here only where the octant, widened by 2 slack on
+  // each side, lies wholly on one side of its threshold: there t gives the same answer.
+  // A NaN or infinite x, y or angle: -1.
+  CIRCLEDIST_INLINE static int sector_without_angle(Real x, Real y, Real angle, Real margin) {
+    Real lo, hi;
+    if (!(angle < std::numeric_limits<Real>::infinity()) || !detail::octant_bounds(x, y, lo, hi)) return -1;  // NaN too
+    const Real turn = 2 * pi_v<Real>(), slack = detail::octant_slack<Real>();
+    if (hi < angle) return 0;
+    if (!(lo > angle)) return -1;
+    const Real start_side = (turn + angle + margin) / 2, end_side = (turn + angle - margin) / 2;
+    if (lo > start_side + slack) return 1;  // to_start < to_end - margin
+    if (!(hi < start_side - slack)) return -1;
+    if (hi < end_side - slack) return 2;  // to_end < to_start - margin
+    if (lo > end_side + slack) return 3;  // neither
+    return -1;
+  }
+
   // A start with no in-plane part: the arc starts at Frame's U (ArcSpan's theta0 = 0); the
   // general form through the canonical angle, out of line (rare).
 #if defined(__GNUC__) || defined(__clang__)
@@ -267,6 +324,14 @@ template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H
   Real best = std::numeric_limits<Real>::infinity();
   for (int k = 0; k <= pieces; ++k) best = std::min(best, h(span.lo() + span.angle * k / pieces));
   return best;
+}
+
+// h with its values at the arc's two ends kept: arc_bound takes h there, and polish_on_arc's
+// screening takes it there again (the ends are starts). The same numbers (h is a function of
+// t alone), each computed once.
+template <class Real, class H> auto with_end_values(const ArcSpan<Real>& span, const H& h) {
+  const Real lo = span.lo(), hi = span.hi(), at_lo = h(lo), at_hi = h(hi);
+  return [=, &h](Real t) { return t == lo ? at_lo : (t == hi ? at_hi : h(t)); };
 }
 
 // The same bound against a ring or an arc, without the interior evaluations: the least of h at
@@ -328,10 +393,26 @@ void add_ends_for_ties(ArcMinima<Real>& minima, const ArcSpan<Real>& span, const
 template <class Real, class Target> struct ArcRoundQuery {
   using Shape = typename Target::Shape;
 
+  using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
+  using Heights = typename CircleDisk::Heights;
+
   template <class Roots>
   static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale) {
+    if constexpr (Target::interior) {
+      return solve<Roots>(span, c, radius, scale, CircleDisk::template height_candidates<Roots>(c, scale));
+    } else {
+      return solve<Roots>(span, c, radius, scale, Heights());
+    }
+  }
+
+  // `heights`: against a disk, circle-disk's height candidates (computed once for the verdict
+  // and the solve); unused against a ring.
+  template <class Roots>
+  static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
+                               const Heights& heights) {
     const CircleOverRound<Real> view(c, radius);
-    const auto h = [&](Real t) { return view.template distance<Target>(t); };
+    const auto distance = [&](Real t) { return view.template distance<Target>(t); };
+    const auto h = with_end_values(span, distance);
     const auto jet = [&](Real t) { return view.template jet<Target>(t); };
     if constexpr (Target::interior) {
       // Against a disk, as before: the bound from h itself, the octic searched on the whole
@@ -339,11 +420,10 @@ template <class Real, class Target> struct ArcRoundQuery {
       // disk parallel to the arc's plane (rounding noise there: the distance is the planes' gap
       // over the disk) came out differently, and the continuum's `unique` with them, wrong in 4
       // of 6 changed cases (docs/arc.md, "Cost").
-      using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
-      const auto heights = CircleDisk::template height_candidates<Roots>(c, scale);
       return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, arc_bound(span, h)),
                                   jet, h, c.radius, scale);
     } else {
+      (void)heights;
       using CircleCircle = Query<Circle3<Real>, Circle3<Real>>;
       const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
       const std::array<Real, 8> samples = sampled_squared_distances(c, squared);
@@ -355,19 +435,99 @@ template <class Real, class Target> struct ArcRoundQuery {
     }
   }
 
+  // Against a disk, distance()'s early answer (circle-disk's height verdict restricted to the
+  // arc; docs/arc.md, "Cost"): the disk's distance is at least the height |z| everywhere, and
+  // over the arc |z| is least at an end, at a root of z (z = 0) or at a root of z' (an interior
+  // local extremum of z): the arc's points among circle-disk's height candidates (z = 0, z' = 0,
+  // t = 0, pi) and its two ends hold the arc's least |z|, `lowest`. Where the least disk
+  // distance among those same points, `best`, is no more than that (within circle-disk's tie
+  // tolerance, the rounding of z at the rounded roots), no point of the arc is closer than
+  // `best`, an arc point's distance: the answer, without the octic. A root rounded just off the
+  // arc is dropped, but |z| at the arc's end next to it is then within rounding of its value.
+  struct HeightVerdict {
+    Real best;
+    bool decided;
+  };
+  template <class Roots>
+  static HeightVerdict height_verdict(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
+                                      const Heights& heights) {
+    // One sine and cosine per point: |z| at each, then the disk's distance only at the points
+    // whose |z| is within the tolerance of the lowest (elsewhere it is at least |z|, above
+    // lowest + tolerance: such a point can neither decide nor be the decided best).
+    const CircleOverRound<Real> view(c, radius);
+    Real cs[Heights::capacity + 2], sn[Heights::capacity + 2], z[Heights::capacity + 2];
+    int n = 0;
+    Real lowest = std::numeric_limits<Real>::infinity();
+    const auto take = [&](Real t) {
+      cs[n] = std::cos(t);
+      sn[n] = std::sin(t);
+      z[n] = std::abs(c.center.z() + cs[n] * c.e1.z() + sn[n] * c.e2.z());
+      lowest = std::min(lowest, z[n]);
+      ++n;
+    };
+    take(span.lo());
+    take(span.hi());
+    for (int i = 0; i < heights.count; ++i) {
+      const Real t = span.offset(heights.value[i]);
+      if (t <= span.angle) take(span.lo() + t);
+    }
+    const Real level = lowest + tie_tolerance(scale);
+    Real best = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < n; ++i)
+      if (z[i] <= level) best = std::min(best, view.template distance<Target>(cs[i], sn[i]));
+    if (!(best <= level)) return {best, false};
+    // Decided. The answer is then polished as the full solve would polish it: those same starts
+    // (each polished alone, polish_offsets, on the same h and jet over the same interval), which
+    // the full solve holds too and, being within rounding of the least |z|, polishes too (its
+    // screening margin is 16 sqrt(eps) scale). So the decided answer is the full solve's (the
+    // least over a superset of these starts) wherever its best comes from one of them, and a
+    // crossing of the disk, where an unpolished root of z leaves |z| at rounding noise, reaches
+    // what the polish reaches.
+    ArcCandidates<Real> starts;
+    const auto keep = [&](int i, Real t) {
+      if (z[i] <= level) starts.push(t);
+    };
+    int i = 0;
+    keep(i++, span.lo());
+    keep(i++, span.hi());
+    for (int k = 0; k < heights.count; ++k) {
+      const Real t = span.offset(heights.value[k]);
+      if (t <= span.angle) keep(i++, span.lo() + t);
+    }
+    const auto h = [&](Real t) { return view.template distance<Target>(t); };
+    const auto jet = [&](Real t) { return view.template jet<Target>(t); };
+    const ArcMinima<Real> polished =
+        polish_offsets<Roots>(jet, h, starts, Real(1e-3), span.lo(), span.hi(), parameter_tolerance(c.radius, scale),
+                              screening_margin(scale), pi_v<Real>());
+    return {std::min(best, polished.best.value), true};
+  }
+
   // The arc first.
   template <class Roots> static Real distance(const Arc3<Real>& arc, const Shape& shape) {
     const Round<Real> round(shape.center, shape.normal, shape.radius);
     const LocalCircle<Real> c(arc_circle(arc), round);
-    return solve<Roots>(ArcSpan<Real>(arc), c, shape.radius, circle_round_scale(c, shape.radius)).best.value;
+    const ArcSpan<Real> span(arc);
+    const Real scale = circle_round_scale(c, shape.radius);
+    if constexpr (Target::interior) {
+      const Heights heights = CircleDisk::template height_candidates<Roots>(c, scale);
+      const HeightVerdict early = height_verdict<Roots>(span, c, shape.radius, scale, heights);
+      if (early.decided) return early.best;
+      return std::min(early.best, solve<Roots>(span, c, shape.radius, scale, heights).best.value);
+    } else {
+      return solve<Roots>(span, c, shape.radius, scale).best.value;
+    }
   }
 
+  // Against a disk the distance is distance()'s (the verdict's where it decides), as circle-disk
+  // reports it: the two agree to the bit.
   template <class Roots> static Result<Real> closest(const Arc3<Real>& arc, const Shape& shape) {
     const Round<Real> round(shape.center, shape.normal, shape.radius);
     const LocalCircle<Real> c(arc_circle(arc), round);
     const ArcSpan<Real> span(arc);
     const Real scale = circle_round_scale(c, shape.radius);
-    ArcMinima<Real> minima = solve<Roots>(span, c, shape.radius, scale);
+    Heights heights;
+    if constexpr (Target::interior) heights = CircleDisk::template height_candidates<Roots>(c, scale);
+    ArcMinima<Real> minima = solve<Roots>(span, c, shape.radius, scale, heights);
     add_ends_for_ties(minima, span, [&](Real t) {
       bool unused = false;
       const Vec3<Real> p = c.at(t);
@@ -375,6 +535,10 @@ template <class Real, class Target> struct ArcRoundQuery {
     });
     Result<Real> r = circle_round_result<Target>(arc_circle(arc), c, round, minima, scale);
     r.param_a = span.param(minima.best.x);
+    if constexpr (Target::interior) {
+      const HeightVerdict early = height_verdict<Roots>(span, c, shape.radius, scale, heights);
+      r.distance = early.decided ? early.best : std::min(early.best, minima.best.value);
+    }
     return r;
   }
 };
@@ -392,13 +556,47 @@ template <class Real> struct ArcTarget {
   Real radius;
   Vec3<Real> end[2];
 
-  explicit ArcTarget(const Arc3<Real>& b)
-      : span(b), radius(b.radius), end{ArcSpan<Real>::local(b.radius, span.lo()), ArcSpan<Real>::local(b.radius, span.hi())} {}
+  bool sectors;  // whether sector() may decide (a finite angle in [0, 2 pi), radius and start)
 
-  // -1 where the ring's point is on the arc, else the nearer end's index.
+  explicit ArcTarget(const Arc3<Real>& b)
+      : span(b), radius(b.radius), end{ArcSpan<Real>::local(b.radius, span.lo()), ArcSpan<Real>::local(b.radius, span.hi())} {
+    sectors = span.angle >= 0 && span.angle < 2 * pi_v<Real>() && radius > 0 && radius < std::numeric_limits<Real>::infinity() &&
+              std::isfinite(span.lo());
+  }
+
+  // -1 where the ring's point is on the arc, else the nearer end's index. The sector test of
+  // the canonical angle (an atan2 per call: every h and jet of arc-arc and circle-arc evaluates
+  // it) is first decided by the signs of the cross products with the ends (sector()), and taken
+  // in full only where those do not decide.
   int nearest_end(const Vec3<Real>& p) const {
-    if (span.holds(detail::atan2(p.y(), p.x()))) return -1;
+    const int fast = sector(p);
+    if (fast > 0 || (fast < 0 && span.holds(detail::atan2(p.y(), p.x())))) return -1;
     return (p - end[0]).squaredNorm() <= (p - end[1]).squaredNorm() ? 0 : 1;
+  }
+
+  // Whether p's angle lies on the arc, decided without an atan2: 1 on it, 0 off it, -1
+  // undecided (then span.holds(atan2) decides, as it always did). With c0 = end0 x p and
+  // c1 = p x end1 (z components; |end| = R): for an angle <= pi the arc is where both are
+  // >= 0, for an angle > pi where either is (its gap, the complement, is then under pi). A sign
+  // counts only beyond tol = 1e-9 R (|x| + |y|) >= 1e-9 |end| |p|, that is where p's direction
+  // is more than about 1e-9 rad from the line through either end: the rounding of c0 and c1
+  // (2 eps R (|x| + |y|)), of the ends' cosines and sines and of holds()'s atan2, theta0 and
+  // offset (a few ulps of 2 pi) are all below 1e-14 rad, so beyond tol holds() gives the same
+  // answer, and where either sign is within tol (p near an end's line, on the axis, NaN) this
+  // answers -1. A NaN or out-of-range angle, radius or theta0: -1 always (`sectors`).
+  int sector(const Vec3<Real>& p) const {
+    if (!sectors) return -1;
+    const Real x = p.x(), y = p.y();
+    const Real tol = Real(1e-9) * radius * (std::abs(x) + std::abs(y));
+    const Real c0 = end[0].x() * y - end[0].y() * x, c1 = x * end[1].y() - y * end[1].x();
+    if (span.angle <= pi_v<Real>()) {
+      if (c0 > tol && c1 > tol) return 1;
+      if (c0 < -tol || c1 < -tol) return 0;  // offset in (pi, 2 pi) or in (angle, angle + pi)
+    } else {
+      if (c0 > tol || c1 > tol) return 1;  // offset in (0, pi) or in (angle - pi, angle)
+      if (c0 < -tol && c1 < -tol) return 0;  // offset in (pi, 2 pi) and in (angle, 2 pi)
+    }
+    return -1;
   }
 
   // The arc's point closest to p. On the axis (within rounding, at the scene's `scale`) every
@@ -436,16 +634,21 @@ template <class Real> struct ArcArcQuery {
   static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, const ArcTarget<Real>& target,
                                Real scale) {
     const CircleOverRound<Real> view(c, target.radius);
-    const auto h = [&](Real t) {
-      const Vec3<Real> p = c.at(t);
+    // One sine and cosine per evaluation: the point for the sector test and the ring's form
+    // from the same cos t and sin t (CircleOverRound's overloads: the values of the angle forms
+    // to the bit; c.at(t) is c.center + cos t e1 + sin t e2, as here).
+    const auto distance = [&](Real t) {
+      const Real cs = std::cos(t), sn = std::sin(t);
+      const Vec3<Real> p = c.center + cs * c.e1 + sn * c.e2;
       const int e = target.nearest_end(p);
-      return e < 0 ? view.template distance<RingTarget<Real>>(t) : (p - target.end[e]).norm();
+      return e < 0 ? view.template distance<RingTarget<Real>>(cs, sn) : (p - target.end[e]).norm();
     };
+    const auto h = with_end_values(span, distance);
     const auto jet = [&](Real t) {
       const Real cs = std::cos(t), sn = std::sin(t);
       const Vec3<Real> w = cs * c.e1 + sn * c.e2, p = c.center + w;
       const int e = target.nearest_end(p);
-      return e < 0 ? view.template jet<RingTarget<Real>>(t) : point_jet(p, Vec3<Real>(cs * c.e2 - sn * c.e1), Vec3<Real>(-w), target.end[e]);
+      return e < 0 ? view.template jet<RingTarget<Real>>(cs, sn) : point_jet(p, Vec3<Real>(cs * c.e2 - sn * c.e1), Vec3<Real>(-w), target.end[e]);
     };
     const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, target.radius); };
     // The ring's octic under a distance A's arc reaches (the arc's distance is at least the
@@ -609,6 +812,16 @@ template <class Real> struct ArcEnds {
     const Real t = detail::atan2(p.dot(v), s * p.dot(u));
     return t < 0 ? t + 2 * pi_v<Real>() : t;
   }
+  // offset(p) <= angle, the atan2 only where the octant of the same two numbers does not decide
+  // (detail::octant_bounds: where it does, offset answers the same).
+  bool holds(const Vec3<Real>& p) const {
+    Real lo, hi;
+    if (detail::octant_bounds(s * p.dot(u), p.dot(v), lo, hi)) {
+      if (hi < angle) return true;
+      if (lo > angle) return false;
+    }
+    return offset(p) <= angle;
+  }
 };
 
 // The piece relative to the arc's center c along its line's anchor a (its point nearest c, from
@@ -697,8 +910,16 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   // only pair at that distance unless it is tied with its mirror image (the trust-region
   // subproblem's global minimizer is unique outside its hard case, b1 = 0, which the mirror
   // bounds: line_ring_minimum.hpp), where closest() asks the general path.
-  const Real global_t = ends.offset(m.ring_point);
-  if (global_t <= ends.angle && on_piece(pl.line, c.center, m.line_point, linear)) {
+  // distance() needs only whether the point is on the arc (ArcEnds::holds), closest() its t.
+  Real global_t = 0;
+  bool on_arc;
+  if constexpr (for_closest) {
+    global_t = ends.offset(m.ring_point);
+    on_arc = global_t <= ends.angle;
+  } else {
+    on_arc = ends.holds(m.ring_point);
+  }
+  if (on_arc && on_piece(pl.line, c.center, m.line_point, linear)) {
     out.value = m.distance;
     if constexpr (for_closest) {
       out.piece_point = c.center + m.line_point;
@@ -717,8 +938,15 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   int count = 0;
   Real least = std::numeric_limits<Real>::infinity();
   if (other == 1) {  // the global minimum is off the arc or the piece (above)
-    const Real t = ends.offset(second.ring_point);
-    if (t <= ends.angle && on_piece(pl.line, c.center, second.line_point, linear)) {
+    Real t = 0;
+    bool on_arc_too;
+    if constexpr (for_closest) {
+      t = ends.offset(second.ring_point);
+      on_arc_too = t <= ends.angle;
+    } else {
+      on_arc_too = ends.holds(second.ring_point);
+    }
+    if (on_arc_too && on_piece(pl.line, c.center, second.line_point, linear)) {
       least = second.distance;
       if constexpr (for_closest) {
         PieceArcPick<Real>& k = list[count++];

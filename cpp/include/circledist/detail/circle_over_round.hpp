@@ -64,8 +64,9 @@ template <class Real> struct CircleOverRound {
   struct Terms {
     Real z, z1, z2, s, s1, s2;
   };
-  Terms terms(Real t) const {
-    const Real cs = std::cos(t), sn = std::sin(t);
+  Terms terms(Real t) const { return terms(std::cos(t), std::sin(t)); }
+  // The same from cos t and sin t.
+  Terms terms(Real cs, Real sn) const {
     Terms out;
     const Real zw = z1 * cs + z2 * sn, qw = q1 * cs + q2 * sn;
     out.z = z0 + zw;
@@ -80,9 +81,11 @@ template <class Real> struct CircleOverRound {
 
   // The target's distance from P(t): on the ring h = sqrt(z^2 + w^2), over a disk's interior
   // (s <= 0) the height |z|.
-  template <class Target> Real distance(Real t) const {
-    if (!expanded) return Target::distance(c.at(t), radius);
-    const Terms v = terms(t);
+  template <class Target> Real distance(Real t) const { return distance<Target>(std::cos(t), std::sin(t)); }
+  // The same from cos t and sin t (the same value to the bit).
+  template <class Target> Real distance(Real cs, Real sn) const {
+    if (!expanded) return Target::distance(Vec3<Real>(c.center + cs * c.e1 + sn * c.e2), radius);
+    const Terms v = terms(cs, sn);
     if constexpr (Target::interior) {
       if (v.s <= 0) return std::abs(v.z);
     }
@@ -94,9 +97,11 @@ template <class Real> struct CircleOverRound {
   // w' (rho + R) + w rho' = s',  w'' (rho + R) + 2 w' rho' + w rho'' = s'',  2 rho rho' = s',
   // rho'' = (s''/2 - rho'^2) / rho. On the axis (rho = 0) the curvature is NaN, as in
   // RoundTarget::jet. Over a disk's interior (s <= 0), the height squared (height_jet).
-  template <class Target> Jet<Real> jet(Real t) const {
-    if (!expanded) return c.template jet<Target>(t, radius);
-    const Terms v = terms(t);
+  template <class Target> Jet<Real> jet(Real t) const { return jet<Target>(std::cos(t), std::sin(t)); }
+  // The same from cos t and sin t (the same value to the bit).
+  template <class Target> Jet<Real> jet(Real cs, Real sn) const {
+    if (!expanded) return c.template jet<Target>(cs, sn, radius);
+    const Terms v = terms(cs, sn);
     if constexpr (Target::interior) {
       if (v.s <= 0) return height_jet(v.z, v.z1, v.z2);
     }

@@ -35,7 +35,10 @@ template <class Real> struct LocalCircle {
   // P(t), P'(t), P''(t) = O - P(t), for the Newton polish.
   // The target's (round_target.hpp) squared distance and its derivatives there.
   template <class Target> Jet<Real> jet(Real t, Real radius) const {
-    const Real c = std::cos(t), s = std::sin(t);
+    return jet<Target>(std::cos(t), std::sin(t), radius);
+  }
+  // The same from c = cos t and s = sin t.
+  template <class Target> Jet<Real> jet(Real c, Real s, Real radius) const {
     const Vec3<Real> w = c * e1 + s * e2;
     return Target::jet(Vec3<Real>(center + w), Vec3<Real>(c * e2 - s * e1), Vec3<Real>(-w), radius);
   }
