@@ -37,12 +37,13 @@ jobs loading the machine to 6-7; at load ~2 the slice gets a core and its wall t
 CPU time).  Arc-Bezier (2026-11-27) adds its two cases per arc family: 48 tests passed in 80 s
 of wall time and 78 s of CPU at load ~2.  The 18 annulus families (2026-11-27) add 238
 cases (two per family and kind pair) and 39 direct references, and the unique check runs on
-every case: 1350 cases, 295,480 answers, 257 direct references, 66 tests (one xfail: the
-polished policy's unique flag on an arc lying on a coaxial circle, KNOWN_FAILURES) in 343..381 s
+every case: 1350 cases, 295,480 answers, 257 direct references, 66 tests (one xfail then: the
+polished policy's unique flag on an arc lying on a coaxial circle, since fixed) in 343..381 s
 of wall time and 99..102 s of CPU at load ~5-6 (another long run and three other workers on the
 2 cores): about 23 s of CPU more than before.  The direct comparison's unique check from the
 reference's own minima (differential.reference_unique: a circle or arc against a line, ray,
-segment or disk, float64 scenes) adds 6 s: 107.6 s of CPU, 277 s of wall time at load ~5.  A failure lists one reproducer per finding class;
+segment or disk, float64 scenes) adds 6 s: 107.6 s of CPU, 277 s of wall time at load ~5
+(155 s at load ~4 with the fix).  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
@@ -150,10 +151,9 @@ def test_slice_covers_every_family_and_kind_pair(results):
 
 # Classes that still fail, each stated in the note on issue 14. Any other finding in the family
 # fails the test, and so does a known class that stops failing (remove it here then).
-KNOWN_FAILURES = {
-    ("arc_spans", "circle-arc"): "polished policy: unique=True for an arc lying on a coaxial circle's rim (a continuum "
-                                 "of contact; tests/test_open_findings.py::test_unique_coaxial_arc)",
-}
+# None: the last (the polished policy's unique=True for an arc lying on a coaxial circle's rim) is
+# fixed and kept in tests/test_regressions.py::test_unique_coaxial_arc.
+KNOWN_FAILURES: dict = {}
 
 
 @pytest.mark.parametrize("family", list(D.FAMILIES))
