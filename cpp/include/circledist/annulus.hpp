@@ -258,7 +258,7 @@ InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b, const Annulus3<
   const Round<Real> round(a.center, a.normal, a.outer_radius);
   const LocalBezier<Real> c(b, round);
   const Real scale = bezier_round_scale(c, a.outer_radius);
-  Candidates<Real, 2 * kMaxBezierDegree + 8> heights;
+  Candidates<Real, 4 * kMaxBezierDegree + 8> heights;  // the ends, the roots refined and as they came
   heights.push(Real(0));
   heights.push(Real(1));
   push_refined_curve_height_roots<Roots>(c, scale, heights);

@@ -49,7 +49,10 @@ void push_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<
 // put a crossing of the plane at |z| = 2e-14 in long double (7e-15 x the outer radius,
 // tests/test_regressions.py); the disk's candidates are polished on the exact distance and
 // land on the crossing. A simple root takes a step or two; a double one (the curve touching the
-// plane) halves its error per step, and its z' root is the accurate candidate there.
+// plane) halves its error per step, and its z' root is the accurate candidate there. The root as
+// it came is kept too where the steps moved it (a step that left for another root's basin loses
+// nothing): every candidate is a curve point at its true |z|, so the interior answer and its
+// verdict are never worse than the unrefined roots'. `out` holds up to 2 (2n - 1) of them.
 template <class Roots, class Real, int N>
 void push_refined_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<Real, N>& out) {
   if (c.n < 1) return;
@@ -79,7 +82,11 @@ void push_refined_curve_height_roots(const LocalBezier<Real>& c, Real scale, Can
   for (int order = 0; order < 2; ++order) {
     Candidates<Real, N> roots;
     push_curve_roots<Roots>(order == 0 ? z : z.derivative(), roots);
-    for (int i = 0; i < roots.count; ++i) out.push(refine(order, roots.value[i]));
+    for (int i = 0; i < roots.count; ++i) {
+      const Real refined = refine(order, roots.value[i]);
+      out.push(refined);
+      if (refined != roots.value[i]) out.push(roots.value[i]);
+    }
   }
 }
 
