@@ -455,6 +455,125 @@ void annulus_degenerate() {
   }
 }
 
+// Curves crossing the annulus's face inside the ring (true distance 0) in long double, every
+// policy: the interior candidates where the height z = 0 are refined on the curve
+// (push_refined_curve_height_roots, bezier.hpp). Degree-2 arches elevated to degree 2..7, their
+// height linear in t (the height polynomial's higher coefficients rounding noise: the companion
+// and eigen policies' roots of such a polynomial were 1e-14 off, and the answer up to 7e-15 x the
+// outer radius, tests/test_regressions.py), and random curves through the point at t = 1/2; the
+// point anywhere in the ring or 1e-9..1e-4 x outer from a rim, the crossing 0.1..1.4 rad from
+// the plane, so the inputs' rounding (1e-16) moves it by far less than its margin: the truth is
+// 0. Also the two scenes of the long run (their 50-digit references below 1e-30). Bar 1e-15 x
+// the outer radius; distance() and closest_points().distance equal to the bit, both orders.
+template <class Roots>
+void crossing_case(const char* name, const BezierCurve3<LD>& b, const Annulus3<LD>& a) {
+  const std::string kind = std::string("bezier-annulus crossing ") + policy_name<Roots>();
+  ++counts[kind];
+  const LD d1 = distance<Roots>(b, a), d2 = distance<Roots>(a, b);
+  const LD d3 = closest_points<Roots>(b, a).distance, d4 = closest_points<Roots>(a, b).distance;
+  const LD relative = d1 / a.outer_radius;
+  worst[kind] = std::max(worst[kind], double(relative));
+  const bool ok = relative <= 1e-15L && same_bits(d1, d2) && same_bits(d1, d3) && same_bits(d1, d4);
+  if (!ok) std::printf("  %s / %s: %.3Lg %.3Lg %.3Lg %.3Lg (outer %.3Lg)\n", kind.c_str(), name, d1, d2, d3, d4, a.outer_radius);
+  check::record(ok, name, __FILE__, __LINE__);
+}
+
+template <class Roots> void crossing_policy(const char* name, const Curve& b, const Annulus& a) {
+  BezierCurve3<LD> bl;
+  bl.control = b.control.cast<LD>();
+  const Annulus3<LD> al{a.center.cast<LD>(), a.normal.cast<LD>(), a.inner_radius, a.outer_radius};
+  crossing_case<Roots>(name, bl, al);
+}
+
+void crossing_all(const char* name, const Curve& b, const Annulus& a) {
+  crossing_policy<Bracketing>(name, b, a);
+  crossing_policy<EigenCompanion>(name, b, a);
+  crossing_policy<EigenPolished>(name, b, a);
+  crossing_policy<EigenPolynomialSolver>(name, b, a);
+}
+
+Curve elevated(std::vector<V3d> p, int degree) {
+  while (int(p.size()) - 1 < degree) {
+    const int n = int(p.size()) - 1;
+    std::vector<V3d> q(n + 2);
+    q[0] = p[0];
+    q[n + 1] = p[n];
+    for (int i = 1; i <= n; ++i) q[i] = (double(i) / (n + 1)) * p[i - 1] + (1 - double(i) / (n + 1)) * p[i];
+    p = q;
+  }
+  Curve b;
+  b.control.resize(3, int(p.size()));
+  for (int i = 0; i < int(p.size()); ++i) b.control.col(i) = p[i];
+  return b;
+}
+
+void annulus_crossing() {
+  {
+    // ann_inner_tangent/1/166 (crossing 6e-12 outside the hole) and ann_tangent/1/760 (a 1e-6
+    // hole): companion and eigen answered 9.7e-16 and 2.1e-14.
+    const Curve by_the_hole = curve_of({V3d(-0.7101942833985928, -0.39068014472128004, -0.32302582640059707),
+                                        V3d(-0.6991227002034476, -0.480351626562345, -0.07555890804429077),
+                                        V3d(-0.7760518042453024, -0.56429297580268, 0.08499566795781921),
+                                        V3d(-0.9409815955241572, -0.642504192442285, 0.15863790160573277),
+                                        V3d(-1.193912074040012, -0.7149852764811601, 0.14536779289944998)});
+    crossing_all("by the hole", by_the_hole,
+                 Annulus{V3d(-0.5042840475030932, -0.5819890339998373, 0.35340234813746907),
+                         V3d(-0.33713368487841255, 0.04617337810703753, 0.3443995953674146), 0.44428672172024514,
+                         0.796808950921382});
+    const Curve tiny_hole = curve_of({V3d(1.9410124537551017, 3.753351541927369, 1.546877829541188),
+                                      V3d(1.5903067891120657, 1.9164191936285198, 1.148426524700254),
+                                      V3d(1.204019489879799, 0.8481093996068911, 1.4815797077809183),
+                                      V3d(0.7821505560583013, 0.548422159862483, 2.5463373787831807),
+                                      V3d(0.32469998764757324, 1.0173574743952956, 4.342699537707042)});
+    crossing_all("tiny hole", tiny_hole,
+                 Annulus{V3d(1.2892608342819993, -0.9932455752506648, -0.27109272677878005),
+                         V3d(0.17834981144890788, -3.126647222115497, 3.2935248372402555), 1.0466447969211326e-06,
+                         3.0744569231399432});
+  }
+  Draw d(35);
+  for (int k = 0; k < int(200 * BEZIER_ARC_RANDOM_SCALE); ++k) {
+    const V3d c = d.vec(), n = d.vec().normalized();
+    const double outer = 0.2 + 2.8 * d.uniform(d.rng);
+    const double inner = outer * (k % 5 == 0 ? 1e-6 : 0.05 + 0.85 * d.uniform(d.rng));
+    const Frame<double> f(n);
+    const double phi = 6.283185307179586 * d.uniform(d.rng);
+    const V3d r = std::cos(phi) * f.u + std::sin(phi) * f.v, t = -std::sin(phi) * f.u + std::cos(phi) * f.v;
+    const double margin = outer * std::pow(10.0, -9 + 5 * d.uniform(d.rng));
+    const double rho = k % 3 == 0 ? inner + (outer - inner) * d.uniform(d.rng) : k % 3 == 1 ? inner + margin : outer - margin;
+    const V3d y = c + rho * r;
+    const double psi = 0.1 + 1.3 * d.uniform(d.rng);
+    const V3d dir = std::cos(psi) * t + std::sin(psi) * n;
+    const int degree = 1 + k % 7;
+    Curve b;
+    if (k % 2 == 0) {
+      const double length = outer * (0.2 + 1.3 * d.uniform(d.rng));
+      const V3d bulge = -r * rho * (0.05 + 0.45 * d.uniform(d.rng));
+      b = elevated({y - length * dir - bulge, y + bulge, y + length * dir - bulge}, std::max(degree, 2));
+    } else {
+      // Through y at t = 1/2, crossing steeply: a random curve whose middle is moved onto y,
+      // then given the height slope s there by adding s (t - 1/2) n (control point i moved by
+      // s (i / degree - 1/2) n: the point at 1/2 stays), |s| at least a fifth of the in-plane
+      // speed there (the crossing 0.197 rad or more from the plane).
+      b = d.curve(degree, y, outer);
+      const V3d mid = b.at(0.5);
+      for (int i = 0; i <= degree; ++i) b.control.col(i) += y - mid;
+      V3d speed = V3d::Zero();  // P'(1/2): the hodograph's control points, averaged by de Casteljau
+      {
+        std::vector<V3d> h(degree);
+        for (int i = 0; i < degree; ++i) h[i] = degree * (b.control.col(i + 1) - b.control.col(i));
+        for (int m = degree - 1; m > 0; --m)
+          for (int i = 0; i < m; ++i) h[i] = 0.5 * (h[i] + h[i + 1]);
+        speed = h[0];
+      }
+      const double along = speed.dot(n), in_plane = (speed - along * n).norm();
+      const double slope = (k % 4 == 1 ? 1 : -1) * std::max(in_plane, outer) * (0.2 + 1.8 * d.uniform(d.rng));
+      for (int i = 0; i <= degree; ++i) b.control.col(i) += (slope - along) * (double(i) / degree - 0.5) * n;
+    }
+    crossing_all(k % 2 == 0 ? "elevated arch through the ring" : "random curve through the ring", b,
+                 Annulus{c, n, inner, outer});
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 
 void precision_tests() {
@@ -492,6 +611,7 @@ int main() {
   annulus_hard();
   annulus_degenerate();
   annulus_random();
+  annulus_crossing();
   precision_tests();
   for (const auto& [kind, n] : counts) std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
   return check::finish("bezier-arc");

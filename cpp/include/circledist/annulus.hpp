@@ -248,7 +248,8 @@ InteriorVerdict<Real> ring_interior(const Arc3<Real>& arc, const Annulus3<Real>&
   return circle_annulus_interior<Roots>(arc_circle(arc), a, with_points, add, &span);
 }
 // A Bezier curve (docs/annulus.md, "A Bezier curve"): the stationary points of its height
-// (push_curve_height_roots, bezier.hpp: bezier-disk's interior candidates) and its two ends.
+// (bezier-disk's interior candidates, refined on the curve: push_refined_curve_height_roots,
+// bezier.hpp, since nothing polishes them here) and its two ends.
 // An empty curve has none (its rims' answers are empty too).
 template <class Roots, class Real, class Add>
 InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b, const Annulus3<Real>& a, bool with_points,
@@ -257,10 +258,10 @@ InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b, const Annulus3<
   const Round<Real> round(a.center, a.normal, a.outer_radius);
   const LocalBezier<Real> c(b, round);
   const Real scale = bezier_round_scale(c, a.outer_radius);
-  Candidates<Real, 2 * kMaxBezierDegree + 8> heights;
+  Candidates<Real, 4 * kMaxBezierDegree + 8> heights;  // the ends, the roots refined and as they came
   heights.push(Real(0));
   heights.push(Real(1));
-  push_curve_height_roots<Roots>(c, scale, heights);
+  push_refined_curve_height_roots<Roots>(c, scale, heights);
   return interior_in_ring(heights, a, round, scale, with_points, add, [&](Real t) { return c.at(t); },
                           [&](Real t, Result<Real>& r) {
                             r.point_a = b.at(t);

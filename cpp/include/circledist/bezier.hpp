@@ -40,6 +40,56 @@ void push_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<
   push_curve_roots<Roots>(z.derivative(), out);
 }
 
+// The same candidates, each refined on the curve itself (an annulus's interior candidates,
+// annulus.hpp), where no polish on the exact distance follows: Newton steps on the height z
+// (de Casteljau) from each root of z, on its slope z' from each root of z', clamped to [0, 1]
+// and kept only while they lower |z| or |z'|. The eigenvalue policies' roots of a curve whose
+// height is nearly of lower degree (a degree-elevated arch: its high coefficients rounding noise,
+// hence roots near 1e5 and, from the QR's backward error eps |C|, the small ones off by 1e-14)
+// put a crossing of the plane at |z| = 2e-14 in long double (7e-15 x the outer radius,
+// tests/test_regressions.py); the disk's candidates are polished on the exact distance and
+// land on the crossing. A simple root takes a step or two; a double one (the curve touching the
+// plane) halves its error per step, and its z' root is the accurate candidate there. The root as
+// it came is kept too where the steps moved it (a step that left for another root's basin loses
+// nothing): every candidate is a curve point at its true |z|, so the interior answer and its
+// verdict are never worse than the unrefined roots'. `out` holds up to 2 (2n - 1) of them.
+template <class Roots, class Real, int N>
+void push_refined_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<Real, N>& out) {
+  if (c.n < 1) return;
+  const CurvePoly<Real> z = c.coordinate(2, scale);
+  // f(t) and its slope: the height (order 0) or its slope (order 1) along the curve.
+  const auto value = [&](int order, Real t, Real& slope) {
+    const Vec3<Real> p1 = LocalBezier<Real>::casteljau(c.d1, c.n - 1, t);
+    const Vec3<Real> p2 = c.n >= 2 ? LocalBezier<Real>::casteljau(c.d2, c.n - 2, t) : Vec3<Real>::Zero();
+    slope = order == 0 ? p1.z() : p2.z();
+    return order == 0 ? c.at(t).z() : p1.z();
+  };
+  const auto refine = [&](int order, Real t) {
+    Real slope = 0;
+    Real v = value(order, t, slope);
+    for (int iteration = 0; iteration < 16 && v != 0 && slope != 0; ++iteration) {
+      const Real next = std::min(std::max(t - v / slope, Real(0)), Real(1));
+      if (!(next != t)) break;
+      Real next_slope = 0;
+      const Real next_v = value(order, next, next_slope);
+      if (!(std::abs(next_v) < std::abs(v))) break;
+      t = next;
+      v = next_v;
+      slope = next_slope;
+    }
+    return t;
+  };
+  for (int order = 0; order < 2; ++order) {
+    Candidates<Real, N> roots;
+    push_curve_roots<Roots>(order == 0 ? z : z.derivative(), roots);
+    for (int i = 0; i < roots.count; ++i) {
+      const Real refined = refine(order, roots.value[i]);
+      out.push(refined);
+      if (refined != roots.value[i]) out.push(roots.value[i]);
+    }
+  }
+}
+
 // Note 001 §3: where x^2 + y^2 = R^2 (the pieces' ends), and z z' = 0 (the inside pieces).
 template <class Roots, class Real, int N>
 void push_curve_disk_roots(const LocalBezier<Real>& c, Real radius, Real scale, Candidates<Real, N>& out) {
