@@ -112,23 +112,24 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
     }, begin, end);
   }
 
+  // closest_points of one element of an unswept pair, stored.
+  CIRCLEDIST_PER_ELEMENT static void store_closest(const Request<Real>& r, Index i, Fields f) {
+    r.store(i, circledist::closest_points<Roots>(first_core(r, f), second_core(r, f)));
+  }
+
   static void closest(const Request<Real>& r, Index begin, Index end) {
+    const auto one = [&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT { store_closest(r, i, f); };
 #if CIRCLEDIST_POINT_ROUND_LANES
     if constexpr (kPointRoundLanes) {
       if (!r.swept && detail::has_lanes()) {
-        r.elements.template for_each_block<kFields, detail::kLanes>(
-            PointRoundBlock{r}, [&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-              r.store(i, circledist::closest_points<Roots>(first_core(r, f), second_core(r, f)));
-            }, begin, end);
+        r.elements.template for_each_block<kFields, detail::kLanes>(PointRoundBlock{r}, one, begin, end);
         stats().closest_points += std::uint64_t(end - begin);
         return;
       }
     }
 #endif
     if (!r.swept) {
-      r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-        r.store(i, circledist::closest_points<Roots>(first_core(r, f), second_core(r, f)));
-      }, begin, end);
+      r.elements.template for_each<kFields>(one, begin, end);
     } else {
       r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
         r.store(i, circledist::closest_points<Roots>(first(r, f), second(r, f)));
@@ -170,7 +171,7 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
         for (int k = 0; k < detail::kLanes; ++k) {
           std::array<const Real*, kFields> g{};
           for (int j = 0; j < kFields; ++j) g[j] = f[j] + k * step[j];
-          r.store(i + k, circledist::closest_points<Roots>(first_core(r, g.data()), second_core(r, g.data())));
+          store_closest(r, i + k, g.data());
         }
         return;
       }
