@@ -910,15 +910,17 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   // only pair at that distance unless it is tied with its mirror image (the trust-region
   // subproblem's global minimizer is unique outside its hard case, b1 = 0, which the mirror
   // bounds: line_ring_minimum.hpp), where closest() asks the general path.
-  // distance() needs only whether the point is on the arc (ArcEnds::holds), closest() its t.
+  // distance() needs only whether a ring point is on the arc (ArcEnds::holds), closest() its t.
+  const auto on_arc_at = [&](const Vec3<Real>& ring_point, Real& t) {
+    if constexpr (for_closest) {
+      t = ends.offset(ring_point);
+      return t <= ends.angle;
+    } else {
+      return ends.holds(ring_point);
+    }
+  };
   Real global_t = 0;
-  bool on_arc;
-  if constexpr (for_closest) {
-    global_t = ends.offset(m.ring_point);
-    on_arc = global_t <= ends.angle;
-  } else {
-    on_arc = ends.holds(m.ring_point);
-  }
+  const bool on_arc = on_arc_at(m.ring_point, global_t);
   if (on_arc && on_piece(pl.line, c.center, m.line_point, linear)) {
     out.value = m.distance;
     if constexpr (for_closest) {
@@ -939,14 +941,7 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   Real least = std::numeric_limits<Real>::infinity();
   if (other == 1) {  // the global minimum is off the arc or the piece (above)
     Real t = 0;
-    bool on_arc_too;
-    if constexpr (for_closest) {
-      t = ends.offset(second.ring_point);
-      on_arc_too = t <= ends.angle;
-    } else {
-      on_arc_too = ends.holds(second.ring_point);
-    }
-    if (on_arc_too && on_piece(pl.line, c.center, second.line_point, linear)) {
+    if (on_arc_at(second.ring_point, t) && on_piece(pl.line, c.center, second.line_point, linear)) {
       least = second.distance;
       if constexpr (for_closest) {
         PieceArcPick<Real>& k = list[count++];
