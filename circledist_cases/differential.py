@@ -37,7 +37,8 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    (ann_hole: points, short segments inside the inner rim, lines through the hole, curves,
    circles, arcs, disks and annuli inside it, up to 1e-12 short of touching), coplanar rounds
    and annuli over the ring (ann_overlap), inner 0 / = outer / 1e-9 x outer (ann_degenerate;
-   inner 0 must answer as the disk and inner = outer as the circle, to the bit: _check_hole), a
+   inner 0 must answer as the disk and inner = outer as the circle, to the bit, distance,
+   points, parameters and `unique`: _check_hole), a
    piece tangent to or 1e-16..1e-4 off the inner rim (ann_inner_tangent), far-translated scenes
    (ann_far_translated).
 
@@ -83,7 +84,9 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    below every verified bound (beyond the bar), closest points off their shapes, separations
    that differ from the reported distance, distance(a, b) != distance(b, a), batch != scalar,
    within / intersects inconsistent with the distance, non-finite answers or wrong dtypes, and
-   an arc of angle 2 pi whose distance is not its circle's to the bit (docs/arc.md).
+   an arc of angle 2 pi whose answers are not its circle's to the bit (distance, points,
+   `unique`, the other side's parameter; docs/arc.md), and an annulus of inner 0 / inner = outer
+   whose are not its disk's / circle's (docs/annulus.md).
    The bound an answer is held against is the screen's, or lower: the separation (plus the
    measured distances off their shapes) of any combination's closest points, a genuine pair too.
    ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
@@ -2867,12 +2870,12 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
         # an arc of angle 2 pi is the whole circle, answered by the circle's query (docs/arc.md)
         if "arc" in (ka, kb) and d_orders:
             A, Bd = data[scene]
-            findings += _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats)
+            findings += _check_whole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats)
         # an annulus of inner radius 0 is the disk, of inner radius = outer the circle: the disk's
         # or circle's query answers it (docs/annulus.md), to the bit
         if "annulus" in (ka, kb) and d_orders:
             A, Bd = data[scene]
-            findings += _check_hole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats)
+            findings += _check_hole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats)
         # closest_points().unique against the independent rule (expected_unique)
         if d_orders:
             findings += _check_unique(res, d_orders, solver, precision, gcases, stats)
@@ -2883,9 +2886,13 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
     return findings
 
 
-def _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
+def _check_whole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats):
     """Cases whose arcs all have angle 2 pi (as given: float32's 2 pi rounds above float64's)
-    must give the distance of the same query with each arc replaced by its circle, to the bit."""
+    must give the answers of the same query with each arc replaced by its circle, to the bit
+    (arc.hpp: the circle's query is called): distance, closest_points' distance, points,
+    `unique` and the parameter of a side that is not an arc.  An arc's own parameter is its
+    t = theta - theta0, the circle's angle moved to the arc's start (ArcSpan::param_of): not the
+    circle's number (tests/test_arc.py checks that t gives the arc's point)."""
     rows = np.ones(len(gcases), dtype=bool)
     for kind, X in ((ka, A), (kb, Bd)):
         if kind == "arc":
@@ -2897,29 +2904,18 @@ def _check_whole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
     dt = _dtype(precision)
     SA = make_shape(cd, kinds[0], A[sel, :7] if ka == "arc" else A[sel], dt)
     SB = make_shape(cd, kinds[1], Bd[sel, :7] if kb == "arc" else Bd[sel], dt)
-    out = []
-    for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
-        if order not in d_orders:
-            continue
-        d, err = _call(cd.distance, x, y, solver=solver, precision=precision)
-        if err:
-            out.append(_finding("exception", gcases[sel[0]], solver, precision, order, "whole arc as circle",
-                                error=err))
-            continue
-        stats["answers"]["distance (whole arc as circle)"] += len(sel)
-        d = np.asarray(d)
-        for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
-            out.append(_finding("whole_arc_vs_circle", gcases[sel[q]], solver, precision, order, "distance",
-                                library=d_orders[order][sel[q]], circle=d[q]))
-    return out
+    same = (ka != "arc", kb != "arc")   # which side's parameter must be the circle query's
+    return _compare_replaced(cd, SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
+                             "whole_arc_vs_circle", "whole arc as circle", same)
 
 
-def _check_hole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
+def _check_hole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats):
     """Cases with an annulus of inner radius 0 or inner = outer (as given: float32 scenes keep
-    both) must give the distance of the same query with that annulus replaced by its disk or its
-    outer circle, to the bit (docs/annulus.md: the disk's / circle's query is called).  An
-    annulus-annulus case with only one degenerate annulus is compared with the disk-annulus or
-    circle-annulus query."""
+    both) must give the answers of the same query with that annulus replaced by its disk or its
+    outer circle, to the bit (docs/annulus.md: the disk's / circle's query is called): distance,
+    closest_points' distance, points, parameters and `unique`; the circle's parameter (theta, 0)
+    on the annulus's side reported as (outer radius, theta).  An annulus-annulus case with only
+    one degenerate annulus is compared with the disk-annulus or circle-annulus query."""
     out = []
     for which, kind, X in (("a", ka, A), ("b", kb, Bd)):
         if kind != "annulus":
@@ -2933,19 +2929,58 @@ def _check_hole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
                 SA, SB = make_shape(cd, as_kind, A[sel, :7], dt), make_shape(cd, kb, Bd[sel], dt)
             else:
                 SA, SB = make_shape(cd, ka, A[sel], dt), make_shape(cd, as_kind, Bd[sel, :7], dt)
-            for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
-                if order not in d_orders:
-                    continue
-                d, err = _call(cd.distance, x, y, solver=solver, precision=precision)
-                if err:
-                    out.append(_finding("exception", gcases[sel[0]], solver, precision, order,
-                                        f"annulus as {as_kind}", error=err))
-                    continue
-                stats["answers"][f"distance (annulus as {as_kind})"] += len(sel)
-                d = np.asarray(d)
-                for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
-                    out.append(_finding("degenerate_annulus_vs_" + as_kind, gcases[sel[q]], solver, precision, order,
-                                        "distance", library=d_orders[order][sel[q]], **{as_kind: d[q]}))
+            rim = None if as_kind == "disk" else (which, X[sel, 6])
+            out += _compare_replaced(cd, SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
+                                     "degenerate_annulus_vs_" + as_kind, f"annulus as {as_kind}", (True, True),
+                                     rim=rim)
+    return out
+
+
+def _compare_replaced(cd, SA, SB, sel, res, d_orders, solver, precision, gcases, stats, check, what, same,
+                      rim=None):
+    """The rows `sel` of the batch's answers `res` against the same query on the replaced shapes
+    SA, SB (both orders), to the bit: distance(); closest_points()' distance, points and
+    `unique`; the parameter of case side a / b where same[0] / same[1].  rim = (side, outer
+    radii): that side's circle parameter (theta, 0) is expected as (radius, theta)."""
+    out = []
+    for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
+        if order not in d_orders:
+            continue
+        d, err = _call(cd.distance, x, y, solver=solver, precision=precision)
+        r, err2 = _call(cd.closest_points, x, y, solver=solver, precision=precision)
+        if err or err2:
+            out.append(_finding("exception", gcases[sel[0]], solver, precision, order, what, error=err or err2))
+            continue
+        stats["answers"][f"distance ({what})"] += len(sel)
+        stats["answers"][f"closest_points ({what})"] += len(sel)
+        d = np.asarray(d)
+        for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
+            out.append(_finding(check, gcases[sel[q]], solver, precision, order, "distance",
+                                library=d_orders[order][sel[q]], replaced=d[q]))
+        mine = res[order]["r"]
+        if mine is None:
+            continue
+        # the answer's first / second field is case side a / b in order "ab", b / a in "ba"
+        sides = ("a", "b") if order == "ab" else ("b", "a")
+        fields = [("distance", np.asarray(mine.distance)[sel], np.asarray(r.distance)),
+                  ("unique", np.asarray(mine.unique)[sel], np.asarray(r.unique))]
+        for k, side in enumerate(sides):
+            name = ("point_a", "point_b")[k]
+            fields.append((name, np.asarray(getattr(mine, name))[sel], np.asarray(getattr(r, name))))
+            pname = ("param_a", "param_b")[k]
+            if not same["ab".index(side)]:
+                continue
+            theirs = np.array(np.asarray(getattr(r, pname)), copy=True)
+            if rim is not None and rim[0] == side:
+                theirs = np.stack([np.asarray(rim[1], dtype=theirs.dtype), theirs[:, 0]], axis=1)
+            fields.append((pname, np.asarray(getattr(mine, pname))[sel], theirs))
+        for name, lib, rep in fields:
+            bad = ~_eq(lib, rep)
+            if bad.ndim > 1:
+                bad = bad.any(axis=tuple(range(1, bad.ndim)))
+            for q in np.flatnonzero(bad):
+                out.append(_finding(check, gcases[sel[q]], solver, precision, order, f"closest_points {name}",
+                                    library=lib[q], replaced=rep[q]))
     return out
 
 
