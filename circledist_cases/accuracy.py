@@ -678,8 +678,13 @@ def random_cases(kind, n):
 
 
 def _flat(shape, data):
+    """A differential case's shape data in this module's layout. The differential test stores an
+    annulus as (center, normal, outer, inner) (differential.make_shape), this layout as (center,
+    normal, inner, outer)."""
     if shape == "bezier":
         return [float(len(data))] + [float(x) for p in data for x in p]
+    if shape == "annulus":
+        return [float(x) for x in data[:6]] + [float(data[7]), float(data[6])]
     return [float(x) for x in data]
 
 
