@@ -2905,7 +2905,7 @@ def _check_whole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, st
     SA = make_shape(cd, kinds[0], A[sel, :7] if ka == "arc" else A[sel], dt)
     SB = make_shape(cd, kinds[1], Bd[sel, :7] if kb == "arc" else Bd[sel], dt)
     same = (ka != "arc", kb != "arc")   # which side's parameter must be the circle query's
-    return _compare_replaced(cd, SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
+    return _compare_replaced(cd, (ka, kb), SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
                              "whole_arc_vs_circle", "whole arc as circle", same)
 
 
@@ -2930,18 +2930,22 @@ def _check_hole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, sta
             else:
                 SA, SB = make_shape(cd, ka, A[sel], dt), make_shape(cd, as_kind, Bd[sel, :7], dt)
             rim = None if as_kind == "disk" else (which, X[sel, 6])
-            out += _compare_replaced(cd, SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
+            out += _compare_replaced(cd, (ka, kb), SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
                                      "degenerate_annulus_vs_" + as_kind, f"annulus as {as_kind}", (True, True),
                                      rim=rim)
     return out
 
 
-def _compare_replaced(cd, SA, SB, sel, res, d_orders, solver, precision, gcases, stats, check, what, same,
+def _compare_replaced(cd, kinds, SA, SB, sel, res, d_orders, solver, precision, gcases, stats, check, what, same,
                       rim=None):
-    """The rows `sel` of the batch's answers `res` against the same query on the replaced shapes
-    SA, SB (both orders), to the bit: distance(); closest_points()' distance, points and
-    `unique`; the parameter of case side a / b where same[0] / same[1].  rim = (side, outer
-    radii): that side's circle parameter (theta, 0) is expected as (radius, theta)."""
+    """The rows `sel` of the batch's answers `res` (case kinds `kinds`) against the same query on
+    the replaced shapes SA, SB (both orders), to the bit: distance(); closest_points()' distance,
+    points and `unique`; the parameter of case side a / b where same[0] / same[1].  rim = (side,
+    outer radii) of an annulus replaced by its circle: an annulus side answered by a circle has
+    its (theta, 0) expected as (radius, theta), a circle side answered by an annulus (theta, 0).
+    Where the two replaced shapes are the same set (_identical_rows) the answer may also be the
+    replaced one with its two sides exchanged: a query between a shape and itself may report
+    either point first."""
     out = []
     for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
         if order not in d_orders:
@@ -2962,25 +2966,87 @@ def _compare_replaced(cd, SA, SB, sel, res, d_orders, solver, precision, gcases,
             continue
         # the answer's first / second field is case side a / b in order "ab", b / a in "ba"
         sides = ("a", "b") if order == "ab" else ("b", "a")
-        fields = [("distance", np.asarray(mine.distance)[sel], np.asarray(r.distance)),
-                  ("unique", np.asarray(mine.unique)[sel], np.asarray(r.unique))]
-        for k, side in enumerate(sides):
-            name = ("point_a", "point_b")[k]
-            fields.append((name, np.asarray(getattr(mine, name))[sel], np.asarray(getattr(r, name))))
-            pname = ("param_a", "param_b")[k]
-            if not same["ab".index(side)]:
-                continue
-            theirs = np.array(np.asarray(getattr(r, pname)), copy=True)
-            if rim is not None and rim[0] == side:
-                theirs = np.stack([np.asarray(rim[1], dtype=theirs.dtype), theirs[:, 0]], axis=1)
-            fields.append((pname, np.asarray(getattr(mine, pname))[sel], theirs))
-        for name, lib, rep in fields:
-            bad = ~_eq(lib, rep)
-            if bad.ndim > 1:
-                bad = bad.any(axis=tuple(range(1, bad.ndim)))
-            for q in np.flatnonzero(bad):
+
+        def expected(swap):
+            """The replaced answer's fields, as the case's answer must show them; swap: with its two
+            sides exchanged (for two identical shapes either side's point may be reported first)."""
+            fields = [("distance", np.asarray(r.distance)), ("unique", np.asarray(r.unique))]
+            replaced_kinds = (x.kind.lower(), y.kind.lower())
+            for k, side in enumerate(sides):
+                j = 1 - k if swap else k  # the replaced answer's side that gives this one
+                fields.append((("point_a", "point_b")[k], np.asarray(getattr(r, ("point_a", "point_b")[j]))))
+                if not same["ab".index(side)]:
+                    continue
+                theirs = np.array(np.asarray(getattr(r, ("param_a", "param_b")[j])), copy=True)
+                mine_kind = kinds["ab".index(side)]
+                if rim is not None and mine_kind == "annulus" and replaced_kinds[j] == "circle":
+                    theirs = np.stack([np.asarray(rim[1], dtype=theirs.dtype), theirs[:, 0]], axis=1)  # (R, theta)
+                elif mine_kind == "circle" and replaced_kinds[j] == "annulus":
+                    theirs = np.stack([theirs[:, 1], np.zeros_like(theirs[:, 1])], axis=1)  # (theta, 0)
+                fields.append((("param_a", "param_b")[k], theirs))
+            return fields
+
+        def mismatches(fields):
+            out_ = []
+            for name, rep in fields:
+                bad = ~_eq(np.asarray(getattr(mine, name))[sel], rep)
+                if bad.ndim > 1:
+                    bad = bad.any(axis=tuple(range(1, bad.ndim)))
+                out_.append((name, rep, bad))
+            return out_
+
+        direct = mismatches(expected(False))
+        failed = np.zeros(len(sel), dtype=bool)
+        for _, _, bad in direct:
+            failed |= bad
+        twins = _identical_rows(x, y, len(sel))
+        if (failed & twins).any():
+            swapped_bad = np.zeros(len(sel), dtype=bool)
+            for _, _, bad in mismatches(expected(True)):
+                swapped_bad |= bad
+            failed &= ~(twins & ~swapped_bad)
+        for name, rep, bad in direct:
+            for q in np.flatnonzero(bad & failed):
                 out.append(_finding(check, gcases[sel[q]], solver, precision, order, f"closest_points {name}",
-                                    library=lib[q], replaced=rep[q]))
+                                    library=np.asarray(getattr(mine, name))[sel][q], replaced=rep[q]))
+    return out
+
+
+def _identical_rows(x, y, n):
+    """Which of the n elements of the batched shapes x and y are the same set (every field equal;
+    an annulus of inner radius 0 is its disk, of inner = outer its circle): their closest pairs
+    are symmetric, so a query may name either point first."""
+    fx, fy = _round_fields(x, n), _round_fields(y, n)
+    if fx is None or fy is None:
+        return np.zeros(n, dtype=bool)
+    same = np.ones(n, dtype=bool)
+    for field in ("kind", "center", "normal", "radius", "inner", "start", "angle"):
+        eq = fx[field] == fy[field]
+        same &= eq if eq.ndim == 1 else eq.all(axis=1)
+    return same
+
+
+def _round_fields(shape, n):
+    """A batch of circles, disks, annuli or arcs as comparable per-element arrays (kind code,
+    center, normal, radius, inner radius, start, angle), an annulus of inner 0 as its disk and of
+    inner = outer as its circle; None for other kinds."""
+    codes = {"Circle": 0, "Disk": 1, "Annulus": 2, "Arc": 3}
+    if shape.kind not in codes:
+        return None
+    f = shape.to_arrays()
+    vec = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n, 3))  # noqa: E731
+    num = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
+    out = dict(kind=np.full(n, codes[shape.kind]), center=vec(f["center"]), normal=vec(f["normal"]),
+               inner=np.zeros(n), start=np.zeros((n, 3)), angle=np.zeros(n))
+    if shape.kind == "Annulus":
+        inner, outer = num(f["inner_radius"]), num(f["outer_radius"])
+        out["radius"] = outer
+        out["kind"] = np.where(inner == 0, codes["Disk"], np.where(inner == outer, codes["Circle"], codes["Annulus"]))
+        out["inner"] = np.where(out["kind"] == codes["Annulus"], inner, 0.0)
+    else:
+        out["radius"] = num(f["radius"])
+    if shape.kind == "Arc":
+        out["start"], out["angle"] = vec(f["start"]), num(f["angle"])
     return out
 
 

@@ -846,6 +846,47 @@ def test_unique_coaxial_arc_family(solver, precision):
     assert checked >= 24
 
 
+def _near_equal_coaxial_family():
+    """Arcs coaxial with a circle whose radius differs from the arc's by a few ulps up to 1e-9 of
+    it, either way (the differential test's arc_concentric/4/309: a circle 4.4e-14 smaller than the
+    arc, polished in double, reported unique): the circle smaller than the arc is parametrized whole
+    against the arc (arc.hpp ArcArcQuery), where polishing on a distance flat to rounding took every
+    start to one point. In the plane, or lifted along the axis where the lifted centre stays on it
+    exactly; centres near the origin or translated by 1e6."""
+    rng = np.random.default_rng(20261128)
+    out = []
+    for i in range(40):
+        c = rng.normal(size=3) * (10.0 ** rng.choice([0, 6]))
+        n = rng.normal(size=3)
+        r = rng.uniform(0.5, 3)
+        rel = (-1) ** i * 10.0 ** rng.uniform(-15.5, -9)
+        radius = r * (1 + rel)
+        height = 0.0 if i % 4 < 2 else rng.uniform(-1, 1)
+        unit = n / np.linalg.norm(n)
+        arc_center = c + height * unit if height else c
+        arc = list(arc_center) + list(n * 2.0 ** int(rng.integers(-2, 3))) + [radius] + list(rng.normal(size=3)) + [
+            rng.uniform(0.2, 6.2)]
+        out.append((f"circle-{i}", list(c) + list(n) + [r], arc, height))
+    return out
+
+
+@pytest.mark.parametrize("precision", ["float64", "longdouble"])
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_unique_coaxial_near_equal_radii(solver, precision):
+    """A circle and a coaxial arc of nearly its radius: every arc point is as far (rotation about
+    the axis), so unique is False in both orders under every policy and precision."""
+    checked = 0
+    for name, circle, arc, height in _near_equal_coaxial_family():
+        if height and not _on_axis(circle, arc):
+            continue
+        a = cd.Circle(circle[:3], circle[3:6], circle[6])
+        b = cd.Arc(arc[:3], arc[3:6], arc[6], arc[7:10], arc[10])
+        for x, y in ((a, b), (b, a)):
+            assert not cd.closest_points(x, y, solver=solver, precision=precision).unique, name
+        checked += 1
+    assert checked >= 20
+
+
 def _on_axis(other, arc):
     """The arc's centre exactly on the other shape's axis (rational cross product of the offset and
     the normal 0), its normal exactly parallel."""

@@ -686,11 +686,20 @@ template <class Real> struct ArcArcQuery {
     const Real best = minima.best.x;
     const auto at = [&](Real t) { return c.at(t); };
     const auto arc_point = [&](const Vec3<Real>& q, bool& ambiguous) { return target.point(q, scale, ambiguous); };
-    if (a_is_arc) {
-      add_ends_for_ties(minima, span, [&](Real t) {
-        bool unused = false;
-        return (at(t) - arc_point(at(t), unused)).norm();
-      });
+    const auto distance_at = [&](Real t) {
+      bool unused = false;
+      return (at(t) - arc_point(at(t), unused)).norm();
+    };
+    if (a_is_arc) add_ends_for_ties(minima, span, distance_at);
+    // B's ends' nearest angles on A too: over an A coaxial with B the distance is flat across B's
+    // span, whose bounds on A these are, so where polishing took every start to one point (a
+    // whole circle has no ends of its own to show the continuum) they are a second pair.
+    ArcCandidates<Real> ends_of_b;
+    for (const Vec3<Real>& e : target.end) push_nearest_angle(c, e, ends_of_b);
+    for (int i = 0; i < ends_of_b.count; ++i) {
+      const Real t = span.offset(ends_of_b.value[i]);
+      if (t <= span.angle && minima.count < kArcCapacity)
+        minima.item[minima.count++] = Minimum<Real>{span.lo() + t, distance_at(span.lo() + t)};
     }
     const Vec3<Real> pa = c.at(best);
     bool ambiguous = false;
