@@ -117,11 +117,13 @@ def results():
                 continue
         if DIRECT_BEZIER_LINEAR.get(pair, c["family"]) == c["family"]:
             firsts.setdefault((c["family"], c["a"], c["b"]), c)
-    ref_findings, diags = D.reference_check(cd, list(firsts.values()))
+    direct = {}
+    ref_findings, diags = D.reference_check(cd, list(firsts.values()), stats=direct)
     t2 = time.perf_counter()
     print(f"\ndifferential slice: {len(cases)} cases, {sum(stats['answers'].values())} library answers, "
           f"{t1 - t0:.1f} s checks; "
-          f"{len(firsts)} direct 50-digit references, {t2 - t1:.1f} s")
+          f"{len(firsts)} direct 50-digit references, {t2 - t1:.1f} s; unique checked "
+          f"(screen) {dict(stats['unique_checked'])}, (direct) {dict(sorted(direct['unique_checked_direct'].items()))}")
     return dict(cases=cases, findings=findings + ref_findings, diags=diags, firsts=list(firsts.values()))
 
 
@@ -218,3 +220,49 @@ def test_screen_and_reference_keep_near_tied_minima():
     assert abs(ref - truth) <= R.mpf("1e-24") * radius, (ref, truth)
     minima = R.bezier_circle(case["a_data"], case["b_data"][:3], case["b_data"][3:6], case["b_data"][6]).pairs
     assert len(minima) >= 2 and abs(minima[1].value - truth - R.mpf("5.899e-13")) <= R.mpf("1e-15"), minima[:2]
+
+
+def _hand_case(ka, a, kb, b):
+    return dict(family="hand", id=f"hand/{ka}-{kb}", a=ka, a_data=a, b=kb, b_data=b)
+
+
+CIRCLE = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0]
+
+
+@pytest.mark.parametrize("ka, a, kb, b, want", [
+    # a straight curve at height 2 across the circle, symmetric about its axis: x = +-1 tie
+    ("bezier", [[-2.0, 0.0, 2.0], [0.0, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, None),
+    # the same, one side only: x = 1
+    ("bezier", [[0.2, 0.0, 2.0], [1.1, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, True),
+    # a curve on the circle's axis (every control point): every rim point as close
+    ("bezier", [[0.0, 0.0, 1.0], [0.0, 0.0, 3.0], [0.0, 0.0, 2.0]], "circle", CIRCLE, False),
+    # a curve ending at the circle's plane, short of its rim: the minimum at the end t = 1
+    ("bezier", [[0.3, 0.0, 2.0], [0.3, 0.5, 1.0], [0.5, 0.0, 0.0]], "disk", CIRCLE, True),
+    # a curve along a line (a flat run of minima)
+    ("bezier", [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [2.0, 0.0, 1.0]], "line", [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], None),
+    # two coplanar circles apart: one pair
+    ("circle", CIRCLE, "circle", [3.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0], True),
+    # a circle tangent to the other's axis at its centre, nearest there (a strict minimum over its
+    # angle): every rim point of the other is as close (distance 1), the target's nearest point is
+    # not unique there
+    ("circle", [1.2, 0.0, 0.0, 0.0, 1.0, 0.0, 1.2], "circle", CIRCLE, None),
+    # an arc over an annulus's ring, nearest at its end
+    ("arc", [0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 3.0, 1.0, 0.0, 0.0, 1.0], "annulus",
+     [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.5, 1.0], True),
+    # a line over an annulus's ring, parallel to its plane (a flat run) and tilted (one pair)
+    ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], None),
+    ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.25], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], True),
+])
+def test_unique_rule_by_hand(ka, a, kb, b, want):
+    """The unique rules on hand-made cases whose answer is plain (differential.expected_unique's
+    exact continua, else differential.reference_unique's 50-digit search), and the library's
+    unique agrees where they decide."""
+    case = _hand_case(ka, a, kb, b)
+    got = D.expected_unique(case)[0]
+    if got is None:
+        got = D.reference_unique(case)[0]
+    assert got is want
+    if want is not None:
+        x, y = D.make_shape(cd, ka, a), D.make_shape(cd, kb, b)
+        assert cd.closest_points(x, y).unique is want
+        assert cd.closest_points(y, x).unique is want
