@@ -2983,12 +2983,17 @@ def _check_hole(cd, ka, kb, A, Bd, d_orders, solver, precision, gcases, stats):
 #   arc or annulus, a Bezier curve against a point, line, ray, segment, disk, circle, arc or
 #   annulus, and a line, ray or segment against a disk or annulus.  A closest pair is (P(x), Q):
 #   x minimises the distance from the moving shape's point P(x) (a rim's angle, a curve's t, a
-#   line's length) to the target, Q is a nearest target point of P(x).  So the
-#   pair is unique where the best local minimum of the 50-digit search is single (every other
-#   distinct one worse by REF_UNIQUE_REL x max(d, scale)) and strict (rises by REF_UNIQUE_RISE x
-#   max(d, scale) within REF_UNIQUE_STEP on each side in range; at an end of an open arc or of a
-#   curve on its inner side only) and Q is unique with the margin above (a convex target's
-#   always; a circle's, arc's or annulus's by _point_round_unique's closed forms at P(x)).  Not
+#   line's length) to the target, Q is a nearest target point of P(x).  So the pair is unique
+#   where the best local minimum of the 50-digit search is single (every other distinct one worse
+#   by REF_UNIQUE_REL x max(d, scale)) and strict (rises by REF_UNIQUE_RISE x max(d, scale) within
+#   REF_UNIQUE_STEP on each side in range; at an end of an open arc or of a curve on its inner
+#   side only) and Q is unique with that same margin (a convex target's always; a circle's,
+#   arc's or annulus's where the point-round closed forms' other candidates at P(x) are worse by
+#   it and the rim holding Q is not flat: _target_point_unique).  The margin is the scene's
+#   (max(d, scale)), not the target's own radius: a small rim far away in a large scene, or a
+#   point within the scene's rounding of a rim's axis, is as close to a stretch of the rim as the
+#   library's tie tolerance (64 eps x scale) can tell (two such cases, found when the annulus's
+#   point had no margin: docs/differential_report.md).  Not
 #   checked: two regions (disk-disk, disk-annulus, annulus-annulus beyond the coaxial cases),
 #   a point against an arc or annulus where the closed form is too close to call, a Bezier curve
 #   against a Bezier curve (no kind pair of the cases), a linear pair within 1e-3 rad of
@@ -3155,13 +3160,59 @@ def _unique_roles(case):
     return None
 
 
-def _target_point_unique(p, kind, data):
-    """Whether the target's nearest point to the mp point p is unique with a margin: a convex
-    target's always; a circle's, an arc's or an annulus's by _point_round_unique's closed forms
-    (p rounded to float64: the margin, 1e-6 relative, is ten orders above that rounding)."""
+def _target_point_unique(p, kind, data, margin):
+    """Whether the target's nearest point to the mp point p is unique with `margin` (an mpf: the
+    direct rule's REF_UNIQUE_REL x max(d, scale), the scene's scale, not the target's own size):
+    a convex target's always; a circle's, an arc's or an annulus's (the point-round rule's closed
+    forms, _point_round_unique's, at 50 digits) where every other candidate for the nearest
+    point is worse by the margin, and the rim holding it is not flat -- its farthest point, the
+    other critical point, worse by the margin too (a point near the axis, or a small rim seen
+    from far in a large scene, is as far from a stretch of the rim as double can tell: found
+    with the margin relative to the target's own radius, a huge arc's end 9.6e7 from an annulus
+    of outer radius 0.16, and a huge circle crossing a tiny-holed annulus 8e-8 from its axis).
+    Candidates: a circle's nearest point; an arc's in-span point and ends (the in-span point
+    only where the point's angle lies in the span); an annulus's projection (over the ring),
+    its outer rim's nearest point and its inner rim's nearest and farthest points (the farthest
+    is a local minimum over the annulus: the hole's boundary opposite the point)."""
     if kind in _CONVEX:
         return True
-    return bool(_point_round_unique([float(x) for x in p], kind, data))
+    R = _load("reference_round")
+    ctx = R.ctx
+    if kind == "arc":
+        A = _load("reference_arc")
+        arc = A.ArcMP(A.shape(kind, data))
+        w = R.sub(p, arc.c)
+        z, x, y = R.dot(w, arc.n), R.dot(w, arc.u), R.dot(w, arc.v)
+        rho, r = ctx.sqrt(x * x + y * y), arc.r
+    else:
+        rnd = R.make_round(data[:3], data[3:6], data[6])
+        w = R.sub(p, rnd.center)
+        z = R.dot(w, rnd.n)
+        rho, r = R.norm(R.sub(w, R.scale(z, rnd.n))), rnd.radius
+    near, far = ctx.sqrt(z * z + (rho - r) ** 2), ctx.sqrt(z * z + (rho + r) ** 2)
+    if kind == "circle" or (kind == "arc" and arc.whole):
+        return far - near > margin
+    if kind == "arc":
+        phi = ctx.atan2(y, x)
+        if phi < 0:
+            phi += 2 * ctx.pi
+        ends = [R.dist(p, arc.at(R.mpf(0))), R.dist(p, arc.at(arc.angle))]
+        cands = sorted(([near] if rho > 0 and phi <= arc.angle else []) + ends)
+        return cands[1] - cands[0] > margin and far - near > margin
+    # an annulus: (distance, whether its point is clear) per candidate; inner 0 is the disk (convex),
+    # inner = outer the circle
+    ri = R.to_mp(data[7])
+    if ri == 0:
+        return True
+    if ri == r:
+        return far - near > margin
+    cands = [(near, far - near > margin)]
+    if ri <= rho <= r:
+        cands.append((abs(z), True))
+    near_i, far_i = ctx.sqrt(z * z + (rho - ri) ** 2), ctx.sqrt(z * z + (rho + ri) ** 2)
+    cands += [(near_i, far_i - near_i > margin), (far_i, True)]
+    cands.sort(key=lambda c: c[0])
+    return cands[0][1] and cands[1][0] - cands[0][0] > margin
 
 
 def reference_unique(case):
@@ -3185,8 +3236,9 @@ def reference_unique(case):
     inside the parameter's range (a minimum at an end of an open arc, a curve or a piece on its
     inner side only; a minimum short of an end against the end itself) -- not a flat run of
     minima (a circle over a disk's face, a curve along a line) -- and (3) the target's nearest
-    point to P(x) is unique with a margin (_target_point_unique: a convex target's always, a
-    circle's, arc's or annulus's off its axis by the point-round rule's margin).  Otherwise
+    point to P(x) is unique with the margin of (1) (_target_point_unique: a convex target's
+    always; a circle's, arc's or annulus's where the point-round rule's other candidates, at 50
+    digits, are worse by it and the rim holding the point is not flat).  Otherwise
     None: the rule never says False from sampling (expected_unique's exact continua do).  Used
     by reference_check (the direct 50-digit comparison of a few cases) and unique_direct_check
     (the long mode's sample), not by the screen."""
@@ -3292,7 +3344,7 @@ def reference_unique(case):
         sides = [x for x in sides if x is not None]
     if not sides or any(f(x) - best.value <= R.mpf(REF_UNIQUE_RISE) * scale for x in sides):
         return None, ""
-    if not _target_point_unique(at(best.x), tk, td):
+    if not _target_point_unique(at(best.x), tk, td, R.mpf(REF_UNIQUE_REL) * scale):
         return None, ""
     name = {"circle": "the circle's angle", "arc": "the arc's angle", "bezier": "the curve's t",
             "line": "the line", "ray": "the ray", "segment": "the segment"}[mk]

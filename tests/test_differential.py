@@ -12,8 +12,11 @@ library returns (on their shapes, separation == distance); every accuracy findin
 against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py,
 reference_arc.py, reference_annulus.py and reference_linear.py before it counts; closest_points().unique is
 checked where differential.expected_unique's independent rule decides it (exact continua by symmetry:
-False; closed forms and strict convexity with a margin: True), and in the direct comparisons also where
-the 50-digit reference's own local minima show a single strict minimum (differential.reference_unique).  The first case of every (family, kind
+False; closed forms and strict convexity with a margin: True), and in the direct comparisons (float64
+scenes) also where a 50-digit search over one shape's parameter shows a single strict minimum whose
+nearest point on the other shape is unique (differential.reference_unique: a circle or arc against a
+line, ray, segment, disk, circle, arc or annulus; a Bezier curve against a point, line, ray, segment,
+disk, circle, arc or annulus; a line, ray or segment against a disk or annulus).  The first case of every (family, kind
 pair) is also compared with those references directly, for every combination (a Bezier curve
 against a linear piece: one family per pair, DIRECT_BEZIER_LINEAR; the arc and annulus families: every third
 pair, DIRECT_ARC_EVERY).
@@ -246,9 +249,16 @@ CIRCLE = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0]
     # angle): every rim point of the other is as close (distance 1), the target's nearest point is
     # not unique there
     ("circle", [1.2, 0.0, 0.0, 0.0, 1.0, 0.0, 1.2], "circle", CIRCLE, None),
-    # an arc over an annulus's ring, nearest at its end
-    ("arc", [0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 3.0, 1.0, 0.0, 0.0, 1.0], "annulus",
+    # an arc in a vertical plane from beyond an annulus's outer rim up over its ring, nearest at
+    # its start (0, 3, 1)
+    ("arc", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 3.0, 0.0, 1.0, 0.0, 1.0], "annulus",
      [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.5, 1.0], True),
+    # a huge circle through a tiny-holed annulus 8e-8 from its axis, in a scene of scale 3.7e8
+    # (ann_huge_circle/21/216): within the scene's rounding of the inner rim's axis, not called
+    ("circle", [120582553.34208253, -148834309.91328016, -317319889.41030097, -0.06949600391428644,
+                -0.7651446695945717, 0.3324713521195893, 370653091.7178497], "annulus",
+     [0.6756174095537185, -1.6265741399653666, -1.8059190432074093, 0.11639810755213308, 0.2329988340881641,
+      0.7955980667529972, 1.65122495808562, 1.6512249580856201e-09], None),
     # a line over an annulus's ring, parallel to its plane (a flat run) and tilted (one pair)
     ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], None),
     ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.25], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], True),
