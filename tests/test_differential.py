@@ -46,7 +46,12 @@ of wall time and 99..102 s of CPU at load ~5-6 (another long run and three other
 2 cores): about 23 s of CPU more than before.  The direct comparison's unique check from the
 reference's own minima (differential.reference_unique: a circle or arc against a line, ray,
 segment or disk, float64 scenes) adds 6 s: 107.6 s of CPU, 277 s of wall time at load ~5
-(155 s at load ~4 with the fix).  A failure lists one reproducer per finding class;
+(155 s at load ~4 with the fix).  Extending it (2026-11-27) to a circle or arc against a circle, arc or
+annulus, a Bezier curve against every kind it meets, and a line, ray or segment against a disk or
+annulus (3,072 unique answers checked in the direct comparisons, 1,552 of them by the 50-digit search,
+992 on the pairs it newly covers; a Bezier curve on a circle's axis: 8 expected False), plus eleven hand-made
+cases of the rules, took the slice from 100.3 s to 114.5 s of CPU (the direct references from 41.2 s
+to 55.6 s; 115 s of wall time at load ~1.5).  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
