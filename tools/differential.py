@@ -43,7 +43,8 @@ module's docstring); the report counts those checks apart ("unique_checked": per
 one per case, combination and order), since they are part of closest_points' answers.  Besides,
 --unique-direct N (default 8) cases per chunk that expected_unique leaves open and
 differential.reference_unique covers (a circle, arc or Bezier curve against a shape with a closed
-point distance: a 50-digit search over the moving shape's parameter) have their unique answer
+point distance, a line, ray or segment against a disk or annulus: a 50-digit search over the
+moving shape's parameter) have their unique answer
 checked against that search ("unique_checked_direct": per pair and expectation; float64 scenes,
 the float64 and long double combinations, both orders).
 """
