@@ -654,6 +654,7 @@ def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:
         p = bezier_point(ctrl, m.x)
         q, deg = _target_point(p, T, disk, T.radius)
         pairs.append(Pair(m.value, p, q, m.rise, deg))
+        pairs[-1].t = m.x   # the curve's parameter (as bezier_other's pairs)
     return Reference(pairs[0].value, pairs, _scale_of(radius))
 
 

@@ -12,8 +12,11 @@ library returns (on their shapes, separation == distance); every accuracy findin
 against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py,
 reference_arc.py, reference_annulus.py and reference_linear.py before it counts; closest_points().unique is
 checked where differential.expected_unique's independent rule decides it (exact continua by symmetry:
-False; closed forms and strict convexity with a margin: True), and in the direct comparisons also where
-the 50-digit reference's own local minima show a single strict minimum (differential.reference_unique).  The first case of every (family, kind
+False; closed forms and strict convexity with a margin: True), and in the direct comparisons (float64
+scenes) also where a 50-digit search over one shape's parameter shows a single strict minimum whose
+nearest point on the other shape is unique (differential.reference_unique: a circle or arc against a
+line, ray, segment, disk, circle, arc or annulus; a Bezier curve against a point, line, ray, segment,
+disk, circle, arc or annulus; a line, ray or segment against a disk or annulus).  The first case of every (family, kind
 pair) is also compared with those references directly, for every combination (a Bezier curve
 against a linear piece: one family per pair, DIRECT_BEZIER_LINEAR; the arc and annulus families: every third
 pair, DIRECT_ARC_EVERY).
@@ -43,7 +46,12 @@ of wall time and 99..102 s of CPU at load ~5-6 (another long run and three other
 2 cores): about 23 s of CPU more than before.  The direct comparison's unique check from the
 reference's own minima (differential.reference_unique: a circle or arc against a line, ray,
 segment or disk, float64 scenes) adds 6 s: 107.6 s of CPU, 277 s of wall time at load ~5
-(155 s at load ~4 with the fix).  A failure lists one reproducer per finding class;
+(155 s at load ~4 with the fix).  Extending it (2026-11-27) to a circle or arc against a circle, arc or
+annulus, a Bezier curve against every kind it meets, and a line, ray or segment against a disk or
+annulus (3,072 unique answers checked in the direct comparisons, 1,552 of them by the 50-digit search,
+992 on the pairs it newly covers; a Bezier curve on a circle's axis: 8 expected False), plus eleven hand-made
+cases of the rules, took the slice from 100.3 s to 114.5 s of CPU (the direct references from 41.2 s
+to 55.6 s; 115 s of wall time at load ~1.5).  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
 """
 
@@ -117,11 +125,13 @@ def results():
                 continue
         if DIRECT_BEZIER_LINEAR.get(pair, c["family"]) == c["family"]:
             firsts.setdefault((c["family"], c["a"], c["b"]), c)
-    ref_findings, diags = D.reference_check(cd, list(firsts.values()))
+    direct = {}
+    ref_findings, diags = D.reference_check(cd, list(firsts.values()), stats=direct)
     t2 = time.perf_counter()
     print(f"\ndifferential slice: {len(cases)} cases, {sum(stats['answers'].values())} library answers, "
           f"{t1 - t0:.1f} s checks; "
-          f"{len(firsts)} direct 50-digit references, {t2 - t1:.1f} s")
+          f"{len(firsts)} direct 50-digit references, {t2 - t1:.1f} s; unique checked "
+          f"(screen) {dict(stats['unique_checked'])}, (direct) {dict(sorted(direct['unique_checked_direct'].items()))}")
     return dict(cases=cases, findings=findings + ref_findings, diags=diags, firsts=list(firsts.values()))
 
 
@@ -218,3 +228,56 @@ def test_screen_and_reference_keep_near_tied_minima():
     assert abs(ref - truth) <= R.mpf("1e-24") * radius, (ref, truth)
     minima = R.bezier_circle(case["a_data"], case["b_data"][:3], case["b_data"][3:6], case["b_data"][6]).pairs
     assert len(minima) >= 2 and abs(minima[1].value - truth - R.mpf("5.899e-13")) <= R.mpf("1e-15"), minima[:2]
+
+
+def _hand_case(ka, a, kb, b):
+    return dict(family="hand", id=f"hand/{ka}-{kb}", a=ka, a_data=a, b=kb, b_data=b)
+
+
+CIRCLE = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0]
+
+
+@pytest.mark.parametrize("ka, a, kb, b, want", [
+    # a straight curve at height 2 across the circle, symmetric about its axis: x = +-1 tie
+    ("bezier", [[-2.0, 0.0, 2.0], [0.0, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, None),
+    # the same, one side only: x = 1
+    ("bezier", [[0.2, 0.0, 2.0], [1.1, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, True),
+    # a curve on the circle's axis (every control point): every rim point as close
+    ("bezier", [[0.0, 0.0, 1.0], [0.0, 0.0, 3.0], [0.0, 0.0, 2.0]], "circle", CIRCLE, False),
+    # a curve ending at the circle's plane, short of its rim: the minimum at the end t = 1
+    ("bezier", [[0.3, 0.0, 2.0], [0.3, 0.5, 1.0], [0.5, 0.0, 0.0]], "disk", CIRCLE, True),
+    # a curve along a line (a flat run of minima)
+    ("bezier", [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [2.0, 0.0, 1.0]], "line", [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], None),
+    # two coplanar circles apart: one pair
+    ("circle", CIRCLE, "circle", [3.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0], True),
+    # a circle tangent to the other's axis at its centre, nearest there (a strict minimum over its
+    # angle): every rim point of the other is as close (distance 1), the target's nearest point is
+    # not unique there
+    ("circle", [1.2, 0.0, 0.0, 0.0, 1.0, 0.0, 1.2], "circle", CIRCLE, None),
+    # an arc in a vertical plane from beyond an annulus's outer rim up over its ring, nearest at
+    # its start (0, 3, 1)
+    ("arc", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 3.0, 0.0, 1.0, 0.0, 1.0], "annulus",
+     [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.5, 1.0], True),
+    # a huge circle through a tiny-holed annulus 8e-8 from its axis, in a scene of scale 3.7e8
+    # (ann_huge_circle/21/216): within the scene's rounding of the inner rim's axis, not called
+    ("circle", [120582553.34208253, -148834309.91328016, -317319889.41030097, -0.06949600391428644,
+                -0.7651446695945717, 0.3324713521195893, 370653091.7178497], "annulus",
+     [0.6756174095537185, -1.6265741399653666, -1.8059190432074093, 0.11639810755213308, 0.2329988340881641,
+      0.7955980667529972, 1.65122495808562, 1.6512249580856201e-09], None),
+    # a line over an annulus's ring, parallel to its plane (a flat run) and tilted (one pair)
+    ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], None),
+    ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.25], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], True),
+])
+def test_unique_rule_by_hand(ka, a, kb, b, want):
+    """The unique rules on hand-made cases whose answer is plain (differential.expected_unique's
+    exact continua, else differential.reference_unique's 50-digit search), and the library's
+    unique agrees where they decide."""
+    case = _hand_case(ka, a, kb, b)
+    got = D.expected_unique(case)[0]
+    if got is None:
+        got = D.reference_unique(case)[0]
+    assert got is want
+    if want is not None:
+        x, y = D.make_shape(cd, ka, a), D.make_shape(cd, kb, b)
+        assert cd.closest_points(x, y).unique is want
+        assert cd.closest_points(y, x).unique is want

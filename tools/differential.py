@@ -40,7 +40,13 @@ docs/differential_report_arc.json), "annulus" to the eighteen of an annulus agai
 
 closest_points().unique is checked where differential.expected_unique's rule decides it (the
 module's docstring); the report counts those checks apart ("unique_checked": per expectation,
-one per case, combination and order), since they are part of closest_points' answers.
+one per case, combination and order), since they are part of closest_points' answers.  Besides,
+--unique-direct N (default 8) cases per chunk that expected_unique leaves open and
+differential.reference_unique covers (a circle, arc or Bezier curve against a shape with a closed
+point distance, a line, ray or segment against a disk or annulus: a 50-digit search over the
+moving shape's parameter) have their unique answer
+checked against that search ("unique_checked_direct": per pair and expectation; float64 scenes,
+the float64 and long double combinations, both orders).
 """
 
 from __future__ import annotations
@@ -122,7 +128,7 @@ def pick_examples(fs, keep):
 
 def run_chunk(job):
     """One chunk in a worker: check, confirm (bounded), and summarise."""
-    parts, seed, combo_list, scalar_n, max_confirm, keep = job
+    parts, seed, combo_list, scalar_n, max_confirm, keep, unique_n = job
     D = load_differential()
     import circledist as cd
     cases = [c for fam, start, count in parts for c in D.generate(fam, count, seed, start=start)]
@@ -130,6 +136,12 @@ def run_chunk(job):
     scalar = set(range(0, len(cases), step)) if scalar_n else set()
     t0 = time.perf_counter()
     findings, stats = D.check_and_confirm(cd, cases, combo_list, scalar=scalar, max_confirm=max_confirm)
+    # the direct unique check (differential.reference_unique, ~0.3 s of 50-digit search a case) on
+    # unique_n cases of the chunk that its rule covers and expected_unique does not, evenly spread
+    eligible = [c for c in cases if D._unique_roles(c) is not None and D.expected_unique(c)[0] is None]
+    if unique_n and eligible:
+        pick = [eligible[i * len(eligible) // unique_n] for i in range(min(unique_n, len(eligible)))]
+        findings += D.unique_direct_check(cd, pick, combo_list, stats)
     seconds = time.perf_counter() - t0
     pairs = collections.Counter(f"{c['a']}-{c['b']}" for c in cases)
     # per class: counts by status / solver / precision, and a few examples (confirmed first,
@@ -154,7 +166,8 @@ def run_chunk(job):
         c["n_cases"] = len(c["cases"])
         c["cases"] = sorted(c["cases"])[:keep * 4]
     return dict(count=len(cases), by_family=dict(collections.Counter(c["family"] for c in cases)), pairs=dict(pairs),
-                answers=dict(stats["answers"]), unique_checked=dict(stats["unique_checked"]), seconds=seconds,
+                answers=dict(stats["answers"]), unique_checked=dict(stats["unique_checked"]),
+                unique_checked_direct=dict(stats.get("unique_checked_direct", {})), seconds=seconds,
                 classes=classes)
 
 
@@ -162,6 +175,7 @@ def merge(total, part):
     total["cases"] += part["count"]
     total["answers"].update(part["answers"])
     total["unique_checked"].update(part.get("unique_checked", {}))
+    total["unique_checked_direct"].update(part.get("unique_checked_direct", {}))
     total["by_family"].update(part["by_family"])
     for p, n in part["pairs"].items():
         total["by_pair"][p] += n
@@ -195,6 +209,9 @@ def main(argv=None):
     ap.add_argument("--scalar", type=int, default=16, help="scalar-vs-batch sample per chunk")
     ap.add_argument("--max-confirm", type=int, default=3,
                     help="50-digit confirmations per (class, solver, precision) and chunk")
+    ap.add_argument("--unique-direct", type=int, default=8,
+                    help="cases per chunk whose closest_points().unique is checked against the 50-digit "
+                    "search of differential.reference_unique (~0.3 s a case); 0: none")
     ap.add_argument("--workers", type=int, default=1)
     ap.add_argument("--quiet", action="store_true")
     args = ap.parse_args(argv)
@@ -217,7 +234,7 @@ def main(argv=None):
     else:
         n_cases = args.cases if args.cases is not None else 100000
     chunks = plan(D, families, n_cases, args.batch)
-    jobs = [(parts, args.seed, combo_list, args.scalar, args.max_confirm, 3) for parts in chunks]
+    jobs = [(parts, args.seed, combo_list, args.scalar, args.max_confirm, 3, args.unique_direct) for parts in chunks]
 
     import circledist as cd
     lib = library_info(cd)
@@ -228,6 +245,7 @@ def main(argv=None):
         print(f"{n_cases} cases x {per_case} batched answers each (+ the scalar sample)"
               + (f" for --answers {args.answers}" if args.answers is not None else ""), flush=True)
     total = {"cases": 0, "answers": collections.Counter(), "unique_checked": collections.Counter(),
+             "unique_checked_direct": collections.Counter(),
              "by_family": collections.Counter(),
              "by_pair": collections.Counter(), "classes": {}}
     t0 = time.perf_counter()
@@ -272,6 +290,8 @@ def main(argv=None):
              "answers per entry point: " + ", ".join(f"{k} {v}" for k, v in sorted(total["answers"].items())),
              "unique checked (expected value: count): " + ", ".join(
                  f"{k} {v}" for k, v in sorted(total["unique_checked"].items())),
+             "unique checked directly (differential.reference_unique; pair expected value: count): " + ", ".join(
+                 f"{k} {v}" for k, v in sorted(total["unique_checked_direct"].items())),
              "", "cases / confirmed findings per family:"]
     lines += [f"  {fam:20s} {total['by_family'][fam]:>9} {by_family_f[fam]:>7}" for fam in families]
     lines += ["", "cases / confirmed findings per kind pair:"]
@@ -297,6 +317,7 @@ def main(argv=None):
         "command": " ".join(sys.argv),
         "cases": total["cases"], "answers": n_answers, "answers_by_entry": dict(total["answers"]),
         "unique_checked": dict(total["unique_checked"]),
+        "unique_checked_direct": dict(total["unique_checked_direct"]),
         "answers_per_case_batched": per_case, "seconds": seconds, "ms_per_case": 1e3 * seconds / max(total["cases"], 1),
         "answers_per_second": n_answers / max(seconds, 1e-9), "seed": args.seed,
         "combos": [list(c) for c in combo_list], "families": families,
