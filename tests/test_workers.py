@@ -90,6 +90,9 @@ def test_ctrl_c_stops_a_long_batch(workers):
         import os, signal, threading, time
         import numpy as np
         import circledist as cd
+        # Python's own Ctrl-C handler, as an interactive session has it: a process started in the
+        # background by a non-interactive shell inherits SIGINT ignored, and Python then installs none
+        signal.signal(signal.SIGINT, signal.default_int_handler)
         rng = np.random.default_rng(1)
         n = 400_000  # Bezier-disk: about 10 us each, seconds of work on any core count here
         curves = cd.Bezier(rng.normal(size=(n, 4, 3)))
