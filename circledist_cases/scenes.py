@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from mpmath import mpf
+from mpmath import mp, mpf
 
 # ----------------------------------------------------------------------------
 # hard scenes in the local frame (C = 0, N = +z, R = 1)
@@ -261,4 +261,7 @@ FAR_CURVE_CONTROL = np.array([[-7368.294710182142, 18594.025607135212, 12799.264
                               [6887.627156622108, -17377.097254714514, -11960.388731637753]])
 FAR_CURVE_RING = ([1.5206618395599336, -1.792796825287908, -0.6143671334034062],
                   [-0.5078534011677034, 0.1960660034195697, 0.13630414481520362], 0.7799682209376687)
-FAR_CURVE_DISTANCE = mpf("0.5345388680509443148992182")
+# Made at 50 digits whatever mpmath's working precision is when this module is first imported
+# (the default 15 rounded it to a double, which a test run alone then compared at 1e-24).
+with mp.workdps(50):
+    FAR_CURVE_DISTANCE = mpf("0.5345388680509443148992182")
