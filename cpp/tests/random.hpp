@@ -6,6 +6,7 @@
 #include <circledist/primitives.hpp>
 
 #include <random>
+#include <vector>
 
 namespace test_random {
 
@@ -43,5 +44,20 @@ struct Random {
     return b;
   }
 };
+
+// The control points of the same curve raised to `degree` (degree elevation: q_i = i/(m+1) p_{i-1}
+// + (1 - i/(m+1)) p_i, once per degree): a curve of lower degree whose power-basis coefficients
+// above it are rounding noise, the input the root policies find hardest.
+inline std::vector<V> elevated(std::vector<V> p, int degree) {
+  while (int(p.size()) - 1 < degree) {
+    const int m = int(p.size()) - 1;
+    std::vector<V> raised(m + 2);
+    raised[0] = p[0];
+    raised[m + 1] = p[m];
+    for (int i = 1; i <= m; ++i) raised[i] = (double(i) / (m + 1)) * p[i - 1] + (1 - double(i) / (m + 1)) * p[i];
+    p = raised;
+  }
+  return p;
+}
 
 }  // namespace test_random

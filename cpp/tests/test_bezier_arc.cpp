@@ -11,6 +11,7 @@
 // within/intersects/distance_if_within, `unique` where the geometry says it, an arc of angle
 // 2 pi its circle's answer to the bit, an annulus of inner radius 0 the disk's and of inner = outer
 // the circle's.
+#include "random.hpp"
 #include "round_reference.hpp"
 
 #include <circledist/circledist.hpp>
@@ -492,15 +493,8 @@ void crossing_all(const char* name, const Curve& b, const Annulus& a) {
   crossing_policy<EigenPolynomialSolver>(name, b, a);
 }
 
-Curve elevated(std::vector<V3d> p, int degree) {
-  while (int(p.size()) - 1 < degree) {
-    const int n = int(p.size()) - 1;
-    std::vector<V3d> q(n + 2);
-    q[0] = p[0];
-    q[n + 1] = p[n];
-    for (int i = 1; i <= n; ++i) q[i] = (double(i) / (n + 1)) * p[i - 1] + (1 - double(i) / (n + 1)) * p[i];
-    p = q;
-  }
+Curve elevated(const std::vector<V3d>& lower, int degree) {
+  const std::vector<V3d> p = test_random::elevated(lower, degree);
   Curve b;
   b.control.resize(3, int(p.size()));
   for (int i = 0; i < int(p.size()); ++i) b.control.col(i) = p[i];

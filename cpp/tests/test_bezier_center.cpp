@@ -20,6 +20,7 @@
 #include <circledist/circledist.hpp>
 
 #include "check.hpp"
+#include "random.hpp"
 
 #include <algorithm>
 #include <array>
@@ -359,15 +360,7 @@ void random_tests() {
       std::vector<V3d> p(std::max(1, n - 1 - int(2 * uniform(rng))) + 1);
       for (V3d& x : p) x = vec() * size;
       through(p, uniform(rng));
-      while (int(p.size()) - 1 < n) {
-        const int m = int(p.size()) - 1;
-        std::vector<V3d> raised(m + 2);
-        raised[0] = p[0];
-        raised[m + 1] = p[m];
-        for (int i = 1; i <= m; ++i) raised[i] = (double(i) / (m + 1)) * p[i - 1] + (1 - double(i) / (m + 1)) * p[i];
-        p = raised;
-      }
-      q = p;
+      q = test_random::elevated(p, n);
     }
     if (lifted) {
       const V3d lift = s.normal * s.radius * (0.05 + 0.95 * uniform(rng)) * (uniform(rng) < 0.5 ? -1 : 1);
