@@ -55,7 +55,8 @@ def same_bits(x, y) -> None:
 def make_shape(cd, kind: str, values):
     """The library shape of a flat value layout (accuracy.py's, and bench/accuracy_vs_time.cpp's):
     point (x, y, z), given as a plain array (the library makes it a Point); line, ray (origin,
-    direction); segment (p0, p1); circle, disk (center, normal, radius); bezier (k, then k
+    direction); segment (p0, p1); circle, disk (center, normal, radius); arc (center, normal,
+    radius, start, angle); annulus (center, normal, inner radius, outer radius); bezier (k, then k
     control points)."""
     v = np.asarray(values, dtype=float)
     if kind == "point":
@@ -64,6 +65,10 @@ def make_shape(cd, kind: str, values):
         return getattr(cd, kind.capitalize())(v[:3], v[3:6])
     if kind in ("circle", "disk"):
         return getattr(cd, kind.capitalize())(v[:3], v[3:6], float(v[6]))
+    if kind == "arc":
+        return cd.Arc(v[:3], v[3:6], float(v[6]), v[7:10], float(v[10]))
+    if kind == "annulus":
+        return cd.Annulus(v[:3], v[3:6], float(v[6]), float(v[7]))
     if kind == "bezier":
         k = int(v[0])
         return cd.Bezier(v[1:1 + 3 * k].reshape(k, 3))

@@ -14,23 +14,14 @@ import pytest
 import circledist as cd
 from circledist_cases import accuracy as acc
 from circledist_cases import differential as D
+from circledist_cases.shapes import make_shape
 
 
 def _from_layout(kind, v):
-    """A shape from accuracy.py's documented layout (the order accuracy_vs_time.cpp reads)."""
-    v = [float(x) for x in v]
-    if kind == "point":
-        return cd.Point(v[:3])
-    if kind in ("line", "ray", "segment"):
-        return getattr(cd, kind.capitalize())(v[:3], v[3:6])
-    if kind in ("circle", "disk"):
-        return getattr(cd, kind.capitalize())(v[:3], v[3:6], v[6])
-    if kind == "arc":
-        return cd.Arc(v[:3], v[3:6], v[6], v[7:10], v[10])
-    if kind == "annulus":  # (center, normal, inner radius, outer radius)
-        return cd.Annulus(v[:3], v[3:6], v[6], v[7])
-    assert kind == "bezier"
-    return cd.Bezier(np.reshape(v[1:], (int(v[0]), 3)))
+    """A shape from accuracy.py's documented layout (shapes.make_shape: the order
+    accuracy_vs_time.cpp reads), a point as a Point so that its fields compare too."""
+    shape = make_shape(cd, kind, v)
+    return cd.Point(shape) if kind == "point" else shape
 
 
 def _pairs():
