@@ -909,3 +909,32 @@ def test_write_scene_honours_the_umask_and_keeps_a_replaced_files_mode(tmp_path,
     os.umask(0o077)
     sf.write_scene(tmp_path / f"private{suffix}", {"ring": RING})
     assert os.stat(tmp_path / f"private{suffix}").st_mode & 0o777 == 0o600
+
+
+def test_corrupt_deflated_members_are_one_line(tmp_path):
+    """Every member of a deflated .npz with bytes of its compressed data changed (zlib's errors, a
+    CRC that does not match): a SceneFileError naming the file, whichever byte it is."""
+    import zipfile
+
+    path = _zip(tmp_path, _good_members(), method=zipfile.ZIP_DEFLATED)
+    with open(path, "rb") as f:
+        good = f.read()
+    with zipfile.ZipFile(path) as z:
+        infos = z.infolist()
+    refused = 0
+    for info in infos:
+        name_length, extra_length = int.from_bytes(good[info.header_offset + 26:info.header_offset + 28], "little"), \
+            int.from_bytes(good[info.header_offset + 28:info.header_offset + 30], "little")
+        start = info.header_offset + 30 + name_length + extra_length
+        for at in sorted({start, start + info.compress_size // 3, start + info.compress_size // 2,
+                          start + info.compress_size - 1}):
+            data = bytearray(good)
+            data[at] ^= 0xA5
+            bad = tmp_path / "bad.npz"
+            bad.write_bytes(bytes(data))
+            try:
+                sf.read_scene(str(bad))
+            except sf.SceneFileError as e:
+                assert str(e).startswith(f"{bad}: ") and "\n" not in str(e), str(e)
+                refused += 1
+    assert refused > len(infos)  # most changes are refused (the rest still make a valid scene)

@@ -33,9 +33,15 @@ import re
 import secrets
 import stat
 import zipfile
+import zlib
 from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any, Iterable, Mapping, Optional
+
+try:
+    import lzma
+except ImportError:  # a Python built without it: zipfile cannot inflate lzma either
+    lzma = None
 
 import numpy as np
 
@@ -777,7 +783,7 @@ def _scene_from_npz_handle(handle, file: str) -> SceneFile:
     handle.seek(0)
     try:
         archive = zipfile.ZipFile(handle)
-    except (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError, NotImplementedError) as e:
+    except _ZIP_ERRORS as e:
         raise SceneFileError(f"{file}: not a NumPy .npz file: {e}") from None
     with archive:
         return _scene_from_npz(_NpzArrays(archive, file), file)
@@ -865,6 +871,10 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
     return SceneFile(file, description, entries, queries)
 
 
+# What reading a damaged zip may raise: zipfile's own errors, the inflaters' (zlib.error for a
+# corrupt deflate stream; lzma's and bz2's are an LZMAError and an OSError), numpy's for a bad header.
+_ZIP_ERRORS = (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError, NotImplementedError, zlib.error) \
+    + ((lzma.LZMAError,) if lzma is not None else ())
 _NPY_HEADERS = {(1, 0): np.lib.format.read_array_header_1_0, (2, 0): np.lib.format.read_array_header_2_0}
 _ZIP_METHODS = {zipfile.ZIP_STORED: "stored", zipfile.ZIP_DEFLATED: "deflate", zipfile.ZIP_BZIP2: "bzip2",
                 zipfile.ZIP_LZMA: "lzma"}
@@ -939,7 +949,7 @@ class _NpzArrays:
                 offset = stream.tell()
         except SceneFileError:
             raise
-        except (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError, NotImplementedError) as e:
+        except _ZIP_ERRORS as e:
             raise self._fail(key, f"expected a plain NumPy array (.npy): {e}") from None
         if dtype.hasobject:
             raise self._fail(key, f"expected a plain NumPy array: dtype {dtype} holds Python objects, "
@@ -958,7 +968,7 @@ class _NpzArrays:
             try:
                 with self.archive.open(self.members[key]) as stream:
                     self.cache[key] = np.lib.format.read_array(stream, allow_pickle=False)
-            except (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError) as e:
+            except _ZIP_ERRORS as e:
                 raise self._fail(key, f"expected a plain NumPy array: {e}") from None
         return self.cache[key]
 
