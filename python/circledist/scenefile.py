@@ -772,7 +772,7 @@ def _npz_field(arrays, key: str, role: str, count: Optional[int], file: str, whe
 def scene_from_npz(path: str, file: Optional[str] = None) -> SceneFile:
     """Validates a .npz scene; `file` is the name messages give (default: path)."""
     file = path if file is None else file
-    with _open_regular(path, file) as handle:  # ours to close: np.load leaks the file it opens when it is no zip
+    with _open_regular(path, file) as handle:
         return _scene_from_npz_handle(handle, file)
 
 
@@ -876,8 +876,10 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
 _ZIP_ERRORS = (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError, NotImplementedError, zlib.error) \
     + ((lzma.LZMAError,) if lzma is not None else ())
 _NPY_HEADERS = {(1, 0): np.lib.format.read_array_header_1_0, (2, 0): np.lib.format.read_array_header_2_0}
-_ZIP_METHODS = {zipfile.ZIP_STORED: "stored", zipfile.ZIP_DEFLATED: "deflate", zipfile.ZIP_BZIP2: "bzip2",
-                zipfile.ZIP_LZMA: "lzma"}
+# The compression methods zipfile inflates here (bzip2 and lzma only where Python has the module).
+_ZIP_METHODS = {zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED} \
+    | ({zipfile.ZIP_BZIP2} if getattr(zipfile, "bz2", None) is not None else set()) \
+    | ({zipfile.ZIP_LZMA} if getattr(zipfile, "lzma", None) is not None else set())
 
 
 @dataclass(frozen=True)
@@ -900,8 +902,8 @@ class _NpzArrays:
     """The arrays of an .npz (a zip of .npy members), each read on first use, its header first.
 
     The header (numpy.lib.format) gives the dtype and shape without inflating the data: `header`
-    returns a stand-in of that dtype and shape (a broadcast view of one element: no memory) for
-    the reader to check against what the array's role allows, and its size must match the
+    returns them for the reader to check against what the array's role allows, and their size
+    (shape times item size) must match the
     member's uncompressed size, so that a member is only inflated once its shape is known to be
     one the scene can hold and the data to be what the header says (a small zip that would
     inflate to gigabytes, or a header claiming 10^12 elements, is refused before any of it is
@@ -914,9 +916,7 @@ class _NpzArrays:
             if info.is_dir():
                 continue
             where = f"member {shown(info.filename)}"
-            if info.compress_type not in _ZIP_METHODS or (info.compress_type == zipfile.ZIP_BZIP2
-                                                         and not _has_module("bz2")) \
-                    or (info.compress_type == zipfile.ZIP_LZMA and not _has_module("lzma")):
+            if info.compress_type not in _ZIP_METHODS:
                 raise _error(file, where, f"compressed with zip method {info.compress_type}, which this reader "
                                           f"cannot inflate (numpy.savez stores, numpy.savez_compressed deflates)")
             # An array's name: the member's without ".npy" (numpy.load's names; a member of another
@@ -971,14 +971,6 @@ class _NpzArrays:
             except _ZIP_ERRORS as e:
                 raise self._fail(key, f"expected a plain NumPy array: {e}") from None
         return self.cache[key]
-
-
-def _has_module(name: str) -> bool:
-    try:
-        __import__(name)
-    except ImportError:
-        return False
-    return True
 
 
 # ------------------------------------------------------------------------------------------
