@@ -386,3 +386,31 @@ def test_plot_draws_valid_scenes_of_extreme_values(tmp_path, capsys, label):
     assert status == 0 and "Traceback" not in err, err[-3000:]
     data = png.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and 1000 < len(data) < 5 << 20
+
+
+LINE_BREAKS = ["\n", "\r", "\x0b", "\x0c", "\x1c", "\x85", "\u2028", "\u2029"]
+
+
+@pytest.mark.parametrize("brk", LINE_BREAKS, ids=[f"U+{ord(c):04X}" for c in LINE_BREAKS])
+@pytest.mark.parametrize("place", ["json batch name", "npz name", "file name"])
+def test_errors_stay_one_line_whatever_the_names_hold(tmp_path, capsys, brk, place):
+    """A line break in a shape's name (the schema's name allows any character but [, ] and /) or
+    in the file's path: the error is still one line, the break escaped."""
+    name = f"a{brk}b"
+    if place == "npz name":
+        path = str(tmp_path / "scene.npz")
+        np.savez(path, format=np.array("circledist-scene"), version=np.array(1), shapes=np.array(["ok", name]),
+                 **{"ok/kind": np.array("point"), "ok/p": np.zeros(3)})
+    else:
+        doc = {"format": "circledist-scene", "version": 1,
+               "shapes": [{"name": name, "kind": "point", "count": 2, "p": [0, 0, 0]}],
+               "queries": [{"a": name, "effects": ["nearest"]}]}
+        path = write(tmp_path, doc, f"scene{brk}.json" if place == "file name" else "scene.json")
+        if place == "file name":
+            doc["shapes"][0]["name"] = "ab"
+            doc["queries"][0]["a"] = "ab"
+            Path(path).write_text(json.dumps(doc))
+    assert cli.main([path, "--no-plot"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("circledist: error: ") and len(err.splitlines()) == 1 and err.endswith("\n"), repr(err)
+    assert ("is a batch of 2" if place != "npz name" else "missing") in err

@@ -80,6 +80,10 @@ _REFERENCE = re.compile(r"^([^\[\]/]+)(?:\[(0|[1-9][0-9]*)\])?$")
 _NPZ_TOP = ("format", "version", "description", "shapes", "queries")
 
 
+# What str.splitlines breaks a line at.
+_LINE_BREAKS = re.compile("[\n\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]")
+
+
 class SceneFileError(ValueError):
     """A bad scene file: its one-line message names the file, where in it (a JSON path such as
     ``$.shapes[3].radius``, or an ``.npz`` array and index), and what was expected.
@@ -108,7 +112,8 @@ class SceneFileError(ValueError):
     """
 
     def __init__(self, message: str):
-        super().__init__(message)
+        # One line whatever the file holds: a line break in a name, a key or the path is escaped.
+        super().__init__(_LINE_BREAKS.sub(lambda m: repr(m.group())[1:-1], message))
 
 
 def schema_text() -> str:
@@ -823,13 +828,14 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
     for name in order:
         kind = _npz_string(arrays, f"{name}/kind", file, word=True)
         if kind not in KINDS:
-            raise _error(file, f"array '{name}/kind'", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
-        _check_kind_version(kind, version, file, f"array '{name}/kind'")
+            raise _error(file, f"array {name + '/kind'!r}",
+                         f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
+        _check_kind_version(kind, version, file, f"array {name + '/kind'!r}")
         count = _npz_integer(arrays, f"{name}/count", file)
         if count is not None and count < 1:
-            raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
+            raise _error(file, f"array {name + '/count'!r}", f"expected an integer >= 1, got {count}")
         shapes_so_far += 1 if count is None else count
-        _check_shape_count(shapes_so_far, count, file, f"array '{name}/count'")
+        _check_shape_count(shapes_so_far, count, file, f"array {name + '/count'!r}")
         roles = _roles(kind)
         known |= {f"{name}/kind", f"{name}/count"} | {f"{name}/{f}" for f in roles}
         fields = {}
@@ -845,7 +851,7 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
         try:
             entry.shape()
         except ValueError as e:
-            raise _error(file, f"arrays '{name}/...'", str(e)) from None
+            raise _error(file, f"arrays {name + '/...'!r}", str(e)) from None
         entries.append(entry)
     for key in sorted(names - known):
         raise _error(file, f"array {key!r}", "unknown: not a field of a shape listed in 'shapes' nor one of "
