@@ -286,7 +286,7 @@ def test_indexing_refuses_what_is_not_basic_indexing():
 # ---- bad input: circledist's own errors, word for word, naming the element of the whole batch --
 
 def _message(call):
-    with pytest.raises((ValueError, TypeError)) as error:
+    with pytest.raises((ValueError, TypeError, OverflowError)) as error:
         call()
     return type(error.value), str(error.value)
 
@@ -350,3 +350,26 @@ def test_pairs_within_tiles_must_be_a_positive_integer(tiles, kind, words):
     assert str(error.value) == f"pairs_within: tiles must be an integer >= 1, got {words}"
     i, j, _ = dask.compute(*cdd.pairs_within(points, points, 0.1, tiles=np.int64(3)), scheduler="sync")
     assert len(i) == 25
+
+
+@pytest.mark.parametrize("batch, where, chunks", [((20000,), (12345,), {0: 5000}), ((30, 40), (17, 29), {0: 7, 1: 15})],
+                         ids=["1d", "2d"])
+@pytest.mark.parametrize("bad", ["negative d", "nan d", "float32 overflow"])
+def test_errors_of_the_calls_name_the_whole_batch_index(batch, where, chunks, bad):
+    """Errors the calls themselves raise (within's d, an answer beyond float32's range) name the
+    element as circledist does for the whole batch, not its index within the chunk."""
+    points = np.zeros(batch + (3,))
+    others = np.zeros(batch + (3,))
+    d = np.full(batch, 0.5)
+    if bad == "float32 overflow":
+        points[where] = [3e38, 0, 0]
+        others[where] = [-3e38, 0, 0]
+        expected = _message(lambda: cd.distance(cd.Point(points), cd.Point(others), precision="float32"))
+        lazy = cdd.distance(cdd.Point(da.from_array(points, chunks={**chunks, len(batch): -1})),
+                            cdd.Point(da.from_array(others, chunks={**chunks, len(batch): -1})), precision="float32")
+    else:
+        d[where] = -1.0 if bad == "negative d" else np.nan
+        expected = _message(lambda: cd.within(cd.Point(points), cd.Point(others), d))
+        lazy = cdd.within(cdd.Point(points), cdd.Point(others), da.from_array(d, chunks=chunks))
+    assert f"[{', '.join(map(str, where))}]" in expected[1]
+    assert _message(lambda: lazy.compute(scheduler="sync")) == expected

@@ -233,36 +233,63 @@ def _indices(ndim_out, shapes, extra=()):
     return out, args, layout
 
 
-def _field_batches(shapes):
-    """{(shape, field): the field's batch shape} of the whole batch, for _unpack's messages."""
-    return {(s, name): value.shape[:value.ndim - TRAILING_DIMS[name]]
-            for s, shape in enumerate(shapes) for name, value in shape.fields.items()}
+def _field_batches(shapes, extra=()):
+    """The batch shapes of the whole batch, for the blocks' messages: (shape, field) -> the
+    field's; "d" -> within's d; "out" -> the answers'."""
+    batches = {(s, name): value.shape[:value.ndim - TRAILING_DIMS[name]]
+               for s, shape in enumerate(shapes) for name, value in shape.fields.items()}
+    if extra:
+        batches["d"] = extra[0].shape
+    batches["out"] = np.broadcast_shapes(*[s.batch_shape for s in shapes], *[x.shape for x in extra])
+    return batches
+
+
+def _shifted(whole, local, starts):
+    """Index `local` within a block of an array whose whole batch shape is `whole` (its axes the
+    output's last ones), as an index within the whole: each axis moved by where the block starts
+    on it, a broadcast axis (length 1) left at 0."""
+    if len(local) != len(whole):
+        return None
+    offset = starts[len(starts) - len(whole):] if whole else []
+    return tuple(i + (o if n > 1 else 0) for i, o, n in zip(local, offset, whole))
 
 
 def _unpack(layout, kinds, blocks, ndim_out, batches):
     """The two shapes of a block (blocks: the fields, the extra arrays, then one array of indices
-    per output axis); an error names its element's index within the whole batch."""
+    per output axis), the block's output shape, the extra arrays, and a function that renumbers
+    the call's errors; an error names its element's index within the whole batch."""
     starts = [int(axis[0]) if len(axis) else 0 for axis in blocks[len(blocks) - ndim_out:]]
     blocks = blocks[:len(blocks) - ndim_out]
     fields = [{}, {}]
     for (s, name), block in zip(layout, blocks):
         fields[s][name] = block
 
-    def index_of(s):
-        def shifted(name, local):
+    def field_index(s):
+        def index_of(name, local):
             # A field's own batch axes (right-aligned with the output's); the shape's otherwise.
-            whole = batches.get((s, name)) or np.broadcast_shapes(
-                *[b for (t, _), b in batches.items() if t == s])
-            if len(local) != len(whole):
-                return None
-            offset = starts[ndim_out - len(whole):]
-            return tuple(i + (o if n > 1 else 0) for i, o, n in zip(local, offset, whole))
-        return shifted
-    a, b = (_checked_block_shape(kind, f, index_of(s)) for s, (kind, f) in enumerate(zip(kinds, fields)))
+            whole = batches[(s, name)] if (s, name) in batches else np.broadcast_shapes(
+                *[b for key, b in batches.items() if isinstance(key, tuple) and key[0] == s])
+            return _shifted(whole, local, starts)
+        return index_of
+
+    def answer_index(name, local):
+        # within's d by its own shape; the answers (float32's range) by the output's.
+        return _shifted(batches.get(name, batches["out"]), local, starts)
+
+    a, b = (_checked_block_shape(kind, f, field_index(s)) for s, (kind, f) in enumerate(zip(kinds, fields)))
     # The block's shape: the fields' batch shapes broadcast, padded on the left to the output's
     # rank (cd returns the rank of its inputs, or a scalar for single shapes).
-    shape = np.broadcast_shapes(a.batch_shape, b.batch_shape, *[x.shape for x in blocks[len(layout):]])
-    return a, b, (1,) * (ndim_out - len(shape)) + shape, blocks
+    extra = blocks[len(layout):]
+    shape = np.broadcast_shapes(a.batch_shape, b.batch_shape, *[x.shape for x in extra])
+    return a, b, (1,) * (ndim_out - len(shape)) + shape, extra, answer_index
+
+
+def _answered(call, index_of, *args, **options):
+    """call(*args, **options), its errors naming the element within the whole batch."""
+    try:
+        return call(*args, **options)
+    except (ValueError, TypeError, OverflowError) as error:
+        raise _renumbered(error, index_of) from None
 
 
 def _prepare(a, b, extra=()):
@@ -277,8 +304,8 @@ def _options(precision, solver, workers):
 
 
 def _distance_block(*blocks, layout, kinds, ndim, options, batches):
-    a, b, shape, _ = _unpack(layout, kinds, blocks, ndim, batches)
-    return np.asarray(_core.distance(a, b, **options)).reshape(shape)
+    a, b, shape, _, index_of = _unpack(layout, kinds, blocks, ndim, batches)
+    return np.asarray(_answered(_core.distance, index_of, a, b, **options)).reshape(shape)
 
 
 def distance(a, b, *, precision=None, solver=None, workers=1):
@@ -293,8 +320,8 @@ def distance(a, b, *, precision=None, solver=None, workers=1):
 
 
 def _within_block(*blocks, layout, kinds, ndim, options, batches):
-    a, b, shape, blocks = _unpack(layout, kinds, blocks, ndim, batches)
-    return np.asarray(_core.within(a, b, blocks[-1], **options)).reshape(shape)
+    a, b, shape, (d,), index_of = _unpack(layout, kinds, blocks, ndim, batches)
+    return np.asarray(_answered(_core.within, index_of, a, b, d, **options)).reshape(shape)
 
 
 def within(a, b, d, *, precision=None, solver=None, workers=1):
@@ -304,7 +331,7 @@ def within(a, b, d, *, precision=None, solver=None, workers=1):
     out, args, layout = _indices(ndim, (a, b), (d,))
     return da.blockwise(_within_block, out, *args, dtype=bool, concatenate=True,
                         layout=layout, kinds=(a.kind, b.kind), ndim=ndim, options=options,
-                        batches=_field_batches((a, b)))
+                        batches=_field_batches((a, b), (d,)))
 
 
 _RESULT_FIELDS = (("distance", ()), ("point_a", (3,)), ("point_b", (3,)), ("param_a", (2,)),
@@ -312,8 +339,8 @@ _RESULT_FIELDS = (("distance", ()), ("point_a", (3,)), ("point_b", (3,)), ("para
 
 
 def _closest_block(*blocks, layout, kinds, ndim, options, batches):
-    a, b, shape, _ = _unpack(layout, kinds, blocks, ndim, batches)
-    r = _core.closest_points(a, b, **options)
+    a, b, shape, _, index_of = _unpack(layout, kinds, blocks, ndim, batches)
+    r = _answered(_core.closest_points, index_of, a, b, **options)
     # A dict of arrays (it pickles and has a size for the scheduler), read by the getters below.
     return {name: np.asarray(getattr(r, name)).reshape(shape + trailing) for name, trailing in _RESULT_FIELDS}
 
