@@ -317,12 +317,6 @@ def test_json_answers_beyond_a_double_are_null(tmp_path, capsys):
     assert json.loads(capsys.readouterr().out, parse_constant=refuse)["answers"] == answers
 
 
-@pytest.fixture
-def umask_022():
-    old = os.umask(0o022)
-    yield
-    os.umask(old)
-
 
 @pytest.mark.parametrize("option", ["--json", "--plot"])
 def test_outputs_honour_the_umask_and_keep_a_replaced_files_mode(tmp_path, umask_022, option):

@@ -891,12 +891,6 @@ def test_npz_surrogates_and_deep_queries(tmp_path):
         assert "\n" not in str(error.value) and len(str(error.value)) < 400, depth
 
 
-@pytest.fixture
-def umask_022():
-    old = os.umask(0o022)
-    yield
-    os.umask(old)
-
 
 @pytest.mark.parametrize("suffix", [".json", ".npz"])
 def test_write_scene_honours_the_umask_and_keeps_a_replaced_files_mode(tmp_path, umask_022, suffix):
