@@ -43,3 +43,11 @@ except ImportError:  # pragma: no cover - hypothesis is a test requirement
 def cd():
     """The module under test (tests needing it are skipped while it does not import)."""
     return pytest.importorskip("circledist", exc_type=ImportError)
+
+
+@pytest.fixture
+def umask_022():
+    """The process's umask 0o022 for the test (files made 0o644), restored after it."""
+    old = os.umask(0o022)
+    yield
+    os.umask(old)

@@ -281,3 +281,95 @@ def test_indexing_refuses_what_is_not_basic_indexing():
             rings[key]
     with pytest.raises(TypeError, match=r"len\(\) of a single Circle"):
         len(rings[0])
+
+
+# ---- bad input: circledist's own errors, word for word, naming the element of the whole batch --
+
+def _message(call):
+    with pytest.raises((ValueError, TypeError, OverflowError)) as error:
+        call()
+    return type(error.value), str(error.value)
+
+
+def _spoilt(batch, where, field, value):
+    """Circle fields (centers on a grid, radius 0.1) of batch shape `batch`, field[where] = value."""
+    n = int(np.prod(batch))
+    fields = {"center": np.stack([np.arange(n) * 3.0, np.zeros(n), np.zeros(n)], axis=-1).reshape(batch + (3,)),
+              "normal": np.tile([0.0, 0.0, 1.0], (n, 1)).reshape(batch + (3,)),
+              "radius": np.full(batch, 0.1)}
+    fields[field] = fields[field].copy()
+    fields[field][where] = value
+    return fields
+
+
+BAD_ELEMENTS = [
+    ((20000,), (12345,), "center", np.nan, {0: 10000}),
+    ((20000,), (12345,), "normal", 0.0, {0: 7000}),
+    ((20000,), (19999,), "radius", -1.0, {0: 6000}),
+    ((30, 40), (17, 29), "center", np.inf, {0: 7, 1: 15}),
+    ((30, 40), (3, 38), "radius", -2.0, {0: 11, 1: 9}),
+]
+
+
+@pytest.mark.parametrize("batch, where, field, value, chunks", BAD_ELEMENTS,
+                         ids=[f"{f}-{'x'.join(map(str, b))}" for b, _, f, _, _ in BAD_ELEMENTS])
+@pytest.mark.parametrize("call", ["distance", "within", "closest_points", "pairs_within-a", "pairs_within-b"])
+def test_bad_elements_are_named_as_circledist_names_them(batch, where, field, value, chunks, call):
+    """A NaN, a zero normal or a negative radius deep in a chunked batch: the error is the one
+    circledist raises for the whole batch (same type and words, the element's index in the whole
+    batch, not within its chunk), from every call, pairs_within's tiling included."""
+    fields = _spoilt(batch, where, field, value)
+    expected = _message(lambda: cd.Circle(*fields.values()))
+    assert f"{field}[{', '.join(map(str, where))}]" in expected[1]
+    lazy = cdd.Circle(*[da.from_array(v, chunks={**chunks, **({v.ndim - 1: -1} if v.ndim > len(batch) else {})})
+                        for v in fields.values()])
+    other = cdd.Point(np.zeros(batch + (3,)))
+    run = {"distance": lambda: cdd.distance(lazy, other).compute(scheduler="sync"),
+           "within": lambda: cdd.within(other, lazy, 0.5).compute(scheduler="sync"),
+           "closest_points": lambda: cdd.closest_points(lazy, other).distance.compute(scheduler="sync"),
+           "pairs_within-a": lambda: dask.compute(*cdd.pairs_within(lazy, other, 0.5), scheduler="sync"),
+           "pairs_within-b": lambda: dask.compute(*cdd.pairs_within(other, lazy, 0.5), scheduler="sync")}[call]
+    assert _message(run) == expected
+
+
+@pytest.mark.parametrize("d", ["0.3", b"0.3", True, None, -1.0, float("nan"), float("inf"), [0.3]],
+                         ids=["str", "bytes", "bool", "none", "negative", "nan", "inf", "list"])
+def test_pairs_within_checks_d_as_circledist_does(d):
+    points = np.zeros((5, 3))
+    expected = _message(lambda: cd.pairs_within(cd.Point(points), cd.Point(points), d))
+    assert _message(lambda: cdd.pairs_within(cdd.Point(points), cdd.Point(points), d)) == expected
+
+
+@pytest.mark.parametrize("tiles, kind, words", [
+    (-5, ValueError, "-5"), (0, ValueError, "0"), (2.5, TypeError, "2.5"), (True, TypeError, "True"),
+    ("4", TypeError, "'4'"), (float("nan"), TypeError, "nan")])
+def test_pairs_within_tiles_must_be_a_positive_integer(tiles, kind, words):
+    points = cdd.Point(np.zeros((5, 3)))
+    with pytest.raises(kind) as error:
+        cdd.pairs_within(points, points, 0.1, tiles=tiles)
+    assert str(error.value) == f"pairs_within: tiles must be an integer >= 1, got {words}"
+    i, j, _ = dask.compute(*cdd.pairs_within(points, points, 0.1, tiles=np.int64(3)), scheduler="sync")
+    assert len(i) == 25
+
+
+@pytest.mark.parametrize("batch, where, chunks", [((20000,), (12345,), {0: 5000}), ((30, 40), (17, 29), {0: 7, 1: 15})],
+                         ids=["1d", "2d"])
+@pytest.mark.parametrize("bad", ["negative d", "nan d", "float32 overflow"])
+def test_errors_of_the_calls_name_the_whole_batch_index(batch, where, chunks, bad):
+    """Errors the calls themselves raise (within's d, an answer beyond float32's range) name the
+    element as circledist does for the whole batch, not its index within the chunk."""
+    points = np.zeros(batch + (3,))
+    others = np.zeros(batch + (3,))
+    d = np.full(batch, 0.5)
+    if bad == "float32 overflow":
+        points[where] = [3e38, 0, 0]
+        others[where] = [-3e38, 0, 0]
+        expected = _message(lambda: cd.distance(cd.Point(points), cd.Point(others), precision="float32"))
+        lazy = cdd.distance(cdd.Point(da.from_array(points, chunks={**chunks, len(batch): -1})),
+                            cdd.Point(da.from_array(others, chunks={**chunks, len(batch): -1})), precision="float32")
+    else:
+        d[where] = -1.0 if bad == "negative d" else np.nan
+        expected = _message(lambda: cd.within(cd.Point(points), cd.Point(others), d))
+        lazy = cdd.within(cdd.Point(points), cdd.Point(others), da.from_array(d, chunks=chunks))
+    assert f"[{', '.join(map(str, where))}]" in expected[1]
+    assert _message(lambda: lazy.compute(scheduler="sync")) == expected

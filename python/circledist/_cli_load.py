@@ -46,7 +46,9 @@ _FORMAT_TEMPLATE = """scene files, format version 3 (version 2: without annuli; 
   (m, 3) for control points), queries (0-d str: the JSON text of the query list).
 
   A bad file: one line on stderr naming the file, the JSON path (or array and index) and what
-  was expected; nothing is written; exit status 2. Newer format versions are refused.
+  was expected; nothing is written; exit status 2. Newer format versions are refused, and so are
+  what is no regular file (a FIFO, a device) and counts whose shapes would need more memory than
+  there is. In --json's answers a number beyond a double's range (an infinite distance) is null.
 """
 
 

@@ -5,12 +5,13 @@ from __future__ import annotations
 
 import io
 import json
+import math
 import os
 
 import numpy as np
 
 from ._cli_load import Query
-from .scenefile import _SWEEP, KINDS, SceneFile, _write_atomically
+from .scenefile import _SWEEP, KINDS, SceneFile, SceneFileError, _write_atomically
 
 PICTURE_LIMIT = 2000  # shapes --plot draws at most
 
@@ -72,7 +73,36 @@ def as_json(scene: SceneFile, queries: list[Query]) -> str:
             item["k"] = q.k
         item.update(q.answers)
         out["answers"].append(item)
-    return json.dumps(out, indent=2) + "\n"
+    return json.dumps(_json_numbers(out), indent=2, allow_nan=False) + "\n"
+
+
+def _json_numbers(value):
+    """The answers with every number JSON can hold: a float that is not finite (a distance that
+    overflowed a double) becomes None, written null; JSON has no Infinity or NaN."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _json_numbers(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_json_numbers(v) for v in value]
+    return value
+
+
+def check_output(path: str) -> None:
+    """Refuses (SceneError) an output path that cannot be written, before any work: its folder
+    missing or not writable, or the path a folder."""
+    folder = os.path.dirname(os.path.abspath(path))
+    problem = None
+    if os.path.isdir(path):
+        problem = "it is a directory"
+    elif not os.path.isdir(folder):
+        problem = f"no directory {folder}"
+    elif not os.access(folder, os.W_OK | os.X_OK):
+        problem = f"directory {folder} is not writable"
+    elif os.path.exists(path) and not os.path.isfile(path):
+        problem = "it is not a regular file"
+    if problem is not None:
+        raise SceneFileError(f"{path}: cannot write the output: {problem}")
 
 
 def write_output(path: str, data: bytes) -> None:
@@ -83,9 +113,16 @@ def write_output(path: str, data: bytes) -> None:
 # ------------------------------------------------------------------------------------------
 # the picture
 # ------------------------------------------------------------------------------------------
+def _unit(v):
+    """v / |v| for any finite non-zero v: scaled by its largest component first, so that |v| of
+    5e-324 or 1e308 neither underflows to 0 nor overflows to inf."""
+    v = np.asarray(v, float)
+    v = v / np.abs(v).max()
+    return v / np.linalg.norm(v)
+
+
 def _frame(normal):
-    n = np.asarray(normal, float)
-    n = n / np.linalg.norm(n)
+    n = _unit(normal)
     helper = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
     u = np.cross(n, helper)
     u /= np.linalg.norm(u)
@@ -100,9 +137,9 @@ def _ring(center, normal, radius, count=120):
 
 def _arc(center, normal, radius, start, angle, count=120):
     """The arc's own definition: u the unit projection of start onto the plane, v = n x u."""
-    n = np.asarray(normal, float) / np.linalg.norm(normal)
-    u = np.asarray(start, float) - np.dot(start, n) * n
-    u /= np.linalg.norm(u)
+    n = _unit(normal)
+    start = _unit(start)
+    u = _unit(start - np.dot(start, n) * n)
     v = np.cross(n, u)
     t = np.linspace(0, float(angle), count)
     return np.asarray(center, float) + radius * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
@@ -119,7 +156,7 @@ def _bezier(points, count=100):
 
 def _clip(origin, direction, lo, hi, ray: bool):
     """The part of a line (or ray) inside the box [lo, hi], or None."""
-    o, d = np.asarray(origin, float), np.asarray(direction, float)
+    o, d = np.asarray(origin, float), _unit(direction)
     t0, t1 = (0.0 if ray else -np.inf), np.inf
     for i in range(3):
         if d[i] == 0:
@@ -175,6 +212,42 @@ def _outline(kind: str, values) -> list:
     return [p for curve in _CURVES[kind](values, 16) for p in curve]
 
 
+def _short(text: str, limit: int) -> str:
+    """A name or title cut to limit characters for the picture (a description may be a book)."""
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
+# Lengths drawn as they are between these; beyond, in units of a power of ten.
+_PLAIN_LENGTHS = (1e-3, 1e6)
+
+
+def _scale(specs: dict, closest: list) -> float:
+    """The power of ten the picture's coordinates are given in: 1, or about the scene's largest
+    coordinate or length where that is outside _PLAIN_LENGTHS."""
+    largest = 0.0
+    for kind, values, sweep in specs.values():
+        for value, role in zip(values, KINDS[kind][1].values()):
+            if role in ("vector", "length", "control_points"):
+                largest = max(largest, float(np.abs(value).max()))
+        largest = max(largest, abs(sweep))
+    for r in closest:
+        for p in (r["point_a"], r["point_b"]):
+            finite = [abs(x) for x in p if math.isfinite(x)]
+            largest = max([largest] + finite)
+    if largest == 0 or _PLAIN_LENGTHS[0] <= largest <= _PLAIN_LENGTHS[1]:
+        return 1.0
+    return 10.0 ** max(math.floor(math.log10(largest)), -300)  # a normal double, never 0
+
+
+def _scaled(kind: str, values: list, scale: float) -> list:
+    """A shape's field values in units of scale (positions and lengths; directions and angles
+    as they are)."""
+    if scale == 1:
+        return values
+    return [np.asarray(v, float) / scale if role in ("vector", "length", "control_points") else v
+            for v, role in zip(values, KINDS[kind][1].values())]
+
+
 def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     """The scene drawn in 3D (PNG bytes): shapes, and a segment between each pair of closest points."""
     import matplotlib
@@ -184,14 +257,23 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     specs = _specs(scene)
+    closest = [q.answers["closest_points"] for q in queries if "closest_points" in q.answers]
+    # Drawn in units of `scale` (a power of ten) where the scene's lengths are far from 1: the
+    # projection's arithmetic on coordinates near 1e308 overflows, and near 1e-300 underflows.
+    scale = _scale(specs, closest)
+    specs = {name: (kind, _scaled(kind, values, scale), sweep / scale) for name, (kind, values, sweep) in specs.items()}
+    closest = [{"distance": r["distance"], "point_a": np.divide(r["point_a"], scale),
+                "point_b": np.divide(r["point_b"], scale)} for r in closest]
     # The view: every bounded shape and every closest point, plus the lines' origins.
     pts = []
     for kind, values, _ in specs.values():
         pts += _outline(kind, values)
-    for q in queries:
-        if "closest_points" in q.answers:
-            pts += [q.answers["closest_points"]["point_a"], q.answers["closest_points"]["point_b"]]
+    for r in closest:
+        pts += [r["point_a"], r["point_b"]]
     pts = np.asarray(pts, float)
+    pts = pts[np.isfinite(pts).all(axis=1)]
+    if not len(pts):
+        pts = np.zeros((1, 3))
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9) * 1.15
     lo, hi = mid - half, mid + half
@@ -202,7 +284,8 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     for i, (name, (k, values, sweep)) in enumerate(specs.items()):
         c = colors[i % len(colors)]
         width = 1.6 + (4.0 if sweep > 0 else 0.0)
-        label = name + (f" (sweep {sweep:g})" if sweep > 0 else "")
+        name = _short(name, 40)
+        label = name + (f" (sweep {sweep * scale:g})" if sweep > 0 else "")
         alpha = 0.55 if sweep > 0 else 1.0
         if k == "point":
             ax.scatter(*values[0], color=c, s=30 + (120 if sweep else 0), label=label)
@@ -225,10 +308,7 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
                 ax.plot(*curve.T, color=c, lw=width, alpha=alpha, label=label if j == 0 else None)
             anchor = curves[0][len(curves[0]) // 2]
         ax.text(*anchor, f" {name}", color=c, fontsize=9)
-    for q in queries:
-        r = q.answers.get("closest_points")
-        if r is None:
-            continue
+    for r in closest:
         seg = np.array([r["point_a"], r["point_b"]])
         ax.plot(*seg.T, color="crimson", lw=1.4, ls="--")
         ax.scatter(*seg.T, color="crimson", s=14)
@@ -237,10 +317,11 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     ax.set_ylim(lo[1], hi[1])
     ax.set_zlim(lo[2], hi[2])
     ax.set_box_aspect((1, 1, 1))
-    ax.set_xlabel("x")
-    ax.set_ylabel("y")
-    ax.set_zlabel("z")
-    title = scene.description or os.path.basename(scene.path)
+    unit = "" if scale == 1 else f" (\u00d7 {scale:.0e})"
+    ax.set_xlabel("x" + unit)
+    ax.set_ylabel("y" + unit)
+    ax.set_zlabel("z" + unit)
+    title = _short(scene.description.split("\n")[0] if scene.description else os.path.basename(scene.path), 100)
     ax.set_title(title + "\n(dashed: closest points)", fontsize=10)
     ax.legend(loc="upper left", fontsize=8)
     buf = io.BytesIO()

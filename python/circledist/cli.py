@@ -18,7 +18,7 @@ import sys
 
 from ._cli_answer import answer
 from ._cli_load import FORMAT_HELP, Query, SceneError, demo_scene_text, format_help, load_scene
-from ._cli_present import PICTURE_LIMIT, as_json, picture, table, write_output
+from ._cli_present import PICTURE_LIMIT, as_json, check_output, picture, table, write_output
 
 __all__ = ["main", "answer", "load_scene", "table", "as_json", "picture", "demo_scene_text", "Query", "SceneError",
            "FORMAT_HELP", "DEMO_PICTURE", "PICTURE_LIMIT"]
@@ -37,7 +37,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("scene", nargs="?", help="scene file (.json or .npz); default: the demo scene in the package")
     p.add_argument("--json", nargs="?", const="-", metavar="PATH",
                    help="write the answers as JSON to PATH (to standard output, instead of the table, "
-                        "when PATH is omitted or '-')")
+                        "when PATH is omitted or '-'); a number beyond a double's range (an infinite "
+                        "distance) is written as null")
     p.add_argument("--plot", metavar="PATH", help="draw the scene and its closest points to PATH (PNG, matplotlib)")
     p.add_argument("--no-plot", action="store_true", help="do not draw the demo scene")
     p.add_argument("--version", action="version", version=f"circledist {_version()}")
@@ -57,6 +58,9 @@ def main(argv: list[str] | None = None) -> int:
     if args.no_plot:
         plot = None
     try:
+        for path in (args.json if args.json != "-" else None, plot):
+            if path is not None:
+                check_output(path)
         if args.scene is None:
             scene = load_scene("circledist/scenes/demo.json", demo_scene_text())
         else:
@@ -80,10 +84,17 @@ def main(argv: list[str] | None = None) -> int:
         print(f"circledist: error: {e}", file=sys.stderr)
         return 2
     # Everything is computed: only now is anything written.
+    outputs = []
     if payload is not None and args.json != "-":
-        write_output(args.json, payload.encode("utf-8"))
+        outputs.append((args.json, payload.encode("utf-8")))
     if image is not None:
-        write_output(plot, image)
+        outputs.append((plot, image))
+    for path, data in outputs:
+        try:
+            write_output(path, data)
+        except OSError as e:
+            print(f"circledist: error: {path}: cannot write the output: {e.strerror}", file=sys.stderr)
+            return 2
     if args.json == "-":
         sys.stdout.write(payload)
     else:

@@ -13,7 +13,9 @@ Needs the `circledist[dask]` extra (dask[array]; distributed for clusters).
 
 import functools
 import math
+import numbers
 import operator
+import re
 
 try:
     import dask
@@ -159,6 +161,37 @@ def _block_shape(kind, fields):
     return getattr(_core, kind).from_arrays(fields, copy=False)
 
 
+# An element's index in circledist's messages: "center[2345]", "normal[1, 0]".
+_INDEX = re.compile(r"\b([A-Za-z_]\w*)\[(\d+(?:, \d+)*)\]")
+
+
+def _renumbered(error, index_of):
+    """The error with the first element index it names (within a chunk) made the index within
+    the whole batch: index_of(name, local index tuple) -> global index tuple, or None to keep it.
+    The same exception type and words as circledist's own message for the whole batch."""
+    message = str(error)
+    m = _INDEX.search(message)
+    if m is None:
+        return error
+    local = tuple(int(i) for i in m.group(2).split(", "))
+    found = index_of(m.group(1), local)
+    if found is None:
+        return error
+    if found == ():  # a single shape: circledist names the field alone
+        text = message[:m.start(2) - 1] + message[m.end(2) + 1:]
+    else:
+        text = message[:m.start(2)] + ", ".join(str(int(i)) for i in found) + message[m.end(2):]
+    return type(error)(text)
+
+
+def _checked_block_shape(kind, fields, index_of):
+    """_block_shape, its errors naming the element's index within the whole batch."""
+    try:
+        return _block_shape(kind, fields)
+    except (ValueError, TypeError, OverflowError) as error:
+        raise _renumbered(error, index_of) from None
+
+
 # A dummy element per field, to learn the answers' dtypes from circledist itself (its rule: the
 # precision keyword, else the fields' dtypes) instead of restating that rule here.
 _DUMMY = {"p": [1.0, 2.0, 3.0], "origin": [0.0, 0.0, 0.0], "direction": [1.0, 0.0, 0.0],
@@ -181,9 +214,12 @@ def _dummy(shape):
 
 def _indices(ndim_out, shapes, extra=()):
     """blockwise's arguments: each field's batch axes right-aligned with the output's, its
-    per-element axes named apart (single chunks, concatenated whole into the block)."""
+    per-element axes named apart (single chunks, concatenated whole into the block); then, per
+    output axis, the indices along it (each block gets its own: where the block starts, for
+    messages naming an element of the whole batch)."""
     out = tuple(f"b{k}" for k in range(ndim_out))
     args, layout = [], []
+    batch_shape = np.broadcast_shapes(*[s.batch_shape for s in shapes], *[np.shape(x) for x in extra])
     for s, shape in enumerate(shapes):
         for name, value in shape.fields.items():
             core = TRAILING_DIMS[name]
@@ -192,18 +228,68 @@ def _indices(ndim_out, shapes, extra=()):
             layout.append((s, name))
     for value in extra:
         args += [value, out[ndim_out - value.ndim:]]
+    for k in range(ndim_out):
+        args += [da.arange(batch_shape[k], chunks=-1 if batch_shape[k] <= 1 else "auto"), (out[k],)]
     return out, args, layout
 
 
-def _unpack(layout, kinds, blocks, ndim_out):
+def _field_batches(shapes, extra=()):
+    """The batch shapes of the whole batch, for the blocks' messages: (shape, field) -> the
+    field's; "d" -> within's d; "out" -> the answers'."""
+    batches = {(s, name): value.shape[:value.ndim - TRAILING_DIMS[name]]
+               for s, shape in enumerate(shapes) for name, value in shape.fields.items()}
+    if extra:
+        batches["d"] = extra[0].shape
+    batches["out"] = np.broadcast_shapes(*[s.batch_shape for s in shapes], *[x.shape for x in extra])
+    return batches
+
+
+def _shifted(whole, local, starts):
+    """Index `local` within a block of an array whose whole batch shape is `whole` (its axes the
+    output's last ones), as an index within the whole: each axis moved by where the block starts
+    on it, a broadcast axis (length 1) left at 0."""
+    if len(local) != len(whole):
+        return None
+    offset = starts[len(starts) - len(whole):] if whole else []
+    return tuple(i + (o if n > 1 else 0) for i, o, n in zip(local, offset, whole))
+
+
+def _unpack(layout, kinds, blocks, ndim_out, batches):
+    """The two shapes of a block (blocks: the fields, the extra arrays, then one array of indices
+    per output axis), the block's output shape, the extra arrays, and a function that renumbers
+    the call's errors; an error names its element's index within the whole batch."""
+    starts = [int(axis[0]) if len(axis) else 0 for axis in blocks[len(blocks) - ndim_out:]]
+    blocks = blocks[:len(blocks) - ndim_out]
     fields = [{}, {}]
     for (s, name), block in zip(layout, blocks):
         fields[s][name] = block
-    a, b = (_block_shape(kind, f) for kind, f in zip(kinds, fields))
+
+    def field_index(s):
+        def index_of(name, local):
+            # A field's own batch axes (right-aligned with the output's); the shape's otherwise.
+            whole = batches[(s, name)] if (s, name) in batches else np.broadcast_shapes(
+                *[b for key, b in batches.items() if isinstance(key, tuple) and key[0] == s])
+            return _shifted(whole, local, starts)
+        return index_of
+
+    def answer_index(name, local):
+        # within's d by its own shape; the answers (float32's range) by the output's.
+        return _shifted(batches.get(name, batches["out"]), local, starts)
+
+    a, b = (_checked_block_shape(kind, f, field_index(s)) for s, (kind, f) in enumerate(zip(kinds, fields)))
     # The block's shape: the fields' batch shapes broadcast, padded on the left to the output's
     # rank (cd returns the rank of its inputs, or a scalar for single shapes).
-    shape = np.broadcast_shapes(a.batch_shape, b.batch_shape, *[x.shape for x in blocks[len(layout):]])
-    return a, b, (1,) * (ndim_out - len(shape)) + shape
+    extra = blocks[len(layout):]
+    shape = np.broadcast_shapes(a.batch_shape, b.batch_shape, *[x.shape for x in extra])
+    return a, b, (1,) * (ndim_out - len(shape)) + shape, extra, answer_index
+
+
+def _answered(call, index_of, *args, **options):
+    """call(*args, **options), its errors naming the element within the whole batch."""
+    try:
+        return call(*args, **options)
+    except (ValueError, TypeError, OverflowError) as error:
+        raise _renumbered(error, index_of) from None
 
 
 def _prepare(a, b, extra=()):
@@ -217,9 +303,9 @@ def _options(precision, solver, workers):
     return {"precision": precision, "solver": solver, "workers": workers}
 
 
-def _distance_block(*blocks, layout, kinds, ndim, options):
-    a, b, shape = _unpack(layout, kinds, blocks, ndim)
-    return np.asarray(_core.distance(a, b, **options)).reshape(shape)
+def _distance_block(*blocks, layout, kinds, ndim, options, batches):
+    a, b, shape, _, index_of = _unpack(layout, kinds, blocks, ndim, batches)
+    return np.asarray(_answered(_core.distance, index_of, a, b, **options)).reshape(shape)
 
 
 def distance(a, b, *, precision=None, solver=None, workers=1):
@@ -229,12 +315,13 @@ def distance(a, b, *, precision=None, solver=None, workers=1):
     dtype = np.asarray(_core.distance(_dummy(a), _dummy(b), **options)).dtype
     out, args, layout = _indices(ndim, (a, b))
     return da.blockwise(_distance_block, out, *args, dtype=dtype, concatenate=True,
-                        layout=layout, kinds=(a.kind, b.kind), ndim=ndim, options=options)
+                        layout=layout, kinds=(a.kind, b.kind), ndim=ndim, options=options,
+                        batches=_field_batches((a, b)))
 
 
-def _within_block(*blocks, layout, kinds, ndim, options):
-    a, b, shape = _unpack(layout, kinds, blocks, ndim)
-    return np.asarray(_core.within(a, b, blocks[-1], **options)).reshape(shape)
+def _within_block(*blocks, layout, kinds, ndim, options, batches):
+    a, b, shape, (d,), index_of = _unpack(layout, kinds, blocks, ndim, batches)
+    return np.asarray(_answered(_core.within, index_of, a, b, d, **options)).reshape(shape)
 
 
 def within(a, b, d, *, precision=None, solver=None, workers=1):
@@ -243,16 +330,17 @@ def within(a, b, d, *, precision=None, solver=None, workers=1):
     options = _options(precision, solver, workers)
     out, args, layout = _indices(ndim, (a, b), (d,))
     return da.blockwise(_within_block, out, *args, dtype=bool, concatenate=True,
-                        layout=layout, kinds=(a.kind, b.kind), ndim=ndim, options=options)
+                        layout=layout, kinds=(a.kind, b.kind), ndim=ndim, options=options,
+                        batches=_field_batches((a, b), (d,)))
 
 
 _RESULT_FIELDS = (("distance", ()), ("point_a", (3,)), ("point_b", (3,)), ("param_a", (2,)),
                   ("param_b", (2,)), ("unique", ()))
 
 
-def _closest_block(*blocks, layout, kinds, ndim, options):
-    a, b, shape = _unpack(layout, kinds, blocks, ndim)
-    r = _core.closest_points(a, b, **options)
+def _closest_block(*blocks, layout, kinds, ndim, options, batches):
+    a, b, shape, _, index_of = _unpack(layout, kinds, blocks, ndim, batches)
+    r = _answered(_core.closest_points, index_of, a, b, **options)
     # A dict of arrays (it pickles and has a size for the scheduler), read by the getters below.
     return {name: np.asarray(getattr(r, name)).reshape(shape + trailing) for name, trailing in _RESULT_FIELDS}
 
@@ -282,7 +370,7 @@ def closest_points(a, b, *, precision=None, solver=None, workers=1):
     out, args, layout = _indices(ndim, (a, b))
     solved = da.blockwise(_closest_block, out, *args, dtype=object, meta=np.empty((0,) * ndim, object),
                           concatenate=True, layout=layout, kinds=(a.kind, b.kind), ndim=ndim,
-                          options=options)
+                          options=options, batches=_field_batches((a, b)))
     fields = {}
     for name, trailing in _RESULT_FIELDS:
         dtype = np.asarray(getattr(probe, name)).dtype
@@ -331,8 +419,29 @@ def _balls(kind, fields):
     return c, r
 
 
-def _extent(kind, fields):
+def _flat_index(name, local, *, start, batch, fields):
+    """The index within the whole batch of element `local` of a flat chunk starting at `start`:
+    circledist's index of the field `name` (its own batch shape, broadcast axes at 0) or of the
+    shape."""
+    if len(local) != 1:
+        return None
+    whole = tuple(fields.get(name, batch))
+    index = np.unravel_index(start + local[0], batch) if batch else ()
+    index = index[len(index) - len(whole):]
+    return tuple(int(i) if n > 1 else 0 for i, n in zip(index, whole))
+
+
+def _check_chunk(kind, fields, index_of):
+    """A flat chunk's fields checked as circledist checks a shape's: its errors (NaN, a zero
+    direction, a negative radius) name the element within the whole batch, before any tiling
+    arithmetic meets the value."""
+    _checked_block_shape(kind, fields, index_of)
+
+
+def _extent(kind, fields, index_of=None):
     """(lowest center, highest center, largest radius, largest |coordinate|) of a chunk."""
+    if index_of is not None:
+        _check_chunk(kind, fields, index_of)
     balls = _balls(kind, fields)
     if balls is None or len(balls[1]) == 0:
         return None
@@ -399,7 +508,9 @@ def _count_a(fields, *, kind, grid, chunk):
     return np.bincount(grid.owners(kind, fields, chunk), minlength=grid.size)
 
 
-def _count_b(fields, *, kind, grid):
+def _count_b(fields, *, kind, grid, index_of=None):
+    if index_of is not None:
+        _check_chunk(kind, fields, index_of)
     return np.bincount(grid.reach(kind, fields)[1], minlength=grid.size)
 
 
@@ -509,16 +620,21 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
         The tiles' sizes are counted (computed) when this is called; the pairs, when the
         results are computed.
     """
-    d = float(d)
-    if not math.isfinite(d) or d < 0:
-        raise ValueError(f"pairs_within: d must be a finite number >= 0, got {d}")
+    if tiles is not None:
+        if isinstance(tiles, bool) or not isinstance(tiles, numbers.Integral):
+            raise TypeError(f"pairs_within: tiles must be an integer >= 1, got {tiles!r}")
+        if tiles < 1:
+            raise ValueError(f"pairs_within: tiles must be an integer >= 1, got {int(tiles)}")
+        tiles = int(tiles)
     self_pairs = b is None
     a = _as_dask_shape(a)
     b = a if self_pairs else _as_dask_shape(b)
     options = _options(precision, solver, workers)
     kinds = (a.kind, b.kind)
-    # Raises TypeError for kinds without a query, as cd does, and gives the distances' dtype.
-    dtype = _core.pairs_within(_dummy(a), _dummy(b), 0.0, **options)[2].dtype
+    # circledist's own checks of d (its type and value: the same errors, word for word) and of
+    # the kinds (a TypeError for kinds without a query); it gives the distances' dtype.
+    dtype = _core.pairs_within(_dummy(a), _dummy(b), d, **options)[2].dtype
+    d = float(d)
     na, chunks_a, flat_a = _flat(a)
     nb, chunks_b, flat_b = _flat(b)
     token = dask.base.tokenize(a.fields, b.fields, d, tiles, options, self_pairs)
@@ -528,7 +644,11 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
     starts_b = np.r_[0, np.cumsum(chunks_b)].astype(np.int64)
     merged = []
     if na and nb:
-        extents = g.compute([g.add(("extent", c), functools.partial(_extent, a.kind), f)
+        def index_of(shape, starts, c):
+            return functools.partial(_flat_index, start=int(starts[c]), batch=tuple(shape.batch_shape),
+                                     fields={n: v.shape[:v.ndim - TRAILING_DIMS[n]] for n, v in shape.fields.items()})
+        extents = g.compute([g.add(("extent", c), functools.partial(_extent, a.kind, index_of=index_of(a, starts_a, c)),
+                                   f)
                              for c, f in enumerate(blocks_a)])
         extents = [x for x in extents if x is not None]
         if extents:
@@ -546,7 +666,8 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
         counts = g.compute(
             [g.add(("count-a", c), functools.partial(_count_a, kind=a.kind, grid=grid, chunk=c), f)
              for c, f in enumerate(blocks_a)]
-            + [g.add(("count-b", c), functools.partial(_count_b, kind=b.kind, grid=grid), f)
+            + [g.add(("count-b", c), functools.partial(_count_b, kind=b.kind, grid=grid,
+                                                       index_of=None if self_pairs else index_of(b, starts_b, c)), f)
                for c, f in enumerate(blocks_b)])
         count_a, count_b = np.array(counts[:len(blocks_a)]), np.array(counts[len(blocks_a):])
         split_a = [g.add(("split-a", c), functools.partial(_split, kind=a.kind, grid=grid, chunk=c,

@@ -30,11 +30,18 @@ import math
 import operator
 import os
 import re
-import tempfile
+import secrets
+import stat
 import zipfile
+import zlib
 from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any, Iterable, Mapping, Optional
+
+try:
+    import lzma
+except ImportError:  # a Python built without it: zipfile cannot inflate lzma either
+    lzma = None
 
 import numpy as np
 
@@ -73,6 +80,10 @@ _REFERENCE = re.compile(r"^([^\[\]/]+)(?:\[(0|[1-9][0-9]*)\])?$")
 _NPZ_TOP = ("format", "version", "description", "shapes", "queries")
 
 
+# What str.splitlines breaks a line at.
+_LINE_BREAKS = re.compile("[\n\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]")
+
+
 class SceneFileError(ValueError):
     """A bad scene file: its one-line message names the file, where in it (a JSON path such as
     ``$.shapes[3].radius``, or an ``.npz`` array and index), and what was expected.
@@ -101,7 +112,8 @@ class SceneFileError(ValueError):
     """
 
     def __init__(self, message: str):
-        super().__init__(message)
+        # One line whatever the file holds: a line break in a name, a key or the path is escaped.
+        super().__init__(_LINE_BREAKS.sub(lambda m: repr(m.group())[1:-1], message))
 
 
 def schema_text() -> str:
@@ -234,6 +246,75 @@ class SceneFile:
 
 def _error(path: str, where: str, message: str) -> SceneFileError:
     return SceneFileError(f"{path}: {where}: {message}")
+
+
+def _text(value: str, file: str, where: str) -> str:
+    """A string of the file that will be printed or written (a name, the description): refused
+    if it holds a lone surrogate (JSON's "\\ud800", or such a code point in a NumPy string),
+    which is no character and which no UTF-8 output can hold."""
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError as e:
+        raise _error(file, where, f"expected text, got a lone surrogate (U+{ord(value[e.start]):04X}) at "
+                                  f"character {e.start}") from None
+    return value
+
+
+def _check_texts(values: list, file: str, where) -> None:
+    """_text on each of many strings: one encoding of them all, each one's only on failure."""
+    try:
+        "".join(values).encode("utf-8")
+    except UnicodeEncodeError:
+        for i, value in enumerate(values):
+            _text(value, file, where(i))
+
+
+def _memory_budget() -> int:
+    """The bytes a scene may take: the machine's physical memory, or the process's address space
+    limit where that is lower."""
+    budget = 1 << 62
+    try:
+        budget = os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+    except (AttributeError, ValueError, OSError):
+        pass
+    try:
+        import resource
+
+        soft = resource.getrlimit(resource.RLIMIT_AS)[0]
+        if soft != resource.RLIM_INFINITY:
+            budget = min(budget, soft)
+    except (ImportError, AttributeError, ValueError, OSError):
+        pass
+    return budget
+
+
+def _gigabytes(size: int) -> str:
+    return f"{size / 2**30:.3g} GiB"
+
+
+# The memory a shape of a scene takes, in bytes, read and answered by the command line: the peak
+# of `python -m circledist` on a batch of 10^6 and 3 * 10^6 points or circles and a nearest query
+# is 715 to 745 bytes a shape (Bezier curves of 8 points: 840 to 880), mostly its name as a Python
+# string, the Scene's index and the reader's columns. The lowest (points) is the estimate: a file
+# it refuses could not be read.
+SHAPE_BYTES = 700
+
+
+def _check_shape_count(total: int, count: Optional[int], file: str, where: str) -> None:
+    """Refuses a file whose shapes (total so far, a batch's count included) would take more than
+    the memory there is, before any array or name of them is made."""
+    need = total * SHAPE_BYTES
+    budget = _memory_budget()
+    if need > budget:
+        raise _error(file, where, f"a count of {count} makes a scene of {total} shapes, which needs about "
+                                  f"{_gigabytes(need)}, more than the {_gigabytes(budget)} of memory there is")
+
+
+def _check_bytes(size: int, file: str, where: str, what: str) -> None:
+    budget = _memory_budget()
+    if size > budget:
+        raise _error(file, where, f"{what} takes {_gigabytes(size)}, more than the {_gigabytes(budget)} of "
+                                  f"memory there is")
 
 
 def _finite_array(value: Any, file: str, where: str) -> np.ndarray:
@@ -438,6 +519,8 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
     out = []
     for i, spec in enumerate(specs):
         base = f"{prefix}$.queries[{i}]"
+        if "name" in spec:
+            _text(spec["name"], file, member(base, "name"))
 
         def fail(key, message):
             return _error(file, member(base, key) if key else base, message)
@@ -564,11 +647,39 @@ def _parse_json(text: str, file: str) -> Any:
         raise SceneFileError(f"{file}: not valid JSON: {e}") from None
 
 
+# Deeper than any valid scene nests ($.shapes[i].control_points[j][k] is five levels): reported as
+# such where a recursion over the document meets its depth.
+_MAX_DEPTH = 32
+
+
+def _nested_too_deeply(data: Any, file: str, prefix: str) -> SceneFileError:
+    """The error for a document nested deeper than Python's recursion reaches: the path where it
+    passes _MAX_DEPTH levels (found without recursion)."""
+    stack = [(data, prefix, 0)]
+    while stack:
+        value, path, depth = stack.pop()
+        if depth > _MAX_DEPTH:
+            shown_path = path if len(path) <= 120 else path[:117] + "..."
+            return _error(file, shown_path, f"expected a scene, got values nested more than {_MAX_DEPTH} deep")
+        if isinstance(value, dict):
+            stack.extend((v, member(path, k), depth + 1) for k, v in reversed(list(value.items())))
+        elif isinstance(value, list):
+            stack.extend((v, f"{path}[{i}]", depth + 1) for i, v in reversed(list(enumerate(value))))
+    return _error(file, prefix, "expected a scene, got values nested too deeply")
+
+
 def scene_from_json(data: Any, file: str) -> SceneFile:
     """Validates parsed JSON (schema, then what a schema cannot say) into a SceneFile."""
     if not isinstance(data, dict):
         raise _error(file, "$", f"expected an object with \"format\": \"{FORMAT}\", \"version\" and \"shapes\", "
                                 f"got {shown(data)}")
+    try:
+        return _scene_from_json(data, file)
+    except RecursionError:  # nesting that only a recursion (the validator's, a message's) meets
+        raise _nested_too_deeply(data, file, "$") from None
+
+
+def _scene_from_json(data: dict, file: str) -> SceneFile:
     _check_format(data, file)
     error = _validator().first_error(data)
     if error:
@@ -583,6 +694,13 @@ def scene_from_json(data: Any, file: str) -> SceneFile:
     for i, s in enumerate(shapes):
         _check_kind_version(s["kind"], data["version"], file, f"$.shapes[{i}].kind (shape {s['name']!r})")
     _check_names((s["name"] for s in shapes), file, lambda i: f"$.shapes[{i}].name")
+    _check_texts([s["name"] for s in shapes], file, lambda i: f"$.shapes[{i}].name")
+    _text(data.get("description", ""), file, "$.description")
+    total = 0
+    for i, s in enumerate(shapes):
+        total += int(s.get("count", 1))
+        if "count" in s:
+            _check_shape_count(total, int(s["count"]), file, f"$.shapes[{i}].count (shape {s['name']!r})")
     entries = _entries_from_json(shapes, file)
     queries = _check_queries(data.get("queries", []), entries, file)
     return SceneFile(file, data.get("description", ""), entries, queries)
@@ -591,32 +709,40 @@ def scene_from_json(data: Any, file: str) -> SceneFile:
 # ------------------------------------------------------------------------------------------
 # npz
 # ------------------------------------------------------------------------------------------
-def _npz_string(arrays, name: str, file: str, required: bool = True) -> Optional[str]:
+# Strings that must equal one of a few words (the format, a kind): a longer string dtype is refused
+# from the header, before its data is read.
+_WORD_CHARS = 64
+
+
+def _npz_string(arrays, name: str, file: str, required: bool = True, word: bool = False) -> Optional[str]:
     if name not in arrays:
         if required:
             raise _error(file, f"array {name!r}", "missing (a 0-d string array)")
         return None
-    a = arrays[name]
-    if a.dtype.kind != "U" or a.ndim != 0:
-        raise _error(file, f"array {name!r}", f"expected a 0-d string array, got dtype {a.dtype} shape {a.shape}")
-    return str(a[()])
+    a = arrays.header(name)
+    if a.dtype.kind != "U" or a.ndim != 0 or (word and a.dtype.itemsize > 4 * _WORD_CHARS):
+        raise _error(file, f"array {name!r}", f"expected a 0-d string array{' of a word' if word else ''}, "
+                                              f"got dtype {a.dtype} shape {a.shape}")
+    return _text(str(arrays[name][()]), file, f"array {name!r}")
 
 
 def _npz_integer(arrays, name: str, file: str) -> Optional[int]:
     if name not in arrays:
         return None
-    a = arrays[name]
+    a = arrays.header(name)
     if a.dtype.kind not in "iu" or a.ndim != 0:
         raise _error(file, f"array {name!r}", f"expected a 0-d integer array, got dtype {a.dtype} shape {a.shape}")
-    return int(a[()])
+    return int(arrays[name][()])
 
 
 def _npz_index(where: str, at) -> str:
     return where + (" at index " + ", ".join(str(int(i)) for i in at) if len(at) else "")
 
 
-def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where: str) -> np.ndarray:
+def _npz_field(arrays, key: str, role: str, count: Optional[int], file: str, where: str) -> np.ndarray:
+    """A field's array: its dtype and shape checked from the header, then its values."""
     trailing = ROLE_TRAILING_DIMS[role]
+    a = arrays.header(key)
     if a.dtype.kind not in "fiu":
         raise _error(file, where, f"expected an array of real numbers (float or integer), got dtype {a.dtype}")
     ndims = (trailing,) if count is None else (trailing, trailing + 1)
@@ -631,7 +757,9 @@ def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where:
         wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()", "angle": "()",
                   "control_points": f"(m, 3), m from 2 to {MAX_CONTROL_POINTS}"}[role]
         raise _error(file, where, f"expected shape {rows}{wanted}, got {a.shape}")
-    array = a.astype(np.float64, copy=False)
+    if count is not None and a.ndim == trailing + 1 and a.shape[0] not in (count, 1):
+        raise _error(file, where, f"expected {count} rows (the batch's count) or 1, got {a.shape[0]}")
+    array = arrays[key].astype(np.float64, copy=False)
     bad = ~np.isfinite(array)
     if role == "length":
         bad |= array < 0
@@ -649,25 +777,26 @@ def _npz_field(a: np.ndarray, role: str, count: Optional[int], file: str, where:
 def scene_from_npz(path: str, file: Optional[str] = None) -> SceneFile:
     """Validates a .npz scene; `file` is the name messages give (default: path)."""
     file = path if file is None else file
+    with _open_regular(path, file) as handle:
+        return _scene_from_npz_handle(handle, file)
+
+
+def _scene_from_npz_handle(handle, file: str) -> SceneFile:
+    """scene_from_npz on an open binary file."""
+    if handle.read(len(np.lib.format.MAGIC_PREFIX)) == np.lib.format.MAGIC_PREFIX:
+        raise SceneFileError(f"{file}: not a NumPy .npz file: it holds one array (.npy), not named arrays")
+    handle.seek(0)
     try:
-        handle = open(path, "rb")  # ours to close: np.load leaks the file it opens when it is no zip
-    except OSError as e:
-        raise SceneFileError(f"{file}: cannot read the scene file: {e.strerror}") from None
-    with handle:
-        try:
-            npz = np.load(handle, allow_pickle=False)
-        except (ValueError, OSError, zipfile.BadZipFile, EOFError) as e:
-            raise SceneFileError(f"{file}: not a NumPy .npz file: {e}") from None
-        if not isinstance(npz, np.lib.npyio.NpzFile):
-            raise SceneFileError(f"{file}: not a NumPy .npz file: it holds one array, not named arrays")
-        with npz:
-            return _scene_from_npz(npz, file)
+        archive = zipfile.ZipFile(handle)
+    except _ZIP_ERRORS as e:
+        raise SceneFileError(f"{file}: not a NumPy .npz file: {e}") from None
+    with archive:
+        return _scene_from_npz(_NpzArrays(archive, file), file)
 
 
-def _scene_from_npz(npz, file: str) -> SceneFile:
-    names = set(npz.files)
-    arrays = _LazyArrays(npz, file)
-    fmt = _npz_string(arrays, "format", file)
+def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
+    names = set(arrays.names)
+    fmt = _npz_string(arrays, "format", file, word=True)
     if fmt != FORMAT:
         raise _error(file, "array 'format'", f"expected \"{FORMAT}\", got {shown(fmt)}")
     version = _npz_integer(arrays, "version", file)
@@ -681,11 +810,12 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
     description = _npz_string(arrays, "description", file, required=False) or ""
     if "shapes" not in names:
         raise _error(file, "array 'shapes'", "missing (a 1-d string array of the shapes' names, in order)")
-    order = arrays["shapes"]
+    order = arrays.header("shapes")
     if order.dtype.kind != "U" or order.ndim != 1 or len(order) == 0:
         raise _error(file, "array 'shapes'", f"expected a non-empty 1-d string array of names, "
                                              f"got dtype {order.dtype} shape {order.shape}")
-    order = [str(n) for n in order]
+    order = arrays["shapes"].tolist()
+    _check_texts(order, file, lambda i: f"array 'shapes' at index {i}")
     name_error = _validator().first_error
     for i, n in enumerate(order):
         if name_error(n, {"$ref": "#/$defs/name"}):
@@ -694,14 +824,18 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
     _check_names(order, file, lambda i: f"array 'shapes' at index {i}")
     known = set(_NPZ_TOP)
     entries = []
+    shapes_so_far = 0
     for name in order:
-        kind = _npz_string(arrays, f"{name}/kind", file)
+        kind = _npz_string(arrays, f"{name}/kind", file, word=True)
         if kind not in KINDS:
-            raise _error(file, f"array '{name}/kind'", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
-        _check_kind_version(kind, version, file, f"array '{name}/kind'")
+            raise _error(file, f"array {name + '/kind'!r}",
+                         f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
+        _check_kind_version(kind, version, file, f"array {name + '/kind'!r}")
         count = _npz_integer(arrays, f"{name}/count", file)
         if count is not None and count < 1:
-            raise _error(file, f"array '{name}/count'", f"expected an integer >= 1, got {count}")
+            raise _error(file, f"array {name + '/count'!r}", f"expected an integer >= 1, got {count}")
+        shapes_so_far += 1 if count is None else count
+        _check_shape_count(shapes_so_far, count, file, f"array {name + '/count'!r}")
         roles = _roles(kind)
         known |= {f"{name}/kind", f"{name}/count"} | {f"{name}/{f}" for f in roles}
         fields = {}
@@ -712,12 +846,12 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
                     raise _error(file, f"array {key!r}", f"missing (a {kind} needs {', '.join(KINDS[kind][1])})")
                 fields[f] = np.zeros(()) if count is None else np.zeros(count)
                 continue
-            fields[f] = _npz_field(arrays[key], role, count, file, f"array {key!r}")
+            fields[f] = _npz_field(arrays, key, role, count, file, f"array {key!r}")
         entry = ShapeEntry(name, kind, count, fields)
         try:
             entry.shape()
         except ValueError as e:
-            raise _error(file, f"arrays '{name}/...'", str(e)) from None
+            raise _error(file, f"arrays {name + '/...'!r}", str(e)) from None
         entries.append(entry)
     for key in sorted(names - known):
         raise _error(file, f"array {key!r}", "unknown: not a field of a shape listed in 'shapes' nor one of "
@@ -730,35 +864,152 @@ def _scene_from_npz(npz, file: str) -> SceneFile:
             specs = json.loads(text, parse_constant=_not_json_constant)
         except ValueError as e:
             raise _error(file, where, f"expected the JSON text of a list of queries: {e}") from None
-        error = _validator().first_error({"queries": specs}, {"properties": schema()["properties"]})
-        if error:
-            raise _error(file, f"{where}: {error[0]}", error[1])
-        queries = _check_queries(specs, entries, file, prefix=f"{where}: ")
+        except RecursionError:
+            raise _error(file, where, "expected the JSON text of a list of queries, got values nested "
+                                      "too deeply") from None
+        try:
+            error = _validator().first_error({"queries": specs}, {"properties": schema()["properties"]})
+            if error:
+                raise _error(file, f"{where}: {error[0]}", error[1])
+            queries = _check_queries(specs, entries, file, prefix=f"{where}: ")
+        except RecursionError:
+            raise _nested_too_deeply(specs, file, f"{where}: $.queries") from None
     return SceneFile(file, description, entries, queries)
 
 
-class _LazyArrays:
-    """npz members read on first use, errors (say a pickled object array) reported by name."""
+# What reading a damaged zip may raise: zipfile's own errors, the inflaters' (zlib.error for a
+# corrupt deflate stream; lzma's and bz2's are an LZMAError and an OSError), numpy's for a bad header.
+_ZIP_ERRORS = (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError, NotImplementedError, zlib.error) \
+    + ((lzma.LZMAError,) if lzma is not None else ())
+_NPY_HEADERS = {(1, 0): np.lib.format.read_array_header_1_0, (2, 0): np.lib.format.read_array_header_2_0}
+# The compression methods zipfile inflates here (bzip2 and lzma only where Python has the module).
+_ZIP_METHODS = {zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED} \
+    | ({zipfile.ZIP_BZIP2} if getattr(zipfile, "bz2", None) is not None else set()) \
+    | ({zipfile.ZIP_LZMA} if getattr(zipfile, "lzma", None) is not None else set())
 
-    def __init__(self, npz, file):
-        self.npz, self.file, self.cache = npz, file, {}
-        self.names = frozenset(npz.files)  # npz.files is a list: a lookup per field would be O(n)
+
+@dataclass(frozen=True)
+class _Header:
+    """An array's dtype and shape as its .npy header gives them: what the checks of an array's
+    role read (dtype, shape, ndim, len), before its data is."""
+
+    dtype: np.dtype
+    shape: tuple
+
+    @property
+    def ndim(self) -> int:
+        return len(self.shape)
+
+    def __len__(self) -> int:
+        return self.shape[0]
+
+
+class _NpzArrays:
+    """The arrays of an .npz (a zip of .npy members), each read on first use, its header first.
+
+    The header (numpy.lib.format) gives the dtype and shape without inflating the data: `header`
+    returns them for the reader to check against what the array's role allows, and their size
+    (shape times item size) must match the
+    member's uncompressed size, so that a member is only inflated once its shape is known to be
+    one the scene can hold and the data to be what the header says (a small zip that would
+    inflate to gigabytes, or a header claiming 10^12 elements, is refused before any of it is
+    read)."""
+
+    def __init__(self, archive: zipfile.ZipFile, file: str):
+        self.archive, self.file, self.cache, self.headers = archive, file, {}, {}
+        self.members = {}
+        for info in archive.infolist():
+            if info.is_dir():
+                continue
+            where = f"member {shown(info.filename)}"
+            if info.compress_type not in _ZIP_METHODS:
+                raise _error(file, where, f"compressed with zip method {info.compress_type}, which this reader "
+                                          f"cannot inflate (numpy.savez stores, numpy.savez_compressed deflates)")
+            # An array's name: the member's without ".npy" (numpy.load's names; a member of another
+            # name is read, as numpy.load reads it, under its own and must hold a .npy too).
+            name = info.filename[:-4] if info.filename.endswith(".npy") else info.filename
+            self.members[name] = info
+        self.names = frozenset(self.members)
 
     def __contains__(self, key):
         return key in self.names
 
+    def _fail(self, key, message):
+        return _error(self.file, f"array {key!r}", message)
+
+    def header(self, key) -> "_Header":
+        """The array's dtype and shape, checked against the member's size."""
+        if key in self.headers:
+            return self.headers[key]
+        info = self.members[key]
+        try:
+            with self.archive.open(info) as stream:
+                magic = stream.read(len(np.lib.format.MAGIC_PREFIX) + 2)
+                if len(magic) < 8 or not magic.startswith(np.lib.format.MAGIC_PREFIX):
+                    raise self._fail(key, "expected a plain NumPy array (.npy): the member does not start with "
+                                          "NumPy's magic string")
+                version = (magic[-2], magic[-1])
+                if version not in _NPY_HEADERS:
+                    raise self._fail(key, f"expected a .npy header of version 1.0 or 2.0, got {version}")
+                shape, fortran, dtype = _NPY_HEADERS[version](stream)
+                offset = stream.tell()
+        except SceneFileError:
+            raise
+        except _ZIP_ERRORS as e:
+            raise self._fail(key, f"expected a plain NumPy array (.npy): {e}") from None
+        if dtype.hasobject:
+            raise self._fail(key, f"expected a plain NumPy array: dtype {dtype} holds Python objects, "
+                                  f"which are not read")
+        size = math.prod(shape) * dtype.itemsize
+        if size != info.file_size - offset:
+            raise self._fail(key, f"its header says shape {shape} of dtype {dtype} ({size} bytes), the member "
+                                  f"holds {info.file_size - offset} bytes of data")
+        _check_bytes(size, self.file, f"array {key!r}", f"an array of shape {shape}, dtype {dtype}")
+        self.headers[key] = header = _Header(dtype, tuple(shape))
+        return header
+
     def __getitem__(self, key):
         if key not in self.cache:
+            self.header(key)
             try:
-                self.cache[key] = self.npz[key]
-            except (ValueError, OSError, zipfile.BadZipFile, EOFError) as e:
-                raise _error(self.file, f"array {key!r}", f"expected a plain NumPy array: {e}") from None
+                with self.archive.open(self.members[key]) as stream:
+                    self.cache[key] = np.lib.format.read_array(stream, allow_pickle=False)
+            except _ZIP_ERRORS as e:
+                raise self._fail(key, f"expected a plain NumPy array: {e}") from None
         return self.cache[key]
 
 
 # ------------------------------------------------------------------------------------------
 # reading and writing
 # ------------------------------------------------------------------------------------------
+_FILE_TYPES = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+               (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+               (stat.S_ISSOCK, "a socket"))
+
+
+def _open_regular(path, file: str):
+    """The file at path opened for binary reading, refused unless it is a regular file: a FIFO
+    would block the reader until something writes to it, a device such as /dev/zero would be
+    read until memory runs out. The file is opened without blocking (a FIFO's open waits for a
+    writer otherwise) and its type read from the open descriptor (no window between a check
+    and the open)."""
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+    except OSError as e:
+        raise SceneFileError(f"{file}: cannot read the scene file: {e.strerror}") from None
+    try:
+        mode = os.fstat(fd).st_mode
+        if not stat.S_ISREG(mode):
+            what = next((word for test, word in _FILE_TYPES if test(mode)), "not a regular file")
+            raise SceneFileError(f"{file}: cannot read the scene file: it is {what}, not a regular file")
+        if hasattr(os, "set_blocking"):
+            os.set_blocking(fd, True)
+        return os.fdopen(fd, "rb")
+    except BaseException:
+        os.close(fd)
+        raise
+
+
 def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
     """Reads and validates a scene file, JSON or ``.npz``.
 
@@ -795,18 +1046,17 @@ def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
     Circle(center=array([0., 0., 0.]), normal=array([0., 0., 1.]), radius=array(1.))
     """
     if text is None:
-        try:
-            with open(path, "rb") as f:
+        with _open_regular(path, path) as f:
+            try:
                 head = f.read(4)
-        except OSError as e:
-            raise SceneFileError(f"{path}: cannot read the scene file: {e.strerror}") from None
-        if head.startswith(b"PK") or str(path).endswith(".npz"):
-            return scene_from_npz(path)
+                if head.startswith(b"PK") or str(path).endswith(".npz"):
+                    f.seek(0)
+                    return _scene_from_npz_handle(f, path)
+                data = head + f.read()
+            except OSError as e:
+                raise SceneFileError(f"{path}: cannot read the scene file: {e.strerror}") from None
         try:
-            with open(path, encoding="utf-8") as f:
-                text = f.read()
-        except OSError as e:
-            raise SceneFileError(f"{path}: cannot read the scene file: {e.strerror}") from None
+            text = data.decode("utf-8")
         except UnicodeDecodeError as e:
             raise SceneFileError(f"{path}: not a UTF-8 text file (byte {e.start}: {e.reason})") from None
     with _collector_paused():
@@ -1041,11 +1291,31 @@ def _json_text(data: dict) -> str:
     return "{\n" + ",\n".join(lines) + "\n}\n"
 
 
+def _temporary_beside(directory: str) -> tuple:
+    """(descriptor, path) of a new file in directory, made as open() makes a file: the kernel
+    applies the umask to mode 0o666 (tempfile.mkstemp's files are 0o600 whatever the umask)."""
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
+    while True:
+        tmp = os.path.join(directory, f".circledist-{secrets.token_hex(8)}")
+        try:
+            return os.open(tmp, flags, 0o666), tmp
+        except FileExistsError:
+            continue
+
+
 def _write_atomically(path: str, write, check=None) -> None:
+    """Writes a whole file or nothing: a temporary file beside it, renamed into place. A new file
+    gets the mode open() gives (0o666 less the umask); a file replaced keeps its mode."""
     directory = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".circledist-", dir=directory)
+    try:
+        mode = stat.S_IMODE(os.stat(path).st_mode)
+    except OSError:
+        mode = None
+    fd, tmp = _temporary_beside(directory)
     try:
         with os.fdopen(fd, "wb") as f:
+            if mode is not None and hasattr(os, "fchmod"):
+                os.fchmod(f.fileno(), mode)
             write(f)
         if check is not None:
             check(tmp)
