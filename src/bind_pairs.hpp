@@ -14,6 +14,7 @@
 #include <cmath>
 #include <exception>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -456,7 +457,35 @@ std::vector<size_t> starts_of(const PairList& pairs, Index n, int workers) {
   return start;
 }
 
+// nearest's answers for n queries, (indices, distances) of shape (n, k) each, made before any work:
+// a k whose answers memory cannot hold (the size beyond 64 bits, or the allocation refused) is a
+// MemoryError naming k and the size at once (n * k wrapped around 64 bits was a small buffer the
+// answers overran). The columns past len(b) are -1 and inf, which no query computes: k itself
+// costs only this memory.
+template <class Real> std::pair<py::array_t<Index>, py::array_t<Real>> nearest_answers(Index n, Index k, Index nb) {
+  constexpr Index per_entry = Index(sizeof(Index) + sizeof(Real));
+  const auto refuse = [&] {
+    std::ostringstream text;
+    text.precision(3);
+    text << "nearest: k=" << k << " asks for answers of shape (" << n << ", " << k << "), more than memory can hold ("
+         << double(std::max<Index>(n, 1)) * double(k) * per_entry << " bytes" << (n == 0 ? " per query" : "")
+         << "; the columns past len(b) = " << nb << " are only -1 and inf)";
+    PyErr_SetString(PyExc_MemoryError, text.str().c_str());
+    throw py::error_already_set();
+  };
+  // NumPy refuses a shape whose size in bytes, zero rows aside, passes 2**63 - 1: (0, k) too.
+  if (k > std::numeric_limits<Index>::max() / per_entry / std::max<Index>(n, 1)) refuse();
+  try {
+    return {py::array_t<Index>({n, k}), py::array_t<Real>({n, k})};
+  } catch (py::error_already_set& error) {
+    if (!error.matches(PyExc_MemoryError)) throw;
+  }
+  refuse();
+  return {};
+}
+
 template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index k, const Choice& c) {
+  auto [index_out, distance_out] = nearest_answers<Real>(flat_size(a), k, flat_size(b));
   const Culling culling(a, b, c.workers);
   const Volumes& va = culling.va;
   const std::vector<BroadIndex>& order = culling.order;
@@ -511,8 +540,8 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   progress.finish();
   const std::vector<size_t> second_start = starts_of(second, n, c.workers);
   // 3. The k smallest (distance, index) of each query's candidates; -1 and inf past the end of b.
-  std::vector<Index> indices(static_cast<size_t>(n * k), -1);
-  std::vector<Real> distances(static_cast<size_t>(n * k), std::numeric_limits<Real>::infinity());
+  Index* indices = index_out.mutable_data();
+  Real* distances = distance_out.mutable_data();
   {
     py::gil_scoped_release release;
     run_in_chunks(n, c.workers, [&](Index begin, Index end) {
@@ -525,14 +554,18 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
           found.emplace_back(second_distances[p], second[p].second);
         const Index take = std::min<Index>(k, Index(found.size()));
         std::partial_sort(found.begin(), found.begin() + take, found.end());
+        Index* row_indices = indices + i * k;
+        Real* row_distances = distances + i * k;
         for (Index r = 0; r < take; ++r) {
-          distances[size_t(i * k + r)] = found[size_t(r)].first;
-          indices[size_t(i * k + r)] = found[size_t(r)].second;
+          row_distances[r] = found[size_t(r)].first;
+          row_indices[r] = found[size_t(r)].second;
         }
+        std::fill(row_indices + take, row_indices + k, Index(-1));
+        std::fill(row_distances + take, row_distances + k, std::numeric_limits<Real>::infinity());
       }
     }, no_interrupt);
   }
-  return py::make_tuple(to_array(indices, {n, k}), to_array(distances, {n, k}));
+  return py::make_tuple(std::move(index_out), std::move(distance_out));
 }
 
 // Runs body.template operator()<Real>() with Real the answers' type of the choice's precision.
