@@ -326,28 +326,6 @@ template <class Real> struct Evaluator {
   }
 };
 
-// A distance limit: a finite real number >= 0 (bool and strings refused), named in messages.
-double limit_of(const char* owner, py::handle d) {
-  const py::module_ numbers = py::module_::import("numbers");
-  if (PyBool_Check(d.ptr()) || py::isinstance(d, py::module_::import("numpy").attr("bool_")) ||
-      !py::isinstance(d, numbers.attr("Real")))
-    throw py::type_error(std::string(owner) + ": d must be a real number >= 0, got " +
-                         py::repr(d).cast<std::string>());
-  const double value = d.cast<double>();
-  if (!(value >= 0) || !std::isfinite(value))
-    throw py::value_error(std::string(owner) + ": d must be a finite number >= 0, got " +
-                          py::repr(d).cast<std::string>());
-  return value;
-}
-
-Index count_of(const char* owner, py::handle k) {
-  if (PyBool_Check(k.ptr()) || !py::isinstance(k, py::module_::import("numbers").attr("Integral")))
-    throw py::type_error(std::string(owner) + ": k must be an integer >= 1, got " + py::repr(k).cast<std::string>());
-  const long long value = k.cast<long long>();
-  if (value < 1) throw py::value_error(std::string(owner) + ": k must be an integer >= 1, got " + std::to_string(value));
-  return Index(value);
-}
-
 // The kernel table must have the pair, whether or not any candidate reaches it: the answer may
 // not depend on where the shapes lie.
 void check_pair(const char* owner, const Shape& a, const Shape& b, const Choice& c) {
@@ -576,7 +554,7 @@ template <class Body> py::tuple with_answer_type(const Choice& c, Body&& body) {
 }
 
 py::tuple run_pairs_within(py::handle a, py::handle b, py::handle d, const py::object& precision,
-                           const py::object& solver, int workers, const py::object& progress) {
+                           const py::object& solver, py::handle workers, const py::object& progress) {
   const Side x(a, "pairs_within", "a");
   const std::optional<Side> y = b.is_none() ? std::nullopt : std::optional<Side>(Side(b, "pairs_within", "b"));
   const Shape& other = y ? *y->shape : *x.shape;
@@ -591,7 +569,7 @@ py::tuple run_pairs_within(py::handle a, py::handle b, py::handle d, const py::o
 }
 
 py::tuple run_nearest(py::handle a, py::handle b, py::handle k, const py::object& precision, const py::object& solver,
-                      int workers, const py::object& progress) {
+                      py::handle workers, const py::object& progress) {
   const Side x(a, "nearest", "a"), y(b, "nearest", "b");
   const Index count = count_of("nearest", k);
   const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
@@ -613,8 +591,8 @@ struct SceneBroadphase {
   // Adds the items numbered on from len(self): parts are (shape, items, group, first row), element
   // k of the shape (flat) being item items[k], at row first + k of its group; the parts' items
   // together are the new numbers, each once.
-  void add(const py::list& parts, int workers_given) {
-    const int workers = workers_of(workers_given);
+  void add(const py::list& parts, Count workers_given) {
+    const int workers = workers_of(workers_given, "Scene.pairs_within");
     struct Part {
       const Shape* shape;
       py::array_t<Index, py::array::c_style | py::array::forcecast> items;
@@ -710,8 +688,8 @@ struct SceneBroadphase {
   // every step on the workers but the list's making (Python objects: the GIL's, here in C, a
   // fraction of what a Python loop over the pairs took). `groups`: the scene's groups as whole
   // batches, in the numbering add() was given; `names`: the items' names.
-  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, int workers_given) {
-    const int workers = workers_of(workers_given);
+  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, Count workers_given) {
+    const int workers = workers_of(workers_given, "Scene.pairs_within");
     if (Index(names.size()) != tree.size()) throw py::value_error("_Broadphase.pairs_within: one name per item");
     std::vector<const Shape*> shapes;
     for (py::handle g : groups) shapes.push_back(&constructed(g));
@@ -776,7 +754,7 @@ struct SceneBroadphase {
           }
         }, no_interrupt);
       }
-      const Choice choice(py::none(), py::none(), A, B, workers, py::none());
+      const Choice choice(py::none(), py::none(), A, B, py::int_(workers), py::none());
       Evaluator<bool>{A, B, choice, &limit_d}.run(rows, progress, 0, [&](Index k, bool within) {
         hit[size_t(placed[size_t(first + k)])] = within;
       });
@@ -802,13 +780,13 @@ struct SceneBroadphase {
 inline void bind_pairs(py::module_& m) {
   m.def(
       "pairs_within",
-      [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, int workers,
+      [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, Count workers,
          ProgressLike progress) { return PairsResult(run_pairs_within(a, b, d, precision, solver, workers, progress)); },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
       py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kPairsWithin());
   m.def(
       "nearest",
-      [](ShapeLike a, ShapeLike b, Count k, PrecisionName precision, SolverName solver, int workers,
+      [](ShapeLike a, ShapeLike b, Count k, PrecisionName precision, SolverName solver, Count workers,
          ProgressLike progress) { return NearestResult(run_nearest(a, b, k, precision, solver, workers, progress)); },
       py::arg("a"), py::arg("b"), py::arg("k") = 1, py::kw_only(), py::arg("precision") = py::none(),
       py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kNearest());

@@ -512,9 +512,9 @@ solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, opti
     pairs give the same answer with every solver.
 workers : int, optional
     Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-    convention): a positive count, or -1 for every core; default 1. The answers are the same
-    bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-    (KeyboardInterrupt).
+    convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+    core; default 1. The answers are the same bits for any count, and stats() counts every
+    thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
 )";
 inline const char* const kProgressParameter = R"(progress : bool or callable, optional
     Keyword only. None or False (the default): no report. True: a progress bar on stderr
@@ -782,11 +782,15 @@ distances : numpy.ndarray, shape (len(a), k)
 Raises
 ------
 TypeError
-    When k is not an integer, a or b is not a shape or an array of points, there is no query
-    between their kinds, or `progress` is neither None, a bool nor a callable.
+    When k or `workers` is not an integer (a bool is not), a or b is not a shape or an array of
+    points, there is no query between their kinds, or `progress` is neither None, a bool nor a
+    callable.
 ValueError
-    When k < 1, for an unknown precision or solver, or a worker count that is neither positive
-    nor -1.
+    When k < 1 or k >= 2**63, for an unknown precision or solver, or a worker count that is
+    neither positive nor -1.
+MemoryError
+    When the answers, two arrays of shape (len(a), k), do not fit in memory (the columns past
+    len(b) are only -1 and inf: a k beyond len(b) costs their memory, nothing more).
 
 See Also
 --------

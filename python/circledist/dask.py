@@ -509,9 +509,9 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
         The tiles' sizes are counted (computed) when this is called; the pairs, when the
         results are computed.
     """
-    d = float(d)
-    if not math.isfinite(d) or d < 0:
-        raise ValueError(f"pairs_within: d must be a finite number >= 0, got {d}")
+    d = _core._distance_limit("pairs_within", d)
+    if tiles is not None and _core._integer_argument("pairs_within", "tiles", tiles, "None or an integer >= 1") < 1:
+        raise ValueError(f"pairs_within: tiles must be None or an integer >= 1, got {tiles}")
     self_pairs = b is None
     a = _as_dask_shape(a)
     b = a if self_pairs else _as_dask_shape(b)
