@@ -110,6 +110,35 @@ def test_only_real_scalars(value):
         cd.Circle([0, 0, 0], [0, 0, 1], value)
 
 
+ROLE_VALUES = {"vector": [1.0, 2.0, 3.0], "direction": [0.0, 0.0, 1.0], "length": 1.0, "angle": 1.0,
+               "control_points": [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.0]]}
+FIELDS = [(kind, i) for kind, fields in cd._core._shape_fields().items() for i in range(len(fields))]
+
+
+@pytest.mark.parametrize("copy", [True, False])
+@pytest.mark.parametrize("kind, field", FIELDS, ids=[f"{k}.{i}" for k, i in FIELDS])
+def test_a_field_too_large_to_copy_is_a_memory_error_naming_it(kind, field, copy):
+    """A valid batch whose contiguous float64 copy cannot be made (a broadcast view of 10**15
+    elements: petabytes, more than an address space holds, so nothing is allocated) is a
+    MemoryError naming the field and its size, not "must be a real number array"."""
+    fields = cd._core._shape_fields()[kind]
+    values = [ROLE_VALUES[role] for _, role in fields]
+    name = fields[field][0]
+    one = np.asarray(values[field], dtype=float)
+    values[field] = np.broadcast_to(one, (10**15,) + one.shape)
+    with pytest.raises(MemoryError, match=(rf"{kind}: {name} cannot be copied: out of memory "
+                                           rf"\(shape \(1000000000000000,.*\), [0-9.e+]+ bytes as a contiguous float64 array")):
+        getattr(cd, kind)(*values, copy=copy)
+
+
+def test_limits_and_sweeps_too_large_to_copy_are_a_memory_error():
+    huge = np.broadcast_to(np.float64(1.0), (10**15,))
+    with pytest.raises(MemoryError, match=r"within: d cannot be copied: out of memory \(shape \(1000000000000000,\)"):
+        cd.within(cd.Point([0, 0, 0]), cd.Point([0, 0, 1]), huge)
+    with pytest.raises(MemoryError, match=r"Point: sweep cannot be copied"):
+        cd.Point([0, 0, 0], sweep=huge)
+
+
 def test_real_objects_are_accepted():
     from fractions import Fraction
     assert cd.distance(cd.Point([Fraction(1, 2), 0, 0]), cd.Point([0, 0, 0])) == 0.5
