@@ -52,8 +52,9 @@ class Shape:
         Raises
         ------
         TypeError
-            For a single shape (batch shape ``()``), or an entry that is not an index (``None``, a
-            float).
+            For a single shape (batch shape ``()``), or an entry that is not an index (a float). ``None``
+            (``numpy.newaxis``) is not supported: indexing adds no batch axis (give the fields of
+            `to_arrays` new axes and rebuild the shape with `from_arrays`).
         IndexError
             For more indices than batch axes, or an index out of range.
         
