@@ -828,6 +828,8 @@ class ClosestPoints:
     param_a, param_b : numpy.ndarray, shape (..., 2)
         Their parameters: ``(t, 0)`` on points, lines, rays, segments and curves, ``(theta, 0)``
         on circles, ``(s, theta)`` on disks (angles in the shape's own frame about its normal).
+        Always in the shape's domain: t >= 0 on rays, t in [0, 1] on segments and curves, t in
+        [0, angle] on arcs, s in [0, radius] on disks and in [inner_radius, outer_radius] on annuli.
     unique : bool or numpy.ndarray
         False when another distinct pair is as close (a line on a circle's axis, concentric
         coplanar circles).
