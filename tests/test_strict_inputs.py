@@ -230,15 +230,43 @@ def test_integer_arguments_take_ints_and_numpy_integers(entry, value):
     call(value)
 
 
-@pytest.mark.parametrize("owner, call", [
-    ("pairs_within", lambda d: cd.pairs_within(_P, _RING, d)),
-    ("Scene.within", lambda d: _scene().within([0, 0, 0], d)),
-    ("Scene.pairs_within", lambda d: _scene().pairs_within(d)),
-], ids=["pairs_within", "Scene.within", "Scene.pairs_within"])
+DISTANCE_LIMITS = {
+    "pairs_within": lambda d: cd.pairs_within(_P, _RING, d),
+    "Scene.within": lambda d: _scene().within([0, 0, 0], d),
+    "Scene.pairs_within": lambda d: _scene().pairs_within(d),
+    "dask pairs_within": lambda d: _dask_pairs_d(d),
+}
+
+
+def _dask_pairs_d(d):
+    pytest.importorskip("dask.array")
+    import circledist.dask as dask_module
+    return dask_module.pairs_within(_P, _RING, d)
+
+
+def _owner(entry):
+    return entry.replace("dask ", "")
+
+
+@pytest.mark.parametrize("entry", sorted(DISTANCE_LIMITS))
 @pytest.mark.parametrize("d", [10**400, -10**400])
-def test_distance_limits_beyond_float64_are_a_value_error(owner, call, d):
-    with pytest.raises(ValueError, match=f"{owner}: d must be a .*number >= 0, got an integer of 401 digits"):
-        call(d)
+def test_distance_limits_beyond_float64_are_a_value_error(entry, d):
+    with pytest.raises(ValueError, match=f"{_owner(entry)}: d must be a .*number >= 0, got an integer of 401 digits"):
+        DISTANCE_LIMITS[entry](d)
+
+
+@pytest.mark.parametrize("entry", sorted(DISTANCE_LIMITS))
+@pytest.mark.parametrize("d", [True, np.True_, "1", None, 1 + 0j])
+def test_distance_limits_refuse_bools_and_non_reals(entry, d):
+    with pytest.raises(TypeError, match=f"{_owner(entry)}: d must be a real number >= 0, got {re.escape(repr(d))}"):
+        DISTANCE_LIMITS[entry](d)
+
+
+@pytest.mark.parametrize("entry", sorted(DISTANCE_LIMITS))
+@pytest.mark.parametrize("d", [float("inf"), float("nan"), -1.0])
+def test_distance_limits_refuse_inf_nan_and_negatives(entry, d):
+    with pytest.raises(ValueError, match=f"{_owner(entry)}: d must be a finite number >= 0"):
+        DISTANCE_LIMITS[entry](d)
 
 
 @pytest.mark.parametrize("far", [1e155, 1e200, 1e300, 1.7e308, -1e300])

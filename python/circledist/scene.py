@@ -24,7 +24,6 @@ from __future__ import annotations
 from array import array
 from typing import Iterable, Sequence
 
-
 import numpy as np
 
 from . import _core
