@@ -48,11 +48,75 @@ int solver_of(const py::object& name) {
                         "'");
 }
 
-// workers=: SciPy's convention, a positive thread count or -1 for every core.
-int workers_of(int workers) {
+// An argument as the messages show it: its repr, or for an integer of many digits how many.
+std::string shown(py::handle value) {
+  const std::string text = py::repr(value).cast<std::string>();
+  if (text.size() <= 40 || !PyLong_Check(value.ptr())) return text;
+  return "an integer of " + std::to_string(text.size() - (text[0] == '-' ? 1 : 0)) + " digits";
+}
+
+// The one reader of the integer arguments (k, workers, a count of any entry point): an int, a
+// NumPy integer or another numbers.Integral, through __index__. bool is refused: True is not a
+// count (NumPy refuses it as an array's size, and `k=True` is a slip, not a 1). A value beyond
+// 64 bits is refused with the library's words (pybind11 would say "Unable to cast"). `wanted`
+// says what the argument takes; `owner` (may be empty) the call, as the messages start.
+long long integer_of(const std::string& owner, const char* name, py::handle value, const char* wanted) {
+  const std::string prefix = owner.empty() ? std::string(name) : owner + ": " + name;
+  PyObject* index = nullptr;
+  if (PyLong_CheckExact(value.ptr())) {  // the common case, without the ABC check's cost
+    index = value.ptr();
+    Py_INCREF(index);
+  } else if (!PyBool_Check(value.ptr()) && !py::isinstance(value, py::module_::import("numpy").attr("bool_")) &&
+             py::isinstance(value, py::module_::import("numbers").attr("Integral"))) {
+    index = PyNumber_Index(value.ptr());
+    if (!index) PyErr_Clear();
+  }
+  if (!index) throw py::type_error(prefix + " must be " + wanted + ", got " + shown(value));
+  const py::object held = py::reinterpret_steal<py::object>(index);
+  int overflow = 0;
+  const long long out = PyLong_AsLongLongAndOverflow(index, &overflow);
+  if (overflow != 0)
+    throw py::value_error(prefix + " must be " + wanted + (overflow > 0 ? " (at most 2**63 - 1)" : " (at least -2**63)") +
+                          ", got " + shown(value));
+  if (out == -1 && PyErr_Occurred()) throw py::error_already_set();
+  return out;
+}
+
+// A distance limit: a finite real number >= 0 (bool and strings refused), named in messages. An
+// integer beyond float64's range is refused as not finite (float() of it would raise).
+double limit_of(const char* owner, py::handle d) {
+  const py::module_ numbers = py::module_::import("numbers");
+  if (PyBool_Check(d.ptr()) || py::isinstance(d, py::module_::import("numpy").attr("bool_")) ||
+      !py::isinstance(d, numbers.attr("Real")))
+    throw py::type_error(std::string(owner) + ": d must be a real number >= 0, got " + shown(d));
+  const double value = PyFloat_AsDouble(d.ptr());
+  if (value == -1 && PyErr_Occurred()) {
+    if (!PyErr_ExceptionMatches(PyExc_OverflowError)) throw py::error_already_set();
+    PyErr_Clear();
+  } else if (value >= 0 && std::isfinite(value)) {
+    return value;
+  }
+  throw py::value_error(std::string(owner) + ": d must be a finite number >= 0, got " + shown(d));
+}
+
+// nearest's k: an integer >= 1 (integer_of's rules).
+Index count_of(const char* owner, py::handle k) {
+  constexpr const char* wanted = "an integer >= 1";
+  const long long value = integer_of(owner, "k", k, wanted);
+  if (value < 1) throw py::value_error(std::string(owner) + ": k must be " + wanted + ", got " + std::to_string(value));
+  return Index(value);
+}
+
+// workers=: SciPy's convention, a positive thread count or -1 for every core. Counts beyond an
+// int are the int's largest: the threads are bounded by the work's chunks anyway.
+int workers_of(py::handle given, const std::string& owner = "") {
+  constexpr const char* wanted = "a positive integer or -1 (every core)";
+  const long long workers = integer_of(owner, "workers", given, wanted);
   if (workers == -1) return int(std::max(1u, std::thread::hardware_concurrency()));
-  if (workers < 1) throw py::value_error("workers must be a positive integer or -1 (every core), got " + std::to_string(workers));
-  return workers;
+  if (workers < 1)
+    throw py::value_error((owner.empty() ? std::string() : owner + ": ") + "workers must be " + wanted + ", got " +
+                          std::to_string(workers));
+  return int(std::min<long long>(workers, std::numeric_limits<int>::max()));
 }
 
 // The Shape base class's Python type, looked up once. Queries test their arguments against it with
@@ -113,7 +177,7 @@ struct Choice {
   py::object progress;
   SelectedEigenPolicy::Use eigen_policy;
   Choice(const py::object& precision_name, const py::object& solver_name, const Shape& a, const Shape& b,
-         int workers_given, const py::object& progress_given)
+         py::handle workers_given, const py::object& progress_given)
       : precision(precision_of(precision_name, a, b)),
         solver(solver_of(solver_name)),
         workers(workers_of(workers_given)),
@@ -147,13 +211,13 @@ py::object shapes_distance(const Shape& a, const Shape& b, const Choice& c, py::
 py::object shapes_distance(const Shape& a, const Shape& b, const Choice& c) { return shapes_distance(a, b, c, c.progress); }
 
 py::object run_distance(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
-                        int workers, const py::object& progress) {
+                        py::handle workers, const py::object& progress) {
   const Argument x(a), y(b);
   return shapes_distance(*x.shape, *y.shape, Choice(precision, solver, *x.shape, *y.shape, workers, progress));
 }
 
 ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precision, const py::object& solver,
-                          int workers, const py::object& progress) {
+                          py::handle workers, const py::object& progress) {
   const Argument x(a), y(b);
   const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
   auto closest = [](const auto& call) { return call.closest(); };
@@ -175,7 +239,7 @@ py::object shapes_within(const Shape& a, const Shape& b, const Shape& limit, boo
 }
 
 py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
-                      const py::object& solver, int workers, const py::object& progress) {
+                      const py::object& solver, py::handle workers, const py::object& progress) {
   const Argument x(a), y(b);
   const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
   return shapes_within(*x.shape, *y.shape, limit, want_distance, c, c.progress);
@@ -383,14 +447,14 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "distance",
-      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers, ProgressLike progress) {
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
         return Distances(run_distance(a, b, precision, solver, workers, progress));
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
       py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kDistance());
   m.def(
       "closest_points",
-      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers, ProgressLike progress) {
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
         return run_closest(a, b, precision, solver, workers, progress);
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("precision") = py::none(), py::arg("solver") = py::none(),
@@ -406,4 +470,16 @@ PYBIND11_MODULE(_core, m) {
       "_sweep_field", [] { return FieldPair(py::make_tuple(kSweepField.name, field_role(kSweepField))); },
       "The (name, role) of the optional keyword field every kind takes after its own fields.");
   bind_pairs(m);
+  // The readers above, for the Python side's arguments (circledist.Scene, circledist.dask): one
+  // rule for every entry point.
+  m.def(
+      "_integer_argument",
+      [](const std::string& owner, const char* name, py::handle value, const char* wanted) {
+        return integer_of(owner, name, value, wanted);
+      },
+      py::arg("owner"), py::arg("name"), py::arg("value"), py::arg("wanted"),
+      "The integer argument `value` (bools refused, 64 bits at most), or a TypeError / ValueError naming it.");
+  m.def(
+      "_distance_limit", [](const char* owner, py::handle d) { return limit_of(owner, d); }, py::arg("owner"),
+      py::arg("d"), "The distance limit d as a float (finite, >= 0), or a TypeError / ValueError naming it.");
 }

@@ -34,7 +34,7 @@ py::typing::Dict<py::str, py::int_> stats_dict() {
 inline void bind_effects(py::module_& m) {
   m.def(
       "intersects",
-      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, int workers, ProgressLike progress) {
+      [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
         static const Shape* zero = new Shape(kPoint, {default_sweep()});  // d = 0 (a shared 0-d zero)
         return Flags(run_within(a, b, *zero, false, precision, solver, workers, progress));
       },
@@ -42,14 +42,14 @@ inline void bind_effects(py::module_& m) {
       py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kIntersects());
   m.def(
       "within",
-      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, int workers, ProgressLike progress) {
+      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
         return Flags(run_within(a, b, limit_shape("within", d), false, precision, solver, workers, progress));
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
       py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kWithin());
   m.def(
       "distance_if_within",
-      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, int workers, ProgressLike progress) {
+      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
         return Distances(run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver, workers, progress));
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),

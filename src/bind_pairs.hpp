@@ -14,6 +14,7 @@
 #include <cmath>
 #include <exception>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -325,28 +326,6 @@ template <class Real> struct Evaluator {
   }
 };
 
-// A distance limit: a finite real number >= 0 (bool and strings refused), named in messages.
-double limit_of(const char* owner, py::handle d) {
-  const py::module_ numbers = py::module_::import("numbers");
-  if (PyBool_Check(d.ptr()) || py::isinstance(d, py::module_::import("numpy").attr("bool_")) ||
-      !py::isinstance(d, numbers.attr("Real")))
-    throw py::type_error(std::string(owner) + ": d must be a real number >= 0, got " +
-                         py::repr(d).cast<std::string>());
-  const double value = d.cast<double>();
-  if (!(value >= 0) || !std::isfinite(value))
-    throw py::value_error(std::string(owner) + ": d must be a finite number >= 0, got " +
-                          py::repr(d).cast<std::string>());
-  return value;
-}
-
-Index count_of(const char* owner, py::handle k) {
-  if (PyBool_Check(k.ptr()) || !py::isinstance(k, py::module_::import("numbers").attr("Integral")))
-    throw py::type_error(std::string(owner) + ": k must be an integer >= 1, got " + py::repr(k).cast<std::string>());
-  const long long value = k.cast<long long>();
-  if (value < 1) throw py::value_error(std::string(owner) + ": k must be an integer >= 1, got " + std::to_string(value));
-  return Index(value);
-}
-
 // The kernel table must have the pair, whether or not any candidate reaches it: the answer may
 // not depend on where the shapes lie.
 void check_pair(const char* owner, const Shape& a, const Shape& b, const Choice& c) {
@@ -456,7 +435,35 @@ std::vector<size_t> starts_of(const PairList& pairs, Index n, int workers) {
   return start;
 }
 
+// nearest's answers for n queries, (indices, distances) of shape (n, k) each, made before any work:
+// a k whose answers memory cannot hold (the size beyond 64 bits, or the allocation refused) is a
+// MemoryError naming k and the size at once (n * k wrapped around 64 bits was a small buffer the
+// answers overran). The columns past len(b) are -1 and inf, which no query computes: k itself
+// costs only this memory.
+template <class Real> std::pair<py::array_t<Index>, py::array_t<Real>> nearest_answers(Index n, Index k, Index nb) {
+  constexpr Index per_entry = Index(sizeof(Index) + sizeof(Real));
+  const auto refuse = [&] {
+    std::ostringstream text;
+    text.precision(3);
+    text << "nearest: k=" << k << " asks for answers of shape (" << n << ", " << k << "), more than memory can hold ("
+         << double(std::max<Index>(n, 1)) * double(k) * per_entry << " bytes" << (n == 0 ? " per query" : "")
+         << "; the columns past len(b) = " << nb << " are only -1 and inf)";
+    PyErr_SetString(PyExc_MemoryError, text.str().c_str());
+    throw py::error_already_set();
+  };
+  // NumPy refuses a shape whose size in bytes, zero rows aside, passes 2**63 - 1: (0, k) too.
+  if (k > std::numeric_limits<Index>::max() / per_entry / std::max<Index>(n, 1)) refuse();
+  try {
+    return {py::array_t<Index>({n, k}), py::array_t<Real>({n, k})};
+  } catch (py::error_already_set& error) {
+    if (!error.matches(PyExc_MemoryError)) throw;
+  }
+  refuse();
+  return {};
+}
+
 template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index k, const Choice& c) {
+  auto [index_out, distance_out] = nearest_answers<Real>(flat_size(a), k, flat_size(b));
   const Culling culling(a, b, c.workers);
   const Volumes& va = culling.va;
   const std::vector<BroadIndex>& order = culling.order;
@@ -511,8 +518,8 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   progress.finish();
   const std::vector<size_t> second_start = starts_of(second, n, c.workers);
   // 3. The k smallest (distance, index) of each query's candidates; -1 and inf past the end of b.
-  std::vector<Index> indices(static_cast<size_t>(n * k), -1);
-  std::vector<Real> distances(static_cast<size_t>(n * k), std::numeric_limits<Real>::infinity());
+  Index* indices = index_out.mutable_data();
+  Real* distances = distance_out.mutable_data();
   {
     py::gil_scoped_release release;
     run_in_chunks(n, c.workers, [&](Index begin, Index end) {
@@ -525,14 +532,18 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
           found.emplace_back(second_distances[p], second[p].second);
         const Index take = std::min<Index>(k, Index(found.size()));
         std::partial_sort(found.begin(), found.begin() + take, found.end());
+        Index* row_indices = indices + i * k;
+        Real* row_distances = distances + i * k;
         for (Index r = 0; r < take; ++r) {
-          distances[size_t(i * k + r)] = found[size_t(r)].first;
-          indices[size_t(i * k + r)] = found[size_t(r)].second;
+          row_distances[r] = found[size_t(r)].first;
+          row_indices[r] = found[size_t(r)].second;
         }
+        std::fill(row_indices + take, row_indices + k, Index(-1));
+        std::fill(row_distances + take, row_distances + k, std::numeric_limits<Real>::infinity());
       }
     }, no_interrupt);
   }
-  return py::make_tuple(to_array(indices, {n, k}), to_array(distances, {n, k}));
+  return py::make_tuple(std::move(index_out), std::move(distance_out));
 }
 
 // Runs body.template operator()<Real>() with Real the answers' type of the choice's precision.
@@ -543,7 +554,7 @@ template <class Body> py::tuple with_answer_type(const Choice& c, Body&& body) {
 }
 
 py::tuple run_pairs_within(py::handle a, py::handle b, py::handle d, const py::object& precision,
-                           const py::object& solver, int workers, const py::object& progress) {
+                           const py::object& solver, py::handle workers, const py::object& progress) {
   const Side x(a, "pairs_within", "a");
   const std::optional<Side> y = b.is_none() ? std::nullopt : std::optional<Side>(Side(b, "pairs_within", "b"));
   const Shape& other = y ? *y->shape : *x.shape;
@@ -558,7 +569,7 @@ py::tuple run_pairs_within(py::handle a, py::handle b, py::handle d, const py::o
 }
 
 py::tuple run_nearest(py::handle a, py::handle b, py::handle k, const py::object& precision, const py::object& solver,
-                      int workers, const py::object& progress) {
+                      py::handle workers, const py::object& progress) {
   const Side x(a, "nearest", "a"), y(b, "nearest", "b");
   const Index count = count_of("nearest", k);
   const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
@@ -580,8 +591,8 @@ struct SceneBroadphase {
   // Adds the items numbered on from len(self): parts are (shape, items, group, first row), element
   // k of the shape (flat) being item items[k], at row first + k of its group; the parts' items
   // together are the new numbers, each once.
-  void add(const py::list& parts, int workers_given) {
-    const int workers = workers_of(workers_given);
+  void add(const py::list& parts, Count workers_given) {
+    const int workers = workers_of(workers_given, "Scene.pairs_within");
     struct Part {
       const Shape* shape;
       py::array_t<Index, py::array::c_style | py::array::forcecast> items;
@@ -677,8 +688,8 @@ struct SceneBroadphase {
   // every step on the workers but the list's making (Python objects: the GIL's, here in C, a
   // fraction of what a Python loop over the pairs took). `groups`: the scene's groups as whole
   // batches, in the numbering add() was given; `names`: the items' names.
-  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, int workers_given) {
-    const int workers = workers_of(workers_given);
+  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, Count workers_given) {
+    const int workers = workers_of(workers_given, "Scene.pairs_within");
     if (Index(names.size()) != tree.size()) throw py::value_error("_Broadphase.pairs_within: one name per item");
     std::vector<const Shape*> shapes;
     for (py::handle g : groups) shapes.push_back(&constructed(g));
@@ -743,7 +754,7 @@ struct SceneBroadphase {
           }
         }, no_interrupt);
       }
-      const Choice choice(py::none(), py::none(), A, B, workers, py::none());
+      const Choice choice(py::none(), py::none(), A, B, py::int_(workers), py::none());
       Evaluator<bool>{A, B, choice, &limit_d}.run(rows, progress, 0, [&](Index k, bool within) {
         hit[size_t(placed[size_t(first + k)])] = within;
       });
@@ -769,13 +780,13 @@ struct SceneBroadphase {
 inline void bind_pairs(py::module_& m) {
   m.def(
       "pairs_within",
-      [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, int workers,
+      [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, Count workers,
          ProgressLike progress) { return PairsResult(run_pairs_within(a, b, d, precision, solver, workers, progress)); },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
       py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kPairsWithin());
   m.def(
       "nearest",
-      [](ShapeLike a, ShapeLike b, Count k, PrecisionName precision, SolverName solver, int workers,
+      [](ShapeLike a, ShapeLike b, Count k, PrecisionName precision, SolverName solver, Count workers,
          ProgressLike progress) { return NearestResult(run_nearest(a, b, k, precision, solver, workers, progress)); },
       py::arg("a"), py::arg("b"), py::arg("k") = 1, py::kw_only(), py::arg("precision") = py::none(),
       py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kNearest());

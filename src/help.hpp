@@ -408,8 +408,9 @@ Shape
 Raises
 ------
 TypeError
-    For a single shape (batch shape ``()``), or an entry that is not an index (``None``, a
-    float).
+    For a single shape (batch shape ``()``), or an entry that is not an index (a float). ``None``
+    (``numpy.newaxis``) is not supported: indexing adds no batch axis (give the fields of
+    `to_arrays` new axes and rebuild the shape with `from_arrays`).
 IndexError
     For more indices than batch axes, or an index out of range.
 
@@ -473,6 +474,8 @@ point_a, point_b : numpy.ndarray, shape (..., 3)
 param_a, param_b : numpy.ndarray, shape (..., 2)
     Their parameters: ``(t, 0)`` on points, lines, rays, segments and curves, ``(theta, 0)``
     on circles, ``(s, theta)`` on disks (angles in the shape's own frame about its normal).
+    Always in the shape's domain: t >= 0 on rays, t in [0, 1] on segments and curves, t in
+    [0, angle] on arcs, s in [0, radius] on disks and in [inner_radius, outer_radius] on annuli.
 unique : bool or numpy.ndarray
     False when another distinct pair is as close (a line on a circle's axis, concentric
     coplanar circles).
@@ -512,9 +515,9 @@ solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, opti
     pairs give the same answer with every solver.
 workers : int, optional
     Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-    convention): a positive count, or -1 for every core; default 1. The answers are the same
-    bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-    (KeyboardInterrupt).
+    convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+    core; default 1. The answers are the same bits for any count, and stats() counts every
+    thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
 )";
 inline const char* const kProgressParameter = R"(progress : bool or callable, optional
     Keyword only. None or False (the default): no report. True: a progress bar on stderr
@@ -782,11 +785,15 @@ distances : numpy.ndarray, shape (len(a), k)
 Raises
 ------
 TypeError
-    When k is not an integer, a or b is not a shape or an array of points, there is no query
-    between their kinds, or `progress` is neither None, a bool nor a callable.
+    When k or `workers` is not an integer (a bool is not), a or b is not a shape or an array of
+    points, there is no query between their kinds, or `progress` is neither None, a bool nor a
+    callable.
 ValueError
-    When k < 1, for an unknown precision or solver, or a worker count that is neither positive
-    nor -1.
+    When k < 1 or k >= 2**63, for an unknown precision or solver, or a worker count that is
+    neither positive nor -1.
+MemoryError
+    When the answers, two arrays of shape (len(a), k), do not fit in memory (the columns past
+    len(b) are only -1 and inf: a k beyond len(b) costs their memory, nothing more).
 
 See Also
 --------

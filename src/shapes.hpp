@@ -143,6 +143,23 @@ inline py::object frozen_copy(const py::object& given, bool wide, bool copy = tr
   return out;
 }
 
+// The MemoryError of a field whose copy (a contiguous float64 array) could not be made, naming
+// the field, its shape and the bytes the copy needs (NumPy's own message names neither).
+[[noreturn]] inline void throw_cannot_copy(const char* owner, const char* name, py::handle value) {
+  std::ostringstream text;
+  text << owner << ": " << name << " cannot be copied: out of memory";
+  const py::object shape = py::getattr(value, "shape", py::none());
+  if (py::isinstance<py::tuple>(shape)) {
+    double bytes = double(sizeof(double));
+    for (py::handle d : shape) bytes *= py::cast<double>(d);
+    text.precision(3);
+    text << " (shape " << py::str(shape).cast<std::string>() << ", " << bytes
+         << " bytes as a contiguous float64 array; copy=False refers to a C-contiguous float64 array without copying it)";
+  }
+  PyErr_SetString(PyExc_MemoryError, text.str().c_str());
+  throw py::error_already_set();
+}
+
 inline Field make_field(const char* owner, const char* name, py::handle value, Index width, Check check,
                         bool copy = true) {
   Field f{name};
@@ -163,7 +180,9 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
         f.wide = Field::Wide::ensure(frozen_copy(given, true, copy)), f.is_wide = true;
       converted = frozen_copy(given, false, copy);
     }
-  } catch (py::error_already_set&) {
+  } catch (py::error_already_set& error) {
+    // A valid array too large to copy is not a wrong type: say so, and how large.
+    if (error.matches(PyExc_MemoryError)) throw_cannot_copy(owner, name, value);
     real = false;
   }
   if (!real) throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");

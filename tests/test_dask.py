@@ -276,8 +276,11 @@ def test_indexing_refuses_what_is_not_basic_indexing():
         rings[4].compute()
     with pytest.raises(IndexError, match="single ellipsis"):
         rings[..., ...]
-    for key in ([0, 1], np.array([0, 1]), np.array([True, False, True, True]), True, None, 1.0, "a"):
+    for key in ([0, 1], np.array([0, 1]), np.array([True, False, True, True]), True, 1.0, "a"):
         with pytest.raises(TypeError, match="only integers, slices and ... index a batch"):
+            rings[key]
+    for key in (None, (slice(None), None), (None, 0)):
+        with pytest.raises(TypeError, match=r"None \(numpy.newaxis\) is not supported in a batch index"):
             rings[key]
     with pytest.raises(TypeError, match=r"len\(\) of a single Circle"):
         len(rings[0])

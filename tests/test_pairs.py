@@ -5,6 +5,9 @@ shapes, lines and rays among them), batch shapes indexed flat, empty batches, k 
 d = 0 with touching shapes, duplicates, every worker count, precisions, and bad arguments."""
 
 import itertools
+import subprocess
+import sys
+import textwrap
 
 import numpy as np
 import pytest
@@ -147,6 +150,53 @@ def test_empty_batches_and_k_beyond_b():
     # k larger than b: every shape of b, then -1 and inf (as cKDTree pads with len(b) and inf).
     assert_nearest(cd.nearest(some, some, k=8), brute_nearest(some, some, 8))
     assert cd.pairs_within(random_batch("Segment", 1, rng), None, 5.0)[0].shape == (0,)
+
+
+# Every k answers or refuses: (n, k) answers of n * k * 16 bytes beyond 64 bits (n * k wrapped
+# to a small count and the answers were written past their end), or beyond what an address space
+# holds (2**44 columns of 4 queries: 2**50 bytes), are a MemoryError naming k; so is a row too
+# large for NumPy's shapes with no query. Run in a child process, so that a regression fails the
+# test instead of taking pytest down.
+@pytest.mark.parametrize("n, k", [(4, 2**62), (8, 2**61), (3, 2**63 - 1), (2, 2**59 + 1), (4, 2**44), (1, 2**60),
+                                  (0, 2**62), (0, 2**63 - 1)])
+def test_nearest_k_whose_answers_cannot_exist_is_a_memory_error(n, k):
+    code = textwrap.dedent(f"""
+        import numpy as np, circledist as cd
+        a, b = cd.Point(np.zeros(({n}, 3))), cd.Point(np.arange(30.0).reshape(10, 3))
+        try:
+            cd.nearest(a, b, {k})
+        except MemoryError as e:
+            print("MemoryError", e)
+    """)
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert proc.stdout.startswith(f"MemoryError nearest: k={k} asks for answers of shape ({n}, {k})"), proc.stdout
+
+
+@pytest.mark.parametrize("k", [11, 1000, 2**20])
+def test_nearest_k_beyond_b_pads_every_column(k):
+    rng = np.random.default_rng(6)
+    a, b = random_batch("Segment", 3, rng), random_batch("Circle", 10, rng)
+    idx, dist = cd.nearest(a, b, k)
+    assert idx.shape == dist.shape == (3, k)
+    head = cd.nearest(a, b, 10)
+    np.testing.assert_array_equal(idx[:, :10], head[0])
+    np.testing.assert_array_equal(dist[:, :10], head[1])
+    assert np.all(idx[:, 10:] == -1) and np.all(np.isinf(dist[:, 10:]))
+
+
+@pytest.mark.parametrize("k", [2**40, 2**58])
+def test_nearest_of_no_queries_takes_a_k_numpy_can_shape(k):
+    idx, dist = cd.nearest(cd.Point(np.zeros((0, 3))), cd.Point(np.zeros((5, 3))), k)
+    assert idx.shape == dist.shape == (0, k)
+
+
+@pytest.mark.parametrize("k", [2**62, 2**63 - 1])
+def test_scene_nearest_with_a_huge_k_gives_every_shape(k):
+    s = cd.Scene()
+    s.extend("p", cd.Point(np.arange(30.0).reshape(10, 3)))
+    got = s.nearest([0, 0, 0], k=k)
+    assert [name for name, _ in got] == [f"p{i}" for i in range(10)]
 
 
 def test_touching_shapes_at_d_zero():

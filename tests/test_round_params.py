@@ -119,3 +119,114 @@ def test_disk_angle_on_the_axis_is_zero(normal, height):
             param = np.asarray(r.param_b if theta else r.param_a).reshape(2)
             assert param[1] == 0 and not np.signbit(param[1]), f"angle {param[1]!r} on the axis"
             assert param[0] == 0
+
+
+# Parameters stay in their shape's domain (a ray's t >= 0, a segment's and a curve's t in [0, 1],
+# an arc's t in [0, angle], a disk's s in [0, radius], an annulus's s in [inner, outer]) where the
+# solvers' rounding put them an ulp or a few outside it (a segment's t of -1e-23 against an arc, a
+# disk's s one ulp above its radius): near-degenerate pairs, the other shape's origin within
+# 1e-17 .. 1e-6 of a point of the shape (its end, its rim, its center). The point the clamped
+# parameter names is the reported point within the accuracy bar.
+DOMAIN_KINDS = ["Ray", "Segment", "Bezier", "Arc", "Disk", "Annulus"]
+ALL_KINDS = ["Point", "Line", "Ray", "Segment", "Circle", "Disk", "Bezier", "Arc", "Annulus"]
+
+
+def _unit(rng, n):
+    v = rng.normal(size=(n, 3))
+    return v / np.linalg.norm(v, axis=1, keepdims=True)
+
+
+def _shape(kind, rng, n, near=None):
+    """n shapes of `kind` and their fields; with `near`, each starting (origin, p0, first control
+    point, center) within 1e-17 .. 1e-6 of near's row."""
+    base = rng.normal(size=(n, 3))
+    if near is not None:
+        base = near + _unit(rng, n) * 10.0 ** rng.uniform(-17, -6, (n, 1))
+    if kind == "Point":
+        fields = (base,)
+    elif kind in ("Line", "Ray"):
+        fields = (base, _unit(rng, n) * rng.uniform(0.5, 2, (n, 1)))
+    elif kind == "Segment":
+        fields = (base, base + _unit(rng, n) * rng.uniform(0.5, 2, (n, 1)))
+    elif kind in ("Circle", "Disk"):
+        fields = (base, _unit(rng, n), rng.uniform(0.5, 2, n))
+    elif kind == "Arc":
+        fields = (base, _unit(rng, n), rng.uniform(0.5, 2, n), _unit(rng, n), rng.uniform(0.3, 6.2, n))
+    elif kind == "Annulus":
+        outer = rng.uniform(0.5, 2, n)
+        fields = (base, _unit(rng, n), outer * rng.uniform(0.2, 0.8, n), outer)
+    else:
+        control = rng.normal(size=(n, 3, 3))
+        control[:, 0] = base
+        fields = (control,)
+    return getattr(cd, kind)(*fields), fields
+
+
+def _anchors(kind, shape, fields, rng, n):
+    """Points of the shape where degenerate neighbours sit: its ends, rims and centers, and the
+    closest points of random points."""
+    on = cd.closest_points(shape, rng.normal(size=(n, 3)) * 2).point_a
+    if kind == "Segment":
+        special = fields[int(rng.integers(0, 2))]
+    elif kind == "Bezier":
+        special = fields[0][:, -1]
+    elif kind == "Arc":
+        special = cd.closest_points(shape, fields[0] + fields[3] * 5).point_a  # toward the start
+    else:  # a ray's origin, a disk's or an annulus's center
+        special = fields[0]
+    return np.where(rng.random((n, 1)) < 0.5, on, special)
+
+
+def _in_domain(kind, fields, param):
+    t = param[:, 0]
+    if kind == "Ray":
+        return t >= 0
+    if kind in ("Segment", "Bezier"):
+        return (t >= 0) & (t <= 1)
+    if kind == "Arc":
+        return (t >= 0) & (t <= fields[4])
+    if kind == "Disk":
+        return (t >= 0) & (t <= fields[2])
+    return (t >= fields[2]) & (t <= fields[3])
+
+
+def _named(kind, fields, param):
+    """The point the parameter names, in long double from the documented definitions."""
+    t = np.asarray(param[:, 0], dtype=LD)
+    if kind == "Ray":
+        return np.asarray(fields[0], dtype=LD) + t[:, None] * np.asarray(fields[1], dtype=LD)
+    if kind == "Segment":
+        p0, p1 = np.asarray(fields[0], dtype=LD), np.asarray(fields[1], dtype=LD)
+        return p0 + t[:, None] * (p1 - p0)
+    if kind == "Bezier":
+        q = np.asarray(fields[0], dtype=LD)
+        while q.shape[1] > 1:
+            q = (1 - t)[:, None, None] * q[:, :-1] + t[:, None, None] * q[:, 1:]
+        return q[:, 0]
+    if kind == "Arc":
+        center, normal, radius, start, _ = fields
+        u, v = frame(normal)
+        s = np.asarray(start, dtype=LD)
+        theta = np.arctan2((s * v).sum(axis=1), (s * u).sum(axis=1)) + t
+        return np.asarray(center, dtype=LD) + np.asarray(radius, dtype=LD)[:, None] * (
+            np.cos(theta)[:, None] * u + np.sin(theta)[:, None] * v)
+    return named_point("disk", (fields[0], fields[1], None), param)
+
+
+@pytest.mark.parametrize("other", ALL_KINDS)
+@pytest.mark.parametrize("kind", DOMAIN_KINDS)
+def test_params_stay_in_their_domain_near_degenerate_pairs(kind, other):
+    rng = np.random.default_rng([DOMAIN_KINDS.index(kind), ALL_KINDS.index(other)])
+    n = 500
+    shape, fields = _shape(kind, rng, n)
+    near, near_fields = _shape(other, rng, n, near=_anchors(kind, shape, fields, rng, n))
+    forward, backward = cd.closest_points(shape, near), cd.closest_points(near, shape)
+    for r, param, point, other_param in [(forward, forward.param_a, forward.point_a, forward.param_b),
+                                         (backward, backward.param_b, backward.point_b, backward.param_a)]:
+        bad = ~_in_domain(kind, fields, param)
+        assert not bad.any(), f"{bad.sum()} of {n} params outside the domain, e.g. {param[bad][:3, 0]}"
+        err = np.sqrt(((np.asarray(point, dtype=LD) - _named(kind, fields, param)) ** 2).sum(axis=1)).astype(float)
+        scale = np.maximum(1.0, np.abs(r.distance))
+        assert np.all(err <= 1e-12 * scale), f"worst {np.max(err / scale):.3g} x scale"
+        if other in DOMAIN_KINDS:  # the near shape's own parameters too
+            assert _in_domain(other, near_fields, other_param).all()

@@ -79,7 +79,11 @@ def test_len_iteration_and_truth():
 @pytest.mark.parametrize("key, error, match", [
     ((0, 0), IndexError, "too many indices"),
     (6, IndexError, "out of bounds"),
-    (None, TypeError, "index a batch"),
+    (None, TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+    ((slice(None), None), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+    ((None, 0), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+    ((Ellipsis, np.newaxis), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+    (True, TypeError, "index a batch"),
     (1.5, TypeError, "index a batch"),
     ((Ellipsis, Ellipsis), IndexError, "single ellipsis"),
     (np.array([0.5]), TypeError, "index a batch"),

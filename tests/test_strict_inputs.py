@@ -6,6 +6,7 @@ regression fails the test instead of taking pytest down."""
 
 import json
 import math
+import re
 import subprocess
 import sys
 
@@ -109,6 +110,35 @@ def test_only_real_scalars(value):
         cd.Circle([0, 0, 0], [0, 0, 1], value)
 
 
+ROLE_VALUES = {"vector": [1.0, 2.0, 3.0], "direction": [0.0, 0.0, 1.0], "length": 1.0, "angle": 1.0,
+               "control_points": [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.0]]}
+FIELDS = [(kind, i) for kind, fields in cd._core._shape_fields().items() for i in range(len(fields))]
+
+
+@pytest.mark.parametrize("copy", [True, False])
+@pytest.mark.parametrize("kind, field", FIELDS, ids=[f"{k}.{i}" for k, i in FIELDS])
+def test_a_field_too_large_to_copy_is_a_memory_error_naming_it(kind, field, copy):
+    """A valid batch whose contiguous float64 copy cannot be made (a broadcast view of 10**15
+    elements: petabytes, more than an address space holds, so nothing is allocated) is a
+    MemoryError naming the field and its size, not "must be a real number array"."""
+    fields = cd._core._shape_fields()[kind]
+    values = [ROLE_VALUES[role] for _, role in fields]
+    name = fields[field][0]
+    one = np.asarray(values[field], dtype=float)
+    values[field] = np.broadcast_to(one, (10**15,) + one.shape)
+    with pytest.raises(MemoryError, match=(rf"{kind}: {name} cannot be copied: out of memory "
+                                           rf"\(shape \(1000000000000000,.*\), [0-9.e+]+ bytes as a contiguous float64 array")):
+        getattr(cd, kind)(*values, copy=copy)
+
+
+def test_limits_and_sweeps_too_large_to_copy_are_a_memory_error():
+    huge = np.broadcast_to(np.float64(1.0), (10**15,))
+    with pytest.raises(MemoryError, match=r"within: d cannot be copied: out of memory \(shape \(1000000000000000,\)"):
+        cd.within(cd.Point([0, 0, 0]), cd.Point([0, 0, 1]), huge)
+    with pytest.raises(MemoryError, match=r"Point: sweep cannot be copied"):
+        cd.Point([0, 0, 0], sweep=huge)
+
+
 def test_real_objects_are_accepted():
     from fractions import Fraction
     assert cd.distance(cd.Point([Fraction(1, 2), 0, 0]), cd.Point([0, 0, 0])) == 0.5
@@ -136,6 +166,107 @@ def test_scene_nearest_k_is_checked():
     for bad in (None, "5"):
         with pytest.raises(TypeError, match="d must be a real number"):
             s.within(cd.Point([0, 0, 0]), bad)
+
+
+# Integer arguments (k, workers, tiles) have one reader and one rule everywhere: an int or a NumPy
+# integer; bools refused (True is not a count); a value beyond 64 bits refused in the library's
+# words (pybind11 said "Unable to cast ... to C++ type '?'" or dumped the signature).
+_P, _RING = cd.Point(np.zeros((4, 3))), cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+
+
+def _scene():
+    return cd.Scene([("a", cd.Point([0, 0, 1])), ("b", cd.Point([0, 0, 2]))])
+
+
+def _dask_pairs(**options):
+    pytest.importorskip("dask.array")
+    import circledist.dask as dask_module
+    return dask_module.pairs_within(_P, _RING, 1.0, **options)
+
+
+INTEGER_ARGUMENTS = {
+    "distance workers": ("workers", lambda v: cd.distance(_P, _RING, workers=v)),
+    "closest_points workers": ("workers", lambda v: cd.closest_points(_P, _RING, workers=v)),
+    "intersects workers": ("workers", lambda v: cd.intersects(_P, _RING, workers=v)),
+    "within workers": ("workers", lambda v: cd.within(_P, _RING, 1.0, workers=v)),
+    "distance_if_within workers": ("workers", lambda v: cd.distance_if_within(_P, _RING, 1.0, workers=v)),
+    "pairs_within workers": ("workers", lambda v: cd.pairs_within(_P, _RING, 1.0, workers=v)),
+    "nearest workers": ("workers", lambda v: cd.nearest(_P, _RING, 1, workers=v)),
+    "nearest k": ("k", lambda v: cd.nearest(_P, _RING, v)),
+    "Scene.nearest k": ("k", lambda v: _scene().nearest([0, 0, 0], k=v)),
+    "Scene.pairs_within workers": ("workers", lambda v: _scene().pairs_within(1.0, workers=v)),
+    "dask pairs_within workers": ("workers", lambda v: _dask_pairs(workers=v)),
+    "dask pairs_within tiles": ("tiles", lambda v: _dask_pairs(tiles=v)),
+}
+
+
+@pytest.mark.parametrize("entry", sorted(INTEGER_ARGUMENTS))
+@pytest.mark.parametrize("value", [True, False, np.True_, 1.0, np.float64(2), "1", 1 + 0j])
+def test_integer_arguments_refuse_bools_and_non_integers(entry, value):
+    name, call = INTEGER_ARGUMENTS[entry]
+    with pytest.raises(TypeError, match=f"{name} must be .*, got {re.escape(repr(value))}") as error:
+        call(value)
+    assert "Unable to cast" not in str(error.value) and "incompatible" not in str(error.value)
+
+
+@pytest.mark.parametrize("entry", sorted(INTEGER_ARGUMENTS))
+@pytest.mark.parametrize("value", [2**63, 2**64 + 1, 10**30, -2**63 - 1, -10**400])
+def test_integer_arguments_beyond_64_bits_are_a_value_error(entry, value):
+    name, call = INTEGER_ARGUMENTS[entry]
+    bound = "at most 2\\*\\*63 - 1" if value > 0 else "at least -2\\*\\*63"
+    with pytest.raises(ValueError, match=f"{name} must be .*{bound}") as error:
+        call(value)
+    assert "Unable to cast" not in str(error.value) and "incompatible" not in str(error.value)
+
+
+@pytest.mark.parametrize("entry", sorted(INTEGER_ARGUMENTS))
+@pytest.mark.parametrize("value", [np.int64(2), np.uint8(3), 2**40])
+def test_integer_arguments_take_ints_and_numpy_integers(entry, value):
+    """A count as large as 2**40 is a valid k and a valid worker count (threads are bounded by the
+    work); tiles as large cost one tile per occupied cell."""
+    name, call = INTEGER_ARGUMENTS[entry]
+    if name == "k" and entry == "nearest k" and value == 2**40:
+        value = 5  # 4 x 2**40 answers do not fit in memory: test_pairs covers that MemoryError
+    call(value)
+
+
+DISTANCE_LIMITS = {
+    "pairs_within": lambda d: cd.pairs_within(_P, _RING, d),
+    "Scene.within": lambda d: _scene().within([0, 0, 0], d),
+    "Scene.pairs_within": lambda d: _scene().pairs_within(d),
+    "dask pairs_within": lambda d: _dask_pairs_d(d),
+}
+
+
+def _dask_pairs_d(d):
+    pytest.importorskip("dask.array")
+    import circledist.dask as dask_module
+    return dask_module.pairs_within(_P, _RING, d)
+
+
+def _owner(entry):
+    return entry.replace("dask ", "")
+
+
+@pytest.mark.parametrize("entry", sorted(DISTANCE_LIMITS))
+@pytest.mark.parametrize("d", [10**400, -10**400])
+def test_distance_limits_beyond_float64_are_a_value_error(entry, d):
+    with pytest.raises(ValueError, match=f"{_owner(entry)}: d must be a .*number >= 0, got an integer of 401 digits"):
+        DISTANCE_LIMITS[entry](d)
+
+
+@pytest.mark.parametrize("entry", sorted(DISTANCE_LIMITS))
+@pytest.mark.parametrize("d", [True, np.True_, "1", None, 1 + 0j])
+def test_distance_limits_refuse_bools_and_non_reals(entry, d):
+    with pytest.raises(TypeError, match=f"{_owner(entry)}: d must be a real number >= 0, got {re.escape(repr(d))}"):
+        DISTANCE_LIMITS[entry](d)
+
+
+@pytest.mark.parametrize("entry", sorted(DISTANCE_LIMITS))
+@pytest.mark.parametrize("d", [float("inf"), float("nan"), -1.0])
+def test_distance_limits_refuse_inf_nan_and_negatives(entry, d):
+    with pytest.raises(ValueError, match=f"{_owner(entry)}: d must be a finite number >= 0"):
+        DISTANCE_LIMITS[entry](d)
 
 
 @pytest.mark.parametrize("far", [1e155, 1e200, 1e300, 1.7e308, -1e300])

@@ -24,7 +24,8 @@ def batch_key(key, ndim, kind, *, fancy):
     """`key` as a tuple with one entry per batch axis (Ellipsis expanded, the missing trailing
     axes taken whole), to be followed by the fields' own axes. Integers, slices and one Ellipsis
     always; with `fancy`, integer and boolean arrays (and lists) too, as NumPy takes them.
-    TypeError for other entries (None, floats), IndexError for more indices than batch axes."""
+    TypeError for other entries (None, which is not supported, floats), IndexError for more
+    indices than batch axes."""
     items = list(key) if isinstance(key, tuple) else [key]
     out, given = [], 0
     for item in items:
@@ -32,7 +33,11 @@ def batch_key(key, ndim, kind, *, fancy):
             out.append(item)
             given += item is not Ellipsis
             continue
-        if item is None or isinstance(item, (bool, np.bool_)):
+        if item is None:
+            raise TypeError(f"{kind}: None (numpy.newaxis) is not supported in a batch index: a batch gains "
+                            "no new axes by indexing (give the fields of to_arrays() new axes and rebuild "
+                            "the shape with from_arrays())")
+        if isinstance(item, (bool, np.bool_)):
             raise TypeError(_not_an_index(kind, item, fancy))
         try:
             out.append(operator.index(item))

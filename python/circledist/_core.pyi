@@ -52,8 +52,9 @@ class Shape:
         Raises
         ------
         TypeError
-            For a single shape (batch shape ``()``), or an entry that is not an index (``None``, a
-            float).
+            For a single shape (batch shape ``()``), or an entry that is not an index (a float). ``None``
+            (``numpy.newaxis``) is not supported: indexing adds no batch axis (give the fields of
+            `to_arrays` new axes and rebuild the shape with `from_arrays`).
         IndexError
             For more indices than batch axes, or an index out of range.
         
@@ -827,6 +828,8 @@ class ClosestPoints:
     param_a, param_b : numpy.ndarray, shape (..., 2)
         Their parameters: ``(t, 0)`` on points, lines, rays, segments and curves, ``(theta, 0)``
         on circles, ``(s, theta)`` on disks (angles in the shape's own frame about its normal).
+        Always in the shape's domain: t >= 0 on rays, t in [0, 1] on segments and curves, t in
+        [0, angle] on arcs, s in [0, radius] on disks and in [inner_radius, outer_radius] on annuli.
     unique : bool or numpy.ndarray
         False when another distinct pair is as close (a line on a circle's axis, concentric
         coplanar circles).
@@ -880,7 +883,7 @@ class _Broadphase:
         ...
     def __len__(self) -> int:
         ...
-    def add(self, parts: list, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+    def add(self, parts: list, workers: int = 1) -> None:
         """
         Adds items numbered on from len(self): parts are (shape, item numbers, group, first row).
         """
@@ -896,7 +899,7 @@ class _Broadphase:
         """
         (indices, lower bounds) of the k elements of smallest lower bound, by bound.
         """
-    def pairs_within(self, groups: list, names: list, d: typing.SupportsFloat | typing.SupportsIndex, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> tuple:
+    def pairs_within(self, groups: list, names: list, d: typing.SupportsFloat | typing.SupportsIndex, workers: int = 1) -> tuple:
         """
         (pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.
         """
@@ -916,9 +919,17 @@ def _count_culled(n: typing.SupportsInt | typing.SupportsIndex) -> None:
     """
     Adds n to stats()['culled'] (used by circledist.Scene).
     """
+def _distance_limit(owner: str, d: typing.Any) -> float:
+    """
+    The distance limit d as a float (finite, >= 0), or a TypeError / ValueError naming it.
+    """
 def _from_arrays(cls: type, arrays: dict, copy: bool) -> typing.Any:
     """
     cls.from_arrays(arrays, copy=copy): how pickle rebuilds a shape.
+    """
+def _integer_argument(owner: str, name: str, value: typing.Any, wanted: str) -> int:
+    """
+    The integer argument `value` (bools refused, 64 bits at most), or a TypeError / ValueError naming it.
     """
 def _query_kinds() -> list[tuple[str, str]]:
     """
@@ -932,7 +943,7 @@ def _sweep_field() -> tuple[str, str]:
     """
     The (name, role) of the optional keyword field every kind takes after its own fields.
     """
-def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> ClosestPoints:
+def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> ClosestPoints:
     """
     Distance, closest points on a and b, their parameters and whether they are unique.
     
@@ -958,9 +969,9 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
         pairs give the same answer with every solver.
     workers : int, optional
         Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-        convention): a positive count, or -1 for every core; default 1. The answers are the same
-        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-        (KeyboardInterrupt).
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called
@@ -996,7 +1007,7 @@ def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Ar
     >>> cd.closest_points(cd.Line([0, 0, -1], [0, 0, 1]), ring).unique  # on the axis: every ring point
     False
     """
-def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> float | numpy.longdouble | numpy.ndarray:
+def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> float | numpy.longdouble | numpy.ndarray:
     """
     Distance between a and b.
     
@@ -1022,9 +1033,9 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
         pairs give the same answer with every solver.
     workers : int, optional
         Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-        convention): a positive count, or -1 for every core; default 1. The answers are the same
-        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-        (KeyboardInterrupt).
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called
@@ -1073,7 +1084,7 @@ def distance(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLik
     ...
     ValueError: solver must be None, 'default', 'companion', 'polished', 'bracketing' or 'eigen', got 'newton'
     """
-def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> float | numpy.longdouble | numpy.ndarray:
+def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> float | numpy.longdouble | numpy.ndarray:
     """
     ``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.
     
@@ -1102,9 +1113,9 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
         pairs give the same answer with every solver.
     workers : int, optional
         Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-        convention): a positive count, or -1 for every core; default 1. The answers are the same
-        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-        (KeyboardInterrupt).
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called
@@ -1136,7 +1147,7 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
     >>> cd.distance_if_within(line, ring, [0.4, 0.6])
     array([inf, 0.5])
     """
-def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> bool | numpy.ndarray:
+def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> bool | numpy.ndarray:
     """
     Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.
     
@@ -1162,9 +1173,9 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
         pairs give the same answer with every solver.
     workers : int, optional
         Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-        convention): a positive count, or -1 for every core; default 1. The answers are the same
-        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-        (KeyboardInterrupt).
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called
@@ -1196,7 +1207,7 @@ def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayL
     >>> cd.intersects(ring, [[0, 0, 0], [1, 0, 0]])
     array([False,  True])
     """
-def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, k: int = 1, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> tuple[numpy.ndarray, numpy.ndarray]:
+def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, k: int = 1, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> tuple[numpy.ndarray, numpy.ndarray]:
     """
     The k shapes of b nearest to each shape of a, with their distances.
     
@@ -1227,9 +1238,9 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
         pairs give the same answer with every solver.
     workers : int, optional
         Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-        convention): a positive count, or -1 for every core; default 1. The answers are the same
-        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-        (KeyboardInterrupt).
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called
@@ -1251,11 +1262,15 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
     Raises
     ------
     TypeError
-        When k is not an integer, a or b is not a shape or an array of points, there is no query
-        between their kinds, or `progress` is neither None, a bool nor a callable.
+        When k or `workers` is not an integer (a bool is not), a or b is not a shape or an array of
+        points, there is no query between their kinds, or `progress` is neither None, a bool nor a
+        callable.
     ValueError
-        When k < 1, for an unknown precision or solver, or a worker count that is neither positive
-        nor -1.
+        When k < 1 or k >= 2**63, for an unknown precision or solver, or a worker count that is
+        neither positive nor -1.
+    MemoryError
+        When the answers, two arrays of shape (len(a), k), do not fit in memory (the columns past
+        len(b) are only -1 and inf: a k beyond len(b) costs their memory, nothing more).
     
     See Also
     --------
@@ -1295,7 +1310,7 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
     ...
     ValueError: nearest: k must be an integer >= 1, got 0
     """
-def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
+def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
     """
     Every pair of a and b within distance d of each other, with its distance.
     
@@ -1329,9 +1344,9 @@ def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arra
         pairs give the same answer with every solver.
     workers : int, optional
         Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-        convention): a positive count, or -1 for every core; default 1. The answers are the same
-        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-        (KeyboardInterrupt).
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called
@@ -1435,7 +1450,7 @@ def stats() -> dict[str, int]:
     >>> s["within"], s["decided_by_bounds"], s["distances"], s["solves"]
     (2, 1, 1, 1)
     """
-def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> bool | numpy.ndarray:
+def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, d: numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> bool | numpy.ndarray:
     """
     Whether distance(a, b) <= d.
     
@@ -1464,9 +1479,9 @@ def within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike,
         pairs give the same answer with every solver.
     workers : int, optional
         Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
-        convention): a positive count, or -1 for every core; default 1. The answers are the same
-        bits for any count, and stats() counts every thread's work. Ctrl-C stops a long batch
-        (KeyboardInterrupt).
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called

@@ -13,7 +13,6 @@ Needs the `circledist[dask]` extra (dask[array]; distributed for clusters).
 
 import functools
 import math
-import numbers
 import operator
 import re
 
@@ -621,11 +620,9 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
         results are computed.
     """
     if tiles is not None:
-        if isinstance(tiles, bool) or not isinstance(tiles, numbers.Integral):
-            raise TypeError(f"pairs_within: tiles must be an integer >= 1, got {tiles!r}")
+        tiles = _core._integer_argument("pairs_within", "tiles", tiles, "an integer >= 1")
         if tiles < 1:
-            raise ValueError(f"pairs_within: tiles must be an integer >= 1, got {int(tiles)}")
-        tiles = int(tiles)
+            raise ValueError(f"pairs_within: tiles must be an integer >= 1, got {tiles}")
     self_pairs = b is None
     a = _as_dask_shape(a)
     b = a if self_pairs else _as_dask_shape(b)

@@ -24,8 +24,6 @@ from __future__ import annotations
 from array import array
 from typing import Iterable, Sequence
 
-import numbers
-
 import numpy as np
 
 from . import _core
@@ -153,13 +151,9 @@ class _Group:
 
 
 def _limit(owner: str, d) -> float:
-    """A distance limit: a real number >= 0 (strings, None and NaN are errors)."""
-    if isinstance(d, (str, bytes, bool, np.bool_)) or not isinstance(d, numbers.Real):
-        raise TypeError(f"{owner}: d must be a real number >= 0, got {d!r}")
-    d = float(d)
-    if not d >= 0:
-        raise ValueError(f"{owner}: d must be a number >= 0, got {d}")
-    return d
+    """A distance limit: a finite real number >= 0 (strings, bools, None, NaN and inf are errors),
+    read by the reader every entry point's d goes through."""
+    return _core._distance_limit(owner, d)
 
 
 class Scene:
@@ -527,10 +521,10 @@ class Scene:
         KeyError
             When `shape` or a name in `exclude` is not a scene shape's name.
         TypeError
-            When k is not an integer, or there is no query between `shape`'s kind and a kind
-            in the scene.
+            When k is not an integer (a bool is not), or there is no query between `shape`'s
+            kind and a kind in the scene.
         ValueError
-            When k < 1 or `shape` is a batch.
+            When k < 1 or k >= 2**63, or `shape` is a batch.
 
         Examples
         --------
@@ -544,9 +538,7 @@ class Scene:
         """
         shape, skip = self._resolve(shape)
         skip |= {self._lookup(n) for n in exclude}
-        if isinstance(k, (bool, np.bool_)) or not isinstance(k, (int, np.integer)):
-            raise TypeError(f"Scene.nearest: k must be an integer >= 1, got {k!r}")
-        k = int(k)
+        k = _core._integer_argument("Scene.nearest", "k", k, "an integer >= 1")
         if k < 1:
             raise ValueError(f"Scene.nearest: k must be an integer >= 1, got {k}")
         bp = self._build()
@@ -622,7 +614,7 @@ class Scene:
         TypeError
             When d is not a real number, or there is no query between the kinds.
         ValueError
-            When d is negative or NaN, or `shape` is a batch.
+            When d is negative, NaN or inf, or `shape` is a batch.
 
         Examples
         --------
@@ -666,7 +658,7 @@ class Scene:
         TypeError
             When d is not a real number, or the scene holds two kinds without a query.
         ValueError
-            When d is negative or NaN.
+            When d is negative, NaN or inf.
 
         Examples
         --------

@@ -318,6 +318,36 @@ template <class Real, if_float<Real> = 0> BezierCurve3<double> promoted(const Be
   return out;
 }
 
+// A closest point's parameters in the shape's domain: a ray's t >= 0, a segment's and a curve's t
+// in [0, 1], an arc's t in [0, angle], a disk's s in [0, radius], an annulus's s in [inner_radius,
+// outer_radius]. The solvers find a parameter from a point (a foot on the line, a projection's
+// length), and its rounding can leave the domain by an ulp or a few; the point itself, on the
+// shape within the accuracy bar, moves by no more than that rounding times the shape's size. The
+// front end (query.hpp) passes every answer through these, so every pair keeps to the domain.
+// NaN (the empty curve's answer) stays NaN: clamp_param(x, lo, hi) keeps x where it compares false.
+namespace detail {
+template <class Real> Real clamp_param(Real x, Real lo, Real hi) { return x < lo ? lo : x > hi ? hi : x; }
+}  // namespace detail
+template <class Real, class Shape> Vec2<Real> param_in_domain(const Vec2<Real>& param, const Shape&) { return param; }
+template <class Real> Vec2<Real> param_in_domain(const Vec2<Real>& param, const Ray3<Real>&) {
+  return Vec2<Real>(param.x() < 0 ? Real(0) : param.x(), param.y());
+}
+template <class Real> Vec2<Real> param_in_domain(const Vec2<Real>& param, const Segment3<Real>&) {
+  return Vec2<Real>(detail::clamp_param(param.x(), Real(0), Real(1)), param.y());
+}
+template <class Real> Vec2<Real> param_in_domain(const Vec2<Real>& param, const BezierCurve3<Real>&) {
+  return Vec2<Real>(detail::clamp_param(param.x(), Real(0), Real(1)), param.y());
+}
+template <class Real> Vec2<Real> param_in_domain(const Vec2<Real>& param, const Arc3<Real>& a) {
+  return Vec2<Real>(detail::clamp_param(param.x(), Real(0), a.angle), param.y());
+}
+template <class Real> Vec2<Real> param_in_domain(const Vec2<Real>& param, const Disk3<Real>& d) {
+  return Vec2<Real>(detail::clamp_param(param.x(), Real(0), d.radius), param.y());
+}
+template <class Real> Vec2<Real> param_in_domain(const Vec2<Real>& param, const Annulus3<Real>& a) {
+  return Vec2<Real>(detail::clamp_param(param.x(), a.inner_radius, a.outer_radius), param.y());
+}
+
 // v / |v| for any finite nonzero v. |v|^2 overflows for |v| beyond about 1.3e154 (double) and
 // loses digits in the subnormals below about 1e-138: such vectors are first scaled by a power of
 // two (exact) to a largest component in [1, 2). The common case pays one comparison.
