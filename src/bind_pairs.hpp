@@ -11,6 +11,7 @@
 #include <circledist/broadphase.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <optional>
@@ -63,36 +64,57 @@ Volumes volumes_of(const std::vector<const Shape*>& shapes, int workers) {
   return out;
 }
 
-// The hierarchy over a set's volumes, built without the GIL on up to `workers` threads.
-BoundingVolumeHierarchy<double> tree_of(Volumes volumes, int workers) {
-  py::gil_scoped_release release;
-  return BoundingVolumeHierarchy<double>(std::move(volumes), 4, workers);
+// Runs build(interrupted) without the GIL, `interrupted` asking for Ctrl-C (SignalCheck) now and
+// then: a build it stopped (BuildInterrupted) raises KeyboardInterrupt here.
+template <class Build> auto interruptible(Build&& build) {
+  SignalCheck signals;
+  const Interrupted interrupted = std::ref(signals);
+  try {
+    py::gil_scoped_release release;
+    return build(interrupted);
+  } catch (const BuildInterrupted&) {
+    signals.raise_if_seen();
+    throw;
+  }
 }
 
-// The culling of queries a against a set b: a's volumes, their spatial order and scale, and the
+// The hierarchy over a set's volumes, built without the GIL on up to `workers` threads.
+BoundingVolumeHierarchy<double> tree_of(Volumes volumes, int workers) {
+  return interruptible([&](const Interrupted& interrupted) {
+    return BoundingVolumeHierarchy<double>(std::move(volumes), 4, workers, interrupted);
+  });
+}
+
+// The culling of queries a against a set b: a's volumes, their spatial order, and the
 // hierarchy over b's volumes. With workers to spare, a's side is made on a thread of its own
 // while b's tree is built on the workers, so that each side's steps that one thread takes (the
-// allocations, the tree's top, the order's last merge) run beside the other's work. Neither side
-// checks for Ctrl-C: milliseconds of work.
+// allocations, the tree's top, the order's last merge) run beside the other's work. The volumes
+// and the tree's build stop on Ctrl-C (interruptible).
 struct Culling {
   Volumes va;
   std::vector<BroadIndex> order;
-  double scale_a = 0;
   BoundingVolumeHierarchy<double> tree;
 
   Culling(const Shape& a, const Shape& b, int workers) {
-    const auto volumes = [](const Shape& s, int threads) {
+    interruptible([&](const Interrupted& interrupted) {
+      build(a, b, workers, interrupted);
+      return 0;
+    });
+  }
+
+ private:
+  void build(const Shape& a, const Shape& b, int workers, const Interrupted& interrupted) {
+    const auto volumes = [&](const Shape& s, int threads) {
       Volumes out(static_cast<size_t>(flat_size(s)));
-      run_in_chunks(flat_size(s), threads, [&](Index begin, Index end) { fill_volumes(s, begin, end, out.data()); },
-                    [](Index) { return false; });
+      if (!run_in_chunks(flat_size(s), threads, [&](Index begin, Index end) { fill_volumes(s, begin, end, out.data()); },
+                         [&](Index) { return interrupted(); }))
+        throw BuildInterrupted();
       return out;
     };
     const auto side_a = [&](int threads) {
       va = volumes(a, threads);
       order = spatial_order(va, threads);
-      scale_a = scale_of(va);
     };
-    py::gil_scoped_release release;
     std::thread thread;
     std::exception_ptr failure;
     if (workers > 1) {
@@ -109,7 +131,7 @@ struct Culling {
     }
     if (!thread.joinable()) side_a(workers);
     try {
-      tree = BoundingVolumeHierarchy<double>(volumes(b, workers), 4, workers);
+      tree = BoundingVolumeHierarchy<double>(volumes(b, workers), 4, workers, interrupted);
     } catch (...) {
       if (thread.joinable()) thread.join();
       throw;
@@ -166,37 +188,93 @@ struct StagedProgress {
   }
 };
 
+// The most candidate pairs pairs_within stores by default (16 bytes each, twice while they are
+// sorted, and the answers' 24 bytes a pair on top): beyond them it refuses (max_pairs).
+constexpr Index kDefaultMaxPairs = 100000000;
+
+// A count with thousands separators, for messages.
+std::string grouped(Index n) {
+  std::string digits = std::to_string(n), out;
+  for (size_t k = 0; k < digits.size(); ++k) {
+    if (k > 0 && (digits.size() - k) % 3 == 0) out += ',';
+    out += digits[k];
+  }
+  return out;
+}
+
+// max_pairs= of the pairs queries: None (no limit) or an integer >= 0; -1 stands for None.
+Index max_pairs_of(const char* owner, py::handle max_pairs) {
+  if (max_pairs.is_none()) return -1;
+  constexpr const char* wanted = "an integer >= 0 or None";
+  const long long value = integer_of(owner, "max_pairs", max_pairs, wanted);
+  if (value < 0)
+    throw py::value_error(std::string(owner) + ": max_pairs must be " + wanted + ", got " + std::to_string(value));
+  return Index(value);
+}
+
 // Candidate pairs (i, j), i in [0, n), found by find(begin, end, out) over chunks of [0, n) (the
 // positions of a spatial order of the queries) on `workers` threads, then sorted by (i, j): the
 // same list for every worker count. find's positions [begin, end) must name queries no other
 // chunk names (a permutation's positions do), so that each query's pairs come from one chunk:
 // each chunk then counts its queries' pairs and moves them to their place alone, and no thread
 // joins the parts by itself.
-template <class Find> PairList chunked_pairs(Index n, int workers, Find&& find, py::handle progress = py::none()) {
+// max_pairs >= 0: the candidates are counted as they are found, query by query, and once more
+// than max_pairs are, the search stops and MemoryError is raised (owner's name in its message):
+// no more than max_pairs (and the last query's pairs on each thread) are ever held.
+template <class Find>
+PairList chunked_pairs(Index n, int workers, Find&& find, py::handle progress = py::none(), Index max_pairs = -1,
+                       const char* owner = "pairs_within") {
   const Index chunk = chunk_size(n, workers);
   std::vector<PairList> parts(static_cast<size_t>((n + chunk - 1) / chunk));
   std::vector<size_t> start(size_t(n) + 1, 0);  // start[i + 1]: query i's pairs, then where they end
+  std::atomic<Index> found{0};
+  std::atomic<bool> over{false};
   run_released(n, workers, [&](Index begin, Index end) {
     PairList& part = parts[size_t(begin / chunk)];
-    find(begin, end, part);
+    if (max_pairs < 0) {
+      find(begin, end, part);
+    } else {
+      for (Index k = begin; k < end && !over.load(std::memory_order_relaxed); ++k) {
+        const Index before = Index(part.size());
+        find(k, k + 1, part);
+        const Index added = Index(part.size()) - before;
+        if (found.fetch_add(added, std::memory_order_relaxed) + added > max_pairs) over.store(true, std::memory_order_relaxed);
+      }
+      if (over.load(std::memory_order_relaxed)) {
+        PairList().swap(part);
+        return;
+      }
+    }
     for (const auto& p : part) ++start[size_t(p.first) + 1];
   }, progress, chunk);
-  py::gil_scoped_release release;
-  for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-  PairList out(start.back());
-  std::vector<size_t> at(start.begin(), start.end() - 1);
-  const auto no_interrupt = [](Index) { return false; };  // milliseconds of copying and sorting
-  run_in_chunks(Index(parts.size()), workers, [&](Index first, Index last) {
+  if (over) {
+    const std::string text = std::string(owner) + ": more than max_pairs=" + grouped(max_pairs) +
+                             " candidate pairs to test (pairs whose bounds put them within d, and the margin, of each "
+                             "other; every one would be held in memory): pass a smaller d, or a larger max_pairs (None: "
+                             "no limit)";
+    PyErr_SetString(PyExc_MemoryError, text.c_str());
+    throw py::error_already_set();
+  }
+  PairList out;
+  std::vector<size_t> at;
+  {
+    py::gil_scoped_release release;
+    for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+    out.resize(start.back());
+    at.assign(start.begin(), start.end() - 1);
+  }
+  // Copying and sorting a large list takes a good part of a second: Ctrl-C is heard between chunks.
+  run_released(Index(parts.size()), workers, [&](Index first, Index last) {
     for (Index k = first; k < last; ++k) {
       for (const auto& p : parts[size_t(k)]) out[at[size_t(p.first)]++] = p;
       PairList().swap(parts[size_t(k)]);
     }
-  }, no_interrupt, 1);
-  run_in_chunks(n, workers, [&](Index first, Index last) {
+  }, py::none(), 1);
+  run_released(n, workers, [&](Index first, Index last) {
     for (Index i = first; i < last; ++i)
       if (start[size_t(i) + 1] - start[size_t(i)] > 1)
         std::sort(out.begin() + std::ptrdiff_t(start[size_t(i)]), out.begin() + std::ptrdiff_t(start[size_t(i) + 1]));
-  }, no_interrupt);
+  });
   return out;
 }
 
@@ -380,22 +458,22 @@ template <class Keep, class Room, class Put> void keep_in_order(Index count, int
 }
 
 template <class Real>
-py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, const Choice& c) {
+py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, Index max_pairs, const Choice& c) {
   const Shape& other = b ? *b : a;
   const StagedProgress progress(c.progress, 2, flat_size(a));  // the search, the distances
   PairList candidates;
   if (b) {
     const Culling culling(a, *b, c.workers);
-    const double limit = cull_limit(d, std::max(culling.tree.scale(), culling.scale_a), relative_margin(c));
+    const PairLimit<double> limit{d, relative_margin(c)};
     candidates = chunked_pairs(flat_size(a), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(culling.va, culling.order, culling.tree, limit, begin, end, out);
-    }, progress.stage(0));
+    }, progress.stage(0), max_pairs);
   } else {
     const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({&a}, c.workers), c.workers);
-    const double limit = cull_limit(d, tree.scale(), relative_margin(c));
+    const PairLimit<double> limit{d, relative_margin(c)};
     candidates = chunked_pairs(tree.size(), c.workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(tree, limit, begin, end, out);
-    }, progress.stage(0));
+    }, progress.stage(0), max_pairs);
   }
   std::vector<Index> is, js;
   std::vector<Real> distances;
@@ -468,18 +546,19 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   const Volumes& va = culling.va;
   const std::vector<BroadIndex>& order = culling.order;
   const BoundingVolumeHierarchy<double>& tree = culling.tree;
-  const Index n = Index(va.size()), nb = tree.size(), kk = std::min(k, nb);
-  const double scale = std::max(tree.scale(), culling.scale_a);
+  const Index n = Index(va.size()), nb = tree.size(), kk = std::min(k, nb), seeds = std::min(k + 2, nb);
   const Evaluator<Real> evaluate{a, b, c};
   const auto no_interrupt = [](Index) { return false; };  // passes over the queries: milliseconds
   // Four stages: the first search and its distances, the second search and its distances.
   const StagedProgress progress(c.progress, 4, n);
-  // 1. The kk shapes of smallest lower bound: their largest exact distance, tau, bounds the
-  //    kk-th nearest distance from above.
+  // 1. The kk + 2 shapes of smallest lower bound (as Scene.nearest seeds its search): the kk-th
+  //    smallest of their exact distances, tau, bounds the kk-th nearest distance from above. The
+  //    two spare seeds keep a huge shape, whose bound is small and distance large (a ring around
+  //    the set), from setting tau for every query.
   const PairList first = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
     for (Index p = begin; p < end; ++p) {
       const Index i = order[size_t(p)];
-      for (const auto& entry : tree.nearest_by_bound(va[size_t(i)], kk)) out.emplace_back(i, entry.second);
+      for (const auto& entry : tree.nearest_by_bound(va[size_t(i)], seeds)) out.emplace_back(i, entry.second);
     }
   }, progress.stage(0));
   // The lists' distances by position, and where each query's pairs start: every step below is a
@@ -491,20 +570,25 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   {
     py::gil_scoped_release release;
     run_in_chunks(n, c.workers, [&](Index begin, Index end) {
-      for (Index i = begin; i < end; ++i)
-        for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
-          tau[size_t(i)] = std::max(tau[size_t(i)], double(first_distances[p]));
+      std::vector<double> known;
+      for (Index i = begin; i < end; ++i) {
+        known.assign(first_distances.begin() + std::ptrdiff_t(first_start[size_t(i)]),
+                     first_distances.begin() + std::ptrdiff_t(first_start[size_t(i) + 1]));
+        if (Index(known.size()) < kk || kk == 0) continue;
+        std::nth_element(known.begin(), known.begin() + (kk - 1), known.end());
+        tau[size_t(i)] = known[size_t(kk - 1)];
+      }
     }, no_interrupt);
   }
   // 2. Every other shape whose bound is within tau (and the margin): the nearest are among them.
   PairList second;
   std::vector<Real> second_distances;
-  if (kk < nb) {
+  if (seeds < nb) {
     second = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
       for (Index p = begin; p < end; ++p) {
         const Index i = order[size_t(p)];
         const size_t known = first_start[size_t(i)], known_end = first_start[size_t(i) + 1];
-        tree.visit_within(va[size_t(i)], cull_limit(tau[size_t(i)], scale, relative_margin(c)), [&](BroadIndex j, double) {
+        tree.visit_within(va[size_t(i)], PairLimit<double>{tau[size_t(i)], relative_margin(c)}, [&](BroadIndex j, double) {
           for (size_t q = known; q < known_end; ++q)
             if (first[q].second == j) return;
           out.emplace_back(i, j);
@@ -554,17 +638,19 @@ template <class Body> py::tuple with_answer_type(const Choice& c, Body&& body) {
 }
 
 py::tuple run_pairs_within(py::handle a, py::handle b, py::handle d, const py::object& precision,
-                           const py::object& solver, py::handle workers, const py::object& progress) {
+                           const py::object& solver, py::handle workers, const py::object& progress,
+                           py::handle max_pairs) {
   const Side x(a, "pairs_within", "a");
   const std::optional<Side> y = b.is_none() ? std::nullopt : std::optional<Side>(Side(b, "pairs_within", "b"));
   const Shape& other = y ? *y->shape : *x.shape;
   const double limit = limit_of("pairs_within", d);
+  const Index most = max_pairs_of("pairs_within", max_pairs);
   const Choice c(precision, solver, *x.shape, other, workers, progress);
   check_pair("pairs_within", *x.shape, other, c);
   const Shape* second = y ? y->shape : nullptr;
   return with_answer_type(c, [&](auto* tag) {
     using Real = std::remove_pointer_t<decltype(tag)>;
-    return pairs_within_as<Real>(*x.shape, second, limit, c);
+    return pairs_within_as<Real>(*x.shape, second, limit, most, c);
   });
 }
 
@@ -611,29 +697,49 @@ struct SceneBroadphase {
       read.push_back(std::move(part));
     }
     Volumes volumes(static_cast<size_t>(total));
-    group.resize(size_t(start + total));
-    row.resize(group.size());
-    for (const Part& part : read) {
-      const Index count = flat_size(*part.shape);
-      const Index* items = part.items.data();
-      for (Index k = 0; k < count; ++k)
-        if (items[k] < start || items[k] >= start + total)
-          throw py::value_error("_Broadphase.add: item numbers must be the new ones, from len(self) on");
-      // Items in a run (a batch of one kind, or a group's adds alone) are filled in place;
-      // others (a file's mixed kinds) through a buffer.
-      bool run = true;
-      for (Index k = 1; k < count && run; ++k) run = items[k] == items[0] + k;
-      Volumes own(static_cast<size_t>(run ? 0 : count));
-      Volume<double>* to = run && count > 0 ? volumes.data() + (items[0] - start) : own.data();
-      run_released(count, workers, [&](Index begin, Index end) { fill_volumes(*part.shape, begin, end, to); });
-      for (Index k = 0; k < count; ++k) {
-        if (!run) volumes[size_t(items[k] - start)] = own[size_t(k)];
-        group[size_t(items[k])] = part.group;
-        row[size_t(items[k])] = part.first + k;
+    // On any failure (a bad part, Ctrl-C in the volumes or the tree's build) the broadphase is
+    // left as it was: its trees untouched (GrowingHierarchy::add), the new items' entries dropped.
+    try {
+      group.resize(size_t(start + total));
+      row.resize(group.size());
+      for (const Part& part : read) {
+        const Index count = flat_size(*part.shape);
+        const Index* items = part.items.data();
+        for (Index k = 0; k < count; ++k)
+          if (items[k] < start || items[k] >= start + total)
+            throw py::value_error("_Broadphase.add: item numbers must be the new ones, from len(self) on");
+        // Items in a run (a batch of one kind, or a group's adds alone) are filled in place;
+        // others (a file's mixed kinds) through a buffer.
+        bool run = true;
+        for (Index k = 1; k < count && run; ++k) run = items[k] == items[0] + k;
+        Volumes own(static_cast<size_t>(run ? 0 : count));
+        Volume<double>* to = run && count > 0 ? volumes.data() + (items[0] - start) : own.data();
+        run_released(count, workers, [&](Index begin, Index end) { fill_volumes(*part.shape, begin, end, to); });
+        for (Index k = 0; k < count; ++k) {
+          if (!run) volumes[size_t(items[k] - start)] = own[size_t(k)];
+          group[size_t(items[k])] = part.group;
+          row[size_t(items[k])] = part.first + k;
+        }
       }
+      interruptible([&](const Interrupted& interrupted) {
+        tree.add(std::move(volumes), workers, interrupted);
+        return 0;
+      });
+    } catch (...) {
+      group.resize(size_t(start));
+      row.resize(size_t(start));
+      throw;
     }
-    py::gil_scoped_release release;
-    tree.add(std::move(volumes), workers);
+  }
+
+  // The trees merged into one, as pairs_within reads it: circledist.Scene merges them while it
+  // holds its write lock, so that queries reading the tree side by side find nothing to change.
+  void merge(Count workers_given) {
+    const int workers = workers_of(workers_given, "Scene.pairs_within");
+    interruptible([&](const Interrupted& interrupted) {
+      tree.merged(workers, interrupted);
+      return 0;
+    });
   }
 
   // The groups and rows of items (numbers below len(self)).
@@ -657,16 +763,30 @@ struct SceneBroadphase {
     return v;
   }
 
-  // cull_limit(d) for a query shape: the set's scale or the shape's reach, the larger.
-  double limit(py::handle shape, double d) const {
-    return cull_limit(d, std::max(tree.scale(), query(shape).reach()));
+  // The culling limit of d for a query shape: bounds above it are beyond d. Without items, one
+  // limit at least every item's (the set's largest reach or the shape's); with items, each one's
+  // (PairLimit's: the larger of the shape's reach and the item's), as within() culls.
+  py::object limit(py::handle shape, double d, const py::object& items) const {
+    const double reach = query(shape).reach();
+    const PairLimit<double> limit{d};
+    if (items.is_none()) return py::float_(limit(reach, tree.scale()));
+    const auto at = py::array_t<Index, py::array::c_style | py::array::forcecast>::ensure(items);
+    if (!at) throw py::type_error("_Broadphase.limit: items must be an array of item numbers");
+    py::array_t<double> out(at.size());
+    for (Index k = 0; k < at.size(); ++k) {
+      const Index i = at.data()[k];
+      if (i < 0 || i >= tree.size()) throw py::index_error("_Broadphase.limit: no item " + std::to_string(i));
+      out.mutable_data()[k] = limit(reach, tree.volume(i).reach());
+    }
+    return out;
   }
 
-  // The elements whose lower bound to `shape` is within cull_limit(d), with their bounds; sorted.
+  // The elements whose lower bound to `shape` is within their PairLimit of d, with their bounds;
+  // sorted.
   py::tuple within(py::handle shape, double d) const {
     const Volume<double> q = query(shape);
     std::vector<std::pair<Index, double>> found;
-    tree.visit_within(q, cull_limit(d, std::max(tree.scale(), q.reach())), [&](BroadIndex j, double bound) { found.emplace_back(j, bound); });
+    tree.visit_within(q, PairLimit<double>{d}, [&](BroadIndex j, double bound) { found.emplace_back(j, bound); });
     std::sort(found.begin(), found.end());
     std::vector<Index> idx;
     std::vector<double> bounds;
@@ -688,8 +808,10 @@ struct SceneBroadphase {
   // every step on the workers but the list's making (Python objects: the GIL's, here in C, a
   // fraction of what a Python loop over the pairs took). `groups`: the scene's groups as whole
   // batches, in the numbering add() was given; `names`: the items' names.
-  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, Count workers_given) {
+  py::tuple pairs_within(const py::list& groups, const py::list& names, double d, Count workers_given,
+                         py::handle max_pairs) {
     const int workers = workers_of(workers_given, "Scene.pairs_within");
+    const Index most = max_pairs_of("Scene.pairs_within", max_pairs);
     if (Index(names.size()) != tree.size()) throw py::value_error("_Broadphase.pairs_within: one name per item");
     std::vector<const Shape*> shapes;
     for (py::handle g : groups) shapes.push_back(&constructed(g));
@@ -697,16 +819,15 @@ struct SceneBroadphase {
     for (size_t i = 0; i < group.size(); ++i)
       if (group[i] < 0 || group[i] >= G || row[i] < 0 || row[i] >= flat_size(*shapes[size_t(group[i])]))
         throw py::value_error("_Broadphase.pairs_within: the groups do not hold the items added");
-    const auto no_interrupt = [](Index) { return false; };  // passes over the candidates: milliseconds
-    const BoundingVolumeHierarchy<double>* all;
-    {
-      py::gil_scoped_release release;
-      all = &tree.merged(workers);
-    }
-    const double limit = cull_limit(d, all->scale());
+    // Every pass below over the candidates (which may take a good part of a second) hears Ctrl-C
+    // (run_released, interruptible).
+    const BoundingVolumeHierarchy<double>* all = interruptible([&](const Interrupted& interrupted) {
+      return &tree.merged(workers, interrupted);
+    });
+    const PairLimit<double> limit{d};
     const PairList candidates = chunked_pairs(all->size(), workers, [&](Index begin, Index end, PairList& out) {
       candidate_pairs(*all, limit, begin, end, out);
-    });
+    }, py::none(), most, "Scene.pairs_within");
     // The candidates' positions, bucket after bucket (a bucket per pair of groups), in list order
     // within each: each slice of the list counts its pairs per bucket, then places them at the
     // offsets the slices before it leave.
@@ -716,12 +837,12 @@ struct SceneBroadphase {
     };
     std::vector<Index> at(size_t(slices * buckets), 0), bucket_start(size_t(buckets) + 1, 0);
     std::vector<Index> placed(static_cast<size_t>(m));
+    run_released(m, workers, [&](Index first, Index last) {
+      Index* count = at.data() + (first / slice) * buckets;
+      for (Index p = first; p < last; ++p) ++count[bucket(p)];
+    }, py::none(), slice);
     {
       py::gil_scoped_release release;
-      run_in_chunks(m, workers, [&](Index first, Index last) {
-        Index* count = at.data() + (first / slice) * buckets;
-        for (Index p = first; p < last; ++p) ++count[bucket(p)];
-      }, no_interrupt, slice);
       Index total = 0;
       for (Index b = 0; b < buckets; ++b) {
         bucket_start[size_t(b)] = total;
@@ -732,11 +853,11 @@ struct SceneBroadphase {
         }
       }
       bucket_start[size_t(buckets)] = total;
-      run_in_chunks(m, workers, [&](Index first, Index last) {
-        Index* next = at.data() + (first / slice) * buckets;
-        for (Index p = first; p < last; ++p) placed[size_t(next[bucket(p)]++)] = p;
-      }, no_interrupt, slice);
     }
+    run_released(m, workers, [&](Index first, Index last) {
+      Index* next = at.data() + (first / slice) * buckets;
+      for (Index p = first; p < last; ++p) placed[size_t(next[bucket(p)]++)] = p;
+    }, py::none(), slice);
     std::vector<char> hit(size_t(m), 0);
     const Shape limit_d = limit_shape("pairs_within", py::float_(d));
     const StagedProgress progress(py::none(), 1, m);
@@ -745,15 +866,12 @@ struct SceneBroadphase {
       if (count == 0) continue;
       const Shape &A = *shapes[size_t(b / G)], &B = *shapes[size_t(b % G)];
       PairList rows(static_cast<size_t>(count));
-      {
-        py::gil_scoped_release release;
-        run_in_chunks(count, workers, [&](Index begin, Index end) {
-          for (Index k = begin; k < end; ++k) {
-            const auto& [i, j] = candidates[size_t(placed[size_t(first + k)])];
-            rows[size_t(k)] = {row[size_t(i)], row[size_t(j)]};
-          }
-        }, no_interrupt);
-      }
+      run_released(count, workers, [&](Index begin, Index end) {
+        for (Index k = begin; k < end; ++k) {
+          const auto& [i, j] = candidates[size_t(placed[size_t(first + k)])];
+          rows[size_t(k)] = {row[size_t(i)], row[size_t(j)]};
+        }
+      });
       const Choice choice(py::none(), py::none(), A, B, py::int_(workers), py::none());
       Evaluator<bool>{A, B, choice, &limit_d}.run(rows, progress, 0, [&](Index k, bool within) {
         hit[size_t(placed[size_t(first + k)])] = within;
@@ -764,6 +882,7 @@ struct SceneBroadphase {
                   [&](Index p, Index at) { kept[size_t(at)] = candidates[size_t(p)]; });
     py::list out(kept.size());
     for (size_t k = 0; k < kept.size(); ++k) {
+      if (k % 65536 == 65535 && PyErr_CheckSignals() != 0) throw py::error_already_set();  // millions: a second
       PyObject* pair = PyTuple_Pack(2, PyList_GET_ITEM(names.ptr(), kept[k].first), PyList_GET_ITEM(names.ptr(), kept[k].second));
       if (!pair) throw py::error_already_set();
       // A pair of strings is in no cycle: left out of the collector's lists (CPython untracks
@@ -781,9 +900,12 @@ inline void bind_pairs(py::module_& m) {
   m.def(
       "pairs_within",
       [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, Count workers,
-         ProgressLike progress) { return PairsResult(run_pairs_within(a, b, d, precision, solver, workers, progress)); },
+         ProgressLike progress, OptionalCount max_pairs) {
+        return PairsResult(run_pairs_within(a, b, d, precision, solver, workers, progress, max_pairs));
+      },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kPairsWithin());
+      py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(),
+      py::arg("max_pairs") = kDefaultMaxPairs, doc::kPairsWithin());
   m.def(
       "nearest",
       [](ShapeLike a, ShapeLike b, Count k, PrecisionName precision, SolverName solver, Count workers,
@@ -801,14 +923,16 @@ inline void bind_pairs(py::module_& m) {
       .def_property_readonly("scale", [](const SceneBroadphase& s) { return s.tree.scale(); })
       .def_property_readonly("trees", [](const SceneBroadphase& s) { return s.tree.trees(); },
                              "How many trees hold the items (at most log2(len) + 1).")
+      .def("merge", &SceneBroadphase::merge, py::arg("workers") = 1,
+           "Merges the trees into one (pairs_within's tree), the GIL released.")
       .def("locate", &SceneBroadphase::locate, py::arg("items"), "(groups, rows) of items.")
-      .def("limit", &SceneBroadphase::limit, py::arg("shape"), py::arg("d"),
-           "cull_limit(d) for a single shape: bounds above it are beyond d.")
+      .def("limit", &SceneBroadphase::limit, py::arg("shape"), py::arg("d"), py::arg("items") = py::none(),
+           "The culling limit of d for a single shape: one above every item's, or each of items' own.")
       .def("within", &SceneBroadphase::within, py::arg("shape"), py::arg("d"),
-           "(indices, lower bounds) of the elements within cull_limit(d) of a single shape, sorted.")
+           "(indices, lower bounds) of the elements within their culling limit of d of a single shape, sorted.")
       .def("nearest_by_bound", &SceneBroadphase::nearest_by_bound, py::arg("shape"), py::arg("k"),
            "(indices, lower bounds) of the k elements of smallest lower bound, by bound.")
       .def("pairs_within", &SceneBroadphase::pairs_within, py::arg("groups"), py::arg("names"), py::arg("d"),
-           py::arg("workers") = 1,
+           py::arg("workers") = 1, py::arg("max_pairs") = kDefaultMaxPairs,
            "(pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.");
 }

@@ -7,11 +7,13 @@
 #include "shapes.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <limits>
 #include <new>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 
@@ -92,6 +94,34 @@ void run_released(Index size, int workers, Work&& work, py::handle progress = py
   }
   if (!complete || !report_progress(progress, size, size)) throw py::error_already_set();
 }
+
+// Ctrl-C for work that runs with the GIL released and is not cut in run_released's chunks (a
+// tree's build, broadphase.hpp's Interrupted): called now and then from any of the work's
+// threads, it answers whether a signal stopped the work. On the caller's thread (the one Python
+// delivers signals to), every 50 ms as run_released does, it takes the GIL and asks
+// PyErr_CheckSignals, which leaves KeyboardInterrupt set for the caller to raise; other threads
+// read the answer.
+class SignalCheck {
+ public:
+  bool operator()() {
+    if (std::this_thread::get_id() != caller_) return raised_.load(std::memory_order_relaxed);
+    const auto now = std::chrono::steady_clock::now();
+    if (raised_.load(std::memory_order_relaxed) || now - checked_ < std::chrono::milliseconds(50)) return raised_;
+    checked_ = now;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) raised_.store(true, std::memory_order_relaxed);
+    return raised_;
+  }
+  // Throws py::error_already_set (the GIL held) when a signal was seen: the error it left.
+  void raise_if_seen() const {
+    if (raised_) throw py::error_already_set();
+  }
+
+ private:
+  std::thread::id caller_ = std::this_thread::get_id();
+  std::chrono::steady_clock::time_point checked_ = std::chrono::steady_clock::now();
+  std::atomic<bool> raised_{false};
+};
 
 // One query of the table's entry for the caller's (a, b): the kernel's operands in its own order
 // (swapped where the entry is `reversed`), `limit` the distances of within() if any.

@@ -45,6 +45,7 @@ CIRCLEDIST_TYPED_OBJECT(Flags, "bool | numpy.ndarray")
 CIRCLEDIST_TYPED_OBJECT(OptionalShapeLike, "circledist._core.Shape | numpy.typing.ArrayLike | None")
 CIRCLEDIST_TYPED_OBJECT(Number, "float")
 CIRCLEDIST_TYPED_OBJECT(Count, "int")
+CIRCLEDIST_TYPED_OBJECT(OptionalCount, "int | None")
 CIRCLEDIST_TYPED_OBJECT(PairsResult, "tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]")
 CIRCLEDIST_TYPED_OBJECT(NearestResult, "tuple[numpy.ndarray, numpy.ndarray]")
 
@@ -683,7 +684,8 @@ within a shape (one radius for many centers) count once per element.
 
 A bounding-volume hierarchy (the C++ header ``circledist/broadphase.hpp``) culls the pairs that
 cheap exact lower bounds (boxes, balls, the distance from a line to a ball) put beyond d plus a
-margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the shapes reach from the origin;
+margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the pair's two shapes reach from the
+origin, the farther of them, so that a far or huge shape widens only its own pairs' margins;
 float32's eps for float32 answers): no pair the exact distance puts within d is culled. Lines
 and rays are tested against every ball. Each remaining pair is gathered into a batch and
 answered by the kernel `distance` runs, with the GIL released, on `workers` threads.
@@ -698,6 +700,15 @@ inline const char* const kAllPairsProgressParameter = R"(progress : bool or call
     for `nearest`), each counted as ``len(a)`` steps: total is 2 ``len(a)`` for `pairs_within`,
     4 ``len(a)`` for `nearest`, and done never decreases. An exception it raises stops the work
     and propagates.
+)";
+
+// max_pairs= of pairs_within (and Scene.pairs_within, whose docstring says the same).
+inline const char* const kMaxPairsParameter = R"(max_pairs : int or None, default 100_000_000
+    Keyword only. The most candidate pairs (pairs the culling keeps: within d of each other,
+    or within the margin of it, by their bounds) the call holds, each about 16 bytes, more
+    while they are sorted and answered. The candidates are counted while they are found, and
+    once more than max_pairs are, the search stops and MemoryError is raised, instead of
+    memory running out on a d that pairs nearly everything. None: no limit.
 )";
 
 inline const char* kPairsWithin() {
@@ -715,7 +726,7 @@ b : Shape, array_like or None
     itself).
 d : float
     Distance limit, finite and >= 0. Pairs at distance exactly d are included.
-)" + kChoiceParameters + kAllPairsProgressParameter + R"(
+)" + kChoiceParameters + kAllPairsProgressParameter + kMaxPairsParameter + R"(
 Returns
 -------
 i, j : numpy.ndarray of numpy.intp, shape (m,)
@@ -732,8 +743,11 @@ TypeError
     query between the kinds of a and b (even when no pair is near), or `progress` is neither
     None, a bool nor a callable.
 ValueError
-    When d is negative, NaN or inf, for an unknown precision or solver, or a worker count that
-    is neither positive nor -1.
+    When d is negative, NaN or inf, for an unknown precision or solver, a worker count that
+    is neither positive nor -1, or a negative max_pairs.
+MemoryError
+    When more than max_pairs pairs are candidates (raised as soon as the search has counted
+    them, before more memory is taken).
 
 See Also
 --------

@@ -350,3 +350,112 @@ def test_scaled_and_far_scenes_equal_the_distance_matrix(scale, offset):
         idx, dist = cd.nearest(a, b, k=2)
         order = np.lexsort((np.broadcast_to(np.arange(matrix.shape[1]), matrix.shape), matrix), axis=1)[:, :2]
         assert np.array_equal(idx, order) and np.array_equal(dist, np.take_along_axis(matrix, order, axis=1))
+
+
+def _tested(call, total):
+    """How many pairs a call tested exactly: total less the pairs it counted as culled."""
+    cd.reset_stats()
+    answer = call()
+    return answer, total - cd.stats()["culled"]
+
+
+OUTLIERS = {  # one ring of the set made far or huge (the others within a box of 20)
+    "far": dict(center=[1e12, 0.0, 0.0]),
+    "far_diagonal": dict(center=[-3e11, 2e11, 5e10]),
+    "huge": dict(radius=1e9),
+    "far_and_huge": dict(center=[0.0, 4e12, 0.0], radius=1e9),
+}
+
+
+@pytest.mark.parametrize("outlier", list(OUTLIERS))
+def test_one_far_or_huge_shape_costs_only_its_own_pairs(outlier):
+    """The culling margin is each pair's own (from its two shapes' reach from the origin): one
+    ring moved to 1e12 or grown to a radius of 1e9 adds at most its own pairs to the exact tests
+    of pairs_within (one set, two sets), nearest and the Scene's queries (counted by cd.stats()
+    and last_stats), where a margin of the whole set's extent tested every pair; the answers
+    stay the distance matrix's."""
+    rng = np.random.default_rng(21)
+    n, m, d = 400, 150, 0.05
+    fields = dict(center=rng.uniform(-10, 10, (n, 3)), normal=rng.normal(size=(n, 3)), radius=rng.uniform(0.2, 1.0, n))
+    plain = cd.Circle(**fields)
+    for key, value in OUTLIERS[outlier].items():
+        fields[key] = fields[key].copy()
+        fields[key][17] = value
+    rings = cd.Circle(**fields)
+    points = cd.Point(rng.uniform(-10, 10, (m, 3)))
+    matrix = cd.distance(column(rings), rings)
+    cross = cd.distance(column(points), rings)
+
+    (i, j, dist), tested = _tested(lambda: cd.pairs_within(rings, None, d), n * (n - 1) // 2)
+    _, base = _tested(lambda: cd.pairs_within(plain, None, d), n * (n - 1) // 2)
+    ei, ej = np.nonzero(np.triu(matrix <= d, 1))
+    assert np.array_equal(i, ei) and np.array_equal(j, ej) and np.array_equal(dist, matrix[ei, ej])
+    assert tested <= base + n - 1, (tested, base)
+
+    (i, j, dist), tested = _tested(lambda: cd.pairs_within(points, rings, 1.0), m * n)
+    _, base = _tested(lambda: cd.pairs_within(points, plain, 1.0), m * n)
+    ei, ej = np.nonzero(cross <= 1.0)
+    assert np.array_equal(i, ei) and np.array_equal(j, ej) and np.array_equal(dist, cross[ei, ej])
+    assert tested <= base + m, (tested, base)
+
+    (idx, dist), tested = _tested(lambda: cd.nearest(points, rings, k=2), m * n)
+    _, base = _tested(lambda: cd.nearest(points, plain, k=2), m * n)
+    order = np.lexsort((np.broadcast_to(np.arange(n), cross.shape), cross), axis=1)[:, :2]
+    assert np.array_equal(idx, order) and np.array_equal(dist, np.take_along_axis(cross, order, axis=1))
+    assert tested <= base + m, (tested, base)
+
+    names = [f"r{k}" for k in range(n)]
+    scene, plain_scene = cd.Scene(), cd.Scene()
+    scene.extend(names, rings)
+    plain_scene.extend(names, plain)
+    assert scene.pairs_within(d) == [(names[a], names[b]) for a, b in zip(*np.nonzero(np.triu(matrix <= d, 1)))]
+    plain_scene.pairs_within(d)
+    assert scene.last_stats["tested"] <= plain_scene.last_stats["tested"] + n - 1
+    line = cd.Line([-10, 0.5, 0.3], [1, 0.2, 0.1])
+    to_line = np.asarray(cd.distance(line, rings))
+    order = np.lexsort((np.arange(n), to_line))[:3]
+    assert scene.nearest(line, k=3) == [(names[k], to_line[k]) for k in order]
+    plain_scene.nearest(line, k=3)
+    assert scene.last_stats["tested"] <= plain_scene.last_stats["tested"] + 1
+    probe = cd.Point([1.0, 2.0, 0.5])
+    to_probe = np.asarray(cd.distance(probe, rings))
+    assert scene.within(probe, 1.0) == [names[k] for k in np.flatnonzero(to_probe <= 1.0)]
+    plain_scene.within(probe, 1.0)
+    assert scene.last_stats["tested"] <= plain_scene.last_stats["tested"] + 1
+
+
+def test_max_pairs_refuses_a_d_that_pairs_nearly_everything():
+    """Candidates are counted while they are found: past max_pairs the search stops and a
+    MemoryError names the limit (one set, two sets, a Scene), instead of storing them all; at
+    the limit, or with None, every pair comes back. 20,000 points within d of each other (2e8
+    pairs, 3 GB of candidates) are refused without the memory growing."""
+    import resource
+
+    rng = np.random.default_rng(30)
+    points = cd.Point(rng.uniform(0, 1, (300, 3)))
+    total = 300 * 299 // 2
+    message = r"pairs_within: more than max_pairs=1,000 candidate pairs to test"
+    with pytest.raises(MemoryError, match=message):
+        cd.pairs_within(points, None, 10.0, max_pairs=1000)
+    with pytest.raises(MemoryError, match=message):
+        cd.pairs_within(points, points, 10.0, max_pairs=1000, workers=2)
+    for most in (total, None):
+        i, j, _ = cd.pairs_within(points, None, 10.0, max_pairs=most)
+        assert len(i) == total
+    assert len(cd.pairs_within(points, points, 10.0, max_pairs=300 * 300)[0]) == 300 * 300
+    scene = cd.Scene()
+    scene.extend("p", points)
+    with pytest.raises(MemoryError, match="Scene.pairs_within: more than max_pairs=1,000 candidate pairs"):
+        scene.pairs_within(10.0, max_pairs=1000)
+    assert len(scene.pairs_within(10.0, max_pairs=total)) == total
+    for bad, error in ((-1, ValueError), (1.5, TypeError), (True, TypeError), ("10", TypeError)):
+        with pytest.raises(error, match="max_pairs must be an integer >= 0 or None"):
+            cd.pairs_within(points, None, 1.0, max_pairs=bad)
+        with pytest.raises(error, match="max_pairs must be an integer >= 0 or None"):
+            scene.pairs_within(1.0, max_pairs=bad)
+
+    crowd = cd.Point(rng.uniform(0, 1, (20_000, 3)))
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # KiB on Linux
+    with pytest.raises(MemoryError, match=r"more than max_pairs=1,000,000 candidate pairs"):
+        cd.pairs_within(crowd, None, 10.0, max_pairs=1_000_000, workers=2)
+    assert resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before < 300_000

@@ -504,3 +504,185 @@ def test_names_are_checked_as_before_in_batches():
     scene.extend([Name("e0"), "e1", Name("e2")], three)  # str subclasses are strings
     scene.extend("f", three)
     assert scene.names == ["d0", "d1", "d2", "e0", "e1", "e2", "f0", "f1", "f2"]
+
+
+def _prefix_pairs(pairs, names, n):
+    """The pairs among the first n shapes of a list of all pairs (sorted by index)."""
+    index = {name: i for i, name in enumerate(names)}
+    return [p for p in pairs if index[p[1]] < n]
+
+
+def _prefix_nearest(distances, names, n, k):
+    d = distances[:n]
+    order = np.lexsort((np.arange(n), d))[:k]
+    return [(names[i], float(d[i])) for i in order]
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_scene_shared_by_threads_answers_as_serial_queries_do(seed):
+    """Two threads ask pairs_within, one nearest and within, while one adds shapes one by one
+    (and in small batches): each answer is the serial answer of a scene state between the
+    query's start and its end (a prefix of the adds), the scene ends as the serial scene, and
+    nothing raises or crashes (the hierarchy grows with the GIL released while others read)."""
+    import pickle
+    import threading
+    import time
+
+    rng = np.random.default_rng(seed)
+    first, added = 2000, 700
+    n = first + added
+    centers = rng.uniform(0, 1, (n, 3))
+    sweeps = rng.uniform(0, 0.004, n)
+    names = [f"p{i}" for i in range(n)]
+    line = cd.Line([-1, 0.5, 0.5], [1, 0.2, 0.1])
+    probe = cd.Point([0.5, 0.5, 0.5])
+    d = 0.05
+    # Serial references, by brute force over every shape (batched distances).
+    balls = cd.Point(centers, sweep=sweeps)
+    near = np.asarray(cd.within(cd.Point(centers[:, None], sweep=sweeps[:, None]), balls, d))
+    i, j = np.nonzero(np.triu(near, 1))
+    all_pairs = [(names[a], names[b]) for a, b in zip(i, j)]
+    line_distances = np.asarray(cd.distance(line, balls))
+    probe_distances = np.asarray(cd.distance(probe, balls))
+
+    scene = cd.Scene()
+    scene.extend([names[i] for i in range(first)], cd.Point(centers[:first], sweep=sweeps[:first]))
+    scene.nearest(probe)  # the first hierarchy: later adds grow it
+    seen, failures = [], []
+    done = threading.Event()
+
+    def guarded(body):
+        def run():
+            try:
+                body()
+            except BaseException as error:  # noqa: BLE001 (reported by the main thread)
+                failures.append(error)
+                done.set()
+        return run
+
+    def adder():
+        at = first
+        while at < n:
+            if at % 50 == 0 and at + 5 <= n:
+                scene.extend(names[at:at + 5], cd.Point(centers[at:at + 5], sweep=sweeps[at:at + 5]))
+                at += 5
+            else:
+                scene.add(names[at], cd.Point(centers[at], sweep=sweeps[at]))
+                at += 1
+            if at % 64 == 0:
+                time.sleep(0.001)
+        done.set()
+
+    def pairs_reader():
+        while not done.is_set():
+            before = len(scene)
+            got = scene.pairs_within(d)
+            seen.append(("pairs", before, len(scene), got))
+
+    def nearest_reader():
+        while not done.is_set():
+            before = len(scene)
+            got = scene.nearest(line, k=3)
+            inside = scene.within(probe, 0.1)
+            seen.append(("nearest", before, len(scene), got))
+            seen.append(("within", before, len(scene), inside))
+
+    threads = [threading.Thread(target=guarded(f)) for f in (adder, pairs_reader, pairs_reader, nearest_reader)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(120)
+    assert not failures, failures
+    assert not any(t.is_alive() for t in threads)
+    kinds = {kind for kind, *_ in seen}
+    assert kinds == {"pairs", "nearest", "within"}, kinds
+    for kind, before, after, got in seen:
+        if kind == "pairs":
+            serial = [_prefix_pairs(all_pairs, names, m) for m in range(before, after + 1)]
+        elif kind == "nearest":
+            serial = [_prefix_nearest(line_distances, names, m, 3) for m in range(before, after + 1)]
+        else:
+            serial = [[names[i] for i in np.flatnonzero(probe_distances[:m] <= 0.1)] for m in range(before, after + 1)]
+        assert got in serial, (kind, before, after)
+    # The end state: the serial scene's.
+    assert scene.names == names
+    assert scene.pairs_within(d) == all_pairs
+    assert scene.nearest(line, k=3) == _prefix_nearest(line_distances, names, n, 3)
+    serial_scene = cd.Scene()
+    for i in range(n):
+        serial_scene.add(names[i], cd.Point(centers[i], sweep=sweeps[i]))
+    ours, theirs = pickle.loads(pickle.dumps(scene)), serial_scene
+    for name in names[::97]:
+        for key, value in ours[name].to_arrays().items():
+            np.testing.assert_array_equal(value, theirs[name].to_arrays()[key])
+    assert ours.pairs_within(d) == theirs.pairs_within(d) == all_pairs
+
+
+def _tampered(state, how):
+    """A copy of a scene's state with one inconsistency of the family `how`."""
+    import copy
+
+    state = copy.deepcopy(state)
+    groups = [list(g) for g in state["groups"]]
+    state["groups"] = groups
+    if how == "duplicated_ids":  # two rows of a group claim one item; another item is in none
+        groups[0][3] = groups[0][3].copy()
+        groups[0][3][1] = groups[0][3][0]
+    elif how == "swapped_ids":  # every id valid and distinct, but not where item_group/item_row say
+        groups[0][3] = groups[0][3][::-1].copy()
+    elif how == "id_out_of_range":
+        groups[0][3] = groups[0][3].copy()
+        groups[0][3][0] = len(state["names"]) + 5
+    elif how == "row_out_of_range":
+        state["item_row"] = state["item_row"].copy()
+        state["item_row"][0] = 10_000
+    elif how == "group_out_of_range":
+        state["item_group"] = state["item_group"].copy()
+        state["item_group"][0] = len(groups)
+    elif how == "short_item_column":
+        state["item_group"] = state["item_group"][:-1]
+    elif how == "duplicated_name":
+        state["names"][1] = state["names"][0]
+    elif how == "name_not_a_string":
+        state["names"][0] = 3
+    elif how == "fewer_rows_than_ids":
+        groups[0][2] = [f[:-1] for f in groups[0][2]]
+    elif how == "missing_field":
+        groups[0][2] = groups[0][2][:-1]
+    elif how == "unknown_kind":
+        groups[0][1] = "Sphere"
+    elif how == "negative_radius":  # group 0 holds disks (mixed_scene's first kind)
+        groups[0][2] = [f.copy() for f in groups[0][2]]
+        groups[0][2][2][0] = -1.0
+    elif how == "not_a_dict":
+        state = [state]
+    else:
+        raise AssertionError(how)
+    return state
+
+
+TAMPERED = ["duplicated_ids", "swapped_ids", "id_out_of_range", "row_out_of_range", "group_out_of_range",
+            "short_item_column", "duplicated_name", "name_not_a_string", "fewer_rows_than_ids", "missing_field",
+            "unknown_kind", "negative_radius", "not_a_dict"]
+
+
+@pytest.mark.parametrize("how", TAMPERED)
+def test_unpickling_a_tampered_scene_is_a_value_error(how):
+    """A pickle is data: a state whose names, groups and item columns disagree (duplicated ids
+    answered nearest wrongly, silently) or whose shapes are invalid does not load."""
+    import copyreg
+    import pickle
+
+    scene, _ = mixed_scene(61, n=40, box=4.0, kinds=("Disk", "Point"))
+    state = _tampered(scene.__getstate__(), how)
+
+    class Forged:  # pickles as a Scene of the given state (what a tampered file holds)
+        def __reduce__(self):
+            return copyreg._reconstructor, (cd.Scene, object, None), state
+
+    data = pickle.dumps(Forged())
+    with pytest.raises(ValueError, match="Scene: the pickled state is invalid"):
+        pickle.loads(data)
+    # The state as written loads, and answers as the scene does.
+    loaded = pickle.loads(pickle.dumps(scene))
+    assert loaded.nearest([0, 0, 0], k=5) == scene.nearest([0, 0, 0], k=5)

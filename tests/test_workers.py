@@ -110,3 +110,53 @@ def test_ctrl_c_stops_a_long_batch(workers):
     outcome, seconds = out.stdout.split()
     assert outcome == "interrupted", out.stdout
     assert float(seconds) < 0.3 + 0.5, out.stdout
+
+
+# Long phases of the all-pairs queries and of a Scene (setup, then the call SIGINT interrupts):
+# each is seconds of work here at these sizes, most of it a hierarchy's build or passes over the
+# candidates, which hear Ctrl-C as the batches do.
+LONG_PHASES = {
+    "scene_first_query": ("scene = cd.Scene(); scene.extend('p', cd.Point(rng.uniform(0, 100, (N, 3))))",
+                          "scene.nearest([0.0, 0.0, 0.0])"),
+    "scene_pairs_within": ("scene = cd.Scene(); scene.extend('p', cd.Point(rng.uniform(0, 100, (N, 3))))\n"
+                           "scene.nearest([0.0, 0.0, 0.0]); scene.add('x', cd.Point([0.0, 0.0, 0.0]))",
+                           "scene.pairs_within(0.05)"),
+    "pairs_within": ("points = cd.Point(rng.uniform(0, 100, (N, 3)))", "cd.pairs_within(points, None, 0.05)"),
+    "nearest": ("points = cd.Point(rng.uniform(0, 100, (N, 3)))", "cd.nearest(points, points, k=2)"),
+}
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
+@pytest.mark.parametrize("phase", list(LONG_PHASES))
+def test_ctrl_c_stops_the_broadphase_phases(phase):
+    """SIGINT 0.3 s into a Scene's first query (the hierarchy's build), the merge and pairs of
+    Scene.pairs_within, and pairs_within / nearest over a large set: KeyboardInterrupt within
+    half a second; the interrupted scene then answers as before."""
+    setup, call = LONG_PHASES[phase]
+    script = textwrap.dedent("""
+        import os, signal, threading, time
+        import numpy as np
+        import circledist as cd
+        signal.signal(signal.SIGINT, signal.default_int_handler)  # as in the test above
+        rng = np.random.default_rng(2)
+        N = 1_500_000
+    """) + setup + textwrap.dedent(f"""
+        threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        start = time.perf_counter()
+        try:
+            {call}
+            print("finished", time.perf_counter() - start)
+        except KeyboardInterrupt:
+            print("interrupted", time.perf_counter() - start)
+        if "scene" in globals():
+            scene.add("probe", cd.Point([50.0, 50.0, 50.0]))
+            print(scene.nearest([50.0, 50.0, 50.0])[0][0] == "probe")
+        else:
+            print(True)
+    """)
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    outcome, seconds, after = out.stdout.split()
+    assert outcome == "interrupted", out.stdout
+    assert float(seconds) < 0.3 + 0.5, out.stdout
+    assert after == "True"

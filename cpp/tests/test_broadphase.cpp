@@ -1,5 +1,5 @@
 // The broadphase (broadphase.hpp) against brute force: its candidate pairs are exactly the pairs
-// whose lower bound is within the limit (every pair checked), the lower bounds never exceed the
+// whose lower bound is within the pair's own limit (PairLimit, every pair checked), the lower bounds never exceed the
 // exact distance, and no pair the exact distance puts within d is culled. Random mixed sets
 // (lines and rays among them, swept shapes), duplicates, every shape at one spot, d = 0 with
 // touching shapes, empty sets; the k nearest by bound, and the exact k nearest built on them.
@@ -14,6 +14,7 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -58,6 +59,16 @@ Any random_shape(const V& at, int first = 0, int last = 7, double sweep = 0.3) {
   }
 }
 
+// The shape moved by `by` (a far-translated scene).
+template <class S> void translate(Swept<S>& s, const V& by) {
+  S& x = s.shape;
+  if constexpr (std::is_same_v<S, V>) x += by;
+  else if constexpr (std::is_same_v<S, Segment3<double>>) x.p0 += by, x.p1 += by;
+  else if constexpr (std::is_same_v<S, BezierCurve3<double>>) x.control.colwise() += by;
+  else if constexpr (std::is_same_v<S, Line3<double>> || std::is_same_v<S, Ray3<double>>) x.origin += by;
+  else x.center += by;
+}
+
 std::vector<Volume<double>> volumes_of(const std::vector<Any>& shapes) {
   std::vector<Volume<double>> out;
   for (const Any& s : shapes) out.push_back(std::visit([](const auto& x) { return volume(x); }, s));
@@ -82,13 +93,14 @@ long exercised = 0;
 
 bool kept(double bound, double limit) { return !(bound > limit); }
 
-// Checks one pair of sets (b_same: B is A, pairs i < j) at distance d against brute force.
-void check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_same, double d) {
+// Checks one pair of sets (b_same: B is A, pairs i < j) at distance d against brute force, each
+// pair culled at its own limit. Returns the candidates.
+Pairs check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_same, double d) {
   const std::vector<Volume<double>> va = volumes_of(a), vb = volumes_of(b);
   const BoundingVolumeHierarchy<double> tree(vb);
   const BoundingVolumeHierarchy<double> tree_a(va);
   const double scale = std::max(tree.scale(), tree_a.scale());
-  const double limit = cull_limit(d, scale);
+  const PairLimit<double> limit{d};
   Pairs got;
   if (b_same) {
     // In two parts, as threads split the work, joined by sort_pairs.
@@ -108,8 +120,8 @@ void check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_sam
   Pairs expected;
   for (size_t i = 0; i < a.size(); ++i) {
     for (size_t j = b_same ? i + 1 : 0; j < b.size(); ++j) {
-      const double bound = lower_bound(va[i], vb[j]);
-      if (kept(bound, limit)) expected.emplace_back(BroadIndex(i), BroadIndex(j));
+      const double bound = lower_bound(va[i], vb[j]), pair_limit = limit(va[i].reach(), vb[j].reach());
+      if (kept(bound, pair_limit)) expected.emplace_back(BroadIndex(i), BroadIndex(j));
       const double D = exact(a[i], b[j]);
       if (D == D) {
         // Lower bounds hold (up to rounding far below the margin).
@@ -117,7 +129,7 @@ void check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_sam
         // Nothing within d is culled.
         if (D <= d) {
           ++exercised;
-          CHECK(kept(bound, limit));
+          CHECK(kept(bound, pair_limit));
         }
       }
     }
@@ -133,6 +145,7 @@ void check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_sam
       }
   }
   CHECK(std::is_sorted(got.begin(), got.end()));
+  return got;
 }
 
 // The k nearest of B to each shape of A: the k smallest bounds as brute force sorts them, and the
@@ -141,7 +154,6 @@ void check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_sam
 void check_nearest(const std::vector<Any>& a, const std::vector<Any>& b, BroadIndex k) {
   const std::vector<Volume<double>> va = volumes_of(a), vb = volumes_of(b);
   const BoundingVolumeHierarchy<double> tree(vb);
-  const double scale = std::max(tree.scale(), BoundingVolumeHierarchy<double>(va).scale());
   for (size_t i = 0; i < a.size(); ++i) {
     const auto by_bound = tree.nearest_by_bound(va[i], k);
     std::vector<std::pair<double, BroadIndex>> all;
@@ -159,7 +171,7 @@ void check_nearest(const std::vector<Any>& a, const std::vector<Any>& b, BroadIn
     std::set<BroadIndex> tested;
     for (const auto& e : by_bound) tested.insert(e.second);
     if (std::isfinite(tau)) {
-      tree.visit_within(va[i], cull_limit(tau, scale), [&](BroadIndex j, double) { tested.insert(j); });
+      tree.visit_within(va[i], PairLimit<double>{tau}, [&](BroadIndex j, double) { tested.insert(j); });
     } else {
       for (size_t j = 0; j < b.size(); ++j) tested.insert(BroadIndex(j));
     }
@@ -246,6 +258,38 @@ int main() {
     CHECK_NEAR(tilted.hi.y(), 3.5, 1e-15);
     CHECK_NEAR(tilted.lo.z(), 3.0, 1e-15);
     CHECK_NEAR(tilted.hi.z(), 3.0, 1e-15);
+  }
+  // Far and huge shapes: each pair's margin is its own, so one shape moved to 1e12 or grown to a
+  // radius of 1e9 adds at most its own pairs to the candidates (not every pair, as a margin of
+  // the whole set's extent did); whole sets moved far keep every pair within d (the margin of
+  // their coordinates' size), and the candidates stay brute force's under the pair's limit.
+  {
+    const std::vector<Any> base = random_set(300, 6.0, 0, 6);
+    for (const double d : {0.0, 0.3}) {
+      const size_t plain = check_sets(base, base, true, d).size();
+      for (int outlier = 0; outlier < 4; ++outlier) {
+        std::vector<Any> a = base;
+        a[17] = outlier == 0   ? Any(swept(Circle3<double>{V(1e12, 0, 0), V(0, 0, 1), 1.0}, 0.0))
+                : outlier == 1 ? Any(swept(Circle3<double>{V(0, 0, 0), V(0, 0, 1), 1e9}, 0.0))
+                : outlier == 2 ? Any(swept(V(-3e11, 2e11, 5e10), 0.0))
+                               : Any(swept(Line3<double>{V(0, 4e12, 0), V(1, 0, 0)}, 0.0));
+        const size_t with = check_sets(a, a, true, d).size();
+        CHECK(with <= plain + a.size() - 1);
+        check_sets(a, base, false, d);
+        check_nearest(a, base, 3);
+      }
+    }
+    for (const double offset : {1e6, 1e9}) {
+      std::vector<Any> far;
+      for (const Any& s : base) {
+        far.push_back(std::visit([&](auto x) -> Any {
+          translate(x, V(offset, -0.5 * offset, 0.25 * offset));
+          return x;
+        }, s));
+      }
+      check_sets(far, far, true, 0.3);
+      check_nearest(far, far, 2);
+    }
   }
   // Only bounded shapes, then only lines and rays.
   {

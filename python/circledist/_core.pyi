@@ -887,25 +887,29 @@ class _Broadphase:
         """
         Adds items numbered on from len(self): parts are (shape, item numbers, group, first row).
         """
-    def limit(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    def limit(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex, items: typing.Any = None) -> typing.Any:
         """
-        cull_limit(d) for a single shape: bounds above it are beyond d.
+        The culling limit of d for a single shape: one above every item's, or each of items' own.
         """
     def locate(self, items: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> tuple:
         """
         (groups, rows) of items.
         """
+    def merge(self, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+        """
+        Merges the trees into one (pairs_within's tree), the GIL released.
+        """
     def nearest_by_bound(self, shape: typing.Any, k: typing.SupportsInt | typing.SupportsIndex) -> tuple:
         """
         (indices, lower bounds) of the k elements of smallest lower bound, by bound.
         """
-    def pairs_within(self, groups: list, names: list, d: typing.SupportsFloat | typing.SupportsIndex, workers: int = 1) -> tuple:
+    def pairs_within(self, groups: list, names: list, d: typing.SupportsFloat | typing.SupportsIndex, workers: typing.SupportsInt | typing.SupportsIndex = 1, max_pairs: typing.Any = 100000000) -> tuple:
         """
         (pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.
         """
     def within(self, shape: typing.Any, d: typing.SupportsFloat | typing.SupportsIndex) -> tuple:
         """
-        (indices, lower bounds) of the elements within cull_limit(d) of a single shape, sorted.
+        (indices, lower bounds) of the elements within their culling limit of d of a single shape, sorted.
         """
     @property
     def scale(self) -> float:
@@ -1285,7 +1289,8 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
     
     A bounding-volume hierarchy (the C++ header ``circledist/broadphase.hpp``) culls the pairs that
     cheap exact lower bounds (boxes, balls, the distance from a line to a ball) put beyond d plus a
-    margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the shapes reach from the origin;
+    margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the pair's two shapes reach from the
+    origin, the farther of them, so that a far or huge shape widens only its own pairs' margins;
     float32's eps for float32 answers): no pair the exact distance puts within d is culled. Lines
     and rays are tested against every ball. Each remaining pair is gathered into a batch and
     answered by the kernel `distance` runs, with the GIL released, on `workers` threads.
@@ -1310,7 +1315,7 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
     ...
     ValueError: nearest: k must be an integer >= 1, got 0
     """
-def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
+def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None, max_pairs: int | None = 100000000) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
     """
     Every pair of a and b within distance d of each other, with its distance.
     
@@ -1355,6 +1360,12 @@ def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arra
         for `nearest`), each counted as ``len(a)`` steps: total is 2 ``len(a)`` for `pairs_within`,
         4 ``len(a)`` for `nearest`, and done never decreases. An exception it raises stops the work
         and propagates.
+    max_pairs : int or None, default 100_000_000
+        Keyword only. The most candidate pairs (pairs the culling keeps: within d of each other,
+        or within the margin of it, by their bounds) the call holds, each about 16 bytes, more
+        while they are sorted and answered. The candidates are counted while they are found, and
+        once more than max_pairs are, the search stops and MemoryError is raised, instead of
+        memory running out on a d that pairs nearly everything. None: no limit.
     
     Returns
     -------
@@ -1372,8 +1383,11 @@ def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arra
         query between the kinds of a and b (even when no pair is near), or `progress` is neither
         None, a bool nor a callable.
     ValueError
-        When d is negative, NaN or inf, for an unknown precision or solver, or a worker count that
-        is neither positive nor -1.
+        When d is negative, NaN or inf, for an unknown precision or solver, a worker count that
+        is neither positive nor -1, or a negative max_pairs.
+    MemoryError
+        When more than max_pairs pairs are candidates (raised as soon as the search has counted
+        them, before more memory is taken).
     
     See Also
     --------
@@ -1388,7 +1402,8 @@ def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arra
     
     A bounding-volume hierarchy (the C++ header ``circledist/broadphase.hpp``) culls the pairs that
     cheap exact lower bounds (boxes, balls, the distance from a line to a ball) put beyond d plus a
-    margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the shapes reach from the origin;
+    margin of ``sqrt(eps) * (d + 2 * scale)`` (scale: how far the pair's two shapes reach from the
+    origin, the farther of them, so that a far or huge shape widens only its own pairs' margins;
     float32's eps for float32 answers): no pair the exact distance puts within d is culled. Lines
     and rays are tested against every ball. Each remaining pair is gathered into a batch and
     answered by the kernel `distance` runs, with the GIL released, on `workers` threads.

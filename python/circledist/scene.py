@@ -22,7 +22,10 @@ query and the shape are float32 throughout, as the library's precision rule says
 from __future__ import annotations
 
 from array import array
+from contextlib import contextmanager
 from typing import Iterable, Sequence
+
+import threading
 
 import numpy as np
 
@@ -150,6 +153,69 @@ class _Group:
         return self.cls(*arrays[:-1], copy=copy)
 
 
+class _ReadersWriter:
+    """A readers-writer lock: queries read together, a change (an add, the hierarchy's growth)
+    waits for the readers and keeps them out. A waiting writer holds new readers back, so a
+    stream of queries does not starve the adds. `downgrade` turns the writer into a reader with
+    no writer between (a query that first brought the hierarchy up to date then reads it as it
+    left it). Not reentrant: the Scene's public methods take it once and call unlocked helpers."""
+
+    def __init__(self):
+        self._condition = threading.Condition(threading.Lock())
+        self._readers = 0
+        self._writer = False
+        self._waiting = 0  # writers waiting
+
+    def acquire_read(self) -> None:
+        with self._condition:
+            while self._writer or self._waiting:
+                self._condition.wait()
+            self._readers += 1
+
+    def release_read(self) -> None:
+        with self._condition:
+            self._readers -= 1
+            if self._readers == 0:
+                self._condition.notify_all()
+
+    def acquire_write(self) -> None:
+        with self._condition:
+            self._waiting += 1
+            try:
+                while self._writer or self._readers:
+                    self._condition.wait()
+            finally:
+                self._waiting -= 1
+            self._writer = True
+
+    def release_write(self) -> None:
+        with self._condition:
+            self._writer = False
+            self._condition.notify_all()
+
+    def downgrade(self) -> None:
+        with self._condition:
+            self._writer = False
+            self._readers += 1
+            self._condition.notify_all()
+
+    @contextmanager
+    def reading(self):
+        self.acquire_read()
+        try:
+            yield
+        finally:
+            self.release_read()
+
+    @contextmanager
+    def writing(self):
+        self.acquire_write()
+        try:
+            yield
+        finally:
+            self.release_write()
+
+
 def _limit(owner: str, d) -> float:
     """A distance limit: a finite real number >= 0 (strings, bools, None, NaN and inf are errors),
     read by the reader every entry point's d goes through."""
@@ -168,6 +234,10 @@ class Scene:
     Shapes keep the dtypes they were added with (per field: float32, float64 or long double)
     and come back as added; queries measure them as ``circledist.distance`` measures those
     shapes (float32 answers where the query and the shape are float32 throughout).
+
+    A scene may be shared between threads: queries run side by side, while an add (or a query
+    that first brings the hierarchy up to date) runs alone, between them. Each query answers for
+    the scene as it was when it began (every shape added before it, none added during it).
 
     Parameters
     ----------
@@ -200,6 +270,7 @@ class Scene:
     """
 
     def __init__(self, shapes=None):
+        self._lock = _ReadersWriter()
         self._names: list[str] = []
         self._index: dict[str, int] = {}
         self._groups: dict[tuple, _Group] = {}
@@ -216,30 +287,91 @@ class Scene:
 
     # ---- pickling and copying: the stored arrays (the hierarchy is rebuilt on demand) -------
     def __getstate__(self) -> dict:
-        return {"names": list(self._names),
-                "groups": [(key, g.kind, [f.copy() for f in g.fields], g.ids.copy())
-                           for key, g in self._groups.items()],
-                "item_group": np.array(self._item_group, dtype=np.int64),
-                "item_row": np.array(self._item_row, dtype=np.int64),
-                "last_stats": dict(self.last_stats)}
+        with self._current(build=False):
+            return {"names": list(self._names),
+                    "groups": [(key, g.kind, [f.copy() for f in g.fields], g.ids.copy())
+                               for key, g in self._groups.items()],
+                    "item_group": np.array(self._item_group, dtype=np.int64),
+                    "item_row": np.array(self._item_row, dtype=np.int64),
+                    "last_stats": dict(self.last_stats)}
 
     def __setstate__(self, state: dict) -> None:
+        try:
+            self._load(state)
+        except ValueError as error:
+            raise ValueError(f"Scene: the pickled state is invalid: {error}") from None
+        except (TypeError, KeyError, IndexError, AttributeError) as error:
+            raise ValueError(f"Scene: the pickled state is invalid: {type(error).__name__}: {error}") from None
+
+    def _load(self, state: dict) -> None:
+        """The scene of a state __getstate__ wrote, checked: the state may come from anywhere
+        (a pickle is data), and a scene whose items and groups disagree answers wrongly, not
+        loudly. ValueError names what is wrong."""
+        self._lock = _ReadersWriter()
+        if not isinstance(state, dict):
+            raise ValueError(f"expected a dict, got {type(state).__name__}")
         self._names = list(state["names"])
+        n = len(self._names)
+        for i, name in enumerate(self._names):
+            if not isinstance(name, str):
+                raise ValueError(f"name {i} is not a string: {name!r}")
         self._index = {name: i for i, name in enumerate(self._names)}
+        if len(self._index) != n:
+            seen = set()
+            name = next(x for x in self._names if x in seen or seen.add(x))
+            raise ValueError(f"the name {name!r} is given twice")
+        item_group = np.asarray(state["item_group"])
+        item_row = np.asarray(state["item_row"])
+        for label, column in (("item_group", item_group), ("item_row", item_row)):
+            if column.shape != (n,) or (n and column.dtype.kind not in "iu"):
+                raise ValueError(f"{label} must hold one integer per name ({n}), got shape {column.shape}, "
+                                 f"dtype {column.dtype}")
+        item_group, item_row = item_group.astype(np.int64), item_row.astype(np.int64)
         self._groups, self._keys, self._group_list = {}, {}, []
+        owner = np.full(n, -1, np.int64)  # the group that holds each item, from the groups' ids
         for number, (key, kind, fields, ids) in enumerate(state["groups"]):
             key = tuple(key)
+            if kind not in KIND_FIELDS:
+                raise ValueError(f"group {number}: unknown kind {kind!r}")
+            fields = [np.asarray(f) for f in fields]
+            if len(fields) != len(KIND_FIELDS[kind]) + 1:
+                raise ValueError(f"group {number}: a {kind} group has {len(KIND_FIELDS[kind]) + 1} fields "
+                                 f"(the sweep last), got {len(fields)}")
             if len(key) == 2:  # written before groups had dtypes: float64 throughout, with a sweep
                 key = key + (tuple(np.dtype(np.float64) for _ in fields), True)
+            if len(key) != 4 or key[0] != kind or len(key[2]) != len(fields):
+                raise ValueError(f"group {number}: its key {key!r} does not describe a {kind} group")
+            ids = np.asarray(ids)
+            if ids.ndim != 1 or (len(ids) and ids.dtype.kind not in "iu"):
+                raise ValueError(f"group {number}: ids must be a 1-d array of integers")
+            ids = ids.astype(np.int64)
+            for name, f in zip(KIND_FIELDS[kind] + ("sweep",), fields):
+                if f.ndim < 1 or len(f) != len(ids):
+                    raise ValueError(f"group {number}: field {name} has {len(f) if f.ndim else 0} rows for "
+                                     f"{len(ids)} ids")
+            if len(ids) and (ids.min() < 0 or ids.max() >= n):
+                raise ValueError(f"group {number}: an id is not an item number in [0, {n})")
+            rows = np.arange(len(ids))
+            if np.any(owner[ids] != -1) or len(np.unique(ids)) != len(ids):
+                raise ValueError(f"group {number}: an item is held twice (duplicated ids)")
+            owner[ids] = number
+            if np.any(item_group[ids] != number) or np.any(item_row[ids] != rows):
+                raise ValueError(f"group {number}: item_group and item_row do not point at the group's rows")
             g = _Group(kind, [f.shape[1:] for f in fields], [np.dtype(d) for d in key[2]], key[3])
             g.columns = [_Grown(f.shape[1:], data=np.array(f, dtype=np.dtype(d))) for f, d in zip(fields, key[2])]
-            g.id_column = _Grown((), np.int64, np.array(ids, dtype=np.int64))
+            g.id_column = _Grown((), np.int64, ids)
             g.size = len(ids)
+            if len(ids):
+                g.whole()  # the shapes' own checks (finite values, radii, control points, ...)
+            if key in self._groups:
+                raise ValueError(f"group {number}: its key {key!r} is given twice")
             self._groups[key] = g
             self._keys[key] = number
             self._group_list.append(g)
-        self._item_group = array("q", np.asarray(state["item_group"], dtype=np.int64).tobytes())
-        self._item_row = array("q", np.asarray(state["item_row"], dtype=np.int64).tobytes())
+        if np.any(owner == -1):
+            raise ValueError(f"item {int(np.flatnonzero(owner == -1)[0])} is in no group")
+        self._item_group = array("q", item_group.tobytes())
+        self._item_row = array("q", item_row.tobytes())
         self._broadphase = None
         self.last_stats = dict(state["last_stats"])
 
@@ -253,7 +385,8 @@ class Scene:
     @property
     def names(self) -> list[str]:
         """The shapes' names, in insertion order (a new list)."""
-        return list(self._names)
+        with self._lock.reading():
+            return list(self._names)
 
     def add(self, name: str, shape) -> None:
         """Adds one (unbatched) shape under a new name.
@@ -291,6 +424,10 @@ class Scene:
                              "add batches with Scene.extend(names, batch)")
         if not isinstance(name, str):
             raise TypeError(f"Scene: shape names must be strings, got {name!r}")
+        with self._lock.writing():
+            self._add(name, shape)
+
+    def _add(self, name: str, shape) -> None:
         if name in self._index:
             raise ValueError(f"Scene: a shape named {name!r} is already in the scene")
         # One shape: its fields as they are (trailing dimensions and dtypes), no broadcasting to do;
@@ -352,7 +489,8 @@ class Scene:
             a = arrays.get(field, _NO_SWEEP)
             trailing = a.shape[a.ndim - TRAILING_DIMS[field]:] if TRAILING_DIMS[field] else ()
             values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
-        self._insert(names, [(kind, values, np.arange(count), "sweep" in arrays)], distinct=generated)
+        with self._lock.writing():
+            self._insert(names, [(kind, values, np.arange(count), "sweep" in arrays)], distinct=generated)
 
     def _insert(self, names: list, parts: list, distinct: bool = False) -> None:
         """Adds len(names) shapes at once, named in order: parts are (kind, values, positions,
@@ -431,7 +569,11 @@ class Scene:
         >>> s.shape("ring").radius
         array(2.)
         """
-        i = self._lookup(name)
+        with self._current(build=False):
+            return self._single(self._lookup(name))
+
+    def _single(self, i: int):
+        """Item i as a single shape (the groups flushed: under `_current`)."""
         group = self._group_list[self._item_group[i]]
         return group.single(self._item_row[i])
 
@@ -445,6 +587,43 @@ class Scene:
             raise KeyError(f"Scene: no shape named {name!r}") from None
 
     # ---- the hierarchy ---------------------------------------------------------------------
+    def _fresh(self, build: bool, merge: bool) -> bool:
+        """Whether reading needs no change first: no group has rows pending, and (build) the
+        broadphase holds every item, (merge) in one tree."""
+        if any(g.pending_ids for g in self._group_list):
+            return False
+        if not build:
+            return True
+        bp = self._broadphase
+        return bp is not None and len(bp) == len(self._names) and (not merge or bp.trees == 1)
+
+    @contextmanager
+    def _current(self, workers: int = 1, build: bool = True, merge: bool = False):
+        """Read access to the scene, brought up to date first (the groups' pending rows moved into
+        their arrays; build: the shapes added since the last query into the broadphase; merge: its
+        trees merged into one) under the write lock, which then becomes a read lock with no writer
+        between: inside, nothing changes the scene, and other readers may run."""
+        lock = self._lock
+        lock.acquire_read()
+        if not self._fresh(build, merge):
+            lock.release_read()
+            lock.acquire_write()
+            try:
+                for g in self._group_list:
+                    g._flush()
+                if build:
+                    self._build(workers)
+                    if merge:
+                        self._broadphase.merge(workers)
+            except BaseException:
+                lock.release_write()
+                raise
+            lock.downgrade()
+        try:
+            yield
+        finally:
+            lock.release_read()
+
     def _build(self, workers: int = 1):
         """The broadphase over every shape: the shapes added since the last query join it here,
         group by group (its trees grow; none is rebuilt for the shapes already in it)."""
@@ -462,7 +641,6 @@ class Scene:
 
     # ---- evaluation helpers ----------------------------------------------------------------
     def _check_kinds(self, kind: str, items: Iterable[int] | None = None) -> None:
-        self._build()
         supported = _supported()
         for g in self._group_list:
             if (kind, g.kind) not in supported:
@@ -489,7 +667,7 @@ class Scene:
         """A query shape, or the name of a scene shape (which then is not its own answer)."""
         if isinstance(shape, str):
             i = self._lookup(shape)
-            return self.shape(shape), {i}
+            return self._single(i), {i}
         if not isinstance(shape, _core.Shape):
             shape = _core.Point(shape)
         if shape.batch_shape != ():
@@ -536,12 +714,16 @@ class Scene:
         >>> s.nearest("ball0")
         [('ball1', 1.0)]
         """
-        shape, skip = self._resolve(shape)
-        skip |= {self._lookup(n) for n in exclude}
         k = _core._integer_argument("Scene.nearest", "k", k, "an integer >= 1")
         if k < 1:
             raise ValueError(f"Scene.nearest: k must be an integer >= 1, got {k}")
-        bp = self._build()
+        with self._current():
+            return self._nearest(shape, k, exclude)
+
+    def _nearest(self, shape, k: int, exclude: Sequence[str]) -> list[tuple[str, float]]:
+        shape, skip = self._resolve(shape)
+        skip |= {self._lookup(n) for n in exclude}
+        bp = self._broadphase
         self._check_kinds(shape.kind)
         n = len(self._names)
         available = n - len(skip)
@@ -571,10 +753,13 @@ class Scene:
         chunk = max(16, 2 * k)
         at = 0
         while at < len(items):
+            # Past a bound above every item's limit, none is left to test; before it, each item's
+            # own limit (its pair's margin) decides.
             if np.isfinite(tau) and bound[at] > bp.limit(shape, tau):
                 break
             part = items[at:at + chunk]
             if np.isfinite(tau):
+                part = part[bound[at:at + chunk] <= bp.limit(shape, tau, part)]
                 d = self._evaluate(shape, part, _core.distance_if_within, tau)
             else:
                 d = self._evaluate(shape, part, _core.distance)
@@ -584,7 +769,7 @@ class Scene:
                     known[i] = v
             if len(known) >= k:
                 tau = float(np.partition(np.fromiter(known.values(), float), k - 1)[k - 1])
-            at += len(part)
+            at += chunk
             chunk = min(2 * chunk, 4096)
         best = sorted(known.items(), key=lambda kv: (kv[1], kv[0]))[:k]
         culled = available - tested
@@ -624,9 +809,13 @@ class Scene:
         >>> s.within(cd.Segment([0, 1, 0], [3, 1, 0]), 0.5)
         ['ball0', 'ball1']
         """
-        shape, skip = self._resolve(shape)
         d = _limit("Scene.within", d)
-        bp = self._build()
+        with self._current():
+            return self._within(shape, d)
+
+    def _within(self, shape, d: float) -> list[str]:
+        shape, skip = self._resolve(shape)
+        bp = self._broadphase
         self._check_kinds(shape.kind)
         items, _ = bp.within(shape, d)
         items = items[~np.isin(items, np.fromiter(skip, np.int64, len(skip)))]
@@ -636,7 +825,7 @@ class Scene:
         self.last_stats = {"shapes": len(self._names), "tested": len(items), "culled": culled}
         return [self._names[i] for i in items[hit]]
 
-    def pairs_within(self, d: float, *, workers: int = 1) -> list[tuple[str, str]]:
+    def pairs_within(self, d: float, *, workers: int = 1, max_pairs: int | None = 100_000_000) -> list[tuple[str, str]]:
         """Every pair of scene shapes within distance d of each other.
 
         Parameters
@@ -646,6 +835,11 @@ class Scene:
         workers : int, default 1
             Keyword only. Threads for the broadphase and the exact tests (SciPy's convention: -1
             for every core); the answer is the same for any count.
+        max_pairs : int or None, default 100_000_000
+            Keyword only. The most candidate pairs (pairs the culling keeps: within d of each
+            other, or within the margin of it, by their bounds) the query holds; once more than
+            max_pairs are counted, the search stops and MemoryError is raised, instead of memory
+            running out on a d that pairs nearly everything. None: no limit.
 
         Returns
         -------
@@ -658,7 +852,9 @@ class Scene:
         TypeError
             When d is not a real number, or the scene holds two kinds without a query.
         ValueError
-            When d is negative, NaN or inf.
+            When d is negative, NaN or inf, or max_pairs negative.
+        MemoryError
+            When more than max_pairs pairs are candidates.
 
         Examples
         --------
@@ -669,7 +865,11 @@ class Scene:
         [('ball0', 'ball1')]
         """
         d = _limit("Scene.pairs_within", d)
-        bp = self._build(workers)
+        with self._current(workers, merge=True):
+            return self._pairs_within(d, workers, max_pairs)
+
+    def _pairs_within(self, d: float, workers, max_pairs) -> list[tuple[str, str]]:
+        bp = self._broadphase
         supported = _supported()
         groups = self._group_list
         kinds = [g.kind for g in groups]
@@ -681,7 +881,7 @@ class Scene:
                     raise TypeError(f"circledist has no query between a {ka} and a {kb} (the scene holds both)")
         # Candidates, exact tests, their order (i, j) and the list of names, in C++ (on the workers
         # but the list).
-        pairs, tested = bp.pairs_within([g.whole() for g in groups], self._names, d, workers)
+        pairs, tested = bp.pairs_within([g.whole() for g in groups], self._names, d, workers, max_pairs)
         n = len(self._names)
         culled = n * (n - 1) // 2 - tested
         _core._count_culled(culled)
@@ -718,7 +918,11 @@ class Scene:
         >>> s.distance_matrix(["ball0"], ["ball1", "ball2"])
         array([[1., 4.]])
         """
-        bp = self._build()
+        with self._current():
+            return self._distance_matrix(a_names, b_names)
+
+    def _distance_matrix(self, a_names: Sequence[str], b_names: Sequence[str]) -> np.ndarray:
+        bp = self._broadphase
         ia = np.array([self._lookup(n) for n in a_names], dtype=np.int64)
         ib = np.array([self._lookup(n) for n in b_names], dtype=np.int64)
         (group_a, row_a), (group_b, row_b) = bp.locate(ia), bp.locate(ib)

@@ -22,14 +22,18 @@
 // Margin: the bounds are exact up to rounding (a few eps times the coordinates' size), and the
 // exact distances the caller compares with d are accurate to about as much. Culling keeps every
 // pair whose bound is within cull_limit(d, scale) = d + sqrt(eps) (d + 2 scale), scale the larger
-// of both sets' scale() (their shapes' reach from the origin): every pair at distance <= d, as
-// the caller's exact test computes it, is a candidate.
+// of the pair's two reaches from the origin (Volume::reach: the size of the coordinates the
+// pair's bound and exact distance are computed from): every pair at distance <= d, as the
+// caller's exact test computes it, is a candidate. The margin is the pair's own (a PairLimit), so
+// a far or huge shape widens only its own pairs' margins, not every pair's: a tree node's limit
+// is that of the largest reach under it, at least every shape's under it.
 #pragma once
 
 #include "bounds.hpp"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -71,7 +75,29 @@ template <class Real> struct Volume {
   }
 };
 
+// A build stopped by its `interrupted` callback (BoundingVolumeHierarchy, GrowingHierarchy): the
+// caller's signal to give up (a Ctrl-C). What was being built is dropped; nothing else changed.
+struct BuildInterrupted : std::exception {
+  const char* what() const noexcept override { return "circledist: the broadphase build was interrupted"; }
+};
+
+// A long build's way out: `interrupted` (empty: never) is asked at every large node of the tree
+// (BoundingVolumeHierarchy::kStopCheck shapes or more: a few hundredths of a second of work
+// apart), from whichever of the build's threads reaches it; once it answers true, every thread
+// stops at its next node and the build throws BuildInterrupted.
+using Interrupted = std::function<bool()>;
+
 namespace detail {
+
+struct Stop {
+  const Interrupted& interrupted;
+  std::atomic<bool> stopped{false};
+  bool operator()() {
+    if (stopped.load(std::memory_order_relaxed)) return true;
+    if (interrupted && interrupted()) stopped.store(true, std::memory_order_relaxed);
+    return stopped.load(std::memory_order_relaxed);
+  }
+};
 
 // Runs work(begin, end) over up to `threads` contiguous slices of [0, size), side by side, the
 // caller's thread taking the last; a slice is at least `smallest` long (a thread costs tens of
@@ -237,6 +263,22 @@ template <class Real> Real cull_limit(Real d, Real scale, Real relative = std::s
   return d + relative * (d + 2 * scale);
 }
 
+// The culling limit of each pair from its own reaches: cull_limit(d, max(reach_a, reach_b)).
+// cull_limit grows with the scale (every step of it rounds monotonically), so the limit of a
+// node (of the largest reach under it) is at least that of each shape under it.
+template <class Real> struct PairLimit {
+  Real d;
+  Real relative = std::sqrt(std::numeric_limits<Real>::epsilon());
+  Real operator()(Real reach_a, Real reach_b) const { return cull_limit(d, std::max(reach_a, reach_b), relative); }
+};
+
+namespace detail {
+// The limit of a pair (or of a query and a node) of reaches a and b: a fixed limit (one for every
+// pair, as a caller with a set-wide scale passes it) or a PairLimit's.
+template <class Real> Real limit_of(Real fixed, Real, Real) { return fixed; }
+template <class Real> Real limit_of(const PairLimit<Real>& limit, Real a, Real b) { return limit(a, b); }
+}  // namespace detail
+
 // The largest reach from the origin of the shapes of a set (0 for none; overflowed volumes,
 // always candidates, do not count): the `scale` of cull_limit.
 template <class Real> Real scale_of(const std::vector<Volume<Real>>& volumes) {
@@ -251,10 +293,13 @@ template <class Real> class BoundingVolumeHierarchy {
   BoundingVolumeHierarchy() = default;
 
   // `leaf_size`: shapes per leaf at most. `threads`: how many threads build the tree's top
-  // subtrees side by side (the tree is the same for any count).
-  explicit BoundingVolumeHierarchy(std::vector<Volume<Real>> volumes, int leaf_size = 4, int threads = 1)
+  // subtrees side by side (the tree is the same for any count). `interrupted`: see Interrupted
+  // (BuildInterrupted is thrown when it stopped the build).
+  explicit BoundingVolumeHierarchy(std::vector<Volume<Real>> volumes, int leaf_size = 4, int threads = 1,
+                                   const Interrupted& interrupted = {})
       : volumes_(std::move(volumes)), leaf_size_(std::max(1, leaf_size)) {
     threads = std::max(1, threads);
+    detail::Stop stop{interrupted};
     std::vector<BroadIndex> unbounded;
     index_.reserve(volumes_.size());
     for (BroadIndex i = 0; i < BroadIndex(volumes_.size()); ++i)
@@ -286,15 +331,16 @@ template <class Real> class BoundingVolumeHierarchy {
     if (bounded_ > 0) {
       try {
         nodes_.resize(size_t(node_count(bounded_)));
-        build(0, bounded_, 0, threads);
+        build(0, bounded_, 0, threads, stop);
       } catch (...) {
         if (making.joinable()) making.join();
         throw;
       }
     }
     if (making.joinable()) making.join();
-    else make_buffers();
+    else if (!stop.stopped) make_buffers();
     if (failure) std::rethrow_exception(failure);
+    if (stop.stopped) throw BuildInterrupted();
     // The volumes in the leaves' order, then the unbounded ones: a leaf's shapes lie side by side
     // in memory (queries read them in runs, not scattered over the whole set). Each position is
     // written once, so slices of them are placed side by side.
@@ -317,8 +363,10 @@ template <class Real> class BoundingVolumeHierarchy {
   Real scale() const { return scale_; }
 
   // Calls visit(j, bound) for every shape j whose lower bound to q is <= limit (or unknown), the
-  // tree's shapes first, in no particular order.
-  template <class Visit> void visit_within(const Volume<Real>& q, Real limit, Visit&& visit) const {
+  // tree's shapes first, in no particular order. `limit`: a Real (every pair's), or a
+  // PairLimit<Real> (each pair's from the reaches of q and of shape j; a node's from its largest).
+  template <class Limit, class Visit> void visit_within(const Volume<Real>& q, const Limit& limit, Visit&& visit) const {
+    const Real reach = q.reach();
     if (!nodes_.empty()) {
       // Depth first, on a stack of fixed size: a median split halves the count, so the depth is
       // below 64 and the stack holds at most one pending sibling per level.
@@ -328,11 +376,12 @@ template <class Real> class BoundingVolumeHierarchy {
       while (top > 0) {
         const BroadIndex at = stack[--top];
         const Node& node = nodes_[size_t(at)];
-        if (!node_within(q, node, limit)) continue;
+        if (!node_within(q, node, detail::limit_of(limit, reach, node.reach))) continue;
         if (node.count > 0) {
           for (BroadIndex k = node.first; k < node.first + node.count; ++k) {
-            const Real bound = lower_bound(q, volumes_[size_t(k)]);
-            if (!(bound > limit)) visit(index_[size_t(k)], bound);
+            const Volume<Real>& v = volumes_[size_t(k)];
+            const Real bound = lower_bound(q, v);
+            if (!(bound > detail::limit_of(limit, reach, v.reach()))) visit(index_[size_t(k)], bound);
           }
         } else {
           stack[top++] = node.right;
@@ -341,8 +390,9 @@ template <class Real> class BoundingVolumeHierarchy {
       }
     }
     for (BroadIndex k = bounded_; k < size(); ++k) {
-      const Real bound = lower_bound(q, volumes_[size_t(k)]);
-      if (!(bound > limit)) visit(index_[size_t(k)], bound);
+      const Volume<Real>& v = volumes_[size_t(k)];
+      const Real bound = lower_bound(q, v);
+      if (!(bound > detail::limit_of(limit, reach, v.reach()))) visit(index_[size_t(k)], bound);
     }
   }
 
@@ -394,6 +444,7 @@ template <class Real> class BoundingVolumeHierarchy {
     Vec3<Real> lo, hi;      // the box of the boxes under the node
     Vec3<Real> center;      // a ball holding the balls under the node
     Real radius = 0;
+    Real reach = 0;         // the largest Volume::reach under the node (for a PairLimit)
     BroadIndex first = 0, count = 0;  // a leaf: the shapes at positions [first, first + count)
     BroadIndex right = 0;             // an inner node: its children are the next node and `right`
   };
@@ -455,8 +506,10 @@ template <class Real> class BoundingVolumeHierarchy {
   // the shapes at positions [first, last).
   struct Extent {
     Vec3<Real> lo = Vec3<Real>::Constant(std::numeric_limits<Real>::infinity()), hi = -lo, clo = lo, chi = hi;
+    Real reach = 0;  // the largest Volume::reach
     void add(const Extent& e) {
       lo = lo.cwiseMin(e.lo), hi = hi.cwiseMax(e.hi), clo = clo.cwiseMin(e.clo), chi = chi.cwiseMax(e.chi);
+      reach = std::max(reach, e.reach);
     }
   };
   Extent extent(BroadIndex first, BroadIndex last) const {
@@ -467,6 +520,7 @@ template <class Real> class BoundingVolumeHierarchy {
       e.hi = e.hi.cwiseMax(v.hi);
       e.clo = e.clo.cwiseMin(v.center);
       e.chi = e.chi.cwiseMax(v.center);
+      e.reach = std::max(e.reach, v.reach());
     }
     return e;
   }
@@ -480,8 +534,12 @@ template <class Real> class BoundingVolumeHierarchy {
     return radius;
   }
 
+  // The fewest shapes under a node at which the build asks whether it is interrupted.
+  static constexpr BroadIndex kStopCheck = 4096;
+
   // Builds the subtree of the shapes at positions [first, last) into nodes_[at, ...).
-  void build(BroadIndex first, BroadIndex last, BroadIndex at, int threads) {
+  void build(BroadIndex first, BroadIndex last, BroadIndex at, int threads, detail::Stop& stop) {
+    if (last - first >= kStopCheck && stop()) return;
     Extent e;
     Real radius = 0;
     // The ball: around the box's center, out to the farthest ball under the node, rounded up a
@@ -515,6 +573,7 @@ template <class Real> class BoundingVolumeHierarchy {
     node.hi = e.hi;
     node.center = center;
     node.radius = radius;
+    node.reach = e.reach;
     if (last - first <= leaf_size_) {
       node.first = first;
       node.count = last - first;
@@ -535,15 +594,15 @@ template <class Real> class BoundingVolumeHierarchy {
     if (threads > 1 && last - first > 4096) {
       std::thread left;
       try {
-        left = std::thread([&] { build(first, middle, at + 1, threads / 2); });
+        left = std::thread([&] { build(first, middle, at + 1, threads / 2, stop); });
       } catch (const std::system_error&) {  // no thread to be had: this one builds both
-        build(first, middle, at + 1, 1);
+        build(first, middle, at + 1, 1, stop);
       }
-      build(middle, last, node.right, threads - threads / 2);
+      build(middle, last, node.right, threads - threads / 2, stop);
       if (left.joinable()) left.join();
     } else {
-      build(first, middle, at + 1, 1);
-      build(middle, last, node.right, 1);
+      build(first, middle, at + 1, 1, stop);
+      build(middle, last, node.right, 1, stop);
     }
   }
 
@@ -562,8 +621,9 @@ template <class Real> class GrowingHierarchy {
   using Tree = BoundingVolumeHierarchy<Real>;
 
   // Adds shapes, numbered size(), size() + 1, ...; `threads` build the new tree (as
-  // BoundingVolumeHierarchy's: the trees are the same for any count).
-  void add(std::vector<Volume<Real>> volumes, int threads = 1) {
+  // BoundingVolumeHierarchy's: the trees are the same for any count). When the build throws
+  // (BuildInterrupted, bad_alloc), the hierarchy is as it was.
+  void add(std::vector<Volume<Real>> volumes, int threads = 1, const Interrupted& interrupted = {}) {
     if (volumes.empty()) return;
     BroadIndex taken = 0;
     size_t keep = trees_.size();
@@ -576,36 +636,45 @@ template <class Real> class GrowingHierarchy {
       all.insert(all.end(), volumes.begin(), volumes.end());
       volumes.swap(all);
     }
+    const BroadIndex added = BroadIndex(volumes.size()) - taken;
+    Tree tree(std::move(volumes), kLeafSize, threads, interrupted);
     trees_.resize(keep);
     first_.resize(keep);
     first_.push_back(size_ - taken);
-    size_ += BroadIndex(volumes.size()) - taken;
-    trees_.emplace_back(std::move(volumes), kLeafSize, threads);
+    size_ += added;
+    trees_.push_back(std::move(tree));
     scale_ = std::max(scale_, trees_.back().scale());
   }
 
   BroadIndex size() const { return size_; }
+  // The volume of shape i (i in [0, size())).
+  const Volume<Real>& volume(BroadIndex i) const {
+    const size_t t = size_t(std::upper_bound(first_.begin(), first_.end(), i) - first_.begin()) - 1;
+    return trees_[t].volume(i - first_[t]);
+  }
   // The largest reach from the origin of a shape of the set: for cull_limit.
   Real scale() const { return scale_; }
   size_t trees() const { return trees_.size(); }
 
   // One tree over every shape, the trees merged first if there are several: for queries over the
-  // whole set (its pairs), which cost O(n) anyway.
-  const Tree& merged(int threads = 1) {
+  // whole set (its pairs), which cost O(n) anyway. When the build throws, the trees stay as
+  // they were.
+  const Tree& merged(int threads = 1, const Interrupted& interrupted = {}) {
     if (trees_.size() != 1) {
       std::vector<Volume<Real>> all;
       all.reserve(size_t(size_));
       for (const Tree& t : trees_)
         for (BroadIndex i = 0; i < t.size(); ++i) all.push_back(t.volume(i));
+      Tree tree(std::move(all), kLeafSize, threads, interrupted);
       trees_.clear();
       first_.assign(1, 0);
-      trees_.emplace_back(std::move(all), kLeafSize, threads);
+      trees_.push_back(std::move(tree));
     }
     return trees_.front();
   }
 
   // BoundingVolumeHierarchy's visit_within over every tree.
-  template <class Visit> void visit_within(const Volume<Real>& q, Real limit, Visit&& visit) const {
+  template <class Limit, class Visit> void visit_within(const Volume<Real>& q, const Limit& limit, Visit&& visit) const {
     for (size_t t = 0; t < trees_.size(); ++t)
       trees_[t].visit_within(q, limit, [&, first = first_[t]](BroadIndex j, Real bound) { visit(first + j, bound); });
   }
@@ -691,9 +760,9 @@ inline void sort_pairs(BroadPairs& pairs, BroadIndex n) {
 // Candidate pairs (i, j), i of `queries` and j of `tree`, whose lower bound is <= limit, for the
 // queries i = order[k], k in [begin, end) (order: e.g. spatial_order(queries)), appended to `out`
 // unsorted. Threads split [0, queries.size()) and sort_pairs joins their parts.
-template <class Real>
+template <class Real, class Limit>
 void candidate_pairs(const std::vector<Volume<Real>>& queries, const std::vector<BroadIndex>& order,
-                     const BoundingVolumeHierarchy<Real>& tree, Real limit, BroadIndex begin, BroadIndex end,
+                     const BoundingVolumeHierarchy<Real>& tree, const Limit& limit, BroadIndex begin, BroadIndex end,
                      BroadPairs& out) {
   for (BroadIndex k = begin; k < end; ++k) {
     const BroadIndex i = order[size_t(k)];
@@ -704,8 +773,8 @@ void candidate_pairs(const std::vector<Volume<Real>>& queries, const std::vector
 // Candidate pairs i < j within the tree's own set, for the shapes i = tree.order()[k], k in
 // [begin, end) (each pair is found from both ends and kept from the one of smaller index),
 // appended to `out` unsorted.
-template <class Real>
-void candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, Real limit, BroadIndex begin, BroadIndex end,
+template <class Real, class Limit>
+void candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, const Limit& limit, BroadIndex begin, BroadIndex end,
                      BroadPairs& out) {
   for (BroadIndex k = begin; k < end; ++k) {
     const BroadIndex i = tree.order()[size_t(k)];
@@ -716,9 +785,9 @@ void candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, Real limit, Broa
 }
 
 // Every candidate pair between two sets, sorted by (i, j) (one thread).
-template <class Real>
+template <class Real, class Limit>
 BroadPairs candidate_pairs(const std::vector<Volume<Real>>& queries, const BoundingVolumeHierarchy<Real>& tree,
-                           Real limit) {
+                           const Limit& limit) {
   BroadPairs out;
   candidate_pairs(queries, spatial_order(queries), tree, limit, 0, BroadIndex(queries.size()), out);
   sort_pairs(out, BroadIndex(queries.size()));
@@ -726,7 +795,7 @@ BroadPairs candidate_pairs(const std::vector<Volume<Real>>& queries, const Bound
 }
 
 // Every candidate pair i < j within one set, sorted (one thread).
-template <class Real> BroadPairs candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, Real limit) {
+template <class Real, class Limit> BroadPairs candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, const Limit& limit) {
   BroadPairs out;
   candidate_pairs(tree, limit, 0, tree.size(), out);
   sort_pairs(out, tree.size());
