@@ -40,7 +40,12 @@ long mode, ``python -m tools.differential``) drive it.  Three parts:
    inner 0 must answer as the disk and inner = outer as the circle, to the bit, distance,
    points, parameters and `unique`: _check_hole), a
    piece tangent to or 1e-16..1e-4 off the inner rim (ann_inner_tangent), far-translated scenes
-   (ann_far_translated).
+   (ann_far_translated).  The effect family (EFFECT_FAMILIES: effect_degenerate, every kind pair):
+   small integer configurations with a center on the other's axis (either way), coaxial,
+   coplanar, concentric, radius 0, inner radius 0 or = outer, where within()'s cheap bounds meet
+   degenerate frames; besides every check below, check_effects_definition holds each effect to
+   its definition on the library's own distance at several limits, swept too, and through the
+   Scene's within and pairs_within.
 
 2. The fast screen (``screen``): an independent one-parameter minimisation in NumPy.  Every
    distance is the minimum over one parameter of a closed form (point-circle, point-disk,
@@ -1298,6 +1303,83 @@ def _fam_ann_far_translated(rng, ka, kb):
     return _fam_far_translated(rng, ka, kb, bases=_ANN_TRANSLATED_BASES)
 
 
+# ---- effects on degenerate configurations ----------------------------------------------------
+_DEGENERATE_MODES = ("axis", "axis_of_a", "coaxial", "coplanar", "concentric", "random")
+_DEGENERATE_WEIGHTS = (0.3, 0.3, 0.1, 0.1, 0.1, 0.1)
+_DEGENERATE_ANGLES = (math.pi / 2, math.pi, 1.5 * math.pi, 2 * math.pi, 1.0)
+
+
+def _small_int_vector(rng, nonzero=False, lo=-2, hi=2):
+    while True:
+        v = rng.integers(lo, hi + 1, size=3).astype(float)
+        if not nonzero or np.any(v != 0):
+            return v
+
+
+def _oblique_normal(rng):
+    """A small integer normal, mostly off the coordinate axes (two or three components nonzero:
+    its unit vector is rounded, and a center on its axis leaves rounding noise in the plane)."""
+    while True:
+        v = _small_int_vector(rng, True)
+        if np.count_nonzero(v) >= 2 or rng.random() < 0.2:
+            return v
+
+
+def _small_shape(rng, kind, c, n):
+    """A shape of `kind` anchored at c (a round's center, a piece's origin or first point, a curve's
+    first control point) along n (a round's normal, a piece's direction half the time), with
+    small integer data: a circle's or disk's radius 0, 1 or 2, an arc's or annulus's 1 or 2, an
+    annulus's inner radius 0..outer (0: the disk, = outer: the circle), a segment of length 0
+    sometimes."""
+    def along():
+        return n * float(rng.choice([1, -1, 2])) if rng.random() < 0.5 else _small_int_vector(rng, True)
+    if kind == "point":
+        return list(c)
+    if kind in ("line", "ray"):
+        return list(c) + list(along())
+    if kind == "segment":
+        return list(c) + list(c + (along() if rng.random() < 0.9 else 0.0))
+    if kind == "bezier":
+        return [list(c)] + [list(c + _small_int_vector(rng)) for _ in range(int(rng.integers(1, 4)))]
+    r = float(rng.integers(0, 3))
+    if kind in ("circle", "disk"):
+        return list(c) + list(n) + [r]
+    r = max(r, 1.0)  # an arc or annulus of radius 0 is a point, on which the unique rules and
+    # _check_hole (inner 0: the disk's answers, inner = outer: the circle's) disagree
+    if kind == "arc":
+        start = _small_int_vector(rng, True)
+        while not np.any(np.cross(start, n)):
+            start = _small_int_vector(rng, True)
+        return list(c) + list(n) + [r] + list(start) + [float(rng.choice(_DEGENERATE_ANGLES))]
+    if kind == "annulus":
+        return list(c) + list(n) + [r, float(rng.integers(0, int(r) + 1))]
+    raise ValueError(kind)
+
+
+def _fam_effect_degenerate(rng, ka, kb):
+    """Small integer configurations where the cheap bounds of within() / intersects()
+    (bounds.hpp) meet degenerate frames: a's anchor on b's axis (k = +-1 or +-2 normals from its
+    center), b's center on a's axis, both on one axis (coaxial), a in b's plane
+    (coplanar), concentric, or random; radii 0..2, inner radius 0..outer. The effects must equal
+    their definition on the distance (check_effects_definition)."""
+    mode = str(rng.choice(_DEGENERATE_MODES, p=_DEGENERATE_WEIGHTS))
+    cb, nb, na = _small_int_vector(rng), _oblique_normal(rng), _oblique_normal(rng)
+    k = float(rng.choice([-2, -1, 1, 2]))
+    if mode == "axis":
+        ca = cb + k * nb
+    elif mode == "axis_of_a":
+        ca = cb - k * na
+    elif mode == "coaxial":
+        na, ca = nb * float(rng.choice([1, -1, 2])), cb + k * nb
+    elif mode == "coplanar":
+        na, ca = nb * float(rng.choice([1, -1])), cb + np.cross(nb, _small_int_vector(rng, lo=-1, hi=1))
+    elif mode == "concentric":
+        ca = cb.copy()
+    else:
+        ca = _small_int_vector(rng)
+    return _small_shape(rng, ka, ca, na), _small_shape(rng, kb, cb, nb)
+
+
 RR = [("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LR = [(lk, rk) for lk in LINEAR for rk in ROUND]
 LR3 = [(lk, rk) for lk in ("line", "ray", "segment") for rk in ROUND]
@@ -1362,6 +1444,10 @@ FAMILIES.update({
     "ann_inner_tangent": (ANN_PAIRS, _fam_ann_inner_tangent),
     "ann_far_translated": (ANN_PAIRS, _fam_ann_far_translated),
 })
+# every kind pair: within() / intersects() / distance_if_within() / Scene.within /
+# Scene.pairs_within against their definition on degenerate small-integer configurations
+FAMILIES["effect_degenerate"] = (KIND_PAIRS, _fam_effect_degenerate)
+EFFECT_FAMILIES = ("effect_degenerate",)
 
 
 def has_round(family):
@@ -4002,11 +4088,112 @@ def reference_check(cd, cases, combo_list=None, stats=None):
     return findings, diags
 
 
+# within(a, b, d) at these multiples of the distance D (0 is intersects), besides the limits
+# D -+ 4x the tolerance that check_cases probes for every case: a bound that decides wrongly
+# shows at one of them whatever its size (the reported upper bound of 2 - sqrt 2 for a distance
+# of sqrt 6 said yes at 0.24 D).
+EFFECT_PROBES = (0.0, 0.25, 0.5, 0.9, 1.1, 2.0)
+EFFECT_SWEEPS = (0.0, 0.5)  # each shape swept by this (a swept shape's distance is max(0, D - sweeps))
+
+
+def _with_sweep(shape, sweep):
+    arrays = {name: value for name, value in shape.to_arrays().items() if name != "sweep"}
+    return type(shape)(**arrays, sweep=sweep)
+
+
+def check_effects_definition(cd, cases, sweeps=EFFECT_SWEEPS, scenes=True):
+    """Every effect against its definition on the library's own distance D (effects.hpp):
+    within(a, b, d) == (D <= d + 64 eps (s + d)) and intersects(a, b) == within(a, b, 0),
+    distance_if_within(a, b, d) == (D if within else inf), for both argument orders, at d = D x
+    EFFECT_PROBES and D -+ 4x the tolerance, batched and scalar, the shapes plain and swept
+    (each by every value of `sweeps`); and the scene's paths to the same test:
+    Scene.within(shape, d), Scene.within(name, d) and Scene.pairs_within(d) on a scene of the two
+    shapes (unless `scenes` is False). float64, the default solver (the bounds are the same for every policy; check_cases
+    probes the limits for every combination). Returns findings ("effect_definition"), confirmed as
+    they stand (no reference: the rule is consistency between entry points)."""
+    findings = []
+    eps = EPS64
+    for (ka, kb, _), idx in _group(cases).items():
+        group = [cases[i] for i in idx]
+        A = make_shape(cd, ka, [c["a_data"] for c in group])
+        B = make_shape(cd, kb, [c["b_data"] for c in group])
+        ps = np.array([pair_scale(c) for c in group])
+        for sa in sweeps:
+            for sb in sweeps:
+                SA, SB = (_with_sweep(A, sa) if sa else A), (_with_sweep(B, sb) if sb else B)
+                # the sweeps grow the pair's scale (bounds.hpp distance_bounds)
+                s = ps + sa + sb
+                for order, (x, y) in (("ab", (SA, SB)), ("ba", (SB, SA))):
+                    D = np.asarray(cd.distance(x, y), float)
+                    band = 4 * 64 * eps * (s + D)
+                    limits = [D * f for f in EFFECT_PROBES] + [np.maximum(D - band, 0.0), D + band]
+                    for d in limits:
+                        want = D <= d + 64 * eps * (s + d)
+                        clear = np.abs(D - d) > band / 2
+                        w = np.asarray(cd.within(x, y, d))
+                        b = np.asarray(cd.distance_if_within(x, y, d))
+                        got_b = np.where(want, D, np.inf)
+                        for j in np.flatnonzero(clear & ((w != want) | ~_eq(b, got_b))):
+                            findings.append(_effect_finding(group[j], order, sa, sb, "within", D[j], d[j],
+                                                            bool(w[j]), float(b[j])))
+                    it = np.asarray(cd.intersects(x, y))
+                    w0 = np.asarray(cd.within(x, y, np.zeros_like(D)))
+                    for j in np.flatnonzero(it != w0):
+                        findings.append(_effect_finding(group[j], order, sa, sb, "intersects", D[j], 0.0,
+                                                        bool(it[j]), None))
+                    for d in (0.5 * D, D + band):  # scalar calls give the batch's answers
+                        w = np.asarray(cd.within(x, y, d))
+                        for j in range(len(group)):
+                            ws = bool(cd.within(x[j], y[j], float(d[j])))
+                            if ws != bool(w[j]):
+                                findings.append(_effect_finding(group[j], order, sa, sb, "scalar within", D[j], d[j],
+                                                                ws, None))
+                    if order == "ba" or not scenes:
+                        continue
+                    for j in range(len(group)):
+                        findings += _check_scene_effects(cd, group[j], SA[j], SB[j], sa, sb, float(D[j]),
+                                                         float(s[j]), float(band[j]))
+    for f in findings:
+        f["confirmed"] = True
+    return findings
+
+
+def _effect_finding(case, order, sa, sb, entry, D, d, got, got_distance):
+    f = _finding("effect_definition", case, "default", "float64", order, entry, library=float(D), d=float(d),
+                 answer=got, sweeps=[float(sa), float(sb)])
+    if got_distance is not None:
+        f["distance_if_within"] = got_distance
+    return f
+
+
+def _check_scene_effects(cd, case, a, b, sa, sb, D, s, band):
+    """Scene.within (by shape and by name) and Scene.pairs_within on the scene {a, b} against
+    the definition, at d = D x EFFECT_PROBES and D -+ band."""
+    out = []
+    scene = cd.Scene()
+    scene.add("a", a)
+    scene.add("b", b)
+    for d in [D * f for f in EFFECT_PROBES] + [max(D - band, 0.0), D + band]:
+        if abs(D - d) <= band / 2:
+            continue
+        want = D <= d + 64 * EPS64 * (s + d)
+        got = {"Scene.within(shape)": ("b" in scene.within(a, d)) == want,
+               "Scene.within(name)": scene.within("a", d) == (["b"] if want else []),
+               "Scene.pairs_within": scene.pairs_within(d) == ([("a", "b")] if want else [])}
+        for entry, ok in got.items():
+            if not ok:
+                out.append(_effect_finding(case, "ab", sa, sb, entry, D, d, not want, None))
+    return out
+
+
 def check_and_confirm(cd, cases, combo_list=None, scalar=None, max_confirm=None, within=True):
     """check_cases, then confirm_finding on the findings: all of them, or at most `max_confirm`
     per (class, solver, precision) (the rest keep confirmed = None).  Returns (findings, stats)."""
     screens = {}
     findings, stats = check_cases(cd, cases, combo_list, scalar, screens, within)
+    effect_cases = [c for c in cases if c["family"] in EFFECT_FAMILIES]
+    if within and effect_cases:
+        findings += check_effects_definition(cd, effect_cases)
     index = {c["id"]: i for i, c in enumerate(cases)}
     done = {}
     for f in findings:

@@ -26,6 +26,7 @@ import numpy as np
 import pytest
 
 import circledist as cd
+from circledist_cases import differential as D
 from circledist_cases import reference_round as R
 # the reference (50 digits), shared with the differential test
 from circledist_cases.reference_arc import ArcMP, _t, arc, point_distance_function, reference
@@ -573,3 +574,113 @@ def test_bounds_decide_separated_arc_pairs_without_a_solve():
     through = cd.Arc([0, 0, 0], [1, 0, 0], 0.5, [0, 0, 1], np.pi)
     cd.reset_stats()
     assert cd.within(through, cd.Disk([0, 0, 0], [0, 0, 1], 1.0), 0.0)
+
+
+# ------------------------------------------------------------------------------------------------
+# the normal's and the start's scales: only their directions count (README: any finite nonzero
+# normal). A line, ray or segment against an arc forms the arc's end directions from products of
+# the normal (|W|^2 S - (S.W) W, |W|^3 |S| for v) whose squares, from the raw normal of 1e-80 and
+# a unit start, lie in the subnormals: answers 9-20% off. Every kind against an arc, both orders,
+# every solver and precision: the same arc with its normal and start rescaled to unit length is
+# the same set (a metamorphic reference independent of the code), and on a subset the 50-digit one.
+# ------------------------------------------------------------------------------------------------
+SCALE_KINDS = ("point", "line", "ray", "segment", "circle", "disk", "arc", "annulus", "bezier")
+NORMAL_SCALES = (1e-300, 1e-150, 1e-100, 1e-90, 1e-80, 1e-75, 1e-70, 1e-50, 1.0, 1e50, 1e150, 1e300)
+START_SCALES = (1e-300, 1e-60, 1e-20, 1.0, 1e60, 1e300)
+F32_SCALES = (2.0 ** -100, 2.0 ** -50, 1.0, 2.0 ** 50, 2.0 ** 100)  # float32's range, exact
+
+
+def scale_cases(kind, n, seed):
+    """(unit arc, other) in the differential layout: the arc's normal and start of unit length,
+    the start at an angle from the arc's plane (not in it: its projection counts)."""
+    rng = np.random.default_rng([seed, SCALE_KINDS.index(kind)])
+    out = []
+    for _ in range(n):
+        normal = rng.normal(size=3)
+        normal /= np.linalg.norm(normal)
+        start = rng.normal(size=3)
+        start /= np.linalg.norm(start)
+        unit = list(rng.uniform(-1.5, 1.5, 3)) + list(normal) + [float(rng.uniform(0.3, 2))] + list(start) + [
+            float(rng.uniform(0.3, 2 * np.pi))]
+        if kind == "bezier":
+            at = rng.uniform(-1.5, 1.5, 3)
+            other = [list(at + rng.uniform(-1.5, 1.5, 3)) for _ in range(4)]
+        else:
+            other = _other_data(kind, rng)
+        out.append((unit, other))
+    return out
+
+
+def _other_data(kind, rng):
+    """A random shape of `kind` in the differential layout (an annulus: outer, then inner radius)."""
+    s = random_shape(kind, rng)
+    if kind == "annulus":
+        return list(s[1]) + list(s[2]) + [s[4], s[3]]
+    return [x for f in s[1:] for x in (f if isinstance(f, tuple) else (f,))]
+
+
+def scale_case(kind, other, unit):
+    """The pair as a differential case, in its canonical order (an arc before an annulus)."""
+    if kind == "annulus":
+        return dict(family="scale", id="scale", a="arc", a_data=unit, b=kind, b_data=other)
+    return dict(family="scale", id="scale", a=kind, a_data=other, b="arc", b_data=unit)
+
+
+def scaled_arcs(unit, normal_scales, start_scales):
+    """Every (normal scale, start scale) version of the arc, as one batch of the layout's rows."""
+    u = np.asarray(unit, float)
+    rows = []
+    for ns in normal_scales:
+        for ss in start_scales:
+            r = u.copy()
+            r[3:6] *= ns
+            r[7:10] *= ss
+            rows.append(r)
+    return np.array(rows)
+
+
+@pytest.mark.parametrize("kind", SCALE_KINDS)
+def test_normal_and_start_scales_do_not_change_the_answer(kind):
+    combos = [(s, p) for s in SOLVERS for p in ("float64", "longdouble", "float32")]
+    for unit, other in scale_cases(kind, 3, 12):
+        scale = D.bar_scale(scale_case(kind, other, unit))
+        for solver, precision in combos:
+            f32 = precision == "float32"
+            dtype = np.float32 if f32 else (np.longdouble if precision == "longdouble" else np.float64)
+            rows = scaled_arcs(unit, F32_SCALES if f32 else NORMAL_SCALES, F32_SCALES if f32 else START_SCALES)
+            unit_row = np.asarray(rows[0], float).copy()  # the unit arc in the inputs' precision
+            unit_row[3:6], unit_row[7:10] = unit[3:6], unit[7:10]
+            arcs = D.make_shape(cd, "arc", rows, dtype)
+            x, one = D.make_shape(cd, kind, other, dtype), D.make_shape(cd, "arc", unit_row, dtype)
+            kw = dict(solver=solver, precision=precision)
+            ref = float(cd.distance(x, one, **kw))
+            bar = (4 * float(np.finfo(np.float32).eps) if f32 else REL) * max(ref, scale)
+            for order in ("ab", "ba"):
+                d = np.asarray(cd.distance(x, arcs, **kw) if order == "ab" else cd.distance(arcs, x, **kw), float)
+                bad = np.flatnonzero(~(np.abs(d - ref) <= bar))
+                assert not len(bad), (kind, solver, precision, order, [(rows[i][3], rows[i][7], d[i], ref)
+                                                                       for i in bad[:4]])
+                r = cd.closest_points(x, arcs, **kw) if order == "ab" else cd.closest_points(arcs, x, **kw)
+                pa, pb = np.asarray(r.point_a, float), np.asarray(r.point_b, float)
+                on_arc, on_other = (pb, pa) if order == "ab" else (pa, pb)
+                assert np.all(np.abs(np.asarray(r.distance, float) - ref) <= bar), (kind, solver, precision, order)
+                # the points (rounded to the answer's precision) apart by the distance, the arc's on
+                # the unit arc and the other's on the other shape (closed forms)
+                on = (64 * float(np.finfo(np.float32).eps) if f32 else 1e-9) * scale
+                assert np.all(np.abs(np.linalg.norm(pa - pb, axis=-1) - ref) <= bar + on)
+                assert float(np.max(cd.distance(cd.Point(on_arc), D.make_shape(cd, "arc", unit)))) <= on
+                assert float(np.max(cd.distance(cd.Point(on_other), D.make_shape(cd, kind, other)))) <= on
+
+
+@pytest.mark.parametrize("kind", SCALE_KINDS)
+def test_tiny_and_huge_normals_against_the_reference(kind):
+    """The scaled arcs of the band that failed (normal 1e-80 .. 1e-70, start 1 .. 1e-20) and the
+    extremes, against the 50-digit reference of the unit arc (the same set)."""
+    for unit, other in scale_cases(kind, 2, 13):
+        case = scale_case(kind, other, unit)
+        ref = float(D.mp_reference(case))
+        bar = REL * max(ref, D.bar_scale(case))
+        rows = scaled_arcs(unit, (1e-300, 1e-80, 1e-75, 1e-70, 1e300), (1e-20, 1.0, 1e60))
+        x, arcs = D.make_shape(cd, kind, other), D.make_shape(cd, "arc", rows)
+        for d in (cd.distance(x, arcs), cd.distance(arcs, x), cd.closest_points(x, arcs).distance):
+            assert np.all(np.abs(np.asarray(d) - ref) <= bar), (kind, np.asarray(d), ref)

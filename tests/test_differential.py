@@ -53,6 +53,13 @@ annulus (3,072 unique answers checked in the direct comparisons, 1,552 of them b
 cases of the rules, took the slice from 100.3 s to 114.5 s of CPU (the direct references from 41.2 s
 to 55.6 s; 115 s of wall time at load ~1.5).  A failure lists one reproducer per finding class;
 `python -m tools.differential` runs the same checks on millions of cases.
+
+The effect family (effect_degenerate: every kind pair in small integer configurations with a
+center on the other's axis, coaxial, coplanar, concentric, radius 0, inner radius 0 or = outer)
+also goes through differential.check_effects_definition: within at d = 0, D/4, D/2, 0.9 D,
+D -+ 4x the tolerance, 1.1 D and 2 D, distance_if_within, intersects, batched and scalar, plain
+and swept, and Scene.within / Scene.pairs_within on the pair, against the documented definition on
+the library's own distance.
 """
 
 from __future__ import annotations
@@ -72,6 +79,7 @@ MIN_PER_FAMILY = 40   # ... and at least this many per family
 PER_PAIR_NO_ROUND = 2  # cases per (family, kind pair) of the families without a circle or disk
 PER_PAIR_ARC = 2       # cases per (family, kind pair) of the arc families
 PER_PAIR_ANN = 2       # ... and of the annulus families
+PER_PAIR_EFFECT = 4    # ... and of the effect families (every kind pair; check_effects_definition too)
 # The arc families' direct 50-digit comparison (~0.2 s a case with every combination) takes the
 # first case of every third (family, kind pair): the pair whose index in the family's list is the
 # family's index mod 3, so every arc pair is compared directly in some families.
@@ -88,7 +96,9 @@ DIRECT_BEZIER_LINEAR = {("bezier", "point"): "bezier_large_linear", ("bezier", "
 def slice_cases():
     out = []
     for family, (pairs, _) in D.FAMILIES.items():
-        if D.is_arc(family):
+        if family in D.EFFECT_FAMILIES:
+            n = PER_PAIR_EFFECT * len(pairs)
+        elif D.is_arc(family):
             n = PER_PAIR_ARC * len(pairs)
         elif D.is_annulus(family):
             n = PER_PAIR_ANN * len(pairs)

@@ -310,3 +310,60 @@ def test_linear_pairs_against_sampling():
     assert np.all(sampled - d < 0.02)
     r = cd.closest_points(a, b)
     np.testing.assert_allclose(np.linalg.norm(r.point_a - r.point_b, axis=1), d, atol=1e-12)
+
+
+# ---- every effect equals its definition where a round's center lies on the other's axis -------
+# bounds.hpp's upper bounds are distances of sample points that must lie on their shapes. A
+# circle's or disk's point toward the other round's center, formed from q - (m.q) m, would be
+# that difference's normal rounding (eps |q|) alone with the center on its axis: scaled to the rim
+# a point on the axis, not on the round, and within() / intersects() would say yes far below the
+# distance.
+REPORTED_DEGENERATE = [  # (kind, data) pairs in circledist_cases.differential's layout
+    # a zero-radius circle on an annulus's axis (inner = outer), sqrt(6) apart
+    (("circle", [2, 0, -1, 1, -1, -2, 0]), ("annulus", [2, 1, 0, 0, -2, -2, 2, 2])),
+    # a circle's center on an annulus's axis, 2.056 apart
+    (("circle", [2, 1, -2, -1, 2, 1, 1]), ("annulus", [0, 1, 0, 2, 0, -2, 1, 1])),
+    # a disk and an annulus 2 and 0.646 apart, the disk's center on the annulus's axis
+    (("disk", [0, -3, -4, 0, -2, 2, 2]), ("annulus", [2, -1, -2, 2, 2, 2, 2, 2])),
+    (("disk", [-3, -3, 0, -1, 0, -1, 2]), ("annulus", [-2, -2, -1, -1, -1, 1, 2, 2])),
+]
+
+
+@pytest.mark.parametrize("a,b", REPORTED_DEGENERATE)
+def test_reported_center_on_axis_pairs_are_not_within_below_the_distance(a, b):
+    from circledist_cases import differential as D
+    case = dict(family="effect_degenerate", id="reported", a=a[0], a_data=[float(v) for v in a[1]], b=b[0],
+                b_data=[float(v) for v in b[1]])
+    x0, y0 = D.make_shape(cd, a[0], a[1]), D.make_shape(cd, b[0], b[1])
+    dist = cd.distance(x0, y0)
+    assert abs(dist - float(D.mp_reference(case))) <= 1e-12 * max(dist, 2.0)  # the 50-digit reference
+    assert dist > 0.5
+    for x, y in ((x0, y0), (y0, x0)):
+        assert not cd.intersects(x, y)
+        for f in (0.0, 0.24, 0.5, 0.9, 1 - 1e-9):
+            assert not cd.within(x, y, f * dist), f
+            assert cd.distance_if_within(x, y, f * dist) == np.inf
+        assert cd.within(x, y, dist) and cd.distance_if_within(x, y, dist) == dist
+
+
+def test_effects_equal_their_definition_on_small_integer_configurations():
+    """within / distance_if_within / intersects, batched and scalar, both orders, plain and swept,
+    at d = 0, D/4, D/2, 0.9 D, D -+ 4x the tolerance, 1.1 D, 2 D, against
+    distance(a, b) <= d + 64 eps (s + d) (effects.hpp): every pair with a circle or disk (the
+    pairs with cheap bounds), 40 small-integer degenerate configurations each (centers on axes,
+    coaxial, coplanar, concentric, radius 0, inner radius 0 or = outer:
+    differential._fam_effect_degenerate). With the sample points formed from q - (m.q) m, 24 of
+    the 680 configurations (circle-circle, circle-disk, circle-annulus, disk-annulus) answer
+    wrongly, half of them at limits below 0.95 D."""
+    from circledist_cases import differential as D
+    pairs = [p for p in D.KIND_PAIRS if "circle" in p or "disk" in p]
+    cases = []
+    for i, (ka, kb) in enumerate(pairs):
+        rng = np.random.default_rng([RNG_SEED, i])
+        for j in range(40):
+            a, b = D._fam_effect_degenerate(rng, ka, kb)
+            cases.append(dict(family="effect_degenerate", id=f"test/{i}/{j}", a=ka, a_data=D._plain(a), b=kb,
+                              b_data=D._plain(b)))
+    findings = D.check_effects_definition(cd, cases, sweeps=(0.0, 0.5), scenes=False)
+    assert not findings, [(f["pair"], f["order"], f["entry"], f["a_data"], f["b_data"], f["library"], f["d"])
+                          for f in findings[:6]]

@@ -555,8 +555,62 @@ void start_length_tests() {
   counts["start length (1e+-200)"] = close;
 }
 
+// Only the normal's direction counts too (README: any finite nonzero normal): scaled by 2^e
+// (exact) or by 1e+-80 or 1e+-300 (its direction rounded), with the start scaled by 1e+-20 or
+// 1e+-60, it answers as the arc's own within the bar, distance() and closest_points() alike (not
+// bit for bit: a normal of 2^-1000 leaves line_ring_minimum's range, and its pair the fast path). The line-arc fast path
+// (ArcEnds) brings the normal back too: from the raw normal of 1e-80 and a unit start, the end
+// points' squared lengths lie in the subnormals, and a line's distance is 9-20% off.
+template <class S> void normal_length_case(const S& s, const Arc& a, int& powers, int& decimal) {
+  const double base = distance(s, a);
+  const double bar = 1e-12 * std::max(base, a.radius);
+  const auto case_ok = [&](const Arc& scaled) {
+    const Result<double> ab = closest_points(scaled, s), ba = closest_points(s, scaled);
+    const double d = distance(s, scaled);
+    return std::abs(d - base) <= bar && std::abs(distance(scaled, s) - base) <= bar &&
+           std::abs(ab.distance - base) <= bar && std::abs(ba.distance - base) <= bar &&
+           std::abs((ab.point_a - ab.point_b).norm() - base) <= bar + 1e-9 * a.radius;
+  };
+  for (const int e : {-1000, -600, -270, -250, -200, 200, 600, 1000}) {
+    const bool ok = case_ok(Arc{a.center, detail::ldexp3(a.normal, e), a.radius, a.start, a.angle});
+    if (!ok) std::printf("  normal * 2^%d vs %.17g\n", e, base);
+    powers += ok;
+    check::record(ok, "normal scaled by a power of two", __FILE__, __LINE__);
+  }
+  for (const double f : {1e-300, 1e-90, 1e-80, 1e-70, 1e80, 1e300}) {
+    for (const double g : {1e-60, 1e-20, 1.0, 1e20, 1e60}) {
+      const bool ok = case_ok(Arc{a.center, f * a.normal, a.radius, g * a.start, a.angle});
+      if (!ok) std::printf("  normal * %g, start * %g vs %.17g\n", f, g, base);
+      decimal += ok;
+      check::record(ok, "normal scaled by 1e+-80, 1e+-300", __FILE__, __LINE__);
+    }
+  }
+}
+
+void normal_length_tests() {
+  Draw d(20261128);
+  int powers = 0, decimal = 0;
+  // The reported line: 0.8525 for 0.9405 at a normal of 1e-80.
+  const Arc reported{V3d(0, 0, 0), V3d(-0.1, 0.0, -0.3), 1.0, V3d(0.9, 0.1, 1.2), 3.141592653589793};
+  normal_length_case(Line{V3d(1.0, 2.4, -2.6), V3d(0.3, -0.7, 0.8)}, reported, powers, decimal);
+  for (int i = 0; i < int(100 * ARC_RANDOM_SCALE) + 1; ++i) {
+    Arc a = d.arc();
+    a.angle = std::min(a.angle, 6.0);  // a whole arc is its circle, which has no start
+    normal_length_case(d.vec(), a, powers, decimal);
+    normal_length_case(Line{d.vec(), d.vec()}, a, powers, decimal);
+    normal_length_case(Ray{d.vec(), d.vec()}, a, powers, decimal);
+    normal_length_case(Segment{d.vec(), d.vec()}, a, powers, decimal);
+    normal_length_case(Circle{d.vec(), d.vec(), d.radius()}, a, powers, decimal);
+    normal_length_case(Disk{d.vec(), d.vec(), d.radius()}, a, powers, decimal);
+    normal_length_case(d.arc(), a, powers, decimal);
+  }
+  counts["normal length (2^e)"] = powers;
+  counts["normal length (1e+-80, 1e+-300)"] = decimal;
+}
+
 int main() {
   start_length_tests();
+  normal_length_tests();
   point_tests();
   piece_tests();
   round_tests<Circle>("circle-arc");

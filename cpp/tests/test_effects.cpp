@@ -1,6 +1,7 @@
 // The requested effects (effects.hpp): within / intersects / distance_if_within against
 // `distance <= d`, and the counters that show the work done (no polynomial solve where the
 // bounds decide), in double, float and long double.
+#include <circledist/annulus.hpp>
 #include <circledist/effects.hpp>
 
 #include "check.hpp"
@@ -91,9 +92,70 @@ template <class Real> void precisions() {
   CHECK(intersects(line, swept(ring, Real(0.6))));
 }
 
+// A round's center on another's axis, in small integers (bounds.hpp, sample_points: a round's
+// point toward the other's center is built orthogonal to its normal, so that it lies on the
+// round whatever the rounding; from q - (m.q) m it would be the rounding's direction, a point on
+// the axis, and within() would say yes at a quarter of the distance). Every round against a circle and a
+// disk, both orders, plain and swept: within() at fractions of the distance and intersects()
+// equal their definition on distance().
+template <class A, class B> void definition_pair(const A& a, const B& b, int& pairs) {
+  const double d = distance(a, b);
+  const double s = plain_scale(a, b) + d + 1;
+  for (const double f : {0.0, 0.25, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.1, 2.0}) {
+    const double limit = f * d;
+    const bool want = d <= limit + touch_tolerance(s + limit);
+    if (std::abs(d - limit) > 1e-9 * s) {
+      CHECK(within(a, b, limit) == want);
+      CHECK(within(b, a, limit) == want);
+    }
+  }
+  if (d > 1e-9 * s) CHECK(!intersects(a, b) && !intersects(b, a));
+  ++pairs;
+}
+
+template <class R> void definition_against(const R& b, const V& axis_point, const V& na, int& pairs) {
+  for (const double ra : {0.0, 1.0, 2.0}) {
+    const Circle3<double> circle{axis_point, na, ra};
+    const Disk3<double> disk{axis_point, na, ra};
+    definition_pair(circle, b, pairs);
+    definition_pair(disk, b, pairs);
+    definition_pair(swept(circle, 0.5), b, pairs);
+    for (const double inner : {0.0, 1.0, 2.0}) {
+      if (inner > ra) continue;
+      const Annulus3<double> annulus{axis_point, na, inner, ra};
+      definition_pair(annulus, b, pairs);
+      definition_pair(swept(annulus, 0.5), swept(b, 0.25), pairs);
+    }
+  }
+}
+
+void center_on_axis_cases() {
+  int pairs = 0;
+  const auto small = [](int i) { return double(i % 5 - 2); };
+  for (int i = 0; i < 125; ++i) {
+    const V center(small(i), small(i / 5), small(i / 25));
+    const V nb(small(i * 7 + 1), small(i * 3 + 2), small(i + 3));
+    const V na(small(i * 11 + 4), small(i * 13), small(i * 2 + 1));
+    if (nb.squaredNorm() == 0 || na.squaredNorm() == 0) continue;
+    for (const double rb : {0.0, 1.0, 2.0}) {
+      const Circle3<double> circle{center, nb, rb};
+      const Disk3<double> disk{center, nb, rb};
+      for (const double k : {-2.0, -1.0, 1.0, 2.0}) {
+        // A's center on B's axis, and B's center on A's axis
+        definition_against(circle, V(center + k * nb), na, pairs);
+        definition_against(disk, V(center + k * nb), na, pairs);
+        definition_against(circle, V(center - k * na), na, pairs);
+        definition_against(disk, V(center - k * na), na, pairs);
+      }
+    }
+  }
+  std::printf("center on an axis: %d pairs\n", pairs);
+}
+
 }  // namespace
 
 int main() {
+  center_on_axis_cases();
   laziness_cases();
   precisions<float>();
   precisions<long double>();

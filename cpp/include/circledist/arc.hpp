@@ -799,15 +799,25 @@ template <class Real> struct ArcEnds {
   bool usable = false;  // false: a start along the normal, a zero or huge normal, a NaN angle
 
   // Unnormalized (no division: the sector test is an angle, scale-free; find_ends scales).
+  // W is first scaled by a power of two (exact: only its direction counts) to |W|^2 in
+  // [2^-100, 2^100], as PointOverRound takes it: u' is |W|^2 |S| and v' |W|^3 |S|, and |u'|^2
+  // |W|^4 |S|^2, in the subnormals for a normal of 1e-80 and a unit start (its rounding moves the
+  // ends' points off their circle by up to a fifth of the radius, and a line's distance as much).
   explicit ArcEnds(const Arc3<Real>& a) {
-    const Real n2 = a.normal.squaredNorm();
+    constexpr Real lo = detail::power_of_two<Real>(-100), hi = detail::power_of_two<Real>(100);
+    Vec3<Real> w = a.normal;
+    Real n2 = w.squaredNorm();
+    if (!detail::strictly_between(n2, lo, hi)) {
+      w = detail::ldexp3(w, -detail::direction_exponent(w));
+      n2 = w.squaredNorm();
+    }
     const Vec3<Real> start = detail::moderate_start(a.start);
-    u = n2 * start - a.normal.dot(start) * a.normal;
+    u = n2 * start - w.dot(start) * w;
     length = u.norm();
     usable = length > 0 && std::isfinite(length) && n2 > 0 && std::isfinite(n2) && !std::isnan(a.angle);
     if (!usable) return;
     s = std::sqrt(n2);
-    v = a.normal.cross(u);
+    v = w.cross(u);
     angle = std::max(a.angle, Real(0));
   }
   // The end points (a sine and cosine: only where the ends are candidates).

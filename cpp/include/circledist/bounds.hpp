@@ -220,16 +220,19 @@ void sample_points(const A& a, const R& round, const Visit& visit) {
   const Vec3<Real> m = unit_vector(a.normal);
   const Real ra = a.radius;
   const Vec3<Real> q = round.center - a.center;
-  const Vec3<Real> in_plane = q - m.dot(q) * m;
+  // q's part in A's plane as (m x q) x m, not q - (m.q) m: a cross product with m is orthogonal
+  // to m to eps of its own length, where the difference keeps a normal component of eps |q|
+  // whatever its in-plane part. With B's center on A's axis that rounding is all the difference
+  // holds: its direction, scaled to the rim, is a point on A's axis, not on A (for a circle's
+  // center on an annulus's axis, an upper bound of 2 - sqrt 2 for a distance of sqrt 6: within()
+  // would say yes at 0.24 of the distance); near the axis (rho = 3e-17 |q|) it leaves A's plane by
+  // eps |q| / rho. Orthogonal to m, any direction of it (noise included) gives a point of A's rim.
+  const Vec3<Real> in_plane = m.cross(q).cross(m);
   const Real rho = in_plane.norm();
   if (filled && rho <= ra) {
     visit(Vec3<Real>(a.center + in_plane));
   } else if (rho > 0) {
-    // in_plane keeps a normal component of eps |q|: for B's center nearly on A's axis
-    // (rho = 3e-17 |q|) its direction leaves A's plane by eps |q| / rho, and the point scaled to
-    // the rim was 1.7e-9 off A. Projected once more, the direction lies in A's plane.
-    const Vec3<Real> u = in_plane / rho;
-    visit(Vec3<Real>(a.center + ra * unit_vector(Vec3<Real>(u - m.dot(u) * m))));
+    visit(Vec3<Real>(a.center + ra * (in_plane / rho)));
   } else {
     visit(Vec3<Real>(a.center + ra * Frame<Real>(m).u));
   }
