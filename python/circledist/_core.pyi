@@ -895,7 +895,7 @@ class _Broadphase:
         """
         (groups, rows) of items.
         """
-    def merge(self, workers: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+    def merge(self, workers: int = 1) -> None:
         """
         Merges the trees into one (pairs_within's tree), the GIL released.
         """
@@ -903,7 +903,7 @@ class _Broadphase:
         """
         (indices, lower bounds) of the k elements of smallest lower bound, by bound.
         """
-    def pairs_within(self, groups: list, names: list, d: typing.SupportsFloat | typing.SupportsIndex, workers: typing.SupportsInt | typing.SupportsIndex = 1, max_pairs: typing.Any = 100000000) -> tuple:
+    def pairs_within(self, groups: list, names: list, d: typing.SupportsFloat | typing.SupportsIndex, workers: int = 1, max_pairs: typing.Any = 100000000) -> tuple:
         """
         (pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.
         """
@@ -1315,7 +1315,7 @@ def nearest(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike
     ...
     ValueError: nearest: k must be an integer >= 1, got 0
     """
-def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: typing.SupportsInt | typing.SupportsIndex = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None, max_pairs: int | None = 100000000) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
+def pairs_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike | None, d: float, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None, max_pairs: int | None = 100000000) -> tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
     """
     Every pair of a and b within distance d of each other, with its distance.
     
