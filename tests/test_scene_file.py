@@ -724,20 +724,13 @@ def test_installed_package_holds_every_file_of_the_source_package():
 # ---- hostile .npz files: checked from each member's header before its data is inflated --------
 
 def _zip(tmp_path, members, name="hostile.npz", method=None):
-    """An .npz written member by member: name -> an array (written as .npy) or raw bytes, or a
-    callable writing to the member's stream."""
-    import zipfile
+    """An .npz written member by member (the hostile-files fuzz's writer): name -> an array-like
+    (written as .npy) or raw bytes, or a callable writing to the member's stream."""
+    from tools.fuzz_crash import _write_npz
 
     path = tmp_path / name
-    with zipfile.ZipFile(path, "w", compression=method or zipfile.ZIP_STORED) as z:
-        for member, value in members.items():
-            with z.open(member, "w", force_zip64=True) as f:
-                if callable(value):
-                    value(f)
-                elif isinstance(value, bytes):
-                    f.write(value)
-                else:
-                    np.lib.format.write_array(f, np.asanyarray(value), allow_pickle=False)
+    _write_npz(path, {member: value if callable(value) or isinstance(value, bytes) else np.asanyarray(value)
+                      for member, value in members.items()}, method)
     return str(path)
 
 
