@@ -13,6 +13,15 @@ import numpy as np
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
+def _fuzz_module():
+    sys.path.insert(0, str(ROOT / "tools"))
+    try:
+        import fuzz_crash
+    finally:
+        sys.path.pop(0)
+    return fuzz_crash
+
+
 def test_fuzz_slice_finds_nothing(tmp_path):
     report = tmp_path / "fuzz.json"
     proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--cases", "6000", "--seed", "15",
@@ -30,11 +39,7 @@ def test_hostile_files_slice_finds_nothing(tmp_path):
     memory, unsupported compression, foreign members, truncated and flipped files; each in its own
     process held to 1 GiB and 60 s, answered with one clean error line and exit status 2. The slice
     runs each class twice."""
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import fuzz_crash
-    finally:
-        sys.path.pop(0)
+    fuzz_crash = _fuzz_module()
     report = tmp_path / "files.json"
     cases = 2 * len(fuzz_crash.FILE_CLASSES)
     proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--files", str(cases), "--seed", "15",
@@ -44,15 +49,6 @@ def test_hostile_files_slice_finds_nothing(tmp_path):
     assert (summary["crashes"], summary["hangs"], summary["findings"]) == (0, 0, 0), json.dumps(
         summary["examples"][:3], indent=1)
     assert proc.returncode == 0
-
-
-def _fuzz_module():
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import fuzz_crash
-    finally:
-        sys.path.pop(0)
-    return fuzz_crash
 
 
 def test_threads_slice_finds_nothing(tmp_path):
