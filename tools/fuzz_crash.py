@@ -26,9 +26,10 @@ valid: exit 0).
 to --timeout seconds, at most 120): random shapes (points, circles, disks, segments, arcs, annuli,
 Bezier curves; some far or huge outliers, some float32, some swept), and in every thread a random
 mix of adds (single and batched), pairs_within, nearest, within, queries by a shape's name,
-distance_matrix, pickling the scene mid-run and adding a name already taken. A finding: a crash, a
-hang, an exception other than the documented ones, or an answer that no serial scene of the first
-m shapes gives for any m between the counts at the query's start and end.
+distance_matrix, pickling or deep-copying the scene mid-run and adding a name already taken. A
+finding: a crash, a hang, an exception other than the documented ones, or an answer that no
+serial scene of the first m shapes gives for any m between the counts at the query's start and
+end.
 
 --arguments: N calls of every entry point (distance, closest_points, within, intersects,
 distance_if_within, nearest, pairs_within, Scene.nearest/within/pairs_within, the shape
@@ -665,8 +666,8 @@ def fuzz_files(count, seed, python=sys.executable, progress=False):
 # Each scenario runs in its own child (THREAD_TIMEOUT seconds): a Scene of random shapes (the kinds
 # below, some far or huge outliers, some float32, some swept) shared by 3-5 threads, each doing a
 # random mix of adds (single, and batched with extend), pairs_within, nearest, within (of a shape
-# and of a scene shape by name), distance_matrix and shape lookups by name, pickling the scene, and
-# adding a name already taken. The shapes are added in one order (a thread claims the next ones
+# and of a scene shape by name), distance_matrix and shape lookups by name, pickling or deep-copying
+# the scene, and adding a name already taken. The shapes are added in one order (a thread claims the next ones
 # under a lock of its own), so the scene is always a prefix of that order; every answer must be the
 # answer of a serial scene of the first m shapes for some m between the counts at the query's start
 # and its end (tests/test_scene.py's threaded test), and the scene must end as the serial one. A
@@ -693,8 +694,8 @@ def _scene_shapes(cd, rng, count):
     shapes, layout = [], None
     while len(shapes) < count:
         if layout is None or rng.random() < 0.6:
-            layout = (THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))], np.float32 if rng.random() < 0.15 else np.float64,
-                      rng.random() < 0.25)
+            layout = (THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))],
+                      np.float32 if rng.random() < 0.15 else np.float64, rng.random() < 0.25)
         kind, dtype, swept = layout
         outlier = rng.random() < 0.1
         scale = float(10 ** rng.uniform(6, 15)) if outlier and rng.random() < 0.5 else float(rng.uniform(0.1, 2))
@@ -724,7 +725,8 @@ def _stacked(cd, shapes):
     arrays = [s.to_arrays() for s in shapes]
     first = arrays[0]
     if any(s.kind != shapes[0].kind or a.keys() != first.keys()
-           or any(a[k].shape != first[k].shape or a[k].dtype != first[k].dtype for k in a) for s, a in zip(shapes, arrays)):
+           or any(a[k].shape != first[k].shape or a[k].dtype != first[k].dtype for k in a)
+           for s, a in zip(shapes, arrays)):
         return None
     return type(shapes[0]).from_arrays({k: np.stack([a[k] for a in arrays]) for k in first})
 
@@ -758,12 +760,13 @@ def _query(scene, op, names, queries):
         return lambda: scene.distance_matrix([names[i] for i in args[0]], [names[i] for i in args[1]])
     if name == "shape":
         return lambda: sorted((k, v.dtype.str, v.tobytes().hex()) for k, v in scene[names[args[0]]].to_arrays().items())
-    if name == "pickle":
+    if name == "pickle":  # pickled and loaded, or deep-copied
         def copied():
+            import copy
             import pickle
 
-            copy = pickle.loads(pickle.dumps(scene))
-            return copy.names, copy.pairs_within(args[0]), copy.nearest(queries[0], k=3)
+            twin = pickle.loads(pickle.dumps(scene)) if args[1] == "pickle" else copy.deepcopy(scene)
+            return twin.names, twin.pairs_within(args[0]), twin.nearest(queries[0], k=3)
         return copied
     raise AssertionError(op)
 
@@ -827,7 +830,7 @@ def run_thread_case(cd, case):
                 elif op == "within":
                     args = (int(r.integers(0, len(queries))), distance_limit(r))
                 elif op == "pickle":
-                    args = (distance_limit(r),)
+                    args = (distance_limit(r), str(r.choice(["pickle", "deepcopy"])))
                 else:  # by name: only names present now (the scene only grows)
                     if present == 0:
                         continue
@@ -895,7 +898,8 @@ def run_thread_case(cd, case):
             return {"finding": f"{op[0]}: an answer no serial scene gives",
                     "detail": f"{op} with {before}..{after} shapes: {str(got)[:500]}; serial: "
                               f"{str(serial_answer(op, before))[:500]}"}
-    final = [("pairs", 1.0, 1, None), ("nearest", 0, 3), ("within", 1, 2.0), ("pickle", 0.5), ("shape", n - 1)]
+    final = [("pairs", 1.0, 1, None), ("nearest", 0, 3), ("within", 1, 2.0), ("pickle", 0.5, "pickle"),
+             ("pickle", 0.5, "deepcopy"), ("shape", n - 1)]
     for op in final:
         got, expected = _outcome(_query(scene, op, names, queries)), serial_answer(op, n)
         if got != expected:
@@ -969,7 +973,8 @@ def generate_arguments(seed: int, count: int):
         entry = entries[rng.integers(0, len(entries))]
         slot = ARGUMENTS[entry][rng.integers(0, len(ARGUMENTS[entry]))]
         yield {"index": index, "entry": entry, "argument": slot, "value": HOSTILE[rng.integers(0, len(HOSTILE))],
-               "batch": BATCHES[rng.integers(0, len(BATCHES))], "kind": THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))]}
+               "batch": BATCHES[rng.integers(0, len(BATCHES))],
+               "kind": THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))]}
 
 
 class _Stopped(Exception):
