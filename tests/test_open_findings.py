@@ -103,3 +103,51 @@ def test_huge_arc_small_ring_unique():
     b = cd.Annulus(ann[:3], ann[3:6], ann[7], ann[6])
     for x, y in ((a, b), (b, a)):
         assert cd.closest_points(x, y, solver="polished", precision="float64").unique
+
+
+# ---- a batch index beyond int64 (tools/fuzz_crash.py --arguments) ----------------------------
+# Indexing a batch with an integer in [2**63, 2**64) (a Python int or numpy.uint64), alone or in a
+# tuple, raises NumPy's OverflowError "Python int too large to convert to C long" (the index reaches
+# NumPy unchecked, _batch.batch_key); an integer past that range gets NumPy's IndexError that only
+# integers are valid indices. Any such integer is out of bounds of every batch: an IndexError
+# naming the index, as for 5 on a batch of 3, is the answer. Its fuzz families are allowed in
+# tests/test_fuzz_crash.py (OPEN_ARGUMENT_FAMILIES) until this passes.
+@pytest.mark.xfail(strict=True, reason="a batch index beyond int64: NumPy's OverflowError, or its IndexError "
+                                       "that only integers are indices")
+@pytest.mark.parametrize("form", ["alone", "tuple", "with ellipsis"])
+@pytest.mark.parametrize("index", [2**63, 2**64 - 1, "uint64", 2**64, 10**30, -2**63 - 1])
+@pytest.mark.parametrize("rows", [0, 3])
+def test_batch_index_beyond_int64_is_out_of_bounds(index, form, rows):
+    import numpy as np
+
+    index = np.uint64(2**64 - 1) if index == "uint64" else index
+    key = {"alone": index, "tuple": (index,), "with ellipsis": (index, Ellipsis)}[form]
+    batch = cd.Point(np.zeros((rows, 3)))
+    with pytest.raises(IndexError, match="out of bounds"):
+        batch[key]
+
+
+# ---- nearest on coincident shapes: the progress callback and Ctrl-C wait (tools/fuzz_crash.py
+# --arguments, an outer pair of 10^5 coincident points) ---------------------------------------
+# nearest(a, a, k=2) over 10^5 identical points ran 27 s before its first progress call, and a
+# Ctrl-C sent at 3 s stopped it only then; 3*10^4 points: 2 s (10^4: 0.25 s). Every element ties
+# with every other, so nothing is culled and one chunk of a's elements holds O(len(b)) exact tests
+# each, while the callback and the signal check run between chunks only. The documentation
+# promises a call about every 0.1 s; a second is the bar here.
+@pytest.mark.xfail(strict=True, reason="nearest over coincident points: the first progress call after seconds")
+def test_nearest_on_coincident_points_reports_progress_within_a_second():
+    import time
+
+    import numpy as np
+
+    class Stop(Exception):
+        pass
+
+    def stop(done, total):
+        raise Stop
+
+    a = cd.Point(np.zeros((40_000, 3)))
+    start = time.perf_counter()
+    with pytest.raises(Stop):
+        cd.nearest(a, a, k=2, progress=stop)
+    assert time.perf_counter() - start < 1.0

@@ -12,6 +12,8 @@ closest points finite whenever the distance is finite, and distance() == closest
 
     python tools/fuzz_crash.py [--cases N] [--seed S] [--chunk K] [--timeout T] [--report FILE]
     python tools/fuzz_crash.py --files N [--seed S] [--report FILE]
+    python tools/fuzz_crash.py --threads N [--seed S] [--timeout T] [--report FILE]
+    python tools/fuzz_crash.py --arguments N [--seed S] [--chunk K] [--timeout T] [--report FILE]
 
 --files: the command line on hostile files instead (FIFOs and devices, zip bombs, .npy headers
 that lie about their shape, JSON nested near the recursion limit, lone surrogates, counts beyond
@@ -19,6 +21,25 @@ memory, unsupported compression, members that are no .npy, truncated and byte-fl
 each in its own process held to 1 GiB of address space and 60 s: a finding is anything but one
 "circledist: error: FILE: ..." line and exit status 2 (a truncated or flipped file may still be
 valid: exit 0).
+
+--threads: N scenarios of one Scene shared by 3-5 threads (each scenario in its own child, held
+to --timeout seconds, at most 120): random shapes (points, circles, disks, segments, arcs, annuli,
+Bezier curves; some far or huge outliers, some float32, some swept), and in every thread a random
+mix of adds (single and batched), pairs_within, nearest, within, queries by a shape's name,
+distance_matrix, pickling or deep-copying the scene mid-run and adding a name already taken. A
+finding: a crash, a hang, an exception other than the documented ones, or an answer that no
+serial scene of the first m shapes gives for any m between the counts at the query's start and
+end.
+
+--arguments: N calls of every entry point (distance, closest_points, within, intersects,
+distance_if_within, nearest, pairs_within, Scene.nearest/within/pairs_within, the shape
+constructors, batch indexing, circledist.dask.pairs_within where dask is installed), each with one
+hostile scalar argument (huge integers, bools, NumPy integers and bools, floats where integers are
+expected, NaN, inf, strings, None) over small, empty, one-element, outer 10^5 x 10^5 and 10^15-row
+broadcast batches, --chunk calls per child held to 2 GiB of address space. A finding: a crash, a
+hang, an exception other than TypeError, ValueError, MemoryError and IndexError (KeyError for a
+scene shape's name), pybind11's "Unable to cast" or "incompatible function arguments", or a
+MemoryError raised after the process grew by 256 MiB (memory really allocated) or in C++'s words.
 
 Exit status 0 when nothing was found, 1 otherwise; the summary (counts, and one reproducer per
 finding) is printed and, with --report, written as JSON.
@@ -278,11 +299,17 @@ def run_batch(cd, cases):
         return "error"
 
 
-def child(cases_file, current_file, results_file, batched="0"):
+def child(cases_file, current_file, results_file, mode="0"):
+    """Runs the cases of cases_file: mode "0" one by one, "1" batched, "threads" the thread
+    scenarios, "arguments" the hostile argument calls."""
+    import faulthandler
+
     import circledist as cd
 
+    faulthandler.enable()  # a crash's stderr names the threads' Python stacks
     cases = json.load(open(cases_file))
     findings = []
+    run_one = {"threads": run_thread_case, "arguments": run_argument_case}.get(mode, run_case)
 
     def note(case):
         current.seek(0)
@@ -291,7 +318,7 @@ def child(cases_file, current_file, results_file, batched="0"):
         current.flush()
 
     with open(current_file, "w") as current:
-        if batched == "1":
+        if mode == "1":
             groups = {}
             for case in cases:
                 groups.setdefault(_group_key(case), []).append(case)
@@ -313,8 +340,10 @@ def child(cases_file, current_file, results_file, batched="0"):
         else:
             for case in cases:
                 note(case)
-                finding = run_case(cd, case)
-                if finding:
+                finding = run_one(cd, case)
+                if isinstance(finding, dict):  # a finding with its detail
+                    findings.append({**finding, "case": case})
+                elif finding:
                     findings.append({"finding": finding, "case": case})
     json.dump({"ran": len(cases), "findings": findings}, open(results_file, "w"))
 
@@ -322,8 +351,9 @@ def child(cases_file, current_file, results_file, batched="0"):
 # ----------------------------------------------------------------------------------------------
 # the parent: chunks in child processes
 # ----------------------------------------------------------------------------------------------
-def _run_child(todo, batched, python, timeout, tmp):
-    """Runs the cases in a child; returns (result or None, last case started, crash/hang text)."""
+def _run_child(todo, mode, python, timeout, tmp, memory=None):
+    """Runs the cases in a child (mode: as child()'s; memory: a bound on its address space, in
+    bytes); returns (result or None, last case started, crash/hang text)."""
     cases_file, current_file, results_file = (os.path.join(tmp, n) for n in ("cases", "current", "results"))
     json.dump(todo, open(cases_file, "w"))
     for f in (current_file, results_file):
@@ -331,7 +361,8 @@ def _run_child(todo, batched, python, timeout, tmp):
             os.remove(f)
     try:
         proc = subprocess.run([python, os.path.abspath(__file__), "--child", cases_file, current_file, results_file,
-                               "1" if batched else "0"], timeout=timeout, capture_output=True, text=True)
+                               mode], timeout=timeout, capture_output=True, text=True, stdin=subprocess.DEVNULL,
+                              preexec_fn=None if memory is None else lambda: _limit_memory(memory))
         if proc.returncode == 0 and os.path.exists(results_file):
             return json.load(open(results_file)), None, None
         what = f"crash (exit {proc.returncode})", proc.stderr[-2000:]
@@ -341,11 +372,11 @@ def _run_child(todo, batched, python, timeout, tmp):
     return None, last, what
 
 
-def _run_chunk(todo, batched, python, timeout, tmp, summary):
+def _run_chunk(todo, mode, python, timeout, tmp, summary, memory=None):
     """Adds the chunk's counts to summary. A batched chunk that stops its child is run again case
     by case; a case that stops its child is recorded with its input, and the rest run on."""
     while todo:
-        result, last, what = _run_child(todo, batched, python, timeout, tmp)
+        result, last, what = _run_child(todo, mode, python, timeout, tmp, memory)
         if result is not None:
             summary["cases"] += result["ran"]
             summary["findings"] += len(result["findings"])
@@ -355,8 +386,8 @@ def _run_chunk(todo, batched, python, timeout, tmp, summary):
                     summary["examples"].append(f)
                     seen.add(f["finding"])
             return
-        if batched:
-            batched = False
+        if mode == "1":
+            mode = "0"
             continue
         summary["hangs" if what[0] == "hang" else "crashes"] += 1
         summary["examples"].append({"finding": what[0], "case": last, "stderr": what[1]})
@@ -373,7 +404,7 @@ def fuzz(count, seed, chunk, timeout, python=sys.executable, progress=False, bat
             todo = [c for _, c in zip(range(chunk), cases)]
             if not todo:
                 break
-            _run_chunk(todo, batched, python, timeout, tmp, summary)
+            _run_chunk(todo, "1" if batched else "0", python, timeout, tmp, summary)
             if progress:
                 print(f"  {summary['cases']} cases, {summary['crashes']} crashes, {summary['hangs']} hangs, "
                       f"{summary['findings']} findings", file=sys.stderr, flush=True)
@@ -582,10 +613,10 @@ def _hostile_file(rng, kind, folder, index):
     return path, what
 
 
-def _limit_memory():
+def _limit_memory(limit=FILE_MEMORY):
     import resource
 
-    resource.setrlimit(resource.RLIMIT_AS, (FILE_MEMORY, FILE_MEMORY))
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
 def run_file_case(path, kind, python=sys.executable):
@@ -629,6 +660,514 @@ def fuzz_files(count, seed, python=sys.executable, progress=False):
     return summary
 
 
+# ----------------------------------------------------------------------------------------------
+# threads: one Scene shared by threads that add and query it at once
+# ----------------------------------------------------------------------------------------------
+# Each scenario runs in its own child (THREAD_TIMEOUT seconds): a Scene of random shapes (the kinds
+# below, some far or huge outliers, some float32, some swept) shared by 3-5 threads, each doing a
+# random mix of adds (single, and batched with extend), pairs_within, nearest, within (of a shape
+# and of a scene shape by name), distance_matrix and shape lookups by name, pickling or deep-copying
+# the scene, and adding a name already taken. The shapes are added in one order (a thread claims the next ones
+# under a lock of its own), so the scene is always a prefix of that order; every answer must be the
+# answer of a serial scene of the first m shapes for some m between the counts at the query's start
+# and its end (tests/test_scene.py's threaded test), and the scene must end as the serial one. A
+# finding: a crash, a hang, an exception other than the documented ones, or an answer no serial
+# scene gives.
+THREAD_KINDS = ("point", "circle", "disk", "segment", "arc", "annulus", "bezier")
+THREAD_TIMEOUT = 120.0
+THREAD_OPS = ("add", "extend", "pairs", "nearest", "within", "nearest_name", "within_name", "matrix", "shape",
+              "pickle", "duplicate")
+# Outcomes a valid query may have: an answer, or one of these errors (the serial scene must agree).
+THREAD_ERRORS = ("TypeError", "ValueError", "KeyError", "MemoryError")
+
+
+def generate_threads(seed: int, count: int):
+    rng = np.random.default_rng(seed)
+    for index in range(count):
+        yield {"index": index, "seed": int(rng.integers(0, 2**63 - 1)), "shapes": int(rng.integers(8, 120)),
+               "threads": int(rng.integers(3, 6)), "ops": int(rng.integers(10, 60))}
+
+
+def _scene_shapes(cd, rng, count):
+    """count single shapes (fields as arrays), in runs of one layout (kind, dtype, sweep, control
+    point count) that extend can add as one batch; a tenth far away or huge."""
+    shapes, layout = [], None
+    while len(shapes) < count:
+        if layout is None or rng.random() < 0.6:
+            layout = (THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))],
+                      np.float32 if rng.random() < 0.15 else np.float64, rng.random() < 0.25)
+        kind, dtype, swept = layout
+        outlier = rng.random() < 0.1
+        scale = float(10 ** rng.uniform(6, 15)) if outlier and rng.random() < 0.5 else float(rng.uniform(0.1, 2))
+        center = rng.uniform(0, 10, 3) + (rng.choice([-1, 1], 3) * 10 ** rng.uniform(6, 15) if outlier else 0)
+        fields = _shape(rng, kind, scale, [float(c) for c in center])
+        if swept:
+            fields["sweep"] = float(rng.uniform(0, 0.5) * scale)
+        try:
+            shape = _single_shape(cd, kind, fields, dtype)
+        except (ValueError, TypeError, OverflowError):
+            layout = None
+            continue
+        shapes.append(shape)
+    return shapes
+
+
+def _single_shape(cd, kind, fields, dtype=np.float64):
+    cls = getattr(cd, kind.capitalize())
+    with np.errstate(over="ignore"):  # float32 fields past its range: the constructor's error
+        args = {k: np.asarray(v, dtype=dtype) for k, v in fields.items()}
+    sweep = args.pop("sweep", None)
+    return cls(*args.values(), sweep=sweep) if sweep is not None else cls(*args.values())
+
+
+def _stacked(cd, shapes):
+    """The shapes (of one layout) as one batch, or None when their layouts differ."""
+    arrays = [s.to_arrays() for s in shapes]
+    first = arrays[0]
+    if any(s.kind != shapes[0].kind or a.keys() != first.keys()
+           or any(a[k].shape != first[k].shape or a[k].dtype != first[k].dtype for k in a)
+           for s, a in zip(shapes, arrays)):
+        return None
+    return type(shapes[0]).from_arrays({k: np.stack([a[k] for a in arrays]) for k in first})
+
+
+def _outcome(call):
+    """("ok", answer as text) or ("error", exception type): what serial and threaded runs compare."""
+    try:
+        answer = call()
+    except Exception as error:  # noqa: BLE001 (compared, and checked against THREAD_ERRORS)
+        return ("error", type(error).__name__, str(error)[:200])
+    if isinstance(answer, np.ndarray):
+        return ("ok", answer.dtype.str, answer.shape, answer.tobytes().hex())
+    return ("ok", repr(answer))
+
+
+def _query(scene, op, names, queries):
+    """The call of a reading op on scene (a thread's scene or a serial one)."""
+    name, args = op[0], op[1:]
+    if name == "pairs":
+        d, workers, max_pairs = args
+        return lambda: scene.pairs_within(d, workers=workers, max_pairs=max_pairs)
+    if name == "nearest":
+        return lambda: scene.nearest(queries[args[0]], k=args[1])
+    if name == "within":
+        return lambda: scene.within(queries[args[0]], args[1])
+    if name == "nearest_name":
+        return lambda: scene.nearest(names[args[0]], k=args[1], exclude=[names[i] for i in args[2]])
+    if name == "within_name":
+        return lambda: scene.within(names[args[0]], args[1])
+    if name == "matrix":
+        return lambda: scene.distance_matrix([names[i] for i in args[0]], [names[i] for i in args[1]])
+    if name == "shape":
+        return lambda: sorted((k, v.dtype.str, v.tobytes().hex()) for k, v in scene[names[args[0]]].to_arrays().items())
+    if name == "pickle":  # pickled and loaded, or deep-copied
+        def copied():
+            import copy
+            import pickle
+
+            twin = pickle.loads(pickle.dumps(scene)) if args[1] == "pickle" else copy.deepcopy(scene)
+            return twin.names, twin.pairs_within(args[0]), twin.nearest(queries[0], k=3)
+        return copied
+    raise AssertionError(op)
+
+
+def run_thread_case(cd, case):
+    """None, or a finding (a dict with its detail) for one scenario."""
+    import threading
+    import traceback
+
+    rng = np.random.default_rng(case["seed"])
+    n = case["shapes"]
+    shapes = _scene_shapes(cd, rng, n)
+    names = [f"s{i}" for i in range(n)]
+    queries = [cd.Point(rng.uniform(0, 10, 3))] + _scene_shapes(cd, rng, 3) + [
+        cd.Line(rng.uniform(0, 10, 3), rng.normal(size=3)), cd.Point([1e12, -3e14, 2.0])]
+    first = int(rng.integers(0, n // 2))
+    scene = cd.Scene()
+    for i in range(first):
+        scene.add(names[i], shapes[i])
+    claim = threading.Lock()
+    added = [first]  # shapes claimed and added, in order (under claim)
+    seen, failures = [], []
+
+    def distance_limit(r):
+        x = r.random()
+        return 0.0 if x < 0.1 else 1e30 if x < 0.15 else float(10 ** r.uniform(-3, 1))
+
+    def worker(t):
+        r = np.random.default_rng([case["seed"], t])
+        try:
+            for _ in range(case["ops"]):
+                op = THREAD_OPS[r.integers(0, len(THREAD_OPS))]
+                present = len(scene)
+                if op in ("add", "extend"):
+                    with claim:
+                        at = added[0]
+                        if at >= n:
+                            continue
+                        if op == "extend":
+                            stop = min(n, at + int(r.integers(1, 6)))
+                            while stop > at + 1 and _stacked(cd, shapes[at:stop]) is None:
+                                stop -= 1
+                            scene.extend(names[at:stop], _stacked(cd, shapes[at:stop]))
+                        else:
+                            stop = at + 1
+                            scene.add(names[at], shapes[at])
+                        added[0] = stop
+                    continue
+                if op == "duplicate":
+                    if present == 0:
+                        continue
+                    before = len(scene)
+                    got = _outcome(lambda: scene.add(names[int(r.integers(0, present))], shapes[0]))
+                    seen.append((("duplicate",), before, len(scene), got))
+                    continue
+                if op == "pairs":
+                    max_pairs = None if r.random() < 0.5 else int(r.integers(0, 40))
+                    args = (distance_limit(r), int(r.choice([1, 2, -1])), max_pairs)
+                elif op == "nearest":
+                    args = (int(r.integers(0, len(queries))), int(r.choice([1, 3, 7, 2**62])))
+                elif op == "within":
+                    args = (int(r.integers(0, len(queries))), distance_limit(r))
+                elif op == "pickle":
+                    args = (distance_limit(r), str(r.choice(["pickle", "deepcopy"])))
+                else:  # by name: only names present now (the scene only grows)
+                    if present == 0:
+                        continue
+                    pick = lambda: int(r.integers(0, present))  # noqa: E731
+                    if op == "nearest_name":
+                        args = (pick(), int(r.choice([1, 2, 5])), tuple(pick() for _ in range(int(r.integers(0, 3)))))
+                    elif op == "within_name":
+                        args = (pick(), distance_limit(r))
+                    elif op == "matrix":
+                        args = (tuple(pick() for _ in range(int(r.integers(0, 4)))),
+                                tuple(pick() for _ in range(int(r.integers(0, 4)))))
+                    else:
+                        args = (pick(),)
+                before = len(scene)
+                got = _outcome(_query(scene, (op, *args), names, queries))
+                seen.append(((op, *args), before, len(scene), got))
+        except BaseException:  # noqa: BLE001 (an add that raised: reported by the main thread)
+            failures.append(traceback.format_exc()[-2000:])
+
+    threads = [threading.Thread(target=worker, args=(t,)) for t in range(case["threads"])]
+    switch = sys.getswitchinterval()
+    sys.setswitchinterval(1e-5)  # the GIL changes hands often: more interleavings of the threads
+    try:
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+    finally:
+        sys.setswitchinterval(switch)
+    if failures:
+        return {"finding": "an add raised in a thread", "detail": failures[0]}
+    for i in range(added[0], n):  # the rest, so that the end state is the whole serial scene
+        scene.add(names[i], shapes[i])
+
+    serial_scenes, serial_answers = {}, {}
+
+    def serial(m):
+        if m not in serial_scenes:
+            s = cd.Scene()
+            for i in range(m):
+                s.add(names[i], shapes[i])
+            serial_scenes[m] = s
+        return serial_scenes[m]
+
+    def serial_answer(op, m):
+        if (op, m) not in serial_answers:
+            serial_answers[op, m] = _outcome(_query(serial(m), op, names, queries))
+        return serial_answers[op, m]
+
+    for op, before, after, got in seen:
+        if got[0] == "error" and got[1] not in THREAD_ERRORS:
+            return {"finding": f"{op[0]}: {got[1]}", "detail": f"{op} with {before}..{after} shapes: {got}"}
+        if op[0] == "duplicate":
+            if got[:2] != ("error", "ValueError"):
+                return {"finding": "adding a name taken did not raise ValueError", "detail": f"{got}"}
+            continue
+        if op[0] == "pairs" and got[0] == "error" and op[3] is not None:
+            # max_pairs: the count at which the search stops may follow the workers' order
+            expected = [serial_answer(op, m)[:2] for m in range(before, after + 1)]
+            if got[:2] not in expected:
+                return {"finding": "pairs_within with max_pairs: an error no serial scene gives",
+                        "detail": f"{op} with {before}..{after} shapes: {got}, serial: {expected}"}
+            continue
+        if not any(serial_answer(op, m) == got for m in range(before, after + 1)):
+            return {"finding": f"{op[0]}: an answer no serial scene gives",
+                    "detail": f"{op} with {before}..{after} shapes: {str(got)[:500]}; serial: "
+                              f"{str(serial_answer(op, before))[:500]}"}
+    final = [("pairs", 1.0, 1, None), ("nearest", 0, 3), ("within", 1, 2.0), ("pickle", 0.5, "pickle"),
+             ("pickle", 0.5, "deepcopy"), ("shape", n - 1)]
+    for op in final:
+        got, expected = _outcome(_query(scene, op, names, queries)), serial_answer(op, n)
+        if got != expected:
+            return {"finding": f"the scene's end state: {op[0]} differs from the serial scene's",
+                    "detail": f"{op}: {str(got)[:500]}; serial: {str(expected)[:500]}"}
+    if scene.names != names:
+        return {"finding": "the scene's end state: names differ from the serial order", "detail": ""}
+    return None
+
+
+def fuzz_threads(count, seed, python=sys.executable, progress=False, timeout=THREAD_TIMEOUT):
+    """count thread scenarios, each in its own child held to timeout seconds; a summary as fuzz()'s."""
+    summary = {"cases": 0, "crashes": 0, "hangs": 0, "findings": 0, "examples": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        for case in generate_threads(seed, count):
+            _run_chunk([case], "threads", python, timeout, tmp, summary)
+            if progress and (case["index"] + 1) % 10 == 0:
+                print(f"  {summary['cases']} scenarios, {summary['crashes']} crashes, {summary['hangs']} hangs, "
+                      f"{summary['findings']} findings", file=sys.stderr, flush=True)
+    return summary
+
+
+# ----------------------------------------------------------------------------------------------
+# arguments: every entry point called with hostile scalar arguments
+# ----------------------------------------------------------------------------------------------
+# Each call puts one hostile value (HOSTILE: huge and negative integers, bools, NumPy integers and
+# bools, floats where integers are expected, NaN and inf, strings, None, odd objects; and a few
+# valid values, so that the valid paths run too) into one argument of one entry point, over a
+# small, an empty or a one-element batch, an outer pair of 10^5-element batches (10^10 answers), or
+# a huge one (np.broadcast_to 10^15 rows: a view that must never be copied); the calls over the last
+# two are stopped by a progress callback once the work starts. The calls run
+# in children of ARGUMENT_MEMORY bytes of address space. A finding: a crash, a hang, an exception
+# other than TypeError, ValueError, MemoryError and IndexError (KeyError where the argument is a
+# scene shape's name), a message with pybind11's "Unable to cast" or "incompatible function
+# arguments", or a MemoryError not in the library's words (std::bad_alloc, NumPy's "Unable to
+# allocate": memory really asked for) or after the process really grew by ARGUMENT_GROWTH bytes.
+HOSTILE = ("2**62", "2**63", "2**64+1", "10**30", "-2**63-1", "-1", "0", "1", "3", "True", "False",
+           "np.int64(2**62)", "np.uint64(2**64-1)", "np.int8(-1)", "np.intc(2)", "np.bool_(True)", "np.bool_(False)",
+           "1.5", "2.0", "1e300", "-0.0", "nan", "inf", "-inf", "np.float64(3.0)", "np.float32('nan')",
+           "np.longdouble('1e4000')", "'3'", "''", "'float64'", "None", "b'1'", "[1]", "[]", "(2, 3)",
+           "np.array(2**62)", "np.array([1, 2])", "np.zeros((0,))", "1+0j", "fractions.Fraction(1, 3)",
+           "decimal.Decimal('1e400')", "object()")
+BATCHES = ("small", "empty", "one", "outer", "huge")
+HUGE = 10**15
+POSITIONS = ("p", "p0", "p1", "origin", "center", "control_points")  # the fields a translation moves
+# entry point -> the arguments hostile values go into
+ARGUMENTS = {
+    "distance": ("a", "workers", "precision", "solver", "progress"),
+    "closest_points": ("b", "workers", "precision"),
+    "within": ("d", "workers", "solver"),
+    "intersects": ("workers", "progress"),
+    "distance_if_within": ("d", "workers"),
+    "nearest": ("k", "workers", "a", "precision"),
+    "pairs_within": ("d", "workers", "max_pairs", "b"),
+    "Scene.nearest": ("k", "shape"),
+    "Scene.within": ("d", "shape"),
+    "Scene.pairs_within": ("d", "workers", "max_pairs"),
+    "constructor": ("field", "sweep", "copy"),
+    "indexing": ("key", "slice", "tuple"),
+    "dask.pairs_within": ("d", "tiles", "workers"),
+}
+ARGUMENT_MEMORY = 2 << 30
+ARGUMENT_GROWTH = 256 << 20
+ALLOWED_ERRORS = (TypeError, ValueError, MemoryError, IndexError)
+
+
+def generate_arguments(seed: int, count: int):
+    rng = np.random.default_rng(seed)
+    entries = sorted(ARGUMENTS)
+    for index in range(count):
+        entry = entries[rng.integers(0, len(entries))]
+        slot = ARGUMENTS[entry][rng.integers(0, len(ARGUMENTS[entry]))]
+        yield {"index": index, "entry": entry, "argument": slot, "value": HOSTILE[rng.integers(0, len(HOSTILE))],
+               "batch": BATCHES[rng.integers(0, len(BATCHES))],
+               "kind": THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))]}
+
+
+class _Stopped(Exception):
+    """Raised by the progress callback of the calls over huge batches: the work had begun."""
+
+
+def _stop(done, total):
+    raise _Stopped
+
+
+def _hostile(text):
+    """The value HOSTILE's text names (evaluated: the text is the reproducer)."""
+    import decimal
+    import fractions
+
+    return eval(text, {"np": np, "decimal": decimal, "fractions": fractions, "nan": math.nan, "inf": math.inf})
+
+
+def _argument_batch(cd, kind, batch, column=False):
+    """A batch of kind: 3 elements, none, one, 10^5 (as a column (10^5, 1) or a row (1, 10^5): an
+    outer pair of them asks for 10^10 answers), or 10^15 (broadcast views, which copy=False must
+    refuse without copying; a point batch as the bare view, which a query converts)."""
+    fields = _shape(np.random.default_rng(1), kind, 1.0, [0.0, 0.0, 0.0])
+    if kind == "arc":
+        fields.update(normal=[0.0, 0.0, 1.0], start=[1.0, 0.0, 0.0], angle=1.0)
+    if kind == "annulus":
+        fields.update(inner_radius=0.5, outer_radius=1.0)
+    if kind in ("circle", "disk", "arc"):
+        fields.update(radius=1.0)
+    fields.pop("sweep", None)
+    rows = {"small": (3,), "empty": (0,), "one": None, "outer": (10**5, 1) if column else (1, 10**5),
+            "huge": (HUGE,)}[batch]
+    arrays = {k: np.asarray(v, dtype=float) for k, v in fields.items()}
+    if rows is not None:
+        arrays = {k: np.broadcast_to(v, (*rows, *v.shape)) for k, v in arrays.items()}
+    if batch == "huge" and kind == "point":
+        return arrays["p"]
+    if batch not in ("huge", "one"):
+        # Elements spread over a box of side 1000 (coincident ones would tie in every query)
+        offset = np.random.default_rng(2 + column).uniform(0, 1000, (*rows, 3))
+        arrays = {k: np.ascontiguousarray(v + (offset if v.ndim == len(rows) + 1 else offset[..., None, :])
+                                          if k in POSITIONS else v) for k, v in arrays.items()}
+    return getattr(cd, kind.capitalize())(*arrays.values(), copy=False)
+
+
+def _argument_call(cd, case):
+    """The call of one case (a function of no arguments, which builds its batches too), or None
+    when the case cannot be stopped (a huge batch without the progress callback)."""
+    value = _hostile(case["value"])
+    entry, slot, batch = case["entry"], case["argument"], case["batch"]
+    big = batch in ("huge", "outer")
+    if big and (entry.startswith("Scene.") or entry.startswith("dask.") or slot == "progress"):
+        return None  # no callback stops these: a huge batch would run for days
+    if big and entry == "pairs_within" and slot == "max_pairs":
+        return None  # the memory a large max_pairs lets pairs_within hold is what the caller asked for
+    progress = _stop if big else None
+    if entry in ("distance", "closest_points", "within", "intersects", "distance_if_within", "nearest", "pairs_within"):
+        def call():
+            fn = getattr(cd, entry)
+            args = {"a": _argument_batch(cd, case["kind"], batch, column=True),
+                    "b": _argument_batch(cd, "point", "small" if batch == "huge" else batch)}
+            if entry in ("within", "distance_if_within", "pairs_within"):
+                args["d"] = 1.0
+            if entry == "nearest":
+                args["k"] = 2
+            kw = {"progress": progress}
+            if entry == "pairs_within" and big:
+                kw["max_pairs"] = 10**6  # the default (10^8 pairs, 1.6 GB) fills the child's memory
+            if slot in args:
+                args[slot] = value
+            else:
+                kw[slot] = value
+            return fn(*args.values(), **kw)
+        return call
+    if entry.startswith("Scene."):
+        def call():
+            a = _argument_batch(cd, case["kind"], batch)
+            b = _argument_batch(cd, "point", batch)
+            scene = cd.Scene()
+            if batch != "empty":
+                for i, shape in enumerate([a[0], a[-1], b[0]] if batch != "one" else [a, b]):
+                    scene.add(f"s{i}", shape)
+            query = b[0] if batch not in ("one", "empty") else cd.Point([0.0, 0.0, 0.0])
+            args = {"shape": query, "k": 2} if entry == "Scene.nearest" else {"shape": query, "d": 1.0} \
+                if entry == "Scene.within" else {"d": 1.0}
+            kw = {}
+            if slot in args:
+                args[slot] = value
+            else:
+                kw[slot] = value
+            return getattr(scene, entry.split(".")[1])(*args.values(), **kw)
+        return call
+    if entry == "constructor":
+        def call():
+            a = _argument_batch(cd, case["kind"], "small" if big else batch)
+            arrays = {k: np.asarray(v) for k, v in a.to_arrays().items() if k != "sweep"}
+            if big:  # every field a broadcast view of 10^15 rows: refused, never copied
+                arrays = {k: np.broadcast_to(v[0], (HUGE, *v.shape[1:])) for k, v in arrays.items()}
+            kw = {"copy": bool(rng_choice(case, 2))}
+            if slot == "field":
+                arrays[sorted(arrays)[rng_choice(case, len(arrays))]] = value
+            else:
+                kw[slot] = value
+            return type(a)(*arrays.values(), **kw)
+        return call
+    if entry == "indexing":
+        def call():
+            a = _argument_batch(cd, case["kind"], "small" if batch == "huge" else batch, column=True)
+            key = value if slot == "key" else slice(value) if slot == "slice" else (value, Ellipsis)
+            return a[key]
+        return call
+
+    def call():
+        import circledist.dask as cdd  # dask.pairs_within: generated only where dask is installed
+
+        fields = _argument_batch(cd, case["kind"], batch).to_arrays()
+        sweep = fields.pop("sweep", None)
+        args = {"a": getattr(cdd, case["kind"].capitalize())(*fields.values(), sweep=sweep),
+                "b": np.asarray(_argument_batch(cd, "point", batch).to_arrays()["p"]), "d": 1.0}
+        kw = {"tiles": 2} if slot != "tiles" else {}
+        if slot in args:
+            args[slot] = value
+        else:
+            kw[slot] = value
+        import dask
+
+        return dask.compute(*cdd.pairs_within(*args.values(), **kw))
+    return call
+
+
+def rng_choice(case, n):
+    """A choice among n made from the case's index (the case stays a plain record)."""
+    return case["index"] * 2654435761 % (2**32) % n
+
+
+def _peak_bytes():
+    import resource
+
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+
+
+def run_argument_case(cd, case):
+    """None, or a finding (a dict with its detail) for one hostile call."""
+    call = _argument_call(cd, case)
+    if call is None:
+        return None
+    where = f"{case['entry']}({case['argument']})"
+    peak = _peak_bytes()
+    try:
+        call()
+    except _Stopped:
+        return None
+    except ALLOWED_ERRORS + (KeyError,) as error:
+        text = str(error)
+        if isinstance(error, KeyError) and not (case["entry"].startswith("Scene.") and case["argument"] == "shape"
+                                                and isinstance(_hostile(case["value"]), str)):
+            return {"finding": f"{where}: KeyError", "detail": text[:500]}
+        if "Unable to cast" in text or "incompatible function arguments" in text:
+            return {"finding": f"{where}: pybind11's words", "detail": f"{type(error).__name__}: {text[:500]}"}
+        if isinstance(error, MemoryError):
+            grown = _peak_bytes() - peak
+            if grown > ARGUMENT_GROWTH:
+                return {"finding": f"{where}: MemoryError after growing {grown >> 20} MiB", "detail": text[:500]}
+            if not text or "bad_alloc" in text:
+                return {"finding": f"{where}: MemoryError in C++'s words", "detail": text[:500]}
+        return None
+    except Exception as error:  # noqa: BLE001 (the finding)
+        return {"finding": f"{where}: {type(error).__name__}", "detail": f"{error!s}"[:500]}
+    return None
+
+
+def fuzz_arguments(count, seed, chunk, timeout, python=sys.executable, progress=False):
+    """count hostile calls, chunk by chunk in children held to ARGUMENT_MEMORY; a summary as
+    fuzz()'s, with the calls per entry point."""
+    import importlib.util
+
+    summary = {"cases": 0, "crashes": 0, "hangs": 0, "findings": 0, "examples": [], "classes": {}}
+    dask = importlib.util.find_spec("dask") is not None
+    cases = (c for c in generate_arguments(seed, count) if dask or not c["entry"].startswith("dask."))
+    with tempfile.TemporaryDirectory() as tmp:
+        while True:
+            todo = [c for _, c in zip(range(chunk), cases)]
+            if not todo:
+                break
+            for c in todo:
+                summary["classes"][c["entry"]] = summary["classes"].get(c["entry"], 0) + 1
+            _run_chunk(todo, "arguments", python, timeout, tmp, summary, memory=ARGUMENT_MEMORY)
+            if progress:
+                print(f"  {summary['cases']} calls, {summary['crashes']} crashes, {summary['hangs']} hangs, "
+                      f"{summary['findings']} findings", file=sys.stderr, flush=True)
+    return summary
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if argv and argv[0] == "--child":
@@ -646,9 +1185,21 @@ def main(argv=None):
                         help="instead: the command line on N hostile files (FIFOs, devices, zip bombs, lying .npy "
                              "headers, deep nesting, surrogates, huge counts, odd compression, foreign members, "
                              "truncated and flipped files), each in a process held to 1 GiB and 60 s")
+    parser.add_argument("--threads", type=int, metavar="N",
+                        help="instead: N scenarios of a Scene shared by 3-5 threads that add and query it at "
+                             "once, each in its own child held to --timeout seconds (at most 120), every answer "
+                             "checked against serial scenes")
+    parser.add_argument("--arguments", type=int, metavar="N",
+                        help="instead: N calls of the entry points with hostile scalar arguments (huge integers, "
+                             "bools, NumPy scalars, floats, NaN, strings, None; small, empty and 10^15-row "
+                             "broadcast batches), --chunk calls per child held to 2 GiB")
     args = parser.parse_args(argv)
     t0 = time.time()
-    if args.files is not None:
+    if args.threads is not None:
+        summary = fuzz_threads(args.threads, args.seed, progress=True, timeout=min(args.timeout, THREAD_TIMEOUT))
+    elif args.arguments is not None:
+        summary = fuzz_arguments(args.arguments, args.seed, args.chunk, args.timeout, progress=True)
+    elif args.files is not None:
         summary = fuzz_files(args.files, args.seed, progress=True)
     else:
         summary = fuzz(args.cases, args.seed, args.chunk, args.timeout, progress=True, batched=args.batched)

@@ -8,10 +8,13 @@
 #   bash tools/run.sh docs   install what is missing, build the package, build the API reference
 #                            (docs/api, Sphinx) into build/docs/index.html, warnings as errors
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
-#                            mode over N cases (default 10^7; docs/fuzz_report.json), then the
-#                            differential accuracy test's long mode over N library answers (every
-#                            solver x precision x entry point, both orders; 168 per case)
-#                            (docs/differential_report.json)
+#                            mode over N cases (default 10^7; docs/fuzz_report.json), its thread
+#                            class over N/10^4 scenarios of a Scene shared by threads that add and
+#                            query it (docs/fuzz_threads_report.json), its argument class over N/100
+#                            calls of every entry point with hostile scalar arguments
+#                            (docs/fuzz_arguments_report.json), then the differential accuracy
+#                            test's long mode over N library answers (every solver x precision x
+#                            entry point, both orders; 168 per case) (docs/differential_report.json)
 # Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
 # from apt when missing; the Python packages pyproject.toml lists (build requires, dependencies,
 # the task's extras) go into ./.venv (which sees the system's site-packages).
@@ -137,6 +140,10 @@ case "$task" in
     status=0
     "$py" tools/fuzz_crash.py --cases "${2:-10000000}" --chunk 200000 --batched --timeout 1800 \
       --report docs/fuzz_report.json || status=$?
+    "$py" tools/fuzz_crash.py --threads $(( ${2:-10000000} / 10000 + 1 )) --report docs/fuzz_threads_report.json \
+      || status=$?
+    "$py" tools/fuzz_crash.py --arguments $(( ${2:-10000000} / 100 + 1 )) --chunk 5000 --timeout 600 \
+      --report docs/fuzz_arguments_report.json || status=$?
     "$py" -m tools.differential --answers "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
     exit $status
     ;;
