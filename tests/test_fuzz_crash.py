@@ -103,9 +103,8 @@ def test_thread_scenarios_catch_an_answer_no_serial_scene_gives():
 
 
 # Families of the argument fuzz that are open library findings, each with its strict xfail in
-# tests/test_open_findings.py: a batch index of an integer in [2**63, 2**64) raises NumPy's
-# OverflowError. Remove a family here when its xfail passes.
-OPEN_ARGUMENT_FAMILIES = {"indexing(key): OverflowError", "indexing(tuple): OverflowError"}
+# tests/test_open_findings.py (none now). Remove a family here when its xfail passes.
+OPEN_ARGUMENT_FAMILIES = set()
 
 
 def test_arguments_slice_finds_nothing(tmp_path):

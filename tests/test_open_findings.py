@@ -105,28 +105,6 @@ def test_huge_arc_small_ring_unique():
         assert cd.closest_points(x, y, solver="polished", precision="float64").unique
 
 
-# ---- a batch index beyond int64 (tools/fuzz_crash.py --arguments) ----------------------------
-# Indexing a batch with an integer in [2**63, 2**64) (a Python int or numpy.uint64), alone or in a
-# tuple, raises NumPy's OverflowError "Python int too large to convert to C long" (the index reaches
-# NumPy unchecked, _batch.batch_key); an integer past that range gets NumPy's IndexError that only
-# integers are valid indices. Any such integer is out of bounds of every batch: an IndexError
-# naming the index, as for 5 on a batch of 3, is the answer. Its fuzz families are allowed in
-# tests/test_fuzz_crash.py (OPEN_ARGUMENT_FAMILIES) until this passes.
-@pytest.mark.xfail(strict=True, reason="a batch index beyond int64: NumPy's OverflowError, or its IndexError "
-                                       "that only integers are indices")
-@pytest.mark.parametrize("form", ["alone", "tuple", "with ellipsis"])
-@pytest.mark.parametrize("index", [2**63, 2**64 - 1, "uint64", 2**64, 10**30, -2**63 - 1])
-@pytest.mark.parametrize("rows", [0, 3])
-def test_batch_index_beyond_int64_is_out_of_bounds(index, form, rows):
-    import numpy as np
-
-    index = np.uint64(2**64 - 1) if index == "uint64" else index
-    key = {"alone": index, "tuple": (index,), "with ellipsis": (index, Ellipsis)}[form]
-    batch = cd.Point(np.zeros((rows, 3)))
-    with pytest.raises(IndexError, match="out of bounds"):
-        batch[key]
-
-
 # ---- nearest on coincident shapes: the progress callback and Ctrl-C wait (tools/fuzz_crash.py
 # --arguments, an outer pair of 10^5 coincident points) ---------------------------------------
 # nearest(a, a, k=2) over 10^5 identical points ran 27 s before its first progress call, and a

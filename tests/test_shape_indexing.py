@@ -121,3 +121,19 @@ def test_arc_batches_index_as_the_batch_with_fields_broadcast():
             part = arcs[key]
             assert part.kind == "Arc" and part.to_arrays()["angle"].dtype == np.dtype(dtype)
             assert np.array_equal(cd.distance(part, target), whole[key])
+
+
+# An integer index beyond int64 (a Python int or numpy.uint64), alone or in a tuple, is out of
+# bounds of every batch: NumPy's own conversion raised OverflowError ("Python int too large to
+# convert to C long") or called it no integer.
+@pytest.mark.parametrize("form", ["alone", "tuple", "with ellipsis"])
+@pytest.mark.parametrize("index", [2**63, 2**64 - 1, "uint64", 2**64, 10**30, -2**63 - 1])
+@pytest.mark.parametrize("rows", [0, 3])
+def test_batch_index_beyond_int64_is_out_of_bounds(index, form, rows):
+    index = np.uint64(2**64 - 1) if index == "uint64" else index
+    key = {"alone": index, "tuple": (index,), "with ellipsis": (index, Ellipsis)}[form]
+    batch = cd.Point(np.zeros((rows, 3)))
+    with pytest.raises(IndexError, match=f"Point: index {int(index)} is out of bounds for axis 0 with size {rows}"):
+        batch[key]
+    with pytest.raises(IndexError, match="out of bounds for axis 1 with size 2"):
+        cd.Point(np.zeros((3, 2, 3)))[0, index]

@@ -20,12 +20,12 @@ def _not_an_index(kind, item, fancy):
     return f"{kind}: only {allowed} index a batch, got {item!r}"
 
 
-def batch_key(key, ndim, kind, *, fancy):
+def batch_key(key, batch_shape, kind, *, fancy):
     """`key` as a tuple with one entry per batch axis (Ellipsis expanded, the missing trailing
     axes taken whole), to be followed by the fields' own axes. Integers, slices and one Ellipsis
     always; with `fancy`, integer and boolean arrays (and lists) too, as NumPy takes them.
     TypeError for other entries (None, which is not supported, floats), IndexError for more
-    indices than batch axes."""
+    indices than batch axes, or an integer beyond int64 (out of bounds of any batch)."""
     items = list(key) if isinstance(key, tuple) else [key]
     out, given = [], 0
     for item in items:
@@ -55,18 +55,33 @@ def batch_key(key, ndim, kind, *, fancy):
     ellipses = [i for i, item in enumerate(out) if item is Ellipsis]  # `is`: arrays compare elementwise
     if len(ellipses) > 1:
         raise IndexError(f"{kind}: an index can only have a single ellipsis ('...')")
+    ndim = len(batch_shape)
     if given > ndim:
         raise IndexError(f"{kind}: too many indices for a batch of {ndim} dimension(s): {given} were given")
     fill = [slice(None)] * (ndim - given)
-    if ellipses:
-        return tuple(out[:ellipses[0]] + fill + out[ellipses[0] + 1:])
-    return tuple(out + fill)
+    out = out[:ellipses[0]] + fill + out[ellipses[0] + 1:] if ellipses else out + fill
+    _check_wide_integers(out, batch_shape, kind)
+    return tuple(out)
+
+
+_INT64 = np.iinfo(np.int64)
+
+
+def _check_wide_integers(index, batch_shape, kind):
+    """An integer index beyond int64 is out of bounds of every batch: NumPy would raise an
+    OverflowError converting it (or call it no integer), so it is refused here, with NumPy's words
+    for an index out of bounds. Integers within int64 are left to NumPy."""
+    axis = 0
+    for item in index:
+        if isinstance(item, int) and not _INT64.min <= item <= _INT64.max:
+            raise IndexError(f"{kind}: index {item} is out of bounds for axis {axis} with size {batch_shape[axis]}")
+        axis += item.ndim if isinstance(item, np.ndarray) and item.dtype == bool else 1
 
 
 def index_fields(fields, batch_shape, key, kind, broadcast_to, *, fancy):
     """Each field (name -> array) broadcast to the batch shape and indexed by `key` on the batch
     axes, its own axes kept."""
-    index = batch_key(key, len(batch_shape), kind, fancy=fancy)
+    index = batch_key(key, tuple(batch_shape), kind, fancy=fancy)
     out = {}
     for name, value in fields.items():
         core = TRAILING_DIMS[name]
