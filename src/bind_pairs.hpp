@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -221,9 +222,12 @@ Index max_pairs_of(const char* owner, py::handle max_pairs) {
 // max_pairs >= 0: the candidates are counted as they are found, query by query, and once more
 // than max_pairs are, the search stops and MemoryError is raised (owner's name in its message):
 // no more than max_pairs (and the last query's pairs on each thread) are ever held.
-template <class Find>
-PairList chunked_pairs(Index n, int workers, Find&& find, py::handle progress = py::none(), Index max_pairs = -1,
-                       const char* owner = "pairs_within") {
+// `find` is type-erased: one copy of this function serves every caller (a template copy per
+// caller's lambda cost the module 8 kB each), and a call per chunk or per query is nothing
+// against the tree walk it makes.
+using FindPairs = std::function<void(Index, Index, PairList&)>;
+PairList chunked_pairs(Index n, int workers, const FindPairs& find, py::handle progress = py::none(),
+                       Index max_pairs = -1, const char* owner = "pairs_within") {
   const Index chunk = chunk_size(n, workers);
   std::vector<PairList> parts(static_cast<size_t>((n + chunk - 1) / chunk));
   std::vector<size_t> start(size_t(n) + 1, 0);  // start[i + 1]: query i's pairs, then where they end

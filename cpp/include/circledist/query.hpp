@@ -168,20 +168,24 @@ template <class Roots, class A, class B> CIRCLEDIST_INLINE auto promoted_distanc
   }
 }
 
-// The answer with its parameters in the shapes' domains (param_in_domain, primitives.hpp).
-template <class R, class A, class B> CIRCLEDIST_INLINE R params_in_domain(R r, const A& a, const B& b) {
+// The answer's parameters moved into the shapes' domains (param_in_domain, primitives.hpp), in
+// place: a copy of the whole answer per kernel, inlined everywhere, cost the module tens of kB.
+template <class R, class A, class B> inline void keep_params_in_domain(R& r, const A& a, const B& b) {
   r.param_a = param_in_domain(r.param_a, a);
   r.param_b = param_in_domain(r.param_b, b);
-  return r;
 }
 
 template <class Roots, class A, class B> CIRCLEDIST_INLINE auto promoted_closest_points(const A& a, const B& b) {
   if constexpr (promotable<A>::value && promotable<B>::value) {
     const auto pa = promoted(a);
     const auto pb = promoted(b);
-    return params_in_domain(ranged_closest_points<Roots>(pa, pb), pa, pb).template cast<float>();
+    auto r = ranged_closest_points<Roots>(pa, pb);
+    keep_params_in_domain(r, pa, pb);
+    return r.template cast<float>();
   } else {
-    return params_in_domain(ranged_closest_points<Roots>(a, b), a, b);
+    auto r = ranged_closest_points<Roots>(a, b);
+    keep_params_in_domain(r, a, b);
+    return r;
   }
 }
 
