@@ -1110,7 +1110,20 @@ def rng_choice(case, n):
     return case["index"] * 2654435761 % (2**32) % n
 
 
-def _peak_bytes():
+def _peak_bytes(reset=False):
+    """The process's peak resident size; with reset, the peak is first set back to the current
+    size where the system allows it (Linux: /proc/self/clear_refs), so that growth is measured
+    from now even in a process that peaked higher before (a test suite's)."""
+    try:
+        if reset:
+            with open("/proc/self/clear_refs", "w") as f:
+                f.write("5")
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
     import resource
 
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
@@ -1122,7 +1135,7 @@ def run_argument_case(cd, case):
     if call is None:
         return None
     where = f"{case['entry']}({case['argument']})"
-    peak = _peak_bytes()
+    peak = _peak_bytes(reset=True)
     try:
         call()
     except _Stopped:
