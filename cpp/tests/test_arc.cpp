@@ -537,19 +537,24 @@ template <class S> void start_length_case(const S& s, const Arc& a, int& same, i
   }
 }
 
+// Every kind against the arc a (a random one of each, drawn from d): run(shape) for each.
+template <class Run> void each_kind_against(Draw& d, Run&& run) {
+  run(d.vec());
+  run(Line{d.vec(), d.vec()});
+  run(Ray{d.vec(), d.vec()});
+  run(Segment{d.vec(), d.vec()});
+  run(Circle{d.vec(), d.vec(), d.radius()});
+  run(Disk{d.vec(), d.vec(), d.radius()});
+  run(d.arc());
+}
+
 void start_length_tests() {
   Draw d(20261126);
   int same = 0, close = 0;
   for (int i = 0; i < int(200 * ARC_RANDOM_SCALE) + 1; ++i) {
     Arc a = d.arc();
     a.angle = std::min(a.angle, 6.0);  // a whole arc is its circle, which has no start
-    start_length_case(d.vec(), a, same, close);
-    start_length_case(Line{d.vec(), d.vec()}, a, same, close);
-    start_length_case(Ray{d.vec(), d.vec()}, a, same, close);
-    start_length_case(Segment{d.vec(), d.vec()}, a, same, close);
-    start_length_case(Circle{d.vec(), d.vec(), d.radius()}, a, same, close);
-    start_length_case(Disk{d.vec(), d.vec(), d.radius()}, a, same, close);
-    start_length_case(d.arc(), a, same, close);
+    each_kind_against(d, [&](const auto& s) { start_length_case(s, a, same, close); });
   }
   counts["start length (bit for bit)"] = same;
   counts["start length (1e+-200)"] = close;
@@ -558,8 +563,8 @@ void start_length_tests() {
 // Only the normal's direction counts too (README: any finite nonzero normal): scaled by 2^e
 // (exact) or by 1e+-80 or 1e+-300 (its direction rounded), with the start scaled by 1e+-20 or
 // 1e+-60, it answers as the arc's own within the bar, distance() and closest_points() alike (not
-// bit for bit: a normal of 2^-1000 leaves line_ring_minimum's range, and its pair the fast path). The line-arc fast path
-// (ArcEnds) brings the normal back too: from the raw normal of 1e-80 and a unit start, the end
+// bit for bit: a normal of 2^-1000 leaves line_ring_minimum's range, and its pair the fast
+// path). The line-arc fast path (ArcEnds) brings the normal back too: from the raw normal of 1e-80 and a unit start, the end
 // points' squared lengths lie in the subnormals, and a line's distance is 9-20% off.
 template <class S> void normal_length_case(const S& s, const Arc& a, int& powers, int& decimal) {
   const double base = distance(s, a);
@@ -596,13 +601,7 @@ void normal_length_tests() {
   for (int i = 0; i < int(100 * ARC_RANDOM_SCALE) + 1; ++i) {
     Arc a = d.arc();
     a.angle = std::min(a.angle, 6.0);  // a whole arc is its circle, which has no start
-    normal_length_case(d.vec(), a, powers, decimal);
-    normal_length_case(Line{d.vec(), d.vec()}, a, powers, decimal);
-    normal_length_case(Ray{d.vec(), d.vec()}, a, powers, decimal);
-    normal_length_case(Segment{d.vec(), d.vec()}, a, powers, decimal);
-    normal_length_case(Circle{d.vec(), d.vec(), d.radius()}, a, powers, decimal);
-    normal_length_case(Disk{d.vec(), d.vec(), d.radius()}, a, powers, decimal);
-    normal_length_case(d.arc(), a, powers, decimal);
+    each_kind_against(d, [&](const auto& s) { normal_length_case(s, a, powers, decimal); });
   }
   counts["normal length (2^e)"] = powers;
   counts["normal length (1e+-80, 1e+-300)"] = decimal;
