@@ -570,17 +570,24 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   std::vector<Real> first_distances(first.size());
   evaluate.run(first, progress, 1, [&](Index p, Real distance) { first_distances[size_t(p)] = distance; });
   const std::vector<size_t> first_start = starts_of(first, n, c.workers);
+  // tau: the kk-th smallest (distance, index) of the seeds, its distance in tau and its index in
+  // tie. Where that distance is 0 no shape after `tie` can come before it (no distance is below
+  // 0): the second search looks at the shapes numbered below `tie` only, which keeps a set of
+  // coincident shapes from making every pair a candidate.
   std::vector<double> tau(static_cast<size_t>(n), -std::numeric_limits<double>::infinity());
+  std::vector<BroadIndex> tie(static_cast<size_t>(n), std::numeric_limits<BroadIndex>::max());
   {
     py::gil_scoped_release release;
     run_in_chunks(n, c.workers, [&](Index begin, Index end) {
-      std::vector<double> known;
+      std::vector<std::pair<Real, BroadIndex>> known;
       for (Index i = begin; i < end; ++i) {
-        known.assign(first_distances.begin() + std::ptrdiff_t(first_start[size_t(i)]),
-                     first_distances.begin() + std::ptrdiff_t(first_start[size_t(i) + 1]));
+        known.clear();
+        for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
+          known.emplace_back(first_distances[p], first[p].second);
         if (Index(known.size()) < kk || kk == 0) continue;
         std::nth_element(known.begin(), known.begin() + (kk - 1), known.end());
-        tau[size_t(i)] = known[size_t(kk - 1)];
+        tau[size_t(i)] = double(known[size_t(kk - 1)].first);
+        if (known[size_t(kk - 1)].first <= 0) tie[size_t(i)] = known[size_t(kk - 1)].second;
       }
     }, no_interrupt);
   }
@@ -596,7 +603,7 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
           for (size_t q = known; q < known_end; ++q)
             if (first[q].second == j) return;
           out.emplace_back(i, j);
-        });
+        }, tie[size_t(i)]);
       }
     }, progress.stage(2));
     second_distances.resize(second.size());

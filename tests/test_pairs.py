@@ -185,6 +185,37 @@ def test_nearest_k_beyond_b_pads_every_column(k):
     assert np.all(idx[:, 10:] == -1) and np.all(np.isinf(dist[:, 10:]))
 
 
+# Coincident shapes tie at every bound and at distance 0: the answers are the k smallest (0,
+# index), and the search among them must not make every pair a candidate (it once held n^2 pairs
+# and ran seconds before its first progress call). Sets where each shape appears many times
+# (several kinds, both orders, swept ones) against brute force; then 40,000 coincident points,
+# whose k nearest are found in well under a second.
+@pytest.mark.parametrize("kind", ["Point", "Segment", "Circle", "Disk", "Arc", "Annulus", "Bezier"])
+@pytest.mark.parametrize("copies", [1, 7, 40])
+def test_nearest_among_coincident_shapes_equals_brute_force(kind, copies):
+    rng = np.random.default_rng(len(kind) * 100 + copies)
+    few = random_batch(kind, max(1, 40 // copies), rng)
+    arrays = few.to_arrays()
+    many = type(few).from_arrays({name: np.repeat(np.asarray(v), copies, axis=0) if np.ndim(v) else v
+                                  for name, v in arrays.items()})
+    mixed = random_batch("Point", 5, rng)
+    for a, b in ((many, many), (mixed, many), (many, few)):
+        for k in (1, 3, copies + 2):
+            assert_nearest(cd.nearest(a, b, k=k), brute_nearest(a, b, k))
+
+
+def test_nearest_among_coincident_points_is_fast_and_reports_progress():
+    import time
+
+    a = cd.Point(np.zeros((40_000, 3)))
+    calls = []
+    start = time.perf_counter()
+    idx, dist = cd.nearest(a, a, k=2, progress=lambda done, total: calls.append((done, total)))
+    assert time.perf_counter() - start < 1.0
+    assert np.all(dist == 0) and np.all(idx == [0, 1])
+    assert calls and calls[-1][0] == calls[-1][1]
+
+
 @pytest.mark.parametrize("k", [2**40, 2**58])
 def test_nearest_of_no_queries_takes_a_k_numpy_can_shape(k):
     idx, dist = cd.nearest(cd.Point(np.zeros((0, 3))), cd.Point(np.zeros((5, 3))), k)

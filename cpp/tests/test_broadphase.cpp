@@ -309,6 +309,7 @@ int main() {
     check_sets(dup, dup, true, 0.0);
     check_sets(dup, a, false, 0.3);
     check_nearest(a, dup, 6);
+    check_nearest(dup, dup, 6);  // four ties at distance 0 each: the k smallest (0, index) first
   }
   // Every shape at one spot: points (all pairs at distance 0), then mixed kinds.
   {

@@ -365,7 +365,11 @@ template <class Real> class BoundingVolumeHierarchy {
   // Calls visit(j, bound) for every shape j whose lower bound to q is <= limit (or unknown), the
   // tree's shapes first, in no particular order. `limit`: a Real (every pair's), or a
   // PairLimit<Real> (each pair's from the reaches of q and of shape j; a node's from its largest).
-  template <class Limit, class Visit> void visit_within(const Volume<Real>& q, const Limit& limit, Visit&& visit) const {
+  // `below`: only the shapes j < below (a subtree whose least index is not below it is skipped
+  // whole).
+  template <class Limit, class Visit>
+  void visit_within(const Volume<Real>& q, const Limit& limit, Visit&& visit,
+                    BroadIndex below = std::numeric_limits<BroadIndex>::max()) const {
     const Real reach = q.reach();
     if (!nodes_.empty()) {
       // Depth first, on a stack of fixed size: a median split halves the count, so the depth is
@@ -376,9 +380,10 @@ template <class Real> class BoundingVolumeHierarchy {
       while (top > 0) {
         const BroadIndex at = stack[--top];
         const Node& node = nodes_[size_t(at)];
-        if (!node_within(q, node, detail::limit_of(limit, reach, node.reach))) continue;
+        if (node.least >= below || !node_within(q, node, detail::limit_of(limit, reach, node.reach))) continue;
         if (node.count > 0) {
           for (BroadIndex k = node.first; k < node.first + node.count; ++k) {
+            if (index_[size_t(k)] >= below) continue;
             const Volume<Real>& v = volumes_[size_t(k)];
             const Real bound = lower_bound(q, v);
             if (!(bound > detail::limit_of(limit, reach, v.reach()))) visit(index_[size_t(k)], bound);
@@ -390,6 +395,7 @@ template <class Real> class BoundingVolumeHierarchy {
       }
     }
     for (BroadIndex k = bounded_; k < size(); ++k) {
+      if (index_[size_t(k)] >= below) continue;
       const Volume<Real>& v = volumes_[size_t(k)];
       const Real bound = lower_bound(q, v);
       if (!(bound > detail::limit_of(limit, reach, v.reach()))) visit(index_[size_t(k)], bound);
@@ -418,20 +424,29 @@ template <class Real> class BoundingVolumeHierarchy {
     };
     for (BroadIndex p = bounded_; p < size(); ++p) offer(p);
     if (!nodes_.empty()) {
-      // Best first: nodes by their lower bound, stopping once no node can improve the k-th.
-      using NodeEntry = std::pair<Real, BroadIndex>;
+      // Best first: nodes by (lower bound, least index under them), the order of the entries
+      // themselves, stopping at the first node that cannot hold an entry before the k-th: every
+      // entry under a node is at least (its bound, its least index). Ties of the bound (shapes
+      // that coincide) are cut by the index, so a query among n coincident shapes visits
+      // O(k log n) nodes, not n.
+      struct NodeEntry {
+        Real bound;
+        BroadIndex least, at;
+        bool operator>(const NodeEntry& o) const { return bound > o.bound || (bound == o.bound && least > o.least); }
+      };
       std::priority_queue<NodeEntry, std::vector<NodeEntry>, std::greater<NodeEntry>> open;
-      open.push({node_bound(q, nodes_[0]), 0});
+      const auto push = [&](BroadIndex at) { open.push({node_bound(q, nodes_[size_t(at)]), nodes_[size_t(at)].least, at}); };
+      push(0);
       while (!open.empty()) {
-        const auto [bound, at] = open.top();
+        const NodeEntry top = open.top();
         open.pop();
-        if (BroadIndex(best.size()) == k && bound > best.front().first) break;
-        const Node& node = nodes_[size_t(at)];
+        if (BroadIndex(best.size()) == k && !(Entry{top.bound, top.least} < best.front())) break;
+        const Node& node = nodes_[size_t(top.at)];
         if (node.count > 0) {
           for (BroadIndex p = node.first; p < node.first + node.count; ++p) offer(p);
         } else {
-          open.push({node_bound(q, nodes_[size_t(at + 1)]), at + 1});
-          open.push({node_bound(q, nodes_[size_t(node.right)]), node.right});
+          push(top.at + 1);
+          push(node.right);
         }
       }
     }
@@ -447,6 +462,7 @@ template <class Real> class BoundingVolumeHierarchy {
     Real reach = 0;         // the largest Volume::reach under the node (for a PairLimit)
     BroadIndex first = 0, count = 0;  // a leaf: the shapes at positions [first, first + count)
     BroadIndex right = 0;             // an inner node: its children are the next node and `right`
+    BroadIndex least = 0;             // the least index of a shape under the node
   };
 
   std::vector<Volume<Real>> volumes_;  // by position: the bounded shapes in the leaves' order, then
@@ -577,6 +593,7 @@ template <class Real> class BoundingVolumeHierarchy {
     if (last - first <= leaf_size_) {
       node.first = first;
       node.count = last - first;
+      node.least = *std::min_element(index_.begin() + first, index_.begin() + last);
       return;
     }
     int axis;
@@ -604,6 +621,7 @@ template <class Real> class BoundingVolumeHierarchy {
       build(first, middle, at + 1, 1, stop);
       build(middle, last, node.right, 1, stop);
     }
+    node.least = std::min(nodes_[size_t(at + 1)].least, nodes_[size_t(node.right)].least);
   }
 
 };
