@@ -26,7 +26,7 @@ BEGIN, END = "<!-- past runs: rows kept by tools/report_pages.py -->", "<!-- end
 
 DIFFERENTIAL_INTRO = """\
 `python -m tools.differential` is the long mode of the differential accuracy test
-(`tests/test_differential.py` runs its CI slice). Cases are drawn from random and adversarial
+(`tests/accuracy/test_differential.py` runs its CI slice). Cases are drawn from random and adversarial
 families of every kind pair (`circledist_cases/differential.py`); every case is answered by every
 solver x precision combination, in both argument orders and through every entry point (distance,
 closest_points, within and distance_if_within at two limits, intersects), and each answer is
