@@ -27,8 +27,9 @@
    this script has CMake configure and build when it is missing or stale), which computes every distance in
    float, double and long double with the three root policies, and times them.
 4. Prints one table per kind x policy x precision (ns/query, max and median relative error on
-   the random and on the hard cases), writes docs/accuracy_vs_time.md with the recommended
-   default policy, docs/accuracy_vs_time.png (error against time) and docs/stability_sweeps.png.
+   the random and on the hard cases), writes docs/reports/accuracy_vs_time.md with the recommended
+   default policy, docs/reports/accuracy_vs_time.png (error against time) and
+   docs/reports/stability_sweeps.png.
 
 Relative error = |d - d_ref| / max(d_ref, largest radius of the query (an arc's radius, an
 annulus's outer radius); for two Bezier curves the larger curve size). The bar is 1e-12 in
@@ -77,7 +78,7 @@ GROUPS = {"random": 0, "hard": 1, "sweep": 2}
 ERROR_FLOOR = 1e-21  # zero errors are drawn here on log axes
 
 BUILD = ROOT / "build" / "accuracy_vs_time"
-DOCS = ROOT / "docs"
+DOCS = ROOT / "docs" / "reports"
 
 
 def _reference_version():
@@ -399,7 +400,7 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
     if s["failing_kinds"]:
         lines.append(f"- Even `{best}` misses the bar on: {', '.join(s['failing_kinds'])} (see the tables).")
     if sweep_summary:
-        lines.append("- Stability sweeps (double, `docs/stability_sweeps.png`): " + sweep_summary)
+        lines.append("- Stability sweeps (double, [stability_sweeps.png](stability_sweeps.png)): " + sweep_summary)
     missing = [k for k in KINDS if not compiled.get(k, False)]
     if missing:
         lines.append(f"- Kinds whose header is missing (not measured): {', '.join(missing)}.")
@@ -625,7 +626,7 @@ def main(argv=None):
     ap.add_argument("--binary", help="use this accuracy_vs_time executable")
     ap.add_argument("--kinds", help="comma-separated subset of the kinds")
     ap.add_argument("--quick", action="store_true", help="10 random cases per kind, 0.01 s timings")
-    ap.add_argument("--no-docs", action="store_true", help="print the table only; write no docs/ files")
+    ap.add_argument("--no-docs", action="store_true", help="print the table only; write no docs/reports/ files")
     args = ap.parse_args(argv)
     if args.quick:
         args.random, args.min_time = 10, 0.01
@@ -685,7 +686,7 @@ def main(argv=None):
         runtime = time.time() - t_start
         write_markdown(DOCS / "accuracy_vs_time.md", rows, best, stats, tied, other_precisions, all_cases,
                        sweep_fail["summary"], runtime, args.random, kinds, compiled, args.min_time)
-        print(f"wrote docs/accuracy_vs_time.md, docs/accuracy_vs_time.png, docs/stability_sweeps.png")
+        print(f"wrote docs/reports/accuracy_vs_time.md, accuracy_vs_time.png, stability_sweeps.png")
     print(f"runtime {runtime:.0f} s")
     return 0
 

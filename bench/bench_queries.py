@@ -2,7 +2,7 @@
 """Query timings of circledist: the scalar C++ loop, the batched and the scalar Python calls, and
 the PyPI package distance3d where it offers the same query, all on the same random inputs; plus
 the peak memory of a batch of 10^7 point-circle queries. Prints one markdown table and writes it
-with the machine's description to docs/benchmark.md.
+with the machine's description to docs/reports/benchmark.md.
 
     python -m bench.bench_queries [--n 100000] [--binary build/cpp/bench/bench_queries]
                                   [--kinds point-circle,line-disk,...] [--no-memory] [--quick]
@@ -23,7 +23,6 @@ bench/bench_kinds.hpp (and a shape reader in bench_queries.cpp if the shape is n
 from __future__ import annotations
 
 import argparse
-import datetime
 import os
 import platform
 import resource
@@ -45,7 +44,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_BINARY = ROOT / "build" / "cpp" / "bench" / "bench_queries"
-REPORT = ROOT / "docs" / "benchmark.md"
+REPORT = ROOT / "docs" / "reports" / "benchmark.md"
 SEED = 20240601
 
 # Issue 2's targets.
@@ -65,6 +64,14 @@ TARGET_ARC_RATIO = 1.3  # an arc query vs its circle counterpart, C++ scalar (is
 class ShapeSpec:
     make: Callable[[np.random.Generator, int], list]  # fields, each with leading dimension n
     cls: str  # circledist class name
+
+
+def _busy(load, cores):
+    """Whether the machine ran other work: the page says so in words, not as a load average."""
+    try:
+        return float(str(load).split()[0]) > 0.5 * float(cores)
+    except (ValueError, IndexError):
+        return False
 
 
 def _points(rng, n):
@@ -615,7 +622,7 @@ def targets(rows, mem):
                 out.append(f"- {piece}-{round_kind} C++ ≤ {TARGET_PIECE_RATIO:g}x line-{round_kind}: {r:.2f}x, "
                            f"{verdict(r <= TARGET_PIECE_RATIO)}")
     # Issue 19: an arc query costs at most 1.3x its circle counterpart. Here each kind has its own
-    # random inputs; bench/bench_arc.cpp compares on the same shapes (docs/arc.md, "Cost").
+    # random inputs; bench/bench_arc.cpp compares on the same shapes (docs/derivations/arc.md).
     arcs = [(by[a].cpp_ns / by[c].cpp_ns, a, c) for a, c in ARC_COUNTERPART.items()
             if a in by and c in by and by[a].cpp_ns and by[c].cpp_ns]
     if arcs:
@@ -641,11 +648,11 @@ def report(rows, info, mem, d3d_version, n, wall):
     parts = [
         "# Benchmark: query timings",
         "",
-        f"Written by `bench/bench_queries.py` (`bash tools/run.sh bench`) on "
-        f"{datetime.datetime.now().strftime('%Y-%m-%d %H:%M')}, in {wall:.0f} s.",
+        "Written by `bench/bench_queries.py` (`bash tools/run.sh bench`).",
         "",
-        f"Machine: {info['model']}, {info['cores']} cores ({info['usable']} usable), load average "
-        f"{info['load']} at the end of the run; {info['compiler']}; Python {info['python']}, "
+        f"Machine: {info['model']}, {info['cores']} cores ({info['usable']} usable)"
+        + (", shared with other work during the run" if _busy(info["load"], info["usable"]) else "")
+        + f"; {info['compiler']}; Python {info['python']}, "
         f"NumPy {info['numpy']}" + (f", distance3d {d3d_version}" if d3d_version else "") + ".",
         "",
         f"Inputs: {n:,} random queries per kind (seed {SEED}; centers and origins around the origin, "
@@ -717,7 +724,7 @@ def main():
     parser.add_argument("--d3d-budget", type=float, default=2.0, help="seconds of distance3d calls per kind")
     parser.add_argument("--memory-n", type=int, default=10_000_000)
     parser.add_argument("--no-memory", action="store_true")
-    parser.add_argument("--no-report", action="store_true", help="do not write docs/benchmark.md")
+    parser.add_argument("--no-report", action="store_true", help="do not write docs/reports/benchmark.md")
     parser.add_argument("--memory-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--memory-copy", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()

@@ -3,7 +3,7 @@
 computed: cd.distance over the whole batch).
 
 Prints a table (time, exact distance evaluations, polynomial solves) and writes
-docs/scene_scaling.md and docs/scene_scaling.png.
+docs/reports/scene_scaling.md and docs/reports/scene_scaling.png.
 
     python -m bench.bench_scene [--sizes 1000 10000 100000] [--repeats 3]
 """
@@ -24,7 +24,7 @@ import numpy as np
 import circledist as cd
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DOCS = os.path.join(HERE, "..", "docs")
+DOCS = os.path.join(HERE, "..", "docs", "reports")
 
 
 def disks(n, rng):
@@ -141,7 +141,7 @@ def main():
         f"`Scene.within(line, {args.within:g})`; brute force computes every line–disk distance in one",
         "batched `cd.distance` call. *distances* counts exact distance evaluations, *solves* polynomial",
         "solves (`cd.stats()`); the Scene's answers are checked equal to brute force. Best of",
-        f"{args.repeats} runs, on {machine}; load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start"
+        f"{args.repeats} runs, on {machine}"
         + (" (other work shared the machine: times are a busy machine's)." if load[0] > 1.5 else "."),
         "",
         table,
@@ -194,7 +194,7 @@ def main():
     fig.suptitle("A line against n disks: cost of one query")
     fig.tight_layout()
     fig.savefig(os.path.join(DOCS, "scene_scaling.png"))
-    print("wrote docs/scene_scaling.md and docs/scene_scaling.png")
+    print("wrote docs/reports/scene_scaling.md and docs/reports/scene_scaling.png")
 
 
 if __name__ == "__main__":

@@ -2,7 +2,7 @@
 """Batches on several threads: the time of one batched call with workers=1 and with every core
 (workers=-1), for 10^5 random queries of each dearer kind, and the speedup. Runs alternate
 (1, all, 1, all, ...) and the medians are compared, so a slow spell of the machine falls on both.
-Prints a markdown table and writes it, with the machine's description, to docs/workers.md.
+Prints a markdown table and writes it, with the machine's description, to docs/reports/workers.md.
 
     python -m bench.bench_workers [--n 100000] [--repeats 5]
 """
@@ -10,7 +10,6 @@ Prints a markdown table and writes it, with the machine's description, to docs/w
 from __future__ import annotations
 
 import argparse
-import datetime
 import os
 import statistics
 import time
@@ -28,7 +27,7 @@ import circledist as cd
 from .bench_queries import machine
 
 ROOT = Path(__file__).resolve().parent.parent
-REPORT = ROOT / "docs" / "workers.md"
+REPORT = ROOT / "docs" / "reports" / "workers.md"
 TARGET = 1.8  # speedup on 2 cores, batches of >= 10^5 queries of line-circle and dearer kinds
 
 
@@ -67,8 +66,8 @@ def main():
                          one / every))
     m = machine()
     lines = [f"# Batches on several threads (workers=)", "",
-             f"{m['model']}, {cores} usable cores, load {m['load']} at the start; Python {m['python']}, "
-             f"NumPy {m['numpy']}; {datetime.date.today().isoformat()}. Median of {args.repeats} alternating runs "
+             f"{m['model']}, {cores} usable cores; Python {m['python']}, "
+             f"NumPy {m['numpy']}. Median of {args.repeats} alternating runs "
              f"of one batched call; `python -m bench.bench_workers` regenerates this file.", "",
              f"| pair | entry | queries | ns/query, workers=1 | ns/query, workers=-1 | speedup |",
              "|---|---|---|---|---|---|"]

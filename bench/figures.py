@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Figures of the documentation. Run from the repository's root: python -m bench.figures
 
-docs/line_disk.png: the line-disk split of docs/line_disk.md. Left, the scene: the line's
+docs/derivations/line_disk.png: the line-disk split of docs/derivations/line_disk.md. Left, the scene: the line's
 projection enters the disk at the rim crossing t1 and leaves it at t2, cutting the line into
 two outside rays and the inside segment; the closest pair. Right, the distance to the disk
 along the line: |z(t)| over the inside segment, the circle distance over the rays, every
@@ -21,7 +21,7 @@ import numpy as np  # noqa: E402
 import circledist as cd  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
-OUT = ROOT / "docs" / "line_disk.png"
+OUT = ROOT / "docs" / "derivations" / "line_disk.png"
 
 # The scene, in the disk's own frame (center 0, normal +z, so U = x, V = y): a line coming down
 # over the disk. Its lowest point over the disk is at t2, but the distance keeps falling a little

@@ -29,12 +29,15 @@ print("one line against 5 circles:", cd.distance(cd.Line([0, 1.5, 0.25], [1, 0, 
 
 # A scene shipped inside the package (circledist/scenes/demo.json): each query names only the
 # effects it wants (intersects, within, distance, closest_points, nearest), and nothing else is
-# computed. The same as running `python -m circledist`; the picture goes to docs/demo_scene.png.
+# computed. The same as running `python -m circledist`; the picture goes to the path given
+# (the README's is docs/guide/demo_scene.png), build/demo_scene.png by default.
 import os
 import sys
 
 from circledist import cli
 
 print()
-picture = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "demo_scene.png")
+root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+picture = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "demo_scene.png")
+os.makedirs(os.path.dirname(os.path.abspath(picture)), exist_ok=True)
 sys.exit(cli.main(["--plot", os.path.normpath(picture)]))

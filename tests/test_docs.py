@@ -1,5 +1,8 @@
-"""The API reference (docs/api) builds warning-free from the installed package, as
-`bash tools/run.sh docs` builds it, and shows what the docstrings say."""
+"""The documentation: the Sphinx site (docs/, with the API reference) builds warning-free from the
+installed package, as `bash tools/run.sh docs` builds it, and shows what the docstrings say; the
+Markdown pages (README, CONTRIBUTING, CHANGELOG, docs/) link only to what exists, every table
+renders, the guide's examples run, and the docs hold no provenance (issue numbers, dates, machine
+paths, load averages), which belongs in CHANGELOG.md and the commit messages."""
 
 import html as html_module
 import importlib.util
@@ -12,7 +15,25 @@ import sys
 import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+DOCS = ROOT / "docs"
 NEEDED = ("sphinx", "numpydoc", "myst_parser")
+PICTURES = (DOCS / "derivations" / "line_disk.png").exists()  # False in the sdist
+DERIVATIONS = ("line_circle", "line_disk", "circle_circle", "circle_disk", "disk_disk", "bezier", "bezier_linear",
+               "bezier_bezier", "arc", "annulus", "references")
+
+
+def markdown_pages():
+    return [ROOT / "README.md", ROOT / "CONTRIBUTING.md", ROOT / "CHANGELOG.md", *sorted(DOCS.rglob("*.md"))]
+
+
+def without_code(text):
+    """The text with fenced code blocks and inline code removed (links and tables are outside them)."""
+    text = re.sub(r"^```.*?^```", "", text, flags=re.S | re.M)
+    return re.sub(r"`[^`\n]*`", "", text)
+
+
+def page_id(path):
+    return str(path.relative_to(ROOT))
 
 
 @pytest.fixture(scope="module")
@@ -24,7 +45,7 @@ def html(tmp_path_factory):
     # The subprocess imports the circledist this test imports (PYTHONPATH as here).
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
     run = subprocess.run([sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", "-b", "html",
-                          str(ROOT / "docs" / "api"), str(out)], capture_output=True, text=True, env=env)
+                          str(DOCS), str(out)], capture_output=True, text=True, env=env)
     assert run.returncode == 0, f"the docs build failed or warned:\n{run.stdout}{run.stderr}"
     return out
 
@@ -47,14 +68,91 @@ def test_reference_documents_every_public_object(html):
         assert section in index
 
 
-def test_derivations_and_references_are_included(html):
-    for page in ("line_circle", "line_disk", "circle_circle", "circle_disk", "disk_disk", "bezier", "bezier_linear",
-                 "arc", "annulus",
-                 "references"):
-        source = (ROOT / "docs" / f"{page}.md").read_text()
+def test_every_shelf_is_in_the_site(html):
+    index = (html / "index.html").read_text()
+    for page in DOCS.rglob("*.md"):
+        target = page.relative_to(DOCS).with_suffix(".html").as_posix()
+        assert (html / target).is_file(), target
+        assert target in index, f"{target} is not in the index's tables of contents"
+    for page in DERIVATIONS:
+        source = (DOCS / "derivations" / f"{page}.md").read_text()
         title = source.splitlines()[0].lstrip("# ").strip()
         assert title in text_of(html / "derivations" / f"{page}.html"), page
-        assert f"derivations/{page}.html" in (html / "index.html").read_text(), page
-    if (ROOT / "docs" / "line_disk.png").exists():  # not in the sdist
+    if (DOCS / "derivations" / "line_disk.png").exists():  # not in the sdist
         assert (html / "_images" / "line_disk.png").is_file()
     assert "Distance Between Line and Circle or Disk in 3D" in text_of(html / "derivations" / "references.html")
+
+
+def test_the_shelves():
+    """docs/ holds the Sphinx root and the four shelves; run records (JSON) live in build/, not here."""
+    loose = [p.name for p in DOCS.iterdir() if p.is_file()]
+    assert len(loose) <= 6, loose
+    assert {"conf.py", "index.rst"} <= set(loose)
+    assert {p.name for p in DOCS.iterdir() if p.is_dir()} == {"guide", "derivations", "design", "reports"}
+    assert not list(DOCS.rglob("*.json")), "run records go to build/reports/"
+    for page in DERIVATIONS:
+        assert (DOCS / "derivations" / f"{page}.md").is_file(), page
+
+
+@pytest.mark.parametrize("page", markdown_pages(), ids=page_id)
+def test_relative_links_resolve(page):
+    text = without_code(page.read_text())
+    links = re.findall(r"!?\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)", text)
+    broken = []
+    for link in links:
+        if re.match(r"[a-z]+:", link) or link.startswith("#"):
+            continue
+        target = (page.parent / link.split("#", 1)[0]).resolve()
+        if target.suffix == ".png" and not PICTURES:
+            continue  # the sdist leaves the pictures out (pyproject.toml's sdist.exclude)
+        if not target.exists():
+            broken.append(link)
+    assert not broken, f"{page_id(page)}: links to nothing: {broken}"
+
+
+@pytest.mark.parametrize("page", markdown_pages(), ids=page_id)
+def test_every_table_renders(page):
+    """A Markdown table is a header row, a delimiter row with as many cells, then its rows."""
+    lines = without_code(page.read_text()).splitlines()
+    delimiter = re.compile(r"^\|(\s*:?-{3,}:?\s*\|)+\s*$")
+    cells = lambda line: len(re.split(r"(?<!\\)\|", line.strip().strip("|")))  # noqa: E731
+    row = lambda line: line.startswith("|") and line.rstrip().endswith("|")  # noqa: E731 (not indented code)
+    i = 0
+    while i < len(lines):
+        if row(lines[i]):
+            start = i
+            while i < len(lines) and row(lines[i]):
+                i += 1
+            table = lines[start:i]
+            assert len(table) >= 2 and delimiter.match(table[1].strip()), \
+                f"{page_id(page)} line {start + 1}: a table without a delimiter row: {table[0][:80]}"
+            assert cells(table[1]) == cells(table[0]), f"{page_id(page)} line {start + 1}: delimiter cells"
+        i += 1
+
+
+PROVENANCE = {
+    "an issue number": re.compile(r"\bissues? #?\d+", re.I),
+    "a date": re.compile(r"\b20\d\d-[01]\d-[0-3]\d\b"),
+    "a machine path": re.compile(r"(?<![\w.])/(?:work|tmp|home|root)/"),
+    "a load average": re.compile(r"\bload (?:average|about|~)", re.I),
+    "a branch's history": re.compile(r"\(branch \w+\)|\bfrom branch \w+", re.I),
+}
+
+
+@pytest.mark.parametrize("page", [p for p in markdown_pages() if p.name != "CHANGELOG.md"], ids=page_id)
+def test_no_provenance_in_docs(page):
+    text = page.read_text()
+    found = {what: pattern.findall(text)[:3] for what, pattern in PROVENANCE.items() if pattern.search(text)}
+    assert not found, f"{page_id(page)} holds history (it goes in CHANGELOG.md): {found}"
+
+
+@pytest.mark.parametrize("page", sorted((DOCS / "guide").glob("*.md")), ids=page_id)
+def test_guide_examples_run(page):
+    """Every Python block of a guide page, in order, in one namespace per page."""
+    codes = re.findall(r"```python\n(.*?)```", page.read_text(), flags=re.S)
+    if "import circledist.dask" in "".join(codes):
+        pytest.importorskip("dask")
+        pytest.importorskip("distributed")
+    namespace = {}
+    for code in codes:
+        exec(compile(code, str(page.relative_to(ROOT)), "exec"), namespace)

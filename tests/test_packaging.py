@@ -32,7 +32,7 @@ def test_sdist_holds_the_sources(sdist_names):
                    "src/pair_unit.cpp", "cpp/include/circledist/circledist.hpp",
                    "cpp/cmake/circledistConfig.cmake", "python/circledist/__init__.py",
                    "tests/conftest.py", "circledist_cases/__init__.py", "circledist_cases/scenes.py",
-                   "docs/circle_disk.md"):
+                   "docs/derivations/circle_disk.md"):
         assert needed in sdist_names, needed
 
 

@@ -1,11 +1,11 @@
-"""docs/references.md lists every source the derivations, the code and the README cite, and the
+"""docs/derivations/references.md lists every source the derivations, the code and the README cite, and the
 README links it."""
 
 import pathlib
 import re
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-REFERENCES = (ROOT / "docs" / "references.md").read_text()
+REFERENCES = (ROOT / "docs" / "derivations" / "references.md").read_text()
 
 # The named methods and authors the sources cite; each one found in them must be in the list.
 CITED_NAMES = ["Eberly", "Geometric Tools", "Halley", "Horner", "Estrin", "Brent", "Parlett", "Reinsch",
@@ -14,7 +14,7 @@ CITED_NAMES = ["Eberly", "Geometric Tools", "Halley", "Horner", "Estrin", "Brent
 
 
 def cited_sources():
-    files = list((ROOT / "docs").glob("*.md")) + [ROOT / "README.md"]
+    files = list((ROOT / "docs").rglob("*.md")) + [ROOT / "README.md"]
     for folder, pattern in (("cpp/include", "*.hpp"), ("src", "*.*pp"), ("python/circledist", "*.py")):
         files += (ROOT / folder).rglob(pattern)
     return {path: path.read_text() for path in files if path.name != "references.md"}
@@ -26,7 +26,7 @@ def test_every_cited_name_is_referenced():
     found = [name for name in CITED_NAMES if name in text]
     assert "Eberly" in found and "Brent" in found  # the scan reads the sources
     missing = [name for name in found if name.replace("Martinez", "Martínez") not in REFERENCES]
-    assert not missing, f"cited but not in docs/references.md: {missing}"
+    assert not missing, f"cited but not in docs/derivations/references.md: {missing}"
 
 
 def test_every_author_year_citation_is_referenced():
@@ -48,8 +48,8 @@ def test_the_two_notes_are_listed_by_title_author_and_year():
 
 def test_linked_derivations_exist():
     for target in re.findall(r"\]\(([^)#]+\.md)\)", REFERENCES):
-        assert (ROOT / "docs" / target).is_file(), target
+        assert (ROOT / "docs" / "derivations" / target).is_file(), target
 
 
 def test_readme_links_the_references():
-    assert "(docs/references.md)" in (ROOT / "README.md").read_text()
+    assert "(docs/derivations/references.md)" in (ROOT / "README.md").read_text()

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Long mode of the differential accuracy test (issue 14, "keep it closed").
+"""Long mode of the differential accuracy test.
 
-    python -m tools.differential --answers 10000000 --seed 1 --report docs/differential_report.json
+    python -m tools.differential --answers 10000000 --seed 1 --report build/reports/differential_report.json
 
 (from the repository's root: a module run, so that the shared cases, circledist_cases, import.)
 
@@ -26,17 +26,16 @@ finding class, writes the JSON report, and exits 1 when any finding is confirmed
 Every case is reproducible from its id "family/seed/index" (differential.case_from_id).
 --families restricts a run to some families (comma-separated), "round" to the seventeen of the
 pairs with a circle or disk, "no-round" to the ten of the pairs without one (points, lines, rays,
-segments among themselves, Bezier curves against them; docs/differential_report_linear.json),
-"arc" to the seventeen of the arc against every kind with a query (issue 19;
-docs/differential_report_arc.json), "annulus" to the eighteen of an annulus against every kind
-(issue 19; docs/differential_report_annulus.json):
+segments among themselves, Bezier curves against them), "arc" to the seventeen of the arc
+against every kind with a query, "annulus" to the eighteen of an annulus against every kind
+(the records go to build/reports/, the summary of past long runs to docs/reports/differential.md):
 
     python -m tools.differential --answers 200000 --seed 1 --families no-round \
-        --report docs/differential_report_linear.json
+        --report build/reports/differential_report_linear.json
     python -m tools.differential --answers 10000000 --seed 1 --families arc \
-        --report docs/differential_report_arc.json
+        --report build/reports/differential_report_arc.json
     python -m tools.differential --answers 1000000 --seed 1 --families annulus \
-        --report docs/differential_report_annulus.json
+        --report build/reports/differential_report_annulus.json
 
 closest_points().unique is checked where differential.expected_unique's rule decides it (the
 module's docstring); the report counts those checks apart ("unique_checked": per expectation,
@@ -199,7 +198,7 @@ def main(argv=None):
                       "runs ceil(answers / answers per case) cases")
     size.add_argument("--cases", "--queries", dest="cases", type=int, help="number of cases (default 1e5)")
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--report", default=os.path.join(ROOT, "docs", "differential_report.json"))
+    ap.add_argument("--report", default=os.path.join(ROOT, "build", "reports", "differential_report.json"))
     ap.add_argument("--batch", type=int, default=2000, help="cases per chunk (one library batch per kind pair)")
     ap.add_argument("--families", default="all", help="comma-separated subset of the families, or \"round\" "
                     "(the pairs with a circle or disk), \"no-round\" (the pairs among points, lines, rays, "

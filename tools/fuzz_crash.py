@@ -1217,10 +1217,13 @@ def main(argv=None):
     else:
         summary = fuzz(args.cases, args.seed, args.chunk, args.timeout, progress=True, batched=args.batched)
     summary["seconds"] = round(time.time() - t0, 1)
+    summary["seed"] = args.seed  # for the report page (tools/report_pages.py)
     text = json.dumps(summary, indent=1)
     print(text)
     if args.report:
-        open(args.report, "w").write(text)
+        os.makedirs(os.path.dirname(os.path.abspath(args.report)), exist_ok=True)
+        with open(args.report, "w") as fh:
+            fh.write(text)
     return 0 if summary["crashes"] == summary["hangs"] == summary["findings"] == 0 else 1
 
 

@@ -1,20 +1,22 @@
 #!/usr/bin/env bash
 # circledist's one entry point for people and CI:
-#   bash tools/run.sh demo   install what is missing, build the package, run the demo
+#   bash tools/run.sh demo   install what is missing, build the package, run the demo (its picture:
+#                            build/demo_scene.png)
 #   bash tools/run.sh test   install what is missing, build the package's wheel and install it, run pytest and
 #                            the C++ tests (ctest), one C++ test built against cmeel-eigen's Eigen (the
 #                            fallback), and the wheel's tests in a venv of its own with no compiler on PATH
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
-#   bash tools/run.sh docs   install what is missing, build the package, build the API reference
-#                            (docs/api, Sphinx) into build/docs/index.html, warnings as errors
+#   bash tools/run.sh docs   install what is missing, build the package, build the documentation and
+#                            API reference (docs/, Sphinx) into build/docs/index.html, warnings as errors
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
-#                            mode over N cases (default 10^7; docs/fuzz_report.json), its thread
+#                            mode over N cases (default 10^7; build/reports/fuzz_report.json), its thread
 #                            class over N/10^4 scenarios of a Scene shared by threads that add and
-#                            query it (docs/fuzz_threads_report.json), its argument class over N/100
+#                            query it (build/reports/fuzz_threads_report.json), its argument class over N/100
 #                            calls of every entry point with hostile scalar arguments
-#                            (docs/fuzz_arguments_report.json), then the differential accuracy
+#                            (build/reports/fuzz_arguments_report.json), then the differential accuracy
 #                            test's long mode over N library answers (every solver x precision x
-#                            entry point, both orders; 168 per case) (docs/differential_report.json)
+#                            entry point, both orders; 168 per case) (build/reports/differential_report.json);
+#                            then rewrites docs/reports/fuzz.md and differential.md from those records
 # Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
 # from apt when missing; the Python packages pyproject.toml lists (build requires, dependencies,
 # the task's extras) go into ./.venv (which sees the system's site-packages).
@@ -116,7 +118,7 @@ eigen_fallback() {
 
 case "$task" in
   demo)
-    "$py" examples/demo.py
+    "$py" examples/demo.py  # picture: build/demo_scene.png (`examples/demo.py PATH` writes it elsewhere)
     ;;
   test)
     echo "== pytest"
@@ -139,26 +141,30 @@ case "$task" in
   fuzz)
     status=0
     "$py" tools/fuzz_crash.py --cases "${2:-10000000}" --chunk 200000 --batched --timeout 1800 \
-      --report docs/fuzz_report.json || status=$?
-    "$py" tools/fuzz_crash.py --threads $(( ${2:-10000000} / 10000 + 1 )) --report docs/fuzz_threads_report.json \
+      --report build/reports/fuzz_report.json || status=$?
+    "$py" tools/fuzz_crash.py --threads $(( ${2:-10000000} / 10000 + 1 )) --report build/reports/fuzz_threads_report.json \
       || status=$?
     "$py" tools/fuzz_crash.py --arguments $(( ${2:-10000000} / 100 + 1 )) --chunk 5000 --timeout 600 \
-      --report docs/fuzz_arguments_report.json || status=$?
-    "$py" -m tools.differential --answers "${2:-10000000}" --seed 1 --report docs/differential_report.json || status=$?
+      --report build/reports/fuzz_arguments_report.json || status=$?
+    "$py" -m tools.differential --answers "${2:-10000000}" --seed 1 --report build/reports/differential_report.json || status=$?
+    # The report pages, rewritten whole from these records (commit them when the run is worth keeping).
+    "$py" -m tools.report_pages fuzz build/reports/fuzz_report.json build/reports/fuzz_threads_report.json \
+      build/reports/fuzz_arguments_report.json || status=$?
+    "$py" -m tools.report_pages differential build/reports/differential_report.json || status=$?
     exit $status
     ;;
   docs)
     # Read from the package just installed: its docstrings are the reference. -E: no stale pages.
-    "$py" -m sphinx -W --keep-going -E -q -b html docs/api build/docs
+    "$py" -m sphinx -W --keep-going -E -q -b html docs build/docs
     echo "API reference: build/docs/index.html"
     ;;
   bench)
     cpp_build -DCIRCLEDIST_BUILD_BENCH=ON
     cmake --build build/cpp --target accuracy_vs_time
-    "$py" -m bench.bench_queries          # docs/benchmark.md
-    "$py" -m bench.accuracy_vs_time       # docs/accuracy_vs_time.md, .png, docs/stability_sweeps.png
-    "$py" -m bench.bench_scene            # docs/scene_scaling.md, .png
-    "$py" -m bench.figures                # docs/line_disk.png
+    "$py" -m bench.bench_queries          # docs/reports/benchmark.md
+    "$py" -m bench.accuracy_vs_time       # docs/reports/accuracy_vs_time.md, .png, stability_sweeps.png
+    "$py" -m bench.bench_scene            # docs/reports/scene_scaling.md, .png
+    "$py" -m bench.figures                # docs/derivations/line_disk.png
     ;;
   *)
     echo "usage: bash tools/run.sh demo|test|bench|docs|fuzz [N]" >&2
