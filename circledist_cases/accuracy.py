@@ -689,7 +689,7 @@ def _flat(shape, data):
 
 
 def differential_cases(kinds, per_pair=2, seed=2026):
-    """The adversarial families of the standing differential test (circledist_cases/differential.py: the
+    """The adversarial families of the standing differential test (circledist_cases/differential/: the
     classes the exactness issue listed and those found since: nearly coincident circles, lines
     nearly along the axis, far origins, extreme radius ratios, near-touching disks, huge
     circles, far-reaching Bezier curves, ...), `per_pair` cases per kind pair of each family,

@@ -1,5 +1,5 @@
 """Independent 50-digit reference for arcs (issue 19): one, used by tests/test_arc.py and by the
-differential test's confirmation (circledist_cases/differential.py).
+differential test's confirmation (circledist_cases/differential/).
 
 No circledist code.  An arc is built from its own definition, center + R (cos t u + sin t v),
 t in [0, angle], u the unit projection of `start` onto the plane normal to `normal`, v = n x u

@@ -15,7 +15,7 @@ give exactly the batch's answers).  --answers N runs ceil(N / answers per case) 
 the answers per entry point.
 
 The cases (one kind pair instance each, "family/seed/index") are spread evenly over the case
-families of circledist_cases/differential.py and, within a family, over its kind pairs; every chunk holds a
+families of circledist_cases/differential/ and, within a family, over its kind pairs; every chunk holds a
 share of every family (one library batch per kind pair and chunk: large batches, and a partial
 run sees every family).  Answers are judged by the fast NumPy screen and by the returned closest
 points.  Accuracy findings are confirmed against the 50-digit mpmath references (at most
@@ -62,7 +62,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def load_differential():
-    """The differential test's library module (circledist_cases/differential.py)."""
+    """The differential test's library module (circledist_cases/differential/)."""
     try:
         from circledist_cases import differential
     except ModuleNotFoundError as e:
