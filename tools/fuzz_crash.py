@@ -1,4 +1,4 @@
-"""Crash-isolating fuzz of circledist's Python API (issue 15).
+"""Crash-isolating fuzz of circledist's Python API.
 
 Cases cover every kind pair in both orders, every entry point (distance, closest_points, within,
 intersects, distance_if_within), precision and solver, magnitudes from 1e-300 to 1e300, degenerate
@@ -52,15 +52,22 @@ import json
 import sys
 import time
 
-# the modes, in tools/fuzzing/ (this script's folder is on sys.path, run or imported as the tests do)
-from fuzzing.arguments import ARGUMENT_GROWTH, ARGUMENTS, fuzz_arguments, run_argument_case
-from fuzzing.cases import _group_key, fuzz, run_batch, run_case
-from fuzzing.files import FILE_CLASSES, fuzz_files
-from fuzzing.threads import THREAD_TIMEOUT, fuzz_threads, generate_threads, run_thread_case
+# The modes live in tools/fuzzing/: imported relative to this file's package when it is imported
+# as tools.fuzz_crash, else from its folder (run as a script, or imported with tools/ on sys.path).
+try:
+    from .fuzzing import (
+        ARGUMENT_GROWTH, ARGUMENTS, FILE_CLASSES, THREAD_TIMEOUT, _group_key, _write_npz, fuzz,
+        fuzz_arguments, fuzz_files, fuzz_threads, generate_threads, run_argument_case, run_batch,
+        run_case, run_thread_case)
+except ImportError:
+    from fuzzing import (
+        ARGUMENT_GROWTH, ARGUMENTS, FILE_CLASSES, THREAD_TIMEOUT, _group_key, _write_npz, fuzz,
+        fuzz_arguments, fuzz_files, fuzz_threads, generate_threads, run_argument_case, run_batch,
+        run_case, run_thread_case)
 
-# what the command line and tests/test_fuzz_crash.py use
-__all__ = ["ARGUMENTS", "ARGUMENT_GROWTH", "FILE_CLASSES", "child", "fuzz", "fuzz_arguments", "fuzz_files",
-           "fuzz_threads", "generate_threads", "main", "run_argument_case", "run_thread_case"]
+# what the command line and the tests (tests/test_fuzz_crash.py, tests/test_scene_file.py) use
+__all__ = ["ARGUMENTS", "ARGUMENT_GROWTH", "FILE_CLASSES", "_write_npz", "child", "fuzz", "fuzz_arguments",
+           "fuzz_files", "fuzz_threads", "generate_threads", "main", "run_argument_case", "run_thread_case"]
 
 
 def child(cases_file, current_file, results_file, mode="0"):
