@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Long mode of the differential accuracy test (issue 14, "keep it closed").
+"""Long mode of the differential accuracy test.
 
     python -m tools.differential --answers 10000000 --seed 1 --report docs/differential_report.json
 
 (from the repository's root: a module run, so that the shared cases, circledist_cases, import.)
 
-Sizes are counted in library ANSWERS, as the issue counts its "queries": every value the library
+Sizes are counted in library ANSWERS: every value the library
 returns for one query, i.e. per case every solver x precision combination, both argument orders,
 and every entry point -- distance, closest_points, within and distance_if_within (each probed at
 two limits), intersects -- batched: 2 x 7 = 14 answers per combination, 168 per case with the 12
@@ -27,9 +27,9 @@ Every case is reproducible from its id "family/seed/index" (differential.case_fr
 --families restricts a run to some families (comma-separated), "round" to the seventeen of the
 pairs with a circle or disk, "no-round" to the ten of the pairs without one (points, lines, rays,
 segments among themselves, Bezier curves against them; docs/differential_report_linear.json),
-"arc" to the seventeen of the arc against every kind with a query (issue 19;
-docs/differential_report_arc.json), "annulus" to the eighteen of an annulus against every kind
-(issue 19; docs/differential_report_annulus.json):
+"arc" to the seventeen of the arc against every kind with a query
+(docs/differential_report_arc.json), "annulus" to the eighteen of an annulus against every kind
+(docs/differential_report_annulus.json):
 
     python -m tools.differential --answers 200000 --seed 1 --families no-round \
         --report docs/differential_report_linear.json
@@ -195,7 +195,7 @@ def merge(total, part):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     size = ap.add_mutually_exclusive_group()
-    size.add_argument("--answers", type=int, help="library answers to check (the issue asks for 1e7); "
+    size.add_argument("--answers", type=int, help="library answers to check (the standing run checks 1e7); "
                       "runs ceil(answers / answers per case) cases")
     size.add_argument("--cases", "--queries", dest="cases", type=int, help="number of cases (default 1e5)")
     ap.add_argument("--seed", type=int, default=1)

@@ -36,7 +36,7 @@ RIMS = ROUND + ("arc", "annulus")
 # index 6, where a round's radius is, so scales, translations and frames read it alike); the
 # library's constructor takes (centre, normal, inner, outer)
 TARGET_REGION = ("disk", "annulus")   # closed forms with a face (a disk's |z|, an annulus's too)
-# the pairs with a circle or disk (the families of the first version), then the pairs among
+# the pairs with a circle or disk, then the pairs among
 # points, lines, rays and segments (point before line before ray before segment) and a Bezier
 # curve against each of them (the curve first)
 ROUND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
@@ -51,7 +51,7 @@ BL = [("bezier", lk) for lk in LINEAR]
 ARC_OTHERS = ("point", "line", "ray", "segment", "bezier", "circle", "disk", "arc")
 ARC_PAIRS = [(k, "arc") for k in ARC_OTHERS]
 ARC_RR = [p for p in ARC_PAIRS if p[0] in ("circle", "disk", "arc")]   # a circle, disk or arc against an arc
-# an annulus against every kind (issue 19), the annulus second (after the arc, and after another
+# an annulus against every kind, the annulus second (after the arc, and after another
 # annulus: (annulus, annulus)); the "ann_" families (_ann_variant: the disk families with a hole
 # cut in each annulus, arcs cut from circles as the arc families do; then the annuli's own)
 ANN_OTHERS = ("point", "line", "ray", "segment", "bezier", "circle", "disk", "arc", "annulus")

@@ -6,7 +6,7 @@ data is a list of [x, y, z] control points) for the kind pairs the family applie
 through them.  Pairs are written in a canonical order (point/line/ray/segment/bezier before
 circle/disk, circle before disk; among linear pieces point, line, ray, segment in that order;
 a Bezier curve before a linear piece); the checker runs both argument orders.  ``FAMILIES``
-lists them: plain random cases and the adversarial ones of issue 14 (tangencies, lines on and
+lists them: plain random cases and the adversarial ones (tangencies, lines on and
 near the axis, lines whose shadow on the plane crosses the centre, coplanar and (nearly)
 concentric rounds, far-translated scenes, far line origins, extreme radius ratios, nearly
 touching disks, a circle parallel to a disk at tiny heights,
@@ -15,7 +15,7 @@ the families of the pairs without a round, every pair among point/line/ray/segme
 Bezier curve against each (random, far-translated, nearly parallel pieces crossing or a hair
 apart or collinear, far origins and ends, zero-length segments, points and ends on the other
 piece, a line tangent to a curve or parallel to its end tangent, a curve crossing a piece,
-curves with a far control point or 1e2..1e5 times larger than the piece).  Arcs (issue 19):
+curves with a far control point or 1e2..1e5 times larger than the piece).  Arcs:
 an arc against a point, line, ray, segment, circle, disk or arc, the arc second (after the
 other kind, as a circle or disk comes after the pieces; ARC_PAIRS), in the "arc_" families:
 the circle families applied to arcs (_arc_variant: the base family's case with the arcs drawn
@@ -24,7 +24,7 @@ nearest the other shape or the other round's axis -- an end exactly there or 1e-
 beside it, the point inside the span, or beyond both ends), and the arcs' own: ends at the
 features (arc_ends), a round's axis through an arc end (arc_end_on_axis), concentric coplanar
 spans overlapping, disjoint or touching at an end (arc_spans), tiny angles, 2 pi - tiny and
-2 pi exactly (arc_angles).  Annuli (issue 19): an annulus against every kind, the annulus
+2 pi exactly (arc_angles).  Annuli: an annulus against every kind, the annulus
 second (ANN_PAIRS; an annulus's data is centre, normal, OUTER radius, inner radius), in the
 "ann_" families: the disk families applied to annuli (_ann_variant: the base family's case
 with its annuli drawn as disks, each then holed -- inner radius 0, equal to the outer, 1e-9
@@ -181,7 +181,7 @@ FAMILIES.update({
     "bezier_large_linear": (BL, _fam_bezier_large_linear),
     "piece_near_plane": (LR3, _fam_piece_near_plane),
 })
-# arcs (issue 19): the circle families applied to arcs (arc_<base>: the base family's cases with
+# arcs: the circle families applied to arcs (arc_<base>: the base family's cases with
 # their arcs cut from circles, _arc_variant), then the arcs' own
 for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", "coplanar", "concentric",
               "near_concentric", "far_origin", "radius_ratio", "near_touching", "parallel_height", "huge_circle"):
@@ -193,7 +193,7 @@ FAMILIES.update({
     "arc_angles": (ARC_PAIRS, _fam_arc_angles),
     "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
 })
-# annuli (issue 19): the disk families applied to annuli (ann_<base>: the base family's cases with
+# annuli: the disk families applied to annuli (ann_<base>: the base family's cases with
 # their annuli holed from disks and their arcs cut from circles, _ann_variant), then the annuli's own
 for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", "coplanar", "concentric",
               "near_concentric", "far_origin", "radius_ratio", "near_touching", "parallel_height", "huge_circle"):

@@ -14,7 +14,7 @@ from .families_round import _fam_far_translated
 from .families_arc import _arc_of
 
 
-# ---- annuli: the disk families applied to annuli, and the annuli's own (issue 19) -------------
+# ---- annuli: the disk families applied to annuli, and the annuli's own ----------------------
 # An annulus family takes a base family's case with every annulus drawn as a disk (and every arc
 # as a circle, cut to an arc as the arc families do), then cuts a hole in each such disk: inner
 # radius 0 (the disk), the outer radius (the circle), 1e-9..1e-6 of it, a quarter, half or three

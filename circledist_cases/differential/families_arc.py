@@ -14,7 +14,7 @@ from .families_round import _fam_far_translated
 from .families_linear import EX
 
 
-# ---- arcs: the circle families applied to arcs (issue 19) --------------------------------------
+# ---- arcs: the circle families applied to arcs -----------------------------------------------
 # An arc family takes a base family's case with every arc drawn as a circle (the base generator
 # called with "circle" for "arc"; a disk stays a disk), then cuts each such circle to an arc
 # (same centre, normal and radius; a start and an angle).  Where the span lies is chosen relative

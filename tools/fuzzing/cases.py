@@ -25,7 +25,7 @@ def _magnitude(rng):
     if r < 0.75:
         return float(10 ** rng.uniform(-300, 300))
     # float32's edges too (3.4e38 and 1.4e-45): answers past float32's range from inputs inside it
-    # (the 10^7 run's finding: a closest point at 5.2e38).
+    # (a closest point at 5.2e38).
     return float(10.0 ** int(rng.choice([-300, -200, -155, -100, -45, -38, 38, 100, 155, 200, 300])) * rng.uniform(1, 9))
 
 
@@ -99,7 +99,7 @@ def _shape(rng, kind, scale, center):
         return round_fields
     count = int(rng.integers(2, 9))
     points = [near() for _ in range(count)]
-    if rng.random() < 0.3:  # one dominant control point (issue 15 item 1)
+    if rng.random() < 0.3:  # one dominant control point
         points[int(rng.integers(0, count))] = [float(x) for x in rng.normal(size=3) * scale * 10 ** rng.uniform(2, 200)]
     return {"control_points": points}
 
