@@ -147,8 +147,7 @@ def bezier_point(ctrl: Sequence[Sequence], t) -> Vec:
     return pts[0]
 
 
-
-
+# ----------------------------------------------------------------------------------------------
 # a moving point (circle rim or Bezier curve) measured against a fixed circle or disk
 # ----------------------------------------------------------------------------------------------
 class _Against:

@@ -18,7 +18,6 @@ import importlib
 import numpy as np
 
 
-
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
 PRECISIONS = ("float64", "longdouble", "float32")
 EPS32 = float(np.finfo(np.float32).eps)

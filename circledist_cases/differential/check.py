@@ -50,9 +50,6 @@ from .families import bar_scale, scene_scale, to_float32_case
 from .unique import expected_unique
 
 
-# =============================================================================================
-# 3. the checker
-# =============================================================================================
 def _dtype(precision):
     return {"float32": np.float32, "float64": np.float64, "longdouble": np.float64}[precision]
 

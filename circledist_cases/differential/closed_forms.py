@@ -12,9 +12,6 @@ import numpy as np
 from .base import EPSLD, LD, RIMS, TARGET_REGION
 
 
-# =============================================================================================
-# 2. the fast screen
-# =============================================================================================
 # ---- double-double helpers (float64 arrays), for offsets and the line anchor ------------------
 def _two_sum(a, b):
     s = a + b

@@ -11,9 +11,6 @@ from .closed_forms import _two_sum
 from .families import bar_scale, to_float32_case
 
 
-# =============================================================================================
-# 4. confirmation with the 50-digit references
-# =============================================================================================
 _REF_CACHE = {}
 # a Bezier curve against a point, line, ray, segment, circle or disk: the reference's refined local
 # minima over the curve's t, [(distance, t)] lowest first (reused by reference_unique)

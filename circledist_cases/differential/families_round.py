@@ -101,7 +101,6 @@ def _fam_axis(rng, ka, kb):
     return fr.linear(ka, X, d, R), b
 
 
-
 def _fam_shadow_center(rng, ka, kb):
     """Lines, rays and segments whose shadow on the round's plane crosses the centre (exactly, or
     1e-16..1e-12 radii beside it), tilted from the plane by 1e-4..1 rad, at heights 1e-6..2
