@@ -83,8 +83,8 @@ DOCS = ROOT / "docs" / "reports"
 
 def _reference_version():
     h = hashlib.sha256()
-    for name in ("reference.py", "reference_round.py", "reference_bezier.py", "reference_arc.py",
-                 "reference_annulus.py"):
+    for name in ("reference_kit.py", "reference.py", "reference_round.py", "reference_bezier.py",
+                 "reference_arc.py", "reference_annulus.py"):
         h.update((ROOT / "circledist_cases" / name).read_bytes())
     return h.hexdigest()[:16]
 

@@ -38,7 +38,7 @@ mp.dps = 50
 KINDS = ["point-circle", "point-disk", "line-circle", "ray-circle", "segment-circle", "line-disk",
          "ray-disk", "segment-disk", "circle-circle", "circle-disk", "disk-disk", "bezier-disk",
          "bezier-circle", "bezier-bezier",
-         # arcs and annuli (issue 19), the arc or annulus second
+         # arcs and annuli, the arc or annulus second
          "point-arc", "line-arc", "ray-arc", "segment-arc", "circle-arc", "disk-arc", "arc-arc", "bezier-arc",
          "point-annulus", "line-annulus", "ray-annulus", "segment-annulus", "circle-annulus", "disk-annulus",
          "arc-annulus", "annulus-annulus", "bezier-annulus"]
@@ -349,7 +349,7 @@ BEZIER_SCENES = {
 
 
 # ------------------------------------------------------------------------------------------------
-# arcs and annuli (issue 19). The local arc is the unit circle's from +x (theta = 0, its start
+# arcs and annuli. The local arc is the unit circle's from +x (theta = 0, its start
 # end, exact) to -y (theta = 3 pi / 2, its far end, rounded: cos(3 pi / 2) is -1.8e-16): the
 # gap theta in (3 pi / 2, 2 pi) is where the full circle's closest point can miss the arc. The
 # local annulus has radii 0.5 (the hole) and 1 (the unit circle's rim, where the shared scenes
@@ -689,7 +689,7 @@ def _flat(shape, data):
 
 
 def differential_cases(kinds, per_pair=2, seed=2026):
-    """The adversarial families of the standing differential test (circledist_cases/differential.py: the
+    """The adversarial families of the standing differential test (circledist_cases/differential/: the
     classes the exactness issue listed and those found since: nearly coincident circles, lines
     nearly along the axis, far origins, extreme radius ratios, near-touching disks, huge
     circles, far-reaching Bezier curves, ...), `per_pair` cases per kind pair of each family,

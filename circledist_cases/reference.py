@@ -1,7 +1,7 @@
 """Independent 50-digit references for circledist.
 
 Nothing in this module shares an algorithm with the library under test.  The
-notes the library implements (/work/shared/seeds) reduce line/circle problems to
+derivations the library implements reduce line/circle problems to
 a quartic and disk problems to interval partitions plus polynomial roots.
 Here there are NO polynomials and NO root finding: every distance is the
 global minimum of a closed-form function of ONE parameter, found by dense
@@ -43,10 +43,10 @@ t -> dist(S(t), disk) and is used in the self-validation tests.
 
 Global minimisation in one variable
 -----------------------------------
-``_global_min_1d``: 2048 samples of the squared objective in binary64 (cheap
+``reference_kit.bracketed_min_1d``: 2048 samples of the squared objective in binary64 (cheap
 numpy, used ONLY to place brackets); every sampled local minimum (runs of equal
 samples merged; brackets that a Lipschitz bound shows cannot reach the best
-sample are dropped) is refined in mpmath by ``_zoom``: recursive re-sampling
+sample are dropped) is refined in mpmath by recursive re-sampling
 with 13 points per level, following the best and, when present, a second
 distinct local minimum (this finds two minima closer than any fixed step, e.g.
 a line grazing the rim), down to a bracket of 1e-7, then golden-section search
@@ -73,7 +73,10 @@ import math
 import numpy as np
 from mpmath import mp, mpf
 
-from .golden import golden_section
+# the shared 50-digit toolkit: vector operations (on the numbers' own operators, so in this
+# module's global context), frames, and the minimiser this module was validated with
+from .reference_kit import BRACKET_SAMPLES, bracket_golden, bracketed_min_1d, in_plane_axes
+from .reference_kit import add as _add, cross as _cross, dot as _dot, scale as _mul, sub as _sub  # noqa: F401
 
 DPS = 50
 mp.dps = DPS
@@ -81,9 +84,6 @@ mp.dps = DPS
 LINEAR_KINDS = ("point", "line", "ray", "segment")
 ROUND_KINDS = ("circle", "disk")
 
-_N_SAMPLES = 2048
-_N_SUB = 12
-_MAX_RUNS = 8
 _THETA_TOL = mpf("1e-20")
 _T_REL_TOL = mpf("1e-22")
 _TINY_REL = mpf("1e-19")     # see RefResult._tiny_radius
@@ -92,31 +92,11 @@ _DEGENERATE_REL = 1e-3       # minimiser sets wider than this * scale are exact 
 
 
 # ----------------------------------------------------------------------------
-# small vector helpers on 3-tuples of mpf
+# small vector helpers on 3-tuples of mpf (mpmath's global context, at DPS digits)
 # ----------------------------------------------------------------------------
 def _v(xs):
     """Exact conversion of three binary64 numbers to mpf."""
     return tuple(mpf(float(x)) for x in xs)
-
-
-def _add(a, b):
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-
-
-def _sub(a, b):
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-
-
-def _mul(s, a):
-    return (s * a[0], s * a[1], s * a[2])
-
-
-def _dot(a, b):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-def _cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
 def _norm(a):
@@ -189,11 +169,7 @@ class Round:
         self.nraw = _v(data[3:6])
         self.R = mpf(data[6])
         self.n = _mul(1 / _norm(self.nraw), self.nraw)
-        k = min(range(3), key=lambda i: abs(self.n[i]))
-        e = tuple(mpf(1) if i == k else mpf(0) for i in range(3))
-        u = _sub(e, _mul(_dot(e, self.n), self.n))
-        self.U = _mul(1 / _norm(u), u)
-        self.V = _cross(self.n, self.U)
+        self.U, self.V = in_plane_axes(self.n, mp)
 
     def coords(self, p):
         d = _sub(p, self.C)
@@ -234,143 +210,6 @@ def point_round_closest(p, rnd):
 
 def point_round_distance(p, rnd):
     return point_round_closest(p, rnd)[0]
-
-
-# ----------------------------------------------------------------------------
-# one-dimensional global minimisation
-# ----------------------------------------------------------------------------
-_INVPHI = (mp.sqrt(5) - 1) / 2
-
-
-def _golden(f, a, b, tol):
-    """Golden-section search for a minimum of f on [a, b] (mpmath), at most 400 steps."""
-    return golden_section(f, a, b, _INVPHI, tol, steps=400)
-
-
-def _runs(mask, periodic):
-    """Maximal runs of consecutive True indices as (first, last) (cyclic if periodic)."""
-    n = len(mask)
-    if mask.all():
-        return [(0, n - 1)]
-    idx = np.flatnonzero(mask)
-    if len(idx) == 0:
-        return []
-    runs = []
-    start = prev = idx[0]
-    for i in idx[1:]:
-        if i == prev + 1:
-            prev = i
-            continue
-        runs.append((start, prev))
-        start = prev = i
-    runs.append((start, prev))
-    if periodic and len(runs) > 1 and runs[0][0] == 0 and runs[-1][1] == n - 1:
-        first = runs.pop(0)
-        last = runs.pop()
-        runs.append((last[0], first[1] + n))
-    return runs
-
-
-def _zoom(f, xl, xr, tol, min_width, lipschitz):
-    """Recursive re-sampling of [xl, xr] (mpmath): every level samples the bracket at
-    _N_SUB + 1 points and descends into the best sampled local minimum and, if there is
-    one that could still be lower (Lipschitz bound on sqrt(f)), a second distinct local
-    minimum, shrinking the bracket _N_SUB/2-fold per level; brackets narrower than
-    min_width are finished by golden-section search.  The branching is what finds two
-    minima closer than any fixed sampling step (a line grazing the rim gives two minima
-    ~1e-5 rad apart).  At most 24 brackets are opened: only flat functions (all samples
-    equal) get there, and for them the sampled values are already the minimum."""
-    stack = [(xl, xr)]
-    leaves = []
-    opened = 0
-    while stack:
-        a, b = stack.pop()
-        if b - a <= min_width:
-            leaves.append(_golden(f, a, b, tol))
-            continue
-        if opened >= 24:
-            continue
-        opened += 1
-        sx = [a + (b - a) * k / _N_SUB for k in range(_N_SUB + 1)]
-        sv = [f(x) for x in sx]
-        loc = []
-        for k in range(_N_SUB + 1):
-            left = sv[k - 1] if k > 0 else None
-            right = sv[k + 1] if k < _N_SUB else None
-            if (left is None or sv[k] <= left) and (right is None or sv[k] <= right):
-                loc.append((sv[k], k))
-        loc.sort()
-        chosen = loc[:1]
-        reach = lipschitz * (b - a) / _N_SUB if lipschitz is not None else None
-        for v, k in loc[1:]:
-            if abs(k - chosen[0][1]) < 2:
-                continue
-            if reach is None or mp.sqrt(v) - reach <= mp.sqrt(chosen[0][0]):
-                chosen.append((v, k))
-                break
-        for v, k in chosen:
-            leaves.append((sx[k], v))
-            stack.append((sx[max(k - 1, 0)], sx[min(k + 1, _N_SUB)]))
-    return leaves
-
-
-def _global_min_1d(f_mp, f_np, a, b, periodic, tol, lipschitz=None):
-    """All refined local minima of f on [a, b] (periodic: [a, b) with f(a) = f(b)).
-
-    f_np is a binary64 version of f used only to place brackets; every value
-    returned comes from f_mp.  Returns a list of (x, f(x)) sorted by value.
-    """
-    n = _N_SAMPLES
-    af, bf = float(a), float(b)
-    h = (bf - af) / (n if periodic else n - 1)
-    xs = af + h * np.arange(n)
-    v = f_np(xs)
-    finite = v[np.isfinite(v)]
-    noise = 1e-13 * (float(np.max(np.abs(finite))) if finite.size else 1.0) + 1e-300
-    if periodic:
-        prev, nxt = np.roll(v, 1), np.roll(v, -1)
-    else:
-        prev = np.concatenate(([np.inf], v[:-1]))
-        nxt = np.concatenate((v[1:], [np.inf]))
-    cand = (v <= prev + noise) & (v <= nxt + noise)
-    runs = _runs(cand, periodic)
-    scored = []
-    for first, last in runs:
-        ids = np.arange(first, last + 1) % n
-        scored.append((float(np.min(v[ids])), first, last))
-    scored.sort()
-    if lipschitz is not None and scored:
-        # g = sqrt(f) is `lipschitz`-Lipschitz: a bracket (samples within h of every
-        # point of it) whose best sample exceeds the best sample overall by more than
-        # lipschitz*h cannot contain the global minimum nor a tie with it.
-        best = math.sqrt(max(scored[0][0], 0.0))
-        scored = [r for r in scored
-                  if math.sqrt(max(r[0], 0.0)) - 1.01 * lipschitz * h <= best]
-    results = []
-
-    def xpos(i):
-        if not periodic:
-            if i <= 0:
-                return a
-            if i >= n - 1:
-                return b
-        return mpf(af) + mpf(h) * i
-
-    min_width = mpf("1e-7") * (b - a) / (2 * mp.pi if periodic else 1)
-    for _, first, last in scored[:_MAX_RUNS]:
-        if periodic and last - first + 1 >= n:
-            xl, xr = mpf(a), mpf(a) + 2 * mp.pi
-        else:
-            xl, xr = xpos(first - 1), xpos(last + 1)
-        if xr <= xl:
-            results.append((xl, f_mp(xl)))
-            continue
-        results.extend(_zoom(f_mp, xl, xr, tol, min_width, lipschitz))
-    if not periodic:
-        results.append((a, f_mp(a)))
-        results.append((b, f_mp(b)))
-    results.sort(key=lambda r: r[1])
-    return results
 
 
 # ----------------------------------------------------------------------------
@@ -452,7 +291,7 @@ class _RimMin:
 
     def __init__(self, lin, rnd):
         self.obj = _RimObjective(lin, rnd)
-        self.minima = _global_min_1d(self.obj.g2, self.obj.g2_np, mpf(0), 2 * mp.pi,
+        self.minima = bracketed_min_1d(self.obj.g2, self.obj.g2_np, mpf(0), 2 * mp.pi,
                                      True, _THETA_TOL, lipschitz=float(rnd.R))
         self.theta, g2 = self.minima[0]
         self.value = mp.sqrt(g2)
@@ -481,7 +320,7 @@ class _RimMin:
             if v <= level2 and not in_component(x):
                 return "tie"
         # binary64 samples that might lie in another part of the sub-level set
-        n = _N_SAMPLES
+        n = BRACKET_SAMPLES
         xs = 2 * np.pi / n * np.arange(n)
         fv = self.obj.g2_np(xs)
         slack = 1e-15 * float(np.max(fv)) + 1e-300
@@ -770,7 +609,7 @@ def reference_by_line_parameter(lin_kind, lin_data, round_kind, round_data):
         return mp.sqrt(f2(lo))
     tol = (hi - lo) * _T_REL_TOL
     if round_kind == "disk" or rnd.R == 0:
-        _, v = _golden(f2, lo, hi, tol)
+        _, v = bracket_golden(f2, lo, hi, tol)
         return mp.sqrt(min(v, f2(lo), f2(hi)))
     # binary64 version for bracket placement, relative to C
     B = to_numpy(_sub(lin.B, rnd.C))
@@ -783,7 +622,7 @@ def reference_by_line_parameter(lin_kind, lin_data, round_kind, round_data):
         x, y, z = p @ U, p @ V, p @ n
         return (np.hypot(x, y) - R) ** 2 + z * z
 
-    res = _global_min_1d(f2, f2_np, lo, hi, False, tol, lipschitz=float(mp.sqrt(lin.mm)))
+    res = bracketed_min_1d(f2, f2_np, lo, hi, False, tol, lipschitz=float(mp.sqrt(lin.mm)))
     return mp.sqrt(res[0][1])
 
 

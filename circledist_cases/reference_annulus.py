@@ -1,4 +1,4 @@
-"""Independent 50-digit reference for annuli (issue 19): one, used by tests/test_annulus.py, the
+"""Independent 50-digit reference for annuli: one, used by tests/test_annulus.py, the
 differential test and the accuracy report (circledist_cases/accuracy.py).
 
 No circledist code. The distance from a point to an annulus is a closed form (its projection's
@@ -6,7 +6,7 @@ distance rho from the center: |z| in the ring, else the nearer rim's sqrt(z^2 + 
 checked against dense sampling of the annulus in tests/test_annulus.py. Against a curve (circle,
 arc, line, ray, segment: a line's parameter on the bounded stretch where a closest point can lie;
 a Bezier curve's t) the reference is the minimum over the curve's parameter of that closed form, by
-reference_round.minimize_1d (dense samples, golden section on every sampled local minimum, zoomed
+reference_kit.minimize_1d (dense samples, golden section on every sampled local minimum, zoomed
 where two minima could share a sampling step). Two plane regions (a disk or an annulus against an
 annulus) are as close as a rim of one is to the other: a closest pair with both points inside
 their regions' rims has p - q normal to both planes, so the planes are parallel and the pair
@@ -23,10 +23,11 @@ from __future__ import annotations
 import functools
 import math
 
+from . import reference_kit as K
 from . import reference_round as R
 from .reference_arc import ArcMP
 
-mpf, ctx = R.mpf, R.ctx
+mpf, ctx = K.mpf, K.ctx
 TWO_PI = 2 * math.pi
 INTERVALS = 400  # samples of a parameter per minimization (then golden section on every local minimum)
 
@@ -58,13 +59,13 @@ class AnnulusMP:
 
     def __init__(self, shape):
         _, c, n, inner, outer = shape
-        self.c, self.inner, self.outer = R.vec(c), R.to_mp(inner), R.to_mp(outer)
-        self.u, self.v, self.n = R.frame(n)
+        self.c, self.inner, self.outer = K.vec(c), K.to_mp(inner), K.to_mp(outer)
+        self.u, self.v, self.n = K.frame(n)
 
     def point_distance(self, p):
-        w = R.sub(p, self.c)
-        z = R.dot(w, self.n)
-        rho = R.norm(R.sub(w, R.scale(z, self.n)))
+        w = K.sub(p, self.c)
+        z = K.dot(w, self.n)
+        rho = K.norm(K.sub(w, K.scale(z, self.n)))
         if rho < self.inner:
             return ctx.sqrt(z * z + (self.inner - rho) ** 2)
         if rho > self.outer:
@@ -78,15 +79,15 @@ class AnnulusMP:
 
 def rim_curve(c, u, v, r):
     """The circle c + r (cos t u + sin t v): (point at t, |d point / dt|)."""
-    return (lambda t: R.add(c, R.scale(r, R.add(R.scale(ctx.cos(t), u), R.scale(ctx.sin(t), v))))), r
+    return (lambda t: K.add(c, K.scale(r, K.add(K.scale(ctx.cos(t), u), K.scale(ctx.sin(t), v))))), r
 
 
 def point_distance_function(shape):
     """x (an mp 3-vector) -> the distance from x to `shape` (a point, disk or annulus), in closed form."""
     kind = shape[0]
     if kind == "point":
-        p = R.vec(shape[1])
-        return lambda x: R.dist(x, p)
+        p = K.vec(shape[1])
+        return lambda x: K.dist(x, p)
     if kind == "disk":
         rnd = R.make_round(shape[1], shape[2], shape[3])
         return lambda x: R.point_disk(x, rnd)[0]
@@ -99,8 +100,8 @@ def curves_of(shape, toward):
     is the distance (a curve's own points; a disk's or an annulus's rims, see the module docstring)."""
     kind = shape[0]
     if kind in ("circle", "disk"):
-        u, v, _ = R.frame(shape[2])
-        at, speed = rim_curve(R.vec(shape[1]), u, v, R.to_mp(shape[3]))
+        u, v, _ = K.frame(shape[2])
+        at, speed = rim_curve(K.vec(shape[1]), u, v, K.to_mp(shape[3]))
         return [(at, mpf(0), 2 * ctx.pi, True, speed)]
     if kind == "arc":  # the arc's own definition (reference_arc.ArcMP)
         arc_mp = ArcMP(shape)
@@ -111,15 +112,15 @@ def curves_of(shape, toward):
         return [(at, mpf(0), 2 * ctx.pi, True, speed) for at, speed in AnnulusMP(shape).rims()]
     # a line, ray or segment: the stretch where a closest point can lie. A point of the line at
     # |P(t) - c| > |P(t*) - c| + 2 outer (t* nearest the center c) is farther from the annulus than P(t*).
-    o, d = R.vec(shape[1]), R.vec(shape[2])
+    o, d = K.vec(shape[1]), K.vec(shape[2])
     if kind == "segment":
-        d = R.sub(d, o)
+        d = K.sub(d, o)
     ring = AnnulusMP(toward)
-    dd = R.dot(d, d)
+    dd = K.dot(d, d)
     if dd == 0:  # a zero-length segment: its one point
         return [(lambda t: o, mpf(0), mpf(0), False, mpf(0))]
-    t_star = R.dot(R.sub(ring.c, o), d) / dd
-    reach = (R.dist(R.add(o, R.scale(t_star, d)), ring.c) + 2 * ring.outer + 1) / ctx.sqrt(dd)
+    t_star = K.dot(K.sub(ring.c, o), d) / dd
+    reach = (K.dist(K.add(o, K.scale(t_star, d)), ring.c) + 2 * ring.outer + 1) / ctx.sqrt(dd)
     lo, hi = t_star - reach, t_star + reach
     if kind in ("ray", "segment"):
         lo = max(lo, mpf(0))
@@ -127,7 +128,7 @@ def curves_of(shape, toward):
         hi = min(hi, mpf(1))
     if lo > hi:  # the stretch lies wholly past the piece's end: only that end can be closest
         lo = hi = mpf(0) if kind == "ray" or t_star < 0 else mpf(1)
-    return [(lambda t: R.add(o, R.scale(t, d)), lo, hi, False, ctx.sqrt(dd))]
+    return [(lambda t: K.add(o, K.scale(t, d)), lo, hi, False, ctx.sqrt(dd))]
 
 
 def _feature(a, b):
@@ -148,11 +149,11 @@ def minimum_along(curve, other, feature):
     if lo == hi:
         return other(at(lo))
     f = lambda t: other(at(t))  # noqa: E731
-    plain = R.minimize_1d(f, lo, hi, INTERVALS, periodic)[0].value
+    plain = K.minimize_1d(f, lo, hi, INTERVALS, periodic)[0].value
     resolution = max(feature, plain / 8)
     if speed * (hi - lo) / INTERVALS <= resolution:
         return plain
-    return R.minimize_1d(f, lo, hi, INTERVALS, periodic, lipschitz=lambda x, y: speed,
+    return K.minimize_1d(f, lo, hi, INTERVALS, periodic, lipschitz=lambda x, y: speed,
                          resolution=lambda x, y, step: resolution)[0].value
 
 
@@ -162,7 +163,7 @@ def reference_mp(a, b):
     ring = AnnulusMP(a)
     feature = _feature(a, b)
     if b[0] == "point":
-        return ring.point_distance(R.vec(b[1]))
+        return ring.point_distance(K.vec(b[1]))
     values = [minimum_along(c, ring.point_distance, feature) for c in curves_of(b, a)]
     if b[0] in ("disk", "annulus"):  # a's rims against the region b
         values += [minimum_along(c, point_distance_function(b), feature) for c in curves_of(a, a)]
@@ -178,8 +179,8 @@ def bezier_reference_mp(a, ctrl):
     """The distance between the annulus a and the Bezier curve `ctrl` at 50 digits (an mpf): the
     least of the point-annulus closed form over the curve's t (its speed bounded by
     n max |P_i+1 - P_i|)."""
-    pts = [R.vec(p) for p in ctrl]
-    speed = (len(pts) - 1) * max([R.norm(R.sub(q, p)) for p, q in zip(pts, pts[1:])] + [mpf(0)])
+    pts = [K.vec(p) for p in ctrl]
+    speed = (len(pts) - 1) * max([K.norm(K.sub(q, p)) for p, q in zip(pts, pts[1:])] + [mpf(0)])
     curve = (lambda t: R.bezier_point(ctrl, t), mpf(0), mpf(1), False, speed)
     return minimum_along(curve, AnnulusMP(a).point_distance, _feature(a, ("bezier",)))
 

@@ -1,5 +1,5 @@
-"""Independent 50-digit reference for arcs (issue 19): one, used by tests/test_arc.py and by the
-differential test's confirmation (circledist_cases/differential.py).
+"""Independent 50-digit reference for arcs: one, used by tests/test_arc.py and by the
+differential test's confirmation (circledist_cases/differential/).
 
 No circledist code.  An arc is built from its own definition, center + R (cos t u + sin t v),
 t in [0, angle], u the unit projection of `start` onto the plane normal to `normal`, v = n x u
@@ -7,7 +7,7 @@ t in [0, angle], u the unit projection of `start` onto the plane normal to `norm
 against an arc is the minimum over the arc's angle t of the other shape's closed-form point
 distance (point, line, ray, segment: the clamped projection; circle, disk: note 000 / 001;
 another arc: the point-arc closed form of ArcMP.point_distance, itself checked against sampling
-in tests/test_arc.py), found by reference_round.minimize_1d (dense samples, golden section on
+in tests/test_arc.py), found by reference_kit.minimize_1d (dense samples, golden section on
 every sampled local minimum; zoomed by Lipschitz bounds where two minima could share a sampling
 step: an arc nearly tangent to a line or ring, or far larger than a round target).  Every value
 is a genuine point's exact distance, an upper bound; the least is kept.  A Bezier curve against
@@ -23,9 +23,10 @@ from __future__ import annotations
 import functools
 import math
 
+from . import reference_kit as K
 from . import reference_round as R
 
-mpf, ctx = R.mpf, R.ctx
+mpf, ctx = K.mpf, K.ctx
 TWO_PI = 2 * math.pi     # float64's 2 pi: an angle >= this is the whole circle (docs/arc.md)
 INTERVALS = 720
 
@@ -56,22 +57,22 @@ class ArcMP:
 
     def __init__(self, shape):
         _, c, n, r, s, a = shape
-        self.c, self.r, self.angle = R.vec(c), R.to_mp(r), R.to_mp(a)
+        self.c, self.r, self.angle = K.vec(c), K.to_mp(r), K.to_mp(a)
         self.whole = float(a) >= TWO_PI
-        self.n = R.normalize(R.vec(n))
-        s = R.vec(s)
-        self.u = R.normalize(R.sub(s, R.scale(R.dot(s, self.n), self.n)))
-        self.v = R.cross(self.n, self.u)
+        self.n = K.normalize(K.vec(n))
+        s = K.vec(s)
+        self.u = K.normalize(K.sub(s, K.scale(K.dot(s, self.n), self.n)))
+        self.v = K.cross(self.n, self.u)
 
     def at(self, t):
-        return R.add(self.c, R.scale(self.r, R.add(R.scale(ctx.cos(t), self.u), R.scale(ctx.sin(t), self.v))))
+        return K.add(self.c, K.scale(self.r, K.add(K.scale(ctx.cos(t), self.u), K.scale(ctx.sin(t), self.v))))
 
     def point_distance(self, p):
         """Closed form (a point's distance along the circle rises with the angular gap from the
         angle of its projection): the ring's distance where that angle is on the arc, else the
         nearer end's; on the axis every point is as far."""
-        w = R.sub(p, self.c)
-        z, x, y = R.dot(w, self.n), R.dot(w, self.u), R.dot(w, self.v)
+        w = K.sub(p, self.c)
+        z, x, y = K.dot(w, self.n), K.dot(w, self.u), K.dot(w, self.v)
         rho = ctx.sqrt(x * x + y * y)
         if rho == 0:
             return ctx.sqrt(z * z + self.r * self.r)
@@ -80,17 +81,17 @@ class ArcMP:
             phi += 2 * ctx.pi
         if self.whole or phi <= self.angle:
             return ctx.sqrt(z * z + (rho - self.r) ** 2)
-        return min(R.dist(p, self.at(mpf(0))), R.dist(p, self.at(self.angle)))
+        return min(K.dist(p, self.at(mpf(0))), K.dist(p, self.at(self.angle)))
 
 
 def point_distance_function(shape):
     """x (an mp 3-vector) -> the distance from x to `shape`, in closed form."""
     kind = shape[0]
     if kind == "point":
-        p = R.vec(shape[1])
-        return lambda x: R.dist(x, p)
+        p = K.vec(shape[1])
+        return lambda x: K.dist(x, p)
     if kind in ("line", "ray", "segment"):
-        o, d = R.vec(shape[1]), R.vec(shape[2])
+        o, d = K.vec(shape[1]), K.vec(shape[2])
         return lambda x: R.point_linear_closest(x, kind, o, d)[0]
     if kind in ("circle", "disk"):
         rnd = R.make_round(shape[1], shape[2], shape[3])
@@ -101,7 +102,7 @@ def point_distance_function(shape):
 
 
 def _target_radius(shape):
-    return R.to_mp(shape[3]) if shape[0] in ("circle", "disk", "arc") else None
+    return K.to_mp(shape[3]) if shape[0] in ("circle", "disk", "arc") else None
 
 
 ZOOM_SAMPLES = 4000   # the zoom's cap on added samples per reference (lowest bounds first)
@@ -111,7 +112,7 @@ ZOOM_SAMPLES = 4000   # the zoom's cap on added samples per reference (lowest bo
 def reference_mp(a, b, intervals=INTERVALS):
     """min over the arc a's angle t of the closed-form distance from a(t) to b (an mpf).
 
-    Zoomed (reference_round.minimize_1d's Lipschitz zoom; a's point moves by its radius per
+    Zoomed (reference_kit.minimize_1d's Lipschitz zoom; a's point moves by its radius per
     radian): every interval that could hold a value below the best sample is re-sampled until one
     step moves the point by at most 1/8 of a lower bound of the distance on it (the distance to
     a point, line, ray, segment or round is smooth on the scale of the distance itself away from
@@ -125,9 +126,9 @@ def reference_mp(a, b, intervals=INTERVALS):
     arc_a = ArcMP(a)
     hi = 2 * ctx.pi if arc_a.whole else arc_a.angle
     rt = _target_radius(b)
-    big = rt is not None and rt > 0 and arc_a.r * hi / intervals > rt / R.ZOOM_FRACTION
+    big = rt is not None and rt > 0 and arc_a.r * hi / intervals > rt / K.ZOOM_FRACTION
     return _least(arc_a.at, point_distance_function(b), hi, intervals, arc_a.whole, lambda lo_, hi_: arc_a.r,
-                  max(arc_a.r, rt or 0), rt / R.ZOOM_FRACTION if big else None)
+                  max(arc_a.r, rt or 0), rt / K.ZOOM_FRACTION if big else None)
 
 
 def _least(point_at, other, hi, intervals, periodic, lipschitz, scale, round_res=None):
@@ -142,10 +143,10 @@ def _least(point_at, other, hi, intervals, periodic, lipschitz, scale, round_res
         return v
 
     def resolution(lo_, hi_, lh):
-        res = max(min(seen[lo_._mpf_], seen[hi_._mpf_]) - lh / 2, floor) / R.ZOOM_FRACTION
+        res = max(min(seen[lo_._mpf_], seen[hi_._mpf_]) - lh / 2, floor) / K.ZOOM_FRACTION
         return res if round_res is None else min(res, round_res)
 
-    minima = R.minimize_1d(f, mpf(0), hi, intervals, periodic=periodic, lipschitz=lipschitz, resolution=resolution,
+    minima = K.minimize_1d(f, mpf(0), hi, intervals, periodic=periodic, lipschitz=lipschitz, resolution=resolution,
                            max_samples=ZOOM_SAMPLES)
     return minima[0].value
 
@@ -155,10 +156,10 @@ def bezier_arc(ctrl, arc_shape):
     closed form, zoomed as above (the curve's speed bounded by its hodograph, reference_round's
     _speed_bound; the arc's features resolved to its radius / 8 where the curve is far larger)."""
     arc_b = ArcMP(arc_shape)
-    pts = [R.vec(p) for p in ctrl]
-    extent = max(float(R.norm(R.sub(p, pts[0]))) for p in pts)
+    pts = [K.vec(p) for p in ctrl]
+    extent = max(float(K.norm(K.sub(p, pts[0]))) for p in pts)
     return _least(lambda t: R.bezier_point(ctrl, t), arc_b.point_distance, mpf(1), R.CURVE_SAMPLES, False,
-                  R._speed_bound(ctrl), max(arc_b.r, extent), arc_b.r / R.ZOOM_FRACTION)
+                  R._speed_bound(ctrl), max(arc_b.r, extent), arc_b.r / K.ZOOM_FRACTION)
 
 
 def reference(a, b, intervals=INTERVALS):

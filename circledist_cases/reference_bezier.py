@@ -31,18 +31,19 @@ from typing import List, Sequence
 
 import numpy as np
 
+from . import reference_kit as K
 from . import reference_round as R
 
-mpf = R.mpf
-ctx = R.ctx
+mpf = K.mpf
+ctx = K.ctx
 GRID = 384          # grid intervals per parameter
 MAX_STARTS = 12     # grid local minima refined
 NEWTON_STEPS = 400  # Newton iterations per start (tangencies converge linearly)
 
 
 def curve_size(ctrl) -> float:
-    pts = [R.vec(p) for p in ctrl]
-    return max(float(R.norm(R.sub(p, pts[0]))) for p in pts)
+    pts = [K.vec(p) for p in ctrl]
+    return max(float(K.norm(K.sub(p, pts[0]))) for p in pts)
 
 
 def _grid_points(ctrl: np.ndarray, origin: np.ndarray, ts: np.ndarray) -> np.ndarray:
@@ -103,32 +104,32 @@ def _starts(ca: np.ndarray, cb: np.ndarray):
     return out
 
 
-def _jet(pts: List[R.Vec], t):
+def _jet(pts: List[K.Vec], t):
     """B(t), B'(t), B''(t) by de Casteljau on the curve and its hodographs, in mpmath."""
     k = len(pts) - 1
 
     def casteljau(q, x):
         q = list(q)
         while len(q) > 1:
-            q = [R.add(q[i], R.scale(x, R.sub(q[i + 1], q[i]))) for i in range(len(q) - 1)]
+            q = [K.add(q[i], K.scale(x, K.sub(q[i + 1], q[i]))) for i in range(len(q) - 1)]
         return q[0] if q else (mpf(0), mpf(0), mpf(0))
 
-    d1 = [R.scale(k, R.sub(pts[i + 1], pts[i])) for i in range(k)]
-    d2 = [R.scale(k - 1, R.sub(d1[i + 1], d1[i])) for i in range(k - 1)]
+    d1 = [K.scale(k, K.sub(pts[i + 1], pts[i])) for i in range(k)]
+    d2 = [K.scale(k - 1, K.sub(d1[i + 1], d1[i])) for i in range(k - 1)]
     zero = (mpf(0), mpf(0), mpf(0))
     return casteljau(pts, t), casteljau(d1, t) if d1 else zero, casteljau(d2, t) if d2 else zero
 
 
-def _descend(pa: List[R.Vec], pb: List[R.Vec], s, t):
+def _descend(pa: List[K.Vec], pb: List[K.Vec], s, t):
     """Newton on F(s, t) = |A(s) - B(t)|^2 from (s, t), each step halved until F decreases;
     None when it leaves [0, 1]^2 (an edge minimum). Returns (distance, s, t)."""
     def state(x, y):
         a, a1, a2 = _jet(pa, x)
         b, b1, b2 = _jet(pb, y)
-        r = R.sub(a, b)
-        f = R.dot(r, r)
-        g = (R.dot(r, a1), -R.dot(r, b1))
-        h = (R.dot(a1, a1) + R.dot(r, a2), -R.dot(a1, b1), R.dot(b1, b1) - R.dot(r, b2))
+        r = K.sub(a, b)
+        f = K.dot(r, r)
+        g = (K.dot(r, a1), -K.dot(r, b1))
+        h = (K.dot(a1, a1) + K.dot(r, a2), -K.dot(a1, b1), K.dot(b1, b1) - K.dot(r, b2))
         return f, g, h
 
     s, t = mpf(s), mpf(t)
@@ -163,17 +164,17 @@ def _descend(pa: List[R.Vec], pb: List[R.Vec], s, t):
     return ctx.sqrt(f), s, t
 
 
-def _nearest_t(pb: List[R.Vec], p, t):
+def _nearest_t(pb: List[K.Vec], p, t):
     """The t in [0, 1] nearest B(t) to p, by Newton on |p - B(t)|^2 from t (50 digits), with the
     ends compared: (squared distance, t)."""
     def f(x):
-        r = R.sub(p, _jet(pb, x)[0])
-        return R.dot(r, r)
+        r = K.sub(p, _jet(pb, x)[0])
+        return K.dot(r, r)
     t = mpf(t)
     for _ in range(60):
         b, b1, b2 = _jet(pb, t)
-        r = R.sub(p, b)
-        slope, curvature = -R.dot(r, b1), R.dot(b1, b1) - R.dot(r, b2)
+        r = K.sub(p, b)
+        slope, curvature = -K.dot(r, b1), K.dot(b1, b1) - K.dot(r, b2)
         if not curvature > 0:
             break
         nt = min(max(t - slope / curvature, mpf(0)), mpf(1))
@@ -184,7 +185,7 @@ def _nearest_t(pb: List[R.Vec], p, t):
     return min((f(x), x) for x in (t, mpf(0), mpf(1)))
 
 
-def _valley(pa: List[R.Vec], pb: List[R.Vec], s, t, width=mpf("1e-2")):
+def _valley(pa: List[K.Vec], pb: List[K.Vec], s, t, width=mpf("1e-2")):
     """The lowest point near (s, t) of g(s) = min over t of |A(s) - B(t)|: golden section on s at
     50 digits (the bracket widened while the minimum sits on its inner edge), each g by
     _nearest_t. Where F is nearly flat along a valley (a tangency, nearly parallel curves) the
@@ -232,12 +233,12 @@ class BezierReference:
         return float(self.distance)
 
     def __repr__(self):
-        return f"BezierReference({R.ctx.nstr(self.distance, 20)}, scale={self.scale:.3g})"
+        return f"BezierReference({K.ctx.nstr(self.distance, 20)}, scale={self.scale:.3g})"
 
 
 def bezier_bezier(ctrl_a: Sequence, ctrl_b: Sequence) -> BezierReference:
-    pa = [R.vec(p) for p in ctrl_a]
-    pb = [R.vec(p) for p in ctrl_b]
+    pa = [K.vec(p) for p in ctrl_a]
+    pb = [K.vec(p) for p in ctrl_b]
     pairs = []
     # The edges.
     for which, s in ((0, 0), (len(pa) - 1, 1)):

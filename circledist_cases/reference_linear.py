@@ -1,6 +1,6 @@
 """50-digit reference for points, lines, rays and segments among themselves (no circledist).
 
-Shared by tests/test_linear_accuracy.py and the differential test (circledist_cases/differential.py).
+Shared by tests/test_linear_accuracy.py and the differential test (circledist_cases/differential/).
 The reference minimizes over one parameter: s -> dist(A(s), B), the distance from a point of A
 to the piece B (its projection clamped, in mpmath), is convex in s, so a bracket search
 (sampling, then golden section) finds its minimum; s = tan(phi) maps an infinite interval onto a
@@ -11,7 +11,7 @@ The search: 121 samples of phi, then 240 golden-section steps (interval reductio
 search, one new value per step) on the bracket around the best sample, down to 0.618^240 ~ 1e-50
 of a sample step: a minimum far along a line (an origin 1e12 away, tan(phi) ~ 1e12, where one
 unit of phi moves the point by 1e24) is still resolved to ~1e-26 of the direction's length.
-(The 160 ternary steps this began with in tests/test_linear_accuracy.py, a bracket of ~1e-28 of a
+(160 ternary steps, a bracket of ~1e-28 of a
 step, would leave such a minimum ~4e-6 of the direction's length off: dphi / (pi/2 - phi)^2.)
 """
 

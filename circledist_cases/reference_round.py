@@ -17,13 +17,11 @@ features, so that near-tied local minima closer than the uniform step are refine
 evaluated is the distance between a genuine point of one shape and the genuine closest point of the
 other, hence an upper bound of the true distance; the reference keeps the smallest.
 
-Arithmetic is mpmath at 50 significant digits in a private context (the global mpmath context is
-not touched).  Float inputs are converted exactly (an IEEE double is a dyadic rational), so the
-references describe exactly the float64 scene given to the library, e.g. after a translation by
-1e8 the reference is that of the rounded, translated coordinates.
-
-Frames are built here, independently of the library: the in-plane unit vector U is the
-Gram-Schmidt projection of the coordinate axis least aligned with N, and V = N x U.
+Arithmetic, exact conversions, vectors, frames and the minimisation (minimize_1d) are the shared
+50-digit toolkit's (reference_kit): mpmath at 50 significant digits in a private context, float
+inputs converted exactly, so the references describe exactly the float64 scene given to the
+library, e.g. after a translation by 1e8 the reference is that of the rounded, translated
+coordinates.
 """
 
 from __future__ import annotations
@@ -31,103 +29,26 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Callable, List, Optional, Sequence, Tuple
+from typing import Callable, List, Optional, Sequence
 
 import mpmath.libmp as _lm
-from mpmath.ctx_mp import MPContext
 
-from .golden import golden_section
-
-DPS = 50
-ctx = MPContext()
-ctx.dps = DPS
-mpf = ctx.mpf
+# the shared 50-digit toolkit; its names stay reachable here as reference_round.NAME
+from .reference_kit import (  # noqa: F401
+    DPS, MAX_REFINED, MAX_ZOOM_SAMPLES, PARAM_TOL, TIE_TOL, ZOOM_FRACTION, ZOOM_SPLIT, LocalMin, Vec,
+    _sample_grid, add, cross, ctx, dist, dot, frame, minimize_1d, mpf, norm, normalize, scale, sub,
+    to_mp, vec)
 
 CIRCLE_SAMPLES = 720   # samples of an angle over [0, 2 pi)
 CURVE_SAMPLES = 600    # intervals of a Bezier parameter over [0, 1] (end points included)
-PARAM_TOL = mpf("1e-40")  # golden-section bracket width at which refinement stops
-TIE_TOL = mpf("1e-40")  # sampled values this close (relative) count as tied (see minimize_1d)
-MAX_REFINED = 64       # safety cap on refinements per minimisation (never reached in the tests)
-ZOOM_FRACTION = 8      # zoom: re-sample until one step moves the point by at most target radius / this
-ZOOM_SPLIT = 8         # zoom: pieces an interval is cut into per pass
-MAX_ZOOM_SAMPLES = 40000  # zoom: safety cap on added samples per minimisation (see minimize_1d)
-_INVPHI = (ctx.sqrt(5) - 1) / 2
 _TWO_PI = 2 * ctx.pi
 _RN = _lm.round_nearest
 _add, _mul = _lm.mpf_add, _lm.mpf_mul
 
-Vec = Tuple[object, object, object]
-
 
 # ----------------------------------------------------------------------------------------------
-# small vector helpers on tuples of mpf
+# shapes
 # ----------------------------------------------------------------------------------------------
-def to_mp(x) -> object:
-    """Exact conversion of a float / int / numpy scalar; strings are parsed at 50 digits."""
-    if isinstance(x, ctx.mpf):
-        return x
-    if isinstance(x, str):
-        return mpf(x)
-    if isinstance(x, int):
-        return mpf(x)
-    if hasattr(x, "as_integer_ratio") and math.isfinite(x):  # floats, NumPy's long double too: exactly
-        p, q = x.as_integer_ratio()
-        return mpf(p) / q
-    return mpf(float(x))
-
-
-def vec(x: Sequence) -> Vec:
-    v = tuple(to_mp(c) for c in x)
-    if len(v) != 3:
-        raise ValueError("expected a 3-vector")
-    return v
-
-
-def add(a: Vec, b: Vec) -> Vec:
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-
-
-def sub(a: Vec, b: Vec) -> Vec:
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-
-
-def scale(s, a: Vec) -> Vec:
-    return (s * a[0], s * a[1], s * a[2])
-
-
-def dot(a: Vec, b: Vec):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-def cross(a: Vec, b: Vec) -> Vec:
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def norm(a: Vec):
-    return ctx.sqrt(dot(a, a))
-
-
-def normalize(a: Vec) -> Vec:
-    n = norm(a)
-    if n == 0:
-        raise ValueError("zero vector")
-    return scale(1 / n, a)
-
-
-def dist(a: Vec, b: Vec):
-    return norm(sub(a, b))
-
-
-def frame(normal: Sequence) -> Tuple[Vec, Vec, Vec]:
-    """Right-handed orthonormal (U, V, N) with N = normal/|normal| (own construction)."""
-    n = normalize(vec(normal))
-    k = min(range(3), key=lambda i: (abs(n[i]), i))
-    e = tuple(mpf(1) if i == k else mpf(0) for i in range(3))
-    u = normalize(sub(e, scale(dot(e, n), n)))
-    v = cross(n, u)
-    return u, v, n
-
-
 @dataclass(frozen=True)
 class Round:
     """A circle or disk: centre, orthonormal frame (u, v, n), radius; plus the raw float input."""
@@ -224,131 +145,6 @@ def bezier_point(ctrl: Sequence[Sequence], t) -> Vec:
     while len(pts) > 1:
         pts = [add(pts[i], scale(t, sub(pts[i + 1], pts[i]))) for i in range(len(pts) - 1)]
     return pts[0]
-
-
-# ----------------------------------------------------------------------------------------------
-# one-parameter minimisation: dense sampling + golden section on every sampled local minimum
-# ----------------------------------------------------------------------------------------------
-@dataclass
-class LocalMin:
-    value: object   # refined distance
-    x: object       # parameter (angle or t)
-    rise: object    # how much the sampled neighbours exceed the sampled minimum (flatness)
-
-
-def _sample_grid(lo, hi, intervals: int, periodic: bool):
-    """The sample abscissae of minimize_1d (shared so that cached values match exactly)."""
-    lo, hi = to_mp(lo), to_mp(hi)
-    h = (hi - lo) / intervals
-    n = intervals if periodic else intervals + 1
-    xs = [lo + i * h for i in range(n)]
-    if not periodic:
-        xs[-1] = hi
-    return xs, h
-
-
-def _zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, best, max_samples=MAX_ZOOM_SAMPLES):
-    """Re-sample, ZOOM_SPLIT pieces at a time, every interval between neighbouring samples that
-    could hold a value below the best sample and on which one step can still move the point by
-    more than resolution(a, b, L (b - a)).  f is L-Lipschitz on [a, b] (L = lipschitz(a, b)), so
-    nothing on [a, b] lies below (f(a) + f(b))/2 - L (b - a)/2: intervals above the best sample
-    are dropped.  pts: sorted [x, f(x)] lists, extended in place.  The intervals are taken
-    lowest bound first, so a zoom stopped by MAX_ZOOM_SAMPLES has spent them where the minimum is."""
-    added = 0
-    while added < max_samples:
-        todo = []
-        for i, ((a, fa), (b, fb)) in enumerate(zip(pts, pts[1:])):
-            lh = lipschitz(a, b) * (b - a)
-            if (fa + fb - lh) / 2 <= best and lh > resolution(a, b, lh):
-                todo.append(((fa + fb - lh) / 2, i))
-        if not todo:
-            break
-        todo.sort(key=lambda x: x[0])
-        new = {}
-        for _, i in todo[:(max_samples - added) // (ZOOM_SPLIT - 1)]:
-            (a, _fa), (b, _fb) = pts[i], pts[i + 1]
-            step = (b - a) / ZOOM_SPLIT
-            new[i] = [[a + j * step, None] for j in range(1, ZOOM_SPLIT)]
-            for q in new[i]:
-                q[1] = f(q[0])
-                best = min(best, q[1])
-            added += ZOOM_SPLIT - 1
-        if not new:
-            break
-        out = []
-        for i, q in enumerate(pts):
-            out.append(q)
-            out += new.get(i, [])
-        pts[:] = out
-    return pts
-
-
-def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: Optional[Callable] = None,
-                resolution=None, max_samples=MAX_ZOOM_SAMPLES) -> List[LocalMin]:
-    """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first.
-
-    lipschitz(a, b) (optional): a bound on |f'| over [a, b]; with resolution(a, b, step) (the
-    length, in space, to which the target's features around [a, b] must be resolved) the uniform
-    scan is zoomed (_zoom) until every interval that could hold a value below the best sample is
-    sampled at steps moving the point by at most that much.  Why: a uniform scan of
-    a shape far larger than the other one (a curve 2e4 long passing a ring of radius 0.8, a huge
-    circle passing a small disk) has steps much longer than the other shape, so two local minima
-    a fraction of its size apart fall between the same two samples, and golden section then finds
-    only one of them, possibly the higher (5.9e-13 higher for the far curve of
-    tests/test_regressions.py::test_far_curve_near_tied_minima).  After the zoom each of them is
-    a sampled local minimum of its own, and every one is refined."""
-    xs, h = _sample_grid(lo, hi, intervals, periodic)
-    fs = [f(x) for x in xs]
-    if lipschitz is not None and resolution is not None:
-        pts = [[x, v] for x, v in zip(xs, fs)]
-        if periodic:  # the interval that wraps round, closed by the first sample one period on
-            x_end = to_mp(hi) + (xs[0] - to_mp(lo))
-            pts.append([x_end, f(x_end)])
-        _zoom(f, pts, lipschitz, resolution, min(fs), max_samples)
-        if periodic:
-            pts.pop()
-        xs, fs = [p[0] for p in pts], [p[1] for p in pts]
-    n = len(xs)
-    period = to_mp(hi) - to_mp(lo)
-    cand = []
-    for i in range(n):
-        nb = []
-        if periodic:
-            nb = [fs[(i - 1) % n], fs[(i + 1) % n]]
-        else:
-            if i > 0:
-                nb.append(fs[i - 1])
-            if i < n - 1:
-                nb.append(fs[i + 1])
-        if all(fs[i] <= v for v in nb):
-            cand.append((fs[i], i, min(nb) - fs[i]))
-    cand.sort(key=lambda c: c[0])
-    # Every sampled local minimum is refined, except exact ties: on a continuum of closest points
-    # (concentric circles, a circle inside a disk's plane, ...) hundreds of samples tie to ~1e-50;
-    # two of each tied value are refined (enough to see that the closest pair is not unique).
-    tie = TIE_TOL * max(mpf(1), max(abs(v) for v in fs))
-    chosen = []
-    for c in cand:
-        if sum(1 for v in chosen if abs(v[0] - c[0]) <= tie) < 2:
-            chosen.append(c)
-    out = []
-    zoomed = n != len(_sample_grid(lo, hi, intervals, periodic)[0])
-    for fi, i, rise in chosen[:MAX_REFINED]:
-        if periodic and not zoomed:
-            a, b = xs[i] - h, xs[i] + h
-        elif periodic:
-            # the neighbouring samples, across the wrap
-            a = xs[i - 1] - (period if i == 0 else 0)
-            b = xs[(i + 1) % n] + (period if i == n - 1 else 0)
-        else:
-            a = xs[i - 1] if i > 0 else xs[i]
-            b = xs[i + 1] if i < n - 1 else xs[i]
-        x, v = golden_section(f, a, b, _INVPHI, PARAM_TOL)
-        if fi <= v:  # the sample itself (e.g. an end point) may be the best point seen
-            v, x = fi, xs[i]
-        out.append(LocalMin(v, x, rise))
-    out.sort(key=lambda m: m.value)
-    return out
 
 
 # ----------------------------------------------------------------------------------------------

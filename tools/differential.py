@@ -5,7 +5,7 @@
 
 (from the repository's root: a module run, so that the shared cases, circledist_cases, import.)
 
-Sizes are counted in library ANSWERS, as the issue counts its "queries": every value the library
+Sizes are counted in library ANSWERS: every value the library
 returns for one query, i.e. per case every solver x precision combination, both argument orders,
 and every entry point -- distance, closest_points, within and distance_if_within (each probed at
 two limits), intersects -- batched: 2 x 7 = 14 answers per combination, 168 per case with the 12
@@ -15,7 +15,7 @@ give exactly the batch's answers).  --answers N runs ceil(N / answers per case) 
 the answers per entry point.
 
 The cases (one kind pair instance each, "family/seed/index") are spread evenly over the case
-families of circledist_cases/differential.py and, within a family, over its kind pairs; every chunk holds a
+families of circledist_cases/differential/ and, within a family, over its kind pairs; every chunk holds a
 share of every family (one library batch per kind pair and chunk: large batches, and a partial
 run sees every family).  Answers are judged by the fast NumPy screen and by the returned closest
 points.  Accuracy findings are confirmed against the 50-digit mpmath references (at most
@@ -61,7 +61,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def load_differential():
-    """The differential test's library module (circledist_cases/differential.py)."""
+    """The differential test's library module (circledist_cases/differential/)."""
     try:
         from circledist_cases import differential
     except ModuleNotFoundError as e:
@@ -194,7 +194,7 @@ def merge(total, part):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     size = ap.add_mutually_exclusive_group()
-    size.add_argument("--answers", type=int, help="library answers to check (the issue asks for 1e7); "
+    size.add_argument("--answers", type=int, help="library answers to check (the standing run checks 1e7); "
                       "runs ceil(answers / answers per case) cases")
     size.add_argument("--cases", "--queries", dest="cases", type=int, help="number of cases (default 1e5)")
     ap.add_argument("--seed", type=int, default=1)
