@@ -6,6 +6,8 @@
 #                            the C++ tests (ctest), one C++ test built against cmeel-eigen's Eigen (the
 #                            fallback), and the wheel's tests in a venv of its own with no compiler on PATH
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
+#   bash tools/run.sh lint   ruff and clang-format (pinned in pyproject.toml's lint extra) over every
+#                            tracked source file; builds nothing
 #   bash tools/run.sh docs   install what is missing, build the package, build the documentation and
 #                            API reference (docs/, Sphinx) into build/docs/index.html, warnings as errors
 #   bash tools/run.sh fuzz [N]  install what is missing, build, run the crash-isolating fuzz's long
@@ -61,12 +63,26 @@ case "$task" in
   docs) extras=(docs) ;;
   fuzz) extras=(test) ;;  # the fuzz and the differential test check against the tests' mpmath references
   bench) extras=(bench) ;;
+  lint) extras=(lint) ;;
   *) extras=() ;;
 esac
 # cmake 3.23 for CMAKE_IGNORE_PREFIX_PATH (the test task's Eigen fallback build).
 need_text=$(missing_requirements "${extras[@]}" -- "cmake>=3.23" ninja)
 read -ra need <<<"$need_text"
 [ ${#need[@]} -eq 0 ] || { echo "== installing from PyPI: ${need[*]}"; pip_install "${need[@]}"; }
+
+# The formatters (versions pinned in pyproject.toml's lint extra; configured by .clang-format and
+# pyproject.toml's [tool.ruff]) check every tracked source file; nothing is built.
+if [ "$task" = lint ]; then
+  status=0
+  echo "== ruff check, ruff format --check"
+  "$py" -m ruff check --quiet . || status=1
+  "$py" -m ruff format --check --quiet . || status=1
+  echo "== clang-format --dry-run --Werror"
+  git ls-files -z '*.hpp' '*.cpp' '*.h' | xargs -0 .venv/bin/clang-format --dry-run --Werror || status=1
+  [ $status -eq 0 ] && echo "lint: clean"
+  exit $status
+fi
 
 # The package is built as a wheel, which is installed: the tests then run on what a user installs.
 echo "== building the circledist wheel, and installing it"
@@ -167,7 +183,7 @@ case "$task" in
     "$py" -m bench.figures                # docs/derivations/line_disk.png
     ;;
   *)
-    echo "usage: bash tools/run.sh demo|test|bench|docs|fuzz [N]" >&2
+    echo "usage: bash tools/run.sh demo|check|test|lint|bench|docs|fuzz [N]" >&2
     exit 2
     ;;
 esac
