@@ -28,8 +28,8 @@ def sdist_names(tmp_path_factory):
 
 
 def test_sdist_holds_the_sources(sdist_names):
-    for needed in ("pyproject.toml", "CMakeLists.txt", "LICENSE", "README.md", "src/_core.cpp",
-                   "src/pair_unit.cpp", "cpp/include/circledist/circledist.hpp",
+    for needed in ("pyproject.toml", "CMakeLists.txt", "LICENSE", "README.md", "src/bindings/module.cpp",
+                   "src/kernels/pair_unit.cpp", "cpp/include/circledist/circledist.hpp",
                    "cpp/cmake/circledistConfig.cmake", "python/circledist/__init__.py",
                    "tests/conftest.py", "circledist_cases/__init__.py", "circledist_cases/scenes.py",
                    "docs/derivations/circle_disk.md"):
@@ -79,14 +79,50 @@ def _local_includes(path, seen):
 
 
 def test_pair_units_do_not_include_pybind11():
-    """The pair units (src/pair_unit.cpp, compiled once per precision and root policy) hold the
-    queries only: pybind11's headers would add about 7 s to each of them (the build's time)."""
-    unit = os.path.join(ROOT, "src", "pair_unit.cpp")
+    """The pair units (src/kernels/pair_unit.cpp, compiled once per precision and root policy)
+    hold the queries only: pybind11's headers would add about 7 s to each of them (the build's
+    time)."""
+    unit = os.path.join(ROOT, "src", "kernels", "pair_unit.cpp")
     if not os.path.isfile(unit):
         pytest.skip("no sources here")
     included = _local_includes(unit, set())
     assert not [n for n in included if "pybind11" in n or n.endswith("Python.h")], sorted(included)
-    assert os.path.join(ROOT, "src", "pairs.hpp") in included
+    assert os.path.join(ROOT, "src", "kernels", "pairs.hpp") in included
+
+
+def test_kernels_do_not_include_pybind11():
+    """src/ has two rooms: src/kernels/ (the batch loops, the pair tables, the threads), free of
+    pybind11 and Python (no file there reaches them, nor src/bindings/), and src/bindings/, the
+    module's translation units, which include the kernels."""
+    kernels = os.path.join(ROOT, "src", "kernels")
+    if not os.path.isdir(os.path.join(ROOT, "src")):
+        pytest.skip("no sources here")
+    files = sorted(os.path.join(kernels, n) for n in os.listdir(kernels)) if os.path.isdir(kernels) else []
+    assert files, "no src/kernels/"
+    for path in files:
+        included = _local_includes(path, set())
+        assert not [n for n in included if "pybind11" in n or n.endswith("Python.h")], (path, sorted(included))
+        assert not [n for n in included if os.sep + "bindings" + os.sep in n], (path, sorted(included))
+
+
+def test_binding_sources_include_before_code():
+    """Every file of src/ names its includes at its top, before any code: no header is included
+    half-way down a translation unit (each binding topic is a unit of its own)."""
+    import re
+    src = os.path.join(ROOT, "src")
+    if not os.path.isdir(src):
+        pytest.skip("no sources here")
+    paths = [os.path.join(d, n) for d, _, names in os.walk(src) for n in names if n.endswith((".cpp", ".hpp"))]
+    assert paths
+    for path in paths:
+        code_seen = False
+        with open(path) as f:
+            for number, line in enumerate(f, 1):
+                text = line.strip()
+                if re.match(r"#\s*include\b", text):
+                    assert not code_seen, f"{os.path.relpath(path, ROOT)}:{number}: an include after code"
+                elif text and not text.startswith(("//", "#")):
+                    code_seen = True
 
 
 def test_installed_distribution_holds_the_package_only():

@@ -3,7 +3,7 @@
     python tools/stubs.py          write the stubs of the importable circledist._core
     python tools/stubs.py --check  exit 1, with a diff, when the checked-in file differs
 
-pybind11-stubgen (the `docs` extra) reads the module's signatures and docstrings (src/help.hpp);
+pybind11-stubgen (the `docs` extra) reads the module's signatures and docstrings (src/bindings/);
 the one change made to its output: the version's value is left out (`__version__: str`), so
 that a version bump does not make the stubs stale. tests/test_stubs.py runs the check.
 """

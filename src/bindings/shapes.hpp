@@ -2,7 +2,7 @@
 // the per-kind traits that turn one batch element into a C++ primitive. No geometry here.
 #pragma once
 
-#include "batch.hpp"
+#include "../kernels/batch.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

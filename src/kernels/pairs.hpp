@@ -1,7 +1,7 @@
 // One template evaluates every pair of shape kinds over a broadcast batch (PairKernels), and the
-// tables the module looks a pair up in. Free of pybind11, like batch.hpp: the module (_core.cpp,
-// calls.hpp) turns the Python arguments into a Request, allocates the answers' arrays and
-// releases the GIL; the kernels here only loop.
+// tables the module looks a pair up in. Free of pybind11, like batch.hpp: the module (bindings/calls.hpp)
+// turns the Python arguments into a Request, allocates the answers' arrays and releases the
+// GIL; the kernels here only loop.
 #pragma once
 
 #include "batch.hpp"
@@ -210,7 +210,7 @@ template <class Roots> constexpr int solver_index() {
 }
 
 // The tables of the precisions that have their own instantiations: double and long double
-// (float32 queries run the double tables' entries, float32.hpp).
+// (float32 queries run the double tables' entries, bindings/float32.hpp).
 struct PairTables {
   PairTable<double> doubles[kSolverCount];
   PairTable<long double> long_doubles[kSolverCount];
@@ -306,7 +306,7 @@ struct NoRoots {};
 // once per entry of CIRCLEDIST_PAIR_UNITS by CMakeLists.txt), so that both cores stay busy.
 // Counted<>: every polynomial solve is counted in circledist::stats() (effects.hpp).
 // The three eigenvalue policies are one unit, SelectedEigenPolicy (roots.hpp), whose entries fill
-// the three solvers' tables; the query's Choice (_core.cpp) selects among them for the call.
+// the three solvers' tables; the query's Choice (bindings/arguments.hpp) selects among them for the call.
 // NoRoots: the closed-form pairs, the same entries in every solver's table.
 template <class Real, class Roots> void register_pairs(PairTables& t) {
   if constexpr (std::is_same_v<Roots, NoRoots>) {

@@ -106,7 +106,7 @@ template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
   }
 };
 
-// An arc: center, normal, radius, start, angle (shapes.hpp checks 0 < angle <= 2 pi). An angle of
+// An arc: center, normal, radius, start, angle (bindings/shapes.hpp checks 0 < angle <= 2 pi). An angle of
 // float64's 2 pi is the whole circle in every precision: it lies 2.4e-16 below long double's 2 pi,
 // which would leave a long-double query a gap in the circle (arc.hpp takes angle >= 2 pi whole).
 template <class Real> struct ShapeTraits<Arc3<Real>> {
@@ -119,7 +119,7 @@ template <class Real> struct ShapeTraits<Arc3<Real>> {
   }
 };
 
-// An annulus: center, normal, inner radius, outer radius (shapes.hpp checks 0 <= inner <= outer).
+// An annulus: center, normal, inner radius, outer radius (bindings/shapes.hpp checks 0 <= inner <= outer).
 template <class Real> struct ShapeTraits<Annulus3<Real>> {
   static constexpr int kind = kAnnulus;
   template <class T> static Annulus3<Real> make(const T* const* f, int) {
@@ -128,7 +128,7 @@ template <class Real> struct ShapeTraits<Annulus3<Real>> {
 };
 
 // The C++ primitive of each kind, in Kind's order: the one list a new kind adds its type to, so
-// that code over every kind (the broadphase's volumes, bind_pairs.hpp) has no per-kind branch.
+// that code over every kind (the broadphase's volumes, bindings/all_pairs.cpp) has no per-kind branch.
 template <class Real>
 using KindTypes = std::tuple<Vec3<Real>, Line3<Real>, Ray3<Real>, Segment3<Real>, Circle3<Real>, Disk3<Real>,
                              BezierCurve3<Real>, Arc3<Real>, Annulus3<Real>>;
@@ -150,7 +150,7 @@ template <class Real, class Fn> void visit_kind(int kind, Fn&& fn) {
 
 // A shape batch as a query reads it: per field, its values in the storage type T of the query's
 // precision (double, or long double), its width (values per element) and its batch shape. The
-// module makes it from a Shape (shapes.hpp) with the GIL held; it borrows the Shape's storage.
+// module makes it from a Shape (bindings/shapes.hpp) with the GIL held; it borrows the Shape's storage.
 constexpr int kMaxShapeFields = 6;  // an arc's center, normal, radius, start, angle, and the sweep
 template <class T> struct FieldRef {
   const char* name;
@@ -211,7 +211,7 @@ template <class T> class Broadcast {
   }
 
   // Calls fn(flat_index, field_pointers) for every element of [begin, end) (a chunk of the batch:
-  // threads run disjoint chunks, src/calls.hpp). `Count`: the pair's field count (a constant of
+  // threads run disjoint chunks, bindings/calls.hpp). `Count`: the pair's field count (a constant of
   // the pair, PairKernels::kFields), so that the pointers stay in registers and advance by a fixed
   // step (most of the loop's own cost on the point queries), in one copy of the loop.
   template <int Count, class Fn> void for_each(Fn&& fn, Index begin, Index end) const {

@@ -1,9 +1,9 @@
-// The module's side of a pair query: a Request (pairs.hpp) made from the Python shapes, the
+// The module's side of a pair query: a Request (kernels/pairs.hpp) made from the Python shapes, the
 // answers' arrays, the GIL released around the kernel, and the Python result.
 #pragma once
 
-#include "pairs.hpp"
-#include "parallel.hpp"
+#include "../kernels/pairs.hpp"
+#include "../kernels/parallel.hpp"
 #include "shapes.hpp"
 
 #include <algorithm>
@@ -67,7 +67,7 @@ inline bool report_progress(py::handle progress, Index done, Index total) {
 }
 
 // Runs work(begin, end) over [0, size) in chunks on `workers` threads, the GIL released. Every
-// batched call and the all-pairs queries (bind_pairs.hpp) run this way. Every 50 ms between the
+// batched call and the all-pairs queries (all_pairs.cpp) run this way. Every 50 ms between the
 // caller's chunks, Ctrl-C (a signal Python has seen) stops it and raises KeyboardInterrupt, and
 // every 100 ms progress(done, total) is called (unless None); an exception it raises stops the
 // work likewise; it is called once more with (size, size) at the end. `fixed_chunk`: see
@@ -131,7 +131,7 @@ template <class Real> struct Call {
   const Shape& b;
   const Shape* limit = nullptr;
   int workers = 1;  // threads for a batch (run_in_chunks)
-  py::handle progress = py::none();  // None, or a callable progress(done, total) (_core.cpp resolves True)
+  py::handle progress = py::none();  // None, or a callable progress(done, total) (arguments.hpp resolves True)
 
   bool reversed() const { return table.reversed[a.kind][b.kind]; }
   Request<Real> request() const {

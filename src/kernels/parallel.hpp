@@ -1,5 +1,5 @@
 // A batch answered in chunks on several threads (the caller's among them), free of pybind11: the
-// module (calls.hpp) runs every batched kernel through run_in_chunks. Each element is answered
+// module (bindings/calls.hpp) runs every batched kernel through run_in_chunks. Each element is answered
 // alone, so the answers are the same bits for every worker count and chunk size.
 #pragma once
 

@@ -1,14 +1,15 @@
-// Python bindings of the all-pairs queries: pairs_within(a, b, d) and nearest(a, b, k) over two
-// batches of any kinds, and the broadphase object circledist.Scene culls with. The culling is
+// The all-pairs queries: pairs_within(a, b, d) and nearest(a, b, k) over two batches of any
+// kinds, and the broadphase object circledist.Scene culls with. The culling is
 // cpp/include/circledist/broadphase.hpp's; the candidates it keeps are gathered into new batches
 // and answered by the module's own distance kernels (the path distance() takes), so every
 // distance is the one distance() gives, to the bit, and no geometry is written here.
-// Included by _core.cpp after its helpers (pairs(), Argument, Choice, with_call()).
-#pragma once
-
-#include "float32.hpp"
+#include "all_pairs_doc.hpp"
+#include "module.hpp"
 
 #include <circledist/broadphase.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
 
 #include <algorithm>
 #include <atomic>
@@ -23,6 +24,7 @@
 #include <type_traits>
 #include <vector>
 
+namespace circledist::python {
 namespace {
 
 using Volumes = std::vector<Volume<double>>;
@@ -907,7 +909,7 @@ struct SceneBroadphase {
 
 }  // namespace
 
-inline void bind_pairs(py::module_& m) {
+void bind_all_pairs(py::module_& m) {
   m.def(
       "pairs_within",
       [](ShapeLike a, OptionalShapeLike b, Number d, PrecisionName precision, SolverName solver, Count workers,
@@ -947,3 +949,5 @@ inline void bind_pairs(py::module_& m) {
            py::arg("workers") = 1, py::arg("max_pairs") = kDefaultMaxPairs,
            "(pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.");
 }
+
+}  // namespace circledist::python

@@ -1,20 +1,37 @@
-// Python bindings of the requested effects (cpp/include/circledist/effects.hpp): intersects,
-// within, distance_if_within over broadcast batches, and the work counters. Every pair goes
-// through the one PairKernels template (pairs.hpp), like distance and closest_points.
-// Included by _core.cpp after its helpers (pairs(), run_within()).
-#pragma once
+// The requested effects (cpp/include/circledist/effects.hpp): intersects, within and
+// distance_if_within over broadcast batches, and the work counters. Every pair goes through the
+// one PairKernels template (kernels/pairs.hpp), like distance and closest_points.
+#include "effects_doc.hpp"
+#include "module.hpp"
 
-#include "calls.hpp"
-
+#include <pybind11/pybind11.h>
 #include <pybind11/typing.h>
 
+#include <cstdint>
 #include <string>
+
+namespace circledist::python {
+
+Shape limit_shape(const char* owner, py::handle d) {
+  return Shape(kPoint, {make_field(owner, "d", d, 1, Check::NonNegative)});
+}
+
+py::object shapes_within(const Shape& a, const Shape& b, const Shape& limit, bool want_distance, const Choice& c,
+                         py::handle progress) {
+  auto within = [want_distance](const auto& call) { return want_distance ? call.distance() : call.within(); };
+  if (!c.single()) return with_call(a, b, &limit, c, within, progress);
+  const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
+  const Shape fd(limit.kind, {rounded_to_float("within", limit.fields[0])});
+  return to_float32(with_call(fa, fb, &fd, c, within, progress), "distance_if_within", "the distance", 1, false);
+}
 
 namespace {
 
-// The limits d of within(), a batch of scalars >= 0 broadcast with both shapes.
-Shape limit_shape(const char* owner, py::handle d) {
-  return Shape(kPoint, {make_field(owner, "d", d, 1, Check::NonNegative)});
+py::object run_within(py::handle a, py::handle b, const Shape& limit, bool want_distance, const py::object& precision,
+                      const py::object& solver, py::handle workers, const py::object& progress) {
+  const Argument x(a), y(b);
+  const Choice c(precision, solver, *x.shape, *y.shape, workers, progress);
+  return shapes_within(*x.shape, *y.shape, limit, want_distance, c, c.progress);
 }
 
 py::typing::Dict<py::str, py::int_> stats_dict() {
@@ -31,7 +48,7 @@ py::typing::Dict<py::str, py::int_> stats_dict() {
 
 }  // namespace
 
-inline void bind_effects(py::module_& m) {
+void bind_effects(py::module_& m) {
   m.def(
       "intersects",
       [](ShapeLike a, ShapeLike b, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
@@ -72,3 +89,5 @@ inline void bind_effects(py::module_& m) {
       "_count_culled", [](std::uint64_t n) { stats().culled += n; }, py::arg("n"),
       "Adds n to stats()['culled'] (used by circledist.Scene).");
 }
+
+}  // namespace circledist::python
