@@ -1,5 +1,7 @@
-// Bezier curves against arcs (issue 19; derivation in docs/arc.md, "A Bezier curve"). The curve is
-// parametrized against the arc as the target of a moving point (ArcTarget, arc.hpp), in the
+// Bezier-arc (Query<BezierCurve3, Arc3>). Derivation: docs/derivations/arc.md#a-bezier-curve.
+//
+// Bezier curves against arcs. The curve is
+// parametrized against the arc as the target of a moving point (ArcTarget, detail/arc_target.hpp), in the
 // arc's circle's frame: its distance from a point is the ring's where the point's angle falls
 // on the arc, else the nearer end's. So a minimum of the curve's distance to the arc is an end
 // of the curve, a stationary point of the ring distance (the Bezier-circle candidates:
@@ -12,9 +14,11 @@
 // zero radius its center (Bezier-point's).
 #pragma once
 
-#include "arc.hpp"
-#include "bezier.hpp"
+#include "bezier_circle.hpp"
 #include "bezier_point.hpp"
+#include "detail/arc_span.hpp"
+#include "detail/arc_target.hpp"
+#include "point_arc.hpp"
 #include "query.hpp"
 
 #include <limits>

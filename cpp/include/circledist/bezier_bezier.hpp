@@ -1,3 +1,5 @@
+// Bezier-Bezier (Query<BezierCurve3, BezierCurve3>). Derivation: docs/derivations/bezier_bezier.md.
+//
 // Bezier curves against Bezier curves: the global minimum of |A(s) - B(t)| over s, t in [0, 1]
 // (docs/bezier_bezier.md).
 //
@@ -18,7 +20,7 @@
 
 #include "bezier_point.hpp"
 #include "linear_linear.hpp"
-#include "minimize.hpp"
+#include "detail/minimize.hpp"
 
 #include <algorithm>
 #include <array>

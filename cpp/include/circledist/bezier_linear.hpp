@@ -1,3 +1,5 @@
+// Bezier against a line, ray or segment (Query<BezierCurve3, Line3 | Ray3 | Segment3>). Derivation: docs/derivations/bezier_linear.md#line; docs/derivations/bezier_linear.md#ray-and-segment.
+//
 // Bezier curves against lines, rays and segments: docs/bezier_linear.md.
 //
 // A line: in the frame whose z axis is the line's direction, centered at the curve's control
@@ -17,7 +19,7 @@
 #pragma once
 
 #include "bezier_point.hpp"
-#include "linear.hpp"
+#include "detail/linear.hpp"
 #include "linear_linear.hpp"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// Bezier-point (Query<BezierCurve3, Vec3>). Derivation: docs/derivations/bezier_linear.md#point.
+//
 // Bezier curves (degree 1 to 7, t in [0, 1]) against a point, and the machinery the curve's
 // queries against a line, ray or segment share with it (bezier_linear.hpp): docs/bezier_linear.md.
 //

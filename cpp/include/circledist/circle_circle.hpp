@@ -1,3 +1,5 @@
+// Circle-circle (Query<Circle3, Circle3>). Derivation: docs/derivations/circle_circle.md.
+//
 // Circle against circle (derivation in docs/circle_circle.md). The machinery every query that
 // parametrizes a circle by its angle shares lives in detail/: trigonometric polynomials and the
 // half-angle substitution (trig.hpp), the circle seen from a round's frame and its octic
@@ -6,8 +8,8 @@
 #pragma once
 
 #include "detail/circle_over_round.hpp"
-#include "minimize.hpp"
-#include "planar.hpp"
+#include "detail/minimize.hpp"
+#include "detail/planar.hpp"
 #include "query.hpp"
 
 #include <algorithm>

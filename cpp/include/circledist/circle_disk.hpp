@@ -1,3 +1,5 @@
+// Circle-disk (Query<Circle3, Disk3>). Derivation: docs/derivations/circle_disk.md.
+//
 // Circle against disk: note 001 §4 (details in docs/circle_disk.md). The circle A is written in
 // the disk's local frame, P(t) = O + E1 cos t + E2 sin t with t A's canonical angle, and its
 // angle range is cut where the projection crosses the rim (§4.1). Inside the rim the distance is

@@ -1,3 +1,5 @@
+// Disk-disk (Query<Disk3, Disk3>). Derivation: docs/derivations/disk_disk.md.
+//
 // Disk against disk (docs/disk_disk.md). Zero when the disks intersect, decided in B's local
 // frame: disk A meets B's plane in a chord (A's points at height 0), and the disks intersect
 // exactly when that chord meets disk B, a 1-D interval overlap along the chord. Coplanar disks

@@ -4,7 +4,7 @@
 // targets' (round_target.hpp).
 #pragma once
 
-#include "../minimize.hpp"
+#include "minimize.hpp"
 #include "trig.hpp"
 
 #include <algorithm>

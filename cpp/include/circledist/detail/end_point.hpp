@@ -2,7 +2,7 @@
 // point-circle's or point-disk's closed form, and its closest points.
 #pragma once
 
-#include "../planar.hpp"
+#include "planar.hpp"
 #include "../point_circle.hpp"
 #include "../point_disk.hpp"
 #include "../primitives.hpp"

@@ -4,7 +4,7 @@
 // about 1e3 eps of the answer).
 #pragma once
 
-#include "../linear.hpp"
+#include "linear.hpp"
 #include "double_double.hpp"
 
 #include <array>

@@ -5,8 +5,8 @@
 // is answered from here wherever the direct method applies (line_circle.hpp, line_disk.hpp).
 #pragma once
 
-#include "../linear.hpp"
-#include "../minimize.hpp"
+#include "linear.hpp"
+#include "minimize.hpp"
 #include "../primitives.hpp"
 #include "round_target.hpp"
 

@@ -3,8 +3,8 @@
 // (the polynomials of bezier.hpp and bezier_point.hpp), and the length scale of a curve and a round.
 #pragma once
 
-#include "../minimize.hpp"
-#include "../planar.hpp"
+#include "minimize.hpp"
+#include "planar.hpp"
 #include "../primitives.hpp"
 #include "curve_poly.hpp"
 

@@ -4,8 +4,8 @@
 // ring (note 001 eq. (2) with the simplification of eq. (3); docs/circle_circle.md).
 #pragma once
 
-#include "../minimize.hpp"
-#include "../planar.hpp"
+#include "minimize.hpp"
+#include "planar.hpp"
 #include "trig.hpp"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // point of that line lies against the piece (piece_side, on_piece), and the piece's end points.
 #pragma once
 
-#include "../linear.hpp"
+#include "linear.hpp"
 #include "../primitives.hpp"
 
 namespace circledist {

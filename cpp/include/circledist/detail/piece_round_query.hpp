@@ -3,7 +3,7 @@
 // skeleton PieceRoundQuery, and PieceChoice, what a round's hook hands it.
 #pragma once
 
-#include "../linear.hpp"
+#include "linear.hpp"
 #include "../primitives.hpp"
 #include "../roots.hpp"
 #include "end_point.hpp"

@@ -4,7 +4,7 @@
 // differ only in what they make of these.
 #pragma once
 
-#include "../planar.hpp"
+#include "planar.hpp"
 #include "../primitives.hpp"
 #include "../roots.hpp"
 #include "atan2.hpp"

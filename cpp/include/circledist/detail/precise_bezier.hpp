@@ -2,7 +2,7 @@
 // pieces of a curve far larger than the round it passes (curve_round_base.hpp, solve_pieces).
 #pragma once
 
-#include "../planar.hpp"
+#include "planar.hpp"
 #include "../primitives.hpp"
 #include "double_double.hpp"
 

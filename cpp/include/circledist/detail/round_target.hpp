@@ -6,8 +6,8 @@
 // ring's. All of it is static and resolved at compile time (`if constexpr` on `interior`).
 #pragma once
 
-#include "../minimize.hpp"
-#include "../planar.hpp"
+#include "minimize.hpp"
+#include "planar.hpp"
 #include "atan2.hpp"
 
 #include <algorithm>
