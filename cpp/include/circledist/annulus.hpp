@@ -1,5 +1,6 @@
-// Forwards to point_annulus.hpp, linear_annulus.hpp, circle_annulus.hpp, disk_annulus.hpp, arc_annulus.hpp, bezier_annulus.hpp, annulus_annulus.hpp: the annulus pairs now live there. Kept for one release; include the
-// new headers instead.
+// Forwards to point_annulus.hpp, linear_annulus.hpp, circle_annulus.hpp, disk_annulus.hpp,
+// arc_annulus.hpp, bezier_annulus.hpp, annulus_annulus.hpp: the annulus pairs now live there. Kept
+// for one release; include the new headers instead.
 #pragma once
 
 #include "point_annulus.hpp"

@@ -1,4 +1,5 @@
-// Annulus-annulus (Query<Annulus3, Annulus3>). Derivation: docs/derivations/annulus.md#two-annuli-and-the-false-contacts-of-diskdisk.
+// Annulus-annulus (Query<Annulus3, Annulus3>). Derivation:
+// docs/derivations/annulus.md#two-annuli-and-the-false-contacts-of-diskdisk.
 #pragma once
 
 #include "annulus_reduction.hpp"
@@ -10,8 +11,10 @@
 
 namespace circledist {
 
+namespace detail {
+
 // other ring.
-template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> {
+template <class Real> struct AnnulusAnnulusPair {
   static constexpr bool defined = true;
 
   template <class Roots = DefaultRoots> static Real distance(const Annulus3<Real>& a, const Annulus3<Real>& b) {
@@ -34,7 +37,7 @@ template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> {
       return rim_as_annulus(circledist::closest_points<Roots>(outer_rim(a), b).swapped(), a.outer_radius).swapped();
     if (ka != AnnulusKind::kRing) return degenerate_annulus_result<Real>(ka);
     if (kb != AnnulusKind::kRing) return closest<Roots>(b, a).swapped();
-    // The outer disks first (docs/annulus.md, "Two annuli"): A and B lie in them, so a closest
+    // The outer disks first (docs/derivations/annulus.md, "Two annuli"): A and B lie in them, so a closest
     // pair of the disks with both points in the rings (s >= inner on each) is one of the annuli,
     // and the disks' `unique` is theirs. A contact of the disks in a hole is no contact of the
     // annuli (the false contacts): the rims answer then.
@@ -54,5 +57,9 @@ template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> {
     return best_of(candidates, scale > 0 ? scale : Real(1));
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Annulus3<Real>, Annulus3<Real>> : detail::AnnulusAnnulusPair<Real> {};
 
 }  // namespace circledist

@@ -1,6 +1,7 @@
 // The reductions every annulus pair is answered by (the pair headers point_annulus.hpp ...
 // annulus_annulus.hpp register them): each composes the disk's, the circle's, the arc's and the
-// curve's own queries, so it lives beside the pairs, not in detail/. Derivation: docs/derivations/annulus.md.
+// curve's own queries, so it lives beside the pairs, not in detail/. Derivation:
+// docs/derivations/annulus.md.
 //
 // Annulus: an annulus against a point, line, ray,
 // segment, circle, disk, arc, Bezier curve or annulus, from the disk's, the circle's, the arc's
@@ -8,20 +9,20 @@
 //
 // The annulus A is the outer disk D minus the open hole of its inner circle K. Its distance from
 // a point is the disk's where the point's projection falls in the ring, else the inner circle's
-// (docs/annulus.md, "A point"). Every query here is one of these reductions:
+// (docs/derivations/annulus.md, "A point"). Every query here is one of these reductions:
 //  - a convex shape X (point, line, ray, segment, disk): the distance to X is convex over the
 //    plane, so A's closest point is D's when D's lies in the ring (s >= inner), and otherwise
-//    on K (docs/annulus.md, "Convex shapes"): the disk query, then the inner circle's only where
+//    on K (docs/derivations/annulus.md, "Convex shapes"): the disk query, then the inner circle's only where
 //    the disk's point fell in the hole;
 //  - a circle, an arc or a Bezier curve (not convex): the least of the interior candidates
 //    (circle-disk's or bezier-disk's height candidates, z = 0 or z' = 0, on the arc's angles and
 //    with its ends for an arc, with its ends for a curve, kept where their projection lies in the
 //    ring) and the shape against both rims (circle-circle, arc-circle, bezier-circle)
-//    (docs/annulus.md, "A circle", "An arc", "A Bezier curve");
+//    (docs/derivations/annulus.md, "A circle", "An arc", "A Bezier curve");
 //  - an annulus against an annulus: the outer disks' closest pair where it lies in both rings,
 //    else the least of each rim against the other annulus (the circle reduction), since a
 //    closest pair has a point on a rim, and a common part has its ends on rims
-//    (docs/annulus.md, "Two annuli").
+//    (docs/derivations/annulus.md, "Two annuli").
 // An inner radius of 0 (or less) is the disk, an inner radius equal to the outer one the circle:
 // their own queries answer, to the bit (the annulus's parameter (s, theta) being the disk's, or
 // (R, theta) for the circle's (theta, 0)).
@@ -74,7 +75,7 @@ template <class Real> Real annulus_scale(const Vec3<Real>& other_point, const An
   return s > 0 && std::isfinite(s) ? s : Real(1);
 }
 
-// Convex shapes (docs/annulus.md, "Convex shapes"). The disk's closest pair, kept when its
+// Convex shapes (docs/derivations/annulus.md, "Convex shapes"). The disk's closest pair, kept when its
 // point on the disk lies in the ring (s >= inner: s is the disk's parameter); otherwise the
 // inner circle's, which is then the annulus's. When the disk's closest pairs were a continuum
 // (not unique) reaching from the hole across the inner circle, the inner circle may meet it in one
@@ -110,7 +111,7 @@ template <class Real> Real point_annulus_distance(const Vec3<Real>& p, const Ann
   return PointRingQuery<Real>::distance(p, a.center, a.normal, a.inner_radius, a.outer_radius);
 }
 
-// A circle against a true ring (docs/annulus.md, "A circle"): the candidates and the best. Each
+// A circle against a true ring (docs/derivations/annulus.md, "A circle"): the candidates and the best. Each
 // candidate is a Result (a's side the circle, b's the annulus).
 template <class Real> struct CircleAnnulusCandidates {
   static constexpr int kCapacity = 16;
@@ -128,7 +129,7 @@ template <class Real> struct CircleAnnulusCandidates {
 // The interior candidates: the circle's points where its height over the plane has z = 0 or
 // z' = 0 (and t = 0, pi), circle-disk's height candidates (circle_disk.hpp), kept where their
 // projection lies in the ring; there the annulus distance is |z| to the point below. Returns
-// the verdict of circle-disk's shortcut (docs/annulus.md, "A circle"): the lowest |z| over the
+// the verdict of circle-disk's shortcut (docs/derivations/annulus.md, "A circle"): the lowest |z| over the
 // whole circle is at one of these candidates, and no annulus point is nearer to X(t) than
 // |z(t)|; so when the best kept candidate is that low, it is the distance and the rims need not
 // be solved.
@@ -136,7 +137,7 @@ template <class Real> struct InteriorVerdict {
   Real best = std::numeric_limits<Real>::infinity();
   bool decided = false;
 };
-// The interior candidates kept in the ring, a circle's, an arc's or a curve's (docs/annulus.md,
+// The interior candidates kept in the ring, a circle's, an arc's or a curve's (docs/derivations/annulus.md,
 // "A circle", "A Bezier curve"): each candidate parameter x, its local point `local_at(x)` in the
 // annulus's frame, kept where its projection lies in the ring, at the distance |z| to the point
 // below (`side_a(x, r)` fills the shape's point and parameter); and the verdict (above), the
@@ -167,7 +168,7 @@ InteriorVerdict<Real> interior_in_ring(const Candidates<Real, N>& heights, const
   return verdict;
 }
 
-// An arc (ArcSpan, arc.hpp) takes the candidates on its angles only, and its two ends.
+// An arc (ArcSpan, detail/arc_span.hpp) takes the candidates on its angles only, and its two ends.
 template <class Roots, class Real, class Add>
 InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annulus3<Real>& a, bool with_points,
                                               const Add& add, const ArcSpan<Real>* span = nullptr) {
@@ -214,7 +215,7 @@ Result<Real> best_of(const Candidates& candidates, Real scale) {
 // A circle or an arc against a true ring: the interior candidates and both rims (circle-circle
 // or arc-circle through the front end: the same order distance(circle, circle) takes). An arc
 // (not whole, radius > 0) is the circle on its own angles, with its ends added to the interior
-// candidates (docs/annulus.md, "A circle", "An arc"). distance() skips the rims when the
+// candidates (docs/derivations/annulus.md, "A circle", "An arc"). distance() skips the rims when the
 // interior decides (as circle-disk's distance() does); closest() solves them all, for the pair
 // and for `unique`, and reports the same distance.
 template <class Roots, class Real, class Add>
@@ -226,9 +227,9 @@ InteriorVerdict<Real> ring_interior(const Arc3<Real>& arc, const Annulus3<Real>&
   const ArcSpan<Real> span(arc);
   return circle_annulus_interior<Roots>(arc_circle(arc), a, with_points, add, &span);
 }
-// A Bezier curve (docs/annulus.md, "A Bezier curve"): the stationary points of its height
+// A Bezier curve (docs/derivations/annulus.md, "A Bezier curve"): the stationary points of its height
 // (bezier-disk's interior candidates, refined on the curve: push_refined_curve_height_roots,
-// bezier.hpp, since nothing polishes them here) and its two ends.
+// detail/curve_round_query.hpp, since nothing polishes them here) and its two ends.
 // An empty curve has none (its rims' answers are empty too).
 template <class Roots, class Real, class Add>
 InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b, const Annulus3<Real>& a, bool with_points,
@@ -279,9 +280,7 @@ Result<Real> curve_ring_closest(const Curve<Real>& curve, const Annulus3<Real>& 
   return r;
 }
 
-}  // namespace detail
-
-// A line, ray, segment or disk: convex (docs/annulus.md, "Convex shapes"). distance() needs to
+// A line, ray, segment or disk: convex (docs/derivations/annulus.md, "Convex shapes"). distance() needs to
 // know where the disk's closest point lies, so it runs closest().
 template <class Real, class X> struct ConvexAnnulusQuery {
   static constexpr bool defined = true;
@@ -297,7 +296,7 @@ template <class Real, class X> struct ConvexAnnulusQuery {
   }
 };
 
-// A circle or a Bezier curve (docs/annulus.md, "A circle", "A Bezier curve"): not convex, the
+// A circle or a Bezier curve (docs/derivations/annulus.md, "A circle", "A Bezier curve"): not convex, the
 // interior candidates and both rims.
 template <class Real, class Curve> struct CurveAnnulusQuery {
   static constexpr bool defined = true;
@@ -312,5 +311,7 @@ template <class Real, class Curve> struct CurveAnnulusQuery {
     return detail::curve_ring_closest<Roots>(c, a);
   }
 };
+
+}  // namespace detail
 
 }  // namespace circledist

@@ -12,8 +12,10 @@
 
 namespace circledist {
 
-// An arc (docs/annulus.md, "An arc"): an arc of 2 pi is its circle, a zero radius its center.
-template <class Real> struct Query<Arc3<Real>, Annulus3<Real>> {
+namespace detail {
+
+// An arc (docs/derivations/annulus.md, "An arc"): an arc of 2 pi is its circle, a zero radius its center.
+template <class Real> struct ArcAnnulusPair {
   static constexpr bool defined = true;
   template <class Roots = DefaultRoots> static Real distance(const Arc3<Real>& arc, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
@@ -31,6 +33,14 @@ template <class Real> struct Query<Arc3<Real>, Annulus3<Real>> {
   }
 };
 
-// Two annuli (docs/annulus.md, "Two annuli"): an annulus that is a disk or a circle is answered
+}  // namespace detail
+
+template <class Real> struct Query<Arc3<Real>, Annulus3<Real>> : detail::ArcAnnulusPair<Real> {};
+
+namespace detail {
+
+// Two annuli (docs/derivations/annulus.md, "Two annuli"): an annulus that is a disk or a circle is answered
+
+}  // namespace detail
 
 }  // namespace circledist

@@ -12,10 +12,12 @@
 
 namespace circledist {
 
+namespace detail {
+
 // ---------------------------------------------------------------------------------------------
 // Arc against arc: the smaller parametrized against the other (ArcArcQuery); an arc that is
 // whole is a circle (Query<Circle3, Arc3>), a zero radius a point.
-template <class Real> struct Query<Arc3<Real>, Arc3<Real>> {
+template <class Real> struct ArcArcPair {
   static constexpr bool defined = true;
   using CircleArc = Query<Circle3<Real>, Arc3<Real>>;
 
@@ -41,5 +43,9 @@ template <class Real> struct Query<Arc3<Real>, Arc3<Real>> {
                : ArcArcQuery<Real>::template closest<Roots>(arc_circle(b), ArcSpan<Real>(b), a, true).swapped();
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Arc3<Real>, Arc3<Real>> : detail::ArcArcPair<Real> {};
 
 }  // namespace circledist

@@ -1,4 +1,5 @@
-// Bezier-annulus: CurveAnnulusQuery, annulus_reduction.hpp. Derivation: docs/derivations/annulus.md#a-bezier-curve.
+// Bezier-annulus: CurveAnnulusQuery, annulus_reduction.hpp. Derivation:
+// docs/derivations/annulus.md#a-bezier-curve.
 #pragma once
 
 #include "annulus_reduction.hpp"
@@ -10,6 +11,6 @@
 
 namespace circledist {
 
-template <class Real> struct Query<BezierCurve3<Real>, Annulus3<Real>> : CurveAnnulusQuery<Real, BezierCurve3<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Annulus3<Real>> : detail::CurveAnnulusQuery<Real, BezierCurve3<Real>> {};
 
 }  // namespace circledist

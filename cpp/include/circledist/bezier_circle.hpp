@@ -1,4 +1,5 @@
-// Bezier-circle (Query<BezierCurve3, Circle3>): CurveRoundQuery, detail/curve_round_query.hpp. Derivation: docs/derivations/bezier.md.
+// Bezier-circle (Query<BezierCurve3, Circle3>): CurveRoundQuery, detail/curve_round_query.hpp.
+// Derivation: docs/derivations/bezier.md.
 #pragma once
 
 #include "detail/curve_round_query.hpp"
@@ -10,6 +11,6 @@
 
 namespace circledist {
 
-template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : CurveRoundQuery<Real, RingTarget<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : detail::CurveRoundQuery<Real, detail::RingTarget<Real>> {};
 
 }  // namespace circledist

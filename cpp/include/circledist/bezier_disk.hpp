@@ -1,4 +1,5 @@
-// Bezier-disk (Query<BezierCurve3, Disk3>): CurveRoundQuery, detail/curve_round_query.hpp. Derivation: docs/derivations/bezier.md.
+// Bezier-disk (Query<BezierCurve3, Disk3>): CurveRoundQuery, detail/curve_round_query.hpp.
+// Derivation: docs/derivations/bezier.md.
 #pragma once
 
 #include "detail/curve_round_query.hpp"
@@ -10,6 +11,6 @@
 
 namespace circledist {
 
-template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : CurveRoundQuery<Real, DiskTarget<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : detail::CurveRoundQuery<Real, detail::DiskTarget<Real>> {};
 
 }  // namespace circledist

@@ -1,4 +1,5 @@
-// Circle-annulus: CurveAnnulusQuery, annulus_reduction.hpp. Derivation: docs/derivations/annulus.md#a-circle.
+// Circle-annulus: CurveAnnulusQuery, annulus_reduction.hpp. Derivation:
+// docs/derivations/annulus.md#a-circle.
 #pragma once
 
 #include "annulus_reduction.hpp"
@@ -10,6 +11,6 @@
 
 namespace circledist {
 
-template <class Real> struct Query<Circle3<Real>, Annulus3<Real>> : CurveAnnulusQuery<Real, Circle3<Real>> {};
+template <class Real> struct Query<Circle3<Real>, Annulus3<Real>> : detail::CurveAnnulusQuery<Real, Circle3<Real>> {};
 
 }  // namespace circledist

@@ -1,4 +1,5 @@
-// Circle-arc (Query<Circle3, Arc3>), and the arc parametrized against a round that disk-arc shares. Derivation: docs/derivations/arc.md#a-circle-or-a-disk; docs/derivations/arc.md#an-arc.
+// Circle-arc (Query<Circle3, Arc3>), and the arc parametrized against a round that disk-arc shares.
+// Derivation: docs/derivations/arc.md#a-circle-or-a-disk; docs/derivations/arc.md#an-arc.
 //
 // Arcs. An arc is a circle whose candidates are restricted
 // to its angles, with its two end points added. Against a point: point-circle's closed form
@@ -30,6 +31,8 @@
 #include <limits>
 
 namespace circledist {
+
+namespace detail {
 
 // An arc (or a circle, ArcSpan(Circle3)) against a ring or a disk (Target, round_target.hpp):
 // the arc's circle seen from the round (LocalCircle, CircleOverRound: the distance and jet that
@@ -64,7 +67,7 @@ template <class Real, class Target> struct ArcRoundQuery {
       // circle. Restricted to the arc's angles (as against a ring, below), the octic's roots over a
       // disk parallel to the arc's plane (rounding noise there: the distance is the planes' gap
       // over the disk) came out differently, and the continuum's `unique` with them, wrong in 4
-      // of 6 changed cases (docs/arc.md, "Cost").
+      // of 6 changed cases (docs/derivations/arc.md, "Cost").
       return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, arc_bound(span, h)),
                                   jet, h, c.radius, scale);
     } else {
@@ -81,7 +84,7 @@ template <class Real, class Target> struct ArcRoundQuery {
   }
 
   // Against a disk, distance()'s early answer (circle-disk's height verdict restricted to the
-  // arc; docs/arc.md, "Cost"): the disk's distance is at least the height |z| everywhere, and
+  // arc; docs/derivations/arc.md, "Cost"): the disk's distance is at least the height |z| everywhere, and
   // over the arc |z| is least at an end, at a root of z (z = 0) or at a root of z' (an interior
   // local extremum of z): the arc's points among circle-disk's height candidates (z = 0, z' = 0,
   // t = 0, pi) and its two ends hold the arc's least |z|, `lowest`. Where the least disk
@@ -187,7 +190,6 @@ template <class Real, class Target> struct ArcRoundQuery {
     return r;
   }
 };
-
 
 template <class Real> struct ArcArcQuery {
   // A (span: an arc, or a circle whole) parametrized against arc B.
@@ -315,6 +317,8 @@ template <class Real, class Round3> struct RoundArcQuery {
   }
 };
 
-template <class Real> struct Query<Circle3<Real>, Arc3<Real>> : RoundArcQuery<Real, Circle3<Real>> {};
+}  // namespace detail
+
+template <class Real> struct Query<Circle3<Real>, Arc3<Real>> : detail::RoundArcQuery<Real, Circle3<Real>> {};
 
 }  // namespace circledist

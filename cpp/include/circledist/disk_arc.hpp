@@ -1,4 +1,5 @@
-// Disk-arc (Query<Disk3, Arc3>): RoundArcQuery, circle_arc.hpp. Derivation: docs/derivations/arc.md#a-circle-or-a-disk.
+// Disk-arc (Query<Disk3, Arc3>): RoundArcQuery, circle_arc.hpp. Derivation:
+// docs/derivations/arc.md#a-circle-or-a-disk.
 #pragma once
 
 #include "circle_arc.hpp"
@@ -10,6 +11,6 @@
 
 namespace circledist {
 
-template <class Real> struct Query<Disk3<Real>, Arc3<Real>> : RoundArcQuery<Real, Disk3<Real>> {};
+template <class Real> struct Query<Disk3<Real>, Arc3<Real>> : detail::RoundArcQuery<Real, Disk3<Real>> {};
 
 }  // namespace circledist

@@ -1,4 +1,5 @@
-// Line, ray and segment against an annulus: ConvexAnnulusQuery, annulus_reduction.hpp. Derivation: docs/derivations/annulus.md#convex-shapes-point-line-ray-segment-disk.
+// Line, ray and segment against an annulus: ConvexAnnulusQuery, annulus_reduction.hpp. Derivation:
+// docs/derivations/annulus.md#convex-shapes-point-line-ray-segment-disk.
 #pragma once
 
 #include "annulus_reduction.hpp"
@@ -10,8 +11,8 @@
 
 namespace circledist {
 
-template <class Real> struct Query<Line3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Line3<Real>> {};
-template <class Real> struct Query<Ray3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Annulus3<Real>> : ConvexAnnulusQuery<Real, Segment3<Real>> {};
+template <class Real> struct Query<Line3<Real>, Annulus3<Real>> : detail::ConvexAnnulusQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Annulus3<Real>> : detail::ConvexAnnulusQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Annulus3<Real>> : detail::ConvexAnnulusQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

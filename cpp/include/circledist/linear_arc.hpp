@@ -1,4 +1,5 @@
-// Line, ray and segment against an arc (Query<Line3 | Ray3 | Segment3, Arc3>). Derivation: docs/derivations/arc.md#a-line-ray-or-segment.
+// Line, ray and segment against an arc (Query<Line3 | Ray3 | Segment3, Arc3>). Derivation:
+// docs/derivations/arc.md#a-line-ray-or-segment.
 #pragma once
 
 #include "detail/arc_span.hpp"
@@ -17,9 +18,11 @@
 
 namespace circledist {
 
+namespace detail {
+
 // ---------------------------------------------------------------------------------------------
 // Lines, rays and segments against an arc: the arc parametrized, the piece's exact distance
-// (docs/arc.md, "A line, ray or segment").
+// (docs/derivations/arc.md, "A line, ray or segment").
 
 // The piece seen from the arc's circle's frame (LocalLinear: anchored at its point nearest the
 // center, a unit direction m, tau in [lo, hi]): the distance from a local point (|w x m| for
@@ -53,7 +56,7 @@ template <class Real> struct PieceOverArc {
 // f = |w|^2 - L^2 has f' / 2 = R (a_x sin - a_y cos) - L L', trigonometric of degree 2 (a quartic
 // in tan(theta / 2)); beyond an end (the foot L past lo or hi) the distance is the end's, least at
 // the end's own angle (where it changes form the distance is C^1: a minimum there is a root of
-// f' too, docs/arc.md). Plus t = 0 and pi (the half-angle substitution's blind spot). In units
+// f' too, docs/derivations/arc.md). Plus t = 0 and pi (the half-angle substitution's blind spot). In units
 // of `scale`.
 template <class Roots, class Real, int N>
 void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real scale, Candidates<Real, N>& out) {
@@ -81,7 +84,7 @@ void push_piece_arc_candidates(const LocalLinear<Real>& line, Real radius, Real 
     if (std::isfinite(tau)) push_end(tau);
 }
 
-// The fast path (docs/arc.md, "A line, ray or segment: the fast path"). Over the whole circle the
+// The fast path (docs/derivations/arc.md, "A line, ray or segment: the fast path"). Over the whole circle the
 // squared distance to the full line has at most two local minima, the global one
 // (line_ring_minimum) and, inside the astroid, the other (other_line_minimum). The arc's
 // distance to the piece is least at an arc end, or at an interior angle where it is a local
@@ -185,10 +188,10 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   if (!pl.usable) return false;
   const Linear<Real> linear = as_linear(piece);
   using PointArc = Query<Vec3<Real>, Arc3<Real>>;
-  // Before the root (docs/arc.md, "Before the root"): where the line has one local minimum over
+  // Before the root (docs/derivations/arc.md, "Before the root"): where the line has one local minimum over
   // the ring, an end at which the ring's distance rises along the piece (p0, a ray's origin) or
   // falls toward the piece's end (p1) is the piece's closest point to the circle, as for a circle
-  // (choose_from_line, line_circle.hpp); it is the arc's answer too where that end's nearest ring
+  // (choose_from_line, linear_circle.hpp); it is the arc's answer too where that end's nearest ring
   // point lies on the arc (point-arc's `on_ring`): the arc is no nearer than its circle anywhere,
   // and as near at that end. The answer is the end's point-arc candidate the rest of this path
   // would have found, by the same call.
@@ -394,8 +397,10 @@ template <class Real, class Piece> struct PieceArcQuery {
   }
 };
 
-template <class Real> struct Query<Line3<Real>, Arc3<Real>> : PieceArcQuery<Real, Line3<Real>> {};
-template <class Real> struct Query<Ray3<Real>, Arc3<Real>> : PieceArcQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Arc3<Real>> : PieceArcQuery<Real, Segment3<Real>> {};
+}  // namespace detail
+
+template <class Real> struct Query<Line3<Real>, Arc3<Real>> : detail::PieceArcQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Arc3<Real>> : detail::PieceArcQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Arc3<Real>> : detail::PieceArcQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

@@ -1,10 +1,11 @@
-// Line, ray and segment against a circle (Query<Line3 | Ray3 | Segment3, Circle3>). Derivation: docs/derivations/line_circle.md.
+// Line, ray and segment against a circle (Query<Line3 | Ray3 | Segment3, Circle3>). Derivation:
+// docs/derivations/line_circle.md.
 //
-// Line, ray and segment against a circle (docs/line_circle.md). A full line is answered from the
+// Line, ray and segment against a circle (docs/derivations/line_circle.md). A full line is answered from the
 // circle's side, by one bracketed root (detail/line_ring_minimum.hpp); a ray or segment by its
 // full line's local minima and its end points where they decide (detail/piece_round_query.hpp).
 // Elsewhere, the general path: note 000 §1 (the quartic), restricted to the piece's interval with
-// its end points added for rays and segments (LinearRoundQuery, linear.hpp).
+// its end points added for rays and segments (LinearRoundQuery, detail/linear.hpp).
 #pragma once
 
 #include "detail/end_point.hpp"
@@ -20,12 +21,14 @@
 
 namespace circledist {
 
-// The general path (LinearRoundQuery, linear.hpp) on the ring target.
+namespace detail {
+
+// The general path (LinearRoundQuery, detail/linear.hpp) on the ring target.
 template <class Real, class Piece> using LinearCircleQuery = LinearRoundQuery<Real, Piece, RingTarget<Real>>;
 
 // A full line: its minimum over the ring (line_ring_minimum); the general path where the direct
 // method declines (a zero or huge direction, a zero radius, non-finite input).
-template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
+template <class Real> struct LineCirclePair {
   static constexpr bool defined = true;
   using General = LinearCircleQuery<Real, Line3<Real>>;
 
@@ -41,6 +44,12 @@ template <class Real> struct Query<Line3<Real>, Circle3<Real>> {
     return line_ring_result(line, c, m);
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Line3<Real>, Circle3<Real>> : detail::LineCirclePair<Real> {};
+
+namespace detail {
 
 // Rays and segments. A ray's or segment's distance is the least of its end points' and of the
 // line's local minima that it holds: the global one m (line_ring_minimum) and, inside the
@@ -60,7 +69,7 @@ bool choose_from_line(const Piece& piece, const Circle3<Real>& c, PieceChoice<Re
   // Before the root: where the line has one local minimum (the astroid test), its distance falls
   // toward that minimum on either side, so an end at which it rises along the piece is the
   // closest point of the rest (p0 of a segment, a ray's origin), and so is an end at which it
-  // falls toward the piece's end (p1): those pieces need no root (docs/line_circle.md).
+  // falls toward the piece's end (p1): those pieces need no root (docs/derivations/line_circle.md).
   SecondMinimumTest<Real> second_test;
   const auto before_root = [&](const LineRingMinimum<Real>& line_data) {
     second_test = second_minimum_test(line_data, c.radius);
@@ -136,7 +145,9 @@ Result<Real> line_minimum_result(const PieceChoice<Real>& choice, const Circle3<
 
 template <class Real, class Piece> using PieceCircleQuery = PieceRoundQuery<Real, Piece, RingTarget<Real>>;
 
-template <class Real> struct Query<Ray3<Real>, Circle3<Real>> : PieceCircleQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Circle3<Real>> : PieceCircleQuery<Real, Segment3<Real>> {};
+}  // namespace detail
+
+template <class Real> struct Query<Ray3<Real>, Circle3<Real>> : detail::PieceCircleQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Circle3<Real>> : detail::PieceCircleQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

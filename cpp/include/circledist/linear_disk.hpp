@@ -1,6 +1,7 @@
-// Line, ray and segment against a disk (Query<Line3 | Ray3 | Segment3, Disk3>). Derivation: docs/derivations/line_disk.md.
+// Line, ray and segment against a disk (Query<Line3 | Ray3 | Segment3, Disk3>). Derivation:
+// docs/derivations/line_disk.md.
 //
-// Line, ray and segment against a disk: note 000 §2, completed (derivation in docs/line_disk.md).
+// Line, ray and segment against a disk: note 000 §2, completed (derivation in docs/derivations/line_disk.md).
 // The piece's projection enters and leaves the disk at the rim crossings tau1 <= tau2. Inside
 // [tau1, tau2] the distance is the height |z(tau)|, linear in tau, so its minimum is at tau1,
 // tau2 or the plane crossing. Outside, the disk distance is the circle distance, whose
@@ -20,7 +21,9 @@
 
 namespace circledist {
 
-// The general path (LinearRoundQuery, linear.hpp) on the disk target.
+namespace detail {
+
+// The general path (LinearRoundQuery, detail/linear.hpp) on the disk target.
 template <class Real, class Piece> using LinearDiskQuery = LinearRoundQuery<Real, Piece, DiskTarget<Real>>;
 
 // The disk's rim, the circle line_ring_minimum answers a line against.
@@ -95,8 +98,10 @@ template <class Real> Result<Real> line_minimum_result(const PieceChoice<Real>& 
 
 template <class Real, class Piece> using PieceDiskQuery = PieceRoundQuery<Real, Piece, DiskTarget<Real>>;
 
-template <class Real> struct Query<Line3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Line3<Real>> {};
-template <class Real> struct Query<Ray3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Disk3<Real>> : PieceDiskQuery<Real, Segment3<Real>> {};
+}  // namespace detail
+
+template <class Real> struct Query<Line3<Real>, Disk3<Real>> : detail::PieceDiskQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Disk3<Real>> : detail::PieceDiskQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Disk3<Real>> : detail::PieceDiskQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

@@ -1,4 +1,5 @@
-// Line, ray and segment against each other (Query<Line3 | Ray3 | Segment3, ...>). Derivation: the closed forms below (no derivation page).
+// Line, ray and segment against each other (Query<Line3 | Ray3 | Segment3, ...>). Derivation: the
+// closed forms below (no derivation page).
 //
 // Points, lines, rays and segments against each other: closed forms, no polynomial. They let
 // swept points (balls) and swept segments (capsules) meet each other, and a scene mix every kind.
@@ -25,6 +26,8 @@
 #include <limits>
 
 namespace circledist {
+
+namespace detail {
 
 // The piece with its direction scaled by a power of two (exact) to a largest component in
 // [1, 2), its parameter interval scaled inversely: the same points, P(s) = p + s u for s in the
@@ -218,13 +221,13 @@ template <class Real, class PieceA, class PieceB> struct LinearLinearQuery {
   }
 };
 
-template <class Real> struct Query<Line3<Real>, Line3<Real>> : LinearLinearQuery<Real, Line3<Real>, Line3<Real>> {};
-template <class Real> struct Query<Line3<Real>, Ray3<Real>> : LinearLinearQuery<Real, Line3<Real>, Ray3<Real>> {};
-template <class Real>
-struct Query<Line3<Real>, Segment3<Real>> : LinearLinearQuery<Real, Line3<Real>, Segment3<Real>> {};
-template <class Real> struct Query<Ray3<Real>, Ray3<Real>> : LinearLinearQuery<Real, Ray3<Real>, Ray3<Real>> {};
-template <class Real> struct Query<Ray3<Real>, Segment3<Real>> : LinearLinearQuery<Real, Ray3<Real>, Segment3<Real>> {};
-template <class Real>
-struct Query<Segment3<Real>, Segment3<Real>> : LinearLinearQuery<Real, Segment3<Real>, Segment3<Real>> {};
+}  // namespace detail
+
+template <class Real> struct Query<Line3<Real>, Line3<Real>> : detail::LinearLinearQuery<Real, Line3<Real>, Line3<Real>> {};
+template <class Real> struct Query<Line3<Real>, Ray3<Real>> : detail::LinearLinearQuery<Real, Line3<Real>, Ray3<Real>> {};
+template <class Real> struct Query<Line3<Real>, Segment3<Real>> : detail::LinearLinearQuery<Real, Line3<Real>, Segment3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Ray3<Real>> : detail::LinearLinearQuery<Real, Ray3<Real>, Ray3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Segment3<Real>> : detail::LinearLinearQuery<Real, Ray3<Real>, Segment3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Segment3<Real>> : detail::LinearLinearQuery<Real, Segment3<Real>, Segment3<Real>> {};
 
 }  // namespace circledist

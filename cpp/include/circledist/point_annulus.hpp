@@ -10,8 +10,10 @@
 
 namespace circledist {
 
-// A point: closed form (docs/annulus.md, "A point").
-template <class Real> struct Query<Vec3<Real>, Annulus3<Real>> {
+namespace detail {
+
+// A point: closed form (docs/derivations/annulus.md, "A point").
+template <class Real> struct PointAnnulusPair {
   static constexpr bool defined = true;
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
@@ -24,5 +26,9 @@ template <class Real> struct Query<Vec3<Real>, Annulus3<Real>> {
     return detail::PointRingQuery<Real>::closest(p, a.center, a.normal, a.inner_radius, a.outer_radius);
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Vec3<Real>, Annulus3<Real>> : detail::PointAnnulusPair<Real> {};
 
 }  // namespace circledist

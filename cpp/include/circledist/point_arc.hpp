@@ -12,14 +12,16 @@
 
 namespace circledist {
 
-// Point against arc: closed form (docs/arc.md, "A point"). The distance from P to the circle's
+namespace detail {
+
+// Point against arc: closed form (docs/derivations/arc.md, "A point"). The distance from P to the circle's
 // point at angle theta is sqrt(z^2 + rho^2 + R^2 - 2 R rho cos(theta - phi)), phi the angle of P's
 // projection: least at phi and rising on both sides to its greatest at phi + pi. So over the arc
 // it is least at phi when phi lies on the arc (point-circle's answer), otherwise at the end
 // nearer in angle. On the axis (rho = 0) every arc point is as close.
 // The angle is taken from the arc's own start direction u' (the start's in-plane part), not from
-// the canonical frame: no Frame, no theta0, one atan2 (docs/arc.md, "A point": the cost).
-template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
+// the canonical frame: no Frame, no theta0, one atan2 (docs/derivations/arc.md, "A point": the cost).
+template <class Real> struct PointArcPair {
   static constexpr bool defined = true;
   using Whole = detail::PointRoundQuery<Real, false>;
 
@@ -39,7 +41,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
   // formed) and closest(): the same distance to the bit. An arc that is not whole; `on_ring`
   // says whether the answer is the ring's (point-circle's distance: the point's angle on the arc,
   // or the point on the axis), which a piece's end answered before the root needs
-  // (piece_arc_fast; docs/arc.md, "Before the root").
+  // (piece_arc_fast; docs/derivations/arc.md, "Before the root").
   template <bool Points>
   CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
     constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
@@ -139,7 +141,7 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
   }
 
  private:
-  // distance()'s sector test without the atan2 (docs/arc.md, "Cost"): the answer's place (0
+  // distance()'s sector test without the atan2 (docs/derivations/arc.md, "Cost"): the answer's place (0
   // the ring, 1 the start, 2 the far end, 3 both ends, as solve() derives them from t) where the
   // octant of (x, y) decides it, else -1 (then t decides). The octant comes from exact
   // comparisons of x and y, the very numbers atan2 takes: t = atan2(y, x), moved into [0, 2 pi),
@@ -181,5 +183,9 @@ template <class Real> struct Query<Vec3<Real>, Arc3<Real>> {
     return solve<true>(p, a, on_ring);
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Vec3<Real>, Arc3<Real>> : detail::PointArcPair<Real> {};
 
 }  // namespace circledist

@@ -1,4 +1,5 @@
-// Point against a line, ray or segment (Query<Vec3, Line3 | Ray3 | Segment3>). Derivation: the closed form below (no derivation page; the scaled pieces are linear_linear.hpp's).
+// Point against a line, ray or segment (Query<Vec3, Line3 | Ray3 | Segment3>). Derivation: the
+// closed form below (no derivation page; the scaled pieces are linear_linear.hpp's).
 #pragma once
 
 #include "linear_linear.hpp"
@@ -9,6 +10,8 @@
 #include <limits>
 
 namespace circledist {
+
+namespace detail {
 
 // A point against a line, ray or segment: its projection, clamped to the interval.
 template <class Real, class Piece> struct PointLinearQuery {
@@ -76,8 +79,10 @@ template <class Real, class Piece> struct PointLinearQuery {
   }
 };
 
-template <class Real> struct Query<Vec3<Real>, Line3<Real>> : PointLinearQuery<Real, Line3<Real>> {};
-template <class Real> struct Query<Vec3<Real>, Ray3<Real>> : PointLinearQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Vec3<Real>, Segment3<Real>> : PointLinearQuery<Real, Segment3<Real>> {};
+}  // namespace detail
+
+template <class Real> struct Query<Vec3<Real>, Line3<Real>> : detail::PointLinearQuery<Real, Line3<Real>> {};
+template <class Real> struct Query<Vec3<Real>, Ray3<Real>> : detail::PointLinearQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<Vec3<Real>, Segment3<Real>> : detail::PointLinearQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

@@ -9,7 +9,9 @@
 
 namespace circledist {
 
-template <class Real> struct Query<Vec3<Real>, Vec3<Real>> {
+namespace detail {
+
+template <class Real> struct PointPointPair {
   static constexpr bool defined = true;
   template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Vec3<Real>& q) {
     return (q - p).norm();
@@ -22,5 +24,9 @@ template <class Real> struct Query<Vec3<Real>, Vec3<Real>> {
     return r;
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Vec3<Real>, Vec3<Real>> : detail::PointPointPair<Real> {};
 
 }  // namespace circledist

@@ -7,9 +7,7 @@
 #include <cmath>
 #include <limits>
 
-namespace circledist {
-
-namespace detail {
+namespace circledist::detail {
 
 template <class Real> Disk3<Real> annulus_disk(const Annulus3<Real>& a) { return {a.center, a.normal, a.outer_radius}; }
 template <class Real> Circle3<Real> outer_rim(const Annulus3<Real>& a) { return {a.center, a.normal, a.outer_radius}; }
@@ -45,6 +43,4 @@ template <class Real> Result<Real> rim_as_annulus(Result<Real> r, Real radius) {
 // The front end's answer of x against the annulus's disk or circle (its kinds kDisk, kCircle,
 // kEmpty, kNaN), b's side in the annulus's parameter. (The front end orders two disks as
 
-}  // namespace detail
-
-}  // namespace circledist
+}  // namespace circledist::detail

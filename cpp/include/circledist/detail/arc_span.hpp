@@ -15,9 +15,8 @@
 #include <cmath>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
-namespace detail {
 // The octant of (x, y), from exact comparisons of the two numbers atan2(y, x) takes: that angle,
 // moved into [0, 2 pi) as the arc's sector tests move it (t < 0: t + 2 pi), lies in
 // [k pi/4, (k + 1) pi/4] up to atan2's error (2.5 ulp in double, detail/atan2.hpp; std::atan2's
@@ -25,7 +24,7 @@ namespace detail {
 // octant widened by the slack. y < 0 is the lower half; y = -0 the upper (atan2(-0, x) is -0 or
 // -pi, t then 0 or pi). False for a NaN or infinite x or y. A comparison of t with a threshold
 // is decided by the octant where [lo, hi], widened by another slack for the threshold's own
-// rounding, lies wholly on one side: there t answers the same (docs/arc.md, "Cost").
+// rounding, lies wholly on one side: there t answers the same (docs/derivations/arc.md, "Cost").
 template <class Real> constexpr Real octant_slack() { return 128 * std::numeric_limits<Real>::epsilon() * 2 * pi_v<Real>(); }
 template <class Real> CIRCLEDIST_INLINE bool octant_bounds(Real x, Real y, Real& lo, Real& hi) {
   if (!(std::abs(x) + std::abs(y) < std::numeric_limits<Real>::infinity())) return false;  // NaN too
@@ -37,7 +36,6 @@ template <class Real> CIRCLEDIST_INLINE bool octant_bounds(Real x, Real y, Real&
   hi = (k + 1) * quarter + slack;
   return true;
 }
-}  // namespace detail
 
 // The arc's circle (the same fields), and whether the arc is all of it (angle >= 2 pi).
 template <class Real> Circle3<Real> arc_circle(const Arc3<Real>& a) { return {a.center, a.normal, a.radius}; }
@@ -46,7 +44,7 @@ template <class Real> bool whole_arc(const Arc3<Real>& a) { return a.angle >= 2 
 // An arc's interval in its circle's canonical angle (primitives.hpp, Frame: the angle every
 // circle query parametrizes by): the arc's t is theta - theta0, theta0 the canonical angle of u,
 // the start's projection (u = cos theta0 U + sin theta0 V, so v = N x u = cos theta0 V -
-// sin theta0 U and the arc's point at t is the circle's at theta0 + t). docs/arc.md, "The arc".
+// sin theta0 U and the arc's point at t is the circle's at theta0 + t). docs/derivations/arc.md, "The arc".
 template <class Real> struct ArcSpan {
   Frame<Real> frame;
   Real theta0 = 0, angle;
@@ -80,7 +78,7 @@ template <class Real> struct ArcSpan {
   // The arc's angles, widened by 2^-20 rad at each end, as intervals of u = tan(theta / 2) (the
   // octic's variable): one, or two where the arc passes theta = pi (u = +-infinity); everywhere
   // for an arc within 2^-19 of the whole turn. Roots in the widening are dropped by the exact
-  // offset test of polish_on_arc, as before (docs/arc.md, "Cost").
+  // offset test of polish_on_arc, as before (docs/derivations/arc.md, "Cost").
   Intervals<Real> half_angle_range() const {
     const Real pi = pi_v<Real>(), margin = Real(1) / (1 << 20);
     Real a = theta0 - margin;
@@ -122,7 +120,7 @@ template <class Real> Result<Real> as_arc_result(Result<Real> r, const ArcSpan<R
 }
 
 // ---------------------------------------------------------------------------------------------
-// The arc parametrized against another shape (docs/arc.md, "The arc parametrized").
+// The arc parametrized against another shape (docs/derivations/arc.md, "The arc parametrized").
 
 // Room for every query's candidates: the circle's (24 at most), two end angles, and the arc's
 // two ends.
@@ -134,7 +132,7 @@ template <class Real> using ArcMinima = Minima<Real, kArcCapacity>;
 // apart (a whole circle: eight, as circle-circle samples it): a distance the arc reaches, the
 // bound its circle's octic is searched under (ring_search_intervals; the tighter it is, the
 // fewer intervals searched). The whole circle's own samples (sampled_distances) may lie off the
-// arc. Against a disk (ArcRoundQuery). docs/arc.md, "Cost".
+// arc. Against a disk (ArcRoundQuery). docs/derivations/arc.md, "Cost".
 template <class Real, class H> Real arc_bound(const ArcSpan<Real>& span, const H& h) {
   const int pieces = std::min(8, std::max(1, int(std::ceil(span.angle * (4 / pi_v<Real>())))));
   Real best = std::numeric_limits<Real>::infinity();
@@ -155,7 +153,7 @@ template <class Real, class H> auto with_end_values(const ArcSpan<Real>& span, c
 // (sampled_squared_distances: exact cosines and sines), over the samples the arc holds. Ends and
 // samples are at most pi/4 apart along the arc, as the whole circle's eight are; the samples cost
 // no sine or cosine, and against a ring they are the ones the circle query takes anyway.
-// The whole circle's best sample may lie off the arc. docs/arc.md, "Cost".
+// The whole circle's best sample may lie off the arc. docs/derivations/arc.md, "Cost".
 template <class Real, class H, class Sample> Real arc_bound(const ArcSpan<Real>& span, const H& h, const Sample& sample) {
   Real best = std::min(h(span.lo()), h(span.hi()));
   for (int i = 0; i < 8; ++i)
@@ -169,7 +167,7 @@ template <class Real, class H, class Sample> Real arc_bound(const ArcSpan<Real>&
 // minimum on an interval can sit at an end). No samples of the arc's own: where the circle's
 // roots say nothing (a circle nearly coincident with the other round, whose octic is rounding
 // noise) the circle's candidates already carry circle-circle's eight samples, and those on the
-// arc with its ends start every basin the arc holds (docs/arc.md, "Why no samples").
+// arc with its ends start every basin the arc holds (docs/derivations/arc.md, "Why no samples").
 template <class Roots, class Real, int N, class J, class H>
 ArcMinima<Real> polish_on_arc(const ArcSpan<Real>& span, const Candidates<Real, N>& candidates, const J& jet,
                               const H& h, Real radius, Real scale) {
@@ -202,4 +200,4 @@ void add_ends_for_ties(ArcMinima<Real>& minima, const ArcSpan<Real>& span, const
     if (minima.count < kArcCapacity) minima.item[minima.count++] = Minimum<Real>{end, distance_at(end)};
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // Arc B as the target of a moving point, in B's round frame (center at the origin, normal
 // along z): its distance is point-arc's (above), the ring's where the point's angle falls on the
@@ -22,7 +22,7 @@ namespace circledist {
 // all its angles) and its candidates are circle-circle's against B's ring and B's ends' own
 // stationary angles on A. (Where A's point crosses from the ring's form to an end's, the distance
 // is C^1, both forms having the gradient (P - E) / |P - E|: a minimum there is a root of the ring's
-// octic too, docs/arc.md.)
+// octic too, docs/derivations/arc.md.)
 template <class Real> struct ArcTarget {
   ArcSpan<Real> span;
   Real radius;
@@ -100,4 +100,4 @@ template <class Real, int N> void push_nearest_angle(const LocalCircle<Real>& c,
   if (x != 0 || y != 0) out.push(std::atan2(y, x));
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -1,13 +1,12 @@
-// A Bezier curve (degree 1 to 7, t in [0, 1]) against a disk or a circle, CurveRoundQuery: note 001 §3 with
-// polynomial curves. In the round's local frame (center subtracted from the control points
-// first, exact for translated scenes) the curve is converted to the power basis in w = 2t - 1,
-// the variable whose roots of interest lie in [-1, 1], where the power basis is best
-// conditioned. Against a disk, [0, 1] is cut where x^2 + y^2 = r^2 (degree 2n); inside pieces
-// minimize |z| (z = 0 or z' = 0, degrees n and n-1); outside pieces use note 001 eq. (2)
-// squared, degree 6n - 2 (28 for a quintic). Against a circle only the last equation is needed.
-// Squaring adds extraneous roots; they are harmless because every candidate is judged (and
-// polished) on the exact point-round distance, never on the polynomial.
-// Derivation: docs/derivations/bezier.md.
+// A Bezier curve (degree 1 to 7, t in [0, 1]) against a disk or a circle, CurveRoundQuery: note 001
+// §3 with polynomial curves. In the round's local frame (center subtracted from the control points
+// first, exact for translated scenes) the curve is converted to the power basis in w = 2t - 1, the
+// variable whose roots of interest lie in [-1, 1], where the power basis is best conditioned.
+// Against a disk, [0, 1] is cut where x^2 + y^2 = r^2 (degree 2n); inside pieces minimize |z| (z =
+// 0 or z' = 0, degrees n and n-1); outside pieces use note 001 eq. (2) squared, degree 6n - 2 (28
+// for a quintic). Against a circle only the last equation is needed. Squaring adds extraneous
+// roots; they are harmless because every candidate is judged (and polished) on the exact
+// point-round distance, never on the polynomial. Derivation: docs/derivations/bezier.md.
 #pragma once
 
 #include "curve_roots.hpp"
@@ -15,8 +14,7 @@
 
 #include <limits>
 
-namespace circledist {
-
+namespace circledist::detail {
 
 // Note 001 eq. (2) squared, in w: (P.P')^2 (x^2 + y^2) - R^2 (x x' + y y')^2 = 0, degree 6n - 2.
 // Both sides carry P' twice, so d/dw in place of d/dt changes nothing.
@@ -32,7 +30,7 @@ void push_curve_ring_roots(const LocalBezier<Real>& c, Real radius, Real scale, 
 
 // Where the height over the round's plane has z z' = 0 (degrees n and n - 1): the stationary
 // points of |z|, a disk's inside pieces (note 001 §3), a ring's curve along its axis (below) and
-// an annulus's interior candidates (annulus.hpp, docs/annulus.md "A Bezier curve").
+// an annulus's interior candidates (annulus_reduction.hpp, docs/derivations/annulus.md "A Bezier curve").
 template <class Roots, class Real, int N>
 void push_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<Real, N>& out) {
   if (c.n < 1) return;
@@ -42,7 +40,7 @@ void push_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<
 }
 
 // The same candidates, each refined on the curve itself (an annulus's interior candidates,
-// annulus.hpp), where no polish on the exact distance follows: Newton steps on the height z
+// annulus_reduction.hpp), where no polish on the exact distance follows: Newton steps on the height z
 // (de Casteljau) from each root of z, on its slope z' from each root of z', clamped to [0, 1]
 // and kept only while they lower |z| or |z'|. The eigenvalue policies' roots of a curve whose
 // height is nearly of lower degree (a degree-elevated arch: its high coefficients rounding noise,
@@ -157,4 +155,4 @@ template <class Real, class Target> struct CurveRoundQuery : CurveRoundBase<Real
   }
 };
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -1,5 +1,5 @@
 // Lines, rays and segments as one "linear piece" origin + t * direction, t in [lo, hi], the
-// machinery shared by every linear-vs-round query (line_circle.hpp, line_disk.hpp), and their
+// machinery shared by every linear-vs-round query (linear_circle.hpp, linear_disk.hpp), and their
 // general path, LinearRoundQuery, written once for the ring and the disk target
 // (detail/round_target.hpp).
 #pragma once
@@ -12,7 +12,7 @@
 #include <cmath>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 template <class Real> struct Linear {
   Vec3<Real> origin, direction;
@@ -296,7 +296,7 @@ template <class Real> void push_rim_crossings(const LocalLinear<Real>& line, Rea
 
 // Line, ray and segment against a ring or a disk, on the general path: note 000 §1's quartic
 // (the ring's stationary points), the exact candidates and, for a disk, the rim crossings
-// (note 000 §2, docs/line_disk.md), judged by the target's exact distance.
+// (note 000 §2, docs/derivations/line_disk.md), judged by the target's exact distance.
 template <class Real, class Piece, class Target> struct LinearRoundQuery {
   static constexpr bool defined = true;
   using Shape = typename Target::Shape;
@@ -327,4 +327,4 @@ template <class Real, class Piece, class Target> struct LinearRoundQuery {
   }
 };
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 template <class Real> struct Minimum {
   Real x = 0;
@@ -250,4 +250,4 @@ bool another_closest_pair(const Minima<Real, N>& minima, Real scale, const At& a
   return false;
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

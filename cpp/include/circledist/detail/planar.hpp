@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace circledist {
+namespace circledist::detail {
 
 template <class Real> Real length2d(Real x, Real y) { return std::sqrt(x * x + y * y); }
 
@@ -23,4 +23,4 @@ template <class Real> struct Round {
   Vec3<Real> world(const Vec3<Real>& local_point) const { return center + frame.to_world(local_point); }
 };
 
-}  // namespace circledist
+}  // namespace circledist::detail
