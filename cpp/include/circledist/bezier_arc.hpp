@@ -1,27 +1,32 @@
-// Bezier curves against arcs (issue 19; derivation in docs/arc.md, "A Bezier curve"). The curve is
-// parametrized against the arc as the target of a moving point (ArcTarget, arc.hpp), in the
-// arc's circle's frame: its distance from a point is the ring's where the point's angle falls
-// on the arc, else the nearer end's. So a minimum of the curve's distance to the arc is an end
-// of the curve, a stationary point of the ring distance (the Bezier-circle candidates:
-// note 001 eq. (2) squared and z z' = 0, bezier.hpp), or a stationary point of the distance to
-// one of the arc's ends E ((q - E).q' = 0, degree 2n - 1, bezier_point.hpp); where the two forms
-// meet the distance is C^1 (both have the gradient (P - E) / |P - E|), so a minimum there is a
-// root of the ring's equation too. Every candidate is polished on the exact arc distance, and the
-// far-reaching curve is cut into pieces by the curves' branch and bound (CurveRoundBase), as
-// against a circle. An arc of angle 2 pi is its circle (Bezier-circle's answer, to the bit), a
-// zero radius its center (Bezier-point's).
+// Bezier-arc (Query<BezierCurve3, Arc3>). Derivation: docs/derivations/arc.md#a-bezier-curve.
+//
+// Bezier curves against arcs. The curve is parametrized against the arc as the target of a moving
+// point (ArcTarget, detail/arc_target.hpp), in the arc's circle's frame: its distance from a point
+// is the ring's where the point's angle falls on the arc, else the nearer end's. So a minimum of
+// the curve's distance to the arc is an end of the curve, a stationary point of the ring distance
+// (the Bezier-circle candidates: note 001 eq. (2) squared and z z' = 0, detail/curve_round_query.hpp), or a
+// stationary point of the distance to one of the arc's ends E ((q - E).q' = 0, degree 2n - 1,
+// bezier_point.hpp); where the two forms meet the distance is C^1 (both have the gradient (P - E) /
+// |P - E|), so a minimum there is a root of the ring's equation too. Every candidate is polished on
+// the exact arc distance, and the far-reaching curve is cut into pieces by the curves' branch and
+// bound (CurveRoundBase), as against a circle. An arc of angle 2 pi is its circle (Bezier-circle's
+// answer, to the bit), a zero radius its center (Bezier-point's).
 #pragma once
 
-#include "arc.hpp"
-#include "bezier.hpp"
+#include "bezier_circle.hpp"
 #include "bezier_point.hpp"
+#include "detail/arc_span.hpp"
+#include "detail/arc_target.hpp"
+#include "point_arc.hpp"
 #include "query.hpp"
 
 #include <limits>
 
 namespace circledist {
 
-// The arc's exact distance from a local point and its square's jet along a curve (docs/arc.md,
+namespace detail {
+
+// The arc's exact distance from a local point and its square's jet along a curve (docs/derivations/arc.md,
 // "A Bezier curve"): the ring's form where the point's angle lies on the arc, else the nearer
 // end's (point_jet).
 template <class Real> Real arc_target_distance(const ArcTarget<Real>& target, const Vec3<Real>& p) {
@@ -34,7 +39,7 @@ Jet<Real> arc_target_jet(const ArcTarget<Real>& target, const Vec3<Real>& p, con
   return e < 0 ? RingTarget<Real>::jet(p, p1, p2, target.radius) : point_jet(p, p1, p2, target.end[e]);
 }
 
-template <class Real> struct Query<BezierCurve3<Real>, Arc3<Real>> : CurveRoundBase<Real> {
+template <class Real> struct BezierArcPair : CurveRoundBase<Real> {
   static constexpr bool defined = true;
   using Base = CurveRoundBase<Real>;
   using CurveCircle = Query<BezierCurve3<Real>, Circle3<Real>>;
@@ -91,5 +96,9 @@ template <class Real> struct Query<BezierCurve3<Real>, Arc3<Real>> : CurveRoundB
         [&](const Vec3<Real>& q) { return target.param(q); });
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<BezierCurve3<Real>, Arc3<Real>> : detail::BezierArcPair<Real> {};
 
 }  // namespace circledist

@@ -1,5 +1,7 @@
+// Bezier-Bezier (Query<BezierCurve3, BezierCurve3>). Derivation: docs/derivations/bezier_bezier.md.
+//
 // Bezier curves against Bezier curves: the global minimum of |A(s) - B(t)| over s, t in [0, 1]
-// (docs/bezier_bezier.md).
+// (docs/derivations/bezier_bezier.md).
 //
 // A closest pair either has s or t at an end of its interval, or is a stationary point of the
 // squared distance F(s, t) = |A(s) - B(t)|^2 inside the square. The four edges (A(0), A(1)
@@ -18,7 +20,8 @@
 
 #include "bezier_point.hpp"
 #include "linear_linear.hpp"
-#include "minimize.hpp"
+#include "query.hpp"
+#include "detail/minimize.hpp"
 
 #include <algorithm>
 #include <array>
@@ -27,6 +30,8 @@
 #include <vector>
 
 namespace circledist {
+
+namespace detail {
 
 template <class Real> struct CurvePairSolver {
   using Points = std::array<Vec3<Real>, kMaxBezierDegree + 1>;
@@ -216,7 +221,7 @@ template <class Real> struct CurvePairSolver {
     return t;
   }
 
-  // §4: the valley's lowest point: Brent's minimization (minimize.hpp) of g(s) = min over t of
+  // §4: the valley's lowest point: Brent's minimization (detail/minimize.hpp) of g(s) = min over t of
   // F(s, t) over [s_lo, s_hi] from s, each g by nearest_t from the last t; (s, t) and f move
   // only where it finds a lower F.
   static void valley_minimum(const LocalBezier<Real>& ca, const LocalBezier<Real>& cb, Real& s, Real& t, Real& f,
@@ -323,7 +328,7 @@ template <class Real> struct CurvePairSolver {
 
 // A curve against a curve: the edges (§2), the interior (§3-§4), the smallest candidate and its
 // `unique` (§5). Degree 0 curves are points: the Bezier-point query answers them.
-template <class Real> struct Query<BezierCurve3<Real>, BezierCurve3<Real>> {
+template <class Real> struct BezierBezierPair {
   static constexpr bool defined = true;
   using Solver = CurvePairSolver<Real>;
   using Candidate = typename Solver::Candidate;
@@ -407,5 +412,9 @@ template <class Real> struct Query<BezierCurve3<Real>, BezierCurve3<Real>> {
     return closest<Roots>(a, b).distance;
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<BezierCurve3<Real>, BezierCurve3<Real>> : detail::BezierBezierPair<Real> {};
 
 }  // namespace circledist

@@ -1,4 +1,7 @@
-// Bezier curves against lines, rays and segments: docs/bezier_linear.md.
+// Bezier against a line, ray or segment (Query<BezierCurve3, Line3 | Ray3 | Segment3>). Derivation:
+// docs/derivations/bezier_linear.md#line; docs/derivations/bezier_linear.md#ray-and-segment.
+//
+// Bezier curves against lines, rays and segments: docs/derivations/bezier_linear.md.
 //
 // A line: in the frame whose z axis is the line's direction, centered at the curve's control
 // point nearest the line (the control points' differences from it exact in the pieces,
@@ -17,8 +20,9 @@
 #pragma once
 
 #include "bezier_point.hpp"
-#include "linear.hpp"
+#include "detail/linear.hpp"
 #include "linear_linear.hpp"
+#include "query.hpp"
 
 #include <algorithm>
 #include <array>
@@ -27,9 +31,11 @@
 
 namespace circledist {
 
+namespace detail {
+
 // The curve in the frame of a line (the piece's supporting line, direction nonzero): `round`'s
 // center is the control point nearest the line, its normal the line's direction; `line` the
-// line there (anchor: its point nearest the center, accurate relative to its length, linear.hpp);
+// line there (anchor: its point nearest the center, accurate relative to its length, detail/linear.hpp);
 // `target` the line as bezier_point.hpp's AxisTarget (the anchor's trace on z = 0).
 template <class Real> struct CurveLineFrame {
   Round<Real> round;
@@ -60,13 +66,13 @@ template <class Real> struct CurveLineFrame {
     scale = std::max(bezier_round_scale(c, round.radius), std::sqrt(line.anchor.squaredNorm()));
   }
 
-  // The foot on the line of a local point: its tau (linear.hpp), and its world point.
+  // The foot on the line of a local point: its tau (detail/linear.hpp), and its world point.
   Real tau_of(const Vec3<Real>& local) const { return (local - line.anchor).dot(line.dir); }
   Vec3<Real> foot(Real tau) const { return round.center + (line.anchor_world + tau * line.dir_world); }
 };
 
 // A curve against a whole line.
-template <class Real> struct Query<BezierCurve3<Real>, Line3<Real>> {
+template <class Real> struct BezierLinePair {
   static constexpr bool defined = true;
   using Solver = CurveAxisSolver<Real>;
 
@@ -94,7 +100,12 @@ template <class Real> struct Query<BezierCurve3<Real>, Line3<Real>> {
   }
 };
 
+}  // namespace detail
+
+template <class Real> struct Query<BezierCurve3<Real>, Line3<Real>> : detail::BezierLinePair<Real> {};
+
 namespace detail {
+
 // A ray or a segment moved by -p (its points only: the ray's direction stays).
 template <class Real> Ray3<Real> piece_moved_by(const Ray3<Real>& r, const Vec3<Real>& p) {
   return {r.origin - p, r.direction};
@@ -102,7 +113,6 @@ template <class Real> Ray3<Real> piece_moved_by(const Ray3<Real>& r, const Vec3<
 template <class Real> Segment3<Real> piece_moved_by(const Segment3<Real>& s, const Vec3<Real>& p) {
   return {s.p0 - p, s.p1 - p};
 }
-}  // namespace detail
 
 // A curve against a ray or a segment: the candidates of the header comment.
 template <class Real, class Piece> struct CurvePieceQuery {
@@ -213,7 +223,9 @@ template <class Real, class Piece> struct CurvePieceQuery {
   }
 };
 
-template <class Real> struct Query<BezierCurve3<Real>, Ray3<Real>> : CurvePieceQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<BezierCurve3<Real>, Segment3<Real>> : CurvePieceQuery<Real, Segment3<Real>> {};
+}  // namespace detail
+
+template <class Real> struct Query<BezierCurve3<Real>, Ray3<Real>> : detail::CurvePieceQuery<Real, Ray3<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Segment3<Real>> : detail::CurvePieceQuery<Real, Segment3<Real>> {};
 
 }  // namespace circledist

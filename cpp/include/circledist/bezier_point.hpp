@@ -1,5 +1,7 @@
+// Bezier-point (Query<BezierCurve3, Vec3>). Derivation: docs/derivations/bezier_linear.md#point.
+//
 // Bezier curves (degree 1 to 7, t in [0, 1]) against a point, and the machinery the curve's
-// queries against a line, ray or segment share with it (bezier_linear.hpp): docs/bezier_linear.md.
+// queries against a line, ray or segment share with it (bezier_linear.hpp): docs/derivations/bezier_linear.md.
 //
 // Against a point (the local origin, the point subtracted from the control points first) the
 // squared distance |q(t)|^2 is a polynomial of degree 2n; its stationary points are the roots of
@@ -8,7 +10,7 @@
 // projected onto the plane z = 0 and moved so that the line passes through the origin: the
 // distance to the line is the projected curve's distance to the origin, the same equation.
 // Candidates: t = 0, t = 1 and the roots in [0, 1], each polished on the exact distance
-// (minimize.hpp); the smallest wins.
+// (detail/minimize.hpp); the smallest wins.
 //
 // A curve far larger than its distance to the target (one control point 1e10 away, the curve
 // passing 1e-21 from the point at t = 5e-11) is cut into pieces by the curves' branch and bound
@@ -26,6 +28,8 @@
 #include <limits>
 
 namespace circledist {
+
+namespace detail {
 
 // The local origin as the target of the curves' machinery (LocalBezier::jet): the
 // squared distance |P|^2 and its derivatives 2 P.P', 2 (|P'|^2 + P.P'').
@@ -74,7 +78,7 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   using Base = CurveRoundBase<Real>;
   using Found = typename Base::Found;
 
-  // The size the branch and bound gives the target (a round's radius in bezier.hpp). A curve is cut
+  // The size the branch and bound gives the target (a round's radius in detail/curve_round_query.hpp). A curve is cut
   // into pieces only when it reaches far beyond its end points (2^20 times farther than they lie
   // from each other and from the target: a control point 1e10 away, the curve back next to the
   // target): it is then halved down to pieces of that size next to the target, where the whole
@@ -131,7 +135,7 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
     world = where.valid ? round.world(local) : b.at(t);
   }
 
-  // Whether the minima hold another closest pair (minimize.hpp's another_closest_pair).
+  // Whether the minima hold another closest pair (detail/minimize.hpp's another_closest_pair).
   template <int N>
   static bool tied(const Minima<Real, N>& minima, const LocalBezier<Real>& c, const AxisTarget<Real>& target,
                    const Vec3<Real>& pa, Real scale) {
@@ -143,7 +147,7 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
 
 // A curve against a point: the point is the local origin (Round centered there, the frame of
 // the z axis: a permutation, exact).
-template <class Real> struct Query<BezierCurve3<Real>, Vec3<Real>> {
+template <class Real> struct BezierPointPair {
   static constexpr bool defined = true;
   using Solver = CurveAxisSolver<Real>;
 
@@ -181,5 +185,9 @@ template <class Real> struct Query<BezierCurve3<Real>, Vec3<Real>> {
     return r;
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<BezierCurve3<Real>, Vec3<Real>> : detail::BezierPointPair<Real> {};
 
 }  // namespace circledist

@@ -46,7 +46,7 @@ template <class Real> Ball<Real> bounding_ball(const Segment3<Real>& s) {
   return {(s.p0 + s.p1) / 2, (s.p1 - s.p0).norm() / 2};
 }
 // A circle or disk (any shape with a target policy, detail/round_target.hpp).
-template <class R, class = target_t<R>> Ball<scalar_t<R>> bounding_ball(const R& round) {
+template <class R, class = detail::target_t<R>> Ball<scalar_t<R>> bounding_ball(const R& round) {
   return {round.center, round.radius};
 }
 // The curve lies in its control points' convex hull, so in the ball around their box's center.
@@ -59,16 +59,16 @@ template <class Real> Ball<Real> bounding_ball(const BezierCurve3<Real>& b) {
   }
   return out;
 }
-// An arc (docs/arc.md): up to a half turn it lies in the ball on its chord (every point of the
+// An arc (docs/derivations/arc.md): up to a half turn it lies in the ball on its chord (every point of the
 // arc sees the chord at an inscribed angle of at least 90 degrees), otherwise in its circle's.
 template <class Real> Ball<Real> bounding_ball(const Arc3<Real>& a) {
   if (!(a.angle <= pi_v<Real>())) return {a.center, a.radius};
-  const ArcSpan<Real> span(a);
+  const detail::ArcSpan<Real> span(a);
   const Vec3<Real> p0 = span.world(a.center, a.radius, span.lo()), p1 = span.world(a.center, a.radius, span.hi());
   // Half the chord, and an ulp of the radius for the rounding of the ends.
   return {(p0 + p1) / 2, (p1 - p0).norm() / 2 + 4 * std::numeric_limits<Real>::epsilon() * a.radius};
 }
-// An annulus (docs/annulus.md): it lies in its outer disk, so in that disk's ball.
+// An annulus (docs/derivations/annulus.md): it lies in its outer disk, so in that disk's ball.
 template <class Real> Ball<Real> bounding_ball(const Annulus3<Real>& a) { return {a.center, a.outer_radius}; }
 template <class S> Ball<scalar_t<S>> bounding_ball(const Swept<S>& s) {
   Ball<scalar_t<S>> b = bounding_ball(s.shape);
@@ -77,7 +77,7 @@ template <class S> Ball<scalar_t<S>> bounding_ball(const Swept<S>& s) {
 }
 
 // The closed-form distance from a point to a line, ray or segment (t clamped to the interval).
-template <class Real> Real point_linear_distance(const Vec3<Real>& p, const Linear<Real>& piece) {
+template <class Real> Real point_linear_distance(const Vec3<Real>& p, const detail::Linear<Real>& piece) {
   const Vec3<Real> w = p - piece.origin;
   const Real dd = piece.direction.squaredNorm();
   if (!(dd > 0)) return w.norm();
@@ -103,7 +103,7 @@ template <class Real> Range<Real> height_range(const Vec3<Real>& p, const Plane<
   const Real h = plane.height(p);
   return {h, h};
 }
-template <class Real> Range<Real> linear_height_range(const Linear<Real>& piece, const Plane<Real>& plane) {
+template <class Real> Range<Real> linear_height_range(const detail::Linear<Real>& piece, const Plane<Real>& plane) {
   const Real inf = std::numeric_limits<Real>::infinity();
   const Real h = plane.height(piece.origin), slope = plane.n.dot(piece.direction);
   if (slope == 0) return {h, h};
@@ -112,16 +112,16 @@ template <class Real> Range<Real> linear_height_range(const Linear<Real>& piece,
   return {std::min(a, b), std::max(a, b)};
 }
 template <class Real> Range<Real> height_range(const Line3<Real>& l, const Plane<Real>& plane) {
-  return linear_height_range(as_linear(l), plane);
+  return linear_height_range(detail::as_linear(l), plane);
 }
 template <class Real> Range<Real> height_range(const Ray3<Real>& r, const Plane<Real>& plane) {
-  return linear_height_range(as_linear(r), plane);
+  return linear_height_range(detail::as_linear(r), plane);
 }
 template <class Real> Range<Real> height_range(const Segment3<Real>& s, const Plane<Real>& plane) {
   const Real a = plane.height(s.p0), b = plane.height(s.p1);
   return {std::min(a, b), std::max(a, b)};
 }
-template <class Real, class R, class = target_t<R>> Range<Real> height_range(const R& round, const Plane<Real>& plane) {
+template <class Real, class R, class = detail::target_t<R>> Range<Real> height_range(const R& round, const Plane<Real>& plane) {
   const Real h = plane.height(round.center);
   const Vec3<Real> m = unit_vector(round.normal);
   const Real spread = round.radius * plane.n.cross(m).norm();  // radius * sin(angle between the planes)
@@ -138,11 +138,11 @@ template <class Real> Range<Real> height_range(const BezierCurve3<Real>& b, cons
 }
 
 // The range of e . (x - c) + base over an arc's points x, c its center and e a unit vector
-// (docs/arc.md "The arc": the arc is its circle's canonical angles [theta0, theta0 + angle]).
+// (docs/derivations/arc.md "The arc": the arc is its circle's canonical angles [theta0, theta0 + angle]).
 // Along the circle it is base + R (a cos theta + b sin theta), a = e . U, b = e . V, extreme at
 // atan2(b, a) and half a turn on: the ends and whichever of those two angles fall on the arc.
 template <class Real> Range<Real> arc_range(const Arc3<Real>& arc, const Vec3<Real>& e, Real base) {
-  const ArcSpan<Real> span(arc);
+  const detail::ArcSpan<Real> span(arc);
   const Real a = e.dot(span.frame.u), b = e.dot(span.frame.v);
   const auto at = [&](Real theta) { return base + arc.radius * (a * std::cos(theta) + b * std::sin(theta)); };
   Range<Real> r{std::min(at(span.lo()), at(span.hi())), std::max(at(span.lo()), at(span.hi()))};
@@ -163,7 +163,7 @@ template <class Real> Range<Real> height_range(const Annulus3<Real>& a, const Pl
 
 // A round is a shape with a target policy (detail/round_target.hpp: a circle or a disk).
 template <class T, class = void> struct is_round : std::false_type {};
-template <class T> struct is_round<T, std::void_t<target_t<T>>> : std::true_type {};
+template <class T> struct is_round<T, std::void_t<detail::target_t<T>>> : std::true_type {};
 template <class T> constexpr bool is_round_v = is_round<T>::value;
 template <class T> constexpr bool is_disk_v = std::is_same_v<T, Disk3<scalar_t<T>>>;
 template <class T> constexpr bool is_circle_v = std::is_same_v<T, Circle3<scalar_t<T>>>;
@@ -173,7 +173,7 @@ template <class T> constexpr bool is_linear_v =
     std::is_same_v<T, Segment3<scalar_t<T>>>;
 
 // The exact distance from a point to a round (closed form).
-template <class Real, class R, class = target_t<R>> Real point_round_distance(const Vec3<Real>& p, const R& round) {
+template <class Real, class R, class = detail::target_t<R>> Real point_round_distance(const Vec3<Real>& p, const R& round) {
   return Query<Vec3<Real>, R>::distance(p, round);
 }
 
@@ -184,7 +184,7 @@ template <class Real, class R, class Visit> void sample_points(const Vec3<Real>&
 }
 
 template <class Real, class R, class Visit>
-void sample_linear_points(const Linear<Real>& piece, const R& round, const Visit& visit) {
+void sample_linear_points(const detail::Linear<Real>& piece, const R& round, const Visit& visit) {
   const Real dd = piece.direction.squaredNorm();
   if (!(dd > 0)) {
     visit(piece.origin);
@@ -200,20 +200,20 @@ void sample_linear_points(const Linear<Real>& piece, const R& round, const Visit
   if (slope != 0) visit(at(-plane.height(piece.origin) / slope));  // the plane crossing
 }
 template <class Real, class R, class Visit> void sample_points(const Line3<Real>& l, const R& round, const Visit& visit) {
-  sample_linear_points(as_linear(l), round, visit);
+  sample_linear_points(detail::as_linear(l), round, visit);
 }
 template <class Real, class R, class Visit> void sample_points(const Ray3<Real>& l, const R& round, const Visit& visit) {
-  sample_linear_points(as_linear(l), round, visit);
+  sample_linear_points(detail::as_linear(l), round, visit);
 }
 template <class Real, class R, class Visit>
 void sample_points(const Segment3<Real>& s, const R& round, const Visit& visit) {
-  sample_linear_points(as_linear(s), round, visit);
+  sample_linear_points(detail::as_linear(s), round, visit);
 }
 
 // A circle or disk A (center c, unit normal m, radius ra) against the round B: the point of A
 // nearest to B's center and A's rim crossings of B's plane; for a disk (a target with an
 // interior) also the point of its chord in B's plane nearest to B's center.
-template <class A, class R, class Visit, class Target = target_t<A>>
+template <class A, class R, class Visit, class Target = detail::target_t<A>>
 void sample_points(const A& a, const R& round, const Visit& visit) {
   using Real = scalar_t<A>;
   constexpr bool filled = Target::interior;
@@ -263,7 +263,7 @@ void sample_points(const A& a, const R& round, const Visit& visit) {
 }
 // An arc: its ends, and its point toward the round's center where that angle falls on the arc.
 template <class Real, class R, class Visit> void sample_points(const Arc3<Real>& a, const R& round, const Visit& visit) {
-  const ArcSpan<Real> span(a);
+  const detail::ArcSpan<Real> span(a);
   visit(span.world(a.center, a.radius, span.lo()));
   visit(span.world(a.center, a.radius, span.hi()));
   const Vec3<Real> q = span.frame.to_local(Vec3<Real>(round.center - a.center));
@@ -273,7 +273,7 @@ template <class Real, class R, class Visit> void sample_points(const Arc3<Real>&
   }
 }
 // An annulus: its outer disk's points that lie in the ring (not in the hole), and its inner rim's
-// (the annulus's point where the disk's fell in the hole, docs/annulus.md "Convex shapes").
+// (the annulus's point where the disk's fell in the hole, docs/derivations/annulus.md "Convex shapes").
 template <class Real, class R, class Visit> void sample_points(const Annulus3<Real>& a, const R& round, const Visit& visit) {
   sample_points(detail::annulus_disk(a), round, [&](const Vec3<Real>& p) {
     if ((p - a.center).norm() >= a.inner_radius) visit(p);
@@ -324,14 +324,14 @@ template <class A, class R> DistanceBounds<scalar_t<R>> bounds_against_round(con
     if constexpr (is_circle_v<R>) out.lower = std::max(out.lower, b.radius - apart - ball_a.radius);
     if constexpr (is_circle_v<A>) out.lower = std::max(out.lower, a.radius - apart - ball_b.radius);
   } else if constexpr (is_linear_v<A>) {
-    out.lower = std::max(out.lower, point_linear_distance(b.center, as_linear(a)) - b.radius);
+    out.lower = std::max(out.lower, point_linear_distance(b.center, detail::as_linear(a)) - b.radius);
   }
   // Lower: plane sides.
   out.lower = std::max(out.lower, height_range(a, Plane<Real>(b)).gap());
   if constexpr (is_round_v<A>) out.lower = std::max(out.lower, height_range(b, Plane<Real>(a)).gap());
   // Upper: concrete points.
   if constexpr (is_disk_v<A> && is_disk_v<R>) {
-    const DiskContact<Real> contact = disk_contact(a, Round<Real>(b.center, b.normal, b.radius), b.radius);
+    const detail::DiskContact<Real> contact = detail::disk_contact(a, detail::Round<Real>(b.center, b.normal, b.radius), b.radius);
     if (contact.intersect && !contact.borderline) {
       out.upper = 0;
       return out;
@@ -354,7 +354,7 @@ template <class Real> Vec3<Real> moved_by(const Vec3<Real>& p, const Vec3<Real>&
 template <class Real> Line3<Real> moved_by(const Line3<Real>& l, const Vec3<Real>& o) { return {l.origin - o, l.direction}; }
 template <class Real> Ray3<Real> moved_by(const Ray3<Real>& r, const Vec3<Real>& o) { return {r.origin - o, r.direction}; }
 template <class Real> Segment3<Real> moved_by(const Segment3<Real>& s, const Vec3<Real>& o) { return {s.p0 - o, s.p1 - o}; }
-template <class R, class = target_t<R>> R moved_by(const R& round, const Vec3<scalar_t<R>>& o) {
+template <class R, class = detail::target_t<R>> R moved_by(const R& round, const Vec3<scalar_t<R>>& o) {
   return {round.center - o, round.normal, round.radius};
 }
 template <class Real> Arc3<Real> moved_by(const Arc3<Real>& a, const Vec3<Real>& o) {

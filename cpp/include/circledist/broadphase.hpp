@@ -69,7 +69,7 @@ template <class Real> struct Volume {
     if (kind == Kind::Unbounded) return center.norm() + sweep;
     return center.norm() + radius;
   }
-  Linear<Real> piece() const {
+  detail::Linear<Real> piece() const {
     const Real inf = std::numeric_limits<Real>::infinity();
     return {center, direction, ray ? Real(0) : -inf, inf};
   }
@@ -205,7 +205,7 @@ template <class Real> Volume<Real> volume(const Segment3<Real>& s, Real sweep = 
 // A circle or disk (detail/round_target.hpp's targets): its box along axis k spans
 // radius * sin(angle between the axis and the normal) = radius * sqrt(1 - n_k^2) on either side
 // of the center.
-template <class R, class = target_t<R>> Volume<scalar_t<R>> volume(const R& round, scalar_t<R> sweep = 0) {
+template <class R, class = detail::target_t<R>> Volume<scalar_t<R>> volume(const R& round, scalar_t<R> sweep = 0) {
   using Real = scalar_t<R>;
   const Vec3<Real> n = unit_vector(round.normal);
   const Vec3<Real> reach = round.radius * (Vec3<Real>::Ones() - n.cwiseProduct(n)).cwiseMax(Real(0)).cwiseSqrt();
@@ -228,7 +228,7 @@ template <class Real> Volume<Real> volume(const Arc3<Real>& a, Real sweep = 0) {
   }
   return detail::bounded_volume<Real>(lo, hi, bounding_ball(a), sweep);
 }
-// An annulus: its outer disk's volume (the annulus lies in the disk; docs/annulus.md).
+// An annulus: its outer disk's volume (the annulus lies in the disk; docs/derivations/annulus.md).
 template <class Real> Volume<Real> volume(const Annulus3<Real>& a, Real sweep = 0) {
   return volume(detail::annulus_disk(a), sweep);
 }

@@ -1,4 +1,6 @@
-// Circle against circle (derivation in docs/circle_circle.md). The machinery every query that
+// Circle-circle (Query<Circle3, Circle3>). Derivation: docs/derivations/circle_circle.md.
+//
+// Circle against circle (derivation in docs/derivations/circle_circle.md). The machinery every query that
 // parametrizes a circle by its angle shares lives in detail/: trigonometric polynomials and the
 // half-angle substitution (trig.hpp), the circle seen from a round's frame and its octic
 // (local_circle.hpp), polishing on the exact distance (angle_polish.hpp), and the circle against
@@ -6,8 +8,8 @@
 #pragma once
 
 #include "detail/circle_over_round.hpp"
-#include "minimize.hpp"
-#include "planar.hpp"
+#include "detail/minimize.hpp"
+#include "detail/planar.hpp"
 #include "query.hpp"
 
 #include <algorithm>
@@ -18,17 +20,19 @@
 
 namespace circledist {
 
+namespace detail {
+
 // Circle-circle: the smaller circle is parametrized (its angle features are then never narrower
 // than the other's), its candidates are the octic's roots plus t = 0 and t = pi; the exact
 // point-circle distance judges them. The octic is searched only where the distance can beat the
 // best of eight samples (or the caller's `bound`, a distance some point is known to reach).
-template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
+template <class Real> struct CircleCirclePair {
   static constexpr bool defined = true;
   using Starts = Candidates<Real, kMaxDegree + 16>;
 
   // The candidate angles of the parametrized circle: t = 0 and t = pi, the octic's roots where
   // the distance can be at most `bound` (a distance the circle reaches: the best of its eight
-  // samples or the caller's; an arc passes one its own points reach, arc.hpp), and the extra
+  // samples or the caller's; an arc passes one its own points reach, detail/arc_span.hpp), and the extra
   // starts below. `samples` are the full circle's (sampled_distances).
   // `within`: an arc's angles, where alone its octic is searched (push_circle_ring_roots).
   template <class Roots>
@@ -100,5 +104,18 @@ template <class Real> struct Query<Circle3<Real>, Circle3<Real>> {
     return parametrized_first(a, b) ? closest_ordered<Roots>(a, b) : closest_ordered<Roots>(b, a).swapped();
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Circle3<Real>, Circle3<Real>> : detail::CircleCirclePair<Real> {};
+
+// The circle machinery the C++ tests (test_circle_circle.cpp) reach in the public namespace, as
+// before it moved to detail/.
+using detail::circle_round_scale;
+using detail::LocalCircle;
+using detail::ring_search_intervals;
+using detail::RingTarget;
+using detail::Round;
+using detail::sampled_distance;
 
 }  // namespace circledist

@@ -1,4 +1,6 @@
-// Circle against disk: note 001 §4 (details in docs/circle_disk.md). The circle A is written in
+// Circle-disk (Query<Circle3, Disk3>). Derivation: docs/derivations/circle_disk.md.
+//
+// Circle against disk: note 001 §4 (details in docs/derivations/circle_disk.md). The circle A is written in
 // the disk's local frame, P(t) = O + E1 cos t + E2 sin t with t A's canonical angle, and its
 // angle range is cut where the projection crosses the rim (§4.1). Inside the rim the distance is
 // the height |z(t)|, minimal where z = 0 or z' = 0 (§4.2); outside it is the distance to the rim
@@ -9,8 +11,11 @@
 #pragma once
 
 #include "detail/circle_over_round.hpp"
+#include "query.hpp"
 
 namespace circledist {
+
+namespace detail {
 
 // §4.1: x(t)^2 + y(t)^2 - R^2 = 0, trigonometric degree 2 (a quartic in u; circle_rim_quartic).
 template <class Roots, class Real, int N>
@@ -27,7 +32,7 @@ void push_height_roots(const LocalCircle<Real>& c, Real scale, Candidates<Real, 
   push_trig_roots<Roots>(z.derivative(), out);
 }
 
-template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
+template <class Real> struct CircleDiskPair {
   static constexpr bool defined = true;
   // 2 fixed + 8 (octic) + 4 (rim quartic) + 2 + 2 (height quadratics) = 18 at most.
   using Starts = Candidates<Real, 24>;
@@ -48,7 +53,7 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
   // The candidate angles: the height candidates, the rim partition (§4.1) and the octic's roots
   // (§4.3). The octic's roots matter outside the cylinder only, where the disk distance is the
   // ring's: there the minimum is at most `bound`, any disk distance the circle reaches (its best
-  // sample; an arc passes one its own points reach, arc.hpp) (ring_search_intervals).
+  // sample; an arc passes one its own points reach, detail/arc_span.hpp) (ring_search_intervals).
   // `within`: an arc's angles, where alone its octic is searched (push_circle_ring_roots).
   template <class Roots>
   static Starts candidates(const CircleOverRound<Real>& view, Real scale, const Heights& heights, Real bound,
@@ -71,7 +76,7 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
-  // The distance alone often needs no octic (docs/circle_disk.md, "The distance alone"): the
+  // The distance alone often needs no octic (docs/derivations/circle_disk.md, "The distance alone"): the
   // points over the disk where z = 0 or z' = 0 come first; where the best of them is as low as
   // |z| gets anywhere on the circle (the circle crosses the disk, or its lowest point is over
   // it), no other point can be closer.
@@ -120,5 +125,9 @@ template <class Real> struct Query<Circle3<Real>, Disk3<Real>> {
     return {best, best <= lowest + tie_tolerance(scale)};
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Circle3<Real>, Disk3<Real>> : detail::CircleDiskPair<Real> {};
 
 }  // namespace circledist

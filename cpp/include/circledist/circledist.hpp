@@ -1,11 +1,11 @@
-// circledist: the whole library. Every query family (queries.hpp), swept shapes (sweep.hpp), the
-// cheap distance bounds (bounds.hpp), the effects within, intersects and distance_if_within
-// with their work counters (effects.hpp), and the broadphase over bounding volumes
-// (broadphase.hpp). Include a family header alone to compile less: each public header compiles
-// on its own (cpp/tests/CMakeLists.txt checks that).
+// circledist: the whole library. Every pair header (all_pairs.hpp; the front end is query.hpp),
+// swept shapes (sweep.hpp), the cheap distance bounds (bounds.hpp), the effects within, intersects
+// and distance_if_within with their work counters (effects.hpp), and the broadphase over bounding
+// volumes (broadphase.hpp). Include a family header alone to compile less: each public header
+// compiles on its own (cpp/tests/CMakeLists.txt checks that).
 #pragma once
 
-#include "queries.hpp"
+#include "all_pairs.hpp"
 #include "sweep.hpp"
 #include "bounds.hpp"
 #include "effects.hpp"

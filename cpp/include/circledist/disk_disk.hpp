@@ -1,4 +1,6 @@
-// Disk against disk (docs/disk_disk.md). Zero when the disks intersect, decided in B's local
+// Disk-disk (Query<Disk3, Disk3>). Derivation: docs/derivations/disk_disk.md.
+//
+// Disk against disk (docs/derivations/disk_disk.md). Zero when the disks intersect, decided in B's local
 // frame: disk A meets B's plane in a chord (A's points at height 0), and the disks intersect
 // exactly when that chord meets disk B, a 1-D interval overlap along the chord. Coplanar disks
 // (A's heights all within rounding of 0) intersect when their centers are no farther apart than
@@ -8,8 +10,11 @@
 #pragma once
 
 #include "circle_disk.hpp"
+#include "query.hpp"
 
 namespace circledist {
+
+namespace detail {
 
 // Where two disks meet, if they do: a point common to both (B-local coordinates) and whether it
 // is the only one (the common part shorter than the distinct-points tolerance).
@@ -88,7 +93,7 @@ template <class Real> DiskContact<Real> disk_contact(const Disk3<Real>& a, const
   return out;
 }
 
-template <class Real> struct Query<Disk3<Real>, Disk3<Real>> {
+template <class Real> struct DiskDiskPair {
   static constexpr bool defined = true;
   using CircleDisk = Query<Circle3<Real>, Disk3<Real>>;
 
@@ -135,5 +140,9 @@ template <class Real> struct Query<Disk3<Real>, Disk3<Real>> {
     return best;
   }
 };
+
+}  // namespace detail
+
+template <class Real> struct Query<Disk3<Real>, Disk3<Real>> : detail::DiskDiskPair<Real> {};
 
 }  // namespace circledist

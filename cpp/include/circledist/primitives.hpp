@@ -25,6 +25,11 @@ namespace circledist {
 template <class Real> using Vec3 = Eigen::Matrix<Real, 3, 1>;
 template <class Real> using Vec2 = Eigen::Matrix<Real, 2, 1>;
 
+// pi in Real, to its last bit.
+template <class Real> constexpr Real pi_v() {
+  return Real(3.141592653589793238462643383279502884197169399375105820974944592307816406L);
+}
+
 // A circle (the ring only). `normal` need not be unit length; `radius` >= 0.
 template <class Real> struct Circle3 {
   Vec3<Real> center, normal;
@@ -38,11 +43,11 @@ template <class Real> struct Disk3 {
 };
 
 // A circular arc: the points center + radius (cos t u + sin t v), t in [0, angle], where n is
-// the unit normal, u the unit projection of `start` onto the plane normal to n and v = n x u
-// (issue 19). 0 < angle <= 2 pi; an angle of 2 pi or more is the whole circle (answered as the
+// the unit normal, u the unit projection of `start` onto the plane normal to n and v = n x u.
+// 0 < angle <= 2 pi; an angle of 2 pi or more is the whole circle (answered as the
 // Circle3 with the same fields), an angle of 0 or less the start point alone, a NaN angle NaN. A `start` with no
 // projection (zero, or along the normal) starts at the circle's angle 0 (Frame's U). Queries
-// report t as the arc's parameter (t, 0), as a circle's angle (arc.hpp).
+// report t as the arc's parameter (t, 0), as a circle's angle (detail/arc_span.hpp).
 template <class Real> struct Arc3 {
   Vec3<Real> center, normal;
   Real radius;
@@ -163,11 +168,18 @@ template <class Real> int direction_exponent(const Vec3<Real>& d) {
   return largest > 0 && largest <= std::numeric_limits<Real>::max() ? std::ilogb(largest) : 0;
 }
 
+// The rule "scale a vector whose direction alone counts by a power of two" is written three
+// times, and they are not one computation: moderate_start tests the largest component against
+// [2^-100, 2^100] (inclusive); ArcEnds (linear_arc.hpp) tests the squared norm, formed by
+// squaredNorm(), strictly inside it; PointOverRound::rescale_normal
+// (detail/point_over_round.hpp) tests wx*wx + wy*wy + wz*wz strictly inside it and takes ilogb
+// without direction_exponent's guard for a zero or non-finite component. Folding them into
+// one function would change answers at those edges, so each keeps its own.
 // An arc's start scaled by a power of two (exact: only its direction counts) to a largest
 // component in [1, 2), where that component lies outside [2^-100, 2^100]: the arc queries form
 // |W|^2 S - (S.W) W and its length, which overflowed for a start of 1e200 (a NaN or wrong
 // point-arc distance) and underflowed to zero, read as "no projection", for one of 1e-200 (the
-// crash fuzz's arcs, 2026-11-26). The common case pays one comparison.
+// crash fuzz's arcs). The common case pays one comparison.
 template <class Real> Vec3<Real> moderate_start(const Vec3<Real>& start) {
   constexpr Real lo = power_of_two<Real>(-100), hi = power_of_two<Real>(100);
   const Real largest = start.cwiseAbs().maxCoeff();
@@ -242,11 +254,11 @@ template <class Real, if_float<Real> = 0> Arc3<double> promoted(const Arc3<Real>
   return {promoted(a.center), promoted(a.normal), double(a.radius), promoted(a.start), double(a.angle)};
 }
 
-// An annulus (issue 19): the points of the plane disk of radius `outer_radius` about `center`
+// An annulus: the points of the plane disk of radius `outer_radius` about `center`
 // (normal `normal`, any length) at distance >= `inner_radius` from the center. Its parameter in
 // a Result is a disk's, (s, theta): the point center + s (cos theta U + sin theta V), s in
 // [inner_radius, outer_radius]. inner_radius <= 0 is the disk, inner_radius == outer_radius
-// the circle (both answered by their own queries, annulus.hpp), inner_radius > outer_radius
+// the circle (both answered by their own queries, annulus_reduction.hpp), inner_radius > outer_radius
 // the empty set (distance +inf), a NaN radius NaN. Its order, scaling and promotion follow the
 // disk's (then the inner radius).
 template <class Real> struct Annulus3 {
@@ -270,7 +282,7 @@ template <class Real, if_float<Real> = 0> Annulus3<double> promoted(const Annulu
   return {promoted(a.center), promoted(a.normal), double(a.inner_radius), double(a.outer_radius)};
 }
 
-// Bezier curves of degree 0 to kMaxBezierDegree (bezier.hpp answers their queries; a curve's
+// Bezier curves of degree 0 to kMaxBezierDegree (detail/curve_round_query.hpp answers their queries; a curve's
 // polynomials against a round reach degree 6n - 2, detail/local_bezier.hpp).
 constexpr int kMaxBezierDegree = 7;
 

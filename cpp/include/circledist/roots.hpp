@@ -1,6 +1,6 @@
 // Polynomial root policies. Every solver builds a polynomial whose real roots are *candidates*
 // for a closest parameter; a policy turns coefficients into candidate parameters. Candidates are
-// then polished and judged on the exact distance (see minimize.hpp), so a policy may return a
+// then polished and judged on the exact distance (see detail/minimize.hpp), so a policy may return a
 // superset of the true roots but must never lose a real root, including multiple ones.
 //
 // The two entry points of a policy:
@@ -30,7 +30,7 @@
 
 namespace circledist {
 
-// How candidates are moved to a local minimum of the exact distance (minimize.hpp):
+// How candidates are moved to a local minimum of the exact distance (detail/minimize.hpp):
 //   Newton: Newton steps on the exact squared distance, a bracketed search only where they fail;
 //   Bracketed: a bracketed (Brent) minimization of the exact distance around every candidate,
 //     finished by the Newton steps that lower it (a crossing, distance 0, is a V in the distance).

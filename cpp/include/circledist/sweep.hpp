@@ -20,7 +20,7 @@
 // Sweeps of zero give back the core's result bit for bit.
 #pragma once
 
-#include "queries.hpp"
+#include "all_pairs.hpp"
 
 #include <algorithm>
 #include <limits>

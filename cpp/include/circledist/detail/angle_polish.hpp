@@ -4,14 +4,14 @@
 // targets' (round_target.hpp).
 #pragma once
 
-#include "../minimize.hpp"
+#include "minimize.hpp"
 #include "trig.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // The absolute polishing tolerance for a parameter along which points move at most `speed`
 // per unit (a circle's radius for its angle, the hodograph bound for a curve's t), in a scene
@@ -116,4 +116,4 @@ Minima<Real, N> polish_angles(const J& jet, const H& h, const Candidates<Real, N
   return out;
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -1,10 +1,9 @@
 // Circle A against the plane, cylinder and ring of a round B, written with the small quantities
-// that decide near-degenerate pairs (docs/circle_circle.md, "Nearly coincident circles"): the
+// that decide near-degenerate pairs (docs/derivations/circle_circle.md, "Nearly coincident circles"): the
 // quartics and octic whose roots are A's candidate angles, their search, and the Result built
 // from the polished minima with its `unique` flag.
 #pragma once
 
-#include "../query.hpp"
 #include "angle_polish.hpp"
 #include "local_circle.hpp"
 #include "round_target.hpp"
@@ -15,10 +14,10 @@
 #include <cstddef>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // Circle A against the plane, cylinder and ring of round B (radius R), written with the small
-// quantities that decide near-degenerate pairs (docs/circle_circle.md, "Nearly coincident
+// quantities that decide near-degenerate pairs (docs/derivations/circle_circle.md, "Nearly coincident
 // circles"): the height z(t) and the radial excess s(t) = x^2 + y^2 - R^2 = rho^2 - R^2.
 // Both follow from first harmonics: z = z0 + z1 cos t + z2 sin t, and, as |E1| = |E2| = r (A's
 // radius) and E1.E2 = 0,
@@ -183,7 +182,7 @@ template <class Real> std::array<Real, 5> circle_rim_quartic(const CircleOverRou
 // Its roots are searched only where the distance can be at most `bound`, a distance A reaches
 // (ring_search_intervals, which searches everywhere for an infinite bound; the margin of
 // 1e-4 scale dwarfs the rounding of its quadratics), and, for an arc, only on its angles
-// (`within`, in u = tan(t/2): ArcSpan::half_angle_range, docs/arc.md "Cost"; null for a circle).
+// (`within`, in u = tan(t/2): ArcSpan::half_angle_range, docs/derivations/arc.md "Cost"; null for a circle).
 template <class Roots, class Real, int N>
 void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale, Real bound, Candidates<Real, N>& out,
                             const Intervals<Real>* within = nullptr) {
@@ -207,4 +206,4 @@ Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>
   return r;
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <array>
 
-namespace circledist {
+namespace circledist::detail {
 
 // A polynomial of degree <= kMaxCurveDegree, coefficients ascending.
 template <class Real> struct CurvePoly {
@@ -52,4 +52,4 @@ template <class Real> CurvePoly<Real> operator-(const CurvePoly<Real>& a, const 
   return a + Real(-1) * b;
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace circledist {
+namespace circledist::detail {
 
 // A root policy that can solve the curve degrees: the asked one when it accepts a large
 // Candidates, EigenCompanion otherwise.
@@ -99,4 +99,4 @@ template <class Roots, class Real, int N> void push_curve_roots(const CurvePoly<
   }
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -1,4 +1,4 @@
-// What every query of a Bezier curve shares (bezier.hpp against rings and disks, bezier_point.hpp
+// What every query of a Bezier curve shares (curve_round_query.hpp against rings and disks, bezier_point.hpp
 // and bezier_linear.hpp against points and the pieces): the polish of its candidates on the exact
 // distance, the branch and bound that cuts a far-reaching curve into pieces, and its Results.
 #pragma once
@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-namespace circledist {
+namespace circledist::detail {
 
 // As circle_round_result, for a curve parameter t in [0, 1], against a target given by its
 // closest point and parameter (target_side_result, round_target.hpp: a round's, an arc's).
@@ -139,4 +139,4 @@ template <class Real> struct CurveRoundBase {
   }
 };
 
-}  // namespace circledist
+}  // namespace circledist::detail

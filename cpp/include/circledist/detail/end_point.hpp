@@ -2,18 +2,16 @@
 // point-circle's or point-disk's closed form, and its closest points.
 #pragma once
 
-#include "../planar.hpp"
-#include "../point_circle.hpp"
-#include "../point_disk.hpp"
 #include "../primitives.hpp"
-#include "../query.hpp"
 #include "piece_line.hpp"
+#include "planar.hpp"
+#include "point_over_round.hpp"
 #include "round_target.hpp"
 
 #include <cmath>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // A piece's end point as a candidate: its distance to the round by point-circle's (point-disk's)
 // closed form from the line's unit normal n (height z = n.(p - c), rho from the axis; over a
@@ -53,10 +51,10 @@ auto end_point_result(const Piece& piece, decltype(Round::radius) t, const Round
                       const Vec3<decltype(Round::radius)>& n) {
   using Real = decltype(Round::radius);
   const Vec3<Real> p = piece_end(piece, t);
-  Result<Real> r = Query<Vec3<Real>, Round>::closest(p, round);
+  Result<Real> r = PointRoundQuery<Real, std::is_same_v<Round, Disk3<Real>>>::closest(p, round);
   r.distance = end_point_distance(p, round, n);
   r.param_a = Vec2<Real>(t, 0);
   return r;
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -4,7 +4,7 @@
 // about 1e3 eps of the answer).
 #pragma once
 
-#include "../linear.hpp"
+#include "linear.hpp"
 #include "double_double.hpp"
 
 #include <array>
@@ -12,9 +12,7 @@
 #include <limits>
 #include <utility>
 
-namespace circledist {
-
-namespace detail {
+namespace circledist::detail {
 
 // The closed forms of linear_linear.hpp lose eps times the pieces' own offsets: w = p - q rounds
 // by eps |w|, and w + s u - t v by eps (|w| + |s u| + |t v|). Where a line's origin, a ray's
@@ -184,6 +182,4 @@ LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b
   return best;
 }
 
-}  // namespace detail
-
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -1,12 +1,12 @@
-// A full line's minima over a ring, seen from the ring's side (docs/line_circle.md): the global
+// A full line's minima over a ring, seen from the ring's side (docs/derivations/line_circle.md): the global
 // one by one bracketed root of the secular equation (line_ring_minimum), the other local one
 // inside the astroid (other_line_minimum), whether the global one is tied with its mirror image,
 // and the Result of either. A line, ray or segment against a circle, or against a disk's rim,
-// is answered from here wherever the direct method applies (line_circle.hpp, line_disk.hpp).
+// is answered from here wherever the direct method applies (linear_circle.hpp, linear_disk.hpp).
 #pragma once
 
-#include "../linear.hpp"
-#include "../minimize.hpp"
+#include "linear.hpp"
+#include "minimize.hpp"
 #include "../primitives.hpp"
 #include "round_target.hpp"
 
@@ -15,7 +15,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // A full line against a circle, seen from the circle's side. With the line's unit direction m
 // and its point a closest to the center (both relative to the center, a.m = 0), the squared
@@ -185,7 +185,7 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
 // (returns 2: a second minimum exists, off the piece).
 // The first half, the astroid test, is second_minimum_test: it needs only the secular data, so a
 // ray or segment asks it before the global root (a line with one local minimum falls toward it
-// on either side, so an end point's slope can answer: choose_from_line, line_circle.hpp); the
+// on either side, so an end point's slope can answer: choose_from_line, linear_circle.hpp); the
 // second half, other_line_minimum, solves the root where the test found one.
 template <class Real> struct SecondMinimumTest {
   using Work = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
@@ -334,4 +334,4 @@ Result<Real> line_ring_result(const Line3<Real>& line, const Circle3<Real>& c, c
   return r;
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -1,10 +1,10 @@
 // A Bezier curve in a round's local frame: its control points and those of its derivatives,
-// evaluation and the target's jet along it, its coordinates in the power basis of w = 2t - 1
-// (the polynomials of bezier.hpp and bezier_point.hpp), and the length scale of a curve and a round.
+// evaluation and the target's jet along it, its coordinates in the power basis of w = 2t - 1 (the
+// polynomials of curve_round_query.hpp and bezier_point.hpp), and the length scale of a curve and a round.
 #pragma once
 
-#include "../minimize.hpp"
-#include "../planar.hpp"
+#include "minimize.hpp"
+#include "planar.hpp"
 #include "../primitives.hpp"
 #include "curve_poly.hpp"
 
@@ -12,7 +12,7 @@
 #include <array>
 #include <cmath>
 
-namespace circledist {
+namespace circledist::detail {
 
 static_assert(6 * kMaxBezierDegree - 2 <= kMaxCurveDegree, "circledist: curve polynomials exceed kMaxCurveDegree");
 
@@ -92,4 +92,4 @@ template <class Real> Real bezier_round_scale(const LocalBezier<Real>& c, Real r
   return s > 0 ? s : Real(1);
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

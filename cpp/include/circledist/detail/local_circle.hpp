@@ -1,11 +1,11 @@
 // A circle A seen from the local frame of a round shape B, P(t) = O + E1 cos t + E2 sin t: its
 // length scale, the distances at eight exact angles, the angle intervals where the distance can
 // be small, and the octic whose roots are the stationary points of the distance from P(t) to B's
-// ring (note 001 eq. (2) with the simplification of eq. (3); docs/circle_circle.md).
+// ring (note 001 eq. (2) with the simplification of eq. (3); docs/derivations/circle_circle.md).
 #pragma once
 
-#include "../minimize.hpp"
-#include "../planar.hpp"
+#include "minimize.hpp"
+#include "planar.hpp"
 #include "trig.hpp"
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // Circle A (radius rho, canonical frame {U_A, V_A, M}) in the local frame of round B:
 //   P(t) = O + E1 cos t + E2 sin t,  O = local(T), E1 = rho local(U_A), E2 = rho local(V_A),
@@ -67,7 +67,7 @@ template <class Real> struct SampledDistances {
   Real best, worst;
 };
 // The eight squared distances themselves, k = 0..7 at t = k pi/4 (an arc keeps those of the
-// angles it holds: arc.hpp, arc_bound).
+// angles it holds: arc_span.hpp, arc_bound).
 template <class Real> struct SampleAngles {
   static constexpr Real k = Real(0.7071067811865475244008443621048490392848359376884740365883398689953662L);
   static constexpr Real cs[8][2] = {{1, 0}, {k, k}, {0, 1}, {-k, k}, {-1, 0}, {-k, -k}, {0, -1}, {k, -k}};
@@ -96,7 +96,7 @@ template <class Real, class Squared> Real sampled_distance(const LocalCircle<Rea
 }
 
 // Where on A the distance h to the ring can be at most `bound`, as intervals of u = tan(t/2)
-// (docs/circle_circle.md, "Pruning"). Every ring point Q has z = 0 and |Q| = R, so
+// (docs/derivations/circle_circle.md, "Pruning"). Every ring point Q has z = 0 and |Q| = R, so
 // h(t) >= |z(t)| and h(t) >= ||P(t)| - R|: h <= bound needs -bound <= z <= bound and
 // (R - bound)^2 <= |P|^2 <= (R + bound)^2. z and |P|^2 = |O|^2 + rho^2 + 2 O.E1 cos t + 2 O.E2 sin t
 // are trigonometric of degree 1, so each condition is a quadratic inequality in u; the
@@ -227,4 +227,4 @@ template <class Real, int N> void push_circle_candidates(Candidates<Real, N>& ou
   out.push(pi_v<Real>());
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -2,10 +2,10 @@
 // point of that line lies against the piece (piece_side, on_piece), and the piece's end points.
 #pragma once
 
-#include "../linear.hpp"
+#include "linear.hpp"
 #include "../primitives.hpp"
 
-namespace circledist {
+namespace circledist::detail {
 
 // A ray or segment whose full line has its minimum over the ring on the piece has that minimum
 // too: the piece is part of the line, so it is no closer, and it holds the line's closest point.
@@ -43,4 +43,4 @@ template <class Real> Vec3<Real> piece_end(const Line3<Real>& l, Real) { return 
 template <class Real> Vec3<Real> piece_end(const Ray3<Real>& r, Real) { return r.origin; }
 template <class Real> Vec3<Real> piece_end(const Segment3<Real>& s, Real t) { return t > 0 ? s.p1 : s.p0; }
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -3,7 +3,7 @@
 // skeleton PieceRoundQuery, and PieceChoice, what a round's hook hands it.
 #pragma once
 
-#include "../linear.hpp"
+#include "linear.hpp"
 #include "../primitives.hpp"
 #include "../roots.hpp"
 #include "end_point.hpp"
@@ -11,7 +11,7 @@
 
 #include <limits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // The answer of a piece from its full line's minimum over the round (line_ring_minimum): the
 // candidates and the winner. Which candidates there are is the round's own (choose_from_line:
@@ -29,7 +29,7 @@ template <class Real> struct PieceChoice {
   bool tied = false;
 };
 
-// Each round's hook, defined by its public header (line_circle.hpp, line_disk.hpp). Declared
+// Each round's hook, defined by its public header (linear_circle.hpp, linear_disk.hpp). Declared
 // here because C++17 reads choose_from_line<Roots>(...) in PieceRoundQuery as a call only where
 // a function template of that name is visible; the call is resolved when a query is instantiated.
 template <class Roots, class Real, class Piece>
@@ -69,4 +69,4 @@ template <class Real, class Piece, class Target> struct PieceRoundQuery : Linear
   }
 };
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -4,7 +4,7 @@
 // differ only in what they make of these.
 #pragma once
 
-#include "../planar.hpp"
+#include "planar.hpp"
 #include "../primitives.hpp"
 #include "../roots.hpp"
 #include "atan2.hpp"
@@ -203,9 +203,9 @@ template <class Real, bool Interior> struct PointRoundQuery {
   }
 };
 
-// A point against a true ring, an annulus with 0 < inner < outer (annulus.hpp): the inner
+// A point against a true ring, an annulus with 0 < inner < outer (annulus_reduction.hpp): the inner
 // circle's answer over the hole (rho < inner), the disk's over the ring and beyond
-// (docs/annulus.md), from one PointOverRound; param (rho, theta) over the ring, (R, theta) on a
+// (docs/derivations/annulus.md), from one PointOverRound; param (rho, theta) over the ring, (R, theta) on a
 // rim.
 template <class Real> struct PointRingQuery {
   using Answers = PointRoundAnswers<Real>;

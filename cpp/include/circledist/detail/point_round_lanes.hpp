@@ -1,5 +1,5 @@
 // closest_points of four point-round pairs at once, in the lanes of an AVX register: the batched
-// query of the point kinds (src/pairs.hpp), issue 14's "closest_points at most 2x distance".
+// query of the point kinds (src/pairs.hpp), so that closest_points costs at most twice distance.
 //
 // Why: a point-circle distance is about 35 floating-point operations and three square roots;
 // its closest points about 120, a third of them the angle (atan2.hpp). One at a time, the closest
@@ -23,7 +23,6 @@
 #pragma once
 
 #include "point_over_round.hpp"
-#include "../query.hpp"
 
 #if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
 #define CIRCLEDIST_POINT_ROUND_LANES 1

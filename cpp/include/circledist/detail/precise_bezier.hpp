@@ -2,14 +2,14 @@
 // pieces of a curve far larger than the round it passes (curve_round_base.hpp, solve_pieces).
 #pragma once
 
-#include "../planar.hpp"
+#include "planar.hpp"
 #include "../primitives.hpp"
 #include "double_double.hpp"
 
 #include <algorithm>
 #include <array>
 
-namespace circledist {
+namespace circledist::detail {
 
 // The curve's local control points in double-double, and its pieces. A curve far larger than
 // the round (1e5 times, or one control point 1e10 away) is solved piece by piece
@@ -91,4 +91,4 @@ template <class Real> struct BestPiece {
   bool valid = false;
 };
 
-}  // namespace circledist
+}  // namespace circledist::detail

@@ -6,8 +6,8 @@
 // ring's. All of it is static and resolved at compile time (`if constexpr` on `interior`).
 #pragma once
 
-#include "../minimize.hpp"
-#include "../planar.hpp"
+#include "minimize.hpp"
+#include "planar.hpp"
 #include "atan2.hpp"
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace circledist {
+namespace circledist::detail {
 
 // The interior's squared distance z^2 and its derivatives along a curve, from the height z and
 // its first two derivatives.
@@ -156,4 +156,4 @@ Result<Real> round_side_result(const Minima<Real, N>& minima, const At& at, cons
       [](const Vec3<Real>& q) { return Target::param(q); });
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

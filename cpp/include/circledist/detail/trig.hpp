@@ -1,20 +1,17 @@
 // Trigonometric polynomials of a circle's angle t and the tangent half-angle substitution
 // u = tan(t/2), which turns one of degree K into an ordinary polynomial of degree 2K whose real
-// roots give the stationary angles (docs/circle_circle.md). Shared by every query that
+// roots give the stationary angles (docs/derivations/circle_circle.md). Shared by every query that
 // parametrizes a circle by its angle: circle_circle.hpp, circle_disk.hpp, disk_disk.hpp.
 #pragma once
 
+#include "../primitives.hpp"
 #include "../roots.hpp"
 
 #include <array>
 #include <cmath>
 #include <cstddef>
 
-namespace circledist {
-
-template <class Real> constexpr Real pi_v() {
-  return Real(3.141592653589793238462643383279502884197169399375105820974944592307816406L);
-}
+namespace circledist::detail {
 
 // f(t) = c[0] + sum_{k=1..K} (c[k] cos kt + s[k] sin kt). s[0] is always 0.
 template <class Real, int K> struct Trig {
@@ -150,4 +147,4 @@ template <class Real> Real wrap_angle(Real t) {
   return t <= -pi ? t + 2 * pi : t;
 }
 
-}  // namespace circledist
+}  // namespace circledist::detail

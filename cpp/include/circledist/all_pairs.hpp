@@ -1,0 +1,36 @@
+// Every pair header: the shapes, the front end (query.hpp) and each pair's Query<A, B>,
+// one header per pair of families, named for the pair (docs/design/pairs.md maps each to its
+// derivation and tests). sweep.hpp builds on this; the umbrella circledist.hpp is this plus the
+// swept shapes, the bounds, the effects and the broadphase.
+#pragma once
+
+#include "primitives.hpp"
+#include "query.hpp"
+#include "point_point.hpp"
+#include "point_linear.hpp"
+#include "point_circle.hpp"
+#include "point_disk.hpp"
+#include "point_arc.hpp"
+#include "point_annulus.hpp"
+#include "bezier_point.hpp"
+#include "linear_linear.hpp"
+#include "linear_circle.hpp"
+#include "linear_disk.hpp"
+#include "linear_arc.hpp"
+#include "linear_annulus.hpp"
+#include "bezier_linear.hpp"
+#include "circle_circle.hpp"
+#include "circle_disk.hpp"
+#include "circle_arc.hpp"
+#include "circle_annulus.hpp"
+#include "bezier_circle.hpp"
+#include "disk_disk.hpp"
+#include "disk_arc.hpp"
+#include "disk_annulus.hpp"
+#include "bezier_disk.hpp"
+#include "arc_arc.hpp"
+#include "arc_annulus.hpp"
+#include "bezier_arc.hpp"
+#include "annulus_annulus.hpp"
+#include "bezier_annulus.hpp"
+#include "bezier_bezier.hpp"
