@@ -700,7 +700,7 @@ def test_installed_package_holds_every_file_of_the_source_package():
     importlib.resources from wherever circledist is installed."""
     import os
 
-    source = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python", "circledist")
+    source = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python", "circledist")
     if not os.path.isdir(source):
         pytest.skip("no source tree next to the tests")
     wanted = set()
