@@ -103,7 +103,7 @@ def test_thread_scenarios_catch_an_answer_no_serial_scene_gives():
 
 
 # Families of the argument fuzz that are open library findings, each with its strict xfail in
-# tests/test_open_findings.py (none now). Remove a family here when its xfail passes.
+# tests/accuracy/test_open_findings.py (none now). Remove a family here when its xfail passes.
 OPEN_ARGUMENT_FAMILIES = set()
 
 

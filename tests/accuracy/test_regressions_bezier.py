@@ -91,7 +91,7 @@ def test_bezier_through_the_center(precision):
 # Found with the builds of 45d71ff..cbdb1e2 (installed 09:07:58, 2026-11-26); the build installed
 # at 09:44:20 from /work/main's working tree (minimize.hpp: polish_newton goes on when its
 # minimum is at an inner end of the bracket) answers them all. The bar is that of the
-# Bezier-point/line pairs (tests/test_bezier_point_linear.py): the curve's extent.
+# Bezier-point/line pairs (tests/pairs/test_bezier_point_linear.py): the curve's extent.
 FAR_CONTROL = {  # name: (control points, kind, the piece's data, precision)
     "point-double": (
         [[-798380750.5368731, -996066137.8019059, -853819246.0773492],
