@@ -22,6 +22,7 @@ def _fuzz_module():
     return fuzz_crash
 
 
+@pytest.mark.serial
 def test_fuzz_slice_finds_nothing(tmp_path):
     report = tmp_path / "fuzz.json"
     proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--cases", "6000", "--seed", "15",
@@ -33,6 +34,7 @@ def test_fuzz_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.serial
 def test_hostile_files_slice_finds_nothing(tmp_path):
     """The command line on hostile files (tools/fuzz_crash.py --files): FIFOs and devices, zip
     bombs, lying .npy headers, JSON nested near the recursion limit, lone surrogates, counts beyond
@@ -51,6 +53,7 @@ def test_hostile_files_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.serial
 def test_threads_slice_finds_nothing(tmp_path):
     """A Scene shared by 3-5 threads (tools/fuzz_crash.py --threads): random kinds with far and
     huge outliers, each thread a random mix of single and batched adds, pairs_within, nearest,
@@ -107,6 +110,7 @@ def test_thread_scenarios_catch_an_answer_no_serial_scene_gives():
 OPEN_ARGUMENT_FAMILIES = set()
 
 
+@pytest.mark.serial
 def test_arguments_slice_finds_nothing(tmp_path):
     """Every entry point with hostile scalar arguments (tools/fuzz_crash.py --arguments): huge
     and negative integers, bools, NumPy scalars, floats, NaN, strings, None, over small, empty,

@@ -635,6 +635,7 @@ def test_help_documents_the_format():
         assert json.loads(f.read()) == sf.schema()
 
 
+@pytest.mark.serial
 def test_million_shape_npz_scene(tmp_path):
     """10^6 swept points and a ring in an .npz: written, read (vectorized checks), and the nearest
     three points of the ring found through the CLI equal brute force over the batch."""

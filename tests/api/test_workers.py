@@ -82,6 +82,7 @@ def test_bad_worker_count_is_a_value_error(workers):
             call()
 
 
+@pytest.mark.serial
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
 @pytest.mark.parametrize("workers", [1, 2])
 def test_ctrl_c_stops_a_long_batch(workers):
@@ -126,6 +127,7 @@ LONG_PHASES = {
 }
 
 
+@pytest.mark.serial
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
 @pytest.mark.parametrize("phase", list(LONG_PHASES))
 def test_ctrl_c_stops_the_broadphase_phases(phase):
