@@ -89,15 +89,21 @@ else
 fi
 
 # pytest on every core: the tests not marked serial spread over one worker process per core
-# (pytest-xdist), then the serial ones in one process with nothing beside them. Exit status 5
-# (no test selected) of a pass is no failure.
+# (pytest-xdist), a test file to one worker (--dist loadfile: the references a file caches and its
+# module fixtures are computed once, as in one process), then the serial ones in one process with
+# nothing beside them (collected from the files that mark any). Exit status 5 (no test selected)
+# of a pass is no failure.
 pytest_on_every_core() {  # pytest_on_every_core [MARKER EXPRESSION]
-  local only="${1:+ and ($1)}" status=0 rc=0
-  "$py" -m pytest -q -p no:cacheprovider -n "$(nproc)" -m "not serial$only" || rc=$?
+  local only="${1:+ and ($1)}" status=0 rc=0 serial_files
+  "$py" -m pytest -q -p no:cacheprovider -n "$(nproc)" --dist loadfile -m "not serial$only" || rc=$?
   [ "$rc" -eq 0 ] || [ "$rc" -eq 5 ] || status=$rc
-  rc=0
-  "$py" -m pytest -q -p no:cacheprovider -m "serial$only" || rc=$?
-  [ "$rc" -eq 0 ] || [ "$rc" -eq 5 ] || status=$rc
+  serial_files=$(grep -rl --include='test_*.py' "pytest.mark.serial" tests | sort)
+  if [ -n "$serial_files" ]; then
+    rc=0
+    # shellcheck disable=SC2086
+    "$py" -m pytest -q -p no:cacheprovider -m "serial$only" $serial_files || rc=$?
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 5 ] || status=$rc
+  fi
   return "$status"
 }
 
@@ -112,7 +118,7 @@ wheel_alone() {
   "$venv/bin/python" -m pip install -q --disable-pip-version-check "$wheel[test]" || return 1
   test_files=$("$py" tools/pyproject.py wheel-tests) || return 1
   (cd "$venv" && env -i HOME="$HOME" PATH="$PWD/bin" CIRCLEDIST_WHEEL_ALONE=1 bin/python -m pytest -q \
-    -p no:cacheprovider -n "$(nproc)" -c "$OLDPWD/pyproject.toml" --rootdir "$OLDPWD" \
+    -p no:cacheprovider -n "$(nproc)" --dist loadfile -c "$OLDPWD/pyproject.toml" --rootdir "$OLDPWD" \
     $(for t in $test_files tests/package/test_packaging.py; do echo "$OLDPWD/$t"; done))
 }
 

@@ -161,6 +161,7 @@ def describe(findings, limit=12):
     return "\n".join(lines)
 
 
+@pytest.mark.slow
 def test_slice_covers_every_family_and_kind_pair(results):
     seen = collections.Counter((c["family"], (c["a"], c["b"])) for c in results["cases"])
     for family, (pairs, _) in D.FAMILIES.items():
@@ -176,6 +177,7 @@ def test_slice_covers_every_family_and_kind_pair(results):
 KNOWN_FAILURES: dict = {}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("family", list(D.FAMILIES))
 def test_no_confirmed_findings(results, family):
     bad = [f for f in results["findings"] if f["family"] == family and f.get("confirmed")]
@@ -189,6 +191,7 @@ def test_no_confirmed_findings(results, family):
         pytest.xfail("; ".join(f"{family} {pair}: {why}" for pair, why in known.items()))
 
 
+@pytest.mark.slow
 def test_screen_false_alarms_and_reference_misses(results):
     """The tools themselves: no screen alarm that the 50-digit reference refutes, no reference
     that misses a pair the screen found (a reference above a genuine pair is wrong), no screen

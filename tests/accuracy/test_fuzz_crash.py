@@ -9,6 +9,7 @@ import subprocess
 import sys
 
 import numpy as np
+import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -22,6 +23,7 @@ def _fuzz_module():
     return fuzz_crash
 
 
+@pytest.mark.slow
 @pytest.mark.serial
 def test_fuzz_slice_finds_nothing(tmp_path):
     report = tmp_path / "fuzz.json"
@@ -34,6 +36,7 @@ def test_fuzz_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.slow
 @pytest.mark.serial
 def test_hostile_files_slice_finds_nothing(tmp_path):
     """The command line on hostile files (tools/fuzz_crash.py --files): FIFOs and devices, zip
@@ -53,6 +56,7 @@ def test_hostile_files_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.slow
 @pytest.mark.serial
 def test_threads_slice_finds_nothing(tmp_path):
     """A Scene shared by 3-5 threads (tools/fuzz_crash.py --threads): random kinds with far and
@@ -69,6 +73,7 @@ def test_threads_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.slow
 def test_thread_scenarios_catch_an_answer_no_serial_scene_gives():
     """The check can fail: a Scene whose nearest drops its last answer in threads only (the
     serial scenes run on the main thread) is caught, and so is a pickle that loses a shape."""
@@ -110,6 +115,7 @@ def test_thread_scenarios_catch_an_answer_no_serial_scene_gives():
 OPEN_ARGUMENT_FAMILIES = set()
 
 
+@pytest.mark.slow
 @pytest.mark.serial
 def test_arguments_slice_finds_nothing(tmp_path):
     """Every entry point with hostile scalar arguments (tools/fuzz_crash.py --arguments): huge

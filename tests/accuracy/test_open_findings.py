@@ -112,6 +112,7 @@ def test_huge_arc_small_ring_unique():
 # with every other, so nothing is culled and one chunk of a's elements holds O(len(b)) exact tests
 # each, while the callback and the signal check run between chunks only. The documentation
 # promises a call about every 0.1 s; a second is the bar here.
+@pytest.mark.slow
 @pytest.mark.serial
 @pytest.mark.xfail(strict=True, reason="nearest over coincident points: the first progress call after seconds")
 def test_nearest_on_coincident_points_reports_progress_within_a_second():

@@ -14,6 +14,9 @@ import pytest
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 NEEDED = ("sphinx", "numpydoc", "myst_parser")
 
+# One Sphinx build, seconds long, behind every test here.
+pytestmark = pytest.mark.slow
+
 
 @pytest.fixture(scope="module")
 def html(tmp_path_factory):
