@@ -82,6 +82,7 @@ def test_bad_worker_count_is_a_value_error(workers):
             call()
 
 
+@pytest.mark.slow
 @pytest.mark.serial
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
 @pytest.mark.parametrize("workers", [1, 2])
@@ -127,6 +128,7 @@ LONG_PHASES = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.serial
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
 @pytest.mark.parametrize("phase", list(LONG_PHASES))
