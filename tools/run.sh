@@ -97,7 +97,7 @@ pytest_on_every_core() {  # pytest_on_every_core [MARKER EXPRESSION]
   local only="${1:+ and ($1)}" status=0 rc=0 serial_files
   "$py" -m pytest -q -p no:cacheprovider -n "$(nproc)" --dist loadfile -m "not serial$only" || rc=$?
   [ "$rc" -eq 0 ] || [ "$rc" -eq 5 ] || status=$rc
-  serial_files=$(grep -rl --include='test_*.py' "pytest.mark.serial" tests | sort)
+  serial_files=$(grep -rl --include='test_*.py' "pytest.mark.serial" tests | sort || true)
   if [ -n "$serial_files" ]; then
     rc=0
     # shellcheck disable=SC2086
