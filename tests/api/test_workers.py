@@ -25,6 +25,7 @@ def _answers(a, b, d, **opts):
             cd.intersects(a, b, **opts), r.distance, r.point_a, r.point_b, r.param_a, r.param_b, r.unique]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("pair", query_pairs(cd), ids="-".join)
 def test_every_worker_count_gives_the_same_bits(pair):
     rng = np.random.default_rng(zlib.crc32("-".join(pair).encode()))
