@@ -69,7 +69,7 @@ def _control_points(values):
 
 def bar_scale(kind, values):
     """The scale the bar multiplies besides the distance: the largest radius in the query, or for
-    two curves the larger curve size (their control polygons' extent, as tests/test_bezier_bezier.py
+    two curves the larger curve size (their control polygons' extent, as tests/pairs/test_bezier_bezier.py
     and reference_bezier.py take it)."""
     (a, va), (b, vb) = split_values(kind, values)
     if a == "bezier" and b == "bezier":
@@ -611,7 +611,7 @@ def hard_scenes(kind):
     elif kind == "disk-disk":
         out = [(n, x, y, 1.0) for n, (x, y) in DISK_DISK_SCENES.items()]
     elif kind == "bezier-bezier":
-        # tests/test_bezier_bezier.py's hard pairs: crossing, nearly touching, tangent,
+        # tests/pairs/test_bezier_bezier.py's hard pairs: crossing, nearly touching, tangent,
         # parallel and identical curves, big against small, translated, degenerate curves
         out = [(scene[0], ("bezier", scene[1]), ("bezier", scene[2]), 1.0) for scene in bezier_cases.hard_scenes()]
     elif a == "bezier":

@@ -1,5 +1,5 @@
 """Random batches of shapes of every kind, and the kind pairs the module answers: the all-pairs
-tests (tests/test_pairs.py) check them against brute force, the Dask tests against single calls."""
+tests (tests/pairs/test_pairs.py) check them against brute force, the Dask tests against single calls."""
 
 import numpy as np
 

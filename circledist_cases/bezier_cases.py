@@ -1,4 +1,4 @@
-"""Bezier-Bezier cases shared by tests/test_bezier_bezier.py, cpp/tests/bezier_bezier_reference.py and the
+"""Bezier-Bezier cases shared by tests/pairs/test_bezier_bezier.py, cpp/tests/bezier_bezier_reference.py and the
 accuracy report (circledist_cases/accuracy.py)."""
 
 import numpy as np
@@ -63,7 +63,7 @@ SHIFT = (1e6, -1e6, 1e6)
 
 def hard_scenes():
     """(name, control points a, control points b[, expected `unique`, where clear-cut]):
-    the hard pairs of curves tests/test_bezier_bezier.py and the accuracy report
+    the hard pairs of curves tests/pairs/test_bezier_bezier.py and the accuracy report
     (circledist_cases/accuracy.py) share."""
     big = tuple(tuple(1e3 * np.array(p)) for p in CUBIC_A)
     b37 = np.array(R.bezier_point(big, 0.37), dtype=float)

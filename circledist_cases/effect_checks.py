@@ -1,5 +1,5 @@
-"""Checks that every curve family runs (tests/test_bezier_point_linear.py,
-tests/test_bezier_bezier.py): within(), intersects() and swept shapes against the reference
+"""Checks that every curve family runs (tests/pairs/test_bezier_point_linear.py,
+tests/pairs/test_bezier_bezier.py): within(), intersects() and swept shapes against the reference
 distance, and the other argument order's closest points."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Checks a Python kind's test runs against every other kind (tests/test_arc.py, tests/test_annulus.py):
+"""Checks a Python kind's test runs against every other kind (tests/pairs/test_arc.py, tests/pairs/test_annulus.py):
 shapes as plain tuples (kind, *fields) of floats, both argument orders agreeing to the bit, the
 accuracy bar, batches equal to single calls, effects and Scene against brute force, the
 broadphase against brute force. Each test file keeps its own reference and its own cases."""

@@ -1,9 +1,9 @@
-"""Independent 50-digit reference for annuli: one, used by tests/test_annulus.py, the
+"""Independent 50-digit reference for annuli: one, used by tests/pairs/test_annulus.py, the
 differential test and the accuracy report (circledist_cases/accuracy.py).
 
 No circledist code. The distance from a point to an annulus is a closed form (its projection's
 distance rho from the center: |z| in the ring, else the nearer rim's sqrt(z^2 + (rho - r)^2)),
-checked against dense sampling of the annulus in tests/test_annulus.py. Against a curve (circle,
+checked against dense sampling of the annulus in tests/pairs/test_annulus.py. Against a curve (circle,
 arc, line, ray, segment: a line's parameter on the bounded stretch where a closest point can lie;
 a Bezier curve's t) the reference is the minimum over the curve's parameter of that closed form, by
 reference_kit.minimize_1d (dense samples, golden section on every sampled local minimum, zoomed

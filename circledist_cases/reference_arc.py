@@ -1,4 +1,4 @@
-"""Independent 50-digit reference for arcs: one, used by tests/test_arc.py and by the
+"""Independent 50-digit reference for arcs: one, used by tests/pairs/test_arc.py and by the
 differential test's confirmation (circledist_cases/differential/).
 
 No circledist code.  An arc is built from its own definition, center + R (cos t u + sin t v),
@@ -7,7 +7,7 @@ t in [0, angle], u the unit projection of `start` onto the plane normal to `norm
 against an arc is the minimum over the arc's angle t of the other shape's closed-form point
 distance (point, line, ray, segment: the clamped projection; circle, disk: note 000 / 001;
 another arc: the point-arc closed form of ArcMP.point_distance, itself checked against sampling
-in tests/test_arc.py), found by reference_kit.minimize_1d (dense samples, golden section on
+in tests/pairs/test_arc.py), found by reference_kit.minimize_1d (dense samples, golden section on
 every sampled local minimum; zoomed by Lipschitz bounds where two minima could share a sampling
 step: an arc nearly tangent to a line or ring, or far larger than a round target).  Every value
 is a genuine point's exact distance, an upper bound; the least is kept.  A Bezier curve against

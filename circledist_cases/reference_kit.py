@@ -197,7 +197,7 @@ def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: 
     circle passing a small disk) has steps much longer than the other shape, so two local minima
     a fraction of its size apart fall between the same two samples, and golden section then finds
     only one of them, possibly the higher (5.9e-13 higher for the far curve of
-    tests/test_regressions.py::test_far_curve_near_tied_minima).  After the zoom each of them is
+    tests/accuracy/test_regressions.py::test_far_curve_near_tied_minima).  After the zoom each of them is
     a sampled local minimum of its own, and every one is refined."""
     xs, h = _sample_grid(lo, hi, intervals, periodic)
     fs = [f(x) for x in xs]

@@ -1,6 +1,6 @@
 """50-digit reference for points, lines, rays and segments among themselves (no circledist).
 
-Shared by tests/test_linear_accuracy.py and the differential test (circledist_cases/differential/).
+Shared by tests/accuracy/test_linear_accuracy.py and the differential test (circledist_cases/differential/).
 The reference minimizes over one parameter: s -> dist(A(s), B), the distance from a point of A
 to the piece B (its projection clamped, in mpmath), is convex in s, so a bracket search
 (sampling, then golden section) finds its minimum; s = tan(phi) maps an infinite interval onto a

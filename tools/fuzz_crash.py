@@ -66,7 +66,7 @@ except ImportError:
         fuzz_arguments, fuzz_files, fuzz_threads, generate_threads, run_argument_case, run_batch,
         run_case, run_thread_case)
 
-# what the command line and the tests (tests/test_fuzz_crash.py, tests/test_scene_file.py) use
+# what the command line and the tests (tests/accuracy/test_fuzz_crash.py, tests/api/test_scene_file.py) use
 __all__ = ["ARGUMENTS", "ARGUMENT_GROWTH", "FILE_CLASSES", "_write_npz", "child", "fuzz", "fuzz_arguments",
            "fuzz_files", "fuzz_threads", "generate_threads", "main", "run_argument_case", "run_thread_case"]
 

@@ -50,7 +50,7 @@ def missing(args: list[str]) -> list[str]:
 
 
 def wheel_tests() -> list[str]:
-    return re.findall(r"tests/\w+\.py", load()["tool"]["cibuildwheel"]["test-command"])
+    return re.findall(r"tests/[\w/]+\.py", load()["tool"]["cibuildwheel"]["test-command"])
 
 
 if __name__ == "__main__":

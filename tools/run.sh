@@ -2,7 +2,11 @@
 # circledist's one entry point for people and CI:
 #   bash tools/run.sh demo   install what is missing, build the package, run the demo (its picture:
 #                            build/demo_scene.png)
-#   bash tools/run.sh test   install what is missing, build the package's wheel and install it, run pytest and
+#   bash tools/run.sh check  the quick loop: install what is missing, rebuild and reinstall the package if a
+#                            file it is built from changed since its last install, run pytest on every
+#                            core except the tests marked slow (pyproject.toml's markers)
+#   bash tools/run.sh test   install what is missing, build the package's wheel and install it, run pytest
+#                            (every test: on every core, then the ones marked serial alone) and
 #                            the C++ tests (ctest), one C++ test built against cmeel-eigen's Eigen (the
 #                            fallback), and the wheel's tests in a venv of its own with no compiler on PATH
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
@@ -59,7 +63,7 @@ missing_requirements() {  # missing_requirements EXTRA... -- TOOL... (tools/pypr
 }
 case "$task" in
   demo) extras=(plot) ;;
-  test) extras=(test plot docs dask) ;;  # docs: the stubs' check and the docs build (tests/test_stubs.py, test_docs.py); dask: tests/test_dask.py on a LocalCluster
+  test|check) extras=(test plot docs dask) ;;  # docs: the stubs' check and the docs build (tests/package/test_stubs.py, test_docs.py); dask: tests/api/test_dask.py on a LocalCluster
   docs) extras=(docs) ;;
   fuzz) extras=(test) ;;  # the fuzz and the differential test check against the tests' mpmath references
   bench) extras=(bench) ;;
@@ -85,10 +89,41 @@ if [ "$task" = lint ]; then
 fi
 
 # The package is built as a wheel, which is installed: the tests then run on what a user installs.
-echo "== building the circledist wheel, and installing it"
-rm -rf build/wheel
-"$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps -w build/wheel .
-pip_install --force-reinstall --no-deps build/wheel/circledist-*.whl
+# The check task skips both while no file the wheel is built from is newer than the last install
+# (a stamp taken before that build started; a folder's time changes when a file in it is removed).
+built_from=(CMakeLists.txt pyproject.toml README.md LICENSE src cpp/include cpp/cmake python)
+stamp=.venv/circledist-installed.stamp
+if [ "$task" = check ] && [ -f "$stamp" ] && [ -z "$(find "${built_from[@]}" -newer "$stamp" -print -quit)" ]; then
+  echo "== circledist is installed from these sources already"
+else
+  echo "== building the circledist wheel, and installing it"
+  rm -f "$stamp"
+  mkdir -p build
+  touch build/installed.stamp
+  rm -rf build/wheel
+  "$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps -w build/wheel .
+  pip_install --force-reinstall --no-deps build/wheel/circledist-*.whl
+  mv build/installed.stamp "$stamp"
+fi
+
+# pytest on every core: the tests not marked serial spread over one worker process per core
+# (pytest-xdist), a test file to one worker (--dist loadfile: the references a file caches and its
+# module fixtures are computed once, as in one process), then the serial ones in one process with
+# nothing beside them (collected from the files that mark any). Exit status 5 (no test selected)
+# of a pass is no failure.
+pytest_on_every_core() {  # pytest_on_every_core [MARKER EXPRESSION]
+  local only="${1:+ and ($1)}" status=0 rc=0 serial_files
+  "$py" -m pytest -q -p no:cacheprovider -n "$(nproc)" --dist loadfile -m "not serial$only" || rc=$?
+  [ "$rc" -eq 0 ] || [ "$rc" -eq 5 ] || status=$rc
+  serial_files=$(grep -rl --include='test_*.py' "pytest.mark.serial" tests | sort || true)
+  if [ -n "$serial_files" ]; then
+    rc=0
+    # shellcheck disable=SC2086
+    "$py" -m pytest -q -p no:cacheprovider -m "serial$only" $serial_files || rc=$?
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 5 ] || status=$rc
+  fi
+  return "$status"
+}
 
 # The wheel on a machine without a compiler, Eigen or any build requirement: a fresh venv (not
 # seeing the system's site-packages) gets the wheel and the test extra only, and runs the tests
@@ -101,8 +136,8 @@ wheel_alone() {
   "$venv/bin/python" -m pip install -q --disable-pip-version-check "$wheel[test]" || return 1
   test_files=$("$py" tools/pyproject.py wheel-tests) || return 1
   (cd "$venv" && env -i HOME="$HOME" PATH="$PWD/bin" CIRCLEDIST_WHEEL_ALONE=1 bin/python -m pytest -q \
-    -p no:cacheprovider -c "$OLDPWD/pyproject.toml" --rootdir "$OLDPWD" \
-    $(for t in $test_files tests/test_packaging.py; do echo "$OLDPWD/$t"; done))
+    -p no:cacheprovider -n "$(nproc)" --dist loadfile -c "$OLDPWD/pyproject.toml" --rootdir "$OLDPWD" \
+    $(for t in $test_files tests/package/test_packaging.py; do echo "$OLDPWD/$t"; done))
 }
 
 cpp_build() {  # cpp_build [extra cmake definitions]
@@ -139,7 +174,7 @@ case "$task" in
   test)
     echo "== pytest"
     status=0
-    "$py" -m pytest -q -p no:cacheprovider || status=$?
+    pytest_on_every_core || status=$?
     echo "== C++ tests (ctest)"
     cpp_build
     ctest --test-dir build/cpp --output-on-failure || status=1
@@ -153,6 +188,10 @@ case "$task" in
     echo "== the wheel alone: a fresh venv with the wheel and the test extra, no compiler or Eigen on PATH"
     wheel_alone || status=1
     exit $status
+    ;;
+  check)
+    echo "== pytest, the tests not marked slow"
+    pytest_on_every_core "not slow"
     ;;
   fuzz)
     status=0

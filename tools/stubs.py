@@ -5,7 +5,7 @@
 
 pybind11-stubgen (the `docs` extra) reads the module's signatures and docstrings (src/bindings/);
 the one change made to its output: the version's value is left out (`__version__: str`), so
-that a version bump does not make the stubs stale. tests/test_stubs.py runs the check.
+that a version bump does not make the stubs stale. tests/package/test_stubs.py runs the check.
 """
 
 import argparse

@@ -1,6 +1,6 @@
 """Differential accuracy testing of circledist: a library module.
 
-Nothing here is a test; tests/test_differential.py (the CI slice) and tools/differential.py (the
+Nothing here is a test; tests/accuracy/test_differential.py (the CI slice) and tools/differential.py (the
 long mode, ``python -m tools.differential``) drive it.  Every name of the modules below is
 re-exported here, so ``from circledist_cases import differential as D`` and ``D.name`` reach them.
 

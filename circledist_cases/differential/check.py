@@ -15,7 +15,7 @@ measured distances off their shapes) of any combination's closest points, a genu
 circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
 bezier_other), reference_arc.py (arcs: the arc's angle against the other's closed form) and
 reference_linear.py (linear pieces among themselves: the search of
-tests/test_linear_accuracy.py), reference_annulus.py (annuli: the other shape's parameter
+tests/accuracy/test_linear_accuracy.py), reference_annulus.py (annuli: the other shape's parameter
 against the point-annulus closed form, rim by rim for regions), and evaluates the screen's own
 best pair at 50 digits, so a reference that missed the minimum is caught, not trusted.
 closest_points().unique is checked against an independent rule (expected_unique, the comment
@@ -373,7 +373,7 @@ def _check_whole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, st
     (arc.hpp: the circle's query is called): distance, closest_points' distance, points,
     `unique` and the parameter of a side that is not an arc.  An arc's own parameter is its
     t = theta - theta0, the circle's angle moved to the arc's start (ArcSpan::param_of): not the
-    circle's number (tests/test_arc.py checks that t gives the arc's point)."""
+    circle's number (tests/pairs/test_arc.py checks that t gives the arc's point)."""
     rows = np.ones(len(gcases), dtype=bool)
     for kind, X in ((ka, A), (kb, Bd)):
         if kind == "arc":

@@ -275,7 +275,7 @@ def bar_scale(case):
     their own size, however far the origins and ends lie; only distances twelve orders below the
     query, pieces that touch within the inputs' rounding, fall back to that floor); for a Bezier curve against one of them the largest length in the query, the
     control polygon's extent and a segment's length (reference_round.bezier_other_scale, as
-    tests/test_bezier_point_linear.py).  Both are translation invariant; points a hair apart
+    tests/pairs/test_bezier_point_linear.py).  Both are translation invariant; points a hair apart
     (zero-length segments) are held to the distance between them."""
     ka, kb = case["a"], case["b"]
     if ka in RIMS or kb in RIMS:

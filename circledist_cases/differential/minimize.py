@@ -99,7 +99,7 @@ def _beam(form, lo, hi, beam, levels, K, dtype, start=None):
 # ring of radius 0.8, a huge circle passing a small disk) has steps much longer than the other
 # shape, so two local minima a fraction of its size apart fall between the same two samples and a
 # search from the best sample finds one of them, possibly the higher (5.9e-13 higher for the far
-# curve of tests/test_regressions.py::test_far_curve_near_tied_minima, below float64's resolution
+# curve of tests/accuracy/test_regressions.py::test_far_curve_near_tied_minima, below float64's resolution
 # of a point 2e4 away, so no float64 ranking can choose between them).  The zoom re-samples, in
 # float64, every interval that could hold a value below the best sample until one step moves the
 # point by at most max(R, rho) / ZOOM_FRACTION (R the target round's radius, rho the distance from

@@ -461,7 +461,7 @@ void annulus_degenerate() {
 // (push_refined_curve_height_roots, bezier.hpp). Degree-2 arches elevated to degree 2..7, their
 // height linear in t (the height polynomial's higher coefficients rounding noise: the companion
 // and eigen policies' roots of such a polynomial were 1e-14 off, and the answer up to 7e-15 x the
-// outer radius, tests/test_regressions.py), and random curves through the point at t = 1/2; the
+// outer radius, tests/accuracy/test_regressions.py), and random curves through the point at t = 1/2; the
 // point anywhere in the ring or 1e-9..1e-4 x outer from a rim, the crossing 0.1..1.4 rad from
 // the plane, so the inputs' rounding (1e-16) moves it by far less than its margin: the truth is
 // 0. Also the two scenes of the long run (their 50-digit references below 1e-30). Bar 1e-15 x

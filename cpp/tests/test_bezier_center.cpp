@@ -140,7 +140,7 @@ BezierCurve3<double> curve_of(const std::vector<V3d>& points) {
   return b;
 }
 
-// tests/test_open_findings.py (issue 14): degree 6, the middle control point at the center;
+// tests/accuracy/test_open_findings.py (issue 14): degree 6, the middle control point at the center;
 // 50-digit reference for the circle 0.1601137907534006.
 Scene finding() {
   const std::vector<V3d> points = {

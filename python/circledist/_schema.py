@@ -1,5 +1,5 @@
 """The part of JSON Schema (draft 2020-12) that circledist's scene schema uses, as a small
-validator: the package needs no `jsonschema` at run time. tests/test_scene_file.py checks that
+validator: the package needs no `jsonschema` at run time. tests/api/test_scene_file.py checks that
 `jsonschema` accepts and rejects a corpus of scenes exactly as this validator does.
 
 Errors are (JSON path, message) for the first violation met, the path written like
@@ -10,7 +10,7 @@ Speed: each schema node is also compiled, once, into a predicate (value -> valid
 plain type and length tests. A document is first checked with the predicates alone; the step that
 composes the message runs only where a predicate fails, so a scene of 10^5 well-formed shapes
 costs a few microseconds per shape, and a bad one is reported exactly as by the step-by-step check.
-The predicates decide exactly what the step-by-step check decides (tests/test_scene_file.py
+The predicates decide exactly what the step-by-step check decides (tests/api/test_scene_file.py
 compares them on a corpus of mutated scenes), since an "if" takes its branch from them.
 """
 

@@ -192,7 +192,7 @@ def _written_scene_is_valid(entries: list, columns: list, queries: list, descrip
     the description and the queries (schema and meaning, as a reader checks them).
 
     False sends write_scene to the reader's full check, which raises the reader's own error;
-    True must imply that the reader accepts the file (tests/test_scene_file.py checks both on a
+    True must imply that the reader accepts the file (tests/api/test_scene_file.py checks both on a
     corpus of scenes)."""
     if not entries or not isinstance(description, str):
         return False

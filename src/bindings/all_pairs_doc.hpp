@@ -1,5 +1,5 @@
 // The docstrings of the all-pairs queries, pairs_within and nearest (bound by all_pairs.cpp).
-// NumPy-style; their examples run as doctests (tests/test_docstrings.py).
+// NumPy-style; their examples run as doctests (tests/package/test_docstrings.py).
 #pragma once
 
 #include "arguments_doc.hpp"

@@ -1,6 +1,6 @@
 // The docstrings of the effects (intersects, within, distance_if_within) and the work counters
 // (stats, reset_stats), bound by effects.cpp. NumPy-style; their examples run as doctests
-// (tests/test_docstrings.py).
+// (tests/package/test_docstrings.py).
 #pragma once
 
 #include "arguments_doc.hpp"

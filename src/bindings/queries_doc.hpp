@@ -1,5 +1,5 @@
 // The docstrings of distance, closest_points and their answer, ClosestPoints (bound by
-// queries.cpp). NumPy-style; their examples run as doctests (tests/test_docstrings.py).
+// queries.cpp). NumPy-style; their examples run as doctests (tests/package/test_docstrings.py).
 #pragma once
 
 #include "arguments_doc.hpp"

@@ -1,5 +1,5 @@
 // The docstrings of the shape classes: each kind's class, its fields, and the methods of Shape
-// (bound by shapes.cpp). NumPy-style; their examples run as doctests (tests/test_docstrings.py),
+// (bound by shapes.cpp). NumPy-style; their examples run as doctests (tests/package/test_docstrings.py),
 // and the generated stubs (python/circledist/_core.pyi) carry them. No behaviour lives here.
 #pragma once
 

@@ -21,7 +21,7 @@ from .cases import _shape
 # the scene, and adding a name already taken. The shapes are added in one order (a thread claims the next ones
 # under a lock of its own), so the scene is always a prefix of that order; every answer must be the
 # answer of a serial scene of the first m shapes for some m between the counts at the query's start
-# and its end (tests/test_scene.py's threaded test), and the scene must end as the serial one. A
+# and its end (tests/api/test_scene.py's threaded test), and the scene must end as the serial one. A
 # finding: a crash, a hang, an exception other than the documented ones, or an answer no serial
 # scene gives.
 THREAD_KINDS = ("point", "circle", "disk", "segment", "arc", "annulus", "bezier")

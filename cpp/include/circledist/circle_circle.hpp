@@ -44,7 +44,7 @@ template <class Real> struct CircleCirclePair {
     // Where the circle crosses the ring's plane (z = 0, the height roots of circle_disk.hpp):
     // rings that cross lie there. For rings of equal radius whose centers are 1e-14 apart, the
     // octic is so ill-conditioned that the eigenvalue policies' roots led the polish to 0.505
-    // for a distance of 1e-14 (tests/test_regressions.py, near-concentric crossing rings).
+    // for a distance of 1e-14 (tests/accuracy/test_regressions.py, near-concentric crossing rings).
     // Policies that refine every root to rounding find them from the octic (and skip these
     // starts' cost: 18 % of a circle-circle query).
     if constexpr (!has_accurate_roots<Roots>::value) push_trig_roots<Roots>(view.c.coordinate(2, scale), starts);

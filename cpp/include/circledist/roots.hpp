@@ -286,7 +286,7 @@ struct EigenCompanion {
     // Eigen's real Schur iteration can stall: the balanced companion of the even, palindromic
     // octic of a circle through the other ring's axis at two opposite angles (double roots at
     // u = +-1, simple ones at u and -u) gave NoConvergence after its iteration limit, and no
-    // roots at all (tests/test_regressions.py, circle through a ring's axis). Such a polynomial's
+    // roots at all (tests/accuracy/test_regressions.py, circle through a ring's axis). Such a polynomial's
     // roots come from detail::roots_without_eigenvalues.
     using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDegree, kMaxDegree>;
     bool converged = true;

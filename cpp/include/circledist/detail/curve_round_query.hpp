@@ -46,7 +46,7 @@ void push_curve_height_roots(const LocalBezier<Real>& c, Real scale, Candidates<
 // height is nearly of lower degree (a degree-elevated arch: its high coefficients rounding noise,
 // hence roots near 1e5 and, from the QR's backward error eps |C|, the small ones off by 1e-14)
 // put a crossing of the plane at |z| = 2e-14 in long double (7e-15 x the outer radius,
-// tests/test_regressions.py); the disk's candidates are polished on the exact distance and
+// tests/accuracy/test_regressions.py); the disk's candidates are polished on the exact distance and
 // land on the crossing. A simple root takes a step or two; a double one (the curve touching the
 // plane) halves its error per step, and its z' root is the accurate candidate there. The root as
 // it came is kept too where the steps moved it (a step that left for another root's basin loses

@@ -12,7 +12,7 @@
 // (point_over_round.hpp, atan2.hpp) in the same order, each an IEEE operation rounded once
 // (additions, products, quotients, square roots; selections and sign copies are exact), so each
 // lane's answer is the scalar query's to the bit; cpp/tests/test_point_round_lanes.cpp and
-// tests/test_point_round_lanes.py hold the two to the bit. The code is a mirror of the scalar
+// tests/pairs/test_point_round_lanes.py hold the two to the bit. The code is a mirror of the scalar
 // code, not a template shared with it: it is compiled for AVX (target attribute) in any x86 build,
 // and a function compiled for AVX cannot be inlined into code that must run without it. Not FMA,
 // which could fuse a product and a sum the scalar code rounds apart. Where the processor has no

@@ -13,7 +13,7 @@ import pytest
 
 import circledist
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 STUBS = runpy.run_path(str(ROOT / "tools" / "stubs.py"))
 
 

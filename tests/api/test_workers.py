@@ -25,6 +25,7 @@ def _answers(a, b, d, **opts):
             cd.intersects(a, b, **opts), r.distance, r.point_a, r.point_b, r.param_a, r.param_b, r.unique]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("pair", query_pairs(cd), ids="-".join)
 def test_every_worker_count_gives_the_same_bits(pair):
     rng = np.random.default_rng(zlib.crc32("-".join(pair).encode()))
@@ -82,6 +83,8 @@ def test_bad_worker_count_is_a_value_error(workers):
             call()
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
 @pytest.mark.parametrize("workers", [1, 2])
 def test_ctrl_c_stops_a_long_batch(workers):
@@ -126,6 +129,8 @@ LONG_PHASES = {
 }
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="POSIX signals")
 @pytest.mark.parametrize("phase", list(LONG_PHASES))
 def test_ctrl_c_stops_the_broadphase_phases(phase):

@@ -46,6 +46,7 @@ REL = 1e-12
 REL_LD = 1e-15
 
 
+@pytest.mark.slow
 def test_point_arc_closed_form_matches_sampling():
     """The reference's own point-arc closed form (used against arcs) against dense sampling."""
     rng = np.random.default_rng(5)
@@ -136,6 +137,7 @@ def check_closest(a, b, r, ref):
 # ------------------------------------------------------------------------------------------------
 # accuracy: random and hard cases, both orders
 # ------------------------------------------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("kind", OTHER_KINDS)
 def test_random_against_the_reference(kind):
     for a, b in random_cases(kind, 10, 1):
@@ -144,6 +146,7 @@ def test_random_against_the_reference(kind):
         check_closest(a, b, r, ref)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", HARD + FAR, ids=lambda c: c[0])
 def test_hard_cases(case):
     name, a, b, exact, unique = case
@@ -313,6 +316,7 @@ def check_curve_closest(a, ctrl, r, ref):
     assert 0 <= s <= 1 and float(R.dist(R.bezier_point(ctrl, s), R.vec(pb))) <= tol
 
 
+@pytest.mark.slow
 def test_arc_bezier_random_against_the_reference():
     for a, ctrl in random_curve_cases(14, 1):
         d, r = curve_both_orders(a, ctrl)
@@ -335,6 +339,7 @@ def test_arc_bezier_hard_cases(case):
         assert bool(r.unique) is unique, name
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", SOLVERS)
 def test_arc_bezier_every_solver_and_long_double(solver):
     for a, ctrl in random_curve_cases(4, 2) + [c[1:3] for c in CURVE_HARD[:8]]:

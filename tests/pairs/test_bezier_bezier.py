@@ -92,6 +92,7 @@ def error(d, ref, precision):
 # ------------------------------------------------------------------------------------------------
 # the references themselves (no circledist)
 # ------------------------------------------------------------------------------------------------
+@pytest.mark.slow
 def test_reference_known_answers():
     """The crossing is at the arch's apex; the shifted straight curves are as far apart all along
     as their offset across them (0.5, 0.625); identical curves meet everywhere; the arches touch at
@@ -108,6 +109,7 @@ def test_reference_known_answers():
 # ------------------------------------------------------------------------------------------------
 # the library against them
 # ------------------------------------------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", SOLVERS)
 @pytest.mark.parametrize("precision", list(TOL))
 @pytest.mark.parametrize("name", IDS)
@@ -122,6 +124,7 @@ def test_distance(name, precision, solver):
     assert np.asarray(d).dtype == (np.longdouble if precision == "longdouble" else np.float64)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", SOLVERS)
 @pytest.mark.parametrize("name", IDS)
 def test_closest_points(name, solver):

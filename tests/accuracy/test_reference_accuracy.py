@@ -34,6 +34,9 @@ from circledist_cases import reference as ref
 from circledist_cases import scenes
 from circledist_cases.shapes import make_shape
 
+# A sweep of 8,912 cases: the test task runs it, the check task leaves it out.
+pytestmark = pytest.mark.slow
+
 REL = 1e-12
 EPS = float(np.finfo(float).eps)
 CASES = scenes.all_cases()

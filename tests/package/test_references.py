@@ -4,7 +4,7 @@ README links it."""
 import pathlib
 import re
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 REFERENCES = (ROOT / "docs" / "derivations" / "references.md").read_text()
 
 # The named methods and authors the sources cite; each one found in them must be in the list.

@@ -14,7 +14,7 @@ import sys
 
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs"
 NEEDED = ("sphinx", "numpydoc", "myst_parser")
 PICTURES = (DOCS / "derivations" / "line_disk.png").exists()  # False in the sdist
@@ -55,6 +55,7 @@ def text_of(path):
     return html_module.unescape(re.sub(r"<[^>]+>", "", path.read_text())).replace("\u2019", "'")
 
 
+@pytest.mark.slow  # the Sphinx build behind the html fixture: seconds
 def test_reference_documents_every_public_object(html):
     import circledist
 
@@ -68,6 +69,7 @@ def test_reference_documents_every_public_object(html):
         assert section in index
 
 
+@pytest.mark.slow
 def test_every_shelf_is_in_the_site(html):
     index = (html / "index.html").read_text()
     for page in DOCS.rglob("*.md"):

@@ -48,6 +48,7 @@ TWO_PI = 2 * math.pi
 REL = 1e-12
 REL_LD = 1e-15
 
+@pytest.mark.slow
 def test_point_annulus_closed_form_matches_sampling():
     """The reference's own point-annulus closed form against a dense polar grid of the annulus."""
     rng = np.random.default_rng(5)

@@ -89,6 +89,7 @@ def _shapes(kind, data, circle, dtype):
     return piece, cd.Circle(c[:3], c[3:6], c[6])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("precision", sorted(BARS))
 @pytest.mark.parametrize("solver", SOLVERS)
 def test_pieces_ending_at_stationary_points(solver, precision, references):

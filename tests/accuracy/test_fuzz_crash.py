@@ -9,8 +9,9 @@ import subprocess
 import sys
 
 import numpy as np
+import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def _fuzz_module():
@@ -22,6 +23,8 @@ def _fuzz_module():
     return fuzz_crash
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_fuzz_slice_finds_nothing(tmp_path):
     report = tmp_path / "fuzz.json"
     proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--cases", "6000", "--seed", "15",
@@ -33,6 +36,8 @@ def test_fuzz_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_hostile_files_slice_finds_nothing(tmp_path):
     """The command line on hostile files (tools/fuzz_crash.py --files): FIFOs and devices, zip
     bombs, lying .npy headers, JSON nested near the recursion limit, lone surrogates, counts beyond
@@ -51,6 +56,8 @@ def test_hostile_files_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_threads_slice_finds_nothing(tmp_path):
     """A Scene shared by 3-5 threads (tools/fuzz_crash.py --threads): random kinds with far and
     huge outliers, each thread a random mix of single and batched adds, pairs_within, nearest,
@@ -66,6 +73,7 @@ def test_threads_slice_finds_nothing(tmp_path):
     assert proc.returncode == 0
 
 
+@pytest.mark.slow
 def test_thread_scenarios_catch_an_answer_no_serial_scene_gives():
     """The check can fail: a Scene whose nearest drops its last answer in threads only (the
     serial scenes run on the main thread) is caught, and so is a pickle that loses a shape."""
@@ -103,10 +111,12 @@ def test_thread_scenarios_catch_an_answer_no_serial_scene_gives():
 
 
 # Families of the argument fuzz that are open library findings, each with its strict xfail in
-# tests/test_open_findings.py (none now). Remove a family here when its xfail passes.
+# tests/accuracy/test_open_findings.py (none now). Remove a family here when its xfail passes.
 OPEN_ARGUMENT_FAMILIES = set()
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_arguments_slice_finds_nothing(tmp_path):
     """Every entry point with hostile scalar arguments (tools/fuzz_crash.py --arguments): huge
     and negative integers, bools, NumPy scalars, floats, NaN, strings, None, over small, empty,

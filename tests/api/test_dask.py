@@ -23,6 +23,9 @@ from circledist_cases.batches import SUPPORTED, TRAILING, random_batch  # noqa: 
 KIND_PAIRS = sorted(SUPPORTED)
 
 
+# The tests that take this client are marked serial: one cluster of two processes, started once by
+# the pytest process that runs them all, with no other test process beside it. They are marked
+# slow too: the cluster's start alone takes seconds.
 @pytest.fixture(scope="module")
 def client():
     # No dashboard: its fixed port may be taken by another run on this machine.
@@ -66,6 +69,7 @@ def every_kind_pair(n, chunkings, seed):
     return lazy, expected
 
 
+@pytest.mark.slow
 def test_every_kind_pair_and_chunking_equals_the_single_process_calls():
     # Chunks that line up (5 and 5), that do not (4 and 7), one chunk against many; in this
     # process (the cluster test below runs the same graphs over two worker processes).
@@ -74,12 +78,16 @@ def test_every_kind_pair_and_chunking_equals_the_single_process_calls():
         same(got, e)
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_every_kind_pair_on_the_cluster(client):
     lazy, expected = every_kind_pair(12, ((4, 7),), 19)
     for got, e in zip(dask.compute(*lazy), expected):
         same(got, e)
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_broadcasting_n1_by_m(client):
     rng = np.random.default_rng(3)
     rings, points = random_batch("Circle", 17, rng), random_batch("Point", 29, rng)
@@ -103,6 +111,8 @@ def test_broadcasting_n1_by_m(client):
     same(got[3], cd.distance(rings_n1, points.to_arrays()["p"]))
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 @pytest.mark.parametrize("precision", [None, "float32", "longdouble"])
 @pytest.mark.parametrize("solver", ["bracketing", "companion"])
 def test_precision_solver_and_workers_pass_through(client, precision, solver):
@@ -194,6 +204,7 @@ def check_pairs(got, expected):
     return found
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("clustered", [False, True])
 def test_pairs_within_equals_the_single_process_call(clustered):
     lazy, expected = pairs_cases(clustered, 70, 56, PAIR_CASES)
@@ -201,12 +212,16 @@ def test_pairs_within_equals_the_single_process_call(clustered):
     assert check_pairs(dask.compute(*lazy, scheduler="sync"), expected) > 300
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 @pytest.mark.parametrize("clustered", [False, True])
 def test_pairs_within_on_the_cluster(client, clustered):
     lazy, expected = pairs_cases(clustered, 200, 150, [("Circle", "Segment"), ("Line", "Disk")])
     assert check_pairs(dask.compute(*lazy), expected) > 200
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_pairs_within_a_batch_shape_and_empty_batches(client):
     rng = np.random.default_rng(13)
     rings = random_batch("Circle", 24, rng)
@@ -238,6 +253,8 @@ BATCH_KEYS = [0, -1, 2, slice(1, 3), slice(None, None, -2), (1, 2), (slice(None)
               (Ellipsis, 1), (1, Ellipsis), (Ellipsis,), (), np.int64(1), (slice(0, 0),)]
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 @pytest.mark.parametrize("key", BATCH_KEYS, ids=repr)
 def test_indexing_a_batch_is_numpy_indexing_of_its_broadcast_fields(client, key):
     """A (3, 4) batch whose fields have batch shapes (3, 4), (3, 1) and (4,), chunked: indexed,

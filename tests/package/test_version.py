@@ -11,7 +11,7 @@ import pytest
 
 cd = pytest.importorskip("circledist")
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 def written_version():

@@ -194,6 +194,7 @@ def on_other(c: Case, q, s):
 # ------------------------------------------------------------------------------------------------
 # the references themselves (no circledist)
 # ------------------------------------------------------------------------------------------------
+@pytest.mark.slow
 def test_reference_known_answers():
     """Answers known in closed form: the far curve passes (1, t^2, t^2) with 2e10 t (1 - t) + t^2 = 1;
     the arch's apex is 1/2 from its center of curvature; a straight curve lies on its line."""
@@ -207,6 +208,7 @@ def test_reference_known_answers():
 # ------------------------------------------------------------------------------------------------
 # the library against them
 # ------------------------------------------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", SOLVERS)
 @pytest.mark.parametrize("precision", list(TOL))
 @pytest.mark.parametrize("name", IDS)
@@ -224,6 +226,7 @@ def test_distance(name, precision, solver):
     assert np.asarray(d).dtype == dtype
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", SOLVERS)
 @pytest.mark.parametrize("name", IDS)
 def test_closest_points(name, solver):

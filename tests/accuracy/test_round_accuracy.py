@@ -467,6 +467,7 @@ def test_reference_circle_formulations_agree():
         assert abs(fa - fb) <= R.mpf("1e-30") * max(1, c.a[3], c.b[3]), c.id
 
 
+@pytest.mark.slow
 def test_reference_disk_intersection_consistent():
     """The chord-overlap intersection test agrees with the rim formula (which is valid for meeting
     disks too: an end point of the common chord lies on one rim and in the other disk)."""
@@ -499,6 +500,7 @@ def test_reference_degree5_has_many_minima():
         assert len(values) >= 3, (c.id, values)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", [c for c in HARD if c.unique in (True, False)], ids=lambda c: c.id)
 def test_reference_agrees_with_stated_unique(case):
     """Stated unique flags never contradict what the reference can see (it may be undecided)."""
@@ -521,6 +523,7 @@ def test_reference_inclusions():
 ORDERS = ["ab", "ba"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("order", ORDERS)
 @pytest.mark.parametrize("case", ALL, ids=lambda c: c.id)
 def test_distance(case, order):
@@ -532,6 +535,7 @@ def test_distance(case, order):
     assert abs(d - dref) <= tol, f"distance {d!r} vs reference {dref!r}: error {abs(d - dref):.3e} > {tol:.3e}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("order", ORDERS)
 @pytest.mark.parametrize("case", ALL, ids=lambda c: c.id)
 def test_closest_points(case, order):
@@ -562,6 +566,7 @@ def test_closest_points(case, order):
         assert bool(r.unique) == want, f"unique = {r.unique}, expected {want}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", ALL, ids=lambda c: c.id)
 def test_symmetric(case):
     A, B = make(case.a), make(case.b)

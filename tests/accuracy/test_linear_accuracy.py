@@ -134,6 +134,7 @@ def cases():
 CASES = cases()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", CASES, ids=[f"{c[1]}-{c[3]}-{c[0]}-{i}" for i, c in enumerate(CASES)])
 def test_linear_pairs_against_the_reference(case):
     name, ka, a, kb, b = case

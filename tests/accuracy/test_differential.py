@@ -88,7 +88,7 @@ SCALAR_EVERY = 4      # scalar calls on every 4th case
 # The direct 50-digit comparison takes the first case of every (family, kind pair), except for a
 # Bezier curve against a point, line, ray or segment (whose reference costs ~0.5 s a case): one
 # (family, pair) each, an adversarial one.  Their other families' findings are confirmed against
-# the same references all the same, and tests/test_bezier_point_linear.py compares them directly.
+# the same references all the same, and tests/pairs/test_bezier_point_linear.py compares them directly.
 DIRECT_BEZIER_LINEAR = {("bezier", "point"): "bezier_large_linear", ("bezier", "line"): "bezier_tangent_line",
                         ("bezier", "ray"): "bezier_crossing", ("bezier", "segment"): "bezier_far_control_linear"}
 
@@ -161,6 +161,7 @@ def describe(findings, limit=12):
     return "\n".join(lines)
 
 
+@pytest.mark.slow
 def test_slice_covers_every_family_and_kind_pair(results):
     seen = collections.Counter((c["family"], (c["a"], c["b"])) for c in results["cases"])
     for family, (pairs, _) in D.FAMILIES.items():
@@ -172,10 +173,11 @@ def test_slice_covers_every_family_and_kind_pair(results):
 # Classes that still fail, each stated in the note on issue 14. Any other finding in the family
 # fails the test, and so does a known class that stops failing (remove it here then).
 # None: the last (the polished policy's unique=True for an arc lying on a coaxial circle's rim) is
-# fixed and kept in tests/test_regressions.py::test_unique_coaxial_arc.
+# fixed and kept in tests/accuracy/test_regressions_arc.py::test_unique_coaxial_arc.
 KNOWN_FAILURES: dict = {}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("family", list(D.FAMILIES))
 def test_no_confirmed_findings(results, family):
     bad = [f for f in results["findings"] if f["family"] == family and f.get("confirmed")]
@@ -189,6 +191,7 @@ def test_no_confirmed_findings(results, family):
         pytest.xfail("; ".join(f"{family} {pair}: {why}" for pair, why in known.items()))
 
 
+@pytest.mark.slow
 def test_screen_false_alarms_and_reference_misses(results):
     """The tools themselves: no screen alarm that the 50-digit reference refutes, no reference
     that misses a pair the screen found (a reference above a genuine pair is wrong), no screen
@@ -210,7 +213,7 @@ def test_screen_false_alarms_and_reference_misses(results):
 
 # ---- the tools on their own (no library call) ------------------------------------------------
 def far_curve_case():
-    """The long run's false bezier_large finding (circledist_cases/scenes.py, tests/test_regressions.py): a degree-1 curve 2e4
+    """The long run's false bezier_large finding (circledist_cases/scenes.py, tests/accuracy/test_regressions_bezier.py): a degree-1 curve 2e4
     long passing a ring of radius 0.78, with two local minima 2.5e-5 apart in t whose values
     differ by 5.9e-13; both tools used to refine only the higher one."""
     from circledist_cases.scenes import FAR_CURVE_CONTROL, FAR_CURVE_DISTANCE, FAR_CURVE_RING

@@ -34,6 +34,7 @@ def long_batch():
     return _disks(200_000, 1), _disks(200_000, 2)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(CALLS))
 @pytest.mark.parametrize("workers", [1, 2])
 def test_reports_during_and_at_the_end(long_batch, name, workers):
@@ -153,6 +154,7 @@ def crowded():
             cd.Disk(rng.uniform(0, 60, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 0.6, n)))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(ALL_PAIRS))
 @pytest.mark.parametrize("workers", [1, 2])
 def test_all_pairs_report_in_stages(crowded, name, workers):

@@ -112,6 +112,7 @@ def _corpus():
     return valid, docs
 
 
+@pytest.mark.slow
 def test_validator_agrees_with_jsonschema_on_a_corpus():
     import jsonschema
 
@@ -134,6 +135,7 @@ def test_validator_agrees_with_jsonschema_on_a_corpus():
         sf.scene_from_json(doc, "valid.json")
 
 
+@pytest.mark.slow
 def test_compiled_predicates_decide_as_the_step_by_step_check():
     """The validator answers well-formed documents with compiled predicates and composes messages
     step by step only where one fails; both must agree exactly on every document and entry, and
@@ -196,6 +198,7 @@ def big_scene():
     ("unknown field", lambda s: s.update(colour="red"), "$.shapes[150000].colour (shape 's150000')",
      "unknown field (allowed: name, kind, count, center, normal, radius, sweep)"),
 ])
+@pytest.mark.slow
 def test_a_bad_entry_deep_in_a_large_file_is_reported_as_in_a_small_one(big_scene, label, mutate, where, message):
     """The fast paths for large files (compiled schema, single shapes checked as columns) report
     the first bad entry exactly as the step-by-step check does, with its index."""
@@ -635,6 +638,8 @@ def test_help_documents_the_format():
         assert json.loads(f.read()) == sf.schema()
 
 
+@pytest.mark.slow
+@pytest.mark.serial
 def test_million_shape_npz_scene(tmp_path):
     """10^6 swept points and a ring in an .npz: written, read (vectorized checks), and the nearest
     three points of the ring found through the CLI equal brute force over the batch."""
@@ -700,7 +705,7 @@ def test_installed_package_holds_every_file_of_the_source_package():
     importlib.resources from wherever circledist is installed."""
     import os
 
-    source = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python", "circledist")
+    source = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python", "circledist")
     if not os.path.isdir(source):
         pytest.skip("no source tree next to the tests")
     wanted = set()

@@ -4,7 +4,7 @@ consumer project (it builds examples/quick.cpp, which must be the README's block
 import pathlib
 import re
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
 
 

@@ -159,6 +159,7 @@ def _scale(r):
 WORKING_PRECISION_FLOOR = mpf("1e-45")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", VALIDATION_CASES, ids=[c.id for c in VALIDATION_CASES])
 def test_reference_two_formulations_agree(case):
     """Rim (theta) formulation vs line-parameter formulation, 50 digits each."""
@@ -170,6 +171,7 @@ def test_reference_two_formulations_agree(case):
         f"rim {mp.nstr(r.distance, 25)} vs line-parameter {mp.nstr(alt, 25)}")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", VALIDATION_CASES, ids=[c.id for c in VALIDATION_CASES])
 def test_reference_points_consistent(case):
     """Reference points lie on their shapes and realise the reference distance."""
@@ -187,6 +189,7 @@ BRUTE_CASES = [c for c in VALIDATION_CASES if c.offset == 0.0 and
                (c.random or c.orientation == "tilt")]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", BRUTE_CASES, ids=[c.id for c in BRUTE_CASES])
 def test_reference_vs_brute_force(case):
     r = ref.reference(case.lin_kind, case.lin_data, case.round_kind, case.round_data)
@@ -203,6 +206,7 @@ POINT_DISK_CASES = [c for c in VALIDATION_CASES if c.lin_kind == "point" and
                     c.round_kind == "disk"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", POINT_DISK_CASES, ids=[c.id for c in POINT_DISK_CASES])
 def test_point_disk_closed_form_vs_candidates(case):
     """The closed form of the note against the rim/end-point route of the disk reference."""
@@ -218,6 +222,7 @@ def _perm(v, p, signs):
 SYMMETRY_CASES = [c for c in VALIDATION_CASES if c.random][::3]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", SYMMETRY_CASES, ids=[c.id for c in SYMMETRY_CASES])
 @pytest.mark.parametrize("perm", [((1, 2, 0), (1, 1, 1)), ((2, 0, 1), (-1, 1, -1)),
                                   ((0, 2, 1), (1, -1, 1))], ids=["yzx", "zxy_neg", "xzy_refl"])

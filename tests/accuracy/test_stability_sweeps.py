@@ -35,6 +35,7 @@ def test_tangent_lift_reference_is_the_height():
             assert abs(ref - mpf(c.exact)) <= mpf("1e-30") * max(ref, 1)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", CASES, ids=[c.label.replace(" ", "_") for c in CASES])
 def test_default_policy_within_bar(cd, case):
     a, b = sweeps.make_shapes(cd, case.kind, case.values)
