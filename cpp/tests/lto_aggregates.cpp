@@ -13,6 +13,8 @@
 
 #include "check.hpp"
 
+namespace lto_aggregates {
+
 int main() {
   using circledist::Vec3;
   const double control[8][3] = {
@@ -39,3 +41,7 @@ int main() {
   CHECK(std::abs(bracketing - truth) <= bar);
   return check::finish("lto_aggregates");
 }
+
+}  // namespace lto_aggregates
+
+CHECK_SUITE(lto_aggregates);

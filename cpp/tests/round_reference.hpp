@@ -23,20 +23,6 @@
 #include <type_traits>
 #include <vector>
 
-// Whether the test runs under the address sanitizer (tools/run.sh test: every C++ test at -O1 with
-// address and undefined-behaviour checks, within 600 s in all), where a test draws a tenth of its
-// random cases: the references' dense sampling is most of its time, and the hard cases, all run,
-// are what the sanitizers are for. (test_bezier_arc.cpp; test_arc.cpp and test_annulus.cpp test
-// the same themselves.)
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define CIRCLEDIST_TEST_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) && !defined(CIRCLEDIST_TEST_SANITIZED)
-#define CIRCLEDIST_TEST_SANITIZED 1
-#endif
-
 using namespace circledist;
 using LD = long double;
 using V3 = Vec3<LD>;

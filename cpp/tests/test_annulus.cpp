@@ -23,21 +23,10 @@
 #include <random>
 #include <vector>
 
-// The random draws' multiplier, as test_arc.cpp's: a tenth under the sanitizers (tools/run.sh
-// test runs every C++ test at -O1 with address and undefined-behaviour checks within 600 s);
-// the hard cases all run.
-#ifndef ANNULUS_RANDOM_SCALE
-#if defined(__SANITIZE_ADDRESS__)
-#define ANNULUS_RANDOM_SCALE 0.1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ANNULUS_RANDOM_SCALE 0.1
-#endif
-#endif
-#endif
-#ifndef ANNULUS_RANDOM_SCALE
-#define ANNULUS_RANDOM_SCALE 1
-#endif
+namespace test_annulus {
+
+// Random draws: check::scaled(n) of them (a tenth under the sanitizers, check.hpp); the hard
+// cases all run at any scale.
 
 using Annulus = Annulus3<double>;
 using Line = Line3<double>;
@@ -278,7 +267,7 @@ void point_tests() {
   annulus_case(k, "radius ratio 1e-3", V3d(0.5, 0, 0.2), Annulus{kO, kZ, 1e-3, 1}, 0.2L, 1);
   annulus_case(k, "radius ratio 1e3", V3d(999.5, 0, 0.2), Annulus{kO, kZ, 1000, 1001}, std::sqrt(0.25L + 0.04L), 1);
   Draw d(3);
-  for (int i = 0; i < int(200 * ANNULUS_RANDOM_SCALE) + 20; ++i) {
+  for (int i = 0; i < check::scaled(200) + 20; ++i) {
     const Annulus a = d.annulus();
     const V3d p = a.center + 1.5 * a.outer_radius * d.vec();
     annulus_case(k, "random", p, a, ref_point(p, a));
@@ -327,7 +316,7 @@ template <class Piece> void piece_tests(const std::string& k) {
     annulus_case(k, "radius ratio 1e3", p, big, ref_piece_annulus(p, big));
   }
   Draw d(11);
-  for (int i = 0; i < int(60 * ANNULUS_RANDOM_SCALE) + 6; ++i) {
+  for (int i = 0; i < check::scaled(60) + 6; ++i) {
     const Annulus a = d.annulus();
     const Piece p = piece_from<Piece>(a.center + 1.5 * a.outer_radius * d.vec(), a.center + 1.5 * a.outer_radius * d.vec());
     annulus_case(k, "random", p, a, ref_piece_annulus(p, a));
@@ -396,10 +385,10 @@ void circle_tests() {
     const Annulus outer{r.a.center, r.a.normal, 0.4 * r.a.radius, r.a.radius}, inner{r.a.center, r.a.normal, r.a.radius, 2.5 * r.a.radius};
     annulus_case(k, "tangent to the outer rim", r.b, outer, ref_circle_annulus(r.b, outer));
     annulus_case(k, "tangent to the inner rim", r.b, inner, ref_circle_annulus(r.b, inner));
-    if (++n >= int(48 * ANNULUS_RANDOM_SCALE) + 6) break;
+    if (++n >= check::scaled(48) + 6) break;
   }
   Draw d(17);
-  for (int i = 0; i < int(60 * ANNULUS_RANDOM_SCALE) + 6; ++i) {
+  for (int i = 0; i < check::scaled(60) + 6; ++i) {
     const Annulus a = d.annulus();
     const Circle c{a.center + a.outer_radius * d.vec(), d.vec(), d.radius()};
     annulus_case(k, "random", c, a, ref_circle_annulus(c, a));
@@ -422,7 +411,7 @@ void disk_tests() {
   annulus_case(k, "standing, hole to ring", Disk{V3d(0.5, 0, 0.3), kY, 0.8}, kRing, 0, 0);
   annulus_case(k, "standing on the inner rim", Disk{V3d(0.5, 0, 0.5), kY, std::sqrt(0.5)}, kRing, 0, 1);
   Draw d(19);
-  for (int i = 0; i < int(40 * ANNULUS_RANDOM_SCALE) + 4; ++i) {
+  for (int i = 0; i < check::scaled(40) + 4; ++i) {
     const Annulus a = d.annulus();
     const Disk x{a.center + a.outer_radius * d.vec(), d.vec(), d.radius()};
     annulus_case(k, "random", x, a, ref_disk_annulus(x, a));
@@ -433,7 +422,7 @@ void disk_tests() {
   for (const RoundCase& r : tangent_round_cases()) {
     const Annulus inner{r.a.center, r.a.normal, r.a.radius, 2.5 * r.a.radius};
     annulus_case(k, "tangent to the inner rim", r.db, inner, ref_disk_annulus(r.db, inner));
-    if (++n >= int(24 * ANNULUS_RANDOM_SCALE) + 4) break;
+    if (++n >= check::scaled(24) + 4) break;
   }
 }
 
@@ -468,7 +457,7 @@ void annulus_annulus_tests() {
     annulus_case(k, "radius ratio 1e3", big, kRing, ref_annulus_annulus(big, kRing));
   }
   Draw d(23);
-  for (int i = 0; i < int(30 * ANNULUS_RANDOM_SCALE) + 3; ++i) {
+  for (int i = 0; i < check::scaled(30) + 3; ++i) {
     const Annulus a = d.annulus(), b0 = d.annulus();
     const Annulus b{a.center + a.outer_radius * b0.center, b0.normal, b0.inner_radius, b0.outer_radius};
     annulus_case(k, "random", b, a, ref_annulus_annulus(b, a));
@@ -481,7 +470,7 @@ void annulus_annulus_tests() {
 // in-plane axis (coplanar overlaps, circles and disks in the hole or across a rim).
 void coplanar_tests() {
   Draw d(37);
-  for (int i = 0; i < int(40 * ANNULUS_RANDOM_SCALE) + 6; ++i) {
+  for (int i = 0; i < check::scaled(40) + 6; ++i) {
     const Annulus a = d.annulus();
     const Frame<double> f(a.normal);
     const double tilt = i % 3 == 0 ? 0.0 : i % 3 == 1 ? 1e-9 : 1e-5;
@@ -544,7 +533,7 @@ void arc_tests() {
   annulus_case(k, "whole", Arc{V3d(0.2, 0.1, 0.3), unit(1, 2, 3), 0.7, kX, 7}, kRing,
                ref_circle_annulus(Circle{V3d(0.2, 0.1, 0.3), unit(1, 2, 3), 0.7}, kRing));
   Draw d(41);
-  for (int i = 0; i < int(40 * ANNULUS_RANDOM_SCALE) + 4; ++i) {
+  for (int i = 0; i < check::scaled(40) + 4; ++i) {
     const Annulus a = d.annulus();
     const Arc arc{a.center + a.outer_radius * d.vec(), d.vec(), d.radius(), d.vec(), 6.28 * d.uniform(d.rng)};
     annulus_case(k, "random", arc, a, ref_arc_annulus(arc, a));
@@ -567,7 +556,7 @@ void arc_tests() {
 // The eigenvalue root policies on random scenes of the polynomial families.
 void policy_tests() {
   Draw d(29);
-  for (int i = 0; i < int(20 * ANNULUS_RANDOM_SCALE) + 3; ++i) {
+  for (int i = 0; i < check::scaled(20) + 3; ++i) {
     const Annulus a = d.annulus();
     const Circle c{a.center + a.outer_radius * d.vec(), d.vec(), d.radius()};
     const Segment s{a.center + 1.5 * a.outer_radius * d.vec(), a.center + 1.5 * a.outer_radius * d.vec()};
@@ -694,3 +683,7 @@ int main(int argc, char** argv) {
   }
   return check::finish("annulus");
 }
+
+}  // namespace test_annulus
+
+CHECK_SUITE(test_annulus);

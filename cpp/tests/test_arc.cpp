@@ -17,6 +17,8 @@
 #include <random>
 #include <vector>
 
+namespace test_arc {
+
 using Arc = Arc3<double>;
 using Line = Line3<double>;
 using Ray = Ray3<double>;
@@ -24,22 +26,8 @@ using Segment = Segment3<double>;
 using Circle = Circle3<double>;
 using Disk = Disk3<double>;
 
-// The random draws' multiplier (a longer run: -DARC_RANDOM_SCALE=10). Under the sanitizers
-// (tools/run.sh test: every C++ test at -O1 with address and undefined-behaviour checks, within
-// 600 s in all) a tenth of the draws: the references' dense sampling is most of this test's
-// time, and the hard cases, all run, are what the sanitizers are for.
-#ifndef ARC_RANDOM_SCALE
-#if defined(__SANITIZE_ADDRESS__)
-#define ARC_RANDOM_SCALE 0.1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ARC_RANDOM_SCALE 0.1
-#endif
-#endif
-#endif
-#ifndef ARC_RANDOM_SCALE
-#define ARC_RANDOM_SCALE 1
-#endif
+// Random draws: check::scaled(n) of them (a tenth under the sanitizers, check.hpp): the
+// references' dense sampling is most of this test's time; the hard cases all run at any scale.
 
 namespace {
 
@@ -248,7 +236,7 @@ void point_tests() {
   // No projection of the start: the arc starts at Frame's U, (0, 1, 0) for the normal z.
   arc_case("point-arc", "start along the normal", V3d(2, 0, 0), Arc{o, z, 1, z, 1}, std::sqrt(5.0L), 1);
   Draw d(11);
-  for (int k = 0; k < int(200 * ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(200); ++k) {
     const Arc a = d.arc();
     const V3d p = a.center + 2 * d.vec();
     arc_case("point-arc", "random", p, a, ref_point_arc(p, a));
@@ -269,7 +257,7 @@ Ray far_back(const Ray& r, double far) { return {r.origin - far * r.direction.no
 Segment far_back(const Segment& s, double far) { return {s.p0 - far * (s.p1 - s.p0).normalized(), s.p1}; }
 
 template <class Piece> void piece_random(const char* kind, Draw& d, const std::function<Piece(Draw&, const Arc&)>& draw) {
-  for (int k = 0; k < int(120 * ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(120); ++k) {
     const Arc a = d.arc();
     const Piece p = draw(d, a);
     arc_case(kind, "random", p, a, ref_piece_arc(p, a));
@@ -337,7 +325,7 @@ void piece_tests() {
   });
   // Lines tangent to an arc's circle at random angles, the arc holding the tangency, ending at
   // it, or missing it; offset by 0 or up to 1e-12..1 off the circle.
-  for (int k = 0; k < int(60 * ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(60); ++k) {
     const V3d c = d.vec(), n = d.vec().normalized();
     const double r = d.radius(), t = kTurn * d.uniform(d.rng);
     const Frame<double> f(n);
@@ -396,7 +384,7 @@ template <class Round3> void round_tests(const char* kind) {
     arc_case(kind, "arc 1e3 the round", Round3{o, z, 1}, big, ref_round_arc(Round3{o, z, 1}, big));
   }
   Draw d(disk ? 31 : 37);
-  for (int k = 0; k < int(100 * ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(100); ++k) {
     const Arc a = d.arc();
     const Round3 s{d.vec(), d.vec(), d.radius()};
     arc_case(kind, "random", s, a, ref_round_arc(s, a));
@@ -449,7 +437,7 @@ void arc_arc_tests() {
   arc_arc_case("zero radius", quarter, Arc{V3d(2, 0, 0), z, 0, x, 1}, 1, 1);
   arc_arc_case("both whole", Arc{o, z, 1, x, kTurn}, Arc{V3d(3, 0, 0), y, 1, x, kTurn}, 1);
   Draw d(41);
-  for (int k = 0; k < int(40 * ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(40); ++k) {
     const Arc a = d.arc(), b{d.vec(), d.vec(), d.radius(), d.vec(), d.angle()};
     const LD truth = ref_arc_arc(a, b);
     arc_arc_case("random", a, b, truth);
@@ -488,7 +476,7 @@ void precision_tests() {
   CHECK_NEAR(closest_points(f_arc, Segment3<float>{s.p0.cast<float>(), s.p1.cast<float>()}).distance, segment_truth, 1e-5);
   // The eigenvalue root policies.
   Draw d(53);
-  for (int k = 0; k < int(30 * ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(30); ++k) {
     const Arc b = d.arc();
     const Circle e{d.vec(), d.vec(), d.radius()};
     const Segment g{b.center + d.vec(), b.center + d.vec()};
@@ -551,7 +539,7 @@ template <class Run> void each_kind_against(Draw& d, Run&& run) {
 void start_length_tests() {
   Draw d(20261126);
   int same = 0, close = 0;
-  for (int i = 0; i < int(200 * ARC_RANDOM_SCALE) + 1; ++i) {
+  for (int i = 0; i < check::scaled(200) + 1; ++i) {
     Arc a = d.arc();
     a.angle = std::min(a.angle, 6.0);  // a whole arc is its circle, which has no start
     each_kind_against(d, [&](const auto& s) { start_length_case(s, a, same, close); });
@@ -598,7 +586,7 @@ void normal_length_tests() {
   // The reported line: 0.8525 for 0.9405 at a normal of 1e-80.
   const Arc reported{V3d(0, 0, 0), V3d(-0.1, 0.0, -0.3), 1.0, V3d(0.9, 0.1, 1.2), 3.141592653589793};
   normal_length_case(Line{V3d(1.0, 2.4, -2.6), V3d(0.3, -0.7, 0.8)}, reported, powers, decimal);
-  for (int i = 0; i < int(100 * ARC_RANDOM_SCALE) + 1; ++i) {
+  for (int i = 0; i < check::scaled(100) + 1; ++i) {
     Arc a = d.arc();
     a.angle = std::min(a.angle, 6.0);  // a whole arc is its circle, which has no start
     each_kind_against(d, [&](const auto& s) { normal_length_case(s, a, powers, decimal); });
@@ -621,3 +609,7 @@ int main() {
     if (!counts.count(kind)) std::printf("  %s: worst relative error %.3g\n", kind.c_str(), w);
   return check::finish("arc");
 }
+
+}  // namespace test_arc
+
+CHECK_SUITE(test_arc);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+namespace test_bezier {
+
 void bezier_tests() {
   const V3d o(0, 0, 0), z(0, 0, 1);
   const Disk3<double> disk{o, z, 1};
@@ -85,3 +87,7 @@ int main() {
       });
   return finish_round("bezier");
 }
+
+}  // namespace test_bezier
+
+CHECK_SUITE(test_bezier);

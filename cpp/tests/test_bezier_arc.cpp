@@ -23,19 +23,14 @@
 #include <string>
 #include <vector>
 
+namespace test_bezier_arc {
+
 using Arc = Arc3<double>;
 using Annulus = Annulus3<double>;
 using Curve = BezierCurve3<double>;
 
-// The random draws' multiplier (a longer run: -DBEZIER_ARC_RANDOM_SCALE=10; a tenth under the
-// sanitizers, round_reference.hpp).
-#ifndef BEZIER_ARC_RANDOM_SCALE
-#ifdef CIRCLEDIST_TEST_SANITIZED
-#define BEZIER_ARC_RANDOM_SCALE 0.1
-#else
-#define BEZIER_ARC_RANDOM_SCALE 1
-#endif
-#endif
+// Random draws: check::scaled(n) of them (a longer run: CIRCLEDIST_TEST_SCALE=10; a tenth under
+// the sanitizers, check.hpp).
 
 namespace {
 
@@ -249,7 +244,7 @@ template <class S> void degrees_and_translated(const std::string& family, const 
 // Random shapes (`shape_of(draw)`) against random curves of degree 1 + k % 7 around them.
 template <class ShapeOf> void random_cases(const std::string& family, std::uint64_t seed, const ShapeOf& shape_of) {
   Draw d(seed);
-  for (int k = 0; k < int(140 * BEZIER_ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(140); ++k) {
     const auto s = shape_of(d);
     const Curve b = d.curve(1 + k % 7, s.center + 0.7 * d.vec());
     full_case(family, "random", b, s, ref_of(b, s));
@@ -347,7 +342,7 @@ void arc_hard() {
 // 20000 such draws of degrees 1..7 were answered up to 0.22 too far; these draws hold such cases.)
 void arc_near_ends() {
   Draw d(5);
-  for (int k = 0; k < int(70 * BEZIER_ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(70); ++k) {
     const Arc a{V3d(0, 0, 0), V3d(0, 0, 1), 1, V3d(1, 0, 0), 0.2 + 2 * d.uniform(d.rng)};
     const V3d e = k % 2 ? V3d(1, 0, 0) : V3d(std::cos(a.angle), std::sin(a.angle), 0);
     const Curve b = d.curve(1 + k % 7, e, 0.6);
@@ -525,7 +520,7 @@ void annulus_crossing() {
                          3.0744569231399432});
   }
   Draw d(35);
-  for (int k = 0; k < int(200 * BEZIER_ARC_RANDOM_SCALE); ++k) {
+  for (int k = 0; k < check::scaled(200); ++k) {
     const V3d c = d.vec(), n = d.vec().normalized();
     const double outer = 0.2 + 2.8 * d.uniform(d.rng);
     const double inner = outer * (k % 5 == 0 ? 1e-6 : 0.05 + 0.85 * d.uniform(d.rng));
@@ -610,3 +605,7 @@ int main() {
   for (const auto& [kind, n] : counts) std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
   return check::finish("bezier-arc");
 }
+
+}  // namespace test_bezier_arc
+
+CHECK_SUITE(test_bezier_arc);

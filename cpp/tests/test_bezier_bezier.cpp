@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_bezier_bezier {
+
 using namespace circledist;
 
 namespace {
@@ -196,3 +198,7 @@ int main() {
   continua_and_degenerate();
   return check::finish("test_bezier_bezier");
 }
+
+}  // namespace test_bezier_bezier
+
+CHECK_SUITE(test_bezier_bezier);

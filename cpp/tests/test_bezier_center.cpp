@@ -1,5 +1,5 @@
 // Bezier curves through or near the center of a circle or disk, every root policy, against an
-// independent long double reference (issue 14). No library code is used for the reference: the
+// independent long double reference. No library code is used for the reference: the
 // curve is evaluated by de Casteljau in long double relative to the round's center, the distance
 // of a point to the circle or disk is the elementary projection on the round's plane, and the
 // minimum over t in [0, 1] is found by dense sampling (10^5 samples for the fixed cases, 2 10^4
@@ -31,6 +31,8 @@
 #include <string>
 #include <type_traits>
 #include <vector>
+
+namespace test_bezier_center {
 
 using namespace circledist;
 using LD = long double;
@@ -140,7 +142,7 @@ BezierCurve3<double> curve_of(const std::vector<V3d>& points) {
   return b;
 }
 
-// tests/accuracy/test_open_findings.py (issue 14): degree 6, the middle control point at the center;
+// A case once listed among the open findings: degree 6, the middle control point at the center;
 // 50-digit reference for the circle 0.1601137907534006.
 Scene finding() {
   const std::vector<V3d> points = {
@@ -151,7 +153,7 @@ Scene finding() {
       {-1.1056499481201172, 0.15143021941184998, -1.0667861700057983},
       {-1.8597793579101562, -1.698048710823059, -1.4211431741714478},
       {-1.4711765050888062, -0.8067324161529541, -1.4313586950302124}};
-  return {"issue 14 finding", curve_of(points), V3d(-1.1054109334945679, -0.7729302644729614, -1.427234172821045),
+  return {"open finding", curve_of(points), V3d(-1.1054109334945679, -0.7729302644729614, -1.427234172821045),
           V3d(-0.37762004137039185, -0.29596588015556335, 1.6394959688186646), 0.5424387454986572};
 }
 
@@ -391,3 +393,7 @@ int main() {
     std::printf("%s: %d failures, largest relative error %.3g\n", kPolicies[p], failures[p], worst[p]);
   return check::finish("bezier_center");
 }
+
+}  // namespace test_bezier_center
+
+CHECK_SUITE(test_bezier_center);

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace test_bezier_linear {
+
 using namespace circledist;
 
 namespace {
@@ -105,3 +107,7 @@ int main() {
   degenerate();
   return check::finish("test_bezier_linear");
 }
+
+}  // namespace test_bezier_linear
+
+CHECK_SUITE(test_bezier_linear);

@@ -19,6 +19,8 @@
 #include <variant>
 #include <vector>
 
+namespace test_broadphase {
+
 using namespace circledist;
 
 namespace {
@@ -420,3 +422,7 @@ int main() {
   CHECK(exercised > 20000);
   return check::finish("test_broadphase");
 }
+
+}  // namespace test_broadphase
+
+CHECK_SUITE(test_broadphase);

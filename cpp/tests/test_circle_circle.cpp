@@ -9,6 +9,8 @@
 #include <random>
 #include <vector>
 
+namespace test_circle_circle {
+
 void circle_circle_tests() {
   const V3d o(0, 0, 0), z(0, 0, 1);
   circle_circle_case("coplanar overlapping", {o, z, 1}, {V3d(1, 0, 0), z, 1}, 0, 0);
@@ -76,7 +78,7 @@ void pruning_tests() {
   auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
   auto radius = [&] { return std::exp(0.7 * normal(rng)); };
   int pruned = 0, total = 0;
-  for (int k = 0; k < 300; ++k) {
+  for (int k = 0; k < check::scaled(300); ++k) {  // a tenth under the sanitizers (check.hpp)
     Circle3<double> a{vec(), vec(), radius()}, b{vec(), vec(), radius()};
     if (k % 3 == 1) b.center = a.center + a.radius * Frame<double>(a.normal).u + 1e-9 * vec();  // touching
     if (k % 3 == 2) b = {a.center + a.radius * Frame<double>(a.normal).u, Frame<double>(a.normal).u, a.radius};  // linked
@@ -122,3 +124,7 @@ int main() {
       [](const auto& s) { return precision_rows(s.a, s.b, s.ad, s.bd, ref::circle_circle); });
   return finish_round("circle_circle");
 }
+
+}  // namespace test_circle_circle
+
+CHECK_SUITE(test_circle_circle);

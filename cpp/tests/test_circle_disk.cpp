@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+namespace test_circle_disk {
+
 void circle_disk_tests() {
   const V3d o(0, 0, 0), z(0, 0, 1);
   circle_disk_case("in the disk's plane, inside", {V3d(0.2, 0.1, 0), z, 0.5}, {o, z, 1}, 0, 0);
@@ -60,3 +62,7 @@ int main() {
       [](const auto& s) { return precision_rows(s.a, s.db, s.ad, s.dbd, ref::circle_disk); });
   return finish_round("circle_disk");
 }
+
+}  // namespace test_circle_disk
+
+CHECK_SUITE(test_circle_disk);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+namespace test_disk_disk {
+
 void disk_disk_tests() {
   const V3d o(0, 0, 0), z(0, 0, 1);
   disk_disk_case("coplanar overlapping", {o, z, 1}, {V3d(1, 0.5, 0), z, 1}, 0, 0);
@@ -43,3 +45,7 @@ int main() {
       [](const auto& s) { return precision_rows(s.da, s.db, s.dad, s.dbd, ref::disk_disk); });
   return finish_round("disk_disk");
 }
+
+}  // namespace test_disk_disk
+
+CHECK_SUITE(test_disk_disk);

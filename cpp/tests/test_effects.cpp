@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_effects {
+
 using namespace circledist;
 
 namespace {
@@ -161,3 +163,7 @@ int main() {
   precisions<long double>();
   return check::finish("test_effects");
 }
+
+}  // namespace test_effects
+
+CHECK_SUITE(test_effects);

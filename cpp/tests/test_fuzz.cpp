@@ -1,4 +1,4 @@
-// A bounded C++ fuzz driver (issue 15): random and extreme inputs for every pair of shapes, in
+// A bounded C++ fuzz driver: random and extreme inputs for every pair of shapes, in
 // both orders, through distance() and closest_points() of every root policy. Built and run with
 // the other tests, and under AddressSanitizer and UndefinedBehaviorSanitizer by
 // `bash tools/run.sh test`: a buffer overrun or undefined behavior stops it there. Asserted here:
@@ -13,6 +13,8 @@
 #include <random>
 
 #include "check.hpp"
+
+namespace test_fuzz {
 
 using namespace circledist;
 
@@ -64,7 +66,7 @@ BezierCurve3<Real> make_bezier(Scene& s) {
   const int count = std::uniform_int_distribution<int>(2, kMaxBezierDegree + 1)(rng);
   b.control.resize(3, count);
   for (int i = 0; i < count; ++i) b.control.col(i) = s.near();
-  // One dominant control point: the stack overflow of issue 15 item 1.
+  // One dominant control point: it once overflowed the stack.
   if (uniform(0, 1) < 0.3) b.control.col(count / 2) = vector(s.scale * std::pow(Real(10), uniform(2, 200)));
   return b;
 }
@@ -120,3 +122,7 @@ int main() {
   fuzz_pair<V, Segment3<Real>>("point-segment", make_point, make_segment, n);
   return check::finish("fuzz");
 }
+
+}  // namespace test_fuzz
+
+CHECK_SUITE(test_fuzz);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_line_disk {
+
 using namespace circledist;
 
 template <class Real> void analytic_cases() {
@@ -38,3 +40,7 @@ int main() {
   analytic_cases<long double>();
   return check::finish("line_disk");
 }
+
+}  // namespace test_line_disk
+
+CHECK_SUITE(test_line_disk);

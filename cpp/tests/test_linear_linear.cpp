@@ -12,6 +12,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_linear_linear {
+
 using namespace circledist;
 
 namespace {
@@ -20,7 +22,7 @@ using V = Vec3<double>;
 test_random::Random source(20261122);
 
 void linear_cases() {
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < check::scaled(40); ++i) {  // a tenth under the sanitizers (check.hpp)
     const Segment3<double> a = source.segment(2), b = source.segment(2);
     const double d = distance(a, b);
     double sampled = std::numeric_limits<double>::infinity();
@@ -157,3 +159,7 @@ int main() {
   near_largest_cases();
   return check::finish("test_linear_linear");
 }
+
+}  // namespace test_linear_linear
+
+CHECK_SUITE(test_linear_linear);

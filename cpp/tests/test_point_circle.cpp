@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_point_circle {
+
 using namespace circledist;
 
 template <class Real> void analytic_cases() {
@@ -25,3 +27,7 @@ int main() {
   analytic_cases<long double>();
   return check::finish("point_circle");
 }
+
+}  // namespace test_point_circle
+
+CHECK_SUITE(test_point_circle);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_point_disk {
+
 using namespace circledist;
 
 template <class Real> void analytic_cases() {
@@ -23,3 +25,7 @@ int main() {
   analytic_cases<long double>();
   return check::finish("point_disk");
 }
+
+}  // namespace test_point_disk
+
+CHECK_SUITE(test_point_disk);

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_sweep {
+
 using namespace circledist;
 
 namespace {
@@ -87,3 +89,7 @@ int main() {
   swept_cases();
   return check::finish("test_sweep");
 }
+
+}  // namespace test_sweep
+
+CHECK_SUITE(test_sweep);

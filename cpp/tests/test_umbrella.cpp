@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_umbrella {
+
 int main() {
   using namespace circledist;
   using V = Vec3<double>;
@@ -34,3 +36,7 @@ int main() {
   CHECK(!r.unique);  // both ends of the rod are 2 from the ring
   return check::finish("test_umbrella");
 }
+
+}  // namespace test_umbrella
+
+CHECK_SUITE(test_umbrella);
