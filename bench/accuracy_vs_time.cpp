@@ -1,7 +1,7 @@
 // accuracy_vs_time: distances and timings of every query kind x root policy x precision.
 //
 // Driven by bench/accuracy_vs_time.py, which writes the cases, computes 50-digit references and
-// turns this program's output into docs/accuracy_vs_time.md and the plots.
+// turns this program's output into docs/reports/accuracy_vs_time.md and the plots.
 //
 //   accuracy_vs_time CASES OUT [--min-time SECONDS] [--kinds a,b,...]
 //

@@ -1,4 +1,4 @@
-// bench_arc: the cost of each arc query against its circle counterpart (issue 19 asks for at most
+// bench_arc: the cost of each arc query against its circle counterpart (the target is at most
 // 1.3x), in one run on the same random shapes: an arc is its circle's fields plus a random start
 // and a random angle in (0.5, 6) rad; the circle counterpart replaces the arc by that circle (for
 // arc-arc, both arcs: circle-circle). distance() and closest_points() through the front end, in
@@ -10,7 +10,7 @@
 // repeats of a full pass's thread CPU time, over the pairs; the arc's and the circle's passes
 // alternate), and their ratio; then two "floor" lines: the sine and cosine of the arc's angle
 // against point-circle's distance, and the share of the draws whose point-arc answer is the far
-// end (the trigonometry it cannot do without). docs/arc.md "Cost".
+// end (the trigonometry it cannot do without). docs/derivations/arc.md "Cost".
 #include <circledist/circledist.hpp>
 
 #include <algorithm>
@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
   // The floor under point-arc: the sine and cosine of the arc's angle, which the far end's point
   // needs (there is no end point without them: the arc is given by its angle), timed alone in the
   // same loop against point-circle's whole distance. Where this ratio is above 0.3 a point-arc
-  // query that reaches its far end cannot stay within 1.3x point-circle (docs/arc.md "Cost").
+  // query that reaches its far end cannot stay within 1.3x point-circle (docs/derivations/arc.md "Cost").
   const PairTimes trig = time_pair(
       n, repeats, [&](int i) { return std::sin(arcs[i].angle) * points[i].x() + std::cos(arcs[i].angle) * points[i].y(); },
       [&](int i) { return distance(points[i], arc_circles[i]); }, sink);

@@ -76,7 +76,7 @@ def single_run(label, kind_a, kind_b, n, chunk):
 
 def pairs_run(client, n, chunk):
     rng = np.random.default_rng(4)
-    # Rings and segments at the density of issue 18's example (10^5 each in a 20 m cube), d = 5 cm.
+    # Rings and segments at the density of the scene example's (10^5 each in a 20 m cube), d = 5 cm.
     side = 20 * (n / 1e5) ** (1 / 3)
     rings = cd.Circle(rng.uniform(0, side, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.05, 0.2, n))
     at = rng.uniform(0, side, (n, 3))

@@ -24,7 +24,7 @@ template <class Real, class Visitor> void for_each_kind(Visitor&& v) {
   v.template add<BezierCurve3<Real>, Circle3<Real>>("bezier-circle");
   v.template add<BezierCurve3<Real>, Disk3<Real>>("bezier-disk");
   v.template add<BezierCurve3<Real>, BezierCurve3<Real>>("bezier-bezier");
-  // Arcs and annuli (issue 19): the arc or annulus second, the order the front end answers in.
+  // Arcs and annuli: the arc or annulus second, the order the front end answers in.
   v.template add<Vec3<Real>, Arc3<Real>>("point-arc");
   v.template add<Line3<Real>, Arc3<Real>>("line-arc");
   v.template add<Ray3<Real>, Arc3<Real>>("ray-arc");

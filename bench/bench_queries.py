@@ -47,14 +47,14 @@ DEFAULT_BINARY = ROOT / "build" / "cpp" / "bench" / "bench_queries"
 REPORT = ROOT / "docs" / "reports" / "benchmark.md"
 SEED = 20240601
 
-# Issue 2's targets.
+# The targets the benchmark page checks.
 TARGET_POINT_NS = 30.0  # point-circle and point-disk, C++ scalar
 TARGET_BATCH_RATIO = 1.10  # Python batch vs the C++ loop
 TARGET_SCALAR_US = 2.0  # one Python call
 TARGET_MEMORY = 0.10  # peak above inputs + outputs, 10^7 point-circle queries
 TARGET_PIECE_RATIO = 1.3  # rays and segments vs the full line, C++ scalar (exactness issue)
 TARGET_CLOSEST_RATIO = 2.0  # closest_points vs distance, both batched (exactness issue)
-TARGET_ARC_RATIO = 1.3  # an arc query vs its circle counterpart, C++ scalar (issue 19)
+TARGET_ARC_RATIO = 1.3  # an arc query vs its circle counterpart, C++ scalar
 
 
 # --------------------------------------------------------------------------------------------
@@ -67,7 +67,7 @@ class ShapeSpec:
 
 
 def _busy(load, cores):
-    """Whether the machine ran other work: the page says so in words, not as a load average."""
+    """Whether the machine ran other work (the page says so in words, without the figure)."""
     try:
         return float(str(load).split()[0]) > 0.5 * float(cores)
     except (ValueError, IndexError):
@@ -181,7 +181,7 @@ KINDS = [
     Kind("bezier-circle", "bezier", "circle"),
     Kind("bezier-disk", "bezier", "disk"),
     Kind("bezier-bezier", "bezier", "bezier"),
-    # Arcs and annuli (issue 19), after the others so that their inputs stay the same bytes.
+    # Arcs and annuli, after the others so that their inputs stay the same bytes.
     *(Kind(f"{a}-arc", a, "arc") for a in ("point", "line", "ray", "segment", "circle", "disk", "arc", "bezier")),
     *(Kind(f"{a}-annulus", a, "annulus")
       for a in ("point", "line", "ray", "segment", "circle", "disk", "arc", "annulus", "bezier")),
@@ -621,7 +621,7 @@ def targets(rows, mem):
                 r = row.cpp_ns / line.cpp_ns
                 out.append(f"- {piece}-{round_kind} C++ ≤ {TARGET_PIECE_RATIO:g}x line-{round_kind}: {r:.2f}x, "
                            f"{verdict(r <= TARGET_PIECE_RATIO)}")
-    # Issue 19: an arc query costs at most 1.3x its circle counterpart. Here each kind has its own
+    # The target: an arc query costs at most 1.3x its circle counterpart. Here each kind has its own
     # random inputs; bench/bench_arc.cpp compares on the same shapes (docs/derivations/arc.md).
     arcs = [(by[a].cpp_ns / by[c].cpp_ns, a, c) for a, c in ARC_COUNTERPART.items()
             if a in by and c in by and by[a].cpp_ns and by[c].cpp_ns]

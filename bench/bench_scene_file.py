@@ -1,4 +1,4 @@
-"""Building scenes (issue 18): the command line's read, check and answer, and write_scene, on a
+"""Building scenes: the command line's read, check and answer, and write_scene, on a
 JSON file of n single entries of every kind (no batches); the command line end to end (a process
 of its own, imports and output included); and Scene.add of single shapes, one by one, at a few
 scene sizes, and Scene.extend of one large batch.

@@ -357,7 +357,7 @@ BEZIER_SCENES = {
 # ------------------------------------------------------------------------------------------------
 X = (1.0, 0.0, 0.0)
 Y = (0.0, 1.0, 0.0)
-TWO_PI = 2 * math.pi  # float64's 2 pi: an arc of this angle is the whole circle (docs/arc.md)
+TWO_PI = 2 * math.pi  # float64's 2 pi: an arc of this angle is the whole circle (docs/derivations/arc.md)
 ARC_ANGLE = 1.5 * math.pi
 GAP = 1.75 * math.pi  # the middle of the local arc's gap
 

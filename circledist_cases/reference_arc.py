@@ -27,7 +27,7 @@ from . import reference_kit as K
 from . import reference_round as R
 
 mpf, ctx = K.mpf, K.ctx
-TWO_PI = 2 * math.pi     # float64's 2 pi: an angle >= this is the whole circle (docs/arc.md)
+TWO_PI = 2 * math.pi     # float64's 2 pi: an angle >= this is the whole circle (docs/derivations/arc.md)
 INTERVALS = 720
 
 

@@ -1,7 +1,7 @@
 """Stability sweeps: one-parameter families that walk toward a degeneracy.
 
 Shared by bench/accuracy_vs_time.py (error against k for every root policy, double, plotted into
-docs/stability_sweeps.png) and tests/accuracy/test_stability_sweeps.py (the default policy through the
+docs/reports/stability_sweeps.png) and tests/accuracy/test_stability_sweeps.py (the default policy through the
 Python API must stay within 1e-12 x max(distance, largest radius) for every k).
 
 Families (the round shape is the unit circle / disk in its own frame unless said otherwise):

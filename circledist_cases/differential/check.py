@@ -7,8 +7,8 @@ below every verified bound (beyond the bar), closest points off their shapes, se
 that differ from the reported distance, distance(a, b) != distance(b, a), batch != scalar,
 within / intersects inconsistent with the distance, non-finite answers or wrong dtypes, and
 an arc of angle 2 pi whose answers are not its circle's to the bit (distance, points,
-`unique`, the other side's parameter; docs/arc.md), and an annulus of inner 0 / inner = outer
-whose are not its disk's / circle's (docs/annulus.md).
+`unique`, the other side's parameter; docs/derivations/arc.md), and an annulus of inner 0 / inner = outer
+whose are not its disk's / circle's (docs/derivations/annulus.md).
 The bound an answer is held against is the screen's, or lower: the separation (plus the
 measured distances off their shapes) of any combination's closest points, a genuine pair too.
 ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
@@ -348,12 +348,12 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             fw, wres = _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, pscale[scene], bar_abs,
                                      inaccurate, stats)
             findings += fw
-        # an arc of angle 2 pi is the whole circle, answered by the circle's query (docs/arc.md)
+        # an arc of angle 2 pi is the whole circle, answered by the circle's query (docs/derivations/arc.md)
         if "arc" in (ka, kb) and d_orders:
             A, Bd = data[scene]
             findings += _check_whole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats)
         # an annulus of inner radius 0 is the disk, of inner radius = outer the circle: the disk's
-        # or circle's query answers it (docs/annulus.md), to the bit
+        # or circle's query answers it (docs/derivations/annulus.md), to the bit
         if "annulus" in (ka, kb) and d_orders:
             A, Bd = data[scene]
             findings += _check_hole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats)
@@ -393,7 +393,7 @@ def _check_whole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, st
 def _check_hole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats):
     """Cases with an annulus of inner radius 0 or inner = outer (as given: float32 scenes keep
     both) must give the answers of the same query with that annulus replaced by its disk or its
-    outer circle, to the bit (docs/annulus.md: the disk's / circle's query is called): distance,
+    outer circle, to the bit (docs/derivations/annulus.md: the disk's / circle's query is called): distance,
     closest_points' distance, points, parameters and `unique`; the circle's parameter (theta, 0)
     on the annulus's side reported as (outer radius, theta).  An annulus-annulus case with only
     one degenerate annulus is compared with the disk-annulus or circle-annulus query."""

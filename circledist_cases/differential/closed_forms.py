@@ -123,7 +123,7 @@ def _round_dist(w, n, R, disk, with_rho=False, span=None, inner=None):
     if disk:
         d = np.where(rho <= R, np.abs(z), d)
     if inner is not None:
-        # an annulus (disk=True): over its hole the inner rim's distance (docs/annulus.md (1))
+        # an annulus (disk=True): over its hole the inner rim's distance (docs/derivations/annulus.md (1))
         d = np.where(rho < inner, np.sqrt(z * z + (inner - rho) * (inner - rho)), d)
     if span is not None:
         u, v, ang, whole = span

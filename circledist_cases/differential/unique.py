@@ -56,7 +56,7 @@ from .base import LINEAR, _key
 #   (max(d, scale)), not the target's own radius: a small rim far away in a large scene, or a
 #   point within the scene's rounding of a rim's axis, is as close to a stretch of the rim as the
 #   library's tie tolerance (64 eps x scale) can tell (two such cases, found when the annulus's
-#   point had no margin: docs/differential_report.md).  Not
+#   point had no margin: docs/reports/differential.md).  Not
 #   checked: two regions (disk-disk, disk-annulus, annulus-annulus beyond the coaxial cases),
 #   a point against an arc or annulus where the closed form is too close to call, a Bezier curve
 #   against a Bezier curve (no kind pair of the cases), a linear pair within 1e-3 rad of

@@ -125,7 +125,7 @@ inline LD circle_disk(const Circle3<double>& a, const Disk3<double>& b) {
   return minimize([&](LD t) { const V3 p = ra.at(t); return (p - rb.disk_point(p)).norm(); }, -kPi, kPi, true);
 }
 
-// If the disks do not intersect a closest pair has a rim point (docs/disk_disk.md); the cases
+// If the disks do not intersect a closest pair has a rim point (docs/derivations/disk_disk.md); the cases
 // that intersect are checked against 0 analytically.
 inline LD disk_disk(const Disk3<double>& a, const Disk3<double>& b) {
   return std::min(circle_disk({a.center, a.normal, a.radius}, b), circle_disk({b.center, b.normal, b.radius}, a));

@@ -5,7 +5,7 @@
 // line's t over a range that must hold the minimum, a circle's angle in a frame built
 // differently from the library's) and the minimum found by dense sampling and zooming
 // (ref::minimize, round_reference.hpp). A disk or an annulus against an annulus: a closest pair
-// has a point on a rim, and a common part has its ends on rims (docs/annulus.md), so the
+// has a point on a rim, and a common part has its ends on rims (docs/derivations/annulus.md), so the
 // reference is the least of every rim sampled against the other shape. Bar in double:
 // |error| <= 1e-12 * max(true distance, largest radius); long double 1e-15. Also: both argument
 // orders, distance() == closest_points().distance to the bit, the closest points on their

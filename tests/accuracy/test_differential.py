@@ -1,4 +1,4 @@
-"""The CI slice of the standing differential accuracy test (issue 14, "keep it closed").
+"""The CI slice of the standing differential accuracy test.
 
 A fixed seed; every case family of circledist_cases/differential.py with every kind pair it applies to
 (every pair of kinds: a circle or disk with any kind, points / lines / rays / segments among
@@ -25,34 +25,10 @@ Bars (never loosened here): |d - d_true| <= bar * max(d_true, scale), bar 1e-12 
 in long double, 4 float32 ulps (4 * 2^-23) for float32 inputs; the scale is the largest radius,
 or without a circle or disk the scale of the pairs' own accuracy tests (differential.bar_scale).
 
-912 cases (764 of the seventeen families with a circle or disk, 148 of the ten without: two per
-family and kind pair); 179,016 library answers (every entry point; each within /
-distance_if_within probe counts) and 178 direct references before the 17th family
-(piece_near_plane, 2026-11-26) added 40 cases: about 51 s of wall time on the project's 2-core
-machine at load ~1 with it (2026-11-26), 80 s of CPU before it with other jobs loading the
-machine to ~3 (the slice without the families of the pairs without a round took 61 s in the same
-conditions, 58 s on 2026-11-25; the library's answers take most of it). With scalar calls on
-every case it was 75 s, ~197,000
-answers, before those families.  The 18 arc families (2026-11-26) add 182 cases (two per family
-and kind pair: 36,720 answers, 1.6 s of CPU) and 30 direct references (7.2 s of CPU): 1094 cases,
-231,336 answers and 214 direct references in all, 61 s of CPU (114 s of wall time with other
-jobs loading the machine to 6-7; at load ~2 the slice gets a core and its wall time is about its
-CPU time).  Arc-Bezier (2026-11-27) adds its two cases per arc family: 48 tests passed in 80 s
-of wall time and 78 s of CPU at load ~2.  The 18 annulus families (2026-11-27) add 238
-cases (two per family and kind pair) and 39 direct references, and the unique check runs on
-every case: 1350 cases, 295,480 answers, 257 direct references, 66 tests (one xfail then: the
-polished policy's unique flag on an arc lying on a coaxial circle, since fixed) in 343..381 s
-of wall time and 99..102 s of CPU at load ~5-6 (another long run and three other workers on the
-2 cores): about 23 s of CPU more than before.  The direct comparison's unique check from the
-reference's own minima (differential.reference_unique: a circle or arc against a line, ray,
-segment or disk, float64 scenes) adds 6 s: 107.6 s of CPU, 277 s of wall time at load ~5
-(155 s at load ~4 with the fix).  Extending it (2026-11-27) to a circle or arc against a circle, arc or
-annulus, a Bezier curve against every kind it meets, and a line, ray or segment against a disk or
-annulus (3,072 unique answers checked in the direct comparisons, 1,552 of them by the 50-digit search,
-992 on the pairs it newly covers; a Bezier curve on a circle's axis: 8 expected False), plus eleven hand-made
-cases of the rules, took the slice from 100.3 s to 114.5 s of CPU (the direct references from 41.2 s
-to 55.6 s; 115 s of wall time at load ~1.5).  A failure lists one reproducer per finding class;
-`python -m tools.differential` runs the same checks on millions of cases.
+Two cases per family and kind pair; the first case of each is also compared with the 50-digit
+references directly, and the slice's size and cost are printed by the slice itself (the fixture's
+summary). A failure lists one reproducer per finding class; `python -m tools.differential` runs the
+same checks on millions of cases.
 
 The effect family (effect_degenerate: every kind pair in small integer configurations with a
 center on the other's axis, coaxial, coplanar, concentric, radius 0, inner radius 0 or = outer)
@@ -170,7 +146,7 @@ def test_slice_covers_every_family_and_kind_pair(results):
     assert {p for _, p in seen} == set(D.KIND_PAIRS)
 
 
-# Classes that still fail, each stated in the note on issue 14. Any other finding in the family
+# Classes that still fail, each with its note in the tracker. Any other finding in the family
 # fails the test, and so does a known class that stops failing (remove it here then).
 # None: the last (the polished policy's unique=True for an arc lying on a coaxial circle's rim) is
 # fixed and kept in tests/accuracy/test_regressions_arc.py::test_unique_coaxial_arc.

@@ -1,4 +1,4 @@
-"""The fixed-seed slice of the crash-isolating fuzz (tools/fuzz_crash.py, issue 15): every kind
+"""The fixed-seed slice of the crash-isolating fuzz (tools/fuzz_crash.py): every kind
 pair, entry point, precision and solver, magnitudes from 1e-300 to 1e300, degenerate shapes,
 batch layouts; each chunk in a child process, so a crash fails this test with its input named
 instead of taking pytest down. The long mode is `bash tools/run.sh fuzz`."""

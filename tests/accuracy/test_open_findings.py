@@ -23,23 +23,23 @@ their bar is the double one plus the rounding of the answer (4 float32 ulps).
 
 
 # closest_points().unique for an arc coaxial with a circle, disk or annulus (every arc point as
-# close: a continuum; found by the differential's unique rule, 2026-11-27): fixed (arc.hpp,
+# close: a continuum; found by the differential's unique rule): fixed (arc.hpp,
 # add_ends_for_ties), kept in test_regressions.py (test_unique_coaxial_arc and its family).
 
 
-# ---- a Bezier curve through an annulus's ring (2026-11-27): fixed --------------------------
+# ---- a Bezier curve through an annulus's ring: fixed ---------------------------------------
 # The companion and eigen policies in long double answered a Bezier curve crossing an annulus's
 # face inside the ring (truth 0) with 1e-15..2e-14: the interior height candidates were never
 # polished.  Fixed (bezier.hpp, push_refined_curve_height_roots) and kept in test_regressions.py
 # (test_bezier_through_ring, test_bezier_crossing_ring_family).
 
 
-# ---- closest_points().unique: a huge arc's end against a small far annulus (2026-11-27) -------
+# ---- closest_points().unique: a huge arc's end against a small far annulus ------------------
 # The first version of the direct unique check (differential.reference_unique, the annulus's
 # nearest point taken as unique without a margin beyond its outer rim) flagged two of the 3,325
 # cases where it said True (seeds 7, 11, 13 and 21; float64 scenes, float64 and long double, every
 # policy, both orders; the other, every policy in double, is a crossing within the scene's
-# rounding of a tiny hole's axis, docs/differential_report.md).  This one:
+# rounding of a tiny hole's axis, docs/reports/differential.md).  This one:
 # ann_huge_circle/11/14, an arc of radius 5.64e8 against an annulus of outer radius 0.164 (inner
 # 0.071) 9.63e7 away, the arc's end closest.  The polished policy in double answers unique =
 # False (both orders); every other policy, and polished in long double, True.  One closest pair

@@ -96,7 +96,7 @@ def near_axis_piece_cases():
 
 
 CASES = [
-    # issue 14 class 1: same center, tilted normals (was 1.0305 for 0.75).
+    # same center, tilted normals (was 1.0305 for 0.75).
     ("concentric-tilted", "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0), "circle",
      (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25)),
     ("concentric-tilted-disk", "circle", (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25),
@@ -153,7 +153,7 @@ CASES = [
     # class 6: one far control point (was 1.0 for 2.5e-21).
     ("bezier-far-control", "bezier", ((0.0, 0.0, 0.0), (1e10, 0.0, 0.0), (1.0, 1.0, 1.0)), "circle",
      (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
-    # issue 15 item 1: a stack buffer overflow in root isolation (truth 4.2227480).
+    # a stack buffer overflow in root isolation (truth 4.2227480).
     ("bezier-dominant-point", "bezier",
      ((1000.0, 0.0, 1.0), (1.0, 0.0, 1.0), (2.0, 0.0, 1.0), (3.0, 0.0, 1.0), (4.0, 0.0, 1.0), (5.0, 0.0, 1.0),
       (6.0, 0.0, 1.0), (7.0, 0.0, 1.0)),
@@ -161,10 +161,10 @@ CASES = [
     ("bezier-dominant-point-disk", "bezier",
      ((1e8, 0.0, 1.0), (1.0, 0.0, 1.0), (2.0, 0.0, 1.0), (3.0, 0.0, 1.0), (4.0, 0.0, 1.0), (5.0, 0.0, 1.0)),
      "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
-    # issue 15 item 3: long and short directions (was 0.0 for 1.0).
+    # long and short directions (was 0.0 for 1.0).
     ("lines-long-directions", "line", (0.0, 0.0, 0.0, 1e80, 0.0, 0.0), "line", (0.0, 1.0, 0.0, 0.0, 0.0, 1e80)),
     ("lines-short-directions", "line", (0.0, 0.0, 0.0, 1e-80, 0.0, 0.0), "line", (0.0, 1.0, 0.0, 0.0, 0.0, 1e-80)),
-    # issue 15 item 4: normals whose squared length overflows or underflows.
+    # normals whose squared length overflows or underflows.
     ("point-circle-huge-normal", "point", (1.0, 1.0, 1.0), "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1e200, 1.0)),
     ("point-disk-tiny-normal", "point", (0.0, 0.0, 1.0), "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1e-200, 1.0)),
     ("circles-extreme-normals", "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1e200, 1.0), "circle",
@@ -248,7 +248,7 @@ def fits_float32(data):
 
 
 FLOAT32_CASES = [c for c in CASES if fits_float32(c[2]) and fits_float32(c[4])] + [
-    # issue 14 class 9 configurations (float32 circle-circle, circle-disk, disk-disk near contact)
+    # configurations (float32 circle-circle, circle-disk, disk-disk near contact)
     ("f32-cc-touching", "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0), "circle", (2.0, 0.0, 1e-3, 0.0, 1.0, 0.0, 1.0)),
     ("f32-cd-near", "circle", (0.1, 0.2, 0.30001, 0.0, 0.0, 1.0, 0.7), "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
     ("f32-dd-apart", "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 100.0), "disk", (583.0, 0.0, 0.0, 0.3, 0.0, 1.0, 100.0)),
@@ -274,7 +274,7 @@ def test_regression_case_float32(case, solver):
         assert abs(float(r.distance) - truth) <= bar, (name, float(r.distance), truth)
 
 
-# Issue 14 class 10: np.longdouble inputs are not rounded to float64. The differences below are
+# np.longdouble inputs are not rounded to float64. The differences below are
 # 2^-60 relative, far under float64's resolution: a float64 copy of the inputs answers 0.
 LD = np.longdouble
 WIDE = np.finfo(np.longdouble).nmant > np.finfo(np.float64).nmant

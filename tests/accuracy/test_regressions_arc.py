@@ -21,8 +21,8 @@ from circledist_cases.kind_checks import make as make_shape
 from regressions_common import BARS, SOLVERS, cd
 
 
-# ---- an arc whose circle passes through the other round's axis (issue 14, the arc runs of the
-# differential test: docs/differential_report_arc.json, family arc_end_on_axis) ----------------
+# ---- an arc whose circle passes through the other round's axis (the arc runs of the
+# differential test: the long arc runs, family arc_end_on_axis) ----------------
 # The circle-circle octic of such a pair, e.g. (u^2 - 1)^2 (9 u^4 - 22 u^2 + 9) / 729, has a
 # balanced companion matrix on which Eigen's real Schur iteration does not converge: the
 # companion and eigen policies had no roots at all, and an arc whose span holds the interior
@@ -85,7 +85,7 @@ def test_circle_through_ring_axis_arc(case, solver, precision, arc_through_axis_
         assert abs(separation - np.longdouble(d)) <= bar + 8 * ulp * 4, (name, solver, precision)
 
 
-# ---- closest_points().unique of an arc coaxial with a round (2026-11-27) -----------------------
+# ---- closest_points().unique of an arc coaxial with a round ------------------------------------
 # Found by the differential's unique rule (circledist_cases/differential.py, expected_unique,
 # "coaxial rounds"): the scenes below said unique = True under some policies (listed with each).
 # Cause: where the distance is flat along the arc, polishing took every start (the arc's ends and

@@ -79,7 +79,7 @@ def test_bezier_through_the_center(precision):
 
 
 # Found by the differential families of the pairs without a round (family
-# bezier_far_control_linear; docs/differential_report.md): the bracketing policy on a Bezier curve
+# bezier_far_control_linear; docs/reports/differential.md): the bracketing policy on a Bezier curve
 # with one control point 1e9..1e11 away answered the distance at a wrong parameter, off by up to
 # 1e-3 in t (the root of an ill-conditioned polynomial), against
 #  - a point (bezier_far_control_linear/20261114/0, the CI slice's case): 0.22785 for 0.22186 in
@@ -88,9 +88,8 @@ def test_bezier_through_the_center(precision):
 #    long double (5.4e-13 of the extent 5.3e10, against the 1e-15 bar);
 #  - a ray and a segment (seed 2, cases 166 and 559): 1.86340 for 1.81322 in double; 6.31175
 #    (double) and 6.30991 (long double) for 6.24982.
-# Found with the builds of 45d71ff..cbdb1e2 (installed 09:07:58, 2026-11-26); the build installed
-# at 09:44:20 from /work/main's working tree (minimize.hpp: polish_newton goes on when its
-# minimum is at an inner end of the bracket) answers them all. The bar is that of the
+# The fix (minimize.hpp: polish_newton goes on when its minimum is at an inner end of the
+# bracket) answers them all. The bar is that of the
 # Bezier-point/line pairs (tests/pairs/test_bezier_point_linear.py): the curve's extent.
 FAR_CONTROL = {  # name: (control points, kind, the piece's data, precision)
     "point-double": (

@@ -80,7 +80,7 @@ def test_disks_coplanar_within_rounding_points_on_both(solver):
 # points. The raw eigenvalue policies answered 0.505 (the rings' size): the octic's roots were too
 # far off to lead the polish there; the points where one ring crosses the other's plane are now
 # starts too. Reference: 50-digit mpmath minimization over the angle (the long differential
-# run, docs/differential_report.md), 1.0925491132860966e-14.
+# run, docs/reports/differential.md), 1.0925491132860966e-14.
 NEAR_CONCENTRIC_RINGS = (
     ([-0.6647478320178631, -0.1478456243803689, 0.5419060141101574],
      [1.2516289029374994, 1.918050346932966, -2.020965388079425], 0.39345072874537984),

@@ -618,7 +618,7 @@ def test_batch_circle_disk_equals_scalar(order):
         dref = float(ref_of(c).distance)
         assert abs(di - dref) <= REL_TOL * max(dref, radius_scale(c.a, c.b)), c.id
     r = cd.closest_points(x, y)
-    # The distance alone takes a shorter path (docs/circle_disk.md, "The distance alone"): the
+    # The distance alone takes a shorter path (docs/derivations/circle_disk.md, "The distance alone"): the
     # same value up to rounding, not to the bit.
     for c, di, ri in zip(cases, d, np.asarray(r.distance)):
         assert abs(ri - di) <= 1e-13 * max(di, radius_scale(c.a, c.b)), c.id

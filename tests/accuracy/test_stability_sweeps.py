@@ -1,7 +1,7 @@
 """Stability sweeps toward each degeneracy, through the Python API with the default root policy.
 
 The families live in circledist_cases/sweeps.py (shared with bench/accuracy_vs_time.py, which
-plots every policy into docs/stability_sweeps.png):
+plots every policy into docs/reports/stability_sweeps.png):
   axis-tilt     a line tilted from the circle's axis by 10^-k rad, k = 0..16
   tangent-lift  the tangent line lifted by h = 10^-k, k = 0..16 (distance exactly h)
   offset        fixed scenes translated by 10^k (1, -0.7, 0.4), k = 0..9

@@ -258,7 +258,7 @@ def test_distance_does_no_closest_point_work():
     assert after_closest["closest_points"] == 500 and after_closest["distances"] == 0
     # The distance alone solves the height quadratics first and stops where a height root
     # already wins; elsewhere it runs closest_points' solve (rim partition and octic) on the
-    # same height roots (docs/circle_disk.md, "The distance alone"). Same distances.
+    # same height roots (docs/derivations/circle_disk.md, "The distance alone"). Same distances.
     assert after_closest["solves"] > after_distance["solves"]
     scale = np.maximum(np.maximum(a.radius, b.radius), np.linalg.norm(a.center - b.center, axis=1))
     assert np.all(np.abs(np.asarray(r.distance) - d) <= 1e-13 * np.maximum(scale, d))

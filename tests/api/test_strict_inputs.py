@@ -1,4 +1,4 @@
-"""Issue 15's input items: a shape made without its constructor is a TypeError (not a crash),
+"""Strict inputs: a shape made without its constructor is a TypeError (not a crash),
 shapes are values (no aliasing of the caller's arrays, read-only fields), only real numbers are
 accepted, errors are clear, Scene bounds stay conservative at every magnitude, and the CLI answers
 bad files with its one-line error. Each crash-prone call runs in a child process so that a

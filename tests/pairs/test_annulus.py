@@ -1,4 +1,4 @@
-"""The Annulus kind in Python (issue 19): cd.Annulus against every kind that has a query, both
+"""The Annulus kind in Python: cd.Annulus against every kind that has a query, both
 argument orders, scalar and batched, every solver and precision, against an independent reference.
 
 Reference: 50-digit mpmath (circledist_cases/reference_round.py's helpers, no library code). The

@@ -1,4 +1,4 @@
-"""The Arc kind in Python (issue 19): cd.Arc against every kind that has a query, both argument
+"""The Arc kind in Python: cd.Arc against every kind that has a query, both argument
 orders, scalar and batched, every solver and precision, against an independent reference.
 
 Reference: 50-digit mpmath (circledist_cases/reference_arc.py, on reference_round.py's helpers,
@@ -244,7 +244,7 @@ def test_precision_follows_the_dtypes():
 
 
 # ------------------------------------------------------------------------------------------------
-# Arc-Bezier (bezier_arc.hpp, docs/arc.md "A Bezier curve")
+# Arc-Bezier (bezier_arc.hpp, docs/derivations/arc.md "A Bezier curve")
 # ------------------------------------------------------------------------------------------------
 def curve_reference(a, ctrl):
     """min over the curve's t in [0, 1] of the arc's closed-form distance from its point (50 digits)."""

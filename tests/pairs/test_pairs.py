@@ -84,7 +84,7 @@ def test_every_kind_pair_equals_brute_force(ka, kb):
 
 
 def test_every_kind_pair_has_a_query():
-    """The kind matrix is complete (issue 19): every pair of kinds, in both orders, has a query
+    """The kind matrix is complete: every pair of kinds, in both orders, has a query
     (the all-pairs test above runs each against brute force). A new kind must bring its pairs."""
     assert SUPPORTED == set(itertools.product(KINDS, KINDS)), sorted(set(itertools.product(KINDS, KINDS)) - SUPPORTED)
 

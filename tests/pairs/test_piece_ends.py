@@ -2,7 +2,7 @@
 distance to a circle.
 
 A ray or segment whose line has one local minimum over the ring is answered from the slope of
-the distance at an end point, before the line's root is solved (docs/line_circle.md, "Before the
+the distance at an end point, before the line's root is solved (docs/derivations/line_circle.md, "Before the
 root"): rising at the first end, that end answers; falling at a segment's second end, that one.
 The slope is 0 where an end sits at the line's minimum, and undefined where it sits on the
 circle's axis (the distance's cusp): these tests put ends exactly there and at offsets from

@@ -328,7 +328,7 @@ struct EigenCompanion {
 
 // Eigen's own solver, Eigen::PolynomialSolver (unsupported/Eigen/Polynomials), called as it is:
 // the design card's solver. EigenCompanion is the same scheme without the eigenvectors and the
-// dynamic allocations, about 3x faster for the same roots (docs/accuracy_vs_time.md). Eigen
+// dynamic allocations, about 3x faster for the same roots (docs/reports/accuracy_vs_time.md). Eigen
 // asserts on a zero leading coefficient, so the polynomial is trimmed first. Its realRoots()
 // keeps roots whose imaginary part is below an absolute 1e-12: a tangency's quadruple root
 // comes back with imaginary parts near eps^(1/4) = 1e-4 and would be lost, so the near-real
