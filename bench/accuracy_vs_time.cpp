@@ -75,11 +75,28 @@ template <class Real> struct Reader {
     return Vec3<Real>(x, y, z);
   }
   void read(Vec3<Real>& p) { p = vec(); }
-  void read(Line3<Real>& l) { l.origin = vec(); l.direction = vec(); }
-  void read(Ray3<Real>& r) { r.origin = vec(); r.direction = vec(); }
-  void read(Segment3<Real>& s) { s.p0 = vec(); s.p1 = vec(); }
-  void read(Circle3<Real>& c) { c.center = vec(); c.normal = vec(); c.radius = next(); }
-  void read(Disk3<Real>& d) { d.center = vec(); d.normal = vec(); d.radius = next(); }
+  void read(Line3<Real>& l) {
+    l.origin = vec();
+    l.direction = vec();
+  }
+  void read(Ray3<Real>& r) {
+    r.origin = vec();
+    r.direction = vec();
+  }
+  void read(Segment3<Real>& s) {
+    s.p0 = vec();
+    s.p1 = vec();
+  }
+  void read(Circle3<Real>& c) {
+    c.center = vec();
+    c.normal = vec();
+    c.radius = next();
+  }
+  void read(Disk3<Real>& d) {
+    d.center = vec();
+    d.normal = vec();
+    d.radius = next();
+  }
   void read(Arc3<Real>& a) {
     a.center = vec();
     a.normal = vec();
@@ -119,9 +136,8 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 // Distances of every case of one kind, then the timing of each group.
-template <class SA, class SB, class Policy>
-void run_one(const std::vector<const Case*>& cases, const std::string& kind, int policy, int precision,
-             double min_time, Output& out) {
+template <class SA, class SB, class Policy> void run_one(const std::vector<const Case*>& cases, const std::string& kind,
+                                                         int policy, int precision, double min_time, Output& out) {
   using Real = decltype(circledist::distance(std::declval<const SA&>(), std::declval<const SB&>()));
   struct Item {
     SA a;
@@ -179,9 +195,8 @@ void run_one(const std::vector<const Case*>& cases, const std::string& kind, int
   }
 }
 
-template <class SA, class SB>
-void run_precision(const std::vector<const Case*>& cases, const std::string& kind, int precision, double min_time,
-                   Output& out) {
+template <class SA, class SB> void run_precision(const std::vector<const Case*>& cases, const std::string& kind,
+                                                 int precision, double min_time, Output& out) {
   run_one<SA, SB, EigenCompanion>(cases, kind, 0, precision, min_time, out);
   run_one<SA, SB, EigenPolished>(cases, kind, 1, precision, min_time, out);
   run_one<SA, SB, Bracketing>(cases, kind, 2, precision, min_time, out);
@@ -291,7 +306,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> names = cdb::all_kind_names();
   for (const std::string& name : names) std::fprintf(file, "K %s %d\n", name.c_str(), int(tables[1].count(name)));
   for (const auto& c : cases) {
-    if (!tables[1].count(c.kind)) std::fprintf(stderr, "accuracy_vs_time: kind %s not compiled (case %d)\n", c.kind.c_str(), c.index);
+    if (!tables[1].count(c.kind))
+      std::fprintf(stderr, "accuracy_vs_time: kind %s not compiled (case %d)\n", c.kind.c_str(), c.index);
   }
   for (const std::string& name : names) {
     if (!tables[1].count(name)) continue;
@@ -301,7 +317,8 @@ int main(int argc, char** argv) {
       if (c.kind == name) mine.push_back(&c);
     if (mine.empty()) continue;
     std::fprintf(stderr, "accuracy_vs_time: %s (%zu cases)\n", name.c_str(), mine.size());
-    for (int precision = 0; precision < 3; ++precision) tables[precision].at(name)(mine, name, precision, min_time, out);
+    for (int precision = 0; precision < 3; ++precision)
+      tables[precision].at(name)(mine, name, precision, min_time, out);
     std::fflush(file);
   }
   std::fclose(file);

@@ -46,7 +46,6 @@ import json
 import math
 import multiprocessing
 import os
-import shutil
 import statistics
 import subprocess
 import sys
@@ -60,8 +59,15 @@ if not __package__:  # run as a file: the shared cases (circledist_cases) would 
 from . import one_core  # noqa: F401  (before NumPy: one BLAS thread)
 
 from circledist_cases import sweeps  # noqa: E402
-from circledist_cases.accuracy import (KINDS, Case, generate_cases, bar_scale, reference_distance,  # noqa: E402
-                                       relative_error, to_float32)
+from circledist_cases.accuracy import (
+    KINDS,
+    Case,
+    generate_cases,
+    bar_scale,
+    reference_distance,  # noqa: E402
+    relative_error,
+    to_float32,
+)
 from mpmath import mpf  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -71,7 +77,7 @@ ROOT = Path(__file__).resolve().parents[1]
 # ------------------------------------------------------------------------------------------------
 POLICIES = ["EigenCompanion", "EigenPolished", "Bracketing", "EigenPolynomialSolver"]
 PRECISIONS = ["float", "double", "longdouble"]
-EPS = {"float": 2.0 ** -23, "double": 2.0 ** -52, "longdouble": 2.0 ** -63}
+EPS = {"float": 2.0**-23, "double": 2.0**-52, "longdouble": 2.0**-63}
 DOUBLE_BAR = 1e-12
 BAR = {p: DOUBLE_BAR * EPS[p] / EPS["double"] for p in PRECISIONS}
 GROUPS = {"random": 0, "hard": 1, "sweep": 2}
@@ -83,8 +89,14 @@ DOCS = ROOT / "docs" / "reports"
 
 def _reference_version():
     h = hashlib.sha256()
-    for name in ("reference_kit.py", "reference.py", "reference_round.py", "reference_bezier.py",
-                 "reference_arc.py", "reference_annulus.py"):
+    for name in (
+        "reference_kit.py",
+        "reference.py",
+        "reference_round.py",
+        "reference_bezier.py",
+        "reference_arc.py",
+        "reference_annulus.py",
+    ):
         h.update((ROOT / "circledist_cases" / name).read_bytes())
     return h.hexdigest()[:16]
 
@@ -120,6 +132,7 @@ def compute_references(jobs_list, jobs, log=print):
         log(f"== references: {len(todo)} to compute ({len(cache)} cached), {jobs} processes")
         t0 = time.time()
         items = list(todo.values())
+
         def save():  # every 500 references too: an interrupted run keeps what it computed
             tmp = path.with_suffix(".tmp")
             tmp.write_text(json.dumps({"version": version, "references": cache}))
@@ -163,9 +176,25 @@ def ensure_binary(explicit=None, jobs=2, log=print):
         return binary
     log(f"== building {binary.relative_to(ROOT)} with CMake ({jobs} jobs)")
     t0 = time.time()
-    subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                    "-DCIRCLEDIST_BUILD_TESTS=ON", "-DCIRCLEDIST_BUILD_BENCH=ON"], check=True, stdout=subprocess.DEVNULL)
-    subprocess.run(["cmake", "--build", str(build), "--target", "accuracy_vs_time", "-j", str(max(1, jobs))], check=True)
+    subprocess.run(
+        [
+            "cmake",
+            "-S",
+            str(ROOT),
+            "-B",
+            str(build),
+            "-G",
+            "Ninja",
+            "-DCMAKE_BUILD_TYPE=Release",
+            "-DCIRCLEDIST_BUILD_TESTS=ON",
+            "-DCIRCLEDIST_BUILD_BENCH=ON",
+        ],
+        check=True,
+        stdout=subprocess.DEVNULL,
+    )
+    subprocess.run(
+        ["cmake", "--build", str(build), "--target", "accuracy_vs_time", "-j", str(max(1, jobs))], check=True
+    )
     log(f"   built in {time.time() - t0:.0f} s")
     return binary
 
@@ -241,15 +270,23 @@ def summarize(cases, errors, timing, kinds):
             for pol in POLICIES:
                 e = {g: [errors[(i, pol, prec)] for i in idx[g]] for g in idx}
                 worst_i = max(idx["hard"], key=lambda i: errors[(i, pol, prec)]) if idx["hard"] else None
-                rows.append(Row(
-                    kind, pol, prec,
-                    timing.get((kind, "random", pol, prec), math.nan),
-                    timing.get((kind, "hard", pol, prec), math.nan),
-                    max(e["random"], default=math.nan), statistics.median(e["random"]) if e["random"] else math.nan,
-                    max(e["hard"], default=math.nan), statistics.median(e["hard"]) if e["hard"] else math.nan,
-                    sum(x > BAR[prec] for x in e["hard"]), len(e["hard"]),
-                    sum(x > BAR[prec] for x in e["random"]),
-                    cases[worst_i].name if worst_i is not None else ""))
+                rows.append(
+                    Row(
+                        kind,
+                        pol,
+                        prec,
+                        timing.get((kind, "random", pol, prec), math.nan),
+                        timing.get((kind, "hard", pol, prec), math.nan),
+                        max(e["random"], default=math.nan),
+                        statistics.median(e["random"]) if e["random"] else math.nan,
+                        max(e["hard"], default=math.nan),
+                        statistics.median(e["hard"]) if e["hard"] else math.nan,
+                        sum(x > BAR[prec] for x in e["hard"]),
+                        len(e["hard"]),
+                        sum(x > BAR[prec] for x in e["random"]),
+                        cases[worst_i].name if worst_i is not None else "",
+                    )
+                )
     return rows
 
 
@@ -266,11 +303,15 @@ def policy_stats(rows, cases, errors, precision):
         logs = [math.log10(max(x, ERROR_FLOOR)) if math.isfinite(x) else 0.0 for x in hard]
         pr = [r for r in rows if r.policy == pol and r.precision == precision]
         stats[pol] = {
-            "hard_over": sum(not x <= BAR[precision] for x in hard), "hard_count": len(hard),
-            "hard_max": max(hard), "hard_meanlog": sum(logs) / len(logs),
-            "random_over": sum(not x <= BAR[precision] for x in rnd), "random_count": len(rnd),
+            "hard_over": sum(not x <= BAR[precision] for x in hard),
+            "hard_count": len(hard),
+            "hard_max": max(hard),
+            "hard_meanlog": sum(logs) / len(logs),
+            "random_over": sum(not x <= BAR[precision] for x in rnd),
+            "random_count": len(rnd),
             "random_max": max(rnd),
-            "ns_random": _geomean([r.ns_random for r in pr]), "ns_hard": _geomean([r.ns_hard for r in pr]),
+            "ns_random": _geomean([r.ns_random for r in pr]),
+            "ns_hard": _geomean([r.ns_hard for r in pr]),
             "failing_kinds": sorted({r.kind for r in pr if r.hard_over or r.random_over}),
         }
     return stats
@@ -319,14 +360,35 @@ def fmt_ns(x):
     return f"{x:.0f}" if x >= 100 else f"{x:.1f}"
 
 
-HEADER = ["kind", "policy", "precision", "ns random", "ns hard", "random max", "random median",
-          "hard max", "hard median", "hard > bar", "worst hard case"]
+HEADER = [
+    "kind",
+    "policy",
+    "precision",
+    "ns random",
+    "ns hard",
+    "random max",
+    "random median",
+    "hard max",
+    "hard median",
+    "hard > bar",
+    "worst hard case",
+]
 
 
 def row_cells(r):
-    return [r.kind, r.policy, r.precision, fmt_ns(r.ns_random), fmt_ns(r.ns_hard), fmt_e(r.random_max),
-            fmt_e(r.random_median), fmt_e(r.hard_max), fmt_e(r.hard_median), f"{r.hard_over}/{r.hard_count}",
-            r.worst if r.hard_max > BAR[r.precision] else ""]
+    return [
+        r.kind,
+        r.policy,
+        r.precision,
+        fmt_ns(r.ns_random),
+        fmt_ns(r.ns_hard),
+        fmt_e(r.random_max),
+        fmt_e(r.random_median),
+        fmt_e(r.hard_max),
+        fmt_e(r.hard_median),
+        f"{r.hard_over}/{r.hard_count}",
+        r.worst if r.hard_max > BAR[r.precision] else "",
+    ]
 
 
 def print_table(rows, out=sys.stdout):
@@ -335,8 +397,11 @@ def print_table(rows, out=sys.stdout):
     for i, c in enumerate(cells):
         if i > 1 and c[0] != cells[i - 1][0]:
             print("", file=out)
-        print("  ".join(x.ljust(w) if j < 3 else x.rjust(w) for j, (x, w) in enumerate(zip(c, widths)))
-              + ("  " + c[-1] if c[-1] else ""), file=out)
+        print(
+            "  ".join(x.ljust(w) if j < 3 else x.rjust(w) for j, (x, w) in enumerate(zip(c, widths)))
+            + ("  " + c[-1] if c[-1] else ""),
+            file=out,
+        )
 
 
 def md_table(header, rows):
@@ -345,8 +410,9 @@ def md_table(header, rows):
     return "\n".join(out)
 
 
-def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep_summary, runtime, n_random, kinds,
-                   compiled, min_time):
+def write_markdown(
+    path, rows, best, stats, tied, other_precisions, cases, sweep_summary, runtime, n_random, kinds, compiled, min_time
+):
     default = current_default()
     dbl = {(r.kind, r.policy): r for r in rows if r.precision == "double"}
     n_hard = sum(c.group == "hard" for c in cases)
@@ -365,12 +431,13 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
         "## Headline",
         "",
     ]
-    verdict = ("the current `DefaultRoots`" if best == default
-               else f"**not** the current `DefaultRoots` (`{default}`)")
+    verdict = "the current `DefaultRoots`" if best == default else f"**not** the current `DefaultRoots` (`{default}`)"
     if len(tied) > 1:
-        why = (f"{', '.join(f'`{p}`' for p in tied)} are equally accurate on the hard cases in double "
-               f"(same number over the bar, max error within x2, mean log10 error within 0.1); `{best}` is "
-               "the cheapest of them")
+        why = (
+            f"{', '.join(f'`{p}`' for p in tied)} are equally accurate on the hard cases in double "
+            f"(same number over the bar, max error within x2, mean log10 error within 0.1); `{best}` is "
+            "the cheapest of them"
+        )
     else:
         why = f"`{best}` is the most accurate policy on the hard cases in double"
     lines += [
@@ -382,21 +449,29 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
     ]
     for p in POLICIES:
         o = stats[p]
-        lines.append(f"| `{p}` | {o['hard_over']}/{o['hard_count']} | {fmt_e(o['hard_max'])} | "
-                     f"{o['hard_meanlog']:.2f} | {o['random_over']}/{o['random_count']} | {fmt_e(o['random_max'])} | "
-                     f"{o['ns_random']:.0f} | {o['ns_hard']:.0f} |")
+        lines.append(
+            f"| `{p}` | {o['hard_over']}/{o['hard_count']} | {fmt_e(o['hard_max'])} | "
+            f"{o['hard_meanlog']:.2f} | {o['random_over']}/{o['random_count']} | {fmt_e(o['random_max'])} | "
+            f"{o['ns_random']:.0f} | {o['ns_hard']:.0f} |"
+        )
     ratio = {p: stats[p]["ns_random"] / stats[best]["ns_random"] for p in POLICIES}
     lines += [
         "",
         f"- Cost of the others relative to `{best}` (random cases): "
-        + ", ".join(f"`{p}` x{ratio[p]:.2f}" for p in others) + ".",
+        + ", ".join(f"`{p}` x{ratio[p]:.2f}" for p in others)
+        + ".",
     ]
     for prec in ("float", "longdouble"):
         ps = other_precisions[prec]
-        lines.append(f"- {prec if prec == 'float' else 'long double'} (bar {BAR[prec]:.1e}): cases over the bar "
-                     + ", ".join(f"`{p}` {ps[p]['hard_over']} hard / {ps[p]['random_over']} random "
-                                 f"(max {fmt_e(max(ps[p]['hard_max'], ps[p]['random_max']))})" for p in POLICIES)
-                     + ".")
+        lines.append(
+            f"- {prec if prec == 'float' else 'long double'} (bar {BAR[prec]:.1e}): cases over the bar "
+            + ", ".join(
+                f"`{p}` {ps[p]['hard_over']} hard / {ps[p]['random_over']} random "
+                f"(max {fmt_e(max(ps[p]['hard_max'], ps[p]['random_max']))})"
+                for p in POLICIES
+            )
+            + "."
+        )
     if s["failing_kinds"]:
         lines.append(f"- Even `{best}` misses the bar on: {', '.join(s['failing_kinds'])} (see the tables).")
     if sweep_summary:
@@ -440,52 +515,73 @@ def write_markdown(path, rows, best, stats, tied, other_precisions, cases, sweep
     for k in kinds:
         if (k, POLICIES[0]) not in dbl:
             continue
-        body.append([k] + [fmt_ns(dbl[(k, p)].ns_random) for p in POLICIES]
-                    + [f"{fmt_e(dbl[(k, p)].random_max)} / {fmt_e(dbl[(k, p)].hard_max)}" for p in POLICIES])
-    lines += [md_table(header, body), "", "![error against time](accuracy_vs_time.png)", "",
-              "## Every kind x policy x precision", "",
-              "ns random / ns hard: ns/query on the random / hard cases. `hard > bar`: hard cases over the",
-              "precision's bar. The worst hard case is named where it is over the bar.", ""]
+        body.append(
+            [k]
+            + [fmt_ns(dbl[(k, p)].ns_random) for p in POLICIES]
+            + [f"{fmt_e(dbl[(k, p)].random_max)} / {fmt_e(dbl[(k, p)].hard_max)}" for p in POLICIES]
+        )
+    lines += [
+        md_table(header, body),
+        "",
+        "![error against time](accuracy_vs_time.png)",
+        "",
+        "## Every kind x policy x precision",
+        "",
+        "ns random / ns hard: ns/query on the random / hard cases. `hard > bar`: hard cases over the",
+        "precision's bar. The worst hard case is named where it is over the bar.",
+        "",
+    ]
     lines.append(md_table(HEADER, [row_cells(r) for r in rows]))
-    lines += ["", "## Hard cases", "",
-              "Linear shapes against the unit circle / disk in its own frame: tangent in the plane; tangent",
-              "line lifted by 1e-3, 1e-6, 1e-9; line on the axis, offset from it by 1e-8 / 1e-12, tilted from it",
-              "by 1e-8 / 1e-12; near-parallel to the plane (1e-9) at height 1e-3 and over the rim at 1e-6;",
-              "crossing the plane on the rim and 1e-9 inside / outside it; in-plane lines; rays and segments",
-              "around and starting at each of those, plus their own (starting on the rim, zero length, ...);",
-              "points on the axis, the rim, near both. Circle / disk kinds: coplanar (disjoint, nested,",
-              "crossing, touching), concentric, coaxial, linked, near-coplanar (tilt 1e-9), parallel 1e-9 apart,",
-              "perpendicular touching, radius ratios 1e-6 / 1e6. Bezier kinds: straight curves tangent to the",
-              "rim (lifted by 1e-9), along the axis, parabolas touching the disk, a wavy quintic, a degree-7",
-              "curve; two curves: crossing, nearly touching (1e-9, 1e-13), tangent, nearly parallel, parallel",
-              "and identical (continua), a big curve against a small one, degenerate (point, collinear) curves",
-              "(circledist_cases/bezier_cases.py). Arcs (the unit circle's from +x over 3 pi / 2): the circle's",
-              "scenes (several tangent to or crossing at its start end, or on its axis), lines tangent at either",
-              "end (lifted by 1e-9), tangent 1e-9 past an end (the circle's closest point just off the arc),",
-              "through both ends and through the gap; circles, disks and arcs touching an end, with an end on",
-              "their axis, concentric and coaxial, linked through the gap, two arcs of one circle 1e-9 apart;",
-              "selected scenes also against arcs of angle 2 pi - 1e-9, 2 pi (the circle) and pi / 2. Annuli",
-              "(radii 0.5 and 1): the circle's scenes, lines along the axis through the hole, 1e-9 inside, on and",
-              "outside the inner rim, crossing the plane in the hole; circles, disks and arcs in the hole",
-              "(coplanar, concentric, lifted, perpendicular, 1e-9 from the inner rim), covering it, coplanar",
-              "overlapping, concentric and stacked annuli; selected scenes also against inner radius 0 (the",
-              "disk), = outer (the circle) and 1e-9 of outer. Each scene is used in the round shape's frame, under a generic rotation, and translated",
-              "by 1e6 and 1e8 (both orientations); selected linear scenes also with the scene scaled by",
-              "1e-9 / 1e9 and with the radius alone 1e-9 / 1e9 (those not translated: a radius of 1e-9 at 1e8,",
-              "where the ulp is 1.5e-8, would ask for an absolute error below the rounding of the line's own",
-              "closest point to the center, in any policy).", "",
-              f"Script runtime: {runtime:.0f} s (references cached in build/accuracy_vs_time/ after the first run).",
-              ""]
+    lines += [
+        "",
+        "## Hard cases",
+        "",
+        "Linear shapes against the unit circle / disk in its own frame: tangent in the plane; tangent",
+        "line lifted by 1e-3, 1e-6, 1e-9; line on the axis, offset from it by 1e-8 / 1e-12, tilted from it",
+        "by 1e-8 / 1e-12; near-parallel to the plane (1e-9) at height 1e-3 and over the rim at 1e-6;",
+        "crossing the plane on the rim and 1e-9 inside / outside it; in-plane lines; rays and segments",
+        "around and starting at each of those, plus their own (starting on the rim, zero length, ...);",
+        "points on the axis, the rim, near both. Circle / disk kinds: coplanar (disjoint, nested,",
+        "crossing, touching), concentric, coaxial, linked, near-coplanar (tilt 1e-9), parallel 1e-9 apart,",
+        "perpendicular touching, radius ratios 1e-6 / 1e6. Bezier kinds: straight curves tangent to the",
+        "rim (lifted by 1e-9), along the axis, parabolas touching the disk, a wavy quintic, a degree-7",
+        "curve; two curves: crossing, nearly touching (1e-9, 1e-13), tangent, nearly parallel, parallel",
+        "and identical (continua), a big curve against a small one, degenerate (point, collinear) curves",
+        "(circledist_cases/bezier_cases.py). Arcs (the unit circle's from +x over 3 pi / 2): the circle's",
+        "scenes (several tangent to or crossing at its start end, or on its axis), lines tangent at either",
+        "end (lifted by 1e-9), tangent 1e-9 past an end (the circle's closest point just off the arc),",
+        "through both ends and through the gap; circles, disks and arcs touching an end, with an end on",
+        "their axis, concentric and coaxial, linked through the gap, two arcs of one circle 1e-9 apart;",
+        "selected scenes also against arcs of angle 2 pi - 1e-9, 2 pi (the circle) and pi / 2. Annuli",
+        "(radii 0.5 and 1): the circle's scenes, lines along the axis through the hole, 1e-9 inside, on and",
+        "outside the inner rim, crossing the plane in the hole; circles, disks and arcs in the hole",
+        "(coplanar, concentric, lifted, perpendicular, 1e-9 from the inner rim), covering it, coplanar",
+        "overlapping, concentric and stacked annuli; selected scenes also against inner radius 0 (the",
+        "disk), = outer (the circle) and 1e-9 of outer. Each scene is used in the round shape's frame, "
+        "under a generic rotation, and translated",
+        "by 1e6 and 1e8 (both orientations); selected linear scenes also with the scene scaled by",
+        "1e-9 / 1e9 and with the radius alone 1e-9 / 1e9 (those not translated: a radius of 1e-9 at 1e8,",
+        "where the ulp is 1.5e-8, would ask for an absolute error below the rounding of the line's own",
+        "closest point to the center, in any policy).",
+        "",
+        f"Script runtime: {runtime:.0f} s (references cached in build/accuracy_vs_time/ after the first run).",
+        "",
+    ]
     path.write_text("\n".join(lines))
 
 
-POLICY_COLORS = {"EigenCompanion": "#1f77b4", "EigenPolished": "#d62728", "Bracketing": "#2ca02c",
-                 "EigenPolynomialSolver": "#9467bd"}
+POLICY_COLORS = {
+    "EigenCompanion": "#1f77b4",
+    "EigenPolished": "#d62728",
+    "Bracketing": "#2ca02c",
+    "EigenPolynomialSolver": "#9467bd",
+}
 PRECISION_MARKERS = {"float": "v", "double": "o", "longdouble": "s"}
 
 
 def plot_accuracy(path, rows, kinds):
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
@@ -504,8 +600,16 @@ def plot_accuracy(path, rows, kinds):
                 if not math.isfinite(ns):
                     continue
                 y = err if math.isfinite(err) else 1.0
-                ax.scatter([ns], [max(y, ERROR_FLOOR)], s=46, marker=mk, edgecolors=col,
-                           facecolors=col if filled else "none", linewidths=1.4, zorder=3)
+                ax.scatter(
+                    [ns],
+                    [max(y, ERROR_FLOOR)],
+                    s=46,
+                    marker=mk,
+                    edgecolors=col,
+                    facecolors=col if filled else "none",
+                    linewidths=1.4,
+                    zorder=3,
+                )
         for prec, ls in (("float", ":"), ("double", "--"), ("longdouble", "-.")):
             ax.axhline(BAR[prec], color="0.45", lw=0.9, ls=ls, zorder=1)
         ax.set_xscale("log")
@@ -517,18 +621,31 @@ def plot_accuracy(path, rows, kinds):
         ax.set_xlabel("ns / query", fontsize=9)
         ax.set_ylabel("max relative error", fontsize=9)
     legend_ax = axes.flat[len(kinds)]
-    for ax in list(axes.flat)[len(kinds):]:
+    for ax in list(axes.flat)[len(kinds) :]:
         ax.axis("off")
     handles = [Line2D([], [], ls="", marker="o", color=c, label=p, markersize=8) for p, c in POLICY_COLORS.items()]
-    handles += [Line2D([], [], ls="", marker=m, color="0.3", label=p if p != "longdouble" else "long double",
-                       markersize=8) for p, m in PRECISION_MARKERS.items()]
-    handles += [Line2D([], [], ls="", marker="o", color="0.3", label="hard cases (filled)", markersize=8),
-                Line2D([], [], ls="", marker="o", markerfacecolor="none", color="0.3",
-                       label="random cases (hollow)", markersize=8)]
-    handles += [Line2D([], [], color="0.45", ls=ls, label=f"bar {p}") for p, ls in
-                (("float", ":"), ("double", "--"), ("long double", "-."))]
-    legend_ax.legend(handles=handles, loc="center", fontsize=10, frameon=False,
-                     title=f"errors below {ERROR_FLOOR:.0e} drawn at it", title_fontsize=9)
+    handles += [
+        Line2D([], [], ls="", marker=m, color="0.3", label=p if p != "longdouble" else "long double", markersize=8)
+        for p, m in PRECISION_MARKERS.items()
+    ]
+    handles += [
+        Line2D([], [], ls="", marker="o", color="0.3", label="hard cases (filled)", markersize=8),
+        Line2D(
+            [], [], ls="", marker="o", markerfacecolor="none", color="0.3", label="random cases (hollow)", markersize=8
+        ),
+    ]
+    handles += [
+        Line2D([], [], color="0.45", ls=ls, label=f"bar {p}")
+        for p, ls in (("float", ":"), ("double", "--"), ("long double", "-."))
+    ]
+    legend_ax.legend(
+        handles=handles,
+        loc="center",
+        fontsize=10,
+        frameon=False,
+        title=f"errors below {ERROR_FLOOR:.0e} drawn at it",
+        title_fontsize=9,
+    )
     fig.suptitle("circledist: max relative error against time, per kind x root policy x precision", fontsize=13)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
     fig.savefig(path, dpi=110)
@@ -557,11 +674,16 @@ def summarize_failures(cases, errors, policies, bar):
                 errs = [(cases[i].k, errors[(i, pol)]) for i in idx]
                 worst_k, worst = max(errs, key=lambda e: e[1])
                 over = [k for k, e in errs if not e <= bar]
-                parts.append(f"{pol} max {fmt_e(worst)}" + (f" (k={worst_k})" if worst > 0 else "")
-                             + (f" OVER at k={','.join(map(str, over))}" if over else ""))
+                parts.append(
+                    f"{pol} max {fmt_e(worst)}"
+                    + (f" (k={worst_k})" if worst > 0 else "")
+                    + (f" OVER at k={','.join(map(str, over))}" if over else "")
+                )
                 if over:
-                    fails.append(f"{pol} on {family} / {member} at k = {','.join(map(str, over))} "
-                                 f"(max {fmt_e(worst)} at k={worst_k})")
+                    fails.append(
+                        f"{pol} on {family} / {member} at k = {','.join(map(str, over))} "
+                        f"(max {fmt_e(worst)} at k={worst_k})"
+                    )
             lines.append(f"{family} / {member}: " + "; ".join(parts))
     if fails:
         summary = "over the 1e-12 bar: " + "; ".join(fails) + "."
@@ -575,6 +697,7 @@ MEMBER_STYLES = [("-", "o"), ("--", "s"), (":", "^"), ("-.", "D"), ((0, (5, 1, 1
 
 def plot_sweeps(path, cases, errors, policies, colors, bar):
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
@@ -604,14 +727,26 @@ def plot_sweeps(path, cases, errors, policies, colors, bar):
         ax.set_ylabel("relative error (double)")
         ax.set_title(f"{fam}: {title}", fontsize=11)
         ax.grid(True, alpha=0.3)
-        handles = [Line2D([], [], color="0.25", ls=MEMBER_STYLES[i % len(MEMBER_STYLES)][0],
-                          marker=MEMBER_STYLES[i % len(MEMBER_STYLES)][1], label=m) for i, m in enumerate(members)]
+        handles = [
+            Line2D(
+                [],
+                [],
+                color="0.25",
+                ls=MEMBER_STYLES[i % len(MEMBER_STYLES)][0],
+                marker=MEMBER_STYLES[i % len(MEMBER_STYLES)][1],
+                label=m,
+            )
+            for i, m in enumerate(members)
+        ]
         handles += [Line2D([], [], color=colors[p], lw=3, label=p) for p in policies]
         ax.legend(handles=handles, fontsize=8, loc="upper left", ncol=2, framealpha=0.85)
-    for ax in list(axes.flat)[len(fams):]:
+    for ax in list(axes.flat)[len(fams) :]:
         ax.axis("off")
-    fig.suptitle("Stability sweeps toward degeneracies: |d - d_ref| / max(d_ref, largest radius), "
-                 f"errors below {ERROR_FLOOR:.0e} drawn at it", fontsize=12)
+    fig.suptitle(
+        "Stability sweeps toward degeneracies: |d - d_ref| / max(d_ref, largest radius), "
+        f"errors below {ERROR_FLOOR:.0e} drawn at it",
+        fontsize=12,
+    )
     fig.tight_layout(rect=(0, 0, 1, 0.96))
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -621,7 +756,9 @@ def plot_sweeps(path, cases, errors, policies, colors, bar):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--random", type=int, default=40, help="random cases per kind (default 40)")
-    ap.add_argument("--min-time", type=float, default=0.05, help="seconds of timing per kind x policy x precision x set")
+    ap.add_argument(
+        "--min-time", type=float, default=0.05, help="seconds of timing per kind x policy x precision x set"
+    )
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="processes for the references / compiling")
     ap.add_argument("--binary", help="use this accuracy_vs_time executable")
     ap.add_argument("--kinds", help="comma-separated subset of the kinds")
@@ -639,8 +776,11 @@ def main(argv=None):
     BUILD.mkdir(parents=True, exist_ok=True)
     probe.write_text("")
     subprocess.run([str(binary), str(probe), str(BUILD / "probe_out.txt"), "--min-time", "0"], check=True)
-    compiled = {ln.split()[1]: ln.split()[2] == "1" for ln in (BUILD / "probe_out.txt").read_text().splitlines()
-                if ln.startswith("K ")}
+    compiled = {
+        ln.split()[1]: ln.split()[2] == "1"
+        for ln in (BUILD / "probe_out.txt").read_text().splitlines()
+        if ln.startswith("K ")
+    }
     kinds = [k for k in kinds if compiled.get(k)]
 
     cases = generate_cases(args.random, kinds)
@@ -669,12 +809,16 @@ def main(argv=None):
             sweep_err[(j, pol)] = errors[(offset + j, pol, "double")]
     sweep_fail = summarize_failures(sweep_cases, sweep_err, POLICIES, DOUBLE_BAR)
     print()
-    print(f"Recommended default: {best} (current DefaultRoots: {current_default()}; "
-          f"equally accurate in double: {', '.join(tied)})")
+    print(
+        f"Recommended default: {best} (current DefaultRoots: {current_default()}; "
+        f"equally accurate in double: {', '.join(tied)})"
+    )
     for p in POLICIES:
         s = stats[p]
-        print(f"  {p:15s} hard over bar {s['hard_over']}/{s['hard_count']}  hard max {fmt_e(s['hard_max'])}  "
-              f"random over bar {s['random_over']}  ns (geomean random) {s['ns_random']:.0f}  hard {s['ns_hard']:.0f}")
+        print(
+            f"  {p:15s} hard over bar {s['hard_over']}/{s['hard_count']}  hard max {fmt_e(s['hard_max'])}  "
+            f"random over bar {s['random_over']}  ns (geomean random) {s['ns_random']:.0f}  hard {s['ns_hard']:.0f}"
+        )
     print("Stability sweeps (double, bar 1e-12):")
     for line in sweep_fail["lines"]:
         print("  " + line)
@@ -684,9 +828,22 @@ def main(argv=None):
         plot_sweeps(DOCS / "stability_sweeps.png", sweep_cases, sweep_err, POLICIES, POLICY_COLORS, DOUBLE_BAR)
         plot_accuracy(DOCS / "accuracy_vs_time.png", rows, kinds)
         runtime = time.time() - t_start
-        write_markdown(DOCS / "accuracy_vs_time.md", rows, best, stats, tied, other_precisions, all_cases,
-                       sweep_fail["summary"], runtime, args.random, kinds, compiled, args.min_time)
-        print(f"wrote docs/reports/accuracy_vs_time.md, accuracy_vs_time.png, stability_sweeps.png")
+        write_markdown(
+            DOCS / "accuracy_vs_time.md",
+            rows,
+            best,
+            stats,
+            tied,
+            other_precisions,
+            all_cases,
+            sweep_fail["summary"],
+            runtime,
+            args.random,
+            kinds,
+            compiled,
+            args.min_time,
+        )
+        print("wrote docs/reports/accuracy_vs_time.md, accuracy_vs_time.png, stability_sweeps.png")
     print(f"runtime {runtime:.0f} s")
     return 0
 

@@ -80,16 +80,18 @@ void report(const char* name, const char* call, PairTimes t) {
 
 // One pair kind: `first[i]` against arcs[i] and against `second[i]` (its circle; for arc-arc,
 // `first` holds arcs and `circles_first` their circles, compared with circle-circle).
-template <class A, class B, class C>
-void run(const char* name, const std::vector<A>& first, const std::vector<Arc3<Real>>& arcs,
-         const std::vector<B>& circle_first, const std::vector<C>& second, int repeats, double& sink) {
+template <class A, class B, class C> void run(const char* name, const std::vector<A>& first,
+                                              const std::vector<Arc3<Real>>& arcs, const std::vector<B>& circle_first,
+                                              const std::vector<C>& second, int repeats, double& sink) {
   const int n = int(arcs.size());
   report(name, "distance",
-         time_pair(n, repeats, [&](int i) { return distance(first[i], arcs[i]); },
-                   [&](int i) { return distance(circle_first[i], second[i]); }, sink));
+         time_pair(
+             n, repeats, [&](int i) { return distance(first[i], arcs[i]); },
+             [&](int i) { return distance(circle_first[i], second[i]); }, sink));
   report(name, "closest_points",
-         time_pair(n, repeats, [&](int i) { return closest_points(first[i], arcs[i]).distance; },
-                   [&](int i) { return closest_points(circle_first[i], second[i]).distance; }, sink));
+         time_pair(
+             n, repeats, [&](int i) { return closest_points(first[i], arcs[i]).distance; },
+             [&](int i) { return closest_points(circle_first[i], second[i]).distance; }, sink));
 }
 
 }  // namespace
@@ -121,8 +123,10 @@ int main(int argc, char** argv) {
     arc_circles.push_back(circle_of(arcs[i]));
     other_circles.push_back(circle_of(others[i]));
   }
-  std::printf("bench_arc: %d random pairs per kind, least of %d passes (thread CPU time), arc and circle "
-              "passes interleaved\n", n, repeats);
+  std::printf(
+      "bench_arc: %d random pairs per kind, least of %d passes (thread CPU time), arc and circle "
+      "passes interleaved\n",
+      n, repeats);
   run("point", points, arcs, points, arc_circles, repeats, sink);
   run("line", lines, arcs, lines, arc_circles, repeats, sink);
   run("ray", rays, arcs, rays, arc_circles, repeats, sink);
@@ -136,7 +140,8 @@ int main(int argc, char** argv) {
   // same loop against point-circle's whole distance. Where this ratio is above 0.3 a point-arc
   // query that reaches its far end cannot stay within 1.3x point-circle (docs/derivations/arc.md "Cost").
   const PairTimes trig = time_pair(
-      n, repeats, [&](int i) { return std::sin(arcs[i].angle) * points[i].x() + std::cos(arcs[i].angle) * points[i].y(); },
+      n, repeats,
+      [&](int i) { return std::sin(arcs[i].angle) * points[i].x() + std::cos(arcs[i].angle) * points[i].y(); },
       [&](int i) { return distance(points[i], arc_circles[i]); }, sink);
   std::printf("%-10s %-15s sin+cos %4.1f ns  point-circle distance %4.1f ns  ratio %5.2f\n", "floor", "angle trig",
               trig.arc, trig.circle, trig.arc / trig.circle);

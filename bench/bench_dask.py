@@ -32,8 +32,11 @@ def lazy_fields(kind, n, chunk, seed):
     at = rs.uniform(-100, 100, (n, 3), chunks=(chunk, 3))
     if kind == "Point":
         return {"p": at}
-    return {"center": at, "normal": rs.normal(size=(n, 3), chunks=(chunk, 3)),
-            "radius": rs.uniform(0.5, 2, n, chunks=chunk)}
+    return {
+        "center": at,
+        "normal": rs.normal(size=(n, 3), chunks=(chunk, 3)),
+        "radius": rs.uniform(0.5, 2, n, chunks=chunk),
+    }
 
 
 def numpy_fields(kind, n, rng):
@@ -54,9 +57,11 @@ def cluster_run(client, label, kind_a, kind_b, n, chunk):
     total = cdd.distance(a, b).sum().compute()
     elapsed = time.perf_counter() - t
     peaks = client.run(peak_mb)
-    print(f"{label}: n={n:.0e}, chunk={chunk:.0e}, 2 workers: {elapsed:.1f} s with drawing "
-          f"(draw only {draw:.1f} s, query ~{elapsed - draw:.1f} s, {n / max(elapsed - draw, 1e-9) / 1e6:.1f} M/s); "
-          f"peak RSS per worker {', '.join(f'{v:.0f}' for v in peaks.values())} MB; sum {total:.6e}")
+    print(
+        f"{label}: n={n:.0e}, chunk={chunk:.0e}, 2 workers: {elapsed:.1f} s with drawing "
+        f"(draw only {draw:.1f} s, query ~{elapsed - draw:.1f} s, {n / max(elapsed - draw, 1e-9) / 1e6:.1f} M/s); "
+        f"peak RSS per worker {', '.join(f'{v:.0f}' for v in peaks.values())} MB; sum {total:.6e}"
+    )
 
 
 def single_run(label, kind_a, kind_b, n, chunk):
@@ -70,8 +75,10 @@ def single_run(label, kind_a, kind_b, n, chunk):
         for _ in range(n // chunk):
             cd.distance(a, b, workers=workers).sum()
         elapsed = time.perf_counter() - t
-        print(f"{label}: n={n:.0e}, chunk={chunk:.0e}, single process workers={workers}: {elapsed:.1f} s "
-              f"({n / elapsed / 1e6:.1f} M/s); peak RSS {peak_mb():.0f} MB")
+        print(
+            f"{label}: n={n:.0e}, chunk={chunk:.0e}, single process workers={workers}: {elapsed:.1f} s "
+            f"({n / elapsed / 1e6:.1f} M/s); peak RSS {peak_mb():.0f} MB"
+        )
 
 
 def pairs_run(client, n, chunk):
@@ -84,10 +91,12 @@ def pairs_run(client, n, chunk):
     t = time.perf_counter()
     expected = cd.pairs_within(rings, sticks, 0.05)
     single = time.perf_counter() - t
+
     def on_cluster(shape):
         # The fields held by the workers before the clock starts, as a cluster's data would be.
-        names, arrays = zip(*[(k, da.from_array(v, chunks=(chunk,) + v.shape[1:]))
-                              for k, v in shape.to_arrays().items()])
+        names, arrays = zip(
+            *[(k, da.from_array(v, chunks=(chunk,) + v.shape[1:])) for k, v in shape.to_arrays().items()]
+        )
         arrays = client.persist(list(arrays))
         distributed.wait(arrays)
         return getattr(cdd, shape.kind).from_arrays(dict(zip(names, arrays)))
@@ -97,9 +106,11 @@ def pairs_run(client, n, chunk):
     got = dask.compute(*cdd.pairs_within(a, b, 0.05))
     elapsed = time.perf_counter() - t
     same = all(np.array_equal(g, e) for g, e in zip(got, expected))
-    print(f"pairs_within rings x segments, d=0.05: n={n:.0e} each, chunk={chunk:.0e}: 2 workers {elapsed:.1f} s, "
-          f"single process {single:.1f} s; {len(expected[0])} pairs, equal: {same}; peak RSS per worker "
-          f"{', '.join(f'{v:.0f}' for v in client.run(peak_mb).values())} MB")
+    print(
+        f"pairs_within rings x segments, d=0.05: n={n:.0e} each, chunk={chunk:.0e}: 2 workers {elapsed:.1f} s, "
+        f"single process {single:.1f} s; {len(expected[0])} pairs, equal: {same}; peak RSS per worker "
+        f"{', '.join(f'{v:.0f}' for v in client.run(peak_mb).values())} MB"
+    )
 
 
 def main():
@@ -110,8 +121,10 @@ def main():
     parser.add_argument("--chunk", type=float, default=2e6)
     args = parser.parse_args()
     chunk = int(args.chunk)
-    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+    with (
+        distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=None) as cluster,
+        distributed.Client(cluster) as client,
+    ):
         if args.points:
             cluster_run(client, "point-circle", "Point", "Circle", int(args.points), chunk)
         if args.circles:

@@ -55,13 +55,20 @@ def timed(fn, repeats):
 def old_scene_module():
     """The Scene of commit 9ae4333 (a NumPy bounding-volume hierarchy), on this build's _core."""
     try:
-        text = subprocess.run(["git", "show", f"{OLD_COMMIT}:python/circledist/scene.py"], cwd=ROOT,
-                              capture_output=True, text=True, check=True).stdout
+        text = subprocess.run(
+            ["git", "show", f"{OLD_COMMIT}:python/circledist/scene.py"],
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
     except (OSError, subprocess.CalledProcessError):
         return None
     module = types.ModuleType("circledist_old_scene")
-    exec(compile(text.replace("from . import _core", "from circledist import _core"), "old_scene.py", "exec"),
-         module.__dict__)
+    exec(
+        compile(text.replace("from . import _core", "from circledist import _core"), "old_scene.py", "exec"),
+        module.__dict__,
+    )
     return module
 
 
@@ -91,8 +98,13 @@ def single_adds(cls, n, rng):
 def large_run(n, side, d):
     """One cd.pairs_within over n rings x n segments in a process of its own: (time, pairs, peak
     memory in MB, memory of the inputs in MB)."""
-    out = subprocess.run([sys.executable, "-m", "bench.bench_pairs", "--pairs-only", "--n", str(n), "--side", str(side),
-                          "--d", str(d)], capture_output=True, text=True, check=True, cwd=ROOT).stdout.split()
+    out = subprocess.run(
+        [sys.executable, "-m", "bench.bench_pairs", "--pairs-only", "--n", str(n), "--side", str(side), "--d", str(d)],
+        capture_output=True,
+        text=True,
+        check=True,
+        cwd=ROOT,
+    ).stdout.split()
     return float(out[0]), int(out[1]), float(out[2]), float(out[3])
 
 
@@ -147,12 +159,16 @@ def main():
     for workers in (1, 2):
         t, (i, j, dist), s = timed(lambda: cd.pairs_within(rings, segments, args.d, workers=workers), args.repeats)
         runs[workers] = (t, i, j, dist)
-        say(f"| `cd.pairs_within(rings, segments, {args.d:g})` | {workers} | {t:.3f} s | {len(i):,} | "
-            f"{s['distances']:,} | {s['solves']:,} |")
+        say(
+            f"| `cd.pairs_within(rings, segments, {args.d:g})` | {workers} | {t:.3f} s | {len(i):,} | "
+            f"{s['distances']:,} | {s['solves']:,} |"
+        )
     same = all(np.array_equal(a, b) for a, b in zip(runs[1][1:], runs[2][1:]))
     say()
-    say(f"Speed-up on 2 workers: {runs[1][0] / runs[2][0]:.2f}x; the answers of 1 and 2 workers are "
-        f"{'identical' if same else 'DIFFERENT'}. Brute force would evaluate {args.n * args.n:,} distances.")
+    say(
+        f"Speed-up on 2 workers: {runs[1][0] / runs[2][0]:.2f}x; the answers of 1 and 2 workers are "
+        f"{'identical' if same else 'DIFFERENT'}. Brute force would evaluate {args.n * args.n:,} distances."
+    )
     say()
     # A control for what the machine gives a second thread right now: one batched distance call
     # (docs/reports/workers.md), and the process's CPU time against wall time.
@@ -163,9 +179,11 @@ def main():
         c0 = time.process_time()
         t, _, _ = timed(lambda: cd.distance(control_a, control_b, workers=workers), args.repeats)
         control[workers] = (t, (time.process_time() - c0) / args.repeats / t)
-    say(f"Control, the machine's second core at the time: `cd.distance` over 10^6 ring-segment pairs took "
+    say(
+        f"Control, the machine's second core at the time: `cd.distance` over 10^6 ring-segment pairs took "
         f"{control[1][0]:.3f} s on 1 worker and {control[2][0]:.3f} s on 2 ({control[1][0] / control[2][0]:.2f}x; "
-        f"CPU time / wall time {control[2][1]:.2f} on 2 workers).")
+        f"CPU time / wall time {control[2][1]:.2f} on 2 workers)."
+    )
     say()
 
     # 1b. cd.nearest(rings, segments) on 1 and 2 workers.
@@ -180,8 +198,10 @@ def main():
         say(f"| `cd.nearest(rings, segments, k=1)` | {workers} | {t:.3f} s | {s['distances']:,} |")
     same = all(np.array_equal(a, b) for a, b in zip(near[1][1:], near[2][1:]))
     say()
-    say(f"Speed-up on 2 workers: {near[1][0] / near[2][0]:.2f}x; the answers of 1 and 2 workers are "
-        f"{'identical' if same else 'DIFFERENT'}.")
+    say(
+        f"Speed-up on 2 workers: {near[1][0] / near[2][0]:.2f}x; the answers of 1 and 2 workers are "
+        f"{'identical' if same else 'DIFFERENT'}."
+    )
     say()
 
     # 2. Scene.pairs_within over all 2n shapes (ring-ring, segment-segment and ring-segment pairs,
@@ -194,29 +214,33 @@ def main():
     for workers in (1, 2):
         # A scene of its own for each count: its first query builds the hierarchy on its workers.
         t_build, scene, _ = timed(lambda: scene_of(cd.Scene, rings, segments), 1)
-        t, pairs, _ = timed(lambda: scene.pairs_within(args.d, workers=workers), 1)
+        t, pairs, _ = timed(lambda s=scene: s.pairs_within(args.d, workers=workers), 1)
         new[workers] = (t, pairs)
         say(f"| C++ broadphase (this commit) | {workers} | {t_build:.3f} s | {t:.3f} s | {len(pairs):,} |")
         del scene
     old_module = None if args.no_old else old_scene_module()
-    old = None
     if old_module is not None:
         t_old_build, old_scene, _ = timed(lambda: scene_of(old_module.Scene, rings, segments), 1)
         t_old, old_pairs, _ = timed(lambda: old_scene.pairs_within(args.d), 1)
-        old = (t_old, old_pairs)
         say(f"| NumPy ({OLD_COMMIT}) | 1 | {t_old_build:.3f} s | {t_old:.3f} s | {len(old_pairs):,} |")
         say()
-        say(f"Same pairs as the NumPy Scene: {'yes' if old_pairs == new[1][1] else 'NO'}. "
+        say(
+            f"Same pairs as the NumPy Scene: {'yes' if old_pairs == new[1][1] else 'NO'}. "
             f"Speed-up on one core: {t_old / new[1][0]:.1f}x; on two workers: {t_old / new[2][0]:.1f}x. "
             f"Speed-up of 2 workers over 1: {new[1][0] / new[2][0]:.2f}x; their pairs are "
-            f"{'identical' if new[1][1] == new[2][1] else 'DIFFERENT'}.")
+            f"{'identical' if new[1][1] == new[2][1] else 'DIFFERENT'}."
+        )
     else:
         say()
-        say(f"Speed-up on 2 workers: {new[1][0] / new[2][0]:.2f}x; the pairs of 1 and 2 workers are "
-            f"{'identical' if new[1][1] == new[2][1] else 'DIFFERENT'}.")
+        say(
+            f"Speed-up on 2 workers: {new[1][0] / new[2][0]:.2f}x; the pairs of 1 and 2 workers are "
+            f"{'identical' if new[1][1] == new[2][1] else 'DIFFERENT'}."
+        )
         say()
-        say("The NumPy Scene was not run (--no-old, or no git history): its documented figure for this query "
-            "is 4 to 5.5 s (measured on a scene of its own).")
+        say(
+            "The NumPy Scene was not run (--no-old, or no git history): its documented figure for this query "
+            "is 4 to 5.5 s (measured on a scene of its own)."
+        )
     say()
 
     # 2b. Large: the same density of pairs with 10x the shapes, in a process of its own.
@@ -225,8 +249,10 @@ def main():
         t, found, peak, inputs = large_run(args.large, round(side, 2), args.d)
         say(f"## cd.pairs_within: {args.large:,} rings x {args.large:,} segments (cube side {side:.2f}), one worker")
         say()
-        say(f"{found:,} pairs in {t:.2f} s; peak memory {peak:,.0f} MB, of which the inputs (the two batches and "
-            f"the interpreter) {inputs:,.0f} MB.")
+        say(
+            f"{found:,} pairs in {t:.2f} s; peak memory {peak:,.0f} MB, of which the inputs (the two batches and "
+            f"the interpreter) {inputs:,.0f} MB."
+        )
         say()
 
     # 3. Where pairs_within beats the full distance matrix.
@@ -264,33 +290,43 @@ def main():
         say(f"| {n:,} (NumPy Scene, {OLD_COMMIT}) | {adds:.2f} s | {adds / n * 1e6:.1f} us | {first:.2f} s |")
     say()
     peak = peak_mb()
-    say(f"Peak memory of the whole run (the NumPy Scene's pairs_within and the 10^6 single shapes made for")
+    say("Peak memory of the whole run (the NumPy Scene's pairs_within and the 10^6 single shapes made for")
     say(f"the adds among it): {peak:,.0f} MB.")
 
     if args.no_write:
         return
-    machine = (f"AMD EPYC, 2 cores ({platform.processor() or platform.machine()}, {os.cpu_count()} logical), "
-               f"Python {platform.python_version()}, NumPy {np.__version__}")
-    md = [
-        "# All-pairs queries: measurements",
-        "",
-        "Generated by `python -m bench.bench_pairs` (re-run it to refresh this page).",
-        "",
-        f"Machine: {machine}."
-        + (" The machine was **shared with other builds and test runs** while this ran: times are those of"
-           if load[0] > 0.5 * (os.cpu_count() or 1) else " Times on an otherwise idle machine;"),
-        "a busy machine, and the 2-worker rows say little about two idle cores (the"
-        if load[0] > 0.5 * (os.cpu_count() or 1) else "the 2-worker rows show what a second core gives (the",
-        "control row below shows what a second thread got at the time). Median of",
-        f"{args.repeats} runs where a table does not say otherwise; the Scene rows are one run. The NumPy Scene is",
-        f"the code of {OLD_COMMIT} run on this build's module, on the same machine at the same time (4 to",
-        "5.5 s were measured for its query on a scene of its own).",
-        "",
-        "`cd.pairs_within` returns the pairs with `distance <= d` (the distances to the bit);",
-        "`Scene.pairs_within` the pairs for which `cd.within` holds, over every pair of the scene's shapes",
-        "(ring-ring and segment-segment pairs too), so the two counts differ.",
-        "",
-    ] + lines + [""]
+    machine = (
+        f"AMD EPYC, 2 cores ({platform.processor() or platform.machine()}, {os.cpu_count()} logical), "
+        f"Python {platform.python_version()}, NumPy {np.__version__}"
+    )
+    md = (
+        [
+            "# All-pairs queries: measurements",
+            "",
+            "Generated by `python -m bench.bench_pairs` (re-run it to refresh this page).",
+            "",
+            f"Machine: {machine}."
+            + (
+                " The machine was **shared with other builds and test runs** while this ran: times are those of"
+                if load[0] > 0.5 * (os.cpu_count() or 1)
+                else " Times on an otherwise idle machine;"
+            ),
+            "a busy machine, and the 2-worker rows say little about two idle cores (the"
+            if load[0] > 0.5 * (os.cpu_count() or 1)
+            else "the 2-worker rows show what a second core gives (the",
+            "control row below shows what a second thread got at the time). Median of",
+            f"{args.repeats} runs where a table does not say otherwise; the Scene rows are one run. The NumPy Scene is",
+            f"the code of {OLD_COMMIT} run on this build's module, on the same machine at the same time (4 to",
+            "5.5 s were measured for its query on a scene of its own).",
+            "",
+            "`cd.pairs_within` returns the pairs with `distance <= d` (the distances to the bit);",
+            "`Scene.pairs_within` the pairs for which `cd.within` holds, over every pair of the scene's shapes",
+            "(ring-ring and segment-segment pairs too), so the two counts differ.",
+            "",
+        ]
+        + lines
+        + [""]
+    )
     with open(os.path.join(DOCS, "pairs.md"), "w") as f:
         f.write("\n".join(md))
     print("wrote docs/reports/pairs.md")

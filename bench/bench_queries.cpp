@@ -54,28 +54,70 @@ using Annulus = circledist::Annulus3<Real>;
 
 // ---- shape readers: Width<S>::value doubles per shape (0: variable, takes what is left) ------
 template <class S> struct Width;
-template <> struct Width<Point> { static constexpr int value = 3; };
-template <> struct Width<Line> { static constexpr int value = 6; };
-template <> struct Width<Ray> { static constexpr int value = 6; };
-template <> struct Width<Segment> { static constexpr int value = 6; };
-template <> struct Width<Circle> { static constexpr int value = 7; };
-template <> struct Width<Disk> { static constexpr int value = 7; };
-template <> struct Width<Arc> { static constexpr int value = 11; };
-template <> struct Width<Annulus> { static constexpr int value = 8; };
+template <> struct Width<Point> {
+  static constexpr int value = 3;
+};
+template <> struct Width<Line> {
+  static constexpr int value = 6;
+};
+template <> struct Width<Ray> {
+  static constexpr int value = 6;
+};
+template <> struct Width<Segment> {
+  static constexpr int value = 6;
+};
+template <> struct Width<Circle> {
+  static constexpr int value = 7;
+};
+template <> struct Width<Disk> {
+  static constexpr int value = 7;
+};
+template <> struct Width<Arc> {
+  static constexpr int value = 11;
+};
+template <> struct Width<Annulus> {
+  static constexpr int value = 8;
+};
 
 Vec3<Real> vec(const double* v) { return Vec3<Real>(v[0], v[1], v[2]); }
 
-bool read(Point& p, const double* v, int) { p = vec(v); return true; }
-bool read(Line& l, const double* v, int) { l = {vec(v), vec(v + 3)}; return true; }
-bool read(Ray& r, const double* v, int) { r = {vec(v), vec(v + 3)}; return true; }
-bool read(Segment& s, const double* v, int) { s = {vec(v), vec(v + 3)}; return true; }
-bool read(Circle& c, const double* v, int) { c = {vec(v), vec(v + 3), v[6]}; return true; }
-bool read(Disk& d, const double* v, int) { d = {vec(v), vec(v + 3), v[6]}; return true; }
-bool read(Arc& a, const double* v, int) { a = {vec(v), vec(v + 3), v[6], vec(v + 7), v[10]}; return true; }
-bool read(Annulus& a, const double* v, int) { a = {vec(v), vec(v + 3), v[6], v[7]}; return true; }
+bool read(Point& p, const double* v, int) {
+  p = vec(v);
+  return true;
+}
+bool read(Line& l, const double* v, int) {
+  l = {vec(v), vec(v + 3)};
+  return true;
+}
+bool read(Ray& r, const double* v, int) {
+  r = {vec(v), vec(v + 3)};
+  return true;
+}
+bool read(Segment& s, const double* v, int) {
+  s = {vec(v), vec(v + 3)};
+  return true;
+}
+bool read(Circle& c, const double* v, int) {
+  c = {vec(v), vec(v + 3), v[6]};
+  return true;
+}
+bool read(Disk& d, const double* v, int) {
+  d = {vec(v), vec(v + 3), v[6]};
+  return true;
+}
+bool read(Arc& a, const double* v, int) {
+  a = {vec(v), vec(v + 3), v[6], vec(v + 7), v[10]};
+  return true;
+}
+bool read(Annulus& a, const double* v, int) {
+  a = {vec(v), vec(v + 3), v[6], v[7]};
+  return true;
+}
 
 using Bezier = circledist::BezierCurve3<Real>;
-template <> struct Width<Bezier> { static constexpr int value = 0; };
+template <> struct Width<Bezier> {
+  static constexpr int value = 0;
+};
 bool read(Bezier& b, const double* v, int width) {
   const int points = width / 3;
   if (width % 3 != 0 || points < 1 || points > circledist::kMaxBezierDegree + 1) return false;
@@ -145,8 +187,7 @@ struct Timing {
 
 constexpr int kChunks = 10;
 
-template <class A, class B>
-Timing run(const KindData& data, double min_time, std::vector<double>& distances) {
+template <class A, class B> Timing run(const KindData& data, double min_time, std::vector<double>& distances) {
   struct Item {
     A a;
     B b;

@@ -183,14 +183,23 @@ KINDS = [
     Kind("bezier-bezier", "bezier", "bezier"),
     # Arcs and annuli, after the others so that their inputs stay the same bytes.
     *(Kind(f"{a}-arc", a, "arc") for a in ("point", "line", "ray", "segment", "circle", "disk", "arc", "bezier")),
-    *(Kind(f"{a}-annulus", a, "annulus")
-      for a in ("point", "line", "ray", "segment", "circle", "disk", "arc", "annulus", "bezier")),
+    *(
+        Kind(f"{a}-annulus", a, "annulus")
+        for a in ("point", "line", "ray", "segment", "circle", "disk", "arc", "annulus", "bezier")
+    ),
 ]
 # An arc query's circle counterpart: the arc replaced by its circle (a disk against an arc:
 # circle-disk; two arcs: circle-circle).
-ARC_COUNTERPART = {"point-arc": "point-circle", "line-arc": "line-circle", "ray-arc": "ray-circle",
-                   "segment-arc": "segment-circle", "circle-arc": "circle-circle", "disk-arc": "circle-disk",
-                   "arc-arc": "circle-circle", "bezier-arc": "bezier-circle"}
+ARC_COUNTERPART = {
+    "point-arc": "point-circle",
+    "line-arc": "line-circle",
+    "ray-arc": "ray-circle",
+    "segment-arc": "segment-circle",
+    "circle-arc": "circle-circle",
+    "disk-arc": "circle-disk",
+    "arc-arc": "circle-circle",
+    "bezier-arc": "bezier-circle",
+}
 
 
 @dataclass
@@ -295,8 +304,11 @@ def run_cpp(binary, rows, workdir):
             row.cpp_ns = float(parts[3])
             row.cpp_min_ns = float(parts[4])
             row.cpp_distances = distances[parts[1]]
-            print(f"   {parts[1]:15s} {row.cpp_ns:10.1f} ns/query  (median of {parts[5]} {parts[6]}, "
-                  f"min {float(parts[4]):.1f})", flush=True)
+            print(
+                f"   {parts[1]:15s} {row.cpp_ns:10.1f} ns/query  (median of {parts[5]} {parts[6]}, "
+                f"min {float(parts[4]):.1f})",
+                flush=True,
+            )
         elif parts and parts[0] == "S":
             by_name[parts[1]].notes.append("not in this C++ build")
             print(f"   {parts[1]:15s} not in this C++ build")
@@ -318,21 +330,28 @@ def run_paired(cd, binary, rows, workdir):
     fast = [row for row in rows if row.cpp_ns and row.batch_ns and row.cpp_ns * 1e-9 * row.n < PAIRED_MAX_SECONDS]
     if not fast or not Path(binary).is_file():
         return
-    print(f"== alternating C++ / Python rounds ({PAIRED_ROUNDS}) for {', '.join(r.kind.name for r in fast)}",
-          flush=True)
+    print(
+        f"== alternating C++ / Python rounds ({PAIRED_ROUNDS}) for {', '.join(r.kind.name for r in fast)}", flush=True
+    )
     for row in fast:
         inp, outp = Path(workdir) / f"paired-{row.kind.name}.bin", Path(workdir) / "paired-out.bin"
         write_input(inp, [row])
         A = getattr(cd, SHAPES[row.kind.a].cls)(*row.fields_a)
         B = getattr(cd, SHAPES[row.kind.b].cls)(*row.fields_b)
         for _ in range(PAIRED_ROUNDS):
-            proc = subprocess.run([str(binary), str(inp), str(outp), "--min-time", str(PAIRED_ROUND_SECONDS)],
-                                  capture_output=True, text=True, check=True)
+            proc = subprocess.run(
+                [str(binary), str(inp), str(outp), "--min-time", str(PAIRED_ROUND_SECONDS)],
+                capture_output=True,
+                text=True,
+                check=True,
+            )
             cpp = next(float(line.split()[3]) for line in proc.stdout.splitlines() if line.startswith("T "))
             py = median(repeat_timing(lambda: cd.distance(A, B), 5, 100, PAIRED_ROUND_SECONDS)) / row.n * 1e9
             row.paired_ratios.append(py / cpp)
-        print(f"   {row.kind.name:15s} batch/C++ per round: "
-              + " ".join(f"{r:.2f}" for r in row.paired_ratios), flush=True)
+        print(
+            f"   {row.kind.name:15s} batch/C++ per round: " + " ".join(f"{r:.2f}" for r in row.paired_ratios),
+            flush=True,
+        )
 
 
 def run_python(cd, rows, scalar_count, batch_time=1.0):
@@ -383,9 +402,12 @@ def run_python(cd, rows, scalar_count, batch_time=1.0):
                 distance(a, b)
 
         row.scalar_us = median(repeat_timing(scalar_pass, 3, 50, 0.5)) / m * 1e6
-        print(f"   {row.kind.name:15s} batch {row.batch_ns:10.1f} ns/query ({mode})   "
-              f"closest_points batch {row.closest_ns:10.1f} ns/query   "
-              f"scalar {row.scalar_us:8.3f} us/call", flush=True)
+        print(
+            f"   {row.kind.name:15s} batch {row.batch_ns:10.1f} ns/query ({mode})   "
+            f"closest_points batch {row.closest_ns:10.1f} ns/query   "
+            f"scalar {row.scalar_us:8.3f} us/call",
+            flush=True,
+        )
 
 
 # --------------------------------------------------------------------------------------------
@@ -429,9 +451,11 @@ def run_distance3d(rows, budget):
             row.d3d_max_delta = float(np.max(np.abs(delta)))
             row.d3d_larger = int(np.sum(delta > 1e-9))
             row.d3d_smaller = int(np.sum(delta < -1e-9))
-        print(f"   {row.kind.name:15s} {row.kind.d3d_name:24s} {row.d3d_ns:10.0f} ns/query on {m} queries, "
-              f"max |delta| {row.d3d_max_delta:.3g} (farther on {row.d3d_larger}, nearer on {row.d3d_smaller})",
-              flush=True)
+        print(
+            f"   {row.kind.name:15s} {row.kind.d3d_name:24s} {row.d3d_ns:10.0f} ns/query on {m} queries, "
+            f"max |delta| {row.d3d_max_delta:.3g} (farther on {row.d3d_larger}, nearer on {row.d3d_smaller})",
+            flush=True,
+        )
     return version
 
 
@@ -473,8 +497,10 @@ def memory_child(n, copy=False):
     d = cd.distance(points, circles)
     t2 = clock()
     after = peak()
-    print(f"n={n} baseline={baseline} before={before} after={after} hwm={hwm()} inputs={inputs} "
-          f"outputs={d.nbytes} construct_s={t1 - t0:.4f} call_s={t2 - t1:.4f}")
+    print(
+        f"n={n} baseline={baseline} before={before} after={after} hwm={hwm()} inputs={inputs} "
+        f"outputs={d.nbytes} construct_s={t1 - t0:.4f} call_s={t2 - t1:.4f}"
+    )
 
 
 def run_memory(n, copy=False):
@@ -496,10 +522,12 @@ def run_memory(n, copy=False):
     m["peak_over_baseline"] = m["after"] - m["baseline"]
     m["overhead"] = m["peak_over_baseline"] / io - 1.0
     mib = 1024.0**2
-    print(f"   inputs {m['inputs'] / mib:.0f} MiB + outputs {m['outputs'] / mib:.0f} MiB; peak above the "
-          f"interpreter's baseline {m['peak_over_baseline'] / mib:.0f} MiB: overhead {100 * m['overhead']:+.1f} % "
-          f"(the call itself: {m['extra'] / mib:+.0f} MiB beyond its output; ru_maxrss {m['after'] / mib:.0f} MiB, "
-          f"VmHWM {m['hwm'] / mib:.0f} MiB)")
+    print(
+        f"   inputs {m['inputs'] / mib:.0f} MiB + outputs {m['outputs'] / mib:.0f} MiB; peak above the "
+        f"interpreter's baseline {m['peak_over_baseline'] / mib:.0f} MiB: overhead {100 * m['overhead']:+.1f} % "
+        f"(the call itself: {m['extra'] / mib:+.0f} MiB beyond its output; ru_maxrss {m['after'] / mib:.0f} MiB, "
+        f"VmHWM {m['hwm'] / mib:.0f} MiB)"
+    )
     return m
 
 
@@ -530,8 +558,15 @@ def machine():
                 break
     except (OSError, IndexError):
         pass
-    return {"model": model, "cores": cores, "usable": usable, "load": " ".join(load), "compiler": compiler,
-            "python": platform.python_version(), "numpy": np.__version__}
+    return {
+        "model": model,
+        "cores": cores,
+        "usable": usable,
+        "load": " ".join(load),
+        "compiler": compiler,
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+    }
 
 
 def fmt(x, spec, missing="—"):
@@ -568,9 +603,11 @@ def table(rows):
         d3d = f"{row.d3d_ns:,.0f}" if row.d3d_ns is not None else "—"
         delta = fmt(row.d3d_max_delta, ".1e")
         closest_ratio = row.closest_ns / row.batch_ns if row.closest_ns and row.batch_ns else None
-        lines.append(f"| {row.kind.name} | {fmt(row.cpp_ns, '.1f')} | {fmt(row.batch_ns, '.1f')} | "
-                     f"{fmt(ratio, '.2f')} | {fmt(judged, '.2f')} | {fmt(row.closest_ns, '.1f')} | "
-                     f"{fmt(closest_ratio, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |")
+        lines.append(
+            f"| {row.kind.name} | {fmt(row.cpp_ns, '.1f')} | {fmt(row.batch_ns, '.1f')} | "
+            f"{fmt(ratio, '.2f')} | {fmt(judged, '.2f')} | {fmt(row.closest_ns, '.1f')} | "
+            f"{fmt(closest_ratio, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |"
+        )
     return "\n".join(lines)
 
 
@@ -584,32 +621,52 @@ def targets(rows, mem):
     for name in ("point-circle", "point-disk"):
         row = by.get(name)
         if row and row.cpp_ns is not None:
-            out.append(f"- {name} C++ scalar ≤ {TARGET_POINT_NS:g} ns: {row.cpp_ns:.1f} ns, "
-                       f"{verdict(row.cpp_ns <= TARGET_POINT_NS)}")
+            out.append(
+                f"- {name} C++ scalar ≤ {TARGET_POINT_NS:g} ns: {row.cpp_ns:.1f} ns, "
+                f"{verdict(row.cpp_ns <= TARGET_POINT_NS)}"
+            )
     ratios = [(judged_ratio(row), row.kind.name) for row in rows if judged_ratio(row)]
     if ratios:
         over = [f"{k} ({r:.2f})" for r, k in ratios if r > TARGET_BATCH_RATIO]
         worst = max(ratios)
-        out.append(f"- Python batch within {100 * (TARGET_BATCH_RATIO - 1):.0f} % of the C++ loop "
-                   "(judged ratio): "
-                   + (f"met for every kind (largest {worst[0]:.2f}, {worst[1]})" if not over
-                      else f"**missed** for {', '.join(over)}"))
+        out.append(
+            f"- Python batch within {100 * (TARGET_BATCH_RATIO - 1):.0f} % of the C++ loop "
+            "(judged ratio): "
+            + (
+                f"met for every kind (largest {worst[0]:.2f}, {worst[1]})"
+                if not over
+                else f"**missed** for {', '.join(over)}"
+            )
+        )
     # The issue sets ns targets for the point kinds only (the others' cost is the solver's, set by
     # the accuracy/time issue): the whole call is judged there, the binding's overhead (the call
     # less the C++ query) everywhere.
-    scal = [(row.scalar_us, row.kind.name) for row in rows
-            if row.scalar_us is not None and row.kind.name in ("point-circle", "point-disk")]
+    scal = [
+        (row.scalar_us, row.kind.name)
+        for row in rows
+        if row.scalar_us is not None and row.kind.name in ("point-circle", "point-disk")
+    ]
     if scal:
         over = [f"{k} ({u:.2f} µs)" for u, k in scal if u > TARGET_SCALAR_US]
-        out.append(f"- Python scalar call ≤ {TARGET_SCALAR_US:g} µs (point kinds): "
-                   + ("met (" + ", ".join(f"{k} {u:.2f} µs" for u, k in scal) + ")" if not over
-                      else f"**missed** for {', '.join(over)}"))
-    extra = [(row.scalar_us - row.cpp_ns / 1000, row.kind.name) for row in rows
-             if row.scalar_us is not None and row.cpp_ns is not None]
+        out.append(
+            f"- Python scalar call ≤ {TARGET_SCALAR_US:g} µs (point kinds): "
+            + (
+                "met (" + ", ".join(f"{k} {u:.2f} µs" for u, k in scal) + ")"
+                if not over
+                else f"**missed** for {', '.join(over)}"
+            )
+        )
+    extra = [
+        (row.scalar_us - row.cpp_ns / 1000, row.kind.name)
+        for row in rows
+        if row.scalar_us is not None and row.cpp_ns is not None
+    ]
     if extra:
         worst = max(extra)
-        out.append(f"- (for information) scalar call overhead, the call less the C++ query: "
-                   f"largest {worst[0]:.2f} µs ({worst[1]})")
+        out.append(
+            f"- (for information) scalar call overhead, the call less the C++ query: "
+            f"largest {worst[0]:.2f} µs ({worst[1]})"
+        )
     # The exactness issue's speed targets: rays and segments (which solve the line's equations)
     # against circles and disks within 1.3x the full line's C++ time, closest_points batched
     # within 2x the batched distance.
@@ -619,27 +676,41 @@ def targets(rows, mem):
             row = by.get(f"{piece}-{round_kind}")
             if line and row and line.cpp_ns and row.cpp_ns:
                 r = row.cpp_ns / line.cpp_ns
-                out.append(f"- {piece}-{round_kind} C++ ≤ {TARGET_PIECE_RATIO:g}x line-{round_kind}: {r:.2f}x, "
-                           f"{verdict(r <= TARGET_PIECE_RATIO)}")
+                out.append(
+                    f"- {piece}-{round_kind} C++ ≤ {TARGET_PIECE_RATIO:g}x line-{round_kind}: {r:.2f}x, "
+                    f"{verdict(r <= TARGET_PIECE_RATIO)}"
+                )
     # The target: an arc query costs at most 1.3x its circle counterpart. Here each kind has its own
     # random inputs; bench/bench_arc.cpp compares on the same shapes (docs/derivations/arc.md).
-    arcs = [(by[a].cpp_ns / by[c].cpp_ns, a, c) for a, c in ARC_COUNTERPART.items()
-            if a in by and c in by and by[a].cpp_ns and by[c].cpp_ns]
+    arcs = [
+        (by[a].cpp_ns / by[c].cpp_ns, a, c)
+        for a, c in ARC_COUNTERPART.items()
+        if a in by and c in by and by[a].cpp_ns and by[c].cpp_ns
+    ]
     if arcs:
         over = [f"{a} ({r:.2f}x {c})" for r, a, c in arcs if r > TARGET_ARC_RATIO]
         worst = max(arcs)
-        out.append(f"- arc C++ ≤ {TARGET_ARC_RATIO:g}x its circle counterpart (each on its own random inputs; "
-                   "`bench/bench_arc.cpp` compares on the same shapes): "
-                   + (f"met for every arc kind (largest {worst[0]:.2f}x, {worst[1]} against {worst[2]})" if not over
-                      else f"**missed** for {', '.join(over)}"))
+        out.append(
+            f"- arc C++ ≤ {TARGET_ARC_RATIO:g}x its circle counterpart (each on its own random inputs; "
+            "`bench/bench_arc.cpp` compares on the same shapes): "
+            + (
+                f"met for every arc kind (largest {worst[0]:.2f}x, {worst[1]} against {worst[2]})"
+                if not over
+                else f"**missed** for {', '.join(over)}"
+            )
+        )
     cl = [(row.closest_ns / row.batch_ns, row.kind.name) for row in rows if row.closest_ns and row.batch_ns]
     if cl:
         over = [f"{k} ({r:.2f}x)" for r, k in cl if r > TARGET_CLOSEST_RATIO]
-        out.append(f"- closest_points batch ≤ {TARGET_CLOSEST_RATIO:g}x distance batch: "
-                   + ("met for every kind" if not over else f"**missed** for {', '.join(over)}"))
+        out.append(
+            f"- closest_points batch ≤ {TARGET_CLOSEST_RATIO:g}x distance batch: "
+            + ("met for every kind" if not over else f"**missed** for {', '.join(over)}")
+        )
     if mem:
-        out.append(f"- peak memory of 10^7 point-circle queries ≤ inputs + outputs + {100 * TARGET_MEMORY:.0f} %: "
-                   f"{100 * mem['overhead']:+.1f} %, {verdict(mem['overhead'] <= TARGET_MEMORY)}")
+        out.append(
+            f"- peak memory of 10^7 point-circle queries ≤ inputs + outputs + {100 * TARGET_MEMORY:.0f} %: "
+            f"{100 * mem['overhead']:+.1f} %, {verdict(mem['overhead'] <= TARGET_MEMORY)}"
+        )
     return "\n".join(out)
 
 
@@ -687,12 +758,16 @@ def report(rows, info, mem, d3d_version, n, wall):
         parts.append("")
     d3d_rows = [row for row in rows if row.d3d_ns is not None]
     if d3d_rows:
-        parts.append("distance3d, per function: queries compared; how many of its distances are farther "
-                     "(> 1e-9) and nearer (< -1e-9) than circledist's:")
+        parts.append(
+            "distance3d, per function: queries compared; how many of its distances are farther "
+            "(> 1e-9) and nearer (< -1e-9) than circledist's:"
+        )
         parts.append("")
         for row in d3d_rows:
-            parts.append(f"- `{row.kind.d3d_name}` ({row.kind.name}): {row.d3d_count:,} queries, farther on "
-                         f"{row.d3d_larger:,}, nearer on {row.d3d_smaller:,}.")
+            parts.append(
+                f"- `{row.kind.d3d_name}` ({row.kind.name}): {row.d3d_count:,} queries, farther on "
+                f"{row.d3d_larger:,}, nearer on {row.d3d_smaller:,}."
+            )
         parts.append("")
     if mem:
         parts += [
@@ -704,9 +779,13 @@ def report(rows, info, mem, d3d_version, n, wall):
             f"(shape construction + `cd.distance`) raised the peak by {(mem['after'] - mem['before']) / mib:.0f} MiB "
             f"for its {mem['outputs'] / mib:.0f} MiB output. Building the shapes took {mem['construct_s']:.2f} s, "
             f"the call {mem['call_s']:.2f} s ({mem['call_s'] / mem['n'] * 1e9:.0f} ns/query)."
-            + (f" With the default `copy=True` each shape keeps its own copy of its inputs (a shape is a value): "
-               f"peak {mem['copied_peak'] / mib:.0f} MiB, overhead {100 * mem['copied_overhead']:+.1f} %, the inputs "
-               "once more, by design." if "copied_peak" in mem else ""),
+            + (
+                f" With the default `copy=True` each shape keeps its own copy of its inputs (a shape is a value): "
+                f"peak {mem['copied_peak'] / mib:.0f} MiB, overhead {100 * mem['copied_overhead']:+.1f} %, the inputs "
+                "once more, by design."
+                if "copied_peak" in mem
+                else ""
+            ),
             "",
         ]
     tgt = targets(rows, mem)

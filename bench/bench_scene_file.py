@@ -64,8 +64,12 @@ def scene_document(n, seed=7):
         else:
             spec.update(origin=p, direction=direction())
         shapes.append(spec)
-    queries = [{"a": "s0", "effects": ["nearest"], "k": 3}, {"a": "s1", "b": "s2", "effects": ["distance"]},
-               {"a": "s0", "effects": ["within"], "d": 0.5}, {"a": "s1", "effects": ["intersects"]}]
+    queries = [
+        {"a": "s0", "effects": ["nearest"], "k": 3},
+        {"a": "s1", "b": "s2", "effects": ["distance"]},
+        {"a": "s0", "effects": ["within"], "d": 0.5},
+        {"a": "s1", "effects": ["intersects"]},
+    ]
     return {"format": "circledist-scene", "version": 1, "shapes": shapes, "queries": queries}
 
 
@@ -112,8 +116,9 @@ def scene_building(sizes, batch, seed=11):
         report("  then the first query's build (arrays, hierarchy)", start)
     if batch:
         side = 2.0 * batch ** (1 / 3)
-        disks = cd.Disk(rng.uniform(-side / 2, side / 2, (batch, 3)), rng.normal(size=(batch, 3)),
-                        rng.uniform(0.2, 1, batch))
+        disks = cd.Disk(
+            rng.uniform(-side / 2, side / 2, (batch, 3)), rng.normal(size=(batch, 3)), rng.uniform(0.2, 1, batch)
+        )
         scene = cd.Scene()
         start = clock()
         scene.extend("d", disks)
@@ -126,8 +131,13 @@ def scene_building(sizes, batch, seed=11):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=200_000)
-    ap.add_argument("--adds", type=int, nargs="*", default=[1000, 10_000, 100_000],
-                    help="scene sizes at which to time Scene.add one by one")
+    ap.add_argument(
+        "--adds",
+        type=int,
+        nargs="*",
+        default=[1000, 10_000, 100_000],
+        help="scene sizes at which to time Scene.add one by one",
+    )
     ap.add_argument("--batch", type=int, default=1_000_000, help="the size of the Scene.extend batch (0: none)")
     args = ap.parse_args()
     print(f"circledist from {os.path.dirname(cd.__file__)}; {machine()}")

@@ -39,8 +39,14 @@ def shapes(kind, n, rng):
     return cd.Bezier(rng.normal(size=(n, 4, 3)))
 
 
-PAIRS = [("Line", "Circle"), ("Segment", "Disk"), ("Circle", "Circle"), ("Circle", "Disk"), ("Disk", "Disk"),
-         ("Bezier", "Disk")]
+PAIRS = [
+    ("Line", "Circle"),
+    ("Segment", "Disk"),
+    ("Circle", "Circle"),
+    ("Circle", "Disk"),
+    ("Disk", "Disk"),
+    ("Bezier", "Disk"),
+]
 
 
 def main():
@@ -62,20 +68,28 @@ def main():
                     entry(a, b, workers=workers)
                     times[workers].append(time.perf_counter() - start)
             one, every = statistics.median(times[1]), statistics.median(times[-1])
-            rows.append((f"{a_kind.lower()}-{b_kind.lower()}", entry.__name__, n, one / n * 1e9, every / n * 1e9,
-                         one / every))
+            rows.append(
+                (f"{a_kind.lower()}-{b_kind.lower()}", entry.__name__, n, one / n * 1e9, every / n * 1e9, one / every)
+            )
     m = machine()
-    lines = [f"# Batches on several threads (workers=)", "",
-             f"{m['model']}, {cores} usable cores; Python {m['python']}, "
-             f"NumPy {m['numpy']}. Median of {args.repeats} alternating runs "
-             f"of one batched call; `python -m bench.bench_workers` regenerates this file.", "",
-             f"| pair | entry | queries | ns/query, workers=1 | ns/query, workers=-1 | speedup |",
-             "|---|---|---|---|---|---|"]
+    lines = [
+        "# Batches on several threads (workers=)",
+        "",
+        f"{m['model']}, {cores} usable cores; Python {m['python']}, "
+        f"NumPy {m['numpy']}. Median of {args.repeats} alternating runs "
+        f"of one batched call; `python -m bench.bench_workers` regenerates this file.",
+        "",
+        "| pair | entry | queries | ns/query, workers=1 | ns/query, workers=-1 | speedup |",
+        "|---|---|---|---|---|---|",
+    ]
     for pair, entry, n, one, every, speedup in rows:
         lines.append(f"| {pair} | {entry} | {n:,} | {one:.0f} | {every:.0f} | {speedup:.2f}x |")
     worst = min(r[-1] for r in rows)
-    lines += ["", f"Smallest speedup {worst:.2f}x on {cores} cores (target on 2 cores: {TARGET}x): "
-              f"{'met' if cores != 2 or worst >= TARGET else 'missed'}."]
+    lines += [
+        "",
+        f"Smallest speedup {worst:.2f}x on {cores} cores (target on 2 cores: {TARGET}x): "
+        f"{'met' if cores != 2 or worst >= TARGET else 'missed'}.",
+    ]
     text = "\n".join(lines) + "\n"
     print(text)
     REPORT.write_text(text)

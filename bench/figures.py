@@ -51,11 +51,13 @@ def quartic_roots():
     b1 = M @ M - M[2] ** 2
     c0, c1, c2 = D @ D - D[2] ** 2, b0, b1
     r2 = R * R
-    d = [a1 * a1 * c2,
-         2 * (a1 * a1 * c1 + a0 * a1 * c2),
-         a1 * a1 * c0 + 4 * a0 * a1 * c1 + a0 * a0 * c2 - b1 * b1 * r2,
-         2 * (a0 * a1 * c0 + a0 * a0 * c1 - b0 * b1 * r2),
-         a0 * a0 * c0 - b0 * b0 * r2]
+    d = [
+        a1 * a1 * c2,
+        2 * (a1 * a1 * c1 + a0 * a1 * c2),
+        a1 * a1 * c0 + 4 * a0 * a1 * c1 + a0 * a0 * c2 - b1 * b1 * r2,
+        2 * (a0 * a1 * c0 + a0 * a0 * c1 - b0 * b1 * r2),
+        a0 * a0 * c0 - b0 * b0 * r2,
+    ]
     roots = np.roots(d)
     return np.sort(roots[np.abs(roots.imag) < 1e-9].real)
 
@@ -137,20 +139,49 @@ def main():
     bx.axvspan(t1, t2, color=ORANGE, alpha=0.08)
     bx.text((t1 + t2) / 2, 2.45, "inside: $x^2 + y^2 \\leq R^2$", ha="center", fontsize=8, color="0.3")
     left, inside, right = t <= t1, (t >= t1) & (t <= t2), t >= t2
-    bx.plot(t[inside], circle_distance(t[inside]), color=GRAY, lw=1, ls=":",
-            label="circle distance over the chord (not the disk's)")
-    bx.plot(t, np.abs(point(t)[:, 2]), color=ORANGE, lw=0.8, ls="--", alpha=0.6,
-            label="$|z(t)|$ continued: kink at the plane crossing")
+    bx.plot(
+        t[inside],
+        circle_distance(t[inside]),
+        color=GRAY,
+        lw=1,
+        ls=":",
+        label="circle distance over the chord (not the disk's)",
+    )
+    bx.plot(
+        t,
+        np.abs(point(t)[:, 2]),
+        color=ORANGE,
+        lw=0.8,
+        ls="--",
+        alpha=0.6,
+        label="$|z(t)|$ continued: kink at the plane crossing",
+    )
     bx.plot(t[left], circle_distance(t[left]), color=BLUE, lw=2.2)
     bx.plot(t[inside], height(t[inside]), color=ORANGE, lw=2.8)
     bx.plot(t[right], circle_distance(t[right]), color=GREEN, lw=2.2)
 
-    bx.scatter(roots, circle_distance(roots), marker="x", color="k", s=45, zorder=5,
-               label="real roots of the quartic (candidates)")
-    bx.scatter([t1, t2], height(np.array([t1, t2])), marker="o", facecolor="white", edgecolor="k",
-               s=40, zorder=5, label="rim crossings $t_1, t_2$: ray origins, segment ends")
-    bx.scatter([t_plane], [0], marker="D", color=GRAY, s=30, zorder=5,
-               label="plane crossing z = 0: outside $[t_1, t_2]$ here")
+    bx.scatter(
+        roots,
+        circle_distance(roots),
+        marker="x",
+        color="k",
+        s=45,
+        zorder=5,
+        label="real roots of the quartic (candidates)",
+    )
+    bx.scatter(
+        [t1, t2],
+        height(np.array([t1, t2])),
+        marker="o",
+        facecolor="white",
+        edgecolor="k",
+        s=40,
+        zorder=5,
+        label="rim crossings $t_1, t_2$: ray origins, segment ends",
+    )
+    bx.scatter(
+        [t_plane], [0], marker="D", color=GRAY, s=30, zorder=5, label="plane crossing z = 0: outside $[t_1, t_2]$ here"
+    )
     # The minimum of each piece, and the smallest.
     right_roots = roots[roots >= t2]
     tr = right_roots[np.argmin(circle_distance(right_roots))]
@@ -158,13 +189,31 @@ def main():
     for tm, dm, color in mins:
         bx.scatter([tm], [dm], marker="*", s=170, color=color, edgecolor="k", zorder=6)
     bx.scatter([], [], marker="*", s=120, color="w", edgecolor="k", label="the minimum of each piece")
-    bx.scatter([t_best], [best.distance], marker="o", s=260, facecolor="none", edgecolor=RED, lw=1.8, zorder=7,
-               label=f"the smallest of the three: the distance, {best.distance:.4f}")
-    bx.annotate("left ray: its origin $t_1$", (t1, circle_distance(t1)), (0.2, 0.45),
-                fontsize=8, arrowprops=dict(arrowstyle="->", color=BLUE))
-    bx.annotate("a quartic root over the chord:\nevaluated on the disk distance,\nnot a minimum",
-                (roots[0], circle_distance(roots[0])), (1.62, 0.1), fontsize=8,
-                arrowprops=dict(arrowstyle="->", color="k"))
+    bx.scatter(
+        [t_best],
+        [best.distance],
+        marker="o",
+        s=260,
+        facecolor="none",
+        edgecolor=RED,
+        lw=1.8,
+        zorder=7,
+        label=f"the smallest of the three: the distance, {best.distance:.4f}",
+    )
+    bx.annotate(
+        "left ray: its origin $t_1$",
+        (t1, circle_distance(t1)),
+        (0.2, 0.45),
+        fontsize=8,
+        arrowprops=dict(arrowstyle="->", color=BLUE),
+    )
+    bx.annotate(
+        "a quartic root over the chord:\nevaluated on the disk distance,\nnot a minimum",
+        (roots[0], circle_distance(roots[0])),
+        (1.62, 0.1),
+        fontsize=8,
+        arrowprops=dict(arrowstyle="->", color="k"),
+    )
     bx.set_xlim(lo, hi)
     bx.set_ylim(-0.05, 2.6)
     bx.set_xlabel("t")
@@ -184,10 +233,20 @@ def main():
     ix.scatter([t2], [height(t2)], marker="*", s=150, color=ORANGE, edgecolor="k", zorder=6)
     ix.scatter([tr], [circle_distance(tr)], marker="*", s=150, color=GREEN, edgecolor="k", zorder=6)
     ix.scatter([t_best], [best.distance], marker="o", s=220, facecolor="none", edgecolor=RED, lw=1.6, zorder=7)
-    ix.annotate("$t_2$: the inside minimum", (t2, height(t2)), (2.87, 0.18), fontsize=7,
-                arrowprops=dict(arrowstyle="->", color=ORANGE))
-    ix.annotate("a quartic root:\nthe right ray's minimum", (tr, circle_distance(tr)), (3.24, 0.355), fontsize=7,
-                arrowprops=dict(arrowstyle="->", color=GREEN))
+    ix.annotate(
+        "$t_2$: the inside minimum",
+        (t2, height(t2)),
+        (2.87, 0.18),
+        fontsize=7,
+        arrowprops=dict(arrowstyle="->", color=ORANGE),
+    )
+    ix.annotate(
+        "a quartic root:\nthe right ray's minimum",
+        (tr, circle_distance(tr)),
+        (3.24, 0.355),
+        fontsize=7,
+        arrowprops=dict(arrowstyle="->", color=GREEN),
+    )
     ix.set_ylim(0.16, 0.42)
     ix.tick_params(labelsize=7)
     ix.set_title("zoom near $t_2$", fontsize=8)
@@ -195,8 +254,10 @@ def main():
 
     OUT.parent.mkdir(exist_ok=True)
     fig.savefig(OUT, dpi=110)
-    print(f"written {OUT.relative_to(ROOT)}: rim crossings t1 = {t1:.4f}, t2 = {t2:.4f}; quartic roots {roots}; "
-          f"closest t = {t_best:.4f}, distance {best.distance:.6f}")
+    print(
+        f"written {OUT.relative_to(ROOT)}: rim crossings t1 = {t1:.4f}, t2 = {t2:.4f}; quartic roots {roots}; "
+        f"closest t = {t_best:.4f}, distance {best.distance:.6f}"
+    )
 
 
 if __name__ == "__main__":

@@ -35,13 +35,40 @@ from .scenes import SHARED_LINES, SHARED_POINTS, SHARED_RAYS, SHARED_SEGMENTS
 
 mp.dps = 50
 
-KINDS = ["point-circle", "point-disk", "line-circle", "ray-circle", "segment-circle", "line-disk",
-         "ray-disk", "segment-disk", "circle-circle", "circle-disk", "disk-disk", "bezier-disk",
-         "bezier-circle", "bezier-bezier",
-         # arcs and annuli, the arc or annulus second
-         "point-arc", "line-arc", "ray-arc", "segment-arc", "circle-arc", "disk-arc", "arc-arc", "bezier-arc",
-         "point-annulus", "line-annulus", "ray-annulus", "segment-annulus", "circle-annulus", "disk-annulus",
-         "arc-annulus", "annulus-annulus", "bezier-annulus"]
+KINDS = [
+    "point-circle",
+    "point-disk",
+    "line-circle",
+    "ray-circle",
+    "segment-circle",
+    "line-disk",
+    "ray-disk",
+    "segment-disk",
+    "circle-circle",
+    "circle-disk",
+    "disk-disk",
+    "bezier-disk",
+    "bezier-circle",
+    "bezier-bezier",
+    # arcs and annuli, the arc or annulus second
+    "point-arc",
+    "line-arc",
+    "ray-arc",
+    "segment-arc",
+    "circle-arc",
+    "disk-arc",
+    "arc-arc",
+    "bezier-arc",
+    "point-annulus",
+    "line-annulus",
+    "ray-annulus",
+    "segment-annulus",
+    "circle-annulus",
+    "disk-annulus",
+    "arc-annulus",
+    "annulus-annulus",
+    "bezier-annulus",
+]
 LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
 SHAPE_SIZE = {"point": 3, "line": 6, "ray": 6, "segment": 6, "circle": 7, "disk": 7, "arc": 11, "annulus": 8}
@@ -64,7 +91,7 @@ def split_values(kind, values):
 
 def _control_points(values):
     """A Bezier curve's control points from its values (k, then k points)."""
-    return [tuple(values[1 + 3 * i: 4 + 3 * i]) for i in range(int(values[0]))]
+    return [tuple(values[1 + 3 * i : 4 + 3 * i]) for i in range(int(values[0]))]
 
 
 def bar_scale(kind, values):
@@ -152,7 +179,7 @@ def _rotation(axis, angle):
     return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
 
 
-ROTATION = _rotation((0.36, -0.48, 0.8), 0.9)     # a generic rotation: every coordinate rounds
+ROTATION = _rotation((0.36, -0.48, 0.8), 0.9)  # a generic rotation: every coordinate rounds
 OFFSET_DIRECTION = np.array([1.0, -0.7, 0.4])
 PLACEMENTS = [("z", 0.0), ("rot", 0.0), ("z", 1e6), ("z", 1e8), ("rot", 1e6), ("rot", 1e8)]
 
@@ -215,11 +242,14 @@ LINE_SCENES = {
 RAY_EXTRA = SHARED_RAYS
 SEGMENT_EXTRA = SHARED_SEGMENTS
 POINT_SCENES = {**SHARED_POINTS, "over the rim 1e-9": (1, 0, T9), "in plane 1e-9 outside": (1 + T9, 0, 0)}
-RADIUS_SCENES = ["tangent in plane", "tangent lifted 1e-6", "on the axis", "crosses the plane on the rim",
-                 "generic"]
+RADIUS_SCENES = ["tangent in plane", "tangent lifted 1e-6", "on the axis", "crosses the plane on the rim", "generic"]
 # (scale of the whole scene, local radius)
-RADIUS_VARIANTS = {"scene x1e-9": (1e-9, 1.0), "scene x1e9": (1e9, 1.0), "radius 1e-9": (1.0, 1e-9),
-                   "radius 1e9": (1.0, 1e9)}
+RADIUS_VARIANTS = {
+    "scene x1e-9": (1e-9, 1.0),
+    "scene x1e9": (1e9, 1.0),
+    "radius 1e-9": (1.0, 1e-9),
+    "radius 1e9": (1.0, 1e9),
+}
 
 
 def _sub(a, b):
@@ -343,8 +373,16 @@ BEZIER_SCENES = {
     "parabola touching the rim": [(0, 0, 1), (1, 0, -1), (2, 0, 1)],
     "arc in plane crossing the rim": [(0.5, -1.5, 0), (1.5, 0, 0), (0.5, 1.5, 0)],
     "wavy quintic": _WAVY,
-    "degree 7 over the disk": [(-1.2, -0.8, 0.4), (-0.6, 1.1, -0.2), (0.1, -1.3, 0.5), (0.8, 1.2, 0.1),
-                               (1.3, -0.4, -0.3), (0.4, 0.9, 0.6), (-0.5, 0.2, 0.2), (1.1, 0.1, 0.3)],
+    "degree 7 over the disk": [
+        (-1.2, -0.8, 0.4),
+        (-0.6, 1.1, -0.2),
+        (0.1, -1.3, 0.5),
+        (0.8, 1.2, 0.1),
+        (1.3, -0.4, -0.3),
+        (0.4, 0.9, 0.6),
+        (-0.5, 0.2, 0.2),
+        (1.1, 0.1, 0.3),
+    ],
 }
 
 
@@ -384,10 +422,16 @@ UNIT_ANNULUS = _ann()
 # Variants of the local arc / annulus that selected scenes run against too: an arc whose gap is
 # 1e-9 wide and the whole circle (the circle's answers), a quarter; an annulus without a hole
 # (the disk), without width (the circle) and with a hole 1e-9 of its outer radius.
-ARC_VARIANTS = {"angle 2pi - 1e-9": _arc(angle=TWO_PI - T9), "angle 2pi, the circle": _arc(angle=TWO_PI),
-                "angle pi/2": _arc(angle=math.pi / 2)}
-ANNULUS_VARIANTS = {"inner 0, the disk": _ann(inner=0.0), "inner = outer, the circle": _ann(inner=1.0),
-                    "inner 1e-9 of outer": _ann(inner=1e-9)}
+ARC_VARIANTS = {
+    "angle 2pi - 1e-9": _arc(angle=TWO_PI - T9),
+    "angle 2pi, the circle": _arc(angle=TWO_PI),
+    "angle pi/2": _arc(angle=math.pi / 2),
+}
+ANNULUS_VARIANTS = {
+    "inner 0, the disk": _ann(inner=0.0),
+    "inner = outer, the circle": _ann(inner=1.0),
+    "inner 1e-9 of outer": _ann(inner=1e-9),
+}
 
 # Linear shapes against the arc, on top of the circle's scenes (several of which are already
 # tangent to or cross the circle at the arc's start end (1, 0, 0), or lie on its axis).
@@ -408,8 +452,14 @@ ARC_LINES = {
     "along the normal through the start end": ((1.0, 0.0, 0.5), Z),
     "along the normal through the gap": (_on(GAP, 0.5, 0.5), Z),
 }
-ARC_VARIANT_BASES = ["on the axis", "tangent in plane", "generic", "on the rim", "past the start end 1e-9",
-                     "tangent 1e-9 past the start end"]
+ARC_VARIANT_BASES = [
+    "on the axis",
+    "tangent in plane",
+    "generic",
+    "on the rim",
+    "past the start end 1e-9",
+    "tangent 1e-9 past the start end",
+]
 
 ANNULUS_POINTS = {
     "in the hole, in plane": (0.2, 0.1, 0.0),
@@ -428,8 +478,14 @@ ANNULUS_LINES = {  # "on the axis" (shared) is the line through the hole along t
     "crosses the plane 1e-9 inside the inner rim": ((0.5 - T9, 0.0, 0.0), (0.375, 0.5, 0.75)),
     "through the hole, tilted 1e-9 from the axis": ((0.0, 0.0, 0.5), (math.sin(T9), 0.0, math.cos(T9))),
 }
-ANNULUS_VARIANT_BASES = ["on the axis", "generic", "tangent in plane", "in the hole, in plane",
-                         "over the inner rim 1e-9", "crosses the plane in the hole"]
+ANNULUS_VARIANT_BASES = [
+    "on the axis",
+    "generic",
+    "tangent in plane",
+    "in the hole, in plane",
+    "over the inner rim 1e-9",
+    "crosses the plane in the hole",
+]
 
 CIRCLE_ARC_SCENES = {
     "coplanar touching the start end outside": (_c((2, 0, 0), Z, 1), UNIT_ARC),
@@ -467,8 +523,10 @@ DISK_ARC_SCENES = {
 ARC_ARC_SCENES = {
     "end to end, coplanar": (_arc((2, 0, 0), Z, 1, (-1, 0, 0), math.pi / 2), UNIT_ARC),
     "end to end, orthogonal": (_arc((2, 0, 0), Y, 1, (-1, 0, 0), math.pi), UNIT_ARC),
-    "same circle, the gap's arc 1e-9 short of both ends": (_arc(ORIGIN, Z, 1, _on(ARC_ANGLE + T9),
-                                                               math.pi / 2 - 2 * T9), UNIT_ARC),
+    "same circle, the gap's arc 1e-9 short of both ends": (
+        _arc(ORIGIN, Z, 1, _on(ARC_ANGLE + T9), math.pi / 2 - 2 * T9),
+        UNIT_ARC,
+    ),
     "same circle, overlapping": (_arc(ORIGIN, Z, 1, (-1, 0, 0), math.pi), UNIT_ARC),
     "concentric coplanar, overlapping ranges": (_arc(ORIGIN, Z, 2, X, math.pi), UNIT_ARC),
     "concentric coplanar, disjoint ranges": (_arc(ORIGIN, Z, 2, _on(-math.pi / 4), 0.5), UNIT_ARC),
@@ -482,9 +540,17 @@ ARC_ARC_SCENES = {
     "both 2pi - 1e-9, concentric coplanar": (_arc(ORIGIN, Z, 2, X, TWO_PI - T9), _arc(angle=TWO_PI - T9)),
     "generic": (_arc((1.5, 1, 1.2), (0.3, 0.8, 0.4), 0.8, X, 2.5), UNIT_ARC),
 }
-ROUND_ARC_VARIANT_BASES = ["concentric coplanar", "coaxial above", "coaxial above, larger", "generic",
-                           "start end on the circle's axis", "start end on the disk's axis",
-                           "the ring's closest point 1e-9 past the start", "linked", "over the gap, lifted"]
+ROUND_ARC_VARIANT_BASES = [
+    "concentric coplanar",
+    "coaxial above",
+    "coaxial above, larger",
+    "generic",
+    "start end on the circle's axis",
+    "start end on the disk's axis",
+    "the ring's closest point 1e-9 past the start",
+    "linked",
+    "over the gap, lifted",
+]
 
 CIRCLE_ANNULUS_SCENES = {
     "in the hole, coplanar": (_c((0.1, 0.05, 0), Z, 0.3), UNIT_ANNULUS),
@@ -525,8 +591,7 @@ ARC_ANNULUS_SCENES = {
     "over the hole, lifted": (_arc((0, 0, 0.5), Z, 0.25, X, math.pi), UNIT_ANNULUS),
     "perpendicular in the hole": (_arc(ORIGIN, X, 0.3, Z, math.pi), UNIT_ANNULUS),
     "perpendicular, far end touching the ring's face": (_arc((0.75, 0, 0.5), Y, 0.5, Z, math.pi), UNIT_ANNULUS),
-    "perpendicular, far end 1e-9 above the ring's face": (_arc((0.75, 0, 0.5 + T9), Y, 0.5, Z, math.pi),
-                                                          UNIT_ANNULUS),
+    "perpendicular, far end 1e-9 above the ring's face": (_arc((0.75, 0, 0.5 + T9), Y, 0.5, Z, math.pi), UNIT_ANNULUS),
     "concentric coplanar outside": (_arc(ORIGIN, Z, 2), UNIT_ANNULUS),
     "whole (angle 2pi), in the hole": (_arc((0.1, 0.05, 0), Z, 0.3, X, TWO_PI), UNIT_ANNULUS),
     "generic": (_arc((1.5, 1, 1.2), (0.3, 0.8, 0.4), 0.8, X, 2.5), UNIT_ANNULUS),
@@ -547,15 +612,32 @@ ANNULUS_ANNULUS_SCENES = {
     "linked, through the hole and past the rim": (_ann((1.0, 0, 0), Y, 0.7, 0.9), UNIT_ANNULUS),
     "generic": (_ann((1.5, 1, 1.2), (0.3, 0.8, 0.4), 0.3, 0.8), UNIT_ANNULUS),
 }
-ROUND_ANNULUS_VARIANT_BASES = ["in the hole, coplanar", "lying in the hole, coplanar", "perpendicular in the hole",
-                               "coaxial above, outside", "over the hole, lifted", "coplanar, in the other's hole",
-                               "stacked coaxial", "generic"]
-BEZIER_VARIANT_BASES = ["straight, tangent in plane", "straight, along the axis", "parabola touching the center",
-                        "wavy quintic"]
+ROUND_ANNULUS_VARIANT_BASES = [
+    "in the hole, coplanar",
+    "lying in the hole, coplanar",
+    "perpendicular in the hole",
+    "coaxial above, outside",
+    "over the hole, lifted",
+    "coplanar, in the other's hole",
+    "stacked coaxial",
+    "generic",
+]
+BEZIER_VARIANT_BASES = [
+    "straight, tangent in plane",
+    "straight, along the axis",
+    "parabola touching the center",
+    "wavy quintic",
+]
 _ROUND_TARGETS = {"circle": UNIT_CIRCLE, "disk": UNIT_DISK, "arc": UNIT_ARC, "annulus": UNIT_ANNULUS}
-_PAIR_SCENES = {"circle-arc": CIRCLE_ARC_SCENES, "disk-arc": DISK_ARC_SCENES, "arc-arc": ARC_ARC_SCENES,
-                "circle-annulus": CIRCLE_ANNULUS_SCENES, "disk-annulus": DISK_ANNULUS_SCENES,
-                "arc-annulus": ARC_ANNULUS_SCENES, "annulus-annulus": ANNULUS_ANNULUS_SCENES}
+_PAIR_SCENES = {
+    "circle-arc": CIRCLE_ARC_SCENES,
+    "disk-arc": DISK_ARC_SCENES,
+    "arc-arc": ARC_ARC_SCENES,
+    "circle-annulus": CIRCLE_ANNULUS_SCENES,
+    "disk-annulus": DISK_ANNULUS_SCENES,
+    "arc-annulus": ARC_ANNULUS_SCENES,
+    "annulus-annulus": ANNULUS_ANNULUS_SCENES,
+}
 
 
 def _with_radius(shape, r):
@@ -658,8 +740,14 @@ def random_cases(kind, n):
         elif a in ROUND:
             sa = (a, c + rng.uniform(-2, 2, 3), rng.normal(size=3), rng.uniform(0.2, 2.0))
         elif a == "arc":  # a random start and an angle in [0.2, 2 pi)
-            sa = (a, c + rng.uniform(-2, 2, 3), rng.normal(size=3), rng.uniform(0.2, 2.0), rng.normal(size=3),
-                  rng.uniform(0.2, TWO_PI))
+            sa = (
+                a,
+                c + rng.uniform(-2, 2, 3),
+                rng.normal(size=3),
+                rng.uniform(0.2, 2.0),
+                rng.normal(size=3),
+                rng.uniform(0.2, TWO_PI),
+            )
         elif a == "annulus":  # a hole of 5 to 95 % of the outer radius
             outer = rng.uniform(0.2, 2.0)
             sa = (a, c + rng.uniform(-2, 2, 3), rng.normal(size=3), outer * rng.uniform(0.05, 0.95), outer)

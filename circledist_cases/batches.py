@@ -6,8 +6,22 @@ import numpy as np
 import circledist as cd
 
 # The trailing (per element) dimensions of each constructor argument: the rest is batch.
-TRAILING = {"p": 1, "origin": 1, "direction": 1, "p0": 1, "p1": 1, "center": 1, "normal": 1, "radius": 0,
-            "control_points": 2, "start": 1, "angle": 0, "inner_radius": 0, "outer_radius": 0, "sweep": 0}
+TRAILING = {
+    "p": 1,
+    "origin": 1,
+    "direction": 1,
+    "p0": 1,
+    "p1": 1,
+    "center": 1,
+    "normal": 1,
+    "radius": 0,
+    "control_points": 2,
+    "start": 1,
+    "angle": 0,
+    "inner_radius": 0,
+    "outer_radius": 0,
+    "sweep": 0,
+}
 SUPPORTED = {tuple(p) for p in cd._core._query_kinds()}
 
 
@@ -24,8 +38,13 @@ def random_batch(kind, n, rng, box=4.0, swept=True):
     elif kind in ("Circle", "Disk"):
         args = (at, rng.normal(size=(n, 3)), rng.uniform(0.1, 1.2, n))
     elif kind == "Arc":
-        args = (at, rng.normal(size=(n, 3)), rng.uniform(0.1, 1.2, n), rng.normal(size=(n, 3)),
-                rng.uniform(0.2, 2 * np.pi, n))
+        args = (
+            at,
+            rng.normal(size=(n, 3)),
+            rng.uniform(0.1, 1.2, n),
+            rng.normal(size=(n, 3)),
+            rng.uniform(0.2, 2 * np.pi, n),
+        )
     elif kind == "Annulus":
         outer = rng.uniform(0.1, 1.2, n)
         args = (at, rng.normal(size=(n, 3)), outer * rng.uniform(0, 1, n), outer)

@@ -14,8 +14,16 @@ def as_floats(v):
     return tuple(float(x) for x in v)
 
 
-CLASSES = {"point": cd.Point, "line": cd.Line, "ray": cd.Ray, "segment": cd.Segment, "circle": cd.Circle,
-           "disk": cd.Disk, "arc": cd.Arc, "annulus": cd.Annulus}
+CLASSES = {
+    "point": cd.Point,
+    "line": cd.Line,
+    "ray": cd.Ray,
+    "segment": cd.Segment,
+    "circle": cd.Circle,
+    "disk": cd.Disk,
+    "arc": cd.Arc,
+    "annulus": cd.Annulus,
+}
 
 
 def make(shape, dtype=np.float64, **kw):
@@ -104,8 +112,14 @@ def random_shape(kind, rng, box=1.5):
     if kind in ("circle", "disk"):
         return (kind, as_floats(at), as_floats(rng.normal(size=3)), float(rng.uniform(0.2, 2)))
     if kind == "arc":
-        return ("arc", as_floats(at), as_floats(rng.normal(size=3)), float(rng.uniform(0.2, 2)),
-                as_floats(rng.normal(size=3)), float(rng.uniform(0.2, 2 * np.pi)))
+        return (
+            "arc",
+            as_floats(at),
+            as_floats(rng.normal(size=3)),
+            float(rng.uniform(0.2, 2)),
+            as_floats(rng.normal(size=3)),
+            float(rng.uniform(0.2, 2 * np.pi)),
+        )
     assert kind == "annulus", kind
     outer = rng.uniform(0.3, 2)
     return ("annulus", as_floats(at), as_floats(rng.normal(size=3)), float(outer * rng.uniform(0.1, 0.9)), float(outer))
@@ -147,7 +161,7 @@ def assert_scene_equals_brute_force(shapes, probes, word):
         assert scene.nearest(probe, k=6) == [(names[i], d) for d, i in order[:6]]
         assert scene.within(probe, 1.0) == [n for n in others if cd.within(shape, shapes[n], 1.0)]
     for d in (0.0, 0.5, 1.5):
-        brute = [(x, y) for i, x in enumerate(names) for y in names[i + 1:] if cd.within(shapes[x], shapes[y], d)]
+        brute = [(x, y) for i, x in enumerate(names) for y in names[i + 1 :] if cd.within(shapes[x], shapes[y], d)]
         assert scene.pairs_within(d) == brute
         assert any(word in x + y for x, y in brute) or d == 0.0
 
@@ -240,8 +254,10 @@ def assert_older_version_refused(path, version, name, kind):
     if str(path).endswith(".json"):
         data = json.loads(path.read_text())
         data["version"] = older
-        message = (rf"\$\.shapes\[0\]\.kind \(shape '{name}'\): kind '{kind}' needs format version {version} or "
-                   rf"later, the file says version {older}")
+        message = (
+            rf"\$\.shapes\[0\]\.kind \(shape '{name}'\): kind '{kind}' needs format version {version} or "
+            rf"later, the file says version {older}"
+        )
         with pytest.raises(cd.SceneFileError, match=message):
             cd.scenefile.scene_from_json(data, "old.json")
     else:

@@ -86,9 +86,9 @@ ROUND_KINDS = ("circle", "disk")
 
 _THETA_TOL = mpf("1e-20")
 _T_REL_TOL = mpf("1e-22")
-_TINY_REL = mpf("1e-19")     # see RefResult._tiny_radius
-_UNIQUE_REL = 1e-8           # minimiser sets narrower than this * scale count as one pair
-_DEGENERATE_REL = 1e-3       # minimiser sets wider than this * scale are exact continua/ties
+_TINY_REL = mpf("1e-19")  # see RefResult._tiny_radius
+_UNIQUE_REL = 1e-8  # minimiser sets narrower than this * scale count as one pair
+_DEGENERATE_REL = 1e-3  # minimiser sets wider than this * scale are exact continua/ties
 
 
 # ----------------------------------------------------------------------------
@@ -291,8 +291,9 @@ class _RimMin:
 
     def __init__(self, lin, rnd):
         self.obj = _RimObjective(lin, rnd)
-        self.minima = bracketed_min_1d(self.obj.g2, self.obj.g2_np, mpf(0), 2 * mp.pi,
-                                     True, _THETA_TOL, lipschitz=float(rnd.R))
+        self.minima = bracketed_min_1d(
+            self.obj.g2, self.obj.g2_np, mpf(0), 2 * mp.pi, True, _THETA_TOL, lipschitz=float(rnd.R)
+        )
         self.theta, g2 = self.minima[0]
         self.value = mp.sqrt(g2)
         self.point_lin, self.point_round = self.obj.pair(self.theta)
@@ -372,7 +373,7 @@ class RefResult:
             # a pair (p, q) with |p - q| <= level whose p (or q) is the nearest point to
             # the other one at distance >= d: the partner is within slack of that
             # nearest point (Pythagoras at a nearest point of a convex set)
-            slack = mp.sqrt(max(level * level - self.distance ** 2, mpf(0)))
+            slack = mp.sqrt(max(level * level - self.distance**2, mpf(0)))
             res = self._radius_fn(level, slack)
             if isinstance(res, str):
                 self._cache[level] = (math.inf, math.inf, res)
@@ -386,7 +387,7 @@ class RefResult:
         # are accurate to ~1e-40*scale^2 in g^2 (golden bracket 1e-20 rad), so exact ties
         # are recognised even between simple zeros of g, where g itself is only good to
         # ~1e-20*scale.
-        level = mp.sqrt(self.distance ** 2 + (_TINY_REL * self._eff_scale) ** 2)
+        level = mp.sqrt(self.distance**2 + (_TINY_REL * self._eff_scale) ** 2)
         ra, rb, reason = self._radius_at_level(level)
         return max(ra, rb), reason
 
@@ -458,10 +459,10 @@ def _ref_circle(lin, rnd):
     d = rm.value
 
     def radius(level, slack):
-        th = rm.theta_radius(level ** 2)
+        th = rm.theta_radius(level**2)
         if isinstance(th, str):
             return th
-        r_round = rnd.R * th       # chord <= R * angle
+        r_round = rnd.R * th  # chord <= R * angle
         # the nearest point of the convex S to a rim point is 1-Lipschitz in that point;
         # a near-optimal partner may further be off that nearest point by <= slack
         return r_round + slack, r_round
@@ -497,7 +498,7 @@ def _ref_disk(lin, rnd):
     # (I) intersection
     if lin.mm > 0:
         b = _sub(lin.B, rnd.C)
-        hb = _dot(b, rnd.nraw)        # exact-ish: products of binary64 numbers, 166-bit sums
+        hb = _dot(b, rnd.nraw)  # exact-ish: products of binary64 numbers, 166-bit sums
         mn = _dot(lin.m, rnd.nraw)
         if mn != 0:
             t0 = -hb / mn
@@ -581,8 +582,7 @@ def _line_window(lin, rnd):
     tc = -_dot(b, lin.m) / lin.mm
     dc2 = _dot(_add(b, _mul(tc, lin.m)), _add(b, _mul(tc, lin.m)))
     dref = _norm(_sub(lin.point(lin.clamp(tc)), rnd.C))
-    half = mp.sqrt(max((dref + 2 * rnd.R) ** 2 - dc2, mpf(0)) / lin.mm) * mpf("1.001") + \
-        mpf("1e-30") * (1 + abs(tc))
+    half = mp.sqrt(max((dref + 2 * rnd.R) ** 2 - dc2, mpf(0)) / lin.mm) * mpf("1.001") + mpf("1e-30") * (1 + abs(tc))
     lo, hi = tc - half, tc + half
     if lin.lo is not None:
         lo = max(lo, lin.lo)
@@ -659,7 +659,7 @@ def brute_force(lin_kind, lin_data, round_kind, round_data, n_lin=500, n_theta=7
         gap_round = math.hypot(2 * R * np.pi / n_theta, R / n_rad / 2)
     best = np.inf
     for k in range(0, len(Q), 512):
-        diff = P[:, None, :] - Q[None, k:k + 512, :]
+        diff = P[:, None, :] - Q[None, k : k + 512, :]
         best = min(best, float(np.sqrt(np.min(np.einsum("ijk,ijk->ij", diff, diff)))))
     return best, gap_lin + gap_round
 

@@ -43,7 +43,6 @@ def _radii(shape):
     return [shape[4]] if shape[0] == "annulus" else []
 
 
-
 # ------------------------------------------------------------------------------------------------
 # shapes as plain tuples: (kind, *fields), fields as tuples of floats
 # ------------------------------------------------------------------------------------------------
@@ -153,8 +152,9 @@ def minimum_along(curve, other, feature):
     resolution = max(feature, plain / 8)
     if speed * (hi - lo) / INTERVALS <= resolution:
         return plain
-    return K.minimize_1d(f, lo, hi, INTERVALS, periodic, lipschitz=lambda x, y: speed,
-                         resolution=lambda x, y, step: resolution)[0].value
+    return K.minimize_1d(
+        f, lo, hi, INTERVALS, periodic, lipschitz=lambda x, y: speed, resolution=lambda x, y, step: resolution
+    )[0].value
 
 
 @functools.lru_cache(maxsize=None)

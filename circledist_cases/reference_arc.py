@@ -27,7 +27,7 @@ from . import reference_kit as K
 from . import reference_round as R
 
 mpf, ctx = K.mpf, K.ctx
-TWO_PI = 2 * math.pi     # float64's 2 pi: an angle >= this is the whole circle (docs/derivations/arc.md)
+TWO_PI = 2 * math.pi  # float64's 2 pi: an angle >= this is the whole circle (docs/derivations/arc.md)
 INTERVALS = 720
 
 
@@ -105,7 +105,7 @@ def _target_radius(shape):
     return K.to_mp(shape[3]) if shape[0] in ("circle", "disk", "arc") else None
 
 
-ZOOM_SAMPLES = 4000   # the zoom's cap on added samples per reference (lowest bounds first)
+ZOOM_SAMPLES = 4000  # the zoom's cap on added samples per reference (lowest bounds first)
 
 
 @functools.lru_cache(maxsize=4096)
@@ -127,8 +127,16 @@ def reference_mp(a, b, intervals=INTERVALS):
     hi = 2 * ctx.pi if arc_a.whole else arc_a.angle
     rt = _target_radius(b)
     big = rt is not None and rt > 0 and arc_a.r * hi / intervals > rt / K.ZOOM_FRACTION
-    return _least(arc_a.at, point_distance_function(b), hi, intervals, arc_a.whole, lambda lo_, hi_: arc_a.r,
-                  max(arc_a.r, rt or 0), rt / K.ZOOM_FRACTION if big else None)
+    return _least(
+        arc_a.at,
+        point_distance_function(b),
+        hi,
+        intervals,
+        arc_a.whole,
+        lambda lo_, hi_: arc_a.r,
+        max(arc_a.r, rt or 0),
+        rt / K.ZOOM_FRACTION if big else None,
+    )
 
 
 def _least(point_at, other, hi, intervals, periodic, lipschitz, scale, round_res=None):
@@ -146,8 +154,16 @@ def _least(point_at, other, hi, intervals, periodic, lipschitz, scale, round_res
         res = max(min(seen[lo_._mpf_], seen[hi_._mpf_]) - lh / 2, floor) / K.ZOOM_FRACTION
         return res if round_res is None else min(res, round_res)
 
-    minima = K.minimize_1d(f, mpf(0), hi, intervals, periodic=periodic, lipschitz=lipschitz, resolution=resolution,
-                           max_samples=ZOOM_SAMPLES)
+    minima = K.minimize_1d(
+        f,
+        mpf(0),
+        hi,
+        intervals,
+        periodic=periodic,
+        lipschitz=lipschitz,
+        resolution=resolution,
+        max_samples=ZOOM_SAMPLES,
+    )
     return minima[0].value
 
 
@@ -158,8 +174,16 @@ def bezier_arc(ctrl, arc_shape):
     arc_b = ArcMP(arc_shape)
     pts = [K.vec(p) for p in ctrl]
     extent = max(float(K.norm(K.sub(p, pts[0]))) for p in pts)
-    return _least(lambda t: R.bezier_point(ctrl, t), arc_b.point_distance, mpf(1), R.CURVE_SAMPLES, False,
-                  R._speed_bound(ctrl), max(arc_b.r, extent), arc_b.r / K.ZOOM_FRACTION)
+    return _least(
+        lambda t: R.bezier_point(ctrl, t),
+        arc_b.point_distance,
+        mpf(1),
+        R.CURVE_SAMPLES,
+        False,
+        R._speed_bound(ctrl),
+        max(arc_b.r, extent),
+        arc_b.r / K.ZOOM_FRACTION,
+    )
 
 
 def reference(a, b, intervals=INTERVALS):

@@ -36,8 +36,8 @@ from . import reference_round as R
 
 mpf = K.mpf
 ctx = K.ctx
-GRID = 384          # grid intervals per parameter
-MAX_STARTS = 12     # grid local minima refined
+GRID = 384  # grid intervals per parameter
+MAX_STARTS = 12  # grid local minima refined
 NEWTON_STEPS = 400  # Newton iterations per start (tangencies converge linearly)
 
 
@@ -51,7 +51,7 @@ def _grid_points(ctrl: np.ndarray, origin: np.ndarray, ts: np.ndarray) -> np.nda
     rel = ctrl - origin
     out = np.zeros((len(ts), 3))
     for i in range(k + 1):
-        out += math.comb(k, i) * (ts ** i * (1 - ts) ** (k - i))[:, None] * rel[i]
+        out += math.comb(k, i) * (ts**i * (1 - ts) ** (k - i))[:, None] * rel[i]
     return out
 
 
@@ -83,7 +83,7 @@ def _starts(ca: np.ndarray, cb: np.ndarray):
     for di in (-1, 0, 1):
         for dj in (-1, 0, 1):
             if di or dj:
-                local &= f <= padded[1 + di:1 + di + f.shape[0], 1 + dj:1 + dj + f.shape[1]]
+                local &= f <= padded[1 + di : 1 + di + f.shape[0], 1 + dj : 1 + dj + f.shape[1]]
     idx = np.argwhere(local)
     idx = idx[np.argsort(f[local])][:MAX_STARTS]
     out = [(ts[i], ts[j]) for i, j in idx]
@@ -97,7 +97,7 @@ def _starts(ca: np.ndarray, cb: np.ndarray):
             curvature = (q1 * q1).sum(axis=1) + (r * q2).sum(axis=1)
             step = np.where(curvature > 0, -slope / np.where(curvature > 0, curvature, 1), 0.0)
             u = np.clip(u + step, 0.0, 1.0)
-        g = (((_grid_points(other, origin, u) - pm) ** 2).sum(axis=1))
+        g = ((_grid_points(other, origin, u) - pm) ** 2).sum(axis=1)
         inner = np.flatnonzero((g[1:-1] <= g[:-2]) & (g[1:-1] <= g[2:])) + 1
         inner = inner[np.argsort(g[inner])][:MAX_STARTS]
         out += [((u[i], ts[i]) if swap else (ts[i], u[i])) for i in inner]
@@ -123,6 +123,7 @@ def _jet(pts: List[K.Vec], t):
 def _descend(pa: List[K.Vec], pb: List[K.Vec], s, t):
     """Newton on F(s, t) = |A(s) - B(t)|^2 from (s, t), each step halved until F decreases;
     None when it leaves [0, 1]^2 (an edge minimum). Returns (distance, s, t)."""
+
     def state(x, y):
         a, a1, a2 = _jet(pa, x)
         b, b1, b2 = _jet(pb, y)
@@ -167,9 +168,11 @@ def _descend(pa: List[K.Vec], pb: List[K.Vec], s, t):
 def _nearest_t(pb: List[K.Vec], p, t):
     """The t in [0, 1] nearest B(t) to p, by Newton on |p - B(t)|^2 from t (50 digits), with the
     ends compared: (squared distance, t)."""
+
     def f(x):
         r = K.sub(p, _jet(pb, x)[0])
         return K.dot(r, r)
+
     t = mpf(t)
     for _ in range(60):
         b, b1, b2 = _jet(pb, t)

@@ -124,18 +124,18 @@ def frame(normal: Sequence) -> Tuple[Vec, Vec, Vec]:
 # ----------------------------------------------------------------------------------------------
 PARAM_TOL = mpf("1e-40")  # golden-section bracket width at which refinement stops
 TIE_TOL = mpf("1e-40")  # sampled values this close (relative) count as tied (see minimize_1d)
-MAX_REFINED = 64       # safety cap on refinements per minimisation (never reached in the tests)
-ZOOM_FRACTION = 8      # zoom: re-sample until one step moves the point by at most target radius / this
-ZOOM_SPLIT = 8         # zoom: pieces an interval is cut into per pass
+MAX_REFINED = 64  # safety cap on refinements per minimisation (never reached in the tests)
+ZOOM_FRACTION = 8  # zoom: re-sample until one step moves the point by at most target radius / this
+ZOOM_SPLIT = 8  # zoom: pieces an interval is cut into per pass
 MAX_ZOOM_SAMPLES = 40000  # zoom: safety cap on added samples per minimisation (see minimize_1d)
 _INVPHI = (ctx.sqrt(5) - 1) / 2
 
 
 @dataclass
 class LocalMin:
-    value: object   # refined distance
-    x: object       # parameter (angle or t)
-    rise: object    # how much the sampled neighbours exceed the sampled minimum (flatness)
+    value: object  # refined distance
+    x: object  # parameter (angle or t)
+    rise: object  # how much the sampled neighbours exceed the sampled minimum (flatness)
 
 
 def _sample_grid(lo, hi, intervals: int, periodic: bool):
@@ -149,7 +149,9 @@ def _sample_grid(lo, hi, intervals: int, periodic: bool):
     return xs, h
 
 
-def _lipschitz_zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Callable, best, max_samples=MAX_ZOOM_SAMPLES):
+def _lipschitz_zoom(
+    f: Callable, pts: list, lipschitz: Callable, resolution: Callable, best, max_samples=MAX_ZOOM_SAMPLES
+):
     """Re-sample, ZOOM_SPLIT pieces at a time, every interval between neighbouring samples that
     could hold a value below the best sample and on which one step can still move the point by
     more than resolution(a, b, L (b - a)).  f is L-Lipschitz on [a, b] (L = lipschitz(a, b)), so
@@ -167,7 +169,7 @@ def _lipschitz_zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Cal
             break
         todo.sort(key=lambda x: x[0])
         new = {}
-        for _, i in todo[:(max_samples - added) // (ZOOM_SPLIT - 1)]:
+        for _, i in todo[: (max_samples - added) // (ZOOM_SPLIT - 1)]:
             (a, _fa), (b, _fb) = pts[i], pts[i + 1]
             step = (b - a) / ZOOM_SPLIT
             new[i] = [[a + j * step, None] for j in range(1, ZOOM_SPLIT)]
@@ -185,8 +187,16 @@ def _lipschitz_zoom(f: Callable, pts: list, lipschitz: Callable, resolution: Cal
     return pts
 
 
-def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: Optional[Callable] = None,
-                resolution=None, max_samples=MAX_ZOOM_SAMPLES) -> List[LocalMin]:
+def minimize_1d(
+    f: Callable,
+    lo,
+    hi,
+    intervals: int,
+    periodic: bool,
+    lipschitz: Optional[Callable] = None,
+    resolution=None,
+    max_samples=MAX_ZOOM_SAMPLES,
+) -> List[LocalMin]:
     """All refined local minima of f on [lo, hi] (periodic: [lo, hi) wraps), lowest first.
 
     lipschitz(a, b) (optional): a bound on |f'| over [a, b]; with resolution(a, b, step) (the
@@ -259,9 +269,9 @@ def minimize_1d(f: Callable, lo, hi, intervals: int, periodic: bool, lipschitz: 
 # ----------------------------------------------------------------------------------------------
 # bracketed_min_1d: binary64 samples place brackets, mpmath (global context) refines them
 # ----------------------------------------------------------------------------------------------
-BRACKET_SAMPLES = 2048   # binary64 samples of the whole interval
-BRANCH_SPLIT = 12        # pieces per level of the branching re-sampling
-MAX_BRACKETS = 8         # sampled runs refined, lowest first
+BRACKET_SAMPLES = 2048  # binary64 samples of the whole interval
+BRANCH_SPLIT = 12  # pieces per level of the branching re-sampling
+MAX_BRACKETS = 8  # sampled runs refined, lowest first
 with mp.workdps(DPS):
     _INVPHI_GLOBAL = (mp.sqrt(5) - 1) / 2
 
@@ -368,8 +378,7 @@ def bracketed_min_1d(f_mp, f_np, a, b, periodic, tol, lipschitz=None):
         # point of it) whose best sample exceeds the best sample overall by more than
         # lipschitz*h cannot contain the global minimum nor a tie with it.
         best = math.sqrt(max(scored[0][0], 0.0))
-        scored = [r for r in scored
-                  if math.sqrt(max(r[0], 0.0)) - 1.01 * lipschitz * h <= best]
+        scored = [r for r in scored if math.sqrt(max(r[0], 0.0)) - 1.01 * lipschitz * h <= best]
     results = []
 
     def xpos(i):

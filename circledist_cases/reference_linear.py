@@ -82,8 +82,10 @@ def reference(a, b):
 def linear_linear(ka, a_data, kb, b_data):
     """The reference for two pieces given as flat float data (point: 3 numbers; line / ray:
     origin, direction; segment: two ends)."""
-    return reference(piece(ka, a_data[:3], a_data[3:6] if ka != "point" else None),
-                     piece(kb, b_data[:3], b_data[3:6] if kb != "point" else None))
+    return reference(
+        piece(ka, a_data[:3], a_data[3:6] if ka != "point" else None),
+        piece(kb, b_data[:3], b_data[3:6] if kb != "point" else None),
+    )
 
 
 # The bars of the linear pairs: |error| <= bar x max(true distance, FLOOR x the query's size). The
@@ -101,6 +103,10 @@ def query_size(ka, a_data, kb, b_data):
     """The query's size: the largest distance from A's first point to any point that defines the
     query (a point, the origins of lines and rays, segment ends).  Translating a scene does not
     change it."""
-    pts = [np.asarray(a_data[:3], float)] + ([np.asarray(a_data[3:6], float)] if ka == "segment" else []) + \
-          [np.asarray(b_data[:3], float)] + ([np.asarray(b_data[3:6], float)] if kb == "segment" else [])
+    pts = (
+        [np.asarray(a_data[:3], float)]
+        + ([np.asarray(a_data[3:6], float)] if ka == "segment" else [])
+        + [np.asarray(b_data[:3], float)]
+        + ([np.asarray(b_data[3:6], float)] if kb == "segment" else [])
+    )
     return max(float(np.linalg.norm(x - pts[0])) for x in pts[1:])

@@ -35,12 +35,34 @@ import mpmath.libmp as _lm
 
 # the shared 50-digit toolkit; its names stay reachable here as reference_round.NAME
 from .reference_kit import (  # noqa: F401
-    DPS, MAX_REFINED, MAX_ZOOM_SAMPLES, PARAM_TOL, TIE_TOL, ZOOM_FRACTION, ZOOM_SPLIT, LocalMin, Vec,
-    _sample_grid, add, cross, ctx, dist, dot, frame, minimize_1d, mpf, norm, normalize, scale, sub,
-    to_mp, vec)
+    DPS,
+    MAX_REFINED,
+    MAX_ZOOM_SAMPLES,
+    PARAM_TOL,
+    TIE_TOL,
+    ZOOM_FRACTION,
+    ZOOM_SPLIT,
+    LocalMin,
+    Vec,
+    _sample_grid,
+    add,
+    cross,
+    ctx,
+    dist,
+    dot,
+    frame,
+    minimize_1d,
+    mpf,
+    norm,
+    normalize,
+    scale,
+    sub,
+    to_mp,
+    vec,
+)
 
-CIRCLE_SAMPLES = 720   # samples of an angle over [0, 2 pi)
-CURVE_SAMPLES = 600    # intervals of a Bezier parameter over [0, 1] (end points included)
+CIRCLE_SAMPLES = 720  # samples of an angle over [0, 2 pi)
+CURVE_SAMPLES = 600  # intervals of a Bezier parameter over [0, 1] (end points included)
 _TWO_PI = 2 * ctx.pi
 _RN = _lm.round_nearest
 _add, _mul = _lm.mpf_add, _lm.mpf_mul
@@ -216,22 +238,25 @@ class Pair:
 class Reference:
     distance: object
     pairs: List[Pair] = field(default_factory=list)
-    scale: float = 1.0                 # largest radius in the query
-    intersect: Optional[bool] = None   # disk-disk only
-    overlap: object = None             # disk-disk only: length of the common chord (or None)
-    coplanar_overlap: bool = False     # disk-disk only: same plane, centres closer than rA+rB
+    scale: float = 1.0  # largest radius in the query
+    intersect: Optional[bool] = None  # disk-disk only
+    overlap: object = None  # disk-disk only: length of the common chord (or None)
+    coplanar_overlap: bool = False  # disk-disk only: same plane, centres closer than rA+rB
 
     def __float__(self):
         return float(self.distance)
 
     def __repr__(self):  # short: pytest --showlocals prints it on failures
-        return (f"Reference(distance={ctx.nstr(self.distance, 20)}, pairs={len(self.pairs)}, "
-                f"scale={self.scale}, intersect={self.intersect})")
+        return (
+            f"Reference(distance={ctx.nstr(self.distance, 20)}, pairs={len(self.pairs)}, "
+            f"scale={self.scale}, intersect={self.intersect})"
+        )
 
 
 # cos and sin of the angle samples, computed once (every circle is sampled at the same angles)
-_GRID_COS_SIN = {x._mpf_: _lm.mpf_cos_sin(x._mpf_, ctx.prec, _RN)
-                 for x in _sample_grid(0, _TWO_PI, CIRCLE_SAMPLES, True)[0]}
+_GRID_COS_SIN = {
+    x._mpf_: _lm.mpf_cos_sin(x._mpf_, ctx.prec, _RN) for x in _sample_grid(0, _TWO_PI, CIRCLE_SAMPLES, True)[0]
+}
 
 
 def _feature_scale(target: Round, axis: dict) -> Callable:
@@ -269,8 +294,15 @@ def _rim_minima(a: Round, target: Round, disk: bool) -> List[LocalMin]:
 
     # the rim point moves by a.radius per radian; zoomed where one step is long for the target's
     # features (a huge circle passing a small disk)
-    return minimize_1d(f, 0, _TWO_PI, CIRCLE_SAMPLES, periodic=True, lipschitz=lambda lo, hi: a.radius,
-                       resolution=_feature_scale(target, axis))
+    return minimize_1d(
+        f,
+        0,
+        _TWO_PI,
+        CIRCLE_SAMPLES,
+        periodic=True,
+        lipschitz=lambda lo, hi: a.radius,
+        resolution=_feature_scale(target, axis),
+    )
 
 
 def _target_point(p, target, disk, scale):
@@ -359,7 +391,7 @@ def disks_intersect(ca, na, ra, cb, nb, rb):
         sc = dot(m, rel) / mm
         perp = sub(rel, scale(sc, m))
         h2 = dot(perp, perp)
-        r2 = D.radius ** 2
+        r2 = D.radius**2
         if h2 > r2:
             return False, None, False
         half = ctx.sqrt(r2 - h2) / ctx.sqrt(mm)
@@ -419,7 +451,7 @@ def _speed_bound(ctrl) -> Callable:
         s = 0.0
         for i, leg in enumerate(legs):
             t = min(max(i / (k - 1), lo), hi)
-            s += leg * math.comb(k - 1, i) * t ** i * (1 - t) ** (k - 1 - i)
+            s += leg * math.comb(k - 1, i) * t**i * (1 - t) ** (k - 1 - i)
         return mpf(k * s * (1 + 1e-9))
 
     return bound
@@ -439,8 +471,9 @@ def _curve_minima(ctrl, target: Round, disk: bool) -> List[LocalMin]:
         return v
 
     # zoomed where one step is long for the target's features: a curve far larger than the round
-    return minimize_1d(f, 0, 1, CURVE_SAMPLES, periodic=False, lipschitz=_speed_bound(ctrl),
-                       resolution=_feature_scale(target, axis))
+    return minimize_1d(
+        f, 0, 1, CURVE_SAMPLES, periodic=False, lipschitz=_speed_bound(ctrl), resolution=_feature_scale(target, axis)
+    )
 
 
 def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:
@@ -450,7 +483,7 @@ def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:
         p = bezier_point(ctrl, m.x)
         q, deg = _target_point(p, T, disk, T.radius)
         pairs.append(Pair(m.value, p, q, m.rise, deg))
-        pairs[-1].t = m.x   # the curve's parameter (as bezier_other's pairs)
+        pairs[-1].t = m.x  # the curve's parameter (as bezier_other's pairs)
     return Reference(pairs[0].value, pairs, _scale_of(radius))
 
 
@@ -472,8 +505,7 @@ def segment_circle_alt(p0, p1, center, normal, radius):
     closed-form point-segment distance."""
     C = make_round(center, normal, radius)
     q0, q1 = vec(p0), vec(p1)
-    ms = minimize_1d(lambda th: point_segment(C.rim_point(th), q0, q1), 0, _TWO_PI,
-                     CIRCLE_SAMPLES, periodic=True)
+    ms = minimize_1d(lambda th: point_segment(C.rim_point(th), q0, q1), 0, _TWO_PI, CIRCLE_SAMPLES, periodic=True)
     return ms[0].value
 
 
@@ -487,8 +519,9 @@ def segment_disk_alt(p0, p1, center, normal, radius):
     pair can slide to an end point or to the rim)."""
     D = make_round(center, normal, radius)
     q0, q1 = vec(p0), vec(p1)
-    best = minimize_1d(lambda th: point_segment(D.rim_point(th), q0, q1), 0, _TWO_PI,
-                       CIRCLE_SAMPLES, periodic=True)[0].value
+    best = minimize_1d(lambda th: point_segment(D.rim_point(th), q0, q1), 0, _TWO_PI, CIRCLE_SAMPLES, periodic=True)[
+        0
+    ].value
     for p in (q0, q1):
         z, a = _local(p, D)
         if norm(a) <= D.radius:

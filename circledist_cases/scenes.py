@@ -53,9 +53,14 @@ SHARED_SEGMENTS = {
     "ends on the rim": ((1, 0, 0), (1.5, 0.25, 0.75)),
 }
 SHARED_POINTS = {
-    "on the axis": (0, 0, 0.75), "center": (0, 0, 0), "on the rim": (1, 0, 0),
-    "near the axis 1e-12": (1e-12, 0, 0.5), "in plane inside": (0.5, 0.25, 0),
-    "over the interior": (0.25, 0.5, 0.5), "generic": (1.5, -0.5, 0.75), "far": (30, 20, -10),
+    "on the axis": (0, 0, 0.75),
+    "center": (0, 0, 0),
+    "on the rim": (1, 0, 0),
+    "near the axis 1e-12": (1e-12, 0, 0.5),
+    "in plane inside": (0.5, 0.25, 0),
+    "over the interior": (0.25, 0.5, 0.5),
+    "generic": (1.5, -0.5, 0.75),
+    "far": (30, 20, -10),
 }
 
 # The tests' own, on top of the shared ones.
@@ -126,14 +131,31 @@ def local_scenes(lin_kind):
 # scenes re-used with extreme radii
 RADIUS_SCENES = {
     "point": ["on the axis", "over the interior", "generic", "on the rim"],
-    "line": ["tangent in plane", "tangent lifted 1e-6", "on the axis", "crosses the plane on the rim",
-             "generic", "parallel over the interior"],
+    "line": [
+        "tangent in plane",
+        "tangent lifted 1e-6",
+        "on the axis",
+        "crosses the plane on the rim",
+        "generic",
+        "parallel over the interior",
+    ],
     # On the axis with a tiny radius and tilted: the rounded line passes ~1e-17 from the center,
     # an offset that must survive (the anchor is computed before rotating into the frame).
-    "ray": ["starts over the interior, up", "starts on the rim, outward", "through: tangent in plane",
-            "up the axis", "through: on the axis"],
-    "segment": ["ends on the rim", "parallel over the interior, partly", "zero length",
-                "crosses the disk at the rim", "along the axis through the center", "over: on the axis"],
+    "ray": [
+        "starts over the interior, up",
+        "starts on the rim, outward",
+        "through: tangent in plane",
+        "up the axis",
+        "through: on the axis",
+    ],
+    "segment": [
+        "ends on the rim",
+        "parallel over the interior, partly",
+        "zero length",
+        "crosses the disk at the rim",
+        "along the axis through the center",
+        "over: on the axis",
+    ],
 }
 RADIUS_VARIANTS = {
     # name: (scene scale s, radius)
@@ -203,22 +225,43 @@ def hard_cases(lin_kind, round_kind):
         for orient in ORIENTATIONS:
             for oname, off in OFFSETS.items():
                 lin, rnd = place(lin_kind, local, round_kind, orient, off)
-                out.append(Case(f"{lin_kind}-{round_kind}-{name}-{orient}-{oname}", lin_kind, lin,
-                                round_kind, rnd, False, name, orient, off))
+                out.append(
+                    Case(
+                        f"{lin_kind}-{round_kind}-{name}-{orient}-{oname}",
+                        lin_kind,
+                        lin,
+                        round_kind,
+                        rnd,
+                        False,
+                        name,
+                        orient,
+                        off,
+                    )
+                )
     for name in RADIUS_SCENES[lin_kind]:
         local = scenes[name]
         for vname, (s, radius) in RADIUS_VARIANTS.items():
             for orient in ORIENTATIONS:
                 lin, rnd = place(lin_kind, local, round_kind, orient, 0.0, s, radius)
-                out.append(Case(f"{lin_kind}-{round_kind}-{name}-{vname}-{orient}", lin_kind, lin,
-                                round_kind, rnd, False, name, orient, 0.0))
+                out.append(
+                    Case(
+                        f"{lin_kind}-{round_kind}-{name}-{vname}-{orient}",
+                        lin_kind,
+                        lin,
+                        round_kind,
+                        rnd,
+                        False,
+                        name,
+                        orient,
+                        0.0,
+                    )
+                )
     return out
 
 
 def random_cases(lin_kind, round_kind, n=40, seed=None):
     if seed is None:
-        seed = 1000 + 10 * ["point", "line", "ray", "segment"].index(lin_kind) + \
-            ["circle", "disk"].index(round_kind)
+        seed = 1000 + 10 * ["point", "line", "ray", "segment"].index(lin_kind) + ["circle", "disk"].index(round_kind)
     rng = np.random.default_rng(seed)
     out = []
     for i in range(n):
@@ -234,8 +277,7 @@ def random_cases(lin_kind, round_kind, n=40, seed=None):
         else:
             p0 = c + rng.normal(scale=1.5, size=3)
             lin = _f(p0) + _f(p0 + rng.normal(scale=1.5, size=3))
-        out.append(Case(f"{lin_kind}-{round_kind}-random{i:02d}", lin_kind, lin, round_kind, rnd,
-                        True))
+        out.append(Case(f"{lin_kind}-{round_kind}-random{i:02d}", lin_kind, lin, round_kind, rnd, True))
     return out
 
 
@@ -257,10 +299,17 @@ def all_cases():
 # t (4e6 points around the closest approach of a 2e6-point scan of [0, 1]) and refined in
 # 50-digit mpmath: 0.5345388680515342338549768 at t = 0.51695282638890 and
 # 0.5345388680509443148992182 at t = 0.51697755578901, the global one.
-FAR_CURVE_CONTROL = np.array([[-7368.294710182142, 18594.025607135212, 12799.26449390628],
-                              [6887.627156622108, -17377.097254714514, -11960.388731637753]])
-FAR_CURVE_RING = ([1.5206618395599336, -1.792796825287908, -0.6143671334034062],
-                  [-0.5078534011677034, 0.1960660034195697, 0.13630414481520362], 0.7799682209376687)
+FAR_CURVE_CONTROL = np.array(
+    [
+        [-7368.294710182142, 18594.025607135212, 12799.26449390628],
+        [6887.627156622108, -17377.097254714514, -11960.388731637753],
+    ]
+)
+FAR_CURVE_RING = (
+    [1.5206618395599336, -1.792796825287908, -0.6143671334034062],
+    [-0.5078534011677034, 0.1960660034195697, 0.13630414481520362],
+    0.7799682209376687,
+)
 # Made at 50 digits whatever mpmath's working precision is when this module is first imported
 # (the default 15 rounded it to a double, which a test run alone then compared at 1e-24).
 with mp.workdps(50):

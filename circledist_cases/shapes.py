@@ -71,5 +71,5 @@ def make_shape(cd, kind: str, values):
         return cd.Annulus(v[:3], v[3:6], float(v[6]), float(v[7]))
     if kind == "bezier":
         k = int(v[0])
-        return cd.Bezier(v[1:1 + 3 * k].reshape(k, 3))
+        return cd.Bezier(v[1 : 1 + 3 * k].reshape(k, 3))
     raise ValueError(kind)

@@ -66,14 +66,18 @@ def _member(shape, round_kind, orient):
 
 
 def _axis_tilt(k):
-    a = 10.0 ** -k
+    a = 10.0**-k
     p = (0.0, 0.0, 0.5)
     d = (math.sin(a), 0.0, math.cos(a))
     p0 = tuple(pi - di for pi, di in zip(p, d))
     p1 = tuple(pi + 2 * di for pi, di in zip(p, d))
     line = ("line", p, d)
-    return [_member(line, "circle", "z"), _member(line, "disk", "z"),
-            _member(("segment", p0, p1), "circle", "z"), _member(line, "circle", "rot")]
+    return [
+        _member(line, "circle", "z"),
+        _member(line, "disk", "z"),
+        _member(("segment", p0, p1), "circle", "z"),
+        _member(line, "circle", "rot"),
+    ]
 
 
 def _tangent_lift(k):
@@ -89,39 +93,66 @@ def _tangent_lift(k):
 
 _GENERIC_ROUND = ((0.0, 0.0, 0.0), (0.2, 0.3, 1.0), 1.0)
 OFFSET_SCENES = [
-    ("line-circle, generic", "line-circle", ("line", (0.3, 1.2, 0.4), (1.0, 0.2, -0.3)),
-     ("circle",) + _GENERIC_ROUND),
+    ("line-circle, generic", "line-circle", ("line", (0.3, 1.2, 0.4), (1.0, 0.2, -0.3)), ("circle",) + _GENERIC_ROUND),
     ("line-disk, tangent lifted 1e-6", "line-disk", ("line", (1.0, 0.0, 1e-6), (0.0, 1.0, 0.0)), accuracy.UNIT_DISK),
     ("circle-circle, linked", "circle-circle", ("circle", (0.6, 0.0, 0.0), (0.0, 1.0, 0.0), 0.6), accuracy.UNIT_CIRCLE),
-    ("circle-disk, generic", "circle-disk", ("circle", (0.4, 1.3, 0.9), (0.5, -0.2, 0.7), 0.8),
-     ("disk",) + _GENERIC_ROUND),
+    (
+        "circle-disk, generic",
+        "circle-disk",
+        ("circle", (0.4, 1.3, 0.9), (0.5, -0.2, 0.7), 0.8),
+        ("disk",) + _GENERIC_ROUND,
+    ),
 ]
 
 
 def _circle_tilt(k):
-    a = 10.0 ** -k
+    a = 10.0**-k
     return [
-        ("circle-circle, nested", "circle-circle", ("circle", (0.7, 0.2, 0.0), _tilted_z(a, "x"), 0.5),
-         ("circle", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0)),
-        ("circle-circle, concentric", "circle-circle", ("circle", (0.0, 0.0, 0.0), _tilted_z(a), 2.0),
-         accuracy.UNIT_CIRCLE),
-        ("circle-disk, outside", "circle-disk", ("circle", (2.5, 0.3, 0.0), _tilted_z(a, "x"), 0.5),
-         ("disk", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0)),
-        ("circle-disk, inside", "circle-disk", ("circle", (0.3, 0.2, 0.0), _tilted_z(a), 0.5),
-         ("disk", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0)),
-        ("disk-disk, outside", "disk-disk", ("disk", (2.5, 0.3, 0.0), _tilted_z(a, "x"), 0.5),
-         ("disk", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0)),
+        (
+            "circle-circle, nested",
+            "circle-circle",
+            ("circle", (0.7, 0.2, 0.0), _tilted_z(a, "x"), 0.5),
+            ("circle", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0),
+        ),
+        (
+            "circle-circle, concentric",
+            "circle-circle",
+            ("circle", (0.0, 0.0, 0.0), _tilted_z(a), 2.0),
+            accuracy.UNIT_CIRCLE,
+        ),
+        (
+            "circle-disk, outside",
+            "circle-disk",
+            ("circle", (2.5, 0.3, 0.0), _tilted_z(a, "x"), 0.5),
+            ("disk", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0),
+        ),
+        (
+            "circle-disk, inside",
+            "circle-disk",
+            ("circle", (0.3, 0.2, 0.0), _tilted_z(a), 0.5),
+            ("disk", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0),
+        ),
+        (
+            "disk-disk, outside",
+            "disk-disk",
+            ("disk", (2.5, 0.3, 0.0), _tilted_z(a, "x"), 0.5),
+            ("disk", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 2.0),
+        ),
     ]
 
 
 def _shadow_offset(k):
-    a, offset = 1e-3, 10.0 ** -k
+    a, offset = 1e-3, 10.0**-k
     d = (math.cos(a), 0.0, math.sin(a))
     origin = (0.4, offset, 1.0 + 0.4 * math.tan(a))
     end = tuple(o + 1.5 * di for o, di in zip(origin, d))
     ray = ("ray", origin, d)
-    return [_member(ray, "circle", "z"), _member(ray, "circle", "rot"),
-            _member(("segment", origin, end), "circle", "rot"), _member(ray, "disk", "rot")]
+    return [
+        _member(ray, "circle", "z"),
+        _member(ray, "circle", "rot"),
+        _member(("segment", origin, end), "circle", "rot"),
+        _member(ray, "disk", "rot"),
+    ]
 
 
 def sweep_cases(kinds=None):
@@ -137,7 +168,7 @@ def sweep_cases(kinds=None):
             out.append(SweepCase("tangent-lift", member, kind, k, accuracy.scene_values(a, b, orient), exact))
     for k in FAMILIES["offset"][2]:
         for member, kind, a, b in OFFSET_SCENES:
-            out.append(SweepCase("offset", member, kind, k, accuracy.scene_values(a, b, "z", 10.0 ** k)))
+            out.append(SweepCase("offset", member, kind, k, accuracy.scene_values(a, b, "z", 10.0**k)))
     for k in FAMILIES["circle-tilt"][2]:
         for member, kind, a, b in _circle_tilt(k):
             out.append(SweepCase("circle-tilt", member, kind, k, accuracy.scene_values(a, b)))

@@ -19,8 +19,10 @@ for target_name, target in (("ring", ring), ("coin", coin)):
     print(f"against the {target_name}:")
     for name, shape in shapes.items():
         r = cd.closest_points(shape, target)
-        print(f"  {name:34s} distance {r.distance:.12g}  at {r.point_a} -> {r.point_b}"
-              f"{'' if r.unique else '  (not unique)'}")
+        print(
+            f"  {name:34s} distance {r.distance:.12g}  at {r.point_a} -> {r.point_b}"
+            f"{'' if r.unique else '  (not unique)'}"
+        )
 
 # A batch: one line against 5 circles of growing radius, computed in one call.
 radii = np.linspace(0.5, 2.5, 5)
@@ -31,10 +33,10 @@ print("one line against 5 circles:", cd.distance(cd.Line([0, 1.5, 0.25], [1, 0, 
 # effects it wants (intersects, within, distance, closest_points, nearest), and nothing else is
 # computed. The same as running `python -m circledist`; the picture goes to the path given
 # (the README's is docs/guide/demo_scene.png), build/demo_scene.png by default.
-import os
-import sys
+import os  # noqa: E402 (after the first part of the demo, which needs none)
+import sys  # noqa: E402 (after the first part of the demo, which needs none)
 
-from circledist import cli
+from circledist import cli  # noqa: E402 (after the first part of the demo, which needs none)
 
 print()
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")

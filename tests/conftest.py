@@ -24,8 +24,7 @@ try:
         # no shrinking by default: a failing property reports its first counter-example at
         # once instead of spending ~25 s minimising it (the long profile shrinks)
         phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.target],
-        suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
-                               HealthCheck.data_too_large],
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much, HealthCheck.data_too_large],
     )
     settings.register_profile(
         "circledist-long",

@@ -76,15 +76,18 @@ def library_info(cd):
     and its uncommitted files (the package is rebuilt from the working tree)."""
     import glob
     import subprocess
+
     info = {"version": getattr(cd, "__version__", "?"), "module": cd.__file__}
     so = glob.glob(os.path.join(os.path.dirname(cd.__file__), "_core*.so"))
     if so:
         info["extension_mtime"] = time.strftime("%Y-%m-%d %H:%M:%S", time.localtime(os.path.getmtime(so[0])))
     try:
-        info["git_head"] = subprocess.run(["git", "-C", ROOT, "rev-parse", "HEAD"], capture_output=True,
-                                          text=True, timeout=10).stdout.strip()
-        info["git_dirty"] = subprocess.run(["git", "-C", ROOT, "status", "--short"], capture_output=True,
-                                           text=True, timeout=10).stdout.split("\n")
+        info["git_head"] = subprocess.run(
+            ["git", "-C", ROOT, "rev-parse", "HEAD"], capture_output=True, text=True, timeout=10
+        ).stdout.strip()
+        info["git_dirty"] = subprocess.run(
+            ["git", "-C", ROOT, "status", "--short"], capture_output=True, text=True, timeout=10
+        ).stdout.split("\n")
     except Exception:  # noqa: BLE001 - informational only
         pass
     return info
@@ -130,6 +133,7 @@ def run_chunk(job):
     parts, seed, combo_list, scalar_n, max_confirm, keep, unique_n = job
     D = load_differential()
     import circledist as cd
+
     cases = [c for fam, start, count in parts for c in D.generate(fam, count, seed, start=start)]
     step = max(1, len(cases) // max(scalar_n, 1)) if scalar_n else None
     scalar = set(range(0, len(cases), step)) if scalar_n else set()
@@ -148,9 +152,20 @@ def run_chunk(job):
     classes = {}
     for f in findings:
         key = "|".join(D.finding_class(f))
-        c = classes.setdefault(key, {"candidates": 0, "confirmed": 0, "refuted": 0, "unchecked": 0,
-                                     "by_solver": collections.Counter(), "by_precision": collections.Counter(),
-                                     "cases": set(), "examples": [], "reference_missed": 0})
+        c = classes.setdefault(
+            key,
+            {
+                "candidates": 0,
+                "confirmed": 0,
+                "refuted": 0,
+                "unchecked": 0,
+                "by_solver": collections.Counter(),
+                "by_precision": collections.Counter(),
+                "cases": set(),
+                "examples": [],
+                "reference_missed": 0,
+            },
+        )
         c["candidates"] += 1
         status = f.get("confirmed")
         c["confirmed" if status else ("refuted" if status is False else "unchecked")] += 1
@@ -163,11 +178,17 @@ def run_chunk(job):
     for c in classes.values():
         c["examples"] = pick_examples(c["examples"], keep)
         c["n_cases"] = len(c["cases"])
-        c["cases"] = sorted(c["cases"])[:keep * 4]
-    return dict(count=len(cases), by_family=dict(collections.Counter(c["family"] for c in cases)), pairs=dict(pairs),
-                answers=dict(stats["answers"]), unique_checked=dict(stats["unique_checked"]),
-                unique_checked_direct=dict(stats.get("unique_checked_direct", {})), seconds=seconds,
-                classes=classes)
+        c["cases"] = sorted(c["cases"])[: keep * 4]
+    return dict(
+        count=len(cases),
+        by_family=dict(collections.Counter(c["family"] for c in cases)),
+        pairs=dict(pairs),
+        answers=dict(stats["answers"]),
+        unique_checked=dict(stats["unique_checked"]),
+        unique_checked_direct=dict(stats.get("unique_checked_direct", {})),
+        seconds=seconds,
+        classes=classes,
+    )
 
 
 def merge(total, part):
@@ -179,10 +200,20 @@ def merge(total, part):
     for p, n in part["pairs"].items():
         total["by_pair"][p] += n
     for key, c in part["classes"].items():
-        t = total["classes"].setdefault(key, {"candidates": 0, "confirmed": 0, "refuted": 0, "unchecked": 0,
-                                              "by_solver": collections.Counter(),
-                                              "by_precision": collections.Counter(), "cases": [],
-                                              "examples": [], "reference_missed": 0})
+        t = total["classes"].setdefault(
+            key,
+            {
+                "candidates": 0,
+                "confirmed": 0,
+                "refuted": 0,
+                "unchecked": 0,
+                "by_solver": collections.Counter(),
+                "by_precision": collections.Counter(),
+                "cases": [],
+                "examples": [],
+                "reference_missed": 0,
+            },
+        )
         for k in ("candidates", "confirmed", "refuted", "unchecked", "reference_missed", "n_cases"):
             t[k] = t.get(k, 0) + c[k]
         t["by_solver"].update(c["by_solver"])
@@ -194,32 +225,47 @@ def merge(total, part):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     size = ap.add_mutually_exclusive_group()
-    size.add_argument("--answers", type=int, help="library answers to check (the standing run checks 1e7); "
-                      "runs ceil(answers / answers per case) cases")
+    size.add_argument(
+        "--answers",
+        type=int,
+        help="library answers to check (the standing run checks 1e7); " "runs ceil(answers / answers per case) cases",
+    )
     size.add_argument("--cases", "--queries", dest="cases", type=int, help="number of cases (default 1e5)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--report", default=os.path.join(ROOT, "build", "reports", "differential_report.json"))
     ap.add_argument("--batch", type=int, default=2000, help="cases per chunk (one library batch per kind pair)")
-    ap.add_argument("--families", default="all", help="comma-separated subset of the families, or \"round\" "
-                    "(the pairs with a circle or disk), \"no-round\" (the pairs among points, lines, rays, "
-                    "segments and Bezier curves), \"arc\" (the arc families) or \"annulus\" (the annulus families)")
+    ap.add_argument(
+        "--families",
+        default="all",
+        help='comma-separated subset of the families, or "round" '
+        '(the pairs with a circle or disk), "no-round" (the pairs among points, lines, rays, '
+        'segments and Bezier curves), "arc" (the arc families) or "annulus" (the annulus families)',
+    )
     ap.add_argument("--solvers", default="all")
     ap.add_argument("--precisions", default="all")
     ap.add_argument("--scalar", type=int, default=16, help="scalar-vs-batch sample per chunk")
-    ap.add_argument("--max-confirm", type=int, default=3,
-                    help="50-digit confirmations per (class, solver, precision) and chunk")
-    ap.add_argument("--unique-direct", type=int, default=8,
-                    help="cases per chunk whose closest_points().unique is checked against the 50-digit "
-                    "search of differential.reference_unique (~0.3 s a case); 0: none")
+    ap.add_argument(
+        "--max-confirm", type=int, default=3, help="50-digit confirmations per (class, solver, precision) and chunk"
+    )
+    ap.add_argument(
+        "--unique-direct",
+        type=int,
+        default=8,
+        help="cases per chunk whose closest_points().unique is checked against the 50-digit "
+        "search of differential.reference_unique (~0.3 s a case); 0: none",
+    )
     ap.add_argument("--workers", type=int, default=1)
     ap.add_argument("--quiet", action="store_true")
     args = ap.parse_args(argv)
 
     D = load_differential()
-    families = {"all": list(D.FAMILIES), "round": [f for f in D.FAMILIES if D.has_round(f)],
-                "no-round": [f for f in D.FAMILIES if not D.has_round(f) and not D.is_arc(f) and not D.is_annulus(f)],
-                "arc": [f for f in D.FAMILIES if D.is_arc(f)],
-                "annulus": [f for f in D.FAMILIES if D.is_annulus(f)]}.get(args.families)
+    families = {
+        "all": list(D.FAMILIES),
+        "round": [f for f in D.FAMILIES if D.has_round(f)],
+        "no-round": [f for f in D.FAMILIES if not D.has_round(f) and not D.is_arc(f) and not D.is_annulus(f)],
+        "arc": [f for f in D.FAMILIES if D.is_arc(f)],
+        "annulus": [f for f in D.FAMILIES if D.is_annulus(f)],
+    }.get(args.families)
     families = families or args.families.split(",")
     for f in families:
         if f not in D.FAMILIES:
@@ -236,20 +282,32 @@ def main(argv=None):
     jobs = [(parts, args.seed, combo_list, args.scalar, args.max_confirm, 3, args.unique_direct) for parts in chunks]
 
     import circledist as cd
+
     lib = library_info(cd)
     if not args.quiet:
-        print(f"library: {lib.get('module')} built {lib.get('extension_mtime')} (HEAD {lib.get('git_head', '?')[:10]})",
-              flush=True)
+        print(
+            f"library: {lib.get('module')} built {lib.get('extension_mtime')} (HEAD {lib.get('git_head', '?')[:10]})",
+            flush=True,
+        )
     if not args.quiet:
-        print(f"{n_cases} cases x {per_case} batched answers each (+ the scalar sample)"
-              + (f" for --answers {args.answers}" if args.answers is not None else ""), flush=True)
-    total = {"cases": 0, "answers": collections.Counter(), "unique_checked": collections.Counter(),
-             "unique_checked_direct": collections.Counter(),
-             "by_family": collections.Counter(),
-             "by_pair": collections.Counter(), "classes": {}}
+        print(
+            f"{n_cases} cases x {per_case} batched answers each (+ the scalar sample)"
+            + (f" for --answers {args.answers}" if args.answers is not None else ""),
+            flush=True,
+        )
+    total = {
+        "cases": 0,
+        "answers": collections.Counter(),
+        "unique_checked": collections.Counter(),
+        "unique_checked_direct": collections.Counter(),
+        "by_family": collections.Counter(),
+        "by_pair": collections.Counter(),
+        "classes": {},
+    }
     t0 = time.perf_counter()
     if args.workers > 1:
         import multiprocessing as mp
+
         pool = mp.get_context("fork").Pool(args.workers)
         results = pool.imap_unordered(run_chunk, jobs)
     else:
@@ -263,8 +321,11 @@ def main(argv=None):
             last = now
             conf = sum(c["confirmed"] for c in total["classes"].values())
             cand = sum(c["candidates"] for c in total["classes"].values())
-            print(f"[{now:7.0f} s] {total['cases']:>9}/{n_cases} cases, {sum(total['answers'].values())} answers, "
-                  f"{cand} candidate / {conf} confirmed findings", flush=True)
+            print(
+                f"[{now:7.0f} s] {total['cases']:>9}/{n_cases} cases, {sum(total['answers'].values())} answers, "
+                f"{cand} candidate / {conf} confirmed findings",
+                flush=True,
+            )
     if pool is not None:
         pool.close()
         pool.join()
@@ -282,52 +343,84 @@ def main(argv=None):
         by_family_f[fam] += c["confirmed"]
         by_pair_f[pair] += c["confirmed"]
     n_answers = sum(total["answers"].values())
-    lines = [f"circledist differential run: {total['cases']} cases, {n_answers} library answers "
-             f"({len(combo_list)} solver x precision combinations, both orders, every entry point), {seconds:.0f} s "
-             f"({1e3 * seconds / max(total['cases'], 1):.2f} ms/case, {n_answers / max(seconds, 1e-9):.0f} answers/s), "
-             f"seed {args.seed}",
-             "answers per entry point: " + ", ".join(f"{k} {v}" for k, v in sorted(total["answers"].items())),
-             "unique checked (expected value: count): " + ", ".join(
-                 f"{k} {v}" for k, v in sorted(total["unique_checked"].items())),
-             "unique checked directly (differential.reference_unique; pair expected value: count): " + ", ".join(
-                 f"{k} {v}" for k, v in sorted(total["unique_checked_direct"].items())),
-             "", "cases / confirmed findings per family:"]
+    lines = [
+        f"circledist differential run: {total['cases']} cases, {n_answers} library answers "
+        f"({len(combo_list)} solver x precision combinations, both orders, every entry point), {seconds:.0f} s "
+        f"({1e3 * seconds / max(total['cases'], 1):.2f} ms/case, {n_answers / max(seconds, 1e-9):.0f} answers/s), "
+        f"seed {args.seed}",
+        "answers per entry point: " + ", ".join(f"{k} {v}" for k, v in sorted(total["answers"].items())),
+        "unique checked (expected value: count): "
+        + ", ".join(f"{k} {v}" for k, v in sorted(total["unique_checked"].items())),
+        "unique checked directly (differential.reference_unique; pair expected value: count): "
+        + ", ".join(f"{k} {v}" for k, v in sorted(total["unique_checked_direct"].items())),
+        "",
+        "cases / confirmed findings per family:",
+    ]
     lines += [f"  {fam:20s} {total['by_family'][fam]:>9} {by_family_f[fam]:>7}" for fam in families]
     lines += ["", "cases / confirmed findings per kind pair:"]
     lines += [f"  {p:20s} {n:>9} {by_pair_f[p]:>7}" for p, n in sorted(total["by_pair"].items())]
-    lines += ["", "confirmed findings per solver: " + ", ".join(f"{s} {by_solver[s]}" for s in solvers),
-              "confirmed findings per precision: " + ", ".join(f"{p} {by_precision[p]}" for p in precisions), ""]
+    lines += [
+        "",
+        "confirmed findings per solver: " + ", ".join(f"{s} {by_solver[s]}" for s in solvers),
+        "confirmed findings per precision: " + ", ".join(f"{p} {by_precision[p]}" for p in precisions),
+        "",
+    ]
     lines.append(f"{len(classes)} finding classes ({len(confirmed)} with confirmed findings):")
     for key, c in sorted(classes.items(), key=lambda kv: -kv[1]["confirmed"]):
-        lines.append(f"  {key:55s} candidates {c['candidates']:>6}  confirmed {c['confirmed']:>6}  "
-                     f"refuted {c['refuted']:>5}  unchecked {c['unchecked']:>6}  cases {c['n_cases']:>5}"
-                     + (f"  reference_missed {c['reference_missed']}" if c["reference_missed"] else ""))
+        lines.append(
+            f"  {key:55s} candidates {c['candidates']:>6}  confirmed {c['confirmed']:>6}  "
+            f"refuted {c['refuted']:>5}  unchecked {c['unchecked']:>6}  cases {c['n_cases']:>5}"
+            + (f"  reference_missed {c['reference_missed']}" if c["reference_missed"] else "")
+        )
     for key, c in sorted(confirmed.items()):
         ex = c["examples"][0]
         errs = [f.get("error") for f in c["examples"] if f.get("confirmed") and isinstance(f.get("error"), float)]
-        lines += ["", f"--- reproducer for {key} (case {ex['case_id']}, {ex['solver']}/{ex['precision']}, "
-                      f"order {ex['order']}, {ex['entry']}; solvers {dict(c['by_solver'])}, "
-                      f"precisions {dict(c['by_precision'])}"
-                      + (f"; worst relative error seen {max(errs):.3g}" if errs else "") + "):", D.reproducer(ex)]
+        lines += [
+            "",
+            f"--- reproducer for {key} (case {ex['case_id']}, {ex['solver']}/{ex['precision']}, "
+            f"order {ex['order']}, {ex['entry']}; solvers {dict(c['by_solver'])}, "
+            f"precisions {dict(c['by_precision'])}"
+            + (f"; worst relative error seen {max(errs):.3g}" if errs else "")
+            + "):",
+            D.reproducer(ex),
+        ]
     text = "\n".join(lines)
     print(text)
 
     report = {
         "command": " ".join(sys.argv),
-        "cases": total["cases"], "answers": n_answers, "answers_by_entry": dict(total["answers"]),
+        "cases": total["cases"],
+        "answers": n_answers,
+        "answers_by_entry": dict(total["answers"]),
         "unique_checked": dict(total["unique_checked"]),
         "unique_checked_direct": dict(total["unique_checked_direct"]),
-        "answers_per_case_batched": per_case, "seconds": seconds, "ms_per_case": 1e3 * seconds / max(total["cases"], 1),
-        "answers_per_second": n_answers / max(seconds, 1e-9), "seed": args.seed,
-        "combos": [list(c) for c in combo_list], "families": families,
-        "bars": D.BARS, "cases_by_family": dict(total["by_family"]), "cases_by_pair": dict(total["by_pair"]),
-        "confirmed_by_solver": dict(by_solver), "confirmed_by_precision": dict(by_precision),
-        "confirmed_by_family": dict(by_family_f), "confirmed_by_pair": dict(by_pair_f),
-        "classes": {k: {**{x: c[x] for x in ("candidates", "confirmed", "refuted", "unchecked", "reference_missed",
-                                             "n_cases", "cases")},
-                        "by_solver": dict(c["by_solver"]), "by_precision": dict(c["by_precision"]),
-                        "examples": c["examples"], "reproducer": D.reproducer(c["examples"][0])}
-                    for k, c in classes.items()},
+        "answers_per_case_batched": per_case,
+        "seconds": seconds,
+        "ms_per_case": 1e3 * seconds / max(total["cases"], 1),
+        "answers_per_second": n_answers / max(seconds, 1e-9),
+        "seed": args.seed,
+        "combos": [list(c) for c in combo_list],
+        "families": families,
+        "bars": D.BARS,
+        "cases_by_family": dict(total["by_family"]),
+        "cases_by_pair": dict(total["by_pair"]),
+        "confirmed_by_solver": dict(by_solver),
+        "confirmed_by_precision": dict(by_precision),
+        "confirmed_by_family": dict(by_family_f),
+        "confirmed_by_pair": dict(by_pair_f),
+        "classes": {
+            k: {
+                **{
+                    x: c[x]
+                    for x in ("candidates", "confirmed", "refuted", "unchecked", "reference_missed", "n_cases", "cases")
+                },
+                "by_solver": dict(c["by_solver"]),
+                "by_precision": dict(c["by_precision"]),
+                "examples": c["examples"],
+                "reproducer": D.reproducer(c["examples"][0]),
+            }
+            for k, c in classes.items()
+        },
         "library": lib,
     }
     if args.report:

@@ -57,18 +57,57 @@ import time
 # as tools.fuzz_crash, else from its folder (run as a script, or imported with tools/ on sys.path).
 try:
     from .fuzzing import (
-        ARGUMENT_GROWTH, ARGUMENTS, FILE_CLASSES, THREAD_TIMEOUT, _group_key, _write_npz, fuzz,
-        fuzz_arguments, fuzz_files, fuzz_threads, generate_threads, run_argument_case, run_batch,
-        run_case, run_thread_case)
+        ARGUMENT_GROWTH,
+        ARGUMENTS,
+        FILE_CLASSES,
+        THREAD_TIMEOUT,
+        _group_key,
+        _write_npz,
+        fuzz,
+        fuzz_arguments,
+        fuzz_files,
+        fuzz_threads,
+        generate_threads,
+        run_argument_case,
+        run_batch,
+        run_case,
+        run_thread_case,
+    )
 except ImportError:
     from fuzzing import (
-        ARGUMENT_GROWTH, ARGUMENTS, FILE_CLASSES, THREAD_TIMEOUT, _group_key, _write_npz, fuzz,
-        fuzz_arguments, fuzz_files, fuzz_threads, generate_threads, run_argument_case, run_batch,
-        run_case, run_thread_case)
+        ARGUMENT_GROWTH,
+        ARGUMENTS,
+        FILE_CLASSES,
+        THREAD_TIMEOUT,
+        _group_key,
+        _write_npz,
+        fuzz,
+        fuzz_arguments,
+        fuzz_files,
+        fuzz_threads,
+        generate_threads,
+        run_argument_case,
+        run_batch,
+        run_case,
+        run_thread_case,
+    )
 
 # what the command line and the tests (tests/accuracy/test_fuzz_crash.py, tests/api/test_scene_file.py) use
-__all__ = ["ARGUMENTS", "ARGUMENT_GROWTH", "FILE_CLASSES", "_write_npz", "child", "fuzz", "fuzz_arguments",
-           "fuzz_files", "fuzz_threads", "generate_threads", "main", "run_argument_case", "run_thread_case"]
+__all__ = [
+    "ARGUMENTS",
+    "ARGUMENT_GROWTH",
+    "FILE_CLASSES",
+    "_write_npz",
+    "child",
+    "fuzz",
+    "fuzz_arguments",
+    "fuzz_files",
+    "fuzz_threads",
+    "generate_threads",
+    "main",
+    "run_argument_case",
+    "run_thread_case",
+]
 
 
 def child(cases_file, current_file, results_file, mode="0"):
@@ -131,20 +170,35 @@ def main(argv=None):
     parser.add_argument("--chunk", type=int, default=2000)
     parser.add_argument("--timeout", type=float, default=120.0)
     parser.add_argument("--report")
-    parser.add_argument("--batched", action="store_true",
-                        help="run each chunk's cases of one kind pair and query as one batched call (the long mode)")
-    parser.add_argument("--files", type=int, metavar="N",
-                        help="instead: the command line on N hostile files (FIFOs, devices, zip bombs, lying .npy "
-                             "headers, deep nesting, surrogates, huge counts, odd compression, foreign members, "
-                             "truncated and flipped files), each in a process held to 1 GiB and 60 s")
-    parser.add_argument("--threads", type=int, metavar="N",
-                        help="instead: N scenarios of a Scene shared by 3-5 threads that add and query it at "
-                             "once, each in its own child held to --timeout seconds (at most 120), every answer "
-                             "checked against serial scenes")
-    parser.add_argument("--arguments", type=int, metavar="N",
-                        help="instead: N calls of the entry points with hostile scalar arguments (huge integers, "
-                             "bools, NumPy scalars, floats, NaN, strings, None; small, empty and 10^15-row "
-                             "broadcast batches), --chunk calls per child held to 2 GiB")
+    parser.add_argument(
+        "--batched",
+        action="store_true",
+        help="run each chunk's cases of one kind pair and query as one batched call (the long mode)",
+    )
+    parser.add_argument(
+        "--files",
+        type=int,
+        metavar="N",
+        help="instead: the command line on N hostile files (FIFOs, devices, zip bombs, lying .npy "
+        "headers, deep nesting, surrogates, huge counts, odd compression, foreign members, "
+        "truncated and flipped files), each in a process held to 1 GiB and 60 s",
+    )
+    parser.add_argument(
+        "--threads",
+        type=int,
+        metavar="N",
+        help="instead: N scenarios of a Scene shared by 3-5 threads that add and query it at "
+        "once, each in its own child held to --timeout seconds (at most 120), every answer "
+        "checked against serial scenes",
+    )
+    parser.add_argument(
+        "--arguments",
+        type=int,
+        metavar="N",
+        help="instead: N calls of the entry points with hostile scalar arguments (huge integers, "
+        "bools, NumPy scalars, floats, NaN, strings, None; small, empty and 10^15-row "
+        "broadcast batches), --chunk calls per child held to 2 GiB",
+    )
     args = parser.parse_args(argv)
     t0 = time.time()
     if args.threads is not None:

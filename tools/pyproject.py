@@ -1,10 +1,10 @@
 """What tools/run.sh reads from pyproject.toml, the one place it is written.
 
-    python tools/pyproject.py missing EXTRA... [-- TOOL...]
-        the build requirements, dependencies, the extras' requirements and the tools not installed
-        yet (or installed in a version pyproject.toml does not accept), space-separated
-    python tools/pyproject.py wheel-tests
-        the test files of cibuildwheel's test-command, space-separated
+python tools/pyproject.py missing EXTRA... [-- TOOL...]
+    the build requirements, dependencies, the extras' requirements and the tools not installed
+    yet (or installed in a version pyproject.toml does not accept), space-separated
+python tools/pyproject.py wheel-tests
+    the test files of cibuildwheel's test-command, space-separated
 """
 
 from __future__ import annotations
@@ -35,7 +35,7 @@ def missing(args: list[str]) -> list[str]:
     for extra in args[:cut]:
         wanted += pyproject["project"]["optional-dependencies"][extra]
     out = []
-    for text in wanted + args[cut + 1:]:
+    for text in wanted + args[cut + 1 :]:
         req = Requirement(text)
         if req.marker is not None and not req.marker.evaluate({"extra": ""}):
             continue

@@ -41,26 +41,34 @@ isolated and its case kept. `bash tools/run.sh fuzz [N]` runs its classes below;
 go to `build/reports/`."""
 
 FUZZ_CLASSES = {
-    "cases": ("Numeric pairs (`--cases N --batched`)",
-              "Every kind pair in both orders, every entry point, precision and solver, magnitudes from "
-              "1e-300 to 1e300 and at float32's edges, degenerate shapes, batch layouts and dtypes. A "
-              "finding is a crash, a hang, a NaN for inputs the constructors accepted, a negative "
-              "distance, non-finite closest points for a finite distance, or `distance()` != "
-              "`closest_points().distance`."),
-    "files": ("Hostile scene files (`--files N`)",
-              "Malformed, truncated, oversized and lying JSON and `.npz` scene files through "
-              "`read_scene` and the command line. A finding is a crash, a hang, or an error that is not "
-              "one `circledist: error: ...` line (a `SceneFileError` from Python)."),
-    "threads": ("A Scene shared by threads (`--threads N`)",
-                "A Scene of random shapes shared by 3-5 threads that add and query it (pairs_within, "
-                "nearest, within, pickling and copying mid-run). Every answer must be that of a serial "
-                "scene of the first m shapes for an m between the counts at the query's start and end."),
-    "arguments": ("Hostile scalar arguments (`--arguments N`)",
-                  "Every entry point called with one hostile scalar in one argument (huge integers, bools, "
-                  "NaN, strings, None, arrays, complex, Fraction, ...), over small, empty and huge "
-                  "broadcast batches. A finding is a crash, a hang, an exception other than TypeError, "
-                  "ValueError, MemoryError and IndexError, pybind11's own words, or a MemoryError after "
-                  "memory was really taken."),
+    "cases": (
+        "Numeric pairs (`--cases N --batched`)",
+        "Every kind pair in both orders, every entry point, precision and solver, magnitudes from "
+        "1e-300 to 1e300 and at float32's edges, degenerate shapes, batch layouts and dtypes. A "
+        "finding is a crash, a hang, a NaN for inputs the constructors accepted, a negative "
+        "distance, non-finite closest points for a finite distance, or `distance()` != "
+        "`closest_points().distance`.",
+    ),
+    "files": (
+        "Hostile scene files (`--files N`)",
+        "Malformed, truncated, oversized and lying JSON and `.npz` scene files through "
+        "`read_scene` and the command line. A finding is a crash, a hang, or an error that is not "
+        "one `circledist: error: ...` line (a `SceneFileError` from Python).",
+    ),
+    "threads": (
+        "A Scene shared by threads (`--threads N`)",
+        "A Scene of random shapes shared by 3-5 threads that add and query it (pairs_within, "
+        "nearest, within, pickling and copying mid-run). Every answer must be that of a serial "
+        "scene of the first m shapes for an m between the counts at the query's start and end.",
+    ),
+    "arguments": (
+        "Hostile scalar arguments (`--arguments N`)",
+        "Every entry point called with one hostile scalar in one argument (huge integers, bools, "
+        "NaN, strings, None, arrays, complex, Fraction, ...), over small, empty and huge "
+        "broadcast batches. A finding is a crash, a hang, an exception other than TypeError, "
+        "ValueError, MemoryError and IndexError, pybind11's own words, or a MemoryError after "
+        "memory was really taken.",
+    ),
 }
 
 
@@ -96,6 +104,7 @@ def table(header, rows):
 
 # --- the differential test -------------------------------------------------------------------
 
+
 def differential_families(record):
     command = record.get("command", "")
     match = re.search(r"--families (\S+)", command)
@@ -104,16 +113,21 @@ def differential_families(record):
 
 def differential_row(record):
     confirmed = sum((record.get("confirmed_by_solver") or {}).values())
-    return (f"| {differential_families(record)} ({len(record.get('families', []))}) | {record.get('seed', '—')} | "
-            f"{number(record.get('cases'))} | {number(record.get('answers'))} | {len(record.get('classes', {}))} "
-            f"({number(confirmed)} answers) | {commit_of(record)} |")
+    return (
+        f"| {differential_families(record)} ({len(record.get('families', []))}) | {record.get('seed', '—')} | "
+        f"{number(record.get('cases'))} | {number(record.get('answers'))} | {len(record.get('classes', {}))} "
+        f"({number(confirmed)} answers) | {commit_of(record)} |"
+    )
 
 
 def differential_latest(record):
-    lines = [f"Families: {differential_families(record)} ({', '.join(record.get('families', []))}); "
-             f"seed {record.get('seed')}; module {commit_of(record)}.", "",
-             f"- **{number(record.get('answers'))} answers** over {number(record.get('cases'))} cases "
-             f"({record.get('answers_per_case_batched', '—')} batched answers per case)."]
+    lines = [
+        f"Families: {differential_families(record)} ({', '.join(record.get('families', []))}); "
+        f"seed {record.get('seed')}; module {commit_of(record)}.",
+        "",
+        f"- **{number(record.get('answers'))} answers** over {number(record.get('cases'))} cases "
+        f"({record.get('answers_per_case_batched', '—')} batched answers per case).",
+    ]
     unique = record.get("unique_checked") or {}
     if unique:
         lines.append("- `unique` checked " + ", ".join(f"{number(v)} times {k}" for k, v in unique.items()) + ".")
@@ -127,34 +141,53 @@ def differential_latest(record):
         body = []
         for name, c in classes.items():
             cases = ", ".join(f"`{case}`" for case in c.get("cases", [])[:3])
-            body.append(f"| {name.replace('|', ' / ')} | {number(c.get('confirmed', 0))} | "
-                        f"{', '.join(f'{k} {v}' for k, v in (c.get('by_solver') or {}).items())} | "
-                        f"{', '.join(f'{k} {v}' for k, v in (c.get('by_precision') or {}).items())} | {cases} |")
-        lines += ["", f"**{len(classes)} confirmed finding classes** (reproduce a case with "
-                  "`differential.case_from_id`):", "",
-                  table(["class (check / family / pair)", "confirmed answers", "solvers", "precisions",
-                         "cases"], body)]
+            body.append(
+                f"| {name.replace('|', ' / ')} | {number(c.get('confirmed', 0))} | "
+                f"{', '.join(f'{k} {v}' for k, v in (c.get('by_solver') or {}).items())} | "
+                f"{', '.join(f'{k} {v}' for k, v in (c.get('by_precision') or {}).items())} | {cases} |"
+            )
+        lines += [
+            "",
+            f"**{len(classes)} confirmed finding classes** (reproduce a case with " "`differential.case_from_id`):",
+            "",
+            table(["class (check / family / pair)", "confirmed answers", "solvers", "precisions", "cases"], body),
+        ]
     return "\n".join(lines)
 
 
 def write_differential(records, page):
     latest = records[-1]  # the records in the order given: the last is the latest
     rows = merged([differential_row(r) for r in reversed(records)], past_rows(page), limit=24)
-    text = "\n".join([
-        "# Differential test: long runs", "",
-        "Written by `python -m tools.report_pages differential RECORD.json` from the record of the last run; "
-        "edit that tool, not this page.", "",
-        DIFFERENTIAL_INTRO, "",
-        "## Latest run", "", differential_latest(latest), "",
-        "## Past long runs", "",
-        "Each row one run of the long mode on the module of that commit; a finding class is fixed with a "
-        "regression test before the next run of its families.", "",
-        BEGIN, table(["families", "seed", "cases", "answers", "confirmed classes", "commit"], rows), END, ""])
+    text = "\n".join(
+        [
+            "# Differential test: long runs",
+            "",
+            "Written by `python -m tools.report_pages differential RECORD.json` from the record of the last run; "
+            "edit that tool, not this page.",
+            "",
+            DIFFERENTIAL_INTRO,
+            "",
+            "## Latest run",
+            "",
+            differential_latest(latest),
+            "",
+            "## Past long runs",
+            "",
+            "Each row one run of the long mode on the module of that commit; a finding class is fixed with a "
+            "regression test before the next run of its families.",
+            "",
+            BEGIN,
+            table(["families", "seed", "cases", "answers", "confirmed classes", "commit"], rows),
+            END,
+            "",
+        ]
+    )
     with open(page, "w") as fh:
         fh.write(text)
 
 
 # --- the crash-isolating fuzz ----------------------------------------------------------------
+
 
 def fuzz_class(path, record):
     name = os.path.basename(path)
@@ -165,13 +198,17 @@ def fuzz_class(path, record):
 
 
 def fuzz_row(record):
-    return (f"| {number(record.get('cases'))} | {record.get('seed', '—')} | {record.get('crashes')} | "
-            f"{record.get('hangs')} | {record.get('findings')} | {commit_of(record)} |")
+    return (
+        f"| {number(record.get('cases'))} | {record.get('seed', '—')} | {record.get('crashes')} | "
+        f"{record.get('hangs')} | {record.get('findings')} | {commit_of(record)} |"
+    )
 
 
 def fuzz_latest(record):
-    lines = [f"- {number(record.get('cases'))} cases: {record.get('crashes')} crashes, {record.get('hangs')} hangs, "
-             f"{record.get('findings')} findings (module {commit_of(record)})."]
+    lines = [
+        f"- {number(record.get('cases'))} cases: {record.get('crashes')} crashes, {record.get('hangs')} hangs, "
+        f"{record.get('findings')} findings (module {commit_of(record)})."
+    ]
     if record.get("classes"):
         lines.append("- by class: " + ", ".join(f"{k} {number(v)}" for k, v in record["classes"].items()) + ".")
     for example in (record.get("examples") or [])[:5]:
@@ -182,22 +219,44 @@ def fuzz_latest(record):
 def write_fuzz(records, page):
     """records: {class: record}; the classes not run keep their latest section and past rows."""
     old = open(page).read() if os.path.exists(page) else ""
-    sections = ["# Crash-isolating fuzz: long runs", "",
-                "Written by `python -m tools.report_pages fuzz RECORD.json ...` from the records of the last "
-                "runs; edit that tool, not this page.", "", FUZZ_INTRO, ""]
+    sections = [
+        "# Crash-isolating fuzz: long runs",
+        "",
+        "Written by `python -m tools.report_pages fuzz RECORD.json ...` from the records of the last "
+        "runs; edit that tool, not this page.",
+        "",
+        FUZZ_INTRO,
+        "",
+    ]
     for key, (title, what) in FUZZ_CLASSES.items():
         begin, end = BEGIN.replace("past runs", f"past runs of {key}"), END.replace("past runs", f"past runs of {key}")
         old_rows = []
         old_latest = "Not run yet."
         if begin in old and end in old:
             old_rows = [r for r in old.split(begin, 1)[1].split(end, 1)[0].splitlines() if r.startswith("|")][2:]
-            old_latest = old.split(f"## {title}", 1)[1].split("### Latest run", 1)[1].split("### Past long runs", 1)[0].strip()
+            old_latest = (
+                old.split(f"## {title}", 1)[1].split("### Latest run", 1)[1].split("### Past long runs", 1)[0].strip()
+            )
         if key in records:
             latest, rows = fuzz_latest(records[key]), merged([fuzz_row(records[key])], old_rows, limit=12)
         else:
             latest, rows = old_latest, old_rows
-        sections += [f"## {title}", "", what, "", "### Latest run", "", latest, "", "### Past long runs", "",
-                     begin, table(["cases, files, scenarios or calls", "seed", "crashes", "hangs", "findings", "commit"], rows), end, ""]
+        sections += [
+            f"## {title}",
+            "",
+            what,
+            "",
+            "### Latest run",
+            "",
+            latest,
+            "",
+            "### Past long runs",
+            "",
+            begin,
+            table(["cases, files, scenarios or calls", "seed", "crashes", "hangs", "findings", "commit"], rows),
+            end,
+            "",
+        ]
     with open(page, "w") as fh:
         fh.write("\n".join(sections))
 

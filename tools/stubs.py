@@ -24,8 +24,13 @@ MODULE = "circledist._core"
 def generate(python=sys.executable, env=None) -> str:
     """The stub text pybind11-stubgen writes for the circledist._core that `python` imports."""
     with tempfile.TemporaryDirectory() as out:
-        subprocess.run([python, "-m", "pybind11_stubgen", "--exit-code", "-o", out, MODULE],
-                       check=True, capture_output=True, text=True, env=env)
+        subprocess.run(
+            [python, "-m", "pybind11_stubgen", "--exit-code", "-o", out, MODULE],
+            check=True,
+            capture_output=True,
+            text=True,
+            env=env,
+        )
         text = (pathlib.Path(out) / "circledist" / "_core.pyi").read_text()
     return re.sub(r"^__version__: str = .*$", "__version__: str", text, flags=re.M)
 
@@ -46,8 +51,9 @@ def main() -> int:
     old = CHECKED_IN.read_text()
     if old == text:
         return 0
-    sys.stdout.writelines(difflib.unified_diff(old.splitlines(True), text.splitlines(True),
-                                               "checked-in _core.pyi", "generated"))
+    sys.stdout.writelines(
+        difflib.unified_diff(old.splitlines(True), text.splitlines(True), "checked-in _core.pyi", "generated")
+    )
     print("\nthe stubs are stale: regenerate them with `python tools/stubs.py`", file=sys.stderr)
     return 1
 

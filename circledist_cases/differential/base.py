@@ -25,7 +25,7 @@ EPS64 = float(np.finfo(np.float64).eps)
 EPSLD = float(np.finfo(np.longdouble).eps)
 BARS = {"float64": 1e-12, "longdouble": 1e-15, "float32": 4 * EPS32}
 OUT_EPS = {"float64": EPS64, "longdouble": EPSLD, "float32": EPS32}
-ULPS = 8          # closest points: ulps of the scene scale allowed off their shapes
+ULPS = 8  # closest points: ulps of the scene scale allowed off their shapes
 LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
 # kinds with a radius: the rounds and arcs (an arc is a circle restricted to an angle interval;
@@ -34,12 +34,17 @@ RIMS = ROUND + ("arc", "annulus")
 # an annulus's data: centre, normal, OUTER radius, inner radius (8 numbers: the outer radius at
 # index 6, where a round's radius is, so scales, translations and frames read it alike); the
 # library's constructor takes (centre, normal, inner, outer)
-TARGET_REGION = ("disk", "annulus")   # closed forms with a face (a disk's |z|, an annulus's too)
+TARGET_REGION = ("disk", "annulus")  # closed forms with a face (a disk's |z|, an annulus's too)
 # the pairs with a circle or disk, then the pairs among
 # points, lines, rays and segments (point before line before ray before segment) and a Bezier
 # curve against each of them (the curve first)
 ROUND_PAIRS = [(lk, rk) for lk in LINEAR for rk in ROUND] + [
-    ("bezier", "circle"), ("bezier", "disk"), ("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
+    ("bezier", "circle"),
+    ("bezier", "disk"),
+    ("circle", "circle"),
+    ("circle", "disk"),
+    ("disk", "disk"),
+]
 LL = [(lk, rk) for i, lk in enumerate(LINEAR) for rk in LINEAR[i:]]
 BL = [("bezier", lk) for lk in LINEAR]
 # an arc against every kind with a query, the arc second (as a circle or disk comes after the
@@ -49,7 +54,7 @@ BL = [("bezier", lk) for lk in LINEAR]
 # arc families' case ids: case i is pair i mod the number of pairs.)
 ARC_OTHERS = ("point", "line", "ray", "segment", "bezier", "circle", "disk", "arc")
 ARC_PAIRS = [(k, "arc") for k in ARC_OTHERS]
-ARC_RR = [p for p in ARC_PAIRS if p[0] in ("circle", "disk", "arc")]   # a circle, disk or arc against an arc
+ARC_RR = [p for p in ARC_PAIRS if p[0] in ("circle", "disk", "arc")]  # a circle, disk or arc against an arc
 # an annulus against every kind, the annulus second (after the arc, and after another
 # annulus: (annulus, annulus)); the "ann_" families (_ann_variant: the disk families with a hole
 # cut in each annulus, arcs cut from circles as the arc families do; then the annuli's own)
@@ -85,8 +90,8 @@ RR = [("circle", "circle"), ("circle", "disk"), ("disk", "disk")]
 LR = [(lk, rk) for lk in LINEAR for rk in ROUND]
 LR3 = [(lk, rk) for lk in ("line", "ray", "segment") for rk in ROUND]
 BR = [("bezier", "circle"), ("bezier", "disk")]
-LL3 = [p for p in LL if "point" not in p]                    # among lines, rays and segments
-LLZ = [p for p in LL + BL if "segment" in p]                 # with a segment (made zero-length)
+LL3 = [p for p in LL if "point" not in p]  # among lines, rays and segments
+LLZ = [p for p in LL + BL if "segment" in p]  # with a segment (made zero-length)
 
 
 def _plain(data):
@@ -98,6 +103,7 @@ def _plain(data):
 def _key(case):
     def t(d):
         return tuple(tuple(p) for p in d) if d and isinstance(d[0], list) else tuple(d)
+
     return (case["a"], t(case["a_data"]), case["b"], t(case["b_data"]))
 
 

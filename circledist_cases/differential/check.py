@@ -76,6 +76,7 @@ def pair_scale(case):
     """The pair's length scale of within()'s documented tolerance 64 eps (s + d) (bounds.hpp
     pair_scale: the sizes and separation of the bounding balls; a line or ray counts by its
     distance from the other's centre, two of them by the separation of their origins)."""
+
     def ball(kind, data):
         d = np.asarray(data, float)
         if kind == "point":
@@ -89,6 +90,7 @@ def pair_scale(case):
         lo, hi = d.min(axis=0), d.max(axis=0)
         c = (lo + hi) / 2
         return c, float(max(np.linalg.norm(p - c) for p in d))
+
     def from_line(kind, data, c):
         # in exact rationals: a ray's origin 3e8 away cancels to 0 in doubles
         o, u, cc = ([Fraction(float(x)) for x in v] for v in (data[:3], data[3:6], c))
@@ -96,6 +98,7 @@ def pair_scale(case):
         if kind == "ray":
             t = max(t, Fraction(0))
         return math.sqrt(float(sum((oi + t * ui - ci) ** 2 for oi, ui, ci in zip(o, u, cc))))
+
     ka, kb = case["a"], case["b"]
     ca, ra = ball(ka, case["a_data"])
     cb, rb = ball(kb, case["b_data"])
@@ -118,8 +121,17 @@ def _eq(x, y):
 
 def _finding(check, case, solver, precision, order, entry, **info):
     ka, kb = (case["a"], case["b"]) if order == "ab" else (case["b"], case["a"])
-    f = dict(check=check, family=case["family"], case_id=case["id"], pair=f"{case['a']}-{case['b']}",
-                kinds=[ka, kb], solver=solver, precision=precision, order=order, entry=entry)
+    f = dict(
+        check=check,
+        family=case["family"],
+        case_id=case["id"],
+        pair=f"{case['a']}-{case['b']}",
+        kinds=[ka, kb],
+        solver=solver,
+        precision=precision,
+        order=order,
+        entry=entry,
+    )
     f["a_data"] = case["a_data"] if order == "ab" else case["b_data"]
     f["b_data"] = case["b_data"] if order == "ab" else case["a_data"]
     for k, v in info.items():
@@ -202,11 +214,15 @@ def check_cases(cd, cases, combo_list=None, scalar=None, screens=None, within=Tr
                 s32 = screen([to_float32_case(group[j]) for j in need64], use_ld=False)
             for q, j in enumerate(need64):
                 screens[idx[j]] = dict(
-                    value=s64.value[q], slack=s64.slack[q], form=s64.forms[q], param=s64.params[q],
+                    value=s64.value[q],
+                    slack=s64.slack[q],
+                    form=s64.forms[q],
+                    param=s64.params[q],
                     value32=s32.value[q] if "float32" in precs else None,
                     slack32=s32.slack[q] if "float32" in precs else None,
                     form32=s32.forms[q] if "float32" in precs else None,
-                    param32=s32.params[q] if "float32" in precs else None)
+                    param32=s32.params[q] if "float32" in precs else None,
+                )
         findings += _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, stats)
     return findings, stats
 
@@ -214,18 +230,27 @@ def check_cases(cd, cases, combo_list=None, scalar=None, screens=None, within=Tr
 def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, stats):
     findings = []
     n = len(group)
-    data = {"f64": (np.array([c["a_data"] for c in group], dtype=float),
-                    np.array([c["b_data"] for c in group], dtype=float))}
+    data = {
+        "f64": (
+            np.array([c["a_data"] for c in group], dtype=float),
+            np.array([c["b_data"] for c in group], dtype=float),
+        )
+    }
     g32 = [to_float32_case(c) for c in group]
     data["f32"] = (np.array([c["a_data"] for c in g32], dtype=float), np.array([c["b_data"] for c in g32], dtype=float))
     radius = {"f64": np.array([bar_scale(c) for c in group]), "f32": np.array([bar_scale(c) for c in g32])}
     sscale = {"f64": np.array([scene_scale(c) for c in group]), "f32": np.array([scene_scale(c) for c in g32])}
     pscale = {"f64": np.array([pair_scale(c) for c in group]), "f32": np.array([pair_scale(c) for c in g32])}
-    U = {"f64": np.array([screens[i]["value"] for i in idx], dtype=LD),
-         "f32": np.array([screens[i]["value32"] if screens[i]["value32"] is not None else np.nan for i in idx],
-                         dtype=LD)}
-    slack = {"f64": np.array([screens[i]["slack"] for i in idx]),
-             "f32": np.array([screens[i]["slack32"] if screens[i]["slack32"] is not None else 0 for i in idx])}
+    U = {
+        "f64": np.array([screens[i]["value"] for i in idx], dtype=LD),
+        "f32": np.array(
+            [screens[i]["value32"] if screens[i]["value32"] is not None else np.nan for i in idx], dtype=LD
+        ),
+    }
+    slack = {
+        "f64": np.array([screens[i]["slack"] for i in idx]),
+        "f32": np.array([screens[i]["slack32"] if screens[i]["slack32"] is not None else 0 for i in idx]),
+    }
     runs = {}
     # ---- batched calls and per-answer checks -----------------------------------------------
     for solver, precision in combo_list:
@@ -251,7 +276,7 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             if r is None:
                 continue
             pa, pb = np.asarray(r.point_a), np.asarray(r.point_b)
-            qa, qb = (pa, pb) if order == "ab" else (pb, pa)   # qa on shape a, qb on shape b
+            qa, qb = (pa, pb) if order == "ab" else (pb, pa)  # qa on shape a, qb on shape b
             par = np.asarray(r.param_a if order == "ab" else r.param_b)
             with np.errstate(all="ignore"):
                 ra_, ea = residuals(ka, A, qa, par[:, 0] if ka == "bezier" else None)
@@ -279,8 +304,11 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             rr = res[order]
             if rr["err"] is not None:
                 for j in range(n):
-                    findings.append(_finding("exception", gcases[j], solver, precision, order,
-                                             "distance/closest_points", error=rr["err"]))
+                    findings.append(
+                        _finding(
+                            "exception", gcases[j], solver, precision, order, "distance/closest_points", error=rr["err"]
+                        )
+                    )
                 continue
             d = np.asarray(rr["d"])
             r = rr["r"]
@@ -288,8 +316,18 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             d_orders[order] = d
             want = {"float32": np.float32, "float64": np.float64, "longdouble": np.longdouble}[precision]
             if d.dtype != want or cdist.dtype != want:
-                findings.append(_finding("dtype", gcases[0], solver, precision, order, "distance",
-                                         got=str(d.dtype), expected=np.dtype(want).name))
+                findings.append(
+                    _finding(
+                        "dtype",
+                        gcases[0],
+                        solver,
+                        precision,
+                        order,
+                        "distance",
+                        got=str(d.dtype),
+                        expected=np.dtype(want).name,
+                    )
+                )
             dl, cl = d.astype(LD), cdist.astype(LD)
             ra_, rb_, sep = resid[(solver, precision, order)]
             ulps_o = ulps
@@ -297,40 +335,103 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
                 # without a round the closest points can lie far outside the scene (1e5 along two
                 # lines 1e-5 rad apart): each is rounded by ulps of its own size
                 with np.errstate(invalid="ignore"):
-                    pmag = np.maximum(np.abs(np.asarray(r.point_a, dtype=float)).max(axis=1),
-                                      np.abs(np.asarray(r.point_b, dtype=float)).max(axis=1))
+                    pmag = np.maximum(
+                        np.abs(np.asarray(r.point_a, dtype=float)).max(axis=1),
+                        np.abs(np.asarray(r.point_b, dtype=float)).max(axis=1),
+                    )
                 ulps_o = ULPS * eps_out * np.maximum(sscale[scene], pmag)
             acc_bad = inaccurate.setdefault(order, set())
             for j in range(n):
                 c = gcases[j]
-                info = dict(screen=Us[j], screen_slack=sl[j], verified_pair_bound=upair[scene][j],
-                            bar_abs=bar_abs[j], bar_scale=radius[scene][j])
+                info = dict(
+                    screen=Us[j],
+                    screen_slack=sl[j],
+                    verified_pair_bound=upair[scene][j],
+                    bar_abs=bar_abs[j],
+                    bar_scale=radius[scene][j],
+                )
                 for entry, val in (("distance", dl[j]), ("closest_points", cl[j])):
                     if not np.isfinite(val) or val < 0:
                         findings.append(_finding("non_finite", c, solver, precision, order, entry, library=val))
                         continue
                     if val > Ub[j] + bar_abs[j] + sl[j]:
-                        findings.append(_finding("above_bound", c, solver, precision, order, entry, library=val,
-                                                 excess=(val - Ub[j]) / scale_[j], **info))
+                        findings.append(
+                            _finding(
+                                "above_bound",
+                                c,
+                                solver,
+                                precision,
+                                order,
+                                entry,
+                                library=val,
+                                excess=(val - Ub[j]) / scale_[j],
+                                **info,
+                            )
+                        )
                         acc_bad.add(j)
                     elif val < Us[j] - bar_abs[j] - sl[j] and val < upair[scene][j] - bar_abs[j] - sl[j]:
-                        findings.append(_finding("below_bound", c, solver, precision, order, entry, library=val,
-                                                 excess=(val - Ub[j]) / scale_[j], **info))
+                        findings.append(
+                            _finding(
+                                "below_bound",
+                                c,
+                                solver,
+                                precision,
+                                order,
+                                entry,
+                                library=val,
+                                excess=(val - Ub[j]) / scale_[j],
+                                **info,
+                            )
+                        )
                         acc_bad.add(j)
                 # closest points on their shapes; separation equals the reported distance
                 if not (ra_[j] <= ulps_o[j] and rb_[j] <= ulps_o[j]):
-                    findings.append(_finding("point_off_shape", c, solver, precision, order, "closest_points",
-                                             off_a=ra_[j], off_b=rb_[j], allowed=ulps_o[j],
-                                             point_a=np.asarray(r.point_a)[j],
-                                             point_b=np.asarray(r.point_b)[j]))
+                    findings.append(
+                        _finding(
+                            "point_off_shape",
+                            c,
+                            solver,
+                            precision,
+                            order,
+                            "closest_points",
+                            off_a=ra_[j],
+                            off_b=rb_[j],
+                            allowed=ulps_o[j],
+                            point_a=np.asarray(r.point_a)[j],
+                            point_b=np.asarray(r.point_b)[j],
+                        )
+                    )
                 if not abs(sep[j] - cl[j]) <= bar_abs[j] + ulps_o[j]:
-                    findings.append(_finding("separation", c, solver, precision, order, "closest_points",
-                                             separation=sep[j], library=cl[j], allowed=bar_abs[j] + ulps_o[j],
-                                             point_a=np.asarray(r.point_a)[j], point_b=np.asarray(r.point_b)[j]))
+                    findings.append(
+                        _finding(
+                            "separation",
+                            c,
+                            solver,
+                            precision,
+                            order,
+                            "closest_points",
+                            separation=sep[j],
+                            library=cl[j],
+                            allowed=bar_abs[j] + ulps_o[j],
+                            point_a=np.asarray(r.point_a)[j],
+                            point_b=np.asarray(r.point_b)[j],
+                        )
+                    )
                 # the same number, to the bit (README: the two never disagree)
                 if not (dl[j] == cl[j] or (np.isnan(dl[j]) and np.isnan(cl[j]))):
-                    findings.append(_finding("distance_vs_closest_points", c, solver, precision, order, "both",
-                                             distance=dl[j], closest_points=cl[j], allowed=0.0))
+                    findings.append(
+                        _finding(
+                            "distance_vs_closest_points",
+                            c,
+                            solver,
+                            precision,
+                            order,
+                            "both",
+                            distance=dl[j],
+                            closest_points=cl[j],
+                            allowed=0.0,
+                        )
+                    )
                 if precision == "float32" and float(np.float32(d[j])) != float(d[j]):
                     findings.append(_finding("float32_value", c, solver, precision, order, "distance", library=d[j]))
         # symmetry: distance(a, b) == distance(b, a) (README; the closest points of a non-unique
@@ -339,14 +440,26 @@ def _check_group(cd, ka, kb, idx, group, combo_list, scalar, screens, within, st
             r1, r2 = res["ab"]["r"], res["ba"]["r"]
             same = _eq(d_orders["ab"], d_orders["ba"]) & _eq(np.asarray(r1.distance), np.asarray(r2.distance))
             for j in np.flatnonzero(~same):
-                findings.append(_finding("asymmetric", gcases[j], solver, precision, "ab", "distance",
-                                         ab=d_orders["ab"][j], ba=d_orders["ba"][j],
-                                         cp_ab=np.asarray(r1.distance)[j], cp_ba=np.asarray(r2.distance)[j]))
+                findings.append(
+                    _finding(
+                        "asymmetric",
+                        gcases[j],
+                        solver,
+                        precision,
+                        "ab",
+                        "distance",
+                        ab=d_orders["ab"][j],
+                        ba=d_orders["ba"][j],
+                        cp_ab=np.asarray(r1.distance)[j],
+                        cp_ba=np.asarray(r2.distance)[j],
+                    )
+                )
         # within / distance_if_within / intersects, batched
         wres = {}
         if within and d_orders:
-            fw, wres = _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, pscale[scene], bar_abs,
-                                     inaccurate, stats)
+            fw, wres = _check_within(
+                cd, res, SA, SB, d_orders, solver, precision, gcases, pscale[scene], bar_abs, inaccurate, stats
+            )
             findings += fw
         # an arc of angle 2 pi is the whole circle, answered by the circle's query (docs/derivations/arc.md)
         if "arc" in (ka, kb) and d_orders:
@@ -385,9 +498,23 @@ def _check_whole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, st
     dt = _dtype(precision)
     SA = make_shape(cd, kinds[0], A[sel, :7] if ka == "arc" else A[sel], dt)
     SB = make_shape(cd, kinds[1], Bd[sel, :7] if kb == "arc" else Bd[sel], dt)
-    same = (ka != "arc", kb != "arc")   # which side's parameter must be the circle query's
-    return _compare_replaced(cd, (ka, kb), SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
-                             "whole_arc_vs_circle", "whole arc as circle", same)
+    same = (ka != "arc", kb != "arc")  # which side's parameter must be the circle query's
+    return _compare_replaced(
+        cd,
+        (ka, kb),
+        SA,
+        SB,
+        sel,
+        res,
+        d_orders,
+        solver,
+        precision,
+        gcases,
+        stats,
+        "whole_arc_vs_circle",
+        "whole arc as circle",
+        same,
+    )
 
 
 def _check_hole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, stats):
@@ -411,14 +538,29 @@ def _check_hole(cd, ka, kb, A, Bd, res, d_orders, solver, precision, gcases, sta
             else:
                 SA, SB = make_shape(cd, ka, A[sel], dt), make_shape(cd, as_kind, Bd[sel, :7], dt)
             rim = None if as_kind == "disk" else (which, X[sel, 6])
-            out += _compare_replaced(cd, (ka, kb), SA, SB, sel, res, d_orders, solver, precision, gcases, stats,
-                                     "degenerate_annulus_vs_" + as_kind, f"annulus as {as_kind}", (True, True),
-                                     rim=rim)
+            out += _compare_replaced(
+                cd,
+                (ka, kb),
+                SA,
+                SB,
+                sel,
+                res,
+                d_orders,
+                solver,
+                precision,
+                gcases,
+                stats,
+                "degenerate_annulus_vs_" + as_kind,
+                f"annulus as {as_kind}",
+                (True, True),
+                rim=rim,
+            )
     return out
 
 
-def _compare_replaced(cd, kinds, SA, SB, sel, res, d_orders, solver, precision, gcases, stats, check, what, same,
-                      rim=None):
+def _compare_replaced(
+    cd, kinds, SA, SB, sel, res, d_orders, solver, precision, gcases, stats, check, what, same, rim=None
+):
     """The rows `sel` of the batch's answers `res` (case kinds `kinds`) against the same query on
     the replaced shapes SA, SB (both orders), to the bit: distance(); closest_points()' distance,
     points and `unique`; the parameter of case side a / b where same[0] / same[1].  rim = (side,
@@ -440,8 +582,18 @@ def _compare_replaced(cd, kinds, SA, SB, sel, res, d_orders, solver, precision, 
         stats["answers"][f"closest_points ({what})"] += len(sel)
         d = np.asarray(d)
         for q in np.flatnonzero(~_eq(d, d_orders[order][sel])):
-            out.append(_finding(check, gcases[sel[q]], solver, precision, order, "distance",
-                                library=d_orders[order][sel[q]], replaced=d[q]))
+            out.append(
+                _finding(
+                    check,
+                    gcases[sel[q]],
+                    solver,
+                    precision,
+                    order,
+                    "distance",
+                    library=d_orders[order][sel[q]],
+                    replaced=d[q],
+                )
+            )
         mine = res[order]["r"]
         if mine is None:
             continue
@@ -488,8 +640,18 @@ def _compare_replaced(cd, kinds, SA, SB, sel, res, d_orders, solver, precision, 
             failed &= ~(twins & ~swapped_bad)
         for name, rep, bad in direct:
             for q in np.flatnonzero(bad & failed):
-                out.append(_finding(check, gcases[sel[q]], solver, precision, order, f"closest_points {name}",
-                                    library=np.asarray(getattr(mine, name))[sel][q], replaced=rep[q]))
+                out.append(
+                    _finding(
+                        check,
+                        gcases[sel[q]],
+                        solver,
+                        precision,
+                        order,
+                        f"closest_points {name}",
+                        library=np.asarray(getattr(mine, name))[sel][q],
+                        replaced=rep[q],
+                    )
+                )
     return out
 
 
@@ -517,8 +679,14 @@ def _round_fields(shape, n):
     f = shape.to_arrays()
     vec = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n, 3))  # noqa: E731
     num = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
-    out = dict(kind=np.full(n, codes[shape.kind]), center=vec(f["center"]), normal=vec(f["normal"]),
-               inner=np.zeros(n), start=np.zeros((n, 3)), angle=np.zeros(n))
+    out = dict(
+        kind=np.full(n, codes[shape.kind]),
+        center=vec(f["center"]),
+        normal=vec(f["normal"]),
+        inner=np.zeros(n),
+        start=np.zeros((n, 3)),
+        angle=np.zeros(n),
+    )
     if shape.kind == "Annulus":
         inner, outer = num(f["inner_radius"]), num(f["outer_radius"])
         out["radius"] = outer
@@ -545,9 +713,20 @@ def _check_unique(res, d_orders, solver, precision, gcases, stats):
             stats["unique_checked"][str(exp[j][0])] += 1
         for j in rows:
             if bool(u[j]) != exp[j][0]:
-                out.append(_finding("unique", gcases[j], solver, precision, order, "closest_points",
-                                    library=bool(u[j]), expected=exp[j][0], why=exp[j][1],
-                                    distance=np.asarray(res[order]["r"].distance)[j]))
+                out.append(
+                    _finding(
+                        "unique",
+                        gcases[j],
+                        solver,
+                        precision,
+                        order,
+                        "closest_points",
+                        library=bool(u[j]),
+                        expected=exp[j][0],
+                        why=exp[j][1],
+                        distance=np.asarray(res[order]["r"].distance)[j],
+                    )
+                )
     return out
 
 
@@ -578,8 +757,13 @@ def _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, ps, bar_
         b_lo, e4 = _call(cd.distance_if_within, x, y, lo_a, **kw)
         it, e5 = _call(cd.intersects, x, y, **kw)
         n = len(gcases)
-        for entry, v in (("within", w_hi), ("within", w_lo), ("distance_if_within", b_hi),
-                         ("distance_if_within", b_lo), ("intersects", it)):
+        for entry, v in (
+            ("within", w_hi),
+            ("within", w_lo),
+            ("distance_if_within", b_hi),
+            ("distance_if_within", b_lo),
+            ("intersects", it),
+        ):
             stats["answers"][entry] += n if v is not None else 0
         err = e1 or e2 or e3 or e4 or e5
         if err:
@@ -604,8 +788,19 @@ def _check_within(cd, res, SA, SB, d_orders, solver, precision, gcases, ps, bar_
                 bad.append("intersects is True")
             if bad:
                 check = "within_vs_inaccurate_distance" if j in inaccurate.get(order, ()) else "within"
-                out.append(_finding(check, gcases[j], solver, precision, order, "within/intersects",
-                                    library=dd[j], problems=bad, pair_scale=ps[j]))
+                out.append(
+                    _finding(
+                        check,
+                        gcases[j],
+                        solver,
+                        precision,
+                        order,
+                        "within/intersects",
+                        library=dd[j],
+                        problems=bad,
+                        pair_scale=ps[j],
+                    )
+                )
     return out, wres
 
 
@@ -635,10 +830,19 @@ def _check_scalar(cd, ka, kb, res, d_orders, wres, sel, gcases, solver, precisio
                 problems.append(f"distance: scalar {d!r} batch {d_orders[order][j]!r}")
             if not _eq(r.distance, np.asarray(rb.distance)[j]):
                 problems.append(f"closest_points.distance: scalar {r.distance!r} batch {np.asarray(rb.distance)[j]!r}")
-            if not (np.all(_eq(np.asarray(r.point_a), np.asarray(rb.point_a)[j]))
-                    and np.all(_eq(np.asarray(r.point_b), np.asarray(rb.point_b)[j]))):
-                problems.append("closest points differ: scalar %r %r batch %r %r" % (
-                    np.asarray(r.point_a), np.asarray(r.point_b), np.asarray(rb.point_a)[j], np.asarray(rb.point_b)[j]))
+            if not (
+                np.all(_eq(np.asarray(r.point_a), np.asarray(rb.point_a)[j]))
+                and np.all(_eq(np.asarray(r.point_b), np.asarray(rb.point_b)[j]))
+            ):
+                problems.append(
+                    "closest points differ: scalar %r %r batch %r %r"
+                    % (
+                        np.asarray(r.point_a),
+                        np.asarray(r.point_b),
+                        np.asarray(rb.point_a)[j],
+                        np.asarray(rb.point_b)[j],
+                    )
+                )
             if order in wres:
                 hi_a, lo_a, w_hi, w_lo, it = wres[order]
                 for lim, wb in ((hi_a[j], w_hi[j]), (lo_a[j], w_lo[j])):

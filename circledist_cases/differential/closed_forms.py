@@ -93,9 +93,14 @@ def _ld_frame(N):
 
 
 def _cross(a, b):
-    return np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-                     a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-                     a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
+    return np.stack(
+        [
+            a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+            a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+            a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0],
+        ],
+        axis=-1,
+    )
 
 
 def _dot(a, b):
@@ -167,8 +172,9 @@ class _P:
 
     def __init__(self, **arrays):
         self.ld = {k: (np.asarray(v).astype(LD) if isinstance(v, np.ndarray) else v) for k, v in arrays.items()}
-        self.f64 = {k: (np.asarray(v).astype(np.float64) if isinstance(v, np.ndarray) else v)
-                    for k, v in arrays.items()}
+        self.f64 = {
+            k: (np.asarray(v).astype(np.float64) if isinstance(v, np.ndarray) else v) for k, v in arrays.items()
+        }
 
     def get(self, dtype):
         return self.ld if dtype == LD else self.f64
@@ -197,8 +203,16 @@ class _Form:
 
     def take(self, idx):
         """This formulation for cases idx (one row per candidate)."""
-        return _Form(self.name, self.moving, self.target, self.p.take(idx), np.asarray(self.lo)[idx],
-                     np.asarray(self.hi)[idx], self.periodic, self.grid)
+        return _Form(
+            self.name,
+            self.moving,
+            self.target,
+            self.p.take(idx),
+            np.asarray(self.lo)[idx],
+            np.asarray(self.hi)[idx],
+            self.periodic,
+            self.grid,
+        )
 
     def points(self, x, P):
         if self.moving == "rim":
@@ -207,7 +221,7 @@ class _Form:
         if self.moving == "line":
             return _x1(P["b0"]) + self.line_s(x, P)[..., None] * _x1(P["m"])
         # bezier: Bernstein sum of control points relative to the target centre
-        ctrl = P["ctrl"]                       # (n, K, 3)
+        ctrl = P["ctrl"]  # (n, K, 3)
         k = ctrl.shape[1] - 1
         t = x
         s = 1 - t
@@ -285,8 +299,13 @@ class _Form:
             # |m_perp| = |m| sin(angle), 1e-17 |m| for pieces parallel within 1e-17)
             inside, s = self.perp_inside(x, P)
             full = _nrm(P["b0"]) + np.abs(s) * _nrm(P["m"])
-            return np.where(inside, _nrm(P["cperp"]) + np.abs(s) * _nrm(P["mperp"])
-                            + LD(2.0 ** -100 / (16 * EPSLD)) * (full + _nrm(P["tb0"])), mag + full)
+            return np.where(
+                inside,
+                _nrm(P["cperp"])
+                + np.abs(s) * _nrm(P["mperp"])
+                + LD(2.0**-100 / (16 * EPSLD)) * (full + _nrm(P["tb0"])),
+                mag + full,
+            )
         if self.moving == "rim":
             mag = mag + _nrm(P["D"]) + P["Ra"]
         elif self.moving == "line":
@@ -295,7 +314,7 @@ class _Form:
             ctrl = P["ctrl"]
             k = ctrl.shape[1] - 1
             t = x
-            mag = mag + sum(math.comb(k, i) * t ** i * (1 - t) ** (k - i) * _nrm(ctrl[:, i, :]) for i in range(k + 1))
+            mag = mag + sum(math.comb(k, i) * t**i * (1 - t) ** (k - i) * _nrm(ctrl[:, i, :]) for i in range(k + 1))
         return mag
 
 

@@ -42,8 +42,9 @@ def mp_reference(case):
         _CURVE_MINIMA[key] = [(p.value, p.t) for p in full.pairs]
         ref = full.distance
     else:
-        f = {("circle", "circle"): R.circle_circle, ("circle", "disk"): R.circle_disk,
-             ("disk", "disk"): R.disk_disk}[(ka, kb)]
+        f = {("circle", "circle"): R.circle_circle, ("circle", "disk"): R.circle_disk, ("disk", "disk"): R.disk_disk}[
+            (ka, kb)
+        ]
         ref = f(a[:3], a[3:6], a[6], b[:3], b[3:6], b[6]).distance
     _REF_CACHE[key] = ref
     return ref
@@ -216,9 +217,20 @@ ACCURACY_CHECKS = ("above_bound", "below_bound", "distance_vs_closest_points")
 MISS_REL = "1e-18"
 
 
-EXACT_CHECKS = ("within", "within_vs_inaccurate_distance", "asymmetric", "batch_scalar", "dtype", "float32_value",
-                "whole_arc_vs_circle", "degenerate_annulus_vs_disk", "degenerate_annulus_vs_circle", "unique",
-                "exception", "non_finite")
+EXACT_CHECKS = (
+    "within",
+    "within_vs_inaccurate_distance",
+    "asymmetric",
+    "batch_scalar",
+    "dtype",
+    "float32_value",
+    "whole_arc_vs_circle",
+    "degenerate_annulus_vs_disk",
+    "degenerate_annulus_vs_circle",
+    "unique",
+    "exception",
+    "non_finite",
+)
 
 
 def _mp_num(v):

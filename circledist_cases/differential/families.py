@@ -52,23 +52,77 @@ import math
 import numpy as np
 
 from .base import (
-    ANN_PAIRS, ANN_RR, ARC_PAIRS, ARC_RR, BL, BR, FAMILIES, KIND_PAIRS, LL, LL3, LLZ, LR, LR3, RIMS,
-    ROUND, ROUND_PAIRS, RR, _key, _load, _piece_points, _plain)
+    ANN_PAIRS,
+    ANN_RR,
+    ARC_PAIRS,
+    ARC_RR,
+    BL,
+    BR,
+    FAMILIES,
+    KIND_PAIRS,
+    LL,
+    LL3,
+    LLZ,
+    LR,
+    LR3,
+    RIMS,
+    ROUND,
+    ROUND_PAIRS,
+    RR,
+    _key,
+    _load,
+    _piece_points,
+    _plain,
+)
 from .families_round import (
-    _fam_axis, _fam_bezier_far_control, _fam_bezier_large, _fam_bezier_plane, _fam_concentric,
-    _fam_coplanar, _fam_far_origin, _fam_far_translated, _fam_huge_circle, _fam_near_concentric,
-    _fam_near_touching, _fam_parallel_height, _fam_piece_near_plane, _fam_radius_ratio,
-    _fam_random, _fam_shadow_center, _fam_tangent)
+    _fam_axis,
+    _fam_bezier_far_control,
+    _fam_bezier_large,
+    _fam_bezier_plane,
+    _fam_concentric,
+    _fam_coplanar,
+    _fam_far_origin,
+    _fam_far_translated,
+    _fam_huge_circle,
+    _fam_near_concentric,
+    _fam_near_touching,
+    _fam_parallel_height,
+    _fam_piece_near_plane,
+    _fam_radius_ratio,
+    _fam_random,
+    _fam_shadow_center,
+    _fam_tangent,
+)
 from .families_linear import (
-    _fam_bezier_crossing, _fam_bezier_far_control_linear, _fam_bezier_large_linear,
-    _fam_bezier_tangent_line, _fam_linear_far_origin, _fam_linear_far_translated,
-    _fam_linear_random, _fam_near_parallel, _fam_on_piece, _fam_zero_length)
+    _fam_bezier_crossing,
+    _fam_bezier_far_control_linear,
+    _fam_bezier_large_linear,
+    _fam_bezier_tangent_line,
+    _fam_linear_far_origin,
+    _fam_linear_far_translated,
+    _fam_linear_random,
+    _fam_near_parallel,
+    _fam_on_piece,
+    _fam_zero_length,
+)
 from .families_arc import (
-    _arc_pairs, _arc_variant, _fam_arc_angles, _fam_arc_end_on_axis, _fam_arc_ends,
-    _fam_arc_far_translated, _fam_arc_spans)
+    _arc_pairs,
+    _arc_variant,
+    _fam_arc_angles,
+    _fam_arc_end_on_axis,
+    _fam_arc_ends,
+    _fam_arc_far_translated,
+    _fam_arc_spans,
+)
 from .families_annulus import (
-    _ann_pairs, _ann_variant, _fam_ann_degenerate, _fam_ann_far_translated, _fam_ann_hole,
-    _fam_ann_inner_tangent, _fam_ann_overlap)
+    _ann_pairs,
+    _ann_variant,
+    _fam_ann_degenerate,
+    _fam_ann_far_translated,
+    _fam_ann_hole,
+    _fam_ann_inner_tangent,
+    _fam_ann_overlap,
+)
 
 
 # ---- effects on degenerate configurations ----------------------------------------------------
@@ -99,8 +153,10 @@ def _small_shape(rng, kind, c, n):
     small integer data: a circle's or disk's radius 0, 1 or 2, an arc's or annulus's 1 or 2, an
     annulus's inner radius 0..outer (0: the disk, = outer: the circle), a segment of length 0
     sometimes."""
+
     def along():
         return n * float(rng.choice([1, -1, 2])) if rng.random() < 0.5 else _small_int_vector(rng, True)
+
     if kind == "point":
         return list(c)
     if kind in ("line", "ray"):
@@ -149,62 +205,94 @@ def _fam_effect_degenerate(rng, ka, kb):
 
 
 # name: (kind pairs, generator); the dict is base.FAMILIES, which the generators read
-FAMILIES.update({
-    "random": (ROUND_PAIRS, _fam_random),
-    "tangent": (ROUND_PAIRS, _fam_tangent),
-    "axis": (LR, _fam_axis),
-    "coplanar": (ROUND_PAIRS, _fam_coplanar),
-    "concentric": (ROUND_PAIRS, _fam_concentric),
-    "near_concentric": (ROUND_PAIRS, _fam_near_concentric),
-    "far_translated": (ROUND_PAIRS, _fam_far_translated),
-    "far_origin": (LR3, _fam_far_origin),
-    "radius_ratio": (ROUND_PAIRS, _fam_radius_ratio),
-    "near_touching": (RR, _fam_near_touching),
-    "parallel_height": (RR, _fam_parallel_height),
-    "bezier_large": (BR, _fam_bezier_large),
-    "bezier_far_control": (BR, _fam_bezier_far_control),
-    "bezier_plane": (BR, _fam_bezier_plane),
-    "huge_circle": (RR, _fam_huge_circle),
-    # Families found later come last: a case's id ("family/seed/i") seeds its generator with the
-    # family's position here, so appending keeps every earlier id's case.
-    "shadow_center": (LR3, _fam_shadow_center),
-    # the pairs without a round (points, lines, rays, segments; Bezier curves against them)
-    "linear_random": (LL + BL, _fam_linear_random),
-    "linear_far_translated": (LL + BL, _fam_linear_far_translated),
-    "near_parallel": (LL3, _fam_near_parallel),
-    "linear_far_origin": (LL[1:] + BL[1:], _fam_linear_far_origin),
-    "zero_length": (LLZ, _fam_zero_length),
-    "on_piece": (LL[1:], _fam_on_piece),
-    "bezier_tangent_line": (BL[1:], _fam_bezier_tangent_line),
-    "bezier_crossing": (BL[1:], _fam_bezier_crossing),
-    "bezier_far_control_linear": (BL, _fam_bezier_far_control_linear),
-    "bezier_large_linear": (BL, _fam_bezier_large_linear),
-    "piece_near_plane": (LR3, _fam_piece_near_plane),
-})
+FAMILIES.update(
+    {
+        "random": (ROUND_PAIRS, _fam_random),
+        "tangent": (ROUND_PAIRS, _fam_tangent),
+        "axis": (LR, _fam_axis),
+        "coplanar": (ROUND_PAIRS, _fam_coplanar),
+        "concentric": (ROUND_PAIRS, _fam_concentric),
+        "near_concentric": (ROUND_PAIRS, _fam_near_concentric),
+        "far_translated": (ROUND_PAIRS, _fam_far_translated),
+        "far_origin": (LR3, _fam_far_origin),
+        "radius_ratio": (ROUND_PAIRS, _fam_radius_ratio),
+        "near_touching": (RR, _fam_near_touching),
+        "parallel_height": (RR, _fam_parallel_height),
+        "bezier_large": (BR, _fam_bezier_large),
+        "bezier_far_control": (BR, _fam_bezier_far_control),
+        "bezier_plane": (BR, _fam_bezier_plane),
+        "huge_circle": (RR, _fam_huge_circle),
+        # Families found later come last: a case's id ("family/seed/i") seeds its generator with the
+        # family's position here, so appending keeps every earlier id's case.
+        "shadow_center": (LR3, _fam_shadow_center),
+        # the pairs without a round (points, lines, rays, segments; Bezier curves against them)
+        "linear_random": (LL + BL, _fam_linear_random),
+        "linear_far_translated": (LL + BL, _fam_linear_far_translated),
+        "near_parallel": (LL3, _fam_near_parallel),
+        "linear_far_origin": (LL[1:] + BL[1:], _fam_linear_far_origin),
+        "zero_length": (LLZ, _fam_zero_length),
+        "on_piece": (LL[1:], _fam_on_piece),
+        "bezier_tangent_line": (BL[1:], _fam_bezier_tangent_line),
+        "bezier_crossing": (BL[1:], _fam_bezier_crossing),
+        "bezier_far_control_linear": (BL, _fam_bezier_far_control_linear),
+        "bezier_large_linear": (BL, _fam_bezier_large_linear),
+        "piece_near_plane": (LR3, _fam_piece_near_plane),
+    }
+)
 # arcs: the circle families applied to arcs (arc_<base>: the base family's cases with
 # their arcs cut from circles, _arc_variant), then the arcs' own
-for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", "coplanar", "concentric",
-              "near_concentric", "far_origin", "radius_ratio", "near_touching", "parallel_height", "huge_circle"):
+for _base in (
+    "random",
+    "tangent",
+    "axis",
+    "shadow_center",
+    "piece_near_plane",
+    "coplanar",
+    "concentric",
+    "near_concentric",
+    "far_origin",
+    "radius_ratio",
+    "near_touching",
+    "parallel_height",
+    "huge_circle",
+):
     FAMILIES["arc_" + _base] = (_arc_pairs(FAMILIES[_base][0]), _arc_variant(_base))
-FAMILIES.update({
-    "arc_ends": (ARC_PAIRS, _fam_arc_ends),
-    "arc_end_on_axis": (ARC_RR, _fam_arc_end_on_axis),
-    "arc_spans": (ARC_RR, _fam_arc_spans),
-    "arc_angles": (ARC_PAIRS, _fam_arc_angles),
-    "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
-})
+FAMILIES.update(
+    {
+        "arc_ends": (ARC_PAIRS, _fam_arc_ends),
+        "arc_end_on_axis": (ARC_RR, _fam_arc_end_on_axis),
+        "arc_spans": (ARC_RR, _fam_arc_spans),
+        "arc_angles": (ARC_PAIRS, _fam_arc_angles),
+        "arc_far_translated": (ARC_PAIRS, _fam_arc_far_translated),
+    }
+)
 # annuli: the disk families applied to annuli (ann_<base>: the base family's cases with
 # their annuli holed from disks and their arcs cut from circles, _ann_variant), then the annuli's own
-for _base in ("random", "tangent", "axis", "shadow_center", "piece_near_plane", "coplanar", "concentric",
-              "near_concentric", "far_origin", "radius_ratio", "near_touching", "parallel_height", "huge_circle"):
+for _base in (
+    "random",
+    "tangent",
+    "axis",
+    "shadow_center",
+    "piece_near_plane",
+    "coplanar",
+    "concentric",
+    "near_concentric",
+    "far_origin",
+    "radius_ratio",
+    "near_touching",
+    "parallel_height",
+    "huge_circle",
+):
     FAMILIES["ann_" + _base] = (_ann_pairs(FAMILIES[_base][0]), _ann_variant(_base))
-FAMILIES.update({
-    "ann_hole": (ANN_PAIRS, _fam_ann_hole),
-    "ann_overlap": (ANN_RR, _fam_ann_overlap),
-    "ann_degenerate": (ANN_PAIRS, _fam_ann_degenerate),
-    "ann_inner_tangent": (ANN_PAIRS, _fam_ann_inner_tangent),
-    "ann_far_translated": (ANN_PAIRS, _fam_ann_far_translated),
-})
+FAMILIES.update(
+    {
+        "ann_hole": (ANN_PAIRS, _fam_ann_hole),
+        "ann_overlap": (ANN_RR, _fam_ann_overlap),
+        "ann_degenerate": (ANN_PAIRS, _fam_ann_degenerate),
+        "ann_inner_tangent": (ANN_PAIRS, _fam_ann_inner_tangent),
+        "ann_far_translated": (ANN_PAIRS, _fam_ann_far_translated),
+    }
+)
 # every kind pair: within() / intersects() / distance_if_within() / Scene.within /
 # Scene.pairs_within against their definition on degenerate small-integer configurations
 FAMILIES["effect_degenerate"] = (KIND_PAIRS, _fam_effect_degenerate)
@@ -215,8 +303,7 @@ def has_round(family):
     """Whether a family's kind pairs include a circle or disk (the sixteen first families and piece_near_plane) or
     not (the pairs among points, lines, rays and segments and Bezier curves against them); the
     arc families (is_arc) and the annulus families (is_annulus) count as neither."""
-    return not is_arc(family) and not is_annulus(family) and any(set(ROUND) & set(pair)
-                                                                 for pair in FAMILIES[family][0])
+    return not is_arc(family) and not is_annulus(family) and any(set(ROUND) & set(pair) for pair in FAMILIES[family][0])
 
 
 def is_arc(family):
@@ -236,8 +323,7 @@ def generate_one(family, seed, i):
     ka, kb = fam_pairs[i % len(fam_pairs)]
     rng = np.random.default_rng([seed, list(FAMILIES).index(family), i])
     a, b = gen(rng, ka, kb)
-    return {"family": family, "id": f"{family}/{seed}/{i}", "a": ka, "a_data": _plain(a), "b": kb,
-            "b_data": _plain(b)}
+    return {"family": family, "id": f"{family}/{seed}/{i}", "a": ka, "a_data": _plain(a), "b": kb, "b_data": _plain(b)}
 
 
 def generate(family, n, seed, start=0):
@@ -253,10 +339,12 @@ def case_from_id(case_id):
 
 def to_float32_case(case):
     """The case with every input rounded to float32 (the scene a float32 query describes)."""
+
     def r(data):
         if data and isinstance(data[0], list):
             return [[float(np.float32(x)) for x in p] for p in data]
         return [float(np.float32(x)) for x in data]
+
     out = dict(case)
     out["a_data"], out["b_data"] = r(case["a_data"]), r(case["b_data"])
     return out
@@ -273,7 +361,8 @@ def bar_scale(case):
     the one the pairs' own 50-digit accuracy tests hold the library to: for two points / lines /
     rays / segments 1e-12 x the query's size (reference_linear.bar_scale: the answers are held to
     their own size, however far the origins and ends lie; only distances twelve orders below the
-    query, pieces that touch within the inputs' rounding, fall back to that floor); for a Bezier curve against one of them the largest length in the query, the
+    query, pieces that touch within the inputs' rounding, fall back to that floor); for a Bezier curve
+    against one of them the largest length in the query, the
     control polygon's extent and a segment's length (reference_round.bezier_other_scale, as
     tests/pairs/test_bezier_point_linear.py).  Both are translation invariant; points a hair apart
     (zero-length segments) are held to the distance between them."""
@@ -283,8 +372,9 @@ def bar_scale(case):
     key = _key(case)
     if key not in _SCALE_CACHE:
         if ka == "bezier":
-            _SCALE_CACHE[key] = _load("reference_round").bezier_other_scale(case["a_data"], kb,
-                                                                           *_piece_points(kb, case["b_data"]))
+            _SCALE_CACHE[key] = _load("reference_round").bezier_other_scale(
+                case["a_data"], kb, *_piece_points(kb, case["b_data"])
+            )
         else:
             _SCALE_CACHE[key] = _load("reference_linear").bar_scale(ka, case["a_data"], kb, case["b_data"])
     return _SCALE_CACHE[key]

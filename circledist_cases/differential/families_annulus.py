@@ -7,9 +7,7 @@ import math
 import numpy as np
 
 from .base import ANN_PAIRS, FAMILIES, _plain
-from .frames import (
-    EZ, _Frame, _elevate, _in_plane, _logu, _npts, _perp, _radius, _rot, _tangent_round, _tiny,
-    _unit)
+from .frames import EZ, _Frame, _elevate, _in_plane, _logu, _npts, _perp, _radius, _rot, _tangent_round, _tiny, _unit
 from .families_round import _fam_far_translated
 from .families_arc import _arc_of
 
@@ -52,6 +50,7 @@ def _hole(rng, disk, holes=_HOLES):
 def _ann_variant(base, holes=_HOLES):
     """The generator of an annulus family: the base family's case (annuli drawn as disks, arcs as
     circles), its arcs cut (_arc_of) and its annuli holed (_hole)."""
+
     def gen(rng, ka, kb):
         bka, bkb = _ann_base_kind(ka), _ann_base_kind(kb)
         a, b = FAMILIES[base][1](rng, bka, bkb)
@@ -61,6 +60,7 @@ def _ann_variant(base, holes=_HOLES):
         if ka == "annulus":
             a = _hole(rng, a, holes)
         return a, _hole(rng, b, holes)
+
     return gen
 
 
@@ -154,8 +154,11 @@ def _fam_ann_degenerate(rng, ka, kb):
     """Annuli of inner radius 0 (the disk's answers, to the bit: _check_hole), equal to the outer
     one (the circle's) or 1e-9 of it, over the random, tangent, axis, coplanar, concentric and
     nearly touching cases."""
-    bases = [f for f in ("random", "tangent", "axis", "coplanar", "concentric", "near_touching")
-             if (ka, kb) in _ann_pairs(FAMILIES[f][0])]
+    bases = [
+        f
+        for f in ("random", "tangent", "axis", "coplanar", "concentric", "near_touching")
+        if (ka, kb) in _ann_pairs(FAMILIES[f][0])
+    ]
     return _ann_variant(str(rng.choice(bases)), holes=("zero", "outer", "tiny"))(rng, ka, kb)
 
 
@@ -178,13 +181,16 @@ def _fam_ann_inner_tangent(rng, ka, kb):
         Y = X + h * r
         if ka == "bezier":
             L = Ri * rng.uniform(0.3, 2)
-            delta = -r * Ri * rng.uniform(0.05, 0.5)        # bulging into the hole
+            delta = -r * Ri * rng.uniform(0.05, 0.5)  # bulging into the hole
             ctrl = _elevate([Y - L * d - delta, Y + delta, Y + L * d - delta], max(3, _npts(rng)))
             return fr.bezier(ctrl), b
         return fr.linear(ka, Y, d, Ri), b
     phi = float(rng.choice([0.0, math.pi / 2, rng.uniform(0, 2 * math.pi)]))
-    Rc = Ri * (float(rng.choice([0.25, 0.5])) if ex else float(rng.uniform(0.1, 0.9))) if phi == 0.0 else \
-        _radius(rng, ex) * Ri
+    Rc = (
+        Ri * (float(rng.choice([0.25, 0.5])) if ex else float(rng.uniform(0.1, 0.9)))
+        if phi == 0.0
+        else _radius(rng, ex) * Ri
+    )
     c, n, w = _tangent_round(rng, Ri, Rc, ex, phi=phi)
     a = fr.round(c + h * w, n, Rc)
     if ka == "arc":
@@ -194,8 +200,18 @@ def _fam_ann_inner_tangent(rng, ka, kb):
     return a, b
 
 
-_ANN_TRANSLATED_BASES = ("ann_random", "ann_tangent", "ann_axis", "ann_coplanar", "ann_concentric",
-                         "ann_near_touching", "ann_parallel_height", "ann_hole", "ann_overlap", "ann_inner_tangent")
+_ANN_TRANSLATED_BASES = (
+    "ann_random",
+    "ann_tangent",
+    "ann_axis",
+    "ann_coplanar",
+    "ann_concentric",
+    "ann_near_touching",
+    "ann_parallel_height",
+    "ann_hole",
+    "ann_overlap",
+    "ann_inner_tangent",
+)
 
 
 def _fam_ann_far_translated(rng, ka, kb):

@@ -36,7 +36,7 @@ def _arc_angle(rng, extreme=False):
         return _logu(rng, -12, -3)
     if k == 6:
         return 2 * math.pi - _logu(rng, -12, -3)
-    return 2 * math.pi      # the library takes angles in (0, 2 pi]
+    return 2 * math.pi  # the library takes angles in (0, 2 pi]
 
 
 def _unit_normal(data):
@@ -70,8 +70,10 @@ def _feature(circle, kind, data):
     if kind == "bezier":
         # (a Bezier curve: the nearest of 401 of its points, relative to the circle's centre)
         t = np.linspace(0, 1, 401)
-        P = sum(math.comb(len(data) - 1, i) * (t ** i * (1 - t) ** (len(data) - 1 - i))[:, None] * (np.asarray(q) - C)
-                for i, q in enumerate(data))
+        P = sum(
+            math.comb(len(data) - 1, i) * (t**i * (1 - t) ** (len(data) - 1 - i))[:, None] * (np.asarray(q) - C)
+            for i, q in enumerate(data)
+        )
         rel = np.zeros(3)
 
         def dist(w):
@@ -146,6 +148,7 @@ def _arc_base_kind(kind):
 
 def _arc_variant(base, modes=_SPAN_MODES, extreme=False):
     """The generator of an arc family: the base family's case, its arcs cut from circles."""
+
     def gen(rng, ka, kb):
         a, b = FAMILIES[base][1](rng, _arc_base_kind(ka), _arc_base_kind(kb))
         a, b = _plain(a), _plain(b)
@@ -153,14 +156,17 @@ def _arc_variant(base, modes=_SPAN_MODES, extreme=False):
         a2 = _arc_of(rng, a, kinds[1], b, modes, extreme) if ka == "arc" else a
         b2 = _arc_of(rng, b, kinds[0], a, modes, extreme) if kb == "arc" else b
         return a2, b2
+
     return gen
 
 
 def _arc_pairs(base_pairs):
     """The arc pairs whose circle version (arcs drawn as circles) the base family covers."""
+
     def covered(k):
         kk = _arc_base_kind(k)
         return (kk, "circle") in base_pairs or ("circle", kk) in base_pairs
+
     return [p for p in ARC_PAIRS if covered(p[0])]
 
 
@@ -184,13 +190,13 @@ def _fam_arc_spans(rng, ka, kb):
     angle_a = float(rng.choice([0.5, 1.0, 1.5])) * math.pi if ex else _arc_angle(rng)
     how = str(rng.choice(["touch_end", "touch_start", "overlap", "disjoint"]))
     # a's start s_a, its points at s_a rotated about na by [0, angle_a]
-    if how == "touch_end":          # a starts where b ends
+    if how == "touch_end":  # a starts where b ends
         s_a = b_end
-    elif how == "touch_start":      # a ends where b starts
+    elif how == "touch_start":  # a ends where b starts
         s_a = _rot(r, na, -angle_a)
     elif how == "overlap":
         s_a = _rot(r, nb, rng.uniform(0, min(angle_b, 2 * math.pi)))
-    else:                           # starting after b's end, ending before b's start (if it can)
+    else:  # starting after b's end, ending before b's start (if it can)
         gap = max(2 * math.pi - angle_b, 0.0)
         s_a = _rot(b_end, nb, gap * rng.uniform(0.1, 0.9))
         angle_a = min(angle_a, gap * rng.uniform(0.05, 0.5)) if gap > 0 else angle_a
@@ -198,8 +204,18 @@ def _fam_arc_spans(rng, ka, kb):
     return fr.round(np.zeros(3), na, Ra) + fr.dirv(s_a) + [angle_a], b
 
 
-_ARC_TRANSLATED_BASES = ("arc_random", "arc_tangent", "arc_ends", "arc_coplanar", "arc_concentric", "arc_axis",
-                         "arc_near_touching", "arc_spans", "arc_angles", "arc_end_on_axis")
+_ARC_TRANSLATED_BASES = (
+    "arc_random",
+    "arc_tangent",
+    "arc_ends",
+    "arc_coplanar",
+    "arc_concentric",
+    "arc_axis",
+    "arc_near_touching",
+    "arc_spans",
+    "arc_angles",
+    "arc_end_on_axis",
+)
 
 
 def _fam_arc_far_translated(rng, ka, kb):
@@ -210,8 +226,11 @@ def _fam_arc_ends(rng, ka, kb):
     """An arc end (theta = 0 or theta = angle) exactly at, or 1e-16..1e-6 rad beside, the
     circle's point nearest the other shape (or the other round's axis), over the tangent,
     coplanar, random and (rounds) nearly touching cases."""
-    bases = [f for f in ("tangent", "coplanar", "random", "near_touching", "shadow_center", "concentric")
-             if (ka, kb) in _arc_pairs(FAMILIES[f][0])]
+    bases = [
+        f
+        for f in ("tangent", "coplanar", "random", "near_touching", "shadow_center", "concentric")
+        if (ka, kb) in _arc_pairs(FAMILIES[f][0])
+    ]
     return _arc_variant(str(rng.choice(bases)), modes=("start", "end"))(rng, ka, kb)
 
 
@@ -241,6 +260,7 @@ def _fam_arc_end_on_axis(rng, ka, kb):
 def _fam_arc_angles(rng, ka, kb):
     """Tiny angles (1e-12..1e-3 rad), 2 pi - (1e-12..1e-3), float64's 2 pi exactly and above
     (the whole circle, which must answer as the circle: check_cases compares them to the bit)."""
-    bases = [f for f in ("random", "tangent", "coplanar", "axis", "near_touching")
-             if (ka, kb) in _arc_pairs(FAMILIES[f][0])]
+    bases = [
+        f for f in ("random", "tangent", "coplanar", "axis", "near_touching") if (ka, kb) in _arc_pairs(FAMILIES[f][0])
+    ]
     return _arc_variant(str(rng.choice(bases)), extreme=True)(rng, ka, kb)

@@ -8,8 +8,7 @@ import math
 
 import numpy as np
 
-from .frames import (
-    EZ, _Frame, _bezier_through, _elevate, _logu, _npts, _perp, _radius, _rot, _tiny, _unit)
+from .frames import EZ, _Frame, _bezier_through, _elevate, _logu, _npts, _perp, _radius, _rot, _tiny, _unit
 from .families_round import _fam_far_translated, _far_piece
 
 
@@ -68,7 +67,7 @@ def _fam_linear_far_origin(rng, ka, kb):
         X_a, d_a, X_b, d_b = _parallel_pair(rng, False, S)
     else:
         X_a, d_a, X_b, d_b = rng.normal(size=3) * S, _unit(rng), rng.normal(size=3) * S, _unit(rng)
-    which = int(rng.integers(0, 3))       # far: a, b or both
+    which = int(rng.integers(0, 3))  # far: a, b or both
     a = _far_piece(rng, fr, ka, X_a, d_a, S) if which != 1 else fr.linear(ka, X_a, d_a, S)
     b = _far_piece(rng, fr, kb, X_b, d_b, S) if which != 0 else fr.linear(kb, X_b, d_b, S)
     return a, b
@@ -81,13 +80,13 @@ def _fam_zero_length(rng, ka, kb):
     S = _size(rng, fr.exact)
     P = np.zeros(3)
     h = _tiny(rng, -16, 0, 0.3) * S
-    Q = P + h * (EZ if fr.exact else _unit(rng))      # the other piece passes through Q
+    Q = P + h * (EZ if fr.exact else _unit(rng))  # the other piece passes through Q
     zero = fr.pos(P)
     if ka == "bezier":
         return fr.bezier(_bezier_through(rng, Q, S, _npts(rng))), zero + zero
-    if ka == "segment" and rng.random() < 0.5:        # both zero-length
+    if ka == "segment" and rng.random() < 0.5:  # both zero-length
         return fr.pos(Q) + fr.pos(Q), zero + zero
-    if ka == "segment":                                # the first one zero-length, the other not
+    if ka == "segment":  # the first one zero-length, the other not
         return zero + zero, fr.linear(kb, Q, EX if fr.exact else _unit(rng), S)
     return fr.linear(ka, Q, EX if fr.exact else _unit(rng), S), zero + zero
 
@@ -98,9 +97,9 @@ def _fam_on_piece(rng, ka, kb):
     piece's closest point (the piece leaving it at a right or an oblique angle)."""
     fr = _Frame(rng)
     S = _size(rng, fr.exact)
-    b = fr.linear(kb, np.zeros(3), EX, S)              # b along local x through 0
+    b = fr.linear(kb, np.zeros(3), EX, S)  # b along local x through 0
     c = fr.param(-1, 1) * S
-    if kb == "segment" and rng.random() < 0.3:        # at b's end
+    if kb == "segment" and rng.random() < 0.3:  # at b's end
         c = float(np.dot(np.asarray(b[3:6]) - fr.C, fr.Q[:, 0])) if fr.exact else c
     h = 0.0 if rng.random() < 0.5 else _tiny(rng, -16, -6, 0) * S
     E = c * EX + h * EZ
@@ -122,7 +121,7 @@ def _fam_bezier_tangent_line(rng, ka, kb):
     fr = _Frame(rng)
     S = _size(rng, fr.exact)
     h = _tiny(rng, -16, -4, 0.4) * S
-    if rng.random() < 0.6:       # the apex of a symmetric arch (degree-elevated): tangent EX at X = 0
+    if rng.random() < 0.6:  # the apex of a symmetric arch (degree-elevated): tangent EX at X = 0
         L = S * rng.uniform(0.3, 2)
         delta = EY * S * rng.uniform(0.05, 1)
         ctrl = _elevate([-L * EX + delta, -delta, L * EX + delta], max(3, _npts(rng)))
@@ -162,13 +161,22 @@ def _fam_bezier_large_linear(rng, ka, kb):
     S = _size(rng, False)
     d = _unit(rng)
     b = fr.linear(kb, np.zeros(3), d, S)
-    X = [rng.uniform(0, 1) * S * d, rng.uniform(0, 1) * S * d + _tiny(rng, -14, -6) * S * _perp(rng, d),
-         rng.normal(size=3) * 2 * S][int(rng.integers(0, 3))]
+    X = [
+        rng.uniform(0, 1) * S * d,
+        rng.uniform(0, 1) * S * d + _tiny(rng, -14, -6) * S * _perp(rng, d),
+        rng.normal(size=3) * 2 * S,
+    ][int(rng.integers(0, 3))]
     return fr.bezier(_bezier_through(rng, X, _logu(rng, 2, 5) * S, _npts(rng))), b
 
 
-_LINEAR_TRANSLATED_BASES = ("linear_random", "near_parallel", "zero_length", "on_piece", "bezier_tangent_line",
-                            "bezier_crossing")
+_LINEAR_TRANSLATED_BASES = (
+    "linear_random",
+    "near_parallel",
+    "zero_length",
+    "on_piece",
+    "bezier_tangent_line",
+    "bezier_crossing",
+)
 
 
 def _fam_linear_far_translated(rng, ka, kb):

@@ -8,8 +8,20 @@ import numpy as np
 
 from .base import FAMILIES, ROUND
 from .frames import (
-    EZ, _Frame, _bezier_through, _elevate, _in_plane, _logu, _npts, _perp, _radius, _rot,
-    _tangent_round, _tiny, _unit)
+    EZ,
+    _Frame,
+    _bezier_through,
+    _elevate,
+    _in_plane,
+    _logu,
+    _npts,
+    _perp,
+    _radius,
+    _rot,
+    _tangent_round,
+    _tiny,
+    _unit,
+)
 
 
 # ---- families --------------------------------------------------------------------------------
@@ -55,14 +67,14 @@ def _fam_tangent(rng, ka, kb):
     mode = int(rng.integers(0, 4 if kb == "disk" else 3))
     if ka == "point":
         return fr.pos(X + h * (_unit(rng) if not ex else r)), b
-    if mode == 0:                               # in-plane tangent, moved radially by h
+    if mode == 0:  # in-plane tangent, moved radially by h
         X, d = X + h * r, t
-    elif mode == 1:                             # tangent, lifted by |h|
+    elif mode == 1:  # tangent, lifted by |h|
         X, d = X + abs(h) * EZ, t
-    elif mode == 2:                             # through the rim point, orthogonal to the radius
+    elif mode == 2:  # through the rim point, orthogonal to the radius
         psi = rng.uniform(0.1, 1.4)
         X, d = X + h * r, math.cos(psi) * t + math.sin(psi) * EZ
-    else:                                       # touching the disk's face from above
+    else:  # touching the disk's face from above
         X = r * Rb * fr.param(0, 0.875) + abs(h) * EZ
         d = t
     if ka == "bezier":
@@ -86,9 +98,15 @@ def _fam_axis(rng, ka, kb):
     R = _radius(rng, ex)
     b = fr.round(np.zeros(3), EZ, R)
     kind = rng.choice(_RHO_CHOICES)
-    rho = {"zero": 0.0, "R": R, "R(1+e)": R * (1 + _tiny(rng, -16, -8, 0)),
-           "inside": R * rng.uniform(0, 1), "outside": R * rng.uniform(1, 3),
-           "tiny": R * _logu(rng, -12, -3), "huge": R * _logu(rng, 0, 3)}[kind]
+    rho = {
+        "zero": 0.0,
+        "R": R,
+        "R(1+e)": R * (1 + _tiny(rng, -16, -8, 0)),
+        "inside": R * rng.uniform(0, 1),
+        "outside": R * rng.uniform(1, 3),
+        "tiny": R * _logu(rng, -12, -3),
+        "huge": R * _logu(rng, 0, 3),
+    }[kind]
     beta = 0.0 if ex else rng.uniform(0, 2 * math.pi)
     X = np.array([rho * math.cos(beta), rho * math.sin(beta), 0.0])
     if ka == "point":
@@ -181,8 +199,11 @@ def _fam_concentric(rng, ka, kb, offset=0.0):
         ctrl = half[: npts // 2] + ([np.zeros(3)] if npts % 2 else []) + [-p for p in reversed(half[: npts // 2])]
         return fr.bezier([p + off for p in ctrl]), b
     n, psi = _tilted_normal(rng, ex)
-    d = _rot(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), -psi) if ex else \
-        math.cos(psi) * _perp(rng, EZ) + math.sin(psi) * EZ
+    d = (
+        _rot(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), -psi)
+        if ex
+        else math.cos(psi) * _perp(rng, EZ) + math.sin(psi) * EZ
+    )
     d = d / np.linalg.norm(d)
     return fr.linear(ka, off - np.dot(off, d) * d, d, Rb), b
 
@@ -270,16 +291,16 @@ def _fam_radius_ratio(rng, ka, kb):
         big, small = max(Ra, Rb), min(Ra, Rb)
         mode = int(rng.integers(0, 3))
         nb = _unit(rng)
-        if mode == 0:       # the small one near the big one's rim
+        if mode == 0:  # the small one near the big one's rim
             if Rb > Ra:
                 u = _perp(rng, nb)
                 cb = -Rb * u + small * rng.normal(size=3) * 2
             else:
                 r, _ = _in_plane(rng, False)
                 cb = Ra * r + small * rng.normal(size=3) * 2
-        elif mode == 1:     # near the big one's centre
+        elif mode == 1:  # near the big one's centre
             cb = small * rng.normal(size=3) * 2
-        else:               # anywhere at the big one's scale
+        else:  # anywhere at the big one's scale
             cb = big * rng.normal(size=3)
         return fr.round(np.zeros(3), EZ, Ra), fr.round(cb, nb, Rb)
     R = ratio * (1.0 if rng.random() < 0.5 else rng.uniform(0.5, 2))
@@ -328,9 +349,12 @@ def _fam_parallel_height(rng, ka, kb):
     h = _tiny(rng, -16, -6, 0.15) * Rb
     r, _ = _in_plane(rng, ex)
     where = rng.choice(["centre", "inside", "rim", "outside"])
-    off = {"centre": 0.0, "inside": rng.uniform(0, 1) * abs(Rb - Ra),
-           "rim": Rb + rng.choice([-1.0, 1.0]) * Ra + _tiny(rng, -14, -6) * Rb,
-           "outside": Rb + Ra + rng.uniform(0, 2) * Rb}[where]
+    off = {
+        "centre": 0.0,
+        "inside": rng.uniform(0, 1) * abs(Rb - Ra),
+        "rim": Rb + rng.choice([-1.0, 1.0]) * Ra + _tiny(rng, -14, -6) * Rb,
+        "outside": Rb + Ra + rng.uniform(0, 2) * Rb,
+    }[where]
     n = EZ * float(rng.choice([-1.0, 1.0]))
     return fr.round(off * r + h * EZ, n, Ra), B
 
@@ -341,8 +365,9 @@ def _fam_bezier_large(rng, ka, kb):
     R = _radius(rng, False)
     b = fr.round(np.zeros(3), EZ, R)
     r, t = _in_plane(rng, False)
-    X = [R * r, R * r * rng.uniform(0, 1) + _tiny(rng, -14, -6) * R * EZ, rng.normal(size=3) * 2 * R,
-         np.zeros(3)][int(rng.integers(0, 4))]
+    X = [R * r, R * r * rng.uniform(0, 1) + _tiny(rng, -14, -6) * R * EZ, rng.normal(size=3) * 2 * R, np.zeros(3)][
+        int(rng.integers(0, 4))
+    ]
     size = _logu(rng, 2, 5) * R
     return fr.bezier(_bezier_through(rng, X, size, _npts(rng))), b
 
@@ -379,8 +404,12 @@ def _fam_huge_circle(rng, ka, kb):
     r, t = _in_plane(rng, False)
     mode = int(rng.integers(0, 4))
     g = _tiny(rng, -12, 0, 0.3) * r_small
-    X = [r_small * r + g * _unit(rng), r * r_small * rng.uniform(0, 1) + abs(g) * EZ,
-         rng.normal(size=3) * 2 * r_small, g * _unit(rng)][mode]
+    X = [
+        r_small * r + g * _unit(rng),
+        r * r_small * rng.uniform(0, 1) + abs(g) * EZ,
+        rng.normal(size=3) * 2 * r_small,
+        g * _unit(rng),
+    ][mode]
     nh = _unit(rng)
     uh = _perp(rng, nh)
     huge = fr.round(X - Rh * uh, nh, Rh)

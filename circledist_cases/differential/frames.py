@@ -22,8 +22,7 @@ def _perp(rng, n):
 def _rot(v, axis, angle):
     """v rotated about the unit axis by angle (Rodrigues)."""
     v, axis = np.asarray(v, float), np.asarray(axis, float)
-    return (v * math.cos(angle) + np.cross(axis, v) * math.sin(angle)
-            + axis * np.dot(axis, v) * (1 - math.cos(angle)))
+    return v * math.cos(angle) + np.cross(axis, v) * math.sin(angle) + axis * np.dot(axis, v) * (1 - math.cos(angle))
 
 
 def _logu(rng, lo, hi):
@@ -53,7 +52,7 @@ class _Frame:
             signs = rng.choice([-1.0, 1.0], 3)
             M = np.zeros((3, 3))
             M[np.arange(3), perm] = signs
-            self.Q = M.T                       # columns U, V, N
+            self.Q = M.T  # columns U, V, N
             self.C = rng.integers(-8, 9, 3) / 4.0 * scale
             self.nlen = 2.0 ** int(rng.integers(-3, 4))
         else:
@@ -113,7 +112,7 @@ def _elevate(ctrl, k_total):
     rounding)."""
     P = [np.asarray(p, float) for p in ctrl]
     while len(P) < k_total:
-        k = len(P)        # degree k-1 -> k
+        k = len(P)  # degree k-1 -> k
         Q = [P[0]]
         for i in range(1, k):
             Q.append(i / k * P[i - 1] + (1 - i / k) * P[i])
@@ -127,7 +126,7 @@ def _bezier_through(rng, X, size, npts, t0=None):
     P = [X + size * rng.normal(size=3) for _ in range(npts)]
     t0 = rng.uniform(0.1, 0.9) if t0 is None else t0
     k = npts - 1
-    B = sum(math.comb(k, i) * t0 ** i * (1 - t0) ** (k - i) * P[i] for i in range(npts))
+    B = sum(math.comb(k, i) * t0**i * (1 - t0) ** (k - i) * P[i] for i in range(npts))
     return [p + (X - B) for p in P]
 
 

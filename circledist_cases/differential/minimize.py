@@ -106,12 +106,12 @@ def _beam(form, lo, hi, beam, levels, K, dtype, start=None):
 # its axis: the scale on which the distance to the round can have distinct local minima, see
 # reference_round._feature_scale), and hands EVERY sampled local minimum (the ZOOM_KEEP lowest
 # per case) to the long-double stage, each refined on its own.
-ZOOM_FRACTION = 8     # resolution: max(R, rho) / this
-ZOOM_SPLIT = 8        # pieces per split interval and pass
-ZOOM_PASSES = 24      # 8^24: from a grid step to ~1e-22 of it
-ZOOM_CAP = 2048       # intervals split per case and pass (lowest bounds first; reached only by
-                      # curves with a control point 1e6+ away, which the value-driven beam covers)
-ZOOM_KEEP = 6         # sampled local minima per case refined in long double
+ZOOM_FRACTION = 8  # resolution: max(R, rho) / this
+ZOOM_SPLIT = 8  # pieces per split interval and pass
+ZOOM_PASSES = 24  # 8^24: from a grid step to ~1e-22 of it
+ZOOM_CAP = 2048  # intervals split per case and pass (lowest bounds first; reached only by
+# curves with a control point 1e6+ away, which the value-driven beam covers)
+ZOOM_KEEP = 6  # sampled local minima per case refined in long double
 
 
 def _zoom(form, lo, hi, lip, R):
@@ -170,7 +170,7 @@ def _zoom(form, lo, hi, lip, R):
         fa, fb = FF[:, :-1].ravel(), FF[:, 1:].ravel()
         ra, rb = RR[:, :-1].ravel(), RR[:, 1:].ravel()
     c, a, b, fa, fb, lb = (np.concatenate(v) for v in zip(*done))
-    live = lb <= best[c]       # the best sample kept falling: drop what it now excludes
+    live = lb <= best[c]  # the best sample kept falling: drop what it now excludes
     c, a, b, fa, fb = (v[live] for v in (c, a, b, fa, fb))
     # the samples (both ends of the intervals kept), in order per case, each with its step
     h = b - a
@@ -182,7 +182,7 @@ def _zoom(form, lo, hi, lip, R):
     first = np.ones(len(cc), dtype=bool)
     first[1:] = (cc[1:] != cc[:-1]) | (xx[1:] != xx[:-1])
     starts = np.flatnonzero(first)
-    hh = np.maximum.reduceat(hh, starts)      # a sample between a fine and a coarse interval: both sides
+    hh = np.maximum.reduceat(hh, starts)  # a sample between a fine and a coarse interval: both sides
     cc, xx, ff = cc[starts], xx[starts], ff[starts]
     # sampled local minima; a run of equal samples counts once (strict on the right); at the ends
     # of a case's samples the neighbour is the other end (periodic) or nothing
@@ -200,7 +200,7 @@ def _zoom(form, lo, hi, lip, R):
     lm = (ff <= fprev) & (ff < fnext)
     has = np.zeros(n, dtype=bool)
     has[cc[lm]] = True
-    lm |= ~has[cc] & (ff == best[cc])           # a flat case: its best sample
+    lm |= ~has[cc] & (ff == best[cc])  # a flat case: its best sample
     cc, xx, ff, hh = cc[lm], xx[lm], ff[lm], hh[lm]
     order = np.lexsort((ff, cc))
     cc, xx, ff, hh = cc[order], xx[order], ff[order], hh[order]
@@ -299,7 +299,7 @@ def _lipschitz(dP, a, b):
     out = 0
     for i in range(k):
         t = np.clip(i / (k - 1), a, b)
-        out = out + dP[:, i:i + 1] * (math.comb(k - 1, i) * t ** i * (1 - t) ** (k - 1 - i))
+        out = out + dP[:, i : i + 1] * (math.comb(k - 1, i) * t**i * (1 - t) ** (k - 1 - i))
     return k * out * (1 + 1e-9)
 
 
@@ -315,18 +315,18 @@ def _minimize_bezier(form, ctrl_dd, target, res, ld_levels=30, K=8):
     n = ctrl_dd[0].shape[0]
     lo, hi = np.zeros(n), np.full(n, 0.5)
     P64 = ctrl_dd[0] + ctrl_dd[1]
-    dP = np.linalg.norm(np.diff(P64, axis=1), axis=2)                   # (n, k) hodograph norms
+    dP = np.linalg.norm(np.diff(P64, axis=1), axis=2)  # (n, k) hodograph norms
     # two searches: a value-driven beam (follows the sampled minima: curves with a far control
     # point, whose Lipschitz bound is useless away from the ends) and the zoom (keeps every local
     # minimum: curves much larger than the round)
     # (several crossings of a rim by a curve in a plane just above it are near-ties: the beam is
     # wider, and keeps its three best)
     vb, xb, bcentres, bvals = _beam(form, lo, hi, 8, 14, K, np.float64)
-    (zc, zx, zh, _), _ = _zoom(form, lo, hi, lambda c, a, b: _lipschitz(dP[c], a[:, None], b[:, None])[:, 0],
-                               np.asarray(res, dtype=float))
+    (zc, zx, zh, _), _ = _zoom(
+        form, lo, hi, lambda c, a, b: _lipschitz(dP[c], a[:, None], b[:, None])[:, 0], np.asarray(res, dtype=float)
+    )
     border = np.argsort(bvals, axis=1, kind="stable")
-    beam_x = [xb] + [np.take_along_axis(bcentres, border[:, q:q + 1], 1)[:, 0] for q in (1, 2)
-                     if q < border.shape[1]]
+    beam_x = [xb] + [np.take_along_axis(bcentres, border[:, q : q + 1], 1)[:, 0] for q in (1, 2) if q < border.shape[1]]
     cc = np.concatenate([zc] + [np.arange(n)] * len(beam_x))
     tc = np.concatenate([zx] + beam_x)
     hw = np.concatenate([np.maximum(zh, 5e-8)] + [np.full(n, 5e-8)] * len(beam_x))
@@ -334,10 +334,19 @@ def _minimize_bezier(form, ctrl_dd, target, res, ld_levels=30, K=8):
     b = np.minimum(tc + hw, 0.5)
     Q = _sub_bezier_dd((ctrl_dd[0][cc], ctrl_dd[1][cc]), a, b)
     m = len(cc)
-    sub = _Form(form.name, "bezier", form.target, _P(ctrl=Q, **{k: v[cc] for k, v in target.items()}), np.zeros(m),
-                np.ones(m), False, _S_GRID)
-    vv, uu, _, _ = _beam(sub, np.zeros(m, dtype=LD), np.ones(m, dtype=LD), 2, ld_levels, K, LD,
-                         start=(np.zeros((m, 1)), np.ones((m, 1))))
+    sub = _Form(
+        form.name,
+        "bezier",
+        form.target,
+        _P(ctrl=Q, **{k: v[cc] for k, v in target.items()}),
+        np.zeros(m),
+        np.ones(m),
+        False,
+        _S_GRID,
+    )
+    vv, uu, _, _ = _beam(
+        sub, np.zeros(m, dtype=LD), np.ones(m, dtype=LD), 2, ld_levels, K, LD, start=(np.zeros((m, 1)), np.ones((m, 1)))
+    )
     # the candidate itself (a sampled end point can be the best point seen)
     u0 = ((tc - a) / np.where(b > a, b - a, 1)).astype(LD)
     v0 = sub.f(u0[:, None])[:, 0]

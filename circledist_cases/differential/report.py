@@ -30,8 +30,10 @@ def _ctor_text(kind, data, f32):
     def vec(v):
         body = ", ".join(_lit(x) for x in v)
         return f"np.array([{body}], np.float32)" if f32 else f"[{body}]"
+
     def scal(x):
         return f"np.float32({_lit(x)})" if f32 else _lit(x)
+
     if kind == "bezier":
         rows = ", ".join("[" + ", ".join(_lit(x) for x in p) + "]" for p in data)
         return f"cd.Bezier(np.array([{rows}]{', np.float32' if f32 else ''}))"
@@ -53,9 +55,11 @@ def reproducer(f):
     f32 = f["precision"] == "float32"
     ka, kb = f["kinds"]
     kw = f'solver="{f["solver"]}", precision="{f["precision"]}"'
-    lines = ["import numpy as np, circledist as cd",
-             f"a = {_ctor_text(ka, f['a_data'], f32)}",
-             f"b = {_ctor_text(kb, f['b_data'], f32)}"]
+    lines = [
+        "import numpy as np, circledist as cd",
+        f"a = {_ctor_text(ka, f['a_data'], f32)}",
+        f"b = {_ctor_text(kb, f['b_data'], f32)}",
+    ]
     check = f["check"]
     if check in ("within", "within_vs_inaccurate_distance"):
         lines.append(f"print(repr(cd.distance(a, b, {kw})))   # library {f.get('library')}")
@@ -69,12 +73,33 @@ def reproducer(f):
         lines.append(f"r = cd.closest_points(a, b, {kw})")
         lines.append("print(repr(r.distance), r.point_a, r.point_b)")
     else:
-        entry = "closest_points(a, b, %s).distance" % kw if f.get("entry") == "closest_points" else \
-            "distance(a, b, %s)" % kw
+        entry = (
+            "closest_points(a, b, %s).distance" % kw
+            if f.get("entry") == "closest_points"
+            else "distance(a, b, %s)" % kw
+        )
         lines.append(f"print(repr(cd.{entry}))")
-    note = {k: f[k] for k in ("library", "reference", "reference_screen", "error", "screen", "problems", "ab", "ba",
-                              "off_a", "off_b", "allowed", "separation", "distance", "closest_points", "error")
-            if k in f}
+    note = {
+        k: f[k]
+        for k in (
+            "library",
+            "reference",
+            "reference_screen",
+            "error",
+            "screen",
+            "problems",
+            "ab",
+            "ba",
+            "off_a",
+            "off_b",
+            "allowed",
+            "separation",
+            "distance",
+            "closest_points",
+            "error",
+        )
+        if k in f
+    }
     lines.append("# " + ", ".join(f"{k}={v}" for k, v in note.items()))
     return "\n".join(lines)
 
@@ -106,15 +131,31 @@ def reference_check(cd, cases, combo_list=None, stats=None):
             best = ref
             scale_ = max(float(ref), bar_scale(c))
             if scr_mp is not None and scr_mp < ref - R.mpf(MISS_REL) * R.mpf(max(scale_, 1e-300)):
-                diags.append(dict(case_id=case["id"], family=case["family"], pair=f"{case['a']}-{case['b']}",
-                                  problem="reference missed the minimum", reference=float(ref),
-                                  screen_mp=float(scr_mp), float32=f32))
+                diags.append(
+                    dict(
+                        case_id=case["id"],
+                        family=case["family"],
+                        pair=f"{case['a']}-{case['b']}",
+                        problem="reference missed the minimum",
+                        reference=float(ref),
+                        screen_mp=float(scr_mp),
+                        float32=f32,
+                    )
+                )
                 best = scr_mp
             tol = (BARS["float32"] if f32 else 1e-15) * scale_ + float(scr.slack[0])
             if float(scr.value[0]) > float(best) + tol:
-                diags.append(dict(case_id=case["id"], family=case["family"], pair=f"{case['a']}-{case['b']}",
-                                  problem="screen bound above the reference", reference=float(best),
-                                  screen=float(scr.value[0]), float32=f32))
+                diags.append(
+                    dict(
+                        case_id=case["id"],
+                        family=case["family"],
+                        pair=f"{case['a']}-{case['b']}",
+                        problem="screen bound above the reference",
+                        reference=float(best),
+                        screen=float(scr.value[0]),
+                        float32=f32,
+                    )
+                )
             sa = make_shape(cd, c["a"], c["a_data"], np.float32 if f32 else np.float64)
             sb = make_shape(cd, c["b"], c["b_data"], np.float32 if f32 else np.float64)
             uexp, rule = expected_unique(c), "exact"
@@ -136,16 +177,33 @@ def reference_check(cd, cases, combo_list=None, stats=None):
                         if entry == "closest_points" and uexp[0] is not None:
                             counts[f"{c['a']}-{c['b']} {uexp[0]} ({rule})"] += 1
                         if entry == "closest_points" and uexp[0] is not None and bool(v.unique) != uexp[0]:
-                            f = _finding("unique", c, solver, precision, order, entry, library=bool(v.unique),
-                                         expected=uexp[0], why=uexp[1] + " (direct)")
+                            f = _finding(
+                                "unique",
+                                c,
+                                solver,
+                                precision,
+                                order,
+                                entry,
+                                library=bool(v.unique),
+                                expected=uexp[0],
+                                why=uexp[1] + " (direct)",
+                            )
                             f["confirmed"] = True
                             findings.append(f)
                         v = v if entry == "distance" else v.distance
                         e = abs(_mp_num(_jsonable(np.longdouble(v)) if precision == "longdouble" else float(v)) - best)
                         if e > bar:
-                            f = _finding("reference", c, solver, precision, order, entry, library=np.longdouble(v)
-                                         if precision == "longdouble" else float(v), reference=float(best),
-                                         error=float(e) / scale_)
+                            f = _finding(
+                                "reference",
+                                c,
+                                solver,
+                                precision,
+                                order,
+                                entry,
+                                library=np.longdouble(v) if precision == "longdouble" else float(v),
+                                reference=float(best),
+                                error=float(e) / scale_,
+                            )
                             f["confirmed"] = True
                             findings.append(f)
     return findings, diags

@@ -27,7 +27,7 @@ def residuals(kind, data, pts, params=None):
         s = 1 - t
         w, mag = 0, 0
         for i in range(k + 1):
-            b = math.comb(k, i) * t ** i * s ** (k - i)
+            b = math.comb(k, i) * t**i * s ** (k - i)
             d = _pt_minus(P, ctrl[:, i, :])
             w = w + b[:, None] * d
             mag = mag + b * _nrm(d)
@@ -36,7 +36,7 @@ def residuals(kind, data, pts, params=None):
     data = np.asarray(data, dtype=float)
     if kind in RIMS:
         parts = _rim_parts(kind, data)
-        n, tgt = parts["n"], parts["target"]
+        tgt = parts["target"]
         w = _pt_minus(P, data[:, :3])
         R = data[:, 6].astype(LD)
         d = _tdist(w[:, None], tgt, kind)[:, 0]
@@ -46,8 +46,13 @@ def residuals(kind, data, pts, params=None):
     if kind == "point":
         return _nrm(w), 16 * LD(EPSLD) * _nrm(w)
     tgt = _linear_target(kind, data, C0)
-    d = _lin_dist(w[:, None] - tgt["tb0"][:, None], tgt["tm"][:, None], tgt["tmm"][:, None],
-                  tgt["tlo"][:, None], tgt["thi"][:, None])[:, 0]
+    d = _lin_dist(
+        w[:, None] - tgt["tb0"][:, None],
+        tgt["tm"][:, None],
+        tgt["tmm"][:, None],
+        tgt["tlo"][:, None],
+        tgt["thi"][:, None],
+    )[:, 0]
     return d, 16 * LD(EPSLD) * (_nrm(w) + _nrm(tgt["tb0"]))
 
 

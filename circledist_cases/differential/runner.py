@@ -34,7 +34,8 @@ def check_effects_definition(cd, cases, sweeps=EFFECT_SWEEPS, scenes=True):
     EFFECT_PROBES and D -+ 4x the tolerance, batched and scalar, the shapes plain and swept
     (each by every value of `sweeps`); and the scene's paths to the same test:
     Scene.within(shape, d), Scene.within(name, d) and Scene.pairs_within(d) on a scene of the two
-    shapes (unless `scenes` is False). float64, the default solver (the bounds are the same for every policy; check_cases
+    shapes (unless `scenes` is False). float64, the default solver (the bounds are the same for every policy;
+    check_cases
     probes the limits for every combination). Returns findings ("effect_definition"), confirmed as
     they stand (no reference: the rule is consistency between entry points)."""
     findings = []
@@ -60,33 +61,47 @@ def check_effects_definition(cd, cases, sweeps=EFFECT_SWEEPS, scenes=True):
                         b = np.asarray(cd.distance_if_within(x, y, d))
                         got_b = np.where(want, D, np.inf)
                         for j in np.flatnonzero(clear & ((w != want) | ~_eq(b, got_b))):
-                            findings.append(_effect_finding(group[j], order, sa, sb, "within", D[j], d[j],
-                                                            bool(w[j]), float(b[j])))
+                            findings.append(
+                                _effect_finding(group[j], order, sa, sb, "within", D[j], d[j], bool(w[j]), float(b[j]))
+                            )
                     it = np.asarray(cd.intersects(x, y))
                     w0 = np.asarray(cd.within(x, y, np.zeros_like(D)))
                     for j in np.flatnonzero(it != w0):
-                        findings.append(_effect_finding(group[j], order, sa, sb, "intersects", D[j], 0.0,
-                                                        bool(it[j]), None))
+                        findings.append(
+                            _effect_finding(group[j], order, sa, sb, "intersects", D[j], 0.0, bool(it[j]), None)
+                        )
                     for d in (0.5 * D, D + band):  # scalar calls give the batch's answers
                         w = np.asarray(cd.within(x, y, d))
                         for j in range(len(group)):
                             ws = bool(cd.within(x[j], y[j], float(d[j])))
                             if ws != bool(w[j]):
-                                findings.append(_effect_finding(group[j], order, sa, sb, "scalar within", D[j], d[j],
-                                                                ws, None))
+                                findings.append(
+                                    _effect_finding(group[j], order, sa, sb, "scalar within", D[j], d[j], ws, None)
+                                )
                     if order == "ba" or not scenes:
                         continue
                     for j in range(len(group)):
-                        findings += _check_scene_effects(cd, group[j], SA[j], SB[j], sa, sb, float(D[j]),
-                                                         float(s[j]), float(band[j]))
+                        findings += _check_scene_effects(
+                            cd, group[j], SA[j], SB[j], sa, sb, float(D[j]), float(s[j]), float(band[j])
+                        )
     for f in findings:
         f["confirmed"] = True
     return findings
 
 
 def _effect_finding(case, order, sa, sb, entry, D, d, got, got_distance):
-    f = _finding("effect_definition", case, "default", "float64", order, entry, library=float(D), d=float(d),
-                 answer=got, sweeps=[float(sa), float(sb)])
+    f = _finding(
+        "effect_definition",
+        case,
+        "default",
+        "float64",
+        order,
+        entry,
+        library=float(D),
+        d=float(d),
+        answer=got,
+        sweeps=[float(sa), float(sb)],
+    )
     if got_distance is not None:
         f["distance_if_within"] = got_distance
     return f
@@ -103,9 +118,11 @@ def _check_scene_effects(cd, case, a, b, sa, sb, D, s, band):
         if abs(D - d) <= band / 2:
             continue
         want = D <= d + 64 * EPS64 * (s + d)
-        got = {"Scene.within(shape)": ("b" in scene.within(a, d)) == want,
-               "Scene.within(name)": scene.within("a", d) == (["b"] if want else []),
-               "Scene.pairs_within": scene.pairs_within(d) == ([("a", "b")] if want else [])}
+        got = {
+            "Scene.within(shape)": ("b" in scene.within(a, d)) == want,
+            "Scene.within(name)": scene.within("a", d) == (["b"] if want else []),
+            "Scene.pairs_within": scene.pairs_within(d) == ([("a", "b")] if want else []),
+        }
         for entry, ok in got.items():
             if not ok:
                 out.append(_effect_finding(case, "ab", sa, sb, entry, D, d, not want, None))

@@ -23,7 +23,8 @@ sampled local minimum it leaves is refined in long double on its own, the least 
 near-tied minima (5.9e-13 apart on a curve 2e4 long, below float64's resolution there) are
 both refined, not one chosen by a float64 ranking.  Bezier curves' long-double stage works
 on pieces around each candidate whose control points are computed in double-double (a curve
-1e5 times larger than the round is resolved to ~1e-19 of the round).  Coordinates are taken relative to the round's centre;
+1e5 times larger than the round is resolved to ~1e-19 of the round).  Coordinates are taken relative to the
+round's centre;
 offsets between inputs (B - C, p1 - p0, P_i - C) and the anchoring of a line at its point
 nearest the centre are computed in double-double, so far-translated scenes and far line
 origins lose nothing.  Every value is the distance between two genuine points (up to the
@@ -45,8 +46,26 @@ import numpy as np
 
 from .base import EPS64, EPSLD, LD, LINEAR
 from .closed_forms import (
-    _Form, _P, _S_GRID, _THETA_GRID, _T_GRID, _cross, _dd_add, _dd_div, _dd_dot, _dd_mul, _dd_neg,
-    _diff_ld, _dot, _ld, _ld_frame, _lin_dist, _nrm, _tdist, _two_sum)
+    _Form,
+    _P,
+    _S_GRID,
+    _THETA_GRID,
+    _T_GRID,
+    _cross,
+    _dd_add,
+    _dd_div,
+    _dd_dot,
+    _dd_mul,
+    _dd_neg,
+    _diff_ld,
+    _dot,
+    _ld,
+    _ld_frame,
+    _lin_dist,
+    _nrm,
+    _tdist,
+    _two_sum,
+)
 from .minimize import _beam, _minimize, _minimize_bezier
 
 
@@ -77,8 +96,10 @@ def _anchor(kind, data, C, dd=False):
     safe = (np.where(ok, mm[0], 1.0), np.where(ok, mm[1], 0.0))
     tc = _dd_neg(_dd_div(bm, safe))
     tc = (np.where(ok, tc[0], 0.0), np.where(ok, tc[1], 0.0))
-    b0 = tuple(np.stack(c, axis=1) for c in zip(*[
-        _dd_add((b[0][:, i], b[1][:, i]), _dd_mul(tc, (m[0][:, i], m[1][:, i]))) for i in range(3)]))
+    b0 = tuple(
+        np.stack(c, axis=1)
+        for c in zip(*[_dd_add((b[0][:, i], b[1][:, i]), _dd_mul(tc, (m[0][:, i], m[1][:, i]))) for i in range(3)])
+    )
     lo_raw = {"line": -np.inf, "ray": 0.0, "segment": 0.0}[kind]
     hi_raw = {"line": np.inf, "ray": np.inf, "segment": 1.0}[kind]
     tcl = _ld(tc)
@@ -131,11 +152,30 @@ def _rim_parts(kind, data):
         target.update(Rin=Rin)
         width = data[:, 6] - data[:, 7]
         feat = np.min(np.where(np.stack([data[:, 7], width]) > 0, np.stack([data[:, 7], width]), np.inf), axis=0)
-        return dict(n=n, U=U, V=V, R=Rl, inner=Rin, feature=np.minimum(data[:, 6], feat), hi=np.full(m, 2 * math.pi),
-                    periodic=True, grid=_THETA_GRID, target=target)
+        return dict(
+            n=n,
+            U=U,
+            V=V,
+            R=Rl,
+            inner=Rin,
+            feature=np.minimum(data[:, 6], feat),
+            hi=np.full(m, 2 * math.pi),
+            periodic=True,
+            grid=_THETA_GRID,
+            target=target,
+        )
     if kind != "arc":
-        return dict(n=n, U=U, V=V, R=Rl, hi=np.full(m, 2 * math.pi), periodic=True, grid=_THETA_GRID,
-                    target=target, feature=data[:, 6])
+        return dict(
+            n=n,
+            U=U,
+            V=V,
+            R=Rl,
+            hi=np.full(m, 2 * math.pi),
+            periodic=True,
+            grid=_THETA_GRID,
+            target=target,
+            feature=data[:, 6],
+        )
     S = data[:, 7:10].astype(LD)
     S = S / np.max(np.abs(S), axis=1, keepdims=True)
     u = S - _dot(S, n)[:, None] * n
@@ -144,8 +184,17 @@ def _rim_parts(kind, data):
     ang = data[:, 10]
     whole = ang >= 2 * math.pi
     target.update(tu=u, tv=v, tang=ang.astype(LD), twhole=whole.astype(float))
-    return dict(n=n, U=u, V=v, R=Rl, hi=np.where(whole, 2 * math.pi, ang), periodic=False, grid=_S_GRID,
-                target=target, feature=data[:, 6])
+    return dict(
+        n=n,
+        U=u,
+        V=v,
+        R=Rl,
+        hi=np.where(whole, 2 * math.pi, ang),
+        periodic=False,
+        grid=_S_GRID,
+        target=target,
+        feature=data[:, 6],
+    )
 
 
 class ScreenResult:
@@ -172,7 +221,7 @@ def _screen(cases, use_ld):
     B = _stack(cases, "b_data")
     Cb, Rb = B[:, :3], B[:, 6]
     rb = _rim_parts(kb, B)
-    nb, Ub, Vb, Rbl, tb = rb["n"], rb["U"], rb["V"], rb["R"], rb["target"]
+    Ub, Vb, Rbl, tb = rb["U"], rb["V"], rb["R"], rb["target"]
     forms = []
     if ka == "point":
         A = _stack(cases, "a_data")
@@ -204,15 +253,14 @@ def _screen(cases, use_ld):
         # the control points reversed): parameters near an end keep their full relative precision,
         # which a curve with a control point 1e12 away needs (there 1 ulp of t near 1 moves the
         # point by 1e-4)
-        ctrl = np.array([c["a_data"] for c in cases], dtype=float)       # (n, K, 3)
-        rel_dd = _two_sum(ctrl, -Cb[:, None, :])                          # exact
+        ctrl = np.array([c["a_data"] for c in cases], dtype=float)  # (n, K, 3)
+        rel_dd = _two_sum(ctrl, -Cb[:, None, :])  # exact
         best = np.full(n, LD(np.inf), dtype=LD)
         names, params = [None] * n, [None] * n
         slack = np.zeros(n)
         for name, order in (("bezier|round", slice(None)), ("bezier_reversed|round", slice(None, None, -1))):
             dd = (rel_dd[0][:, order, :].copy(), rel_dd[1][:, order, :].copy())
-            form = _Form(name, "bezier", kb, _P(ctrl=_ld(dd), **tb), np.zeros(n), np.full(n, 0.5), False,
-                         _T_GRID)
+            form = _Form(name, "bezier", kb, _P(ctrl=_ld(dd), **tb), np.zeros(n), np.full(n, 0.5), False, _T_GRID)
             # (always refined in long double: a float32 scene of a curve 1e5 times larger than the
             # round needs it for the float32 bar too)
             v, a, b, u, mag = _minimize_bezier(form, dd, tb, rb["feature"].astype(LD))
@@ -249,8 +297,9 @@ def _screen(cases, use_ld):
     slack = np.zeros(n)
     for fi, form in enumerate(forms):
         lip, R = zooms[fi] or (None, None)
-        v, x = _minimize(form, np.asarray(form.lo, dtype=LD), np.asarray(form.hi, dtype=LD), use_ld=use_ld,
-                         lip=lip, R=R)
+        v, x = _minimize(
+            form, np.asarray(form.lo, dtype=LD), np.asarray(form.hi, dtype=LD), use_ld=use_ld, lip=lip, R=R
+        )
         better = v < best
         best = np.where(better, v, best)
         best_x = np.where(better, x, best_x)
@@ -264,8 +313,8 @@ def _screen(cases, use_ld):
 
 
 # ---- pairs without a round: linear pieces among themselves, Bezier curves against them ---------
-_SINH_SPAN = LD(1e22)    # the line parameter's window: S0 = r / (|m| _SINH_SPAN) .. r _SINH_SPAN / |m|
-LINEAR_PASSES = 5        # re-anchored searches of a linear pair (see _screen_linear)
+_SINH_SPAN = LD(1e22)  # the line parameter's window: S0 = r / (|m| _SINH_SPAN) .. r _SINH_SPAN / |m|
+LINEAR_PASSES = 5  # re-anchored searches of a linear pair (see _screen_linear)
 
 
 def _segment_extent(tgt):
@@ -294,8 +343,9 @@ def _screen_linear(cases, use_ld):
     if ka == "point":
         tgt = _linear_target(kb, B, A[:, :3])
         w = -tgt["tb0"]
-        v = _lin_dist(w[:, None], tgt["tm"][:, None], tgt["tmm"][:, None], tgt["tlo"][:, None],
-                      tgt["thi"][:, None])[:, 0]
+        v = _lin_dist(w[:, None], tgt["tm"][:, None], tgt["tmm"][:, None], tgt["tlo"][:, None], tgt["thi"][:, None])[
+            :, 0
+        ]
         slack = (eps * _nrm(w)).astype(float) + _anchor_error(kb, B, A[:, :3])
         return ScreenResult(v, slack, ["point|linear"] * n, [LD(0)] * n)
     C = B[:, :3].copy()
@@ -326,7 +376,7 @@ def _anchor_error(kind, data, C):
     off = np.linalg.norm(data[:, :3] - C, axis=1)
     if kind == "segment":
         off = off + np.linalg.norm(data[:, 3:6] - C, axis=1)
-    return 2.0 ** -100 * off
+    return 2.0**-100 * off
 
 
 def _dd_vec(v, i):
@@ -354,12 +404,20 @@ def _perp_parts(ka, kb, A, B, C):
     def perp(v):
         k = _dd_div(_dd_dot(v, u), uu_safe)
         k = (np.where(ok, k[0], 0.0), np.where(ok, k[1], 0.0))
-        return tuple(np.stack(c, axis=1) for c in zip(*[
-            _dd_add(_dd_vec(v, i), _dd_neg(_dd_mul(k, _dd_vec(u, i)))) for i in range(3)]))
+        return tuple(
+            np.stack(c, axis=1)
+            for c in zip(*[_dd_add(_dd_vec(v, i), _dd_neg(_dd_mul(k, _dd_vec(u, i)))) for i in range(3)])
+        )
+
     c_dd = _dd_vsub(b0_dd, tb0_dd)
     tgt = dict(tb0=tb0, tm=tm, tmm=np.sum(tm * tm, axis=1), tlo=tlo, thi=thi)
-    extra = dict(cperp=_ld(perp(c_dd)), mperp=_ld(perp(m_dd)), cu=_ld(_dd_dot(c_dd, u)), mu=_ld(_dd_dot(m_dd, u)),
-                 uu=_ld(uu_safe))
+    extra = dict(
+        cperp=_ld(perp(c_dd)),
+        mperp=_ld(perp(m_dd)),
+        cu=_ld(_dd_dot(c_dd, u)),
+        mu=_ld(_dd_dot(m_dd, u)),
+        uu=_ld(uu_safe),
+    )
     return b0, m, lo, hi, tgt, extra
 
 
@@ -375,8 +433,9 @@ def _linear_pass(ka, kb, A, B, C):
     Smax = S0 * _SINH_SPAN * _SINH_SPAN
     xlo = np.where(ok, np.arcsinh(np.maximum(lo, -Smax) / S0), LD(0))
     xhi = np.where(ok, np.arcsinh(np.minimum(hi, Smax) / S0), LD(0))
-    form = _Form("line|linear", "line", "linear", _P(b0=b0, m=m, S0=S0, slo=lo, shi=hi, **tgt, **extra), xlo, xhi,
-                 False, _S_GRID)
+    form = _Form(
+        "line|linear", "line", "linear", _P(b0=b0, m=m, S0=S0, slo=lo, shi=hi, **tgt, **extra), xlo, xhi, False, _S_GRID
+    )
     v, x, _, _ = _beam(form, xlo, xhi, 3, 40, 8, LD)
     mag = form.magnitude(x)
     s = form.line_s(x, form.p.ld)
@@ -386,8 +445,7 @@ def _linear_pass(ka, kb, A, B, C):
     x0 = np.minimum(np.maximum(LD(0), xlo), xhi)
     v0, mag0 = form.f(x0[:, None])[:, 0], form.magnitude(x0)
     take0 = v0 + eps * mag0 <= v + eps * mag
-    return (np.where(take0, v0, v), np.where(take0, mag0, mag), np.where(take0, form.line_s(x0, form.p.ld), s),
-            nxt)
+    return (np.where(take0, v0, v), np.where(take0, mag0, mag), np.where(take0, form.line_s(x0, form.p.ld), s), nxt)
 
 
 def _bezier_eval64(ctrl, t):
@@ -407,7 +465,7 @@ def _screen_bezier_linear(cases):
     in double-double, the control points taken relative to it exactly."""
     kb = cases[0]["b"]
     n = len(cases)
-    ctrl = np.array([c["a_data"] for c in cases], dtype=float)        # (n, K, 3)
+    ctrl = np.array([c["a_data"] for c in cases], dtype=float)  # (n, K, 3)
     B = _stack(cases, "b_data")
     ext = np.max(np.linalg.norm(ctrl - ctrl[:, :1], axis=2), axis=1)
     if kb == "segment":

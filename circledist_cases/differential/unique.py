@@ -70,8 +70,7 @@ def _fr(v):
 
 
 def _fcross_zero(a, b):
-    return (a[1] * b[2] - a[2] * b[1] == 0 and a[2] * b[0] - a[0] * b[2] == 0
-            and a[0] * b[1] - a[1] * b[0] == 0)
+    return a[1] * b[2] - a[2] * b[1] == 0 and a[2] * b[0] - a[0] * b[2] == 0 and a[0] * b[1] - a[1] * b[0] == 0
 
 
 def _fsub(a, b):
@@ -139,7 +138,7 @@ def _point_round_unique(p, kind, data):
         return True if far - near > margin else None
     if rho > 0 and (phi <= ang or abs(phi - ang) < 1e-9 or abs(phi - 2 * math.pi) < 1e-9):
         if abs(phi - ang) < 1e-9 or phi < 1e-9 or abs(phi - 2 * math.pi) < 1e-9:
-            return None          # the point's angle at an end: the in-span point is the end
+            return None  # the point's angle at an end: the in-span point is the end
         cands = sorted([near] + ends)
     else:
         cands = sorted(ends)
@@ -181,9 +180,11 @@ def _expected_unique(case):
         u = _point_round_unique(a[:3], kb, b)
         return (u, "point against a round, closed form") if u else (None, "")
     if ka in LINEAR and kb in LINEAR:
+
         def direction(kind, d):
             m = _np(d[3:6]) - (_np(d[:3]) if kind == "segment" else 0)
             return m
+
         ma, mb = direction(ka, a), direction(kb, b)
         na, nb = np.linalg.norm(ma), np.linalg.norm(mb)
         if na == 0 or nb == 0:

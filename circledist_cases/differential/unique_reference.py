@@ -15,9 +15,9 @@ from .check import _call, _finding, make_shape
 from .confirm import _CURVE_MINIMA, _REF_CACHE, ann_shape, mp_reference
 
 
-REF_UNIQUE_REL = "1e-6"      # the second-best distinct local minimum must be worse by this x max(d, scale)
-REF_UNIQUE_RISE = "1e-12"    # and the minimum not flat: d(x* +- 1e-4) - d > this x max(d, scale)
-REF_UNIQUE_STEP = "1e-4"     # that step: in radians of a rim, in t of a Bezier curve
+REF_UNIQUE_REL = "1e-6"  # the second-best distinct local minimum must be worse by this x max(d, scale)
+REF_UNIQUE_RISE = "1e-12"  # and the minimum not flat: d(x* +- 1e-4) - d > this x max(d, scale)
+REF_UNIQUE_STEP = "1e-4"  # that step: in radians of a rim, in t of a Bezier curve
 _CONVEX = ("point", "line", "ray", "segment", "disk")
 
 
@@ -202,8 +202,16 @@ def reference_unique(case):
             mp_reference(case)
         minima = [R.LocalMin(v, t, None) for v, t in _CURVE_MINIMA[key]]
     else:
-        minima = R.minimize_1d(f, R.mpf(0), hi, intervals, periodic=periodic, lipschitz=lipschitz,
-                               resolution=resolution, max_samples=A.ZOOM_SAMPLES)
+        minima = R.minimize_1d(
+            f,
+            R.mpf(0),
+            hi,
+            intervals,
+            periodic=periodic,
+            lipschitz=lipschitz,
+            resolution=resolution,
+            max_samples=A.ZOOM_SAMPLES,
+        )
     if not minima:
         return None, ""
     best = minima[0]
@@ -222,16 +230,27 @@ def reference_unique(case):
     else:
         # clamped to the range: a minimum at an end rises on its inner side only; one short of an
         # end must rise towards it too (the end itself, at most delta away, is that side)
-        sides = [min(best.x + delta, hi) if best.x < hi else None, max(best.x - delta, R.mpf(0)) if best.x > 0 else None]
+        sides = [
+            min(best.x + delta, hi) if best.x < hi else None,
+            max(best.x - delta, R.mpf(0)) if best.x > 0 else None,
+        ]
         sides = [x for x in sides if x is not None]
     if not sides or any(f(x) - best.value <= R.mpf(REF_UNIQUE_RISE) * scale for x in sides):
         return None, ""
     if not _target_point_unique(at(best.x), tk, td, R.mpf(REF_UNIQUE_REL) * scale):
         return None, ""
-    name = {"circle": "the circle's angle", "arc": "the arc's angle", "bezier": "the curve's t",
-            "line": "the line", "ray": "the ray", "segment": "the segment"}[mk]
-    return True, (f"the 50-digit minimum over {name} of the distance to the {tk} is single and strict, "
-                  f"and the {tk}'s nearest point to it unique")
+    name = {
+        "circle": "the circle's angle",
+        "arc": "the arc's angle",
+        "bezier": "the curve's t",
+        "line": "the line",
+        "ray": "the ray",
+        "segment": "the segment",
+    }[mk]
+    return True, (
+        f"the 50-digit minimum over {name} of the distance to the {tk} is single and strict, "
+        f"and the {tk}'s nearest point to it unique"
+    )
 
 
 def unique_direct_check(cd, cases, combo_list=None, stats=None):
@@ -261,8 +280,18 @@ def unique_direct_check(cd, cases, combo_list=None, stats=None):
                     continue
                 counts[f"{c['a']}-{c['b']} {uexp[0]} (reference)"] += 1
                 if bool(v.unique) != uexp[0]:
-                    f = _finding("unique", c, solver, precision, order, "closest_points", library=bool(v.unique),
-                                 expected=uexp[0], why=uexp[1] + " (direct)", distance=v.distance)
+                    f = _finding(
+                        "unique",
+                        c,
+                        solver,
+                        precision,
+                        order,
+                        "closest_points",
+                        library=bool(v.unique),
+                        expected=uexp[0],
+                        why=uexp[1] + " (direct)",
+                        distance=v.distance,
+                    )
                     f["confirmed"] = True
                     findings.append(f)
     return findings

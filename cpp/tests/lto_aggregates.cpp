@@ -17,15 +17,14 @@ namespace lto_aggregates {
 
 int main() {
   using circledist::Vec3;
-  const double control[8][3] = {
-      {-2.0892587450569873, 2.407541006404772, 1.6559357922531128},
-      {-0.7682818082689475, 3.201689679637363, 2.843953743712082},
-      {-2.7971639421593295, 0.06532446873506648, 3.154375450024067},
-      {-2.468835853700635, 1.3175213782935564, 1.1268604308324832},
-      {0.46883585370063474, 0.18247862170644358, 1.3731395691675168},
-      {0.7971639421593293, 1.4346755312649335, -0.6543754500240666},
-      {-1.2317181917310525, -1.7016896796373628, -0.3439537437120823},
-      {0.08925874505698728, -0.907541006404772, 0.8440642077468873}};
+  const double control[8][3] = {{-2.0892587450569873, 2.407541006404772, 1.6559357922531128},
+                                {-0.7682818082689475, 3.201689679637363, 2.843953743712082},
+                                {-2.7971639421593295, 0.06532446873506648, 3.154375450024067},
+                                {-2.468835853700635, 1.3175213782935564, 1.1268604308324832},
+                                {0.46883585370063474, 0.18247862170644358, 1.3731395691675168},
+                                {0.7971639421593293, 1.4346755312649335, -0.6543754500240666},
+                                {-1.2317181917310525, -1.7016896796373628, -0.3439537437120823},
+                                {0.08925874505698728, -0.907541006404772, 0.8440642077468873}};
   circledist::BezierCurve3<double> curve;
   curve.control.resize(3, 8);
   for (int i = 0; i < 8; ++i) curve.control.col(i) = Vec3<double>(control[i][0], control[i][1], control[i][2]);
@@ -34,8 +33,8 @@ int main() {
   const double companion = circledist::distance<circledist::EigenCompanion>(curve, circle);
   const double eigen = circledist::distance<circledist::EigenPolynomialSolver>(curve, circle);
   const double bracketing = circledist::distance<circledist::Bracketing>(curve, circle);
-  std::printf("EigenCompanion %.17g, EigenPolynomialSolver %.17g, Bracketing %.17g (truth %.17g)\n", companion,
-              eigen, bracketing, truth);
+  std::printf("EigenCompanion %.17g, EigenPolynomialSolver %.17g, Bracketing %.17g (truth %.17g)\n", companion, eigen,
+              bracketing, truth);
   CHECK(std::abs(companion - truth) <= bar);
   CHECK(std::abs(eigen - truth) <= bar);
   CHECK(std::abs(bracketing - truth) <= bar);

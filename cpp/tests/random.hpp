@@ -22,7 +22,8 @@ struct Random {
   // A direction of length 0.1 to sqrt(3), not normalized (queries take any nonzero length).
   V direction() {
     V v;
-    do v = vector(1); while (v.norm() < 0.1);
+    do v = vector(1);
+    while (v.norm() < 0.1);
     return v;
   }
 

@@ -126,7 +126,8 @@ struct Truth {
   LD value(LD x) const {
     LD v = lead;
     for (LD r : real) v *= x - r;
-    for (size_t k = 0; k < cplx.size(); k += 2) v *= (x - cplx[k].real()) * (x - cplx[k].real()) + cplx[k].imag() * cplx[k].imag();
+    for (size_t k = 0; k < cplx.size(); k += 2)
+      v *= (x - cplx[k].real()) * (x - cplx[k].real()) + cplx[k].imag() * cplx[k].imag();
     return v;
   }
 };
@@ -194,11 +195,11 @@ template <class Real> const char* precision_name() { return std::is_same_v<Real,
 template <class Real> struct Problem {
   std::string label;
   Truth truth;
-  std::vector<Real> c;    // ascending; c.size() - 1 is the degree passed
-  std::vector<LD> extra;  // absolute perturbations beyond rounding: the leading terms trimming drops
-  int kept = 0;           // the degree after the documented trimming (trimmed_degree)
-  bool exact = true;      // c is exactly the truth's polynomial
-  std::vector<LD> w_cw, w_em;                          // allowed perturbations (see the header)
+  std::vector<Real> c;         // ascending; c.size() - 1 is the degree passed
+  std::vector<LD> extra;       // absolute perturbations beyond rounding: the leading terms trimming drops
+  int kept = 0;                // the degree after the documented trimming (trimmed_degree)
+  bool exact = true;           // c is exactly the truth's polynomial
+  std::vector<LD> w_cw, w_em;  // allowed perturbations (see the header)
   std::vector<LD> cw_real, cw_cplx, em_real, em_cplx;  // Rouche radii for them
   std::vector<LD> rho;  // Rouche radii for the rounding alone: where the given polynomial's root is
   bool valid = true;
@@ -278,7 +279,8 @@ template <class Real> Problem<Real> problem(const std::string& label, const Trut
 }
 
 // The truth's polynomial with leading coefficients appended that the trimming must drop.
-template <class Real> Problem<Real> with_dropped_lead(const std::string& label, const Truth& t, const std::vector<Real>& lead) {
+template <class Real>
+Problem<Real> with_dropped_lead(const std::string& label, const Truth& t, const std::vector<Real>& lead) {
   Problem<Real> p;
   p.label = label;
   p.truth = t;
@@ -304,11 +306,11 @@ template <class P> constexpr bool is_counted_v = !std::is_same_v<unwrap_t<P>, P>
 // roots() and roots_in(): the coefficientwise bar and values inside the region only.
 template <class P> constexpr bool accurate_v = has_accurate_roots<P>::value;
 // bracketed_root() refined by Halley to 2 eps (roots.hpp).
-template <class P>
-constexpr bool refined_bracket_v = std::is_same_v<unwrap_t<P>, Bracketing> || std::is_same_v<unwrap_t<P>, EigenPolished>;
+template <class P> constexpr bool refined_bracket_v =
+    std::is_same_v<unwrap_t<P>, Bracketing> || std::is_same_v<unwrap_t<P>, EigenPolished>;
 // EigenCompanion::roots (and so EigenPolished) yields nothing for a degree beyond Capacity - 8.
-template <class P>
-constexpr bool companion_capacity_v = std::is_same_v<unwrap_t<P>, EigenCompanion> || std::is_same_v<unwrap_t<P>, EigenPolished>;
+template <class P> constexpr bool companion_capacity_v =
+    std::is_same_v<unwrap_t<P>, EigenCompanion> || std::is_same_v<unwrap_t<P>, EigenPolished>;
 
 template <class P> std::string policy_name() {
   using I = unwrap_t<P>;
@@ -349,7 +351,8 @@ struct Region {
 };
 
 template <class Real> void print_problem(const Problem<Real>& p) {
-  std::printf("    polynomial %s, degree %d (%d after trimming), coefficients (ascending):", p.label.c_str(), p.degree(), p.kept);
+  std::printf("    polynomial %s, degree %d (%d after trimming), coefficients (ascending):", p.label.c_str(),
+              p.degree(), p.kept);
   for (Real v : p.c) std::printf(" %.21Lg", LD(v));
   std::printf("\n    true real roots (bar coefficientwise / companion):");
   for (size_t i = 0; i < p.truth.real.size(); ++i)
@@ -383,9 +386,9 @@ template <class Real> bool required(const Problem<Real>& p, bool region_only, si
   return false;
 }
 
-template <class P, class Real, int Cap>
-void check_candidates(const std::string& call, const Problem<Real>& p, const Region& region, const Candidates<Real, Cap>& out,
-                      int first = 0) {
+template <class P, class Real, int Cap> void check_candidates(const std::string& call, const Problem<Real>& p,
+                                                              const Region& region, const Candidates<Real, Cap>& out,
+                                                              int first = 0) {
   const bool cw = accurate_v<P>;
   const auto& br = cw ? p.cw_real : p.em_real;
   bool found_every_root = true, no_spurious_root = true, all_inside = true;
@@ -465,17 +468,17 @@ template <class P, class Real> void check_roots_in(const Problem<Real>& p, const
 // bracketed_root on [lo, hi] around `root` (index into truth.real), p oriented by `sign` so that
 // p(lo) <= 0 <= p(hi); p_lo and p_hi from the factored form (the closed form a caller has).
 // With `lo_exact`, p(lo) is 0 and the answer must be lo itself.
-template <class P, class Real>
-void check_bracketed(const std::string& label, const Problem<Real>& p, Real lo, Real hi, size_t root, Real sign,
-                     bool lo_exact = false, Real p_lo_override = 1) {
+template <class P, class Real> void check_bracketed(const std::string& label, const Problem<Real>& p, Real lo, Real hi,
+                                                    size_t root, Real sign, bool lo_exact = false,
+                                                    Real p_lo_override = 1) {
   std::vector<Real> c = p.c;
   for (Real& v : c) v *= sign;
   const Real p_lo = p_lo_override <= 0 ? p_lo_override : Real(sign * p.truth.value(lo));
   const Real p_hi = Real(sign * p.truth.value(hi));
   const bool valid_bracket = p_lo <= 0 && p_hi >= 0 && lo <= hi;
   if (!valid_bracket)
-    std::printf("test setup: bracket %s [%.21Lg, %.21Lg] with p_lo %Lg, p_hi %Lg in %s\n", label.c_str(), LD(lo), LD(hi), LD(p_lo),
-                LD(p_hi), precision_name<Real>());
+    std::printf("test setup: bracket %s [%.21Lg, %.21Lg] with p_lo %Lg, p_hi %Lg in %s\n", label.c_str(), LD(lo),
+                LD(hi), LD(p_lo), LD(p_hi), precision_name<Real>());
   CHECK(valid_bracket);  // the test's own setup
   const SolveCount<P> solves;
   const Real x = P::bracketed_root(c.data(), p.degree(), lo, hi, p_lo, p_hi);
@@ -484,9 +487,10 @@ void check_bracketed(const std::string& label, const Problem<Real>& p, Real lo, 
   const bool inside_bracket = x >= lo && x <= hi;
   const bool near_root = lo_exact ? x == lo : std::abs(LD(x) - r) <= bar;
   if (!inside_bracket || !near_root) {
-    std::printf("[%s, %s] bracketed_root(%s) on [%.21Lg, %.21Lg], p_lo %.6Lg, p_hi %.6Lg: returned %.21Lg, root %.21Lg (bar %.3Lg)%s\n",
-                policy_name<P>().c_str(), precision_name<Real>(), label.c_str(), LD(lo), LD(hi), LD(p_lo), LD(p_hi), LD(x), r,
-                bar, lo_exact ? ", lo expected exactly" : "");
+    std::printf(
+        "[%s, %s] bracketed_root(%s) on [%.21Lg, %.21Lg], p_lo %.6Lg, p_hi %.6Lg: returned %.21Lg, root %.21Lg (bar %.3Lg)%s\n",
+        policy_name<P>().c_str(), precision_name<Real>(), label.c_str(), LD(lo), LD(hi), LD(p_lo), LD(p_hi), LD(x), r,
+        bar, lo_exact ? ", lo expected exactly" : "");
     std::printf("    (coefficients below times %g)\n", double(sign));
     print_problem(p);
   }

@@ -117,12 +117,22 @@ template <class F> LD minimize(const F& f, LD lo, LD hi, bool periodic, int samp
 
 inline LD circle_circle(const Circle3<double>& a, const Circle3<double>& b) {
   const Round ra(a.center, a.normal, a.radius, b.center), rb(b.center, b.normal, b.radius, b.center);
-  return minimize([&](LD t) { const V3 p = ra.at(t); return (p - rb.ring_point(p)).norm(); }, -kPi, kPi, true);
+  return minimize(
+      [&](LD t) {
+        const V3 p = ra.at(t);
+        return (p - rb.ring_point(p)).norm();
+      },
+      -kPi, kPi, true);
 }
 
 inline LD circle_disk(const Circle3<double>& a, const Disk3<double>& b) {
   const Round ra(a.center, a.normal, a.radius, b.center), rb(b.center, b.normal, b.radius, b.center);
-  return minimize([&](LD t) { const V3 p = ra.at(t); return (p - rb.disk_point(p)).norm(); }, -kPi, kPi, true);
+  return minimize(
+      [&](LD t) {
+        const V3 p = ra.at(t);
+        return (p - rb.disk_point(p)).norm();
+      },
+      -kPi, kPi, true);
 }
 
 // If the disks do not intersect a closest pair has a rim point (docs/derivations/disk_disk.md); the cases
@@ -141,14 +151,22 @@ inline V3 bezier_at(const BezierCurve3<double>& c, const V3d& origin, LD t) {
 
 inline LD bezier_disk(const BezierCurve3<double>& c, const Disk3<double>& d) {
   const Round rd(d.center, d.normal, d.radius, d.center);
-  return minimize([&](LD t) { const V3 p = bezier_at(c, d.center, t); return (p - rd.disk_point(p)).norm(); }, 0, 1,
-                  false);
+  return minimize(
+      [&](LD t) {
+        const V3 p = bezier_at(c, d.center, t);
+        return (p - rd.disk_point(p)).norm();
+      },
+      0, 1, false);
 }
 
 inline LD bezier_circle(const BezierCurve3<double>& c, const Circle3<double>& k) {
   const Round rk(k.center, k.normal, k.radius, k.center);
-  return minimize([&](LD t) { const V3 p = bezier_at(c, k.center, t); return (p - rk.ring_point(p)).norm(); }, 0, 1,
-                  false);
+  return minimize(
+      [&](LD t) {
+        const V3 p = bezier_at(c, k.center, t);
+        return (p - rk.ring_point(p)).norm();
+      },
+      0, 1, false);
 }
 
 }  // namespace ref
@@ -158,7 +176,8 @@ inline LD bezier_circle(const BezierCurve3<double>& c, const Circle3<double>& k)
 inline std::map<std::string, double> worst;  // largest relative error per kind
 
 // Relative error against the reference, recorded per kind; prints the case on failure.
-inline void expect_distance(const std::string& kind, const char* name, double got, LD truth, LD size, double tol = 1e-12) {
+inline void expect_distance(const std::string& kind, const char* name, double got, LD truth, LD size,
+                            double tol = 1e-12) {
   const LD denominator = std::max(truth, size);
   const double err = double(std::abs(LD(got) - truth) / denominator);
   worst[kind] = std::max(worst[kind], err);
@@ -179,8 +198,8 @@ inline V3d unit(double x, double y, double z) { return V3d(x, y, z).normalized()
 template <class A> double off_shape(const V3d& p, const A& a) { return distance(p, a); }
 inline double off_shape(const V3d&, const BezierCurve3<double>&) { return 0; }
 
-template <class A, class B> void expect_consistent(const char* name, const A& a, const B& b, const Result<double>& r,
-                                                   double size) {
+template <class A, class B>
+void expect_consistent(const char* name, const A& a, const B& b, const Result<double>& r, double size) {
   // World points carry the rounding of their coordinates (an ulp of 1e8 is 1.5e-8).
   const double world = 8 * std::numeric_limits<double>::epsilon() * std::max(r.point_a.norm(), r.point_b.norm());
   const double tol = 1e-12 * std::max(size, r.distance) + world;
@@ -202,7 +221,8 @@ inline V3d round_point(const Disk3<double>& d, const Vec2<double>& p) {
 }
 
 inline void expect_param(const char* name, const V3d& from_param, const V3d& point, double size) {
-  const bool ok = (from_param - point).norm() <= 1e-12 * size + 8 * std::numeric_limits<double>::epsilon() * point.norm();
+  const bool ok =
+      (from_param - point).norm() <= 1e-12 * size + 8 * std::numeric_limits<double>::epsilon() * point.norm();
   if (!ok) std::printf("  %s: parameter point off by %.3g\n", name, (from_param - point).norm());
   check::record(ok, name, __FILE__, __LINE__);
 }
@@ -213,7 +233,8 @@ inline void expect_param(const char* name, const V3d& from_param, const V3d& poi
 // consistency and parameters and, when `unique` >= 0, their uniqueness. For two rounds of one
 // kind the other order is distance(b, a) and uniqueness is checked in both orders; circle-disk
 // checks the other order through closest_points(b, a)'s distance.
-template <class A, class B> void round_round_case(const char* kind, const char* name, const A& a, const B& b, LD truth, int unique) {
+template <class A, class B>
+void round_round_case(const char* kind, const char* name, const A& a, const B& b, LD truth, int unique) {
   constexpr bool one_kind = std::is_same_v<A, B>;
   const double size = std::max(a.radius, b.radius);
   const Result<double> r = closest_points(a, b);
@@ -228,13 +249,16 @@ template <class A, class B> void round_round_case(const char* kind, const char* 
     if (one_kind) expect_unique(name, closest_points(b, a).unique, unique == 1);
   }
 }
-inline void circle_circle_case(const char* name, const Circle3<double>& a, const Circle3<double>& b, LD truth, int unique = -1) {
+inline void circle_circle_case(const char* name, const Circle3<double>& a, const Circle3<double>& b, LD truth,
+                               int unique = -1) {
   round_round_case("circle-circle", name, a, b, truth, unique);
 }
-inline void circle_disk_case(const char* name, const Circle3<double>& a, const Disk3<double>& b, LD truth, int unique = -1) {
+inline void circle_disk_case(const char* name, const Circle3<double>& a, const Disk3<double>& b, LD truth,
+                             int unique = -1) {
   round_round_case("circle-disk", name, a, b, truth, unique);
 }
-inline void disk_disk_case(const char* name, const Disk3<double>& a, const Disk3<double>& b, LD truth, int unique = -1) {
+inline void disk_disk_case(const char* name, const Disk3<double>& a, const Disk3<double>& b, LD truth,
+                           int unique = -1) {
   round_round_case("disk-disk", name, a, b, truth, unique);
 }
 
@@ -244,9 +268,8 @@ inline double curve_size(const BezierCurve3<double>& c, const V3d& center) {
   return s;
 }
 
-template <class Round3>
-inline void bezier_case(const char* kind, const char* name, const BezierCurve3<double>& c, const Round3& k, LD truth,
-                 int unique = -1) {
+template <class Round3> inline void bezier_case(const char* kind, const char* name, const BezierCurve3<double>& c,
+                                                const Round3& k, LD truth, int unique = -1) {
   const double size = std::max(k.radius, curve_size(c, k.center));
   const Result<double> r = closest_points(c, k);
   expect_distance(kind, name, r.distance, truth, size);
@@ -299,7 +322,9 @@ struct ShapeDraw {
   // An arc's angle: a tenth below 1e-6..1, a tenth within 1e-3 of 2 pi, the rest up to 2 pi.
   double angle() {
     const double turn = 6.283185307179586, x = uniform(rng);
-    return x < 0.1 ? std::pow(10.0, -6 * uniform(rng)) : x < 0.2 ? turn * (1 - 1e-3 * uniform(rng)) : turn * uniform(rng);
+    return x < 0.1   ? std::pow(10.0, -6 * uniform(rng))
+           : x < 0.2 ? turn * (1 - 1e-3 * uniform(rng))
+                     : turn * uniform(rng);
   }
   Arc3<double> arc() { return {vec(), vec(), radius(), vec(), angle()}; }
 };
@@ -402,7 +427,7 @@ template <class Real> struct PrecisionScene {
   PrecisionScene() {
     c.control.resize(3, 6);
     const double wave[6][3] = {{-1.6, -0.2, 0.4}, {-1.0, 1.4, -0.3}, {-0.3, -1.5, 0.9},
-                               {0.4, 1.6, -0.6},  {1.0, -1.2, 0.7}, {1.7, 0.3, 0.2}};
+                               {0.4, 1.6, -0.6},  {1.0, -1.2, 0.7},  {1.7, 0.3, 0.2}};
     for (int i = 0; i < 6; ++i) c.control.col(i) = V(Real(wave[i][0]), Real(wave[i][1]), Real(wave[i][2]));
     cd.control = c.control.template cast<double>();
   }

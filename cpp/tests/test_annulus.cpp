@@ -74,12 +74,16 @@ const LD kInf = std::numeric_limits<LD>::infinity();
 RefPiece ref_piece(const Line& l, const V3d& origin) {
   return {l.origin.cast<LD>() - origin.cast<LD>(), l.direction.cast<LD>(), -kInf, kInf};
 }
-RefPiece ref_piece(const Ray& r, const V3d& origin) { return {r.origin.cast<LD>() - origin.cast<LD>(), r.direction.cast<LD>(), 0, kInf}; }
+RefPiece ref_piece(const Ray& r, const V3d& origin) {
+  return {r.origin.cast<LD>() - origin.cast<LD>(), r.direction.cast<LD>(), 0, kInf};
+}
 RefPiece ref_piece(const Segment& s, const V3d& origin) {
   return {s.p0.cast<LD>() - origin.cast<LD>(), s.p1.cast<LD>() - s.p0.cast<LD>(), 0, 1};
 }
 
-LD ref_point(const V3d& p, const Annulus& a) { return RefAnnulus(a, a.center).distance(p.cast<LD>() - a.center.cast<LD>()); }
+LD ref_point(const V3d& p, const Annulus& a) {
+  return RefAnnulus(a, a.center).distance(p.cast<LD>() - a.center.cast<LD>());
+}
 
 // Over the piece's parameter: the minimum lies within |P(t0) - c| + 2 R of the piece's point
 // nearest the center along the line (t0), since the annulus lies within R of c.
@@ -108,7 +112,8 @@ LD ref_disk_annulus(const Disk& d, const Annulus& a) {
   const ref::Round rd(d.center, d.normal, d.radius, a.center);
   const LD rim = ref::minimize([&](LD t) { return ra.distance(rd.at(t)); }, -ref::kPi, ref::kPi, true);
   const auto to_disk = [&](const V3& p) { return (p - rd.disk_point(p)).norm(); };
-  return std::min({rim, ref_rim_min(a, a.outer_radius, a.center, to_disk), ref_rim_min(a, a.inner_radius, a.center, to_disk)});
+  return std::min(
+      {rim, ref_rim_min(a, a.outer_radius, a.center, to_disk), ref_rim_min(a, a.inner_radius, a.center, to_disk)});
 }
 LD ref_annulus_annulus(const Annulus& a, const Annulus& b) {
   const RefAnnulus ra(a, a.center), rb(b, a.center);
@@ -128,7 +133,8 @@ LD ref_arc_annulus(const Arc& arc, const Annulus& a) {
   const V3 u = q / q.norm(), v = n.cross(u);
   const bool whole = arc.angle >= 2 * double(ref::kPi);
   const LD angle = whole ? 2 * ref::kPi : LD(arc.angle);
-  return ref::minimize([&](LD t) { return ra.distance(c + LD(arc.radius) * (std::cos(t) * u + std::sin(t) * v)); }, 0, angle, whole);
+  return ref::minimize([&](LD t) { return ra.distance(c + LD(arc.radius) * (std::cos(t) * u + std::sin(t) * v)); }, 0,
+                       angle, whole);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -155,8 +161,10 @@ void expect_annulus_side(const char* name, const Annulus& a, const V3d& point, c
   const Frame<double> f(a.normal);
   const V3d at = a.center + param.x() * (std::cos(param.y()) * f.u + std::sin(param.y()) * f.v);
   const double slack = tol + 8 * std::numeric_limits<double>::epsilon() * a.outer_radius;
-  const bool ok = (at - point).norm() <= tol && param.x() >= a.inner_radius - slack && param.x() <= a.outer_radius + slack;
-  if (!ok) std::printf("  %s: param (%.17g, %.17g) off its point by %.3g\n", name, param.x(), param.y(), (at - point).norm());
+  const bool ok =
+      (at - point).norm() <= tol && param.x() >= a.inner_radius - slack && param.x() <= a.outer_radius + slack;
+  if (!ok)
+    std::printf("  %s: param (%.17g, %.17g) off its point by %.3g\n", name, param.x(), param.y(), (at - point).norm());
   check::record(ok, name, __FILE__, __LINE__);
 }
 
@@ -171,7 +179,9 @@ void annulus_case(const std::string& kind, const char* name, const X& x, const A
   expect_distance(kind, name, s.distance, truth, size);
   expect_distance(kind, name, d1, truth, size);
   const bool agree = same_bits(d1, r.distance) && same_bits(d2, s.distance);
-  if (!agree) std::printf("  %s / %s: distance %.17g %.17g, closest %.17g %.17g\n", kind.c_str(), name, d1, d2, r.distance, s.distance);
+  if (!agree)
+    std::printf("  %s / %s: distance %.17g %.17g, closest %.17g %.17g\n", kind.c_str(), name, d1, d2, r.distance,
+                s.distance);
   check::record(agree, name, __FILE__, __LINE__);
   // The points: on their shapes, at the distance apart (world points round by an ulp of their
   // coordinates).
@@ -180,7 +190,9 @@ void annulus_case(const std::string& kind, const char* name, const X& x, const A
   const double gap = (r.point_a - r.point_b).norm();
   const double on_x = double(off(r.point_a, x)), on_a = double(off(r.point_b, a));
   const bool ok = std::abs(gap - r.distance) <= tol && on_x <= tol && on_a <= tol;
-  if (!ok) std::printf("  %s / %s: |a-b| %.17g vs %.17g, off x %.3g, off annulus %.3g\n", kind.c_str(), name, gap, r.distance, on_x, on_a);
+  if (!ok)
+    std::printf("  %s / %s: |a-b| %.17g vs %.17g, off x %.3g, off annulus %.3g\n", kind.c_str(), name, gap, r.distance,
+                on_x, on_a);
   check::record(ok, name, __FILE__, __LINE__);
   expect_annulus_side(name, a, r.point_b, r.param_b, 1e-12 * std::max(size, (r.point_b - a.center).norm()) + world);
   expect_annulus_side(name, a, s.point_a, s.param_a, 1e-12 * std::max(size, (s.point_a - a.center).norm()) + world);
@@ -190,7 +202,8 @@ void annulus_case(const std::string& kind, const char* name, const X& x, const A
     const V3d u = q.normalized(), v = nn.cross(u);
     const double t = r.param_a.x();
     const V3d at = x.center + x.radius * (std::cos(t) * u + std::sin(t) * v);
-    const bool in = t >= 0 && t <= std::min(x.angle, 2 * double(ref::kPi)) && (at - r.point_a).norm() <= 1e-12 * size + world;
+    const bool in =
+        t >= 0 && t <= std::min(x.angle, 2 * double(ref::kPi)) && (at - r.point_a).norm() <= 1e-12 * size + world;
     if (!in) std::printf("  %s / %s: arc param %.17g off by %.3g\n", kind.c_str(), name, t, (at - r.point_a).norm());
     check::record(in, name, __FILE__, __LINE__);
   }
@@ -209,14 +222,16 @@ template <class X> void expect_same_as(const char* name, const X& x, const Annul
   const Result<double> e = as_disk ? closest_points(x, disk) : closest_points(x, circle);
   const double d = distance(a, x), de = as_disk ? distance(disk, x) : distance(circle, x);
   const Vec2<double> param = as_disk ? e.param_b : Vec2<double>(a.outer_radius, e.param_b.x());
-  const bool ok = same_bits(d, de) && same_bits(r.distance, e.distance) && r.point_a == e.point_a && r.point_b == e.point_b &&
-                  r.param_b == param && r.unique == e.unique;
+  const bool ok = same_bits(d, de) && same_bits(r.distance, e.distance) && r.point_a == e.point_a &&
+                  r.point_b == e.point_b && r.param_b == param && r.unique == e.unique;
   if (!ok) std::printf("  %s (%s): %.17g vs %.17g\n", name, as_disk ? "disk" : "circle", d, de);
   check::record(ok, name, __FILE__, __LINE__);
 }
 
 template <class S> S moved(const S& s, const V3d& t);
-template <> Annulus moved(const Annulus& a, const V3d& t) { return {a.center + t, a.normal, a.inner_radius, a.outer_radius}; }
+template <> Annulus moved(const Annulus& a, const V3d& t) {
+  return {a.center + t, a.normal, a.inner_radius, a.outer_radius};
+}
 template <> Circle moved(const Circle& c, const V3d& t) { return {c.center + t, c.normal, c.radius}; }
 template <> Disk moved(const Disk& d, const V3d& t) { return {d.center + t, d.normal, d.radius}; }
 template <> Line moved(const Line& l, const V3d& t) { return {l.origin + t, l.direction}; }
@@ -233,7 +248,8 @@ LD ref_of(const Disk& d, const Annulus& a) { return ref_disk_annulus(d, a); }
 LD ref_of(const Annulus& b, const Annulus& a) { return ref_annulus_annulus(b, a); }
 
 // The case, then moved by 1e6 and 1e8 (the geometry kept, the coordinates rounded).
-template <class X> void with_translations(const std::string& kind, const char* name, const X& x, const Annulus& a, LD truth, int unique) {
+template <class X>
+void with_translations(const std::string& kind, const char* name, const X& x, const Annulus& a, LD truth, int unique) {
   annulus_case(kind, name, x, a, truth, unique);
   for (double shift : {1e6, 1e8}) {
     const V3d t = shift * V3d(0.6, -0.3, 0.74);
@@ -309,7 +325,8 @@ template <class Piece> void piece_tests(const std::string& k) {
     const Piece p = piece_from<Piece>(V3d(-1, 1, -1 + 1e-7), V3d(1, 1, 1 + 1e-7));
     annulus_case(k, "near the inner rim, tilted", p, kRing, ref_piece_annulus(p, kRing));
   }
-  annulus_case(k, "radius ratio 1e-3, along the axis", piece_from<Piece>(V3d(0, 0, -1), V3d(0, 0, 1)), Annulus{kO, kZ, 1e-3, 1}, 1e-3L, 0);
+  annulus_case(k, "radius ratio 1e-3, along the axis", piece_from<Piece>(V3d(0, 0, -1), V3d(0, 0, 1)),
+               Annulus{kO, kZ, 1e-3, 1}, 1e-3L, 0);
   {
     const Annulus big{kO, kZ, 1000, 1001};
     const Piece p = piece_from<Piece>(V3d(999.5, -3, 0.2), V3d(999.7, 3, 0.3));
@@ -318,7 +335,8 @@ template <class Piece> void piece_tests(const std::string& k) {
   Draw d(11);
   for (int i = 0; i < check::scaled(60) + 6; ++i) {
     const Annulus a = d.annulus();
-    const Piece p = piece_from<Piece>(a.center + 1.5 * a.outer_radius * d.vec(), a.center + 1.5 * a.outer_radius * d.vec());
+    const Piece p =
+        piece_from<Piece>(a.center + 1.5 * a.outer_radius * d.vec(), a.center + 1.5 * a.outer_radius * d.vec());
     annulus_case(k, "random", p, a, ref_piece_annulus(p, a));
     expect_same_as("piece, inner 0", p, Annulus{a.center, a.normal, 0, a.outer_radius});
     expect_same_as("piece, inner = outer", p, Annulus{a.center, a.normal, a.outer_radius, a.outer_radius});
@@ -333,11 +351,14 @@ void segment_continuum_tests() {
   for (double shift : {1e6, 1e8}) {
     const V3d t = shift * V3d(0.6, -0.3, 0.74);
     const Annulus ring = moved(kRing, t);
-    annulus_case(k, "above, hole to ring, translated", Segment{V3d(0.2, 0.1, 0.5) + t, V3d(1.5, 0.3, 0.5) + t}, ring, 0.5L, 0);
-    annulus_case(k, "in the plane, hole to ring, translated", Segment{V3d(0.2, 0.1, 0) + t, V3d(1.5, 0.3, 0) + t}, ring, 0, 0);
+    annulus_case(k, "above, hole to ring, translated", Segment{V3d(0.2, 0.1, 0.5) + t, V3d(1.5, 0.3, 0.5) + t}, ring,
+                 0.5L, 0);
+    annulus_case(k, "in the plane, hole to ring, translated", Segment{V3d(0.2, 0.1, 0) + t, V3d(1.5, 0.3, 0) + t}, ring,
+                 0, 0);
     annulus_case(k, "above, in the hole, translated", Segment{V3d(0.2, 0.1, 0.5) + t, V3d(0.6, 0.3, 0.5) + t}, ring,
                  ref_piece_annulus(Segment{V3d(0.2, 0.1, 0.5) + t, V3d(0.6, 0.3, 0.5) + t}, ring), 1);
-    annulus_case("disk-annulus", "parallel, hole to ring, translated", Disk{V3d(0.5, 0, 0.5) + t, kZ, 0.8}, ring, 0.5L, 0);
+    annulus_case("disk-annulus", "parallel, hole to ring, translated", Disk{V3d(0.5, 0, 0.5) + t, kZ, 0.8}, ring, 0.5L,
+                 0);
   }
   annulus_case(k, "in the plane, hole to ring", Segment{V3d(0.2, 0.1, 0), V3d(1.5, 0.3, 0)}, kRing, 0, 0);
   annulus_case(k, "above, hole to ring", Segment{V3d(0.2, 0.1, 0.5), V3d(1.5, 0.3, 0.5)}, kRing, 0.5L, 0);
@@ -382,7 +403,8 @@ void circle_tests() {
   // outer rim or the inner rim of an annulus.
   int n = 0;
   for (const RoundCase& r : tangent_round_cases()) {
-    const Annulus outer{r.a.center, r.a.normal, 0.4 * r.a.radius, r.a.radius}, inner{r.a.center, r.a.normal, r.a.radius, 2.5 * r.a.radius};
+    const Annulus outer{r.a.center, r.a.normal, 0.4 * r.a.radius, r.a.radius},
+        inner{r.a.center, r.a.normal, r.a.radius, 2.5 * r.a.radius};
     annulus_case(k, "tangent to the outer rim", r.b, outer, ref_circle_annulus(r.b, outer));
     annulus_case(k, "tangent to the inner rim", r.b, inner, ref_circle_annulus(r.b, inner));
     if (++n >= check::scaled(48) + 6) break;
@@ -574,7 +596,8 @@ void policy_tests() {
   }
   // The hard ones under every policy.
   annulus_case<Line, EigenCompanion>("eigen line-annulus", "along the axis", Line{V3d(0, 0, -1), kZ}, kRing, 1, 0);
-  annulus_case<Circle, EigenCompanion>("eigen circle-annulus", "in the hole, concentric", Circle{kO, kZ, 0.5}, kRing, 0.5L, 0);
+  annulus_case<Circle, EigenCompanion>("eigen circle-annulus", "in the hole, concentric", Circle{kO, kZ, 0.5}, kRing,
+                                       0.5L, 0);
   annulus_case<Annulus, EigenPolished>("eigen annulus-annulus", "concentric apart", Annulus{kO, kZ, 3, 4}, kRing, 1, 0);
 }
 
@@ -584,7 +607,8 @@ void precision_tests() {
   const Circle c{V3d(0.7, -0.4, 0.2), V3d(0.3, 1, 2), 0.9};
   const Segment s{V3d(-1, 0.5, 0.2), V3d(1.5, -0.3, 0.9)};
   const Annulus b{V3d(0.9, 0.3, -0.2), V3d(0.2, 1, 0.4), 0.3, 1.1};
-  const LD tc = ref_circle_annulus(c, a), ts = ref_piece_annulus(s, a), tp = ref_point(V3d(2, 1, 0), a), tb = ref_annulus_annulus(b, a);
+  const LD tc = ref_circle_annulus(c, a), ts = ref_piece_annulus(s, a), tp = ref_point(V3d(2, 1, 0), a),
+           tb = ref_annulus_annulus(b, a);
   using A = Annulus3<LD>;
   const A al{a.center.cast<LD>(), a.normal.cast<LD>(), a.inner_radius, a.outer_radius};
   const A bl{b.center.cast<LD>(), b.normal.cast<LD>(), b.inner_radius, b.outer_radius};
@@ -637,8 +661,10 @@ template <class X, class Make> void time_pair(const char* name, const Make& make
   const auto run = [&](bool ring) {
     const auto t0 = std::chrono::steady_clock::now();
     for (size_t i = 0; i < xs.size(); ++i) {
-      if (ring) sum += distance(xs[i], as[i]);
-      else sum += distance(as_disk(xs[i]), Disk{as[i].center, as[i].normal, as[i].outer_radius});
+      if (ring)
+        sum += distance(xs[i], as[i]);
+      else
+        sum += distance(as_disk(xs[i]), Disk{as[i].center, as[i].normal, as[i].outer_radius});
     }
     return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / xs.size();
   };
@@ -667,19 +693,27 @@ int main(int argc, char** argv) {
   arc_tests();
   policy_tests();
   precision_tests();
-  for (const auto& [kind, n] : counts) std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
+  for (const auto& [kind, n] : counts)
+    std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
   if (argc > 1 && std::strcmp(argv[1], "--time") == 0) {
     time_pair<V3d>("point", [](Draw& d, const Annulus& a) { return V3d(a.center + 1.5 * a.outer_radius * d.vec()); });
     time_pair<Segment>("segment", [](Draw& d, const Annulus& a) {
       return Segment{a.center + 1.5 * a.outer_radius * d.vec(), a.center + 1.5 * a.outer_radius * d.vec()};
     });
-    time_pair<Line>("line", [](Draw& d, const Annulus& a) { return Line{a.center + 1.5 * a.outer_radius * d.vec(), d.vec()}; });
-    time_pair<Circle>("circle", [](Draw& d, const Annulus& a) { return Circle{a.center + a.outer_radius * d.vec(), d.vec(), d.radius()}; });
-    time_pair<Disk>("disk", [](Draw& d, const Annulus& a) { return Disk{a.center + a.outer_radius * d.vec(), d.vec(), d.radius()}; });
+    time_pair<Line>("line",
+                    [](Draw& d, const Annulus& a) { return Line{a.center + 1.5 * a.outer_radius * d.vec(), d.vec()}; });
+    time_pair<Circle>("circle", [](Draw& d, const Annulus& a) {
+      return Circle{a.center + a.outer_radius * d.vec(), d.vec(), d.radius()};
+    });
+    time_pair<Disk>("disk", [](Draw& d, const Annulus& a) {
+      return Disk{a.center + a.outer_radius * d.vec(), d.vec(), d.radius()};
+    });
     time_pair<Arc>("arc", [](Draw& d, const Annulus& a) {
       return Arc{a.center + a.outer_radius * d.vec(), d.vec(), d.radius(), d.vec(), 6.28 * d.uniform(d.rng)};
     });
-    time_pair<Annulus>("annulus", [](Draw& d, const Annulus& a) { return Annulus{a.center + a.outer_radius * d.vec(), d.vec(), 0.3, 0.9}; });
+    time_pair<Annulus>("annulus", [](Draw& d, const Annulus& a) {
+      return Annulus{a.center + a.outer_radius * d.vec(), d.vec(), 0.3, 0.9};
+    });
   }
   return check::finish("annulus");
 }

@@ -127,7 +127,9 @@ void expect_arc_side(const char* name, const Arc& a, const V3d& point, const Vec
   const bool in_range = param.x() >= 0 && param.x() <= std::min(a.angle, kTurn) && param.y() == 0;
   const double off_param = double((arc_point_of(a, param.x()) - point.cast<LD>()).norm());
   const bool ok = in_range && off_param <= tol;
-  if (!ok) std::printf("  %s: arc parameter %.17g (angle %.17g) gives a point %.3g away\n", name, param.x(), a.angle, off_param);
+  if (!ok)
+    std::printf("  %s: arc parameter %.17g (angle %.17g) gives a point %.3g away\n", name, param.x(), a.angle,
+                off_param);
   check::record(ok, name, __FILE__, __LINE__);
 }
 
@@ -135,7 +137,8 @@ std::map<std::string, int> counts;
 
 // One case: distance in both orders, closest points in both orders, their consistency, and
 // `unique` when asked (1 or 0; -1 leaves it).
-template <class S> void arc_case(const std::string& kind, const char* name, const S& s, const Arc& a, LD truth, int unique = -1) {
+template <class S>
+void arc_case(const std::string& kind, const char* name, const S& s, const Arc& a, LD truth, int unique = -1) {
   ++counts[kind];
   const double size = std::max(size_of(s), a.radius);
   const Result<double> r = closest_points(s, a), back = closest_points(a, s);
@@ -148,7 +151,9 @@ template <class S> void arc_case(const std::string& kind, const char* name, cons
   const double gap = (r.point_a - r.point_b).norm();
   const double on_s = double(off(r.point_a, s)), on_a = double(off(r.point_b, a));
   const bool ok = std::abs(gap - r.distance) <= tol && on_s <= tol && on_a <= tol;
-  if (!ok) std::printf("  %s / %s: |a-b| %.17g vs %.17g, off first %.3g, off arc %.3g\n", kind.c_str(), name, gap, r.distance, on_s, on_a);
+  if (!ok)
+    std::printf("  %s / %s: |a-b| %.17g vs %.17g, off first %.3g, off arc %.3g\n", kind.c_str(), name, gap, r.distance,
+                on_s, on_a);
   check::record(ok, name, __FILE__, __LINE__);
   expect_arc_side(name, a, r.point_b, r.param_b, tol);
   expect_arc_side(name, a, back.point_a, back.param_a, tol);
@@ -173,7 +178,8 @@ void arc_arc_case(const char* name, const Arc& a, const Arc& b, LD truth, int un
   const double gap = (r.point_a - r.point_b).norm();
   const double on_a = double(off(r.point_a, a)), on_b = double(off(r.point_b, b));
   const bool ok = std::abs(gap - r.distance) <= tol && on_a <= tol && on_b <= tol;
-  if (!ok) std::printf("  arc-arc / %s: |a-b| %.17g vs %.17g, off a %.3g, off b %.3g\n", name, gap, r.distance, on_a, on_b);
+  if (!ok)
+    std::printf("  arc-arc / %s: |a-b| %.17g vs %.17g, off a %.3g, off b %.3g\n", name, gap, r.distance, on_a, on_b);
   check::record(ok, name, __FILE__, __LINE__);
   expect_arc_side(name, a, r.point_a, r.param_a, tol);
   expect_arc_side(name, b, r.point_b, r.param_b, tol);
@@ -189,8 +195,9 @@ template <class S> void whole_case(const char* name, const S& s, const Arc& a) {
   ++counts["whole"];
   const Circle c{a.center, a.normal, a.radius};
   const Result<double> ra = closest_points(s, a), rc = closest_points(s, c);
-  const bool same = distance(s, a) == distance(s, c) && distance(a, s) == distance(c, s) && ra.distance == rc.distance &&
-                    ra.point_a == rc.point_a && ra.point_b == rc.point_b && ra.unique == rc.unique;
+  const bool same = distance(s, a) == distance(s, c) && distance(a, s) == distance(c, s) &&
+                    ra.distance == rc.distance && ra.point_a == rc.point_a && ra.point_b == rc.point_b &&
+                    ra.unique == rc.unique;
   if (!same) std::printf("  whole / %s: %.17g vs the circle's %.17g\n", name, ra.distance, rc.distance);
   check::record(same, name, __FILE__, __LINE__);
   expect_arc_side(name, a, ra.point_b, ra.param_b, 1e-12 * std::max(a.radius, ra.distance) + 1e-15 * ra.point_b.norm());
@@ -224,7 +231,8 @@ template <> V3d moved(const V3d& p, const V3d& t) { return p + t; }
 void point_tests() {
   const V3d o(0, 0, 0), z(0, 0, 1), x(1, 0, 0);
   const Arc quarter{o, z, 1, x, kTurn / 4};
-  arc_case("point-arc", "over the middle", V3d(1, 1, 0.5), quarter, std::sqrt((std::sqrt(2.0L) - 1) * (std::sqrt(2.0L) - 1) + 0.25L), 1);
+  arc_case("point-arc", "over the middle", V3d(1, 1, 0.5), quarter,
+           std::sqrt((std::sqrt(2.0L) - 1) * (std::sqrt(2.0L) - 1) + 0.25L), 1);
   arc_case("point-arc", "beyond the start", V3d(1, -1, 0), quarter, 1, 1);
   arc_case("point-arc", "on the axis", V3d(0, 0, 2), quarter, std::sqrt(5.0L), 0);
   arc_case("point-arc", "at the center", o, quarter, 1, 0);
@@ -256,7 +264,8 @@ Line far_back(const Line& l, double far) { return {l.origin - far * l.direction.
 Ray far_back(const Ray& r, double far) { return {r.origin - far * r.direction.normalized(), r.direction}; }
 Segment far_back(const Segment& s, double far) { return {s.p0 - far * (s.p1 - s.p0).normalized(), s.p1}; }
 
-template <class Piece> void piece_random(const char* kind, Draw& d, const std::function<Piece(Draw&, const Arc&)>& draw) {
+template <class Piece>
+void piece_random(const char* kind, Draw& d, const std::function<Piece(Draw&, const Arc&)>& draw) {
   for (int k = 0; k < check::scaled(120); ++k) {
     const Arc a = d.arc();
     const Piece p = draw(d, a);
@@ -291,8 +300,10 @@ void piece_tests() {
   arc_case("line-arc", "tangent inside", Line{V3d(h, h, 0), V3d(-1, 1, 0)}, quarter, 0);
   arc_case("line-arc", "tangent at the start", Line{V3d(1, 0, 0), V3d(0, 1, 0)}, quarter, 0, 1);
   arc_case("line-arc", "tangent at the end, lifted", Line{V3d(0, 1, 1e-9), V3d(1, 0, 0)}, quarter, 1e-9L, 1);
-  arc_case("line-arc", "tangent beyond the start", Line{V3d(std::cos(-0.1), std::sin(-0.1), 0), V3d(std::sin(0.1), std::cos(0.1), 0)},
-           quarter, ref_piece_arc(Line{V3d(std::cos(-0.1), std::sin(-0.1), 0), V3d(std::sin(0.1), std::cos(0.1), 0)}, quarter), 1);
+  arc_case("line-arc", "tangent beyond the start",
+           Line{V3d(std::cos(-0.1), std::sin(-0.1), 0), V3d(std::sin(0.1), std::cos(0.1), 0)}, quarter,
+           ref_piece_arc(Line{V3d(std::cos(-0.1), std::sin(-0.1), 0), V3d(std::sin(0.1), std::cos(0.1), 0)}, quarter),
+           1);
   // A segment with an end on the arc's axis, and a ray from the axis outward through the arc.
   arc_case("segment-arc", "end on the axis", Segment{V3d(0, 0, 0.5), V3d(-2, -1, 0.5)}, quarter,
            ref_piece_arc(Segment{V3d(0, 0, 0.5), V3d(-2, -1, 0.5)}, quarter));
@@ -366,8 +377,13 @@ template <class Round3> void round_tests(const char* kind) {
     arc_case(kind, "start on the axis, rising", Round3{o, z, 1}, rising, disk ? 0.5L : std::sqrt(1.25L), disk ? 1 : 0);
   }
   arc_case(kind, "standing on the end", Round3{V3d(1.5, 0, 0), V3d(0, 1, 0), 0.5}, quarter, 0, 1);
-  arc_case(kind, "standing beyond the end", Round3{V3d(std::cos(-0.2) * 1.5, std::sin(-0.2) * 1.5, 0), V3d(-std::sin(-0.2), std::cos(-0.2), 0), 0.5},
-           quarter, ref_round_arc(Round3{V3d(std::cos(-0.2) * 1.5, std::sin(-0.2) * 1.5, 0), V3d(-std::sin(-0.2), std::cos(-0.2), 0), 0.5}, quarter), 1);
+  arc_case(kind, "standing beyond the end",
+           Round3{V3d(std::cos(-0.2) * 1.5, std::sin(-0.2) * 1.5, 0), V3d(-std::sin(-0.2), std::cos(-0.2), 0), 0.5},
+           quarter,
+           ref_round_arc(
+               Round3{V3d(std::cos(-0.2) * 1.5, std::sin(-0.2) * 1.5, 0), V3d(-std::sin(-0.2), std::cos(-0.2), 0), 0.5},
+               quarter),
+           1);
   {
     // Nearly coincident (circle_circle's hard family): centers 1e-12 apart, normals 1e-9, radii 1e-10.
     const Round3 near{V3d(1e-12, -1e-12, 0), unit(1e-9, 0, 1), 1 + 1e-10};
@@ -405,8 +421,10 @@ template <class Round3> void round_tests(const char* kind) {
     // point itself when the offset is 0): only where the arcs are placed, not a reference.
     const Result<double> touch = closest_points(r.a, Circle{r.b.center, r.b.normal, r.b.radius});
     const double t = touch.param_a.x();
-    const Arc arcs[4] = {arc_from(r.a.center, r.a.normal, r.a.radius, t - 0.4, 1.0), arc_from(r.a.center, r.a.normal, r.a.radius, t, 1.5),
-                         arc_from(r.a.center, r.a.normal, r.a.radius, t - 1.5, 1.5), arc_from(r.a.center, r.a.normal, r.a.radius, t + 0.5, 4.0)};
+    const Arc arcs[4] = {arc_from(r.a.center, r.a.normal, r.a.radius, t - 0.4, 1.0),
+                         arc_from(r.a.center, r.a.normal, r.a.radius, t, 1.5),
+                         arc_from(r.a.center, r.a.normal, r.a.radius, t - 1.5, 1.5),
+                         arc_from(r.a.center, r.a.normal, r.a.radius, t + 0.5, 4.0)};
     const char* names[4] = {"tangent, holding", "tangent at the start", "tangent at the end", "tangent, missed"};
     for (int i = 0; i < 4; ++i) arc_case(kind, names[i], s, arcs[i], ref_round_arc(s, arcs[i]));
     if (++k >= 24) break;
@@ -418,7 +436,8 @@ void arc_arc_tests() {
   const Arc quarter{o, z, 1, x, kTurn / 4};
   // Concentric and coplanar: overlapping in angle (a continuum), and apart (the nearest ends).
   arc_arc_case("concentric coplanar, overlapping", quarter, Arc{o, z, 1.5, V3d(1, 1, 0), 1}, 0.5L, 0);
-  arc_arc_case("concentric coplanar, apart", quarter, Arc{o, z, 1.5, V3d(-1, 0, 0), 1}, ref_arc_arc(quarter, Arc{o, z, 1.5, V3d(-1, 0, 0), 1}), 1);
+  arc_arc_case("concentric coplanar, apart", quarter, Arc{o, z, 1.5, V3d(-1, 0, 0), 1},
+               ref_arc_arc(quarter, Arc{o, z, 1.5, V3d(-1, 0, 0), 1}), 1);
   arc_arc_case("same circle, overlapping", quarter, Arc{o, z, 1, V3d(1, 1, 0), 1}, 0, 0);
   arc_arc_case("same circle, end to end", quarter, Arc{o, z, 1, y, 1}, 0, 1);
   arc_arc_case("coaxial, overlapping", quarter, Arc{V3d(0, 0, 1), z, 1, V3d(1, 1, 0), 1}, 1, 0);
@@ -451,8 +470,10 @@ void arc_arc_tests() {
   int k = 0;
   for (const RoundCase& r : tangent_round_cases()) {
     const double t = closest_points(r.a, r.b).param_a.x(), s = closest_points(r.b, r.a).param_a.x();
-    const Arc a1 = arc_from(r.a.center, r.a.normal, r.a.radius, t - 0.4, 1.0), a2 = arc_from(r.a.center, r.a.normal, r.a.radius, t, 1.5);
-    const Arc b1 = arc_from(r.b.center, r.b.normal, r.b.radius, s - 0.3, 0.8), b2 = arc_from(r.b.center, r.b.normal, r.b.radius, s - 2, 2.0);
+    const Arc a1 = arc_from(r.a.center, r.a.normal, r.a.radius, t - 0.4, 1.0),
+              a2 = arc_from(r.a.center, r.a.normal, r.a.radius, t, 1.5);
+    const Arc b1 = arc_from(r.b.center, r.b.normal, r.b.radius, s - 0.3, 0.8),
+              b2 = arc_from(r.b.center, r.b.normal, r.b.radius, s - 2, 2.0);
     arc_arc_case("tangent, both holding", a1, b1, ref_arc_arc(a1, b1));
     arc_arc_case("tangent, start and end", a2, b2, ref_arc_arc(a2, b2));
     if (++k >= 12) break;
@@ -464,16 +485,20 @@ void precision_tests() {
   const Arc a{V3d(0.1, 0.2, 0.3), V3d(1, -2, 0.5), 1.3, V3d(0.3, 1, -0.2), 2.5};
   const Circle c{V3d(0.7, -0.4, 0.2), V3d(0.3, 1, 2), 0.9};
   const Segment s{V3d(-1, 0.5, 0.2), V3d(1.5, -0.3, 0.9)};
-  const LD circle_truth = ref_circle_arc(c, a), segment_truth = ref_piece_arc(s, a), point_truth = ref_point_arc(V3d(2, 1, 0), a);
+  const LD circle_truth = ref_circle_arc(c, a), segment_truth = ref_piece_arc(s, a),
+           point_truth = ref_point_arc(V3d(2, 1, 0), a);
   const auto ld_arc = Arc3<LD>{a.center.cast<LD>(), a.normal.cast<LD>(), a.radius, a.start.cast<LD>(), a.angle};
-  const auto f_arc = Arc3<float>{a.center.cast<float>(), a.normal.cast<float>(), float(a.radius), a.start.cast<float>(), float(a.angle)};
+  const auto f_arc = Arc3<float>{a.center.cast<float>(), a.normal.cast<float>(), float(a.radius), a.start.cast<float>(),
+                                 float(a.angle)};
   CHECK_NEAR(distance(Circle3<LD>{c.center.cast<LD>(), c.normal.cast<LD>(), c.radius}, ld_arc), circle_truth, 1e-15L);
   CHECK_NEAR(distance(Segment3<LD>{s.p0.cast<LD>(), s.p1.cast<LD>()}, ld_arc), segment_truth, 1e-15L);
   CHECK_NEAR(distance(Vec3<LD>(2, 1, 0), ld_arc), point_truth, 1e-15L);
   CHECK_NEAR(distance(ld_arc, ld_arc), 0, 1e-15L);
-  CHECK_NEAR(distance(Circle3<float>{c.center.cast<float>(), c.normal.cast<float>(), float(c.radius)}, f_arc), circle_truth, 1e-5);
+  CHECK_NEAR(distance(Circle3<float>{c.center.cast<float>(), c.normal.cast<float>(), float(c.radius)}, f_arc),
+             circle_truth, 1e-5);
   CHECK_NEAR(distance(Vec3<float>(2, 1, 0), f_arc), point_truth, 1e-5);
-  CHECK_NEAR(closest_points(f_arc, Segment3<float>{s.p0.cast<float>(), s.p1.cast<float>()}).distance, segment_truth, 1e-5);
+  CHECK_NEAR(closest_points(f_arc, Segment3<float>{s.p0.cast<float>(), s.p1.cast<float>()}).distance, segment_truth,
+             1e-5);
   // The eigenvalue root policies.
   Draw d(53);
   for (int k = 0; k < check::scaled(30); ++k) {
@@ -490,8 +515,10 @@ void precision_tests() {
       const Disk f{d.vec(), d.vec(), d.radius()};
       const Arc a2 = d.arc();
       const LD fe = ref_disk_arc(f, b), ae = ref_arc_arc(a2, b);
-      expect_distance("eigen disk-arc", "random", closest_points<EigenPolished>(f, b).distance, fe, std::max(b.radius, f.radius));
-      expect_distance("eigen arc-arc", "random", closest_points<EigenCompanion>(a2, b).distance, ae, std::max(b.radius, a2.radius));
+      expect_distance("eigen disk-arc", "random", closest_points<EigenPolished>(f, b).distance, fe,
+                      std::max(b.radius, f.radius));
+      expect_distance("eigen arc-arc", "random", closest_points<EigenCompanion>(a2, b).distance, ae,
+                      std::max(b.radius, a2.radius));
     }
   }
 }
@@ -552,8 +579,8 @@ void start_length_tests() {
 // (exact) or by 1e+-80 or 1e+-300 (its direction rounded), with the start scaled by 1e+-20 or
 // 1e+-60, it answers as the arc's own within the bar, distance() and closest_points() alike (not
 // bit for bit: a normal of 2^-1000 leaves line_ring_minimum's range, and its pair the fast
-// path). The line-arc fast path (ArcEnds) brings the normal back too: from the raw normal of 1e-80 and a unit start, the end
-// points' squared lengths lie in the subnormals, and a line's distance is 9-20% off.
+// path). The line-arc fast path (ArcEnds) brings the normal back too: from the raw normal of 1e-80 and a unit start,
+// the end points' squared lengths lie in the subnormals, and a line's distance is 9-20% off.
 template <class S> void normal_length_case(const S& s, const Arc& a, int& powers, int& decimal) {
   const double base = distance(s, a);
   const double bar = 1e-12 * std::max(base, a.radius);
@@ -604,7 +631,8 @@ int main() {
   round_tests<Disk>("disk-arc");
   arc_arc_tests();
   precision_tests();
-  for (const auto& [kind, n] : counts) std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
+  for (const auto& [kind, n] : counts)
+    std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
   for (const auto& [kind, w] : worst)
     if (!counts.count(kind)) std::printf("  %s: worst relative error %.3g\n", kind.c_str(), w);
   return check::finish("arc");

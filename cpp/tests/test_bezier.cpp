@@ -22,8 +22,8 @@ void bezier_tests() {
     check::record(std::abs(distance(line, disk) - expected) <= 1e-12, "straight vs segment-disk", __FILE__, __LINE__);
     const BezierCurve3<double> high = bezier({V3d(-2, 0.5, 0.3), V3d(2, -0.5, -0.1)});
     bezier_case("bezier-disk", "degree 1 over the disk", high, disk, ref::bezier_disk(high, disk));
-    check::record(std::abs(distance(high, disk) - distance(Segment3<double>{V3d(-2, 0.5, 0.3), V3d(2, -0.5, -0.1)}, disk)) <=
-                      1e-12,
+    check::record(std::abs(distance(high, disk) -
+                           distance(Segment3<double>{V3d(-2, 0.5, 0.3), V3d(2, -0.5, -0.1)}, disk)) <= 1e-12,
                   "degree 1 vs segment-disk", __FILE__, __LINE__);
   }
   {
@@ -43,7 +43,8 @@ void bezier_tests() {
     bezier_case("bezier-disk", "in the disk's plane, outside", outside, disk, ref::bezier_disk(outside, disk));
   }
   {
-    const BezierCurve3<double> rim = bezier({V3d(0.2, 0.1, 0.5), V3d(0.8, 0.3, 0.4), V3d(1.6, 0.4, 0.1), V3d(2.2, -0.2, 0.3)});
+    const BezierCurve3<double> rim =
+        bezier({V3d(0.2, 0.1, 0.5), V3d(0.8, 0.3, 0.4), V3d(1.6, 0.4, 0.1), V3d(2.2, -0.2, 0.3)});
     bezier_case("bezier-disk", "crossing the rim", rim, disk, ref::bezier_disk(rim, disk));
     bezier_case("bezier-circle", "crossing the rim", rim, ring, ref::bezier_circle(rim, ring));
   }

@@ -73,8 +73,10 @@ struct RefAnnulus {
   V3 c, n;
   LD inner, outer;
   RefAnnulus(const Annulus& a, const V3d& origin)
-      : c(a.center.cast<LD>() - origin.cast<LD>()), n(a.normal.cast<LD>() / a.normal.cast<LD>().norm()),
-        inner(a.inner_radius), outer(a.outer_radius) {}
+      : c(a.center.cast<LD>() - origin.cast<LD>()),
+        n(a.normal.cast<LD>() / a.normal.cast<LD>().norm()),
+        inner(a.inner_radius),
+        outer(a.outer_radius) {}
   LD distance(const V3& p) const {
     const V3 d = p - c;
     const LD z = d.dot(n);
@@ -93,7 +95,9 @@ LD ref_curve_annulus(const Curve& b, const Annulus& a) {
   const RefAnnulus ra(a, a.center);
   return ref::minimize([&](LD t) { return ra.distance(ref::bezier_at(b, a.center, t)); }, 0, 1, false);
 }
-LD ref_point_arc(const V3d& p, const Arc& a) { return RefArc(a, a.center).distance(p.cast<LD>() - a.center.cast<LD>()); }
+LD ref_point_arc(const V3d& p, const Arc& a) {
+  return RefArc(a, a.center).distance(p.cast<LD>() - a.center.cast<LD>());
+}
 LD ref_point_annulus(const V3d& p, const Annulus& a) {
   return RefAnnulus(a, a.center).distance(p.cast<LD>() - a.center.cast<LD>());
 }
@@ -125,16 +129,17 @@ double param_gap(const Arc& a, const V3d& point, const Vec2<double>& p) {
 }
 double param_gap(const Annulus& a, const V3d& point, const Vec2<double>& p) {
   const double slack = 1e-12 * a.outer_radius;
-  if (!(p.x() >= a.inner_radius - slack && p.x() <= a.outer_radius + slack)) return std::numeric_limits<double>::infinity();
+  if (!(p.x() >= a.inner_radius - slack && p.x() <= a.outer_radius + slack))
+    return std::numeric_limits<double>::infinity();
   const Frame<double> f(a.normal);
   return (a.center + p.x() * (std::cos(p.y()) * f.u + std::sin(p.y()) * f.v) - point).norm();
 }
 
 // One case with one root policy: distance and closest points in both orders, equal to the bit,
 // within the bar of `truth`; the points and parameters; `unique` when asked (1 or 0).
-template <class Roots = DefaultRoots, class S>
-void curve_case(const std::string& family, const char* name, const Curve& b, const S& s, LD truth, int unique = -1,
-                double bar = 1e-12) {
+template <class Roots = DefaultRoots, class S> void curve_case(const std::string& family, const char* name,
+                                                               const Curve& b, const S& s, LD truth, int unique = -1,
+                                                               double bar = 1e-12) {
   const std::string kind = family + " " + policy_name<Roots>();
   ++counts[kind];
   const double size = std::max(size_of(s), curve_size(b, center_of(s)));
@@ -144,7 +149,8 @@ void curve_case(const std::string& family, const char* name, const Curve& b, con
   expect_distance(kind, name, r.distance, truth, size, bar);
   const bool agree = same_bits(d1, d2) && same_bits(d1, r.distance) && same_bits(d1, back.distance);
   if (!agree)
-    std::printf("  %s / %s: distance %.17g %.17g, closest %.17g %.17g\n", kind.c_str(), name, d1, d2, r.distance, back.distance);
+    std::printf("  %s / %s: distance %.17g %.17g, closest %.17g %.17g\n", kind.c_str(), name, d1, d2, r.distance,
+                back.distance);
   check::record(agree, name, __FILE__, __LINE__);
   const double world = 8 * std::numeric_limits<double>::epsilon() * std::max(r.point_a.norm(), r.point_b.norm());
   const double tol = bar * std::max(size, r.distance) + world;
@@ -168,8 +174,8 @@ template <class S> void effects_case(const std::string& family, const char* name
 
 // Every policy, and the effects (within, intersects, distance_if_within: decided by the bounds
 // or by the distance, so they must agree with it).
-template <class S> void full_case(const std::string& family, const char* name, const Curve& b, const S& s, LD truth,
-                                  int unique = -1) {
+template <class S>
+void full_case(const std::string& family, const char* name, const Curve& b, const S& s, LD truth, int unique = -1) {
   curve_case<Bracketing>(family, name, b, s, truth, unique);
   curve_case<EigenCompanion>(family, name, b, s, truth, unique);
   curve_case<EigenPolished>(family, name, b, s, truth, unique);
@@ -186,7 +192,8 @@ template <class S> void effects_case(const std::string& family, const char* name
   if (d > 2 * margin) ok = ok && !within(b, s, d - margin) && !intersects(b, s) && !intersects(s, b);
   const double dw = distance_if_within(b, s, 2 * d + 1);
   ok = ok && std::abs(dw - d) <= 1e-12 * std::max(size, d);
-  if (!ok) std::printf("  %s / %s: within/intersects/distance_if_within disagree with %.17g\n", family.c_str(), name, d);
+  if (!ok)
+    std::printf("  %s / %s: within/intersects/distance_if_within disagree with %.17g\n", family.c_str(), name, d);
   check::record(ok, name, __FILE__, __LINE__);
 }
 
@@ -251,7 +258,9 @@ template <class ShapeOf> void random_cases(const std::string& family, std::uint6
   }
 }
 
-void arc_random() { random_cases("bezier-arc", 1901, [](Draw& d) { return d.arc(); }); }
+void arc_random() {
+  random_cases("bezier-arc", 1901, [](Draw& d) { return d.arc(); });
+}
 
 void arc_hard() {
   const V3d c(0.3, -0.2, 0.1), n = unit(0.2, -0.5, 1);
@@ -288,14 +297,16 @@ void arc_hard() {
     full_case("bezier-arc", "end at a tangency, lifted", lifted, a, ref_curve_arc(lifted, a));
     // A curve tangent to the arc at its interior point (a double root of the ring's equation),
     // outside the circle by 1e-9.
-    const Curve kiss = curve_of({mid - tangent + 0.4 * radial, mid + 1e-9 * radial - 0.2 * radial, mid + tangent + 0.4 * radial});
+    const Curve kiss =
+        curve_of({mid - tangent + 0.4 * radial, mid + 1e-9 * radial - 0.2 * radial, mid + tangent + 0.4 * radial});
     full_case("bezier-arc", "tangent inside the arc", kiss, a, ref_curve_arc(kiss, a));
   }
   {
     // Planar: coplanar with the arc, crossing it (0), crossing the circle off the arc (the end
     // nearer), and inside the circle.
     const auto planar = [&](double x0, double y0, double x1, double y1, double x2, double y2, double x3, double y3) {
-      return curve_of({c + x0 * f.u + y0 * f.v, c + x1 * f.u + y1 * f.v, c + x2 * f.u + y2 * f.v, c + x3 * f.u + y3 * f.v});
+      return curve_of(
+          {c + x0 * f.u + y0 * f.v, c + x1 * f.u + y1 * f.v, c + x2 * f.u + y2 * f.v, c + x3 * f.u + y3 * f.v});
     };
     const Curve across = planar(0, 0, 0.4, 1.2, 0.9, 1.5, 1.8, 1.9);
     full_case("bezier-arc", "coplanar, across the arc", across, a, 0);
@@ -360,9 +371,9 @@ void arc_whole() {
     const Circle3<double> circle{a.center, a.normal, a.radius};
     const Curve b = d.curve(1 + k % 7, a.center + 0.7 * d.vec());
     const Result<double> ra = closest_points(b, a), rc = closest_points(b, circle);
-    const bool same = same_bits(distance(b, a), distance(b, circle)) && same_bits(distance(a, b), distance(circle, b)) &&
-                      same_bits(ra.distance, rc.distance) && ra.point_a == rc.point_a && ra.point_b == rc.point_b &&
-                      ra.unique == rc.unique;
+    const bool same = same_bits(distance(b, a), distance(b, circle)) &&
+                      same_bits(distance(a, b), distance(circle, b)) && same_bits(ra.distance, rc.distance) &&
+                      ra.point_a == rc.point_a && ra.point_b == rc.point_b && ra.unique == rc.unique;
     check::record(same, "whole arc = circle", __FILE__, __LINE__);
     ++counts["bezier-arc whole"];
     const double off_param = param_gap(a, ra.point_b, ra.param_b);
@@ -374,7 +385,9 @@ void arc_whole() {
 // ---------------------------------------------------------------------------------------------
 // Bezier against annulus.
 
-void annulus_random() { random_cases("bezier-annulus", 1902, [](Draw& d) { return d.annulus(); }); }
+void annulus_random() {
+  random_cases("bezier-annulus", 1902, [](Draw& d) { return d.annulus(); });
+}
 
 void annulus_hard() {
   const V3d c(-0.2, 0.4, 0.3), n = unit(-0.3, 0.2, 1);
@@ -425,7 +438,8 @@ void annulus_hard() {
     full_case("bezier-annulus", "annulus 1e6 of the curve", near_rim, huge, ref_curve_annulus(near_rim, huge));
     const Curve long_curve = curve_of({V3d(-1e5, 0.3, 2), V3d(0.1, 0.2, -2.5), V3d(1e5, -0.4, 3)});
     const Annulus unit_annulus{V3d(0, 0, 0), unit(0.1, 0.3, 1), 0.5, 1};
-    full_case("bezier-annulus", "curve 1e5 of the annulus", long_curve, unit_annulus, ref_curve_annulus(long_curve, unit_annulus));
+    full_case("bezier-annulus", "curve 1e5 of the annulus", long_curve, unit_annulus,
+              ref_curve_annulus(long_curve, unit_annulus));
     Curve empty;
     CHECK(std::isinf(distance(empty, a)) && std::isinf(closest_points(a, empty).distance));
   }
@@ -437,7 +451,8 @@ void annulus_degenerate() {
   for (int k = 0; k < 20; ++k) {
     const Annulus a = d.annulus();
     const Curve b = d.curve(1 + k % 7, a.center + 0.7 * d.vec());
-    const Annulus as_disk{a.center, a.normal, 0, a.outer_radius}, as_circle{a.center, a.normal, a.outer_radius, a.outer_radius};
+    const Annulus as_disk{a.center, a.normal, 0, a.outer_radius},
+        as_circle{a.center, a.normal, a.outer_radius, a.outer_radius};
     const Disk3<double> disk{a.center, a.normal, a.outer_radius};
     const Circle3<double> circle{a.center, a.normal, a.outer_radius};
     const Result<double> rd = closest_points(b, as_disk), rk = closest_points(b, disk);
@@ -461,8 +476,7 @@ void annulus_degenerate() {
 // the plane, so the inputs' rounding (1e-16) moves it by far less than its margin: the truth is
 // 0. Also the two scenes of the long run (their 50-digit references below 1e-30). Bar 1e-15 x
 // the outer radius; distance() and closest_points().distance equal to the bit, both orders.
-template <class Roots>
-void crossing_case(const char* name, const BezierCurve3<LD>& b, const Annulus3<LD>& a) {
+template <class Roots> void crossing_case(const char* name, const BezierCurve3<LD>& b, const Annulus3<LD>& a) {
   const std::string kind = std::string("bezier-annulus crossing ") + policy_name<Roots>();
   ++counts[kind];
   const LD d1 = distance<Roots>(b, a), d2 = distance<Roots>(a, b);
@@ -470,7 +484,9 @@ void crossing_case(const char* name, const BezierCurve3<LD>& b, const Annulus3<L
   const LD relative = d1 / a.outer_radius;
   worst[kind] = std::max(worst[kind], double(relative));
   const bool ok = relative <= 1e-15L && same_bits(d1, d2) && same_bits(d1, d3) && same_bits(d1, d4);
-  if (!ok) std::printf("  %s / %s: %.3Lg %.3Lg %.3Lg %.3Lg (outer %.3Lg)\n", kind.c_str(), name, d1, d2, d3, d4, a.outer_radius);
+  if (!ok)
+    std::printf("  %s / %s: %.3Lg %.3Lg %.3Lg %.3Lg (outer %.3Lg)\n", kind.c_str(), name, d1, d2, d3, d4,
+                a.outer_radius);
   check::record(ok, name, __FILE__, __LINE__);
 }
 
@@ -528,7 +544,9 @@ void annulus_crossing() {
     const double phi = 6.283185307179586 * d.uniform(d.rng);
     const V3d r = std::cos(phi) * f.u + std::sin(phi) * f.v, t = -std::sin(phi) * f.u + std::cos(phi) * f.v;
     const double margin = outer * std::pow(10.0, -9 + 5 * d.uniform(d.rng));
-    const double rho = k % 3 == 0 ? inner + (outer - inner) * d.uniform(d.rng) : k % 3 == 1 ? inner + margin : outer - margin;
+    const double rho = k % 3 == 0   ? inner + (outer - inner) * d.uniform(d.rng)
+                       : k % 3 == 1 ? inner + margin
+                                    : outer - margin;
     const V3d y = c + rho * r;
     const double psi = 0.1 + 1.3 * d.uniform(d.rng);
     const V3d dir = std::cos(psi) * t + std::sin(psi) * n;
@@ -575,18 +593,22 @@ void precision_tests() {
     bl.control = b.control.cast<LD>();
     const Arc3<LD> al{a.center.cast<LD>(), a.normal.cast<LD>(), a.radius, a.start.cast<LD>(), a.angle};
     const Annulus3<LD> anl{an.center.cast<LD>(), an.normal.cast<LD>(), an.inner_radius, an.outer_radius};
-    const double size_a = std::max(a.radius, curve_size(b, a.center)), size_n = std::max(an.outer_radius, curve_size(b, an.center));
+    const double size_a = std::max(a.radius, curve_size(b, a.center)),
+                 size_n = std::max(an.outer_radius, curve_size(b, an.center));
     const LD ta = ref_curve_arc(b, a), tn = ref_curve_annulus(b, an);
     const LD da = distance(bl, al), dn = distance(anl, bl);
-    const bool ok = std::abs(da - ta) <= 1e-15L * std::max(ta, LD(size_a)) && std::abs(dn - tn) <= 1e-15L * std::max(tn, LD(size_n)) &&
-                    closest_points(al, bl).distance == da && closest_points(bl, anl).distance == dn;
-    if (!ok) std::printf("  long double: arc %.3Lg, annulus %.3Lg\n", std::abs(da - ta) / size_a, std::abs(dn - tn) / size_n);
+    const bool ok = std::abs(da - ta) <= 1e-15L * std::max(ta, LD(size_a)) &&
+                    std::abs(dn - tn) <= 1e-15L * std::max(tn, LD(size_n)) && closest_points(al, bl).distance == da &&
+                    closest_points(bl, anl).distance == dn;
+    if (!ok)
+      std::printf("  long double: arc %.3Lg, annulus %.3Lg\n", std::abs(da - ta) / size_a, std::abs(dn - tn) / size_n);
     check::record(ok, "long double", __FILE__, __LINE__);
     ++counts["long double"];
     const BezierCurve3<float> bf{b.control.cast<float>()};
-    const Arc3<float> af{a.center.cast<float>(), a.normal.cast<float>(), float(a.radius), a.start.cast<float>(), float(a.angle)};
-    check::record(std::abs(double(distance(bf, af)) - double(ta)) <= 1e-5 * std::max(double(ta), size_a), "float", __FILE__,
-                  __LINE__);
+    const Arc3<float> af{a.center.cast<float>(), a.normal.cast<float>(), float(a.radius), a.start.cast<float>(),
+                         float(a.angle)};
+    check::record(std::abs(double(distance(bf, af)) - double(ta)) <= 1e-5 * std::max(double(ta), size_a), "float",
+                  __FILE__, __LINE__);
   }
 }
 
@@ -602,7 +624,8 @@ int main() {
   annulus_random();
   annulus_crossing();
   precision_tests();
-  for (const auto& [kind, n] : counts) std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
+  for (const auto& [kind, n] : counts)
+    std::printf("  %s: %d cases, worst relative error %.3g\n", kind.c_str(), n, worst[kind]);
   return check::finish("bezier-arc");
 }
 

@@ -49,7 +49,8 @@ const Points kCubicA = {{0, 0, 0}, {1, 2, 0.5}, {2, -1, -0.3}, {3, 1.5, 0.2}};
 const Points kCubicB = {{0.5, 1, 1.5}, {1.5, -1, 1}, {2.5, 2, 0.7}, {3.5, 0, 1.2}};
 const Points kQuadA = {{-1, 0.5, 0}, {0.2, 2, -1}, {1.3, -0.4, 0.6}};
 const Points kQuadB = {{0.8, 1.9, 0.7}, {-0.6, 0.1, 1.4}, {0.4, -1.2, -0.2}};
-const Points kWavy = {{0, 0, 0}, {1, 2, 0.5}, {2, -1, -0.3}, {3, 1.5, 0.2}, {4, -0.5, 0}, {5, 1, 1}, {6, 0, -0.5}, {7, 1, 0}};
+const Points kWavy = {{0, 0, 0},    {1, 2, 0.5}, {2, -1, -0.3}, {3, 1.5, 0.2},
+                      {4, -0.5, 0}, {5, 1, 1},   {6, 0, -0.5},  {7, 1, 0}};
 // Random curves whose closest pair a flat leaf's descent once missed (bezier_bezier_reference.py).
 const Points kMissedA = {{0.39474543867705547, -0.42444917948091332, -1.6536656591517627},
                          {-1.699138253536101, -1.8319160918726984, 1.8737655599474268},
@@ -95,8 +96,7 @@ std::vector<Case> cases() {
       {"crossing", kArch, kCross, "0.0"},
       {"nearly_touching", kArch, kNear, "1.000000082740370999090374e-9"},
       {"big_small", scaled_by(kCubicA, 1e3), kSmall, "0.4708260612302045797227504"},
-      {"translated", shifted(kCubicA, 1e6, -1e6, 1e6), shifted(kCubicB, 1e6, -1e6, 1e6),
-       "0.8845002708244053631631715"},
+      {"translated", shifted(kCubicA, 1e6, -1e6, 1e6), shifted(kCubicB, 1e6, -1e6, 1e6), "0.8845002708244053631631715"},
       {"missed_basin_1", kMissedA, kMissedB, "0.0000002629715225110312695109746"},
       {"missed_basin_2", kMissedC, kMissedD, "0.02930175555416616937829862"},
   };
@@ -121,7 +121,8 @@ template <class Real, class Roots> void check_case(const Case& c, Real bar) {
   const auto a = curve<Real>(c.a), b = curve<Real>(c.b);
   const Real ref = Real(std::stold(c.reference));
   const Real scale = Real(std::max(size_of(c.a), size_of(c.b)));
-  const Real points = 64 * std::numeric_limits<Real>::epsilon() * Real(std::max(coordinates_of(c.a), coordinates_of(c.b)));
+  const Real points =
+      64 * std::numeric_limits<Real>::epsilon() * Real(std::max(coordinates_of(c.a), coordinates_of(c.b)));
   const Real d = distance<Roots>(a, b);
   CHECK(d == distance<Roots>(b, a));
   CHECK(std::abs(d - ref) <= bar * std::max(ref, scale));

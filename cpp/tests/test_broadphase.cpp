@@ -26,9 +26,9 @@ using namespace circledist;
 namespace {
 
 using V = Vec3<double>;
-using Any = std::variant<Swept<V>, Swept<Line3<double>>, Swept<Ray3<double>>, Swept<Segment3<double>>,
-                         Swept<Circle3<double>>, Swept<Disk3<double>>, Swept<BezierCurve3<double>>,
-                         Swept<Arc3<double>>, Swept<Annulus3<double>>>;
+using Any =
+    std::variant<Swept<V>, Swept<Line3<double>>, Swept<Ray3<double>>, Swept<Segment3<double>>, Swept<Circle3<double>>,
+                 Swept<Disk3<double>>, Swept<BezierCurve3<double>>, Swept<Arc3<double>>, Swept<Annulus3<double>>>;
 using Pairs = std::vector<std::pair<BroadIndex, BroadIndex>>;
 
 test_random::Random source(20261125);
@@ -40,12 +40,18 @@ V random_direction() { return source.direction(); }
 Any random_shape(const V& at, int first = 0, int last = 7, double sweep = 0.3) {
   const double r = uniform(0, 1) < 0.5 ? 0.0 : uniform(0, sweep);
   switch (source.integer(first, last - 1)) {
-    case 0: return swept(V(at), r);
-    case 1: return swept(Line3<double>{at, random_direction()}, r);
-    case 2: return swept(Ray3<double>{at, random_direction()}, r);
-    case 3: return swept(Segment3<double>{at, V(at + random_vector(1.5))}, r);
-    case 4: return swept(Circle3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
-    case 5: return swept(Disk3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
+    case 0:
+      return swept(V(at), r);
+    case 1:
+      return swept(Line3<double>{at, random_direction()}, r);
+    case 2:
+      return swept(Ray3<double>{at, random_direction()}, r);
+    case 3:
+      return swept(Segment3<double>{at, V(at + random_vector(1.5))}, r);
+    case 4:
+      return swept(Circle3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
+    case 5:
+      return swept(Disk3<double>{at, random_direction(), uniform(0.1, 1.2)}, r);
     case 6: {
       BezierCurve3<double> b;
       b.control.resize(3, 4);
@@ -64,11 +70,16 @@ Any random_shape(const V& at, int first = 0, int last = 7, double sweep = 0.3) {
 // The shape moved by `by` (a far-translated scene).
 template <class S> void translate(Swept<S>& s, const V& by) {
   S& x = s.shape;
-  if constexpr (std::is_same_v<S, V>) x += by;
-  else if constexpr (std::is_same_v<S, Segment3<double>>) x.p0 += by, x.p1 += by;
-  else if constexpr (std::is_same_v<S, BezierCurve3<double>>) x.control.colwise() += by;
-  else if constexpr (std::is_same_v<S, Line3<double>> || std::is_same_v<S, Ray3<double>>) x.origin += by;
-  else x.center += by;
+  if constexpr (std::is_same_v<S, V>)
+    x += by;
+  else if constexpr (std::is_same_v<S, Segment3<double>>)
+    x.p0 += by, x.p1 += by;
+  else if constexpr (std::is_same_v<S, BezierCurve3<double>>)
+    x.control.colwise() += by;
+  else if constexpr (std::is_same_v<S, Line3<double>> || std::is_same_v<S, Ray3<double>>)
+    x.origin += by;
+  else
+    x.center += by;
 }
 
 std::vector<Volume<double>> volumes_of(const std::vector<Any>& shapes) {
@@ -84,8 +95,10 @@ double exact(const Any& a, const Any& b) {
       [](const auto& x, const auto& y) -> double {
         using A = core_t<std::decay_t<decltype(x)>>;
         using B = core_t<std::decay_t<decltype(y)>>;
-        if constexpr (has_symmetric_query_v<A, B>) return distance(x, y);
-        else return std::nan("");
+        if constexpr (has_symmetric_query_v<A, B>)
+          return distance(x, y);
+        else
+          return std::nan("");
       },
       a, b);
 }
@@ -138,11 +151,13 @@ Pairs check_sets(const std::vector<Any>& a, const std::vector<Any>& b, bool b_sa
   }
   CHECK(got == expected);
   if (got != expected) {
-    std::printf("  sets of %zu and %zu, d = %g: %zu candidates, brute force %zu\n", a.size(), b.size(), d, got.size(), expected.size());
+    std::printf("  sets of %zu and %zu, d = %g: %zu candidates, brute force %zu\n", a.size(), b.size(), d, got.size(),
+                expected.size());
     for (size_t k = 0, shown = 0; k < expected.size() && shown < 5; ++k)
       if (std::find(got.begin(), got.end(), expected[k]) == got.end()) {
         const auto& [i, j] = expected[k];
-        std::printf("  missing (%td, %td): bound %g, kinds %d %d\n", i, j, lower_bound(va[size_t(i)], vb[size_t(j)]), int(va[size_t(i)].kind), int(vb[size_t(j)].kind));
+        std::printf("  missing (%td, %td): bound %g, kinds %d %d\n", i, j, lower_bound(va[size_t(i)], vb[size_t(j)]),
+                    int(va[size_t(i)].kind), int(vb[size_t(j)].kind));
         ++shown;
       }
   }
@@ -284,10 +299,12 @@ int main() {
     for (const double offset : {1e6, 1e9}) {
       std::vector<Any> far;
       for (const Any& s : base) {
-        far.push_back(std::visit([&](auto x) -> Any {
-          translate(x, V(offset, -0.5 * offset, 0.25 * offset));
-          return x;
-        }, s));
+        far.push_back(std::visit(
+            [&](auto x) -> Any {
+              translate(x, V(offset, -0.5 * offset, 0.25 * offset));
+              return x;
+            },
+            s));
       }
       check_sets(far, far, true, 0.3);
       check_nearest(far, far, 2);
@@ -337,8 +354,7 @@ int main() {
     const std::vector<Volume<double>> va = volumes_of(a), vb = volumes_of(b);
     const BoundingVolumeHierarchy<double> tree(vb);
     const Pairs got = candidate_pairs(va, tree, cull_limit(0.0, std::max(tree.scale(), 12.0)));
-    for (const auto& p : Pairs{{0, 0}, {1, 1}, {2, 2}})
-      CHECK(std::find(got.begin(), got.end(), p) != got.end());
+    for (const auto& p : Pairs{{0, 0}, {1, 1}, {2, 2}}) CHECK(std::find(got.begin(), got.end(), p) != got.end());
     CHECK(std::none_of(got.begin(), got.end(), [](const auto& p) { return p.second == 3; }));
   }
   // Empty sets.
@@ -381,7 +397,8 @@ int main() {
     GrowingHierarchy<double> growing;
     BroadIndex added = 0, batches = 0;
     while (added < BroadIndex(v.size())) {
-      const BroadIndex count = std::min<BroadIndex>(BroadIndex(v.size()) - added, batches % 9 == 8 ? 150 : 1 + batches % 3);
+      const BroadIndex count =
+          std::min<BroadIndex>(BroadIndex(v.size()) - added, batches % 9 == 8 ? 150 : 1 + batches % 3);
       growing.add(std::vector<Volume<double>>(v.begin() + added, v.begin() + added + count), 1 + int(batches % 3));
       added += count;
       ++batches;

@@ -16,8 +16,8 @@ void circle_circle_tests() {
   circle_circle_case("coplanar overlapping", {o, z, 1}, {V3d(1, 0, 0), z, 1}, 0, 0);
   circle_circle_case("coplanar nested", {o, z, 3}, {V3d(0.5, 0, 0), z, 1}, 1.5L, 1);
   circle_circle_case("coplanar disjoint", {o, z, 1}, {V3d(3, 0, 0), z, 0.5}, 1.5L, 1);
-  circle_circle_case("concentric coplanar", {V3d(0.3, -0.2, 0.7), unit(1, 2, 3), 1}, {V3d(0.3, -0.2, 0.7), unit(1, 2, 3), 2},
-                     1, 0);
+  circle_circle_case("concentric coplanar", {V3d(0.3, -0.2, 0.7), unit(1, 2, 3), 1},
+                     {V3d(0.3, -0.2, 0.7), unit(1, 2, 3), 2}, 1, 0);
   circle_circle_case("coaxial parallel planes", {o, z, 1}, {V3d(0, 0, 0.5), z, 2}, std::sqrt(1.25L), 0);
   {
     const V3d n = unit(1, 2, 3);
@@ -30,7 +30,8 @@ void circle_circle_tests() {
     circle_circle_case("linked", a, b, ref::circle_circle(a, b));
   }
   // Every point of B = (1 + cos s, 0, sin s) is at distance 1 from A (and vice versa).
-  circle_circle_case("through the other's center, orthogonal normals", {o, z, 1}, {V3d(1, 0, 0), V3d(0, 1, 0), 1}, 1, 0);
+  circle_circle_case("through the other's center, orthogonal normals", {o, z, 1}, {V3d(1, 0, 0), V3d(0, 1, 0), 1}, 1,
+                     0);
   circle_circle_case("touching, orthogonal planes", {o, z, 1}, {V3d(2, 0, 0), V3d(0, 1, 0), 1}, 0, 1);
   circle_circle_case("touching, coplanar outside", {o, z, 1}, {V3d(2, 0, 0), z, 1}, 0, 1);
   circle_circle_case("touching, coplanar inside", {o, z, 2}, {V3d(1, 0, 0), z, 1}, 0, 1);
@@ -81,7 +82,8 @@ void pruning_tests() {
   for (int k = 0; k < check::scaled(300); ++k) {  // a tenth under the sanitizers (check.hpp)
     Circle3<double> a{vec(), vec(), radius()}, b{vec(), vec(), radius()};
     if (k % 3 == 1) b.center = a.center + a.radius * Frame<double>(a.normal).u + 1e-9 * vec();  // touching
-    if (k % 3 == 2) b = {a.center + a.radius * Frame<double>(a.normal).u, Frame<double>(a.normal).u, a.radius};  // linked
+    if (k % 3 == 2)
+      b = {a.center + a.radius * Frame<double>(a.normal).u, Frame<double>(a.normal).u, a.radius};  // linked
     const circledist::Round<double> round(b.center, b.normal, b.radius);
     const LocalCircle<double> c(a, round);
     const double scale = circle_round_scale(c, b.radius);
@@ -98,7 +100,8 @@ void pruning_tests() {
       return value;
     };
     ref::minimize(h, -ref::kPi, ref::kPi, true);
-    const double bound = sampled_distance(c, [&](const V3d& p) { return RingTarget<double>::distance_squared(p, b.radius); });
+    const double bound =
+        sampled_distance(c, [&](const V3d& p) { return RingTarget<double>::distance_squared(p, b.radius); });
     CHECK(bound >= double(best_h) - 1e-15 * scale);
     const Intervals<double> kept = ring_search_intervals(c, b.radius, bound + 1e-4 * scale);
     const double u = std::tan(double(best_t) / 2);
@@ -118,10 +121,9 @@ int main() {
   circle_circle_tests();
   pruning_tests();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
-  shared_round_cases(
-      [](const RoundCase& r) { circle_circle_case("random", r.a, r.b, ref::circle_circle(r.a, r.b)); },
-      [](const RoundCase& r) { circle_circle_case("tangent", r.a, r.b, ref::circle_circle(r.a, r.b)); },
-      [](const auto& s) { return precision_rows(s.a, s.b, s.ad, s.bd, ref::circle_circle); });
+  shared_round_cases([](const RoundCase& r) { circle_circle_case("random", r.a, r.b, ref::circle_circle(r.a, r.b)); },
+                     [](const RoundCase& r) { circle_circle_case("tangent", r.a, r.b, ref::circle_circle(r.a, r.b)); },
+                     [](const auto& s) { return precision_rows(s.a, s.b, s.ad, s.bd, ref::circle_circle); });
   return finish_round("circle_circle");
 }
 

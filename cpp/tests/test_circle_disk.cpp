@@ -56,10 +56,9 @@ void circle_disk_tests() {
 int main() {
   circle_disk_tests();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
-  shared_round_cases(
-      [](const RoundCase& r) { circle_disk_case("random", r.a, r.db, ref::circle_disk(r.a, r.db)); },
-      [](const RoundCase& r) { circle_disk_case("tangent", r.b, r.da, ref::circle_disk(r.b, r.da)); },
-      [](const auto& s) { return precision_rows(s.a, s.db, s.ad, s.dbd, ref::circle_disk); });
+  shared_round_cases([](const RoundCase& r) { circle_disk_case("random", r.a, r.db, ref::circle_disk(r.a, r.db)); },
+                     [](const RoundCase& r) { circle_disk_case("tangent", r.b, r.da, ref::circle_disk(r.b, r.da)); },
+                     [](const auto& s) { return precision_rows(s.a, s.db, s.ad, s.dbd, ref::circle_disk); });
   return finish_round("circle_disk");
 }
 

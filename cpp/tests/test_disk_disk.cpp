@@ -39,10 +39,9 @@ void disk_disk_tests() {
 int main() {
   disk_disk_tests();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
-  shared_round_cases(
-      [](const RoundCase& r) { disk_disk_case("random", r.da, r.db, ref::disk_disk(r.da, r.db)); },
-      [](const RoundCase& r) { disk_disk_case("tangent", r.da, r.db, ref::disk_disk(r.da, r.db)); },
-      [](const auto& s) { return precision_rows(s.da, s.db, s.dad, s.dbd, ref::disk_disk); });
+  shared_round_cases([](const RoundCase& r) { disk_disk_case("random", r.da, r.db, ref::disk_disk(r.da, r.db)); },
+                     [](const RoundCase& r) { disk_disk_case("tangent", r.da, r.db, ref::disk_disk(r.da, r.db)); },
+                     [](const auto& s) { return precision_rows(s.da, s.db, s.dad, s.dbd, ref::disk_disk); });
   return finish_round("disk_disk");
 }
 

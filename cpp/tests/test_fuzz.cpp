@@ -59,8 +59,12 @@ Segment3<Real> make_segment(Scene& s) {
   const V p0 = s.near();
   return {p0, uniform(0, 1) < 0.1 ? p0 : s.near()};
 }
-Circle3<Real> make_circle(Scene& s) { return {s.near(), direction(), uniform(0, 1) < 0.05 ? 0 : s.scale * uniform(0.1, 3)}; }
-Disk3<Real> make_disk(Scene& s) { return {s.near(), direction(), uniform(0, 1) < 0.05 ? 0 : s.scale * uniform(0.1, 3)}; }
+Circle3<Real> make_circle(Scene& s) {
+  return {s.near(), direction(), uniform(0, 1) < 0.05 ? 0 : s.scale * uniform(0.1, 3)};
+}
+Disk3<Real> make_disk(Scene& s) {
+  return {s.near(), direction(), uniform(0, 1) < 0.05 ? 0 : s.scale * uniform(0.1, 3)};
+}
 BezierCurve3<Real> make_bezier(Scene& s) {
   BezierCurve3<Real> b;
   const int count = std::uniform_int_distribution<int>(2, kMaxBezierDegree + 1)(rng);
@@ -85,7 +89,8 @@ template <class Roots, class A, class B> void check_pair(const A& a, const B& b,
   CHECK(fine);
 }
 
-template <class A, class B, class MakeA, class MakeB> void fuzz_pair(const char* name, MakeA make_a, MakeB make_b, int n) {
+template <class A, class B, class MakeA, class MakeB>
+void fuzz_pair(const char* name, MakeA make_a, MakeB make_b, int n) {
   const int before = nan_answers;
   for (int i = 0; i < n; ++i) {
     Scene s{magnitude(), V::Zero()};

@@ -105,7 +105,7 @@ void near_largest_cases() {
 
 void far_origin_cases() {
   const double far = std::ldexp(1.0, 36), h = std::ldexp(1.0, -30);
-  const V d(3, 4, 12), m(4, -3, 0);  // d.m = 0, |m| = 5
+  const V d(3, 4, 12), m(4, -3, 0);            // d.m = 0, |m| = 5
   const V x(0.5, 0.25, 0.125), p = x + h * m;  // p lies 5 h from the line through x along d
   const double gap = 5 * h;
   for (const double sign : {1.0, -1.0}) {

@@ -27,8 +27,12 @@ using namespace circledist;
 using V = Vec3<double>;
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(const V& a, const V& b) { return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()) && same_bits(a.z(), b.z()); }
-bool same_bits(const Vec2<double>& a, const Vec2<double>& b) { return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()); }
+bool same_bits(const V& a, const V& b) {
+  return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()) && same_bits(a.z(), b.z());
+}
+bool same_bits(const Vec2<double>& a, const Vec2<double>& b) {
+  return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y());
+}
 bool same_bits(const Result<double>& a, const Result<double>& b) {
   return same_bits(a.distance, b.distance) && same_bits(a.point_a, b.point_a) && same_bits(a.point_b, b.point_b) &&
          same_bits(a.param_a, b.param_a) && same_bits(a.param_b, b.param_b) && a.unique == b.unique;
@@ -61,7 +65,8 @@ __attribute__((target("avx"))) bool lanes_answer(const Case* cases, Result<doubl
     inner[k] = cases[k].inner;
   }
   detail::PointRoundLanes in;
-  const auto load = [&](const double* x, detail::Lanes& a, detail::Lanes& b, detail::Lanes& c) __attribute__((target("avx"))) {
+  const auto load = [&](const double* x, detail::Lanes& a, detail::Lanes& b,
+                        detail::Lanes& c) __attribute__((target("avx"))) {
     if (consecutive) return detail::load_triples(x, a, b, c);
     a = detail::strided_lanes(x, 3), b = detail::strided_lanes(x + 1, 3), c = detail::strided_lanes(x + 2, 3);
   };
@@ -119,17 +124,29 @@ void check_both(const Case* cases) {
 std::vector<Case> hard_cases(test_random::Random& rng) {
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<Case> out;
-  const V normals[] = {V(0, 0, 1),   V(0, 0, -1), V(1, 0, 0),      V(0, 1, 0),   V(-1, 0, 0),     V(1, 1, 0),
-                       V(1, -1, 0),  V(1e-300, 0, 1), V(1e-17, 1, 0), V(1, 1e-17, 1e-17), V(0, 1, 1),
-                       V(3e-200, 1e-200, 2e-200), V(3e200, -1e200, 2e200), V(1e-16, 0, 0), V(1e16, 1, 0)};
+  const V normals[] = {V(0, 0, 1),
+                       V(0, 0, -1),
+                       V(1, 0, 0),
+                       V(0, 1, 0),
+                       V(-1, 0, 0),
+                       V(1, 1, 0),
+                       V(1, -1, 0),
+                       V(1e-300, 0, 1),
+                       V(1e-17, 1, 0),
+                       V(1, 1e-17, 1e-17),
+                       V(0, 1, 1),
+                       V(3e-200, 1e-200, 2e-200),
+                       V(3e200, -1e200, 2e200),
+                       V(1e-16, 0, 0),
+                       V(1e16, 1, 0)};
   for (const V& n : normals) {
     const Frame<double> f(n);
     for (double r : {0.0, 1.0, 0.5, 1e-300}) {
       const V c = rng.vector(2);
       const double inner = r * (rng.integer(0, 3) == 0 ? 0.0 : rng.integer(0, 3) == 0 ? 1.0 : rng.uniform(0.0, 1.0));
-      for (const V& local : {V(0, 0, 0), V(0, 0, 1), V(0, 0, -2), V(1e-20, 0, 1), V(1, 0, 0), V(0, 1, 0),
-                             V(-1, 0, 0), V(0.5, 0.5, 0), V(1, 0, 1e-12), V(2, 0, 0), V(1 + 1e-15, 0, 0),
-                             V(0.3, -0.4, 5), V(1e-300, 1e-300, 0)}) {
+      for (const V& local :
+           {V(0, 0, 0), V(0, 0, 1), V(0, 0, -2), V(1e-20, 0, 1), V(1, 0, 0), V(0, 1, 0), V(-1, 0, 0), V(0.5, 0.5, 0),
+            V(1, 0, 1e-12), V(2, 0, 0), V(1 + 1e-15, 0, 0), V(0.3, -0.4, 5), V(1e-300, 1e-300, 0)}) {
         out.push_back({c + r * (local.x() * f.u + local.y() * f.v) + local.z() * f.n, c, n, r, inner});
         out.push_back({c + local.x() * f.u + local.y() * f.v + local.z() * f.n, c, n, r, inner});
         // on, just inside and just outside the inner rim, and on the axis over the hole

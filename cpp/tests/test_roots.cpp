@@ -55,7 +55,8 @@ template <class Real> std::vector<Problem<Real>> simple_problems() {
   // With complex pairs (never to be reported) and without any real root.
   v.push_back(problem<Real>("deg4 {1,-2} 0.5+-1.5i", poly(1, {1, -2}, {{0.5L, 1.5L}})));
   v.push_back(problem<Real>("deg6 {-1,3} +-i 2+-0.5i", poly(1, {-1, 3}, {{0, 1}, {2, 0.5L}})));
-  v.push_back(problem<Real>("deg8 {0.25,-0.75} 3 pairs", poly(1, {0.25L, -0.75L}, {{-1, 1}, {1.5L, 2}, {0.5L, 0.75L}})));
+  v.push_back(
+      problem<Real>("deg8 {0.25,-0.75} 3 pairs", poly(1, {0.25L, -0.75L}, {{-1, 1}, {1.5L, 2}, {0.5L, 0.75L}})));
   v.push_back(problem<Real>("deg4 no real root", poly(1, {}, {{0, 1}, {0, 2}})));
   v.push_back(problem<Real>("deg5 {2} 2 pairs", poly(1, {2}, {{-1, 0.5L}, {1, 3}})));
   return v;
@@ -69,9 +70,11 @@ template <class Real> std::vector<Problem<Real>> multiple_problems() {
   v.push_back(problem<Real>("triple {0.5^3,-2}", poly(1, join(repeat(0.5L, 3), {-2}))));
   v.push_back(problem<Real>("quadruple {1^4}", poly(1, repeat(1, 4))));
   v.push_back(problem<Real>("quadruple {2^4,-1,3}", poly(1, join(repeat(2, 4), {-1, 3}))));
-  v.push_back(problem<Real>("deg8 {-0.75^4,1.5^2,3,-3}", poly(1, join(join(repeat(-0.75L, 4), repeat(1.5L, 2)), {3, -3}))));
+  v.push_back(
+      problem<Real>("deg8 {-0.75^4,1.5^2,3,-3}", poly(1, join(join(repeat(-0.75L, 4), repeat(1.5L, 2)), {3, -3}))));
   v.push_back(problem<Real>("deg8 {1^4,3^4}", poly(1, join(repeat(1, 4), repeat(3, 4)))));
-  v.push_back(problem<Real>("non-dyadic {0.3^3,-1.1^2,2.7}", poly(1, join(join(repeat(0.3L, 3), repeat(-1.1L, 2)), {2.7L}))));
+  v.push_back(
+      problem<Real>("non-dyadic {0.3^3,-1.1^2,2.7}", poly(1, join(join(repeat(0.3L, 3), repeat(-1.1L, 2)), {2.7L}))));
   v.push_back(problem<Real>("double {1000^2,-1,5}", poly(1, join(repeat(1000, 2), {-1, 5}))));
   v.push_back(problem<Real>("quadruple {0.1^4,-2,1.5} lead -3", poly(-3, join(repeat(0.1L, 4), {-2, 1.5L}))));
   v.push_back(problem<Real>("double with pair {0.7^2} 0+-1i", poly(1, repeat(0.7L, 2), {{0, 1}})));
@@ -130,8 +133,9 @@ template <class Real> std::vector<Problem<Real>> range_problems() {
   const LD sigma_up = std::ldexp(LD(1), 33), sigma_down = std::ldexp(LD(1), -33);
   v.push_back(problem<Real>("sigma 2^33 {-3,-1,0.5,2} lead 2^-66",
                             poly(std::ldexp(LD(1), -66), {-3 * sigma_up, -sigma_up, sigma_up / 2, 2 * sigma_up})));
-  v.push_back(problem<Real>("sigma 2^-33 {-3,-1,0.5,2} lead 2^66",
-                            poly(std::ldexp(LD(1), 66), {-3 * sigma_down, -sigma_down, sigma_down / 2, 2 * sigma_down})));
+  v.push_back(
+      problem<Real>("sigma 2^-33 {-3,-1,0.5,2} lead 2^66",
+                    poly(std::ldexp(LD(1), 66), {-3 * sigma_down, -sigma_down, sigma_down / 2, 2 * sigma_down})));
   // Graded roots 1e-5 .. 1e5.
   v.push_back(problem<Real>("graded {1e-5,-1e-2,1,-1e2,1e5}", poly(1, {1e-5L, -1e-2L, 1, -1e2L, 1e5L})));
   // The whole polynomial scaled by 2^+-e (roots unchanged), e = 600 in double (coefficients near
@@ -172,19 +176,18 @@ template <class P, class Real> void interval_ends() {
   // from) the ends. 1/16 (ulp 1.4e-17): p evaluates exactly there. r = 0.1 rounded to 20 bits and
   // 1 + 2^-30: the coefficients still fit, but r^3 or r^4 does not, so p(r) rounds.
   const Real tenth = std::ldexp(Real(838861), -23), off_one = Real(1 + std::ldexp(LD(1), -30));  // 0.1 to 20 bits
-  const std::vector<End> ends = {{"(x-1/16)(x-3)(x+2)", 0.0625L, {3, -2}},
-                                 {"(x-0.1_20)(x-3)(x+2)(x-0.625)", LD(tenth), {3, -2, 0.625L}},
-                                 {"(x-(1+2^-30))(x+1)(x-2)", LD(off_one), {-1, 2}},
-                                 {"(x-0.1_20)^2(x+1)(x-2)", LD(tenth), {LD(tenth), -1, 2}},
-                                 {"(x-1/4)^2(x+1)(x-2)", 0.25L, {0.25L, -1, 2}},
-                                 {"(x-0.5)^3(x+1)", 0.5L, {0.5L, 0.5L, -1}}};
+  const std::vector<End> ends = {
+      {"(x-1/16)(x-3)(x+2)", 0.0625L, {3, -2}},          {"(x-0.1_20)(x-3)(x+2)(x-0.625)", LD(tenth), {3, -2, 0.625L}},
+      {"(x-(1+2^-30))(x+1)(x-2)", LD(off_one), {-1, 2}}, {"(x-0.1_20)^2(x+1)(x-2)", LD(tenth), {LD(tenth), -1, 2}},
+      {"(x-1/4)^2(x+1)(x-2)", 0.25L, {0.25L, -1, 2}},    {"(x-0.5)^3(x+1)", 0.5L, {0.5L, 0.5L, -1}}};
   for (const End& e : ends) {
     const Problem<Real> p = problem<Real>(e.label, poly(1, join({e.root}, e.others)));
     if (!p.exact) std::printf("test setup: %s is not exact in %s\n", e.label, precision_name<Real>());
     CHECK(p.exact);  // the test's premise
     const Real r = Real(e.root);
     const Real a = r - Real(0.25), b = r + Real(0.25);
-    for (auto [lo, hi] : std::vector<std::pair<Real, Real>>{{r, b}, {a, r}, {up(r), b}, {a, down(r)}, {down(r), b}, {a, up(r)}, {r, r}})
+    for (auto [lo, hi] :
+         std::vector<std::pair<Real, Real>>{{r, b}, {a, r}, {up(r), b}, {a, down(r)}, {down(r), b}, {a, up(r)}, {r, r}})
       check_roots<P>(p, lo, hi);
     Intervals<Real> where;
     where.add(a, r);
@@ -282,7 +285,8 @@ template <class Real, int Cap> struct Guarded {
 };
 
 template <class P, class Real> void capacity() {
-  const Problem<Real> p = problem<Real>("deg8 {-3.5..3.5}", poly(1, {-3.5L, -2.5L, -1.5L, -0.5L, 0.5L, 1.5L, 2.5L, 3.5L}));
+  const Problem<Real> p =
+      problem<Real>("deg8 {-3.5..3.5}", poly(1, {-3.5L, -2.5L, -1.5L, -0.5L, 0.5L, 1.5L, 2.5L, 3.5L}));
   const Real inf = std::numeric_limits<Real>::infinity();
   const auto spurious_only = [&](const auto& out, int first) {
     // Only the spurious check applies: found roots were dropped for want of room.
@@ -404,7 +408,8 @@ template <class P, class Real> void degenerate() {
 // policy must return all four to 1e-12, whichever way it finds them (roots.hpp:
 // roots_without_eigenvalues); in long double the same coefficients do not stall, and must agree.
 template <class P, class Real> void stalling_companion() {
-  const Real c[9] = {Real(1.0 / 81), 0, Real(-40.0 / 729), 0, Real(62.0 / 729), 0, Real(-40.0 / 729), 0, Real(1.0 / 81)};
+  const Real c[9] = {Real(1.0 / 81),    0, Real(-40.0 / 729), 0, Real(62.0 / 729), 0,
+                     Real(-40.0 / 729), 0, Real(1.0 / 81)};
   const Real inf = std::numeric_limits<Real>::infinity();
   Candidates<Real> out;
   P::roots(c, 8, -inf, inf, out);
@@ -413,8 +418,9 @@ template <class P, class Real> void stalling_companion() {
       const LD root = sign * std::sqrt(v);
       bool found = false;
       for (int i = 0; i < out.count; ++i) found = found || std::abs(LD(out.value[i]) - root) <= 1e-12L;
-      if (!found) std::printf("[%s, %s] stalling companion: root %.17Lg not found\n", policy_name<P>().c_str(),
-                              precision_name<Real>(), root);
+      if (!found)
+        std::printf("[%s, %s] stalling companion: root %.17Lg not found\n", policy_name<P>().c_str(),
+                    precision_name<Real>(), root);
       CHECK(found);
     }
 }

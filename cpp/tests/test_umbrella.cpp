@@ -12,8 +12,8 @@ namespace test_umbrella {
 int main() {
   using namespace circledist;
   using V = Vec3<double>;
-  const Segment3<double> rod{V(-1, 0, 2), V(1, 0, 2)};     // 2 above the plane z = 0
-  const Segment3<double> post{V(0, 3, -1), V(0, 3, 1)};    // crosses z = 0 at y = 3
+  const Segment3<double> rod{V(-1, 0, 2), V(1, 0, 2)};      // 2 above the plane z = 0
+  const Segment3<double> post{V(0, 3, -1), V(0, 3, 1)};     // crosses z = 0 at y = 3
   const Circle3<double> ring{V(0, 0, 0), V(0, 0, 1), 1.0};  // unit ring in z = 0
   const Disk3<double> plate{V(0, 0, -1), V(0, 0, 1), 5.0};  // z = -1, radius 5
   const Vec3<double> above(0, 0, 3);

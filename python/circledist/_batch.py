@@ -11,8 +11,11 @@ from . import _core
 # Trailing dimensions of a field per element, by the field's role (src/shapes.hpp's table, read
 # through _core._shape_fields): a vector (3,), a number (), control points (k + 1, 3).
 ROLE_TRAILING_DIMS = {"vector": 1, "direction": 1, "length": 0, "angle": 0, "control_points": 2}
-TRAILING_DIMS = {name: ROLE_TRAILING_DIMS[role]
-                 for fields in [*_core._shape_fields().values(), (_core._sweep_field(),)] for name, role in fields}
+TRAILING_DIMS = {
+    name: ROLE_TRAILING_DIMS[role]
+    for fields in [*_core._shape_fields().values(), (_core._sweep_field(),)]
+    for name, role in fields
+}
 
 
 def _not_an_index(kind, item, fancy):
@@ -34,9 +37,11 @@ def batch_key(key, batch_shape, kind, *, fancy):
             given += item is not Ellipsis
             continue
         if item is None:
-            raise TypeError(f"{kind}: None (numpy.newaxis) is not supported in a batch index: a batch gains "
-                            "no new axes by indexing (give the fields of to_arrays() new axes and rebuild "
-                            "the shape with from_arrays())")
+            raise TypeError(
+                f"{kind}: None (numpy.newaxis) is not supported in a batch index: a batch gains "
+                "no new axes by indexing (give the fields of to_arrays() new axes and rebuild "
+                "the shape with from_arrays())"
+            )
         if isinstance(item, (bool, np.bool_)):
             raise TypeError(_not_an_index(kind, item, fancy))
         try:
@@ -59,7 +64,7 @@ def batch_key(key, batch_shape, kind, *, fancy):
     if given > ndim:
         raise IndexError(f"{kind}: too many indices for a batch of {ndim} dimension(s): {given} were given")
     fill = [slice(None)] * (ndim - given)
-    out = out[:ellipses[0]] + fill + out[ellipses[0] + 1:] if ellipses else out + fill
+    out = out[: ellipses[0]] + fill + out[ellipses[0] + 1 :] if ellipses else out + fill
     _check_wide_integers(out, batch_shape, kind)
     return tuple(out)
 
@@ -85,7 +90,7 @@ def index_fields(fields, batch_shape, key, kind, broadcast_to, *, fancy):
     out = {}
     for name, value in fields.items():
         core = TRAILING_DIMS[name]
-        value = broadcast_to(value, tuple(batch_shape) + tuple(value.shape[value.ndim - core:]))
+        value = broadcast_to(value, tuple(batch_shape) + tuple(value.shape[value.ndim - core :]))
         out[name] = value[index + (slice(None),) * core]
     return out
 

@@ -57,14 +57,18 @@ def kinds_help() -> str:
     kinds with the same fields are named together ("line and ray (origin, direction)")."""
     groups: list = []  # [[kind, ...], fields text]
     for kind, (_, roles) in KINDS.items():
-        names = ", ".join(f + (f": 2 to {MAX_CONTROL_POINTS} points" if role == "control_points" else "")
-                          for f, role in roles.items())
+        names = ", ".join(
+            f + (f": 2 to {MAX_CONTROL_POINTS} points" if role == "control_points" else "") for f, role in roles.items()
+        )
         if groups and groups[-1][1] == names:
             groups[-1][0].append(kind)
         else:
             groups.append([[kind], names])
-    text = ("Kinds and fields: " + ", ".join(f"{' and '.join(kinds)} ({names})" for kinds, names in groups)
-            + "; every kind takes an optional sweep >= 0 (a ball, capsule, cylinder, torus, rounded disk, tube).")
+    text = (
+        "Kinds and fields: "
+        + ", ".join(f"{' and '.join(kinds)} ({names})" for kinds, names in groups)
+        + "; every kind takes an optional sweep >= 0 (a ball, capsule, cylinder, torus, rounded disk, tube)."
+    )
     # The width of the rest of FORMAT_HELP (at most 99 columns).
     return textwrap.fill(text, width=96, initial_indent="  ", subsequent_indent="  ", break_on_hyphens=False)
 

@@ -36,17 +36,20 @@ def table(scene: SceneFile, queries: list[Query]) -> str:
             elif e == "distance":
                 text = _fmt(v)
             elif e == "closest_points":
-                text = (f"{_fmt(v['distance'])} between {_point(v['point_a'])} and {_point(v['point_b'])}"
-                        + ("" if v["unique"] else " (not unique)"))
+                text = f"{_fmt(v['distance'])} between {_point(v['point_a'])} and {_point(v['point_b'])}" + (
+                    "" if v["unique"] else " (not unique)"
+                )
             elif e == "nearest":
                 text = ", ".join(f"{x['name']} {_fmt(x['distance'])}" for x in v) or "-"
             elif e == "pairs_within":
                 text = ", ".join(f"{a}-{b}" for a, b in v) or "none"
             else:  # within / intersects against the scene: names
                 text = ", ".join(v) or "none"
-            effect = {"within": f"within {_fmt(q.d) if q.d is not None else ''}",
-                      "nearest": f"nearest k={q.k}",
-                      "pairs_within": f"pairs within {_fmt(q.d) if q.d is not None else ''}"}.get(e, e)
+            effect = {
+                "within": f"within {_fmt(q.d) if q.d is not None else ''}",
+                "nearest": f"nearest k={q.k}",
+                "pairs_within": f"pairs within {_fmt(q.d) if q.d is not None else ''}",
+            }.get(e, e)
             rows.append((q.label, effect, text))
     widths = [max(len(r[i]) for r in rows) for i in range(2)]
     lines = []
@@ -150,7 +153,7 @@ def _bezier(points, count=100):
     t = np.linspace(0, 1, count)[:, None, None]
     q = np.broadcast_to(p, (count,) + p.shape).copy()
     for k in range(len(p) - 1, 0, -1):
-        q = (1 - t) * q[:, :k] + t * q[:, 1:k + 1]
+        q = (1 - t) * q[:, :k] + t * q[:, 1 : k + 1]
     return q[:, 0]
 
 
@@ -214,7 +217,7 @@ def _outline(kind: str, values) -> list:
 
 def _short(text: str, limit: int) -> str:
     """A name or title cut to limit characters for the picture (a description may be a book)."""
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 # Lengths drawn as they are between these; beyond, in units of a power of ten.
@@ -244,8 +247,10 @@ def _scaled(kind: str, values: list, scale: float) -> list:
     as they are)."""
     if scale == 1:
         return values
-    return [np.asarray(v, float) / scale if role in ("vector", "length", "control_points") else v
-            for v, role in zip(values, KINDS[kind][1].values())]
+    return [
+        np.asarray(v, float) / scale if role in ("vector", "length", "control_points") else v
+        for v, role in zip(values, KINDS[kind][1].values())
+    ]
 
 
 def picture(scene: SceneFile, queries: list[Query]) -> bytes:
@@ -262,8 +267,14 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     # projection's arithmetic on coordinates near 1e308 overflows, and near 1e-300 underflows.
     scale = _scale(specs, closest)
     specs = {name: (kind, _scaled(kind, values, scale), sweep / scale) for name, (kind, values, sweep) in specs.items()}
-    closest = [{"distance": r["distance"], "point_a": np.divide(r["point_a"], scale),
-                "point_b": np.divide(r["point_b"], scale)} for r in closest]
+    closest = [
+        {
+            "distance": r["distance"],
+            "point_a": np.divide(r["point_a"], scale),
+            "point_b": np.divide(r["point_b"], scale),
+        }
+        for r in closest
+    ]
     # The view: every bounded shape and every closest point, plus the lines' origins.
     pts = []
     for kind, values, _ in specs.values():

@@ -29,10 +29,11 @@ VERSION = 3
 # reads version 1, and one without annuli by one that reads version 2).
 VERSIONS = (1, 2, 3)
 KIND_SINCE = {"arc": 2, "annulus": 3}
-SCHEMA_RESOURCE = "scene.schema.json"   # inside the circledist package
+SCHEMA_RESOURCE = "scene.schema.json"  # inside the circledist package
 
 # kind -> (class name, {field: role}), read from the module's one table of fields (src/shapes.hpp);
-# roles: vector, direction (a non-zero vector), length (>= 0), angle (in (0, 2 pi]), control_points. The sweep (a length,
+# roles: vector, direction (a non-zero vector), length (>= 0), angle (in (0, 2 pi]), control_points. The
+# sweep (a length,
 # default 0) comes on top of every kind.
 KINDS = {kind.lower(): (kind, dict(fields)) for kind, fields in _core._shape_fields().items()}
 _SWEEP, _SWEEP_ROLE = _core._sweep_field()
@@ -130,8 +131,9 @@ class ShapeEntry:
     def element(self, index: int):
         """Shape `index` of a batch, as a single shape."""
         names = list(KINDS[self.kind][1])
-        return getattr(_core, self.class_name)(*(self.fields[n][index] for n in names),
-                                                sweep=self.fields[_SWEEP][index])
+        return getattr(_core, self.class_name)(
+            *(self.fields[n][index] for n in names), sweep=self.fields[_SWEEP][index]
+        )
 
     def element_names(self) -> list:
         return [self.name] if self.count is None else [f"{self.name}[{i}]" for i in range(self.count)]
@@ -185,9 +187,9 @@ class SceneFile:
         from .scene import Scene
 
         names: list = []
-        parts: list = []           # (kind, values, positions, swept): see Scene._insert
-        rows: dict = {}            # id of a kind's columns -> (columns, [row, ...], [position, ...])
-        singles: dict = {}         # (kind, trailing shapes) -> ([fields, ...], [position, ...])
+        parts: list = []  # (kind, values, positions, swept): see Scene._insert
+        rows: dict = {}  # id of a kind's columns -> (columns, [row, ...], [position, ...])
+        singles: dict = {}  # (kind, trailing shapes) -> ([fields, ...], [position, ...])
         for e in self.entries:
             fields = e.fields
             if e.count is not None:
@@ -224,8 +226,9 @@ def _text(value: str, file: str, where: str) -> str:
     try:
         value.encode("utf-8")
     except UnicodeEncodeError as e:
-        raise _error(file, where, f"expected text, got a lone surrogate (U+{ord(value[e.start]):04X}) at "
-                                  f"character {e.start}") from None
+        raise _error(
+            file, where, f"expected text, got a lone surrogate (U+{ord(value[e.start]):04X}) at " f"character {e.start}"
+        ) from None
     return value
 
 
@@ -275,15 +278,20 @@ def _check_shape_count(total: int, count: Optional[int], file: str, where: str) 
     need = total * SHAPE_BYTES
     budget = _memory_budget()
     if need > budget:
-        raise _error(file, where, f"a count of {count} makes a scene of {total} shapes, which needs about "
-                                  f"{_gigabytes(need)}, more than the {_gigabytes(budget)} of memory there is")
+        raise _error(
+            file,
+            where,
+            f"a count of {count} makes a scene of {total} shapes, which needs about "
+            f"{_gigabytes(need)}, more than the {_gigabytes(budget)} of memory there is",
+        )
 
 
 def _check_bytes(size: int, file: str, where: str, what: str) -> None:
     budget = _memory_budget()
     if size > budget:
-        raise _error(file, where, f"{what} takes {_gigabytes(size)}, more than the {_gigabytes(budget)} of "
-                                  f"memory there is")
+        raise _error(
+            file, where, f"{what} takes {_gigabytes(size)}, more than the {_gigabytes(budget)} of " f"memory there is"
+        )
 
 
 def _finite_array(value: Any, file: str, where: str) -> np.ndarray:
@@ -360,8 +368,12 @@ def _entry_from_json(spec: dict, i: int, file: str) -> ShapeEntry:
             sizes = [len(cp) for cp in value]
             for j, size in enumerate(sizes):
                 if size != sizes[0]:
-                    raise _error(file, f"{where}[{j}]", f"expected {sizes[0]} control points as curve 0 has "
-                                 f"(a batch's curves have one degree), got {size}")
+                    raise _error(
+                        file,
+                        f"{where}[{j}]",
+                        f"expected {sizes[0]} control points as curve 0 has "
+                        f"(a batch's curves have one degree), got {size}",
+                    )
         array = _finite_array(value, file, where)
         if role == "direction":
             _check_directions(array, file, where, _json_index)
@@ -458,7 +470,7 @@ def _entries_from_json(shapes: list, file: str) -> list:
         bad = _refused_rows(kind, columns, len(indices))
         if bad.any():
             first_bad = min(first_bad, indices[int(np.argmax(bad))])
-        for row, i in enumerate(indices[:int(np.argmax(bad)) if bad.any() else len(indices)]):
+        for row, i in enumerate(indices[: int(np.argmax(bad)) if bad.any() else len(indices)]):
             rows[i] = (columns, row)
     entries = []
     for i, spec in enumerate(shapes):
@@ -473,9 +485,13 @@ def _entries_from_json(shapes: list, file: str) -> list:
 # ------------------------------------------------------------------------------------------
 # files: only regular files are read
 # ------------------------------------------------------------------------------------------
-_FILE_TYPES = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
-               (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
-               (stat.S_ISSOCK, "a socket"))
+_FILE_TYPES = (
+    (stat.S_ISDIR, "a directory"),
+    (stat.S_ISFIFO, "a FIFO (named pipe)"),
+    (stat.S_ISCHR, "a character device"),
+    (stat.S_ISBLK, "a block device"),
+    (stat.S_ISSOCK, "a socket"),
+)
 
 
 def _open_regular(path, file: str):

@@ -8,8 +8,18 @@ from typing import Any, Iterable
 
 from ._schema import member, shown
 from ._scene_format import (
-    FORMAT, KIND_SINCE, SceneFile, SceneFileError, VERSION, _check_shape_count, _check_texts,
-    _entries_from_json, _error, _text, _validator)
+    FORMAT,
+    KIND_SINCE,
+    SceneFile,
+    SceneFileError,
+    VERSION,
+    _check_shape_count,
+    _check_texts,
+    _entries_from_json,
+    _error,
+    _text,
+    _validator,
+)
 from ._scene_queries import _check_names, _check_queries
 
 
@@ -25,24 +35,38 @@ def _check_format(data: dict, file: str, prefix: str = "$") -> None:
     such, not as whatever its new content breaks in version 1."""
     fmt, version = data.get("format"), data.get("version")
     if "format" not in data:
-        raise _error(file, prefix, f"missing field 'format': a circledist scene starts with "
-                                   f"\"format\": \"{FORMAT}\", \"version\": {VERSION}")
+        raise _error(
+            file,
+            prefix,
+            f"missing field 'format': a circledist scene starts with " f'"format": "{FORMAT}", "version": {VERSION}',
+        )
     if fmt != FORMAT:
-        raise _error(file, member(prefix, "format"), f"expected \"{FORMAT}\", got {shown(fmt)}")
+        raise _error(file, member(prefix, "format"), f'expected "{FORMAT}", got {shown(fmt)}')
     if "version" not in data:
         raise _error(file, prefix, f"missing field 'version' (this circledist reads versions 1 to {VERSION})")
-    if isinstance(version, (int, float)) and not isinstance(version, bool) and version > VERSION \
-            and float(version).is_integer():
-        raise _error(file, member(prefix, "version"), f"version {int(version)} is newer than this circledist "
-                                                      f"reads (versions 1 to {VERSION}): upgrade circledist")
+    if (
+        isinstance(version, (int, float))
+        and not isinstance(version, bool)
+        and version > VERSION
+        and float(version).is_integer()
+    ):
+        raise _error(
+            file,
+            member(prefix, "version"),
+            f"version {int(version)} is newer than this circledist "
+            f"reads (versions 1 to {VERSION}): upgrade circledist",
+        )
 
 
 def _check_kind_version(kind: str, version: int, file: str, where: str) -> None:
     """A kind newer than the file's version (an arc in a version 1 file) is refused."""
     since = KIND_SINCE.get(kind, 1)
     if version < since:
-        raise _error(file, where, f"kind {kind!r} needs format version {since} or later, the file says version "
-                                  f"{int(version)}")
+        raise _error(
+            file,
+            where,
+            f"kind {kind!r} needs format version {since} or later, the file says version " f"{int(version)}",
+        )
 
 
 def _file_version(kinds: Iterable[str]) -> int:
@@ -85,8 +109,9 @@ def _nested_too_deeply(data: Any, file: str, prefix: str) -> SceneFileError:
 def scene_from_json(data: Any, file: str) -> SceneFile:
     """Validates parsed JSON (schema, then what a schema cannot say) into a SceneFile."""
     if not isinstance(data, dict):
-        raise _error(file, "$", f"expected an object with \"format\": \"{FORMAT}\", \"version\" and \"shapes\", "
-                                f"got {shown(data)}")
+        raise _error(
+            file, "$", f'expected an object with "format": "{FORMAT}", "version" and "shapes", ' f"got {shown(data)}"
+        )
     try:
         return _scene_from_json(data, file)
     except RecursionError:  # nesting that only a recursion (the validator's, a message's) meets

@@ -8,6 +8,7 @@ import math
 from typing import Optional
 import zipfile
 import zlib
+
 try:
     import lzma
 except ImportError:  # a Python built without it: zipfile cannot inflate lzma either
@@ -18,9 +19,27 @@ import numpy as np
 from ._schema import shown
 from .scene import MAX_CONTROL_POINTS, ROLE_TRAILING_DIMS
 from ._scene_format import (
-    FORMAT, KINDS, SceneFile, SceneFileError, ShapeEntry, VERSION, VERSIONS, _NPZ_TOP, _SWEEP,
-    _check_bytes, _check_directions, _check_shape_count, _check_texts, _column, _error,
-    _open_regular, _roles, _text, _validator, schema)
+    FORMAT,
+    KINDS,
+    SceneFile,
+    SceneFileError,
+    ShapeEntry,
+    VERSION,
+    VERSIONS,
+    _NPZ_TOP,
+    _SWEEP,
+    _check_bytes,
+    _check_directions,
+    _check_shape_count,
+    _check_texts,
+    _column,
+    _error,
+    _open_regular,
+    _roles,
+    _text,
+    _validator,
+    schema,
+)
 from ._scene_queries import _check_names, _check_queries
 from ._scene_json import _check_kind_version, _nested_too_deeply, _not_json_constant
 
@@ -40,8 +59,11 @@ def _npz_string(arrays, name: str, file: str, required: bool = True, word: bool 
         return None
     a = arrays.header(name)
     if a.dtype.kind != "U" or a.ndim != 0 or (word and a.dtype.itemsize > 4 * _WORD_CHARS):
-        raise _error(file, f"array {name!r}", f"expected a 0-d string array{' of a word' if word else ''}, "
-                                              f"got dtype {a.dtype} shape {a.shape}")
+        raise _error(
+            file,
+            f"array {name!r}",
+            f"expected a 0-d string array{' of a word' if word else ''}, " f"got dtype {a.dtype} shape {a.shape}",
+        )
     return _text(str(arrays[name][()]), file, f"array {name!r}")
 
 
@@ -66,15 +88,20 @@ def _npz_field(arrays, key: str, role: str, count: Optional[int], file: str, whe
         raise _error(file, where, f"expected an array of real numbers (float or integer), got dtype {a.dtype}")
     ndims = (trailing,) if count is None else (trailing, trailing + 1)
     shape_ok = a.ndim in ndims
-    inner = a.shape[a.ndim - trailing:] if trailing else ()
+    inner = a.shape[a.ndim - trailing :] if trailing else ()
     if role in ("vector", "direction"):
         shape_ok = shape_ok and inner == (3,)
     if role == "control_points":
         shape_ok = shape_ok and inner[1:] == (3,) and 2 <= inner[0] <= MAX_CONTROL_POINTS
     if not shape_ok:
         rows = "" if count is None else "[rows (count or 1)] + "
-        wanted = {"vector": "(3,)", "direction": "(3,)", "length": "()", "angle": "()",
-                  "control_points": f"(m, 3), m from 2 to {MAX_CONTROL_POINTS}"}[role]
+        wanted = {
+            "vector": "(3,)",
+            "direction": "(3,)",
+            "length": "()",
+            "angle": "()",
+            "control_points": f"(m, 3), m from 2 to {MAX_CONTROL_POINTS}",
+        }[role]
         raise _error(file, where, f"expected shape {rows}{wanted}, got {a.shape}")
     if count is not None and a.ndim == trailing + 1 and a.shape[0] not in (count, 1):
         raise _error(file, where, f"expected {count} rows (the batch's count) or 1, got {a.shape[0]}")
@@ -117,13 +144,16 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
     names = set(arrays.names)
     fmt = _npz_string(arrays, "format", file, word=True)
     if fmt != FORMAT:
-        raise _error(file, "array 'format'", f"expected \"{FORMAT}\", got {shown(fmt)}")
+        raise _error(file, "array 'format'", f'expected "{FORMAT}", got {shown(fmt)}')
     version = _npz_integer(arrays, "version", file)
     if version is None:
         raise _error(file, "array 'version'", f"missing (a 0-d integer; this circledist reads versions 1 to {VERSION})")
     if version > VERSION:
-        raise _error(file, "array 'version'", f"version {version} is newer than this circledist reads "
-                                              f"(versions 1 to {VERSION}): upgrade circledist")
+        raise _error(
+            file,
+            "array 'version'",
+            f"version {version} is newer than this circledist reads " f"(versions 1 to {VERSION}): upgrade circledist",
+        )
     if version not in VERSIONS:
         raise _error(file, "array 'version'", f"expected one of {', '.join(map(str, VERSIONS))}, got {version}")
     description = _npz_string(arrays, "description", file, required=False) or ""
@@ -131,15 +161,21 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
         raise _error(file, "array 'shapes'", "missing (a 1-d string array of the shapes' names, in order)")
     order = arrays.header("shapes")
     if order.dtype.kind != "U" or order.ndim != 1 or len(order) == 0:
-        raise _error(file, "array 'shapes'", f"expected a non-empty 1-d string array of names, "
-                                             f"got dtype {order.dtype} shape {order.shape}")
+        raise _error(
+            file,
+            "array 'shapes'",
+            f"expected a non-empty 1-d string array of names, " f"got dtype {order.dtype} shape {order.shape}",
+        )
     order = arrays["shapes"].tolist()
     _check_texts(order, file, lambda i: f"array 'shapes' at index {i}")
     name_error = _validator().first_error
     for i, n in enumerate(order):
         if name_error(n, {"$ref": "#/$defs/name"}):
-            raise _error(file, f"array 'shapes' at index {i}",
-                         f"expected a non-empty name without '[', ']' or '/', got {shown(n)}")
+            raise _error(
+                file,
+                f"array 'shapes' at index {i}",
+                f"expected a non-empty name without '[', ']' or '/', got {shown(n)}",
+            )
     _check_names(order, file, lambda i: f"array 'shapes' at index {i}")
     known = set(_NPZ_TOP)
     entries = []
@@ -147,8 +183,7 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
     for name in order:
         kind = _npz_string(arrays, f"{name}/kind", file, word=True)
         if kind not in KINDS:
-            raise _error(file, f"array {name + '/kind'!r}",
-                         f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
+            raise _error(file, f"array {name + '/kind'!r}", f"expected one of {', '.join(KINDS)}, got {shown(kind)}")
         _check_kind_version(kind, version, file, f"array {name + '/kind'!r}")
         count = _npz_integer(arrays, f"{name}/count", file)
         if count is not None and count < 1:
@@ -173,8 +208,11 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
             raise _error(file, f"arrays {name + '/...'!r}", str(e)) from None
         entries.append(entry)
     for key in sorted(names - known):
-        raise _error(file, f"array {key!r}", "unknown: not a field of a shape listed in 'shapes' nor one of "
-                                             + ", ".join(_NPZ_TOP))
+        raise _error(
+            file,
+            f"array {key!r}",
+            "unknown: not a field of a shape listed in 'shapes' nor one of " + ", ".join(_NPZ_TOP),
+        )
     queries = []
     text = _npz_string(arrays, "queries", file, required=False)
     if text is not None:
@@ -184,8 +222,9 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
         except ValueError as e:
             raise _error(file, where, f"expected the JSON text of a list of queries: {e}") from None
         except RecursionError:
-            raise _error(file, where, "expected the JSON text of a list of queries, got values nested "
-                                      "too deeply") from None
+            raise _error(
+                file, where, "expected the JSON text of a list of queries, got values nested " "too deeply"
+            ) from None
         try:
             error = _validator().first_error({"queries": specs}, {"properties": schema()["properties"]})
             if error:
@@ -198,13 +237,16 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
 
 # What reading a damaged zip may raise: zipfile's own errors, the inflaters' (zlib.error for a
 # corrupt deflate stream; lzma's and bz2's are an LZMAError and an OSError), numpy's for a bad header.
-_ZIP_ERRORS = (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError, NotImplementedError, zlib.error) \
-    + ((lzma.LZMAError,) if lzma is not None else ())
+_ZIP_ERRORS = (ValueError, OSError, zipfile.BadZipFile, EOFError, RuntimeError, NotImplementedError, zlib.error) + (
+    (lzma.LZMAError,) if lzma is not None else ()
+)
 _NPY_HEADERS = {(1, 0): np.lib.format.read_array_header_1_0, (2, 0): np.lib.format.read_array_header_2_0}
 # The compression methods zipfile inflates here (bzip2 and lzma only where Python has the module).
-_ZIP_METHODS = {zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED} \
-    | ({zipfile.ZIP_BZIP2} if getattr(zipfile, "bz2", None) is not None else set()) \
+_ZIP_METHODS = (
+    {zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED}
+    | ({zipfile.ZIP_BZIP2} if getattr(zipfile, "bz2", None) is not None else set())
     | ({zipfile.ZIP_LZMA} if getattr(zipfile, "lzma", None) is not None else set())
+)
 
 
 @dataclass(frozen=True)
@@ -242,8 +284,12 @@ class _NpzArrays:
                 continue
             where = f"member {shown(info.filename)}"
             if info.compress_type not in _ZIP_METHODS:
-                raise _error(file, where, f"compressed with zip method {info.compress_type}, which this reader "
-                                          f"cannot inflate (numpy.savez stores, numpy.savez_compressed deflates)")
+                raise _error(
+                    file,
+                    where,
+                    f"compressed with zip method {info.compress_type}, which this reader "
+                    f"cannot inflate (numpy.savez stores, numpy.savez_compressed deflates)",
+                )
             # An array's name: the member's without ".npy" (numpy.load's names; a member of another
             # name is read, as numpy.load reads it, under its own and must hold a .npy too).
             name = info.filename[:-4] if info.filename.endswith(".npy") else info.filename
@@ -265,8 +311,10 @@ class _NpzArrays:
             with self.archive.open(info) as stream:
                 magic = stream.read(len(np.lib.format.MAGIC_PREFIX) + 2)
                 if len(magic) < 8 or not magic.startswith(np.lib.format.MAGIC_PREFIX):
-                    raise self._fail(key, "expected a plain NumPy array (.npy): the member does not start with "
-                                          "NumPy's magic string")
+                    raise self._fail(
+                        key,
+                        "expected a plain NumPy array (.npy): the member does not start with " "NumPy's magic string",
+                    )
                 version = (magic[-2], magic[-1])
                 if version not in _NPY_HEADERS:
                     raise self._fail(key, f"expected a .npy header of version 1.0 or 2.0, got {version}")
@@ -277,12 +325,16 @@ class _NpzArrays:
         except _ZIP_ERRORS as e:
             raise self._fail(key, f"expected a plain NumPy array (.npy): {e}") from None
         if dtype.hasobject:
-            raise self._fail(key, f"expected a plain NumPy array: dtype {dtype} holds Python objects, "
-                                  f"which are not read")
+            raise self._fail(
+                key, f"expected a plain NumPy array: dtype {dtype} holds Python objects, " f"which are not read"
+            )
         size = math.prod(shape) * dtype.itemsize
         if size != info.file_size - offset:
-            raise self._fail(key, f"its header says shape {shape} of dtype {dtype} ({size} bytes), the member "
-                                  f"holds {info.file_size - offset} bytes of data")
+            raise self._fail(
+                key,
+                f"its header says shape {shape} of dtype {dtype} ({size} bytes), the member "
+                f"holds {info.file_size - offset} bytes of data",
+            )
         _check_bytes(size, self.file, f"array {key!r}", f"an array of shape {shape}, dtype {dtype}")
         self.headers[key] = header = _Header(dtype, tuple(shape))
         return header

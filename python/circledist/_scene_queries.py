@@ -44,13 +44,19 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
                 raise fail(key, f"expected the name of a shape of the scene, got {shown(spec[key])}")
             index = None if m.group(2) is None else int(m.group(2))
             if entry.count is not None and index is None:
-                raise fail(key, f"expected one shape: {entry.name!r} is a batch of {entry.count}, name one "
-                                f"as {entry.name}[i] with i from 0 to {entry.count - 1}")
+                raise fail(
+                    key,
+                    f"expected one shape: {entry.name!r} is a batch of {entry.count}, name one "
+                    f"as {entry.name}[i] with i from 0 to {entry.count - 1}",
+                )
             if entry.count is None and index is not None:
                 raise fail(key, f"expected a shape's name: {entry.name!r} is a single shape, not a batch")
             if index is not None and index >= entry.count:
-                raise fail(key, f"expected an index from 0 to {entry.count - 1} (batch {entry.name!r} has "
-                                f"{entry.count} shapes), got {index}")
+                raise fail(
+                    key,
+                    f"expected an index from 0 to {entry.count - 1} (batch {entry.name!r} has "
+                    f"{entry.count} shapes), got {index}",
+                )
             refs[key] = (entry, index)
         effects = spec["effects"]
         if "pairs_within" in effects:
@@ -64,8 +70,11 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
                 for kb in kinds[i_kind:]:
                     single = ka == kb and shapes_of_kind[ka] < 2
                     if not single and (ka, kb) not in supported:
-                        raise fail("effects", f"expected a scene whose every pair of kinds has a query: none "
-                                              f"exists between a {ka} and a {kb}")
+                        raise fail(
+                            "effects",
+                            f"expected a scene whose every pair of kinds has a query: none "
+                            f"exists between a {ka} and a {kb}",
+                        )
         else:
             if "a" not in spec:
                 raise fail(None, "missing field 'a' (the shape the query is about)")
@@ -73,8 +82,9 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
             for e in effects:
                 if e not in allowed:
                     against = "a pair (with 'b')" if "b" in spec else "the rest of the scene (without 'b')"
-                    raise fail("effects", f"expected effects against {against}: {', '.join(allowed)}; "
-                                          f"got {shown(e)}")
+                    raise fail(
+                        "effects", f"expected effects against {against}: {', '.join(allowed)}; " f"got {shown(e)}"
+                    )
             a_entry, a_index = refs["a"]
             if "b" in spec:
                 others = [refs["b"][0].class_name]
@@ -83,8 +93,11 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
                 others = {kind for kind, n in entries_of_kind.items() if n > (kind == own)}
             for kb in sorted(others):
                 if (a_entry.class_name, kb) not in supported:
-                    raise fail("b" if "b" in spec else "a", f"expected shapes circledist has a query between: "
-                                                              f"none exists between a {a_entry.class_name} and a {kb}")
+                    raise fail(
+                        "b" if "b" in spec else "a",
+                        f"expected shapes circledist has a query between: "
+                        f"none exists between a {a_entry.class_name} and a {kb}",
+                    )
             if "k" in spec and "nearest" not in effects:
                 raise fail("k", "not expected: only nearest takes k")
         needs_d = "within" in effects or "pairs_within" in effects
@@ -95,8 +108,16 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
         d = None
         if "d" in spec:
             d = float(_finite_array(spec["d"], file, member(base, "d")))
-        out.append({"name": spec.get("name"), "a": spec.get("a"), "b": spec.get("b"), "effects": list(effects),
-                    "d": d, "k": int(spec["k"]) if "k" in spec else None})
+        out.append(
+            {
+                "name": spec.get("name"),
+                "a": spec.get("a"),
+                "b": spec.get("b"),
+                "effects": list(effects),
+                "d": d,
+                "k": int(spec["k"]) if "k" in spec else None,
+            }
+        )
     return out
 
 

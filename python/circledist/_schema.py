@@ -24,8 +24,24 @@ from typing import Any, Callable, Optional, Tuple
 # is loaded (check_keywords), so the shipped schema cannot silently say more than is checked.
 ANNOTATIONS = {"$schema", "$id", "$comment", "title", "description"}
 KEYWORDS = ANNOTATIONS | {
-    "$ref", "$defs", "type", "const", "enum", "minimum", "pattern", "minItems", "maxItems", "items",
-    "uniqueItems", "required", "properties", "additionalProperties", "allOf", "if", "then", "else",
+    "$ref",
+    "$defs",
+    "type",
+    "const",
+    "enum",
+    "minimum",
+    "pattern",
+    "minItems",
+    "maxItems",
+    "items",
+    "uniqueItems",
+    "required",
+    "properties",
+    "additionalProperties",
+    "allOf",
+    "if",
+    "then",
+    "else",
 }
 
 Error = Tuple[str, str]
@@ -33,8 +49,15 @@ Error = Tuple[str, str]
 _ARRAY_KEYWORDS = ("minItems", "maxItems", "items", "uniqueItems")
 _OBJECT_KEYWORDS = ("required", "properties", "additionalProperties")
 
-_TYPE_WORDS = {"object": "an object", "array": "an array", "string": "a string", "number": "a number",
-               "integer": "an integer", "boolean": "true or false", "null": "null"}
+_TYPE_WORDS = {
+    "object": "an object",
+    "array": "an array",
+    "string": "a string",
+    "number": "a number",
+    "integer": "an integer",
+    "boolean": "true or false",
+    "null": "null",
+}
 
 
 def shown(value: Any, limit: int = 60) -> str:
@@ -42,7 +65,7 @@ def shown(value: Any, limit: int = 60) -> str:
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
         return f"an integer of {len(str(abs(value)))} digits"
     text = json.dumps(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def member(path: str, key: str) -> str:
@@ -108,9 +131,15 @@ def _is_integer(value: Any) -> bool:
     return _is_number(value) and (isinstance(value, int) or value.is_integer())
 
 
-_TYPE_TESTS = {"object": lambda v: isinstance(v, dict), "array": lambda v: isinstance(v, list),
-               "string": lambda v: isinstance(v, str), "boolean": lambda v: isinstance(v, bool),
-               "null": lambda v: v is None, "number": _is_number, "integer": _is_integer}
+_TYPE_TESTS = {
+    "object": lambda v: isinstance(v, dict),
+    "array": lambda v: isinstance(v, list),
+    "string": lambda v: isinstance(v, str),
+    "boolean": lambda v: isinstance(v, bool),
+    "null": lambda v: v is None,
+    "number": _is_number,
+    "integer": _is_integer,
+}
 
 
 def _all(tests: list) -> Predicate:
@@ -129,6 +158,7 @@ def _all(tests: list) -> Predicate:
             if not test(v):
                 return False
         return True
+
     return every
 
 
@@ -177,6 +207,7 @@ def _array_test(schema: dict, item: Optional[Predicate], other: bool = True) -> 
                     if _equal(v[i], v[j]):
                         return False
         return True
+
     return array
 
 
@@ -204,6 +235,7 @@ def _object_test(schema: dict, properties: dict, extra: Any, other: bool = True)
                 if key not in names and not extra(v[key]):
                     return False
         return True
+
     return obj
 
 
@@ -218,7 +250,7 @@ def _discriminator(subs: list) -> Optional[tuple]:
         cond = sub["if"]
         if not isinstance(cond, dict) or set(cond) != {"properties", "required"} or len(cond["properties"]) != 1:
             return None
-        (k, test), = cond["properties"].items()
+        ((k, test),) = cond["properties"].items()
         if cond["required"] != [k] or key not in (None, k) or not isinstance(test, dict) or set(test) != {"const"}:
             return None
         if type(test["const"]) is not str or test["const"] in table:
@@ -251,7 +283,7 @@ class Validator:
         check_keywords(schema)
         self.root = schema
         self._resolved: dict = {}
-        self._tests: dict = {}   # id(node) -> (node, predicate), for the nodes of the root schema
+        self._tests: dict = {}  # id(node) -> (node, predicate), for the nodes of the root schema
         self._compiled = compiled
         if compiled:
             self._root_test = self.test(schema)
@@ -292,6 +324,7 @@ class Validator:
                 elif isinstance(node, list):
                     for sub in node:
                         walk(sub)
+
             walk(self.root)
             self._owned_ids = ids
         return id(schema) in self._owned_ids
@@ -307,8 +340,12 @@ class Validator:
         only = types[0] if len(types) == 1 else None
         arrays = any(k in schema for k in _ARRAY_KEYWORDS)
         objects = any(k in schema for k in _OBJECT_KEYWORDS)
-        folded = (only == "string" and "pattern" in schema) or (only == "number" and "minimum" in schema) \
-            or (only == "array" and arrays) or (only == "object" and objects)
+        folded = (
+            (only == "string" and "pattern" in schema)
+            or (only == "number" and "minimum" in schema)
+            or (only == "array" and arrays)
+            or (only == "object" and objects)
+        )
         if "type" in schema and not folded:
             tests.append(_type_test(types))
         if "const" in schema:
@@ -333,8 +370,13 @@ class Validator:
             else:
                 tests.append(lambda v: not isinstance(v, str) or search(v) is not None)
         if arrays:
-            tests.append(_array_test(schema, self.test(schema["items"]) if "items" in schema else None,
-                                     other=not (folded and only == "array")))
+            tests.append(
+                _array_test(
+                    schema,
+                    self.test(schema["items"]) if "items" in schema else None,
+                    other=not (folded and only == "array"),
+                )
+            )
         if objects:
             properties = {key: self.test(sub) for key, sub in schema.get("properties", {}).items()}
             extra = schema.get("additionalProperties")
@@ -357,6 +399,7 @@ class Validator:
                         return True
                     then = thens.get(v[key])
                     return then is None or then(v)
+
                 tests.append(one_of_kinds)
         if "if" in schema:
             cond = self.test(schema["if"])
@@ -427,8 +470,11 @@ class Validator:
                 for j, item in enumerate(value):
                     for i in range(j):
                         if _equal(value[i], item):
-                            return f"{path}[{j}]", f"expected {schema.get('title') or 'distinct items'}, " \
-                                                   f"got a repeat of item {i} ({shown(item)})"
+                            return (
+                                f"{path}[{j}]",
+                                f"expected {schema.get('title') or 'distinct items'}, "
+                                f"got a repeat of item {i} ({shown(item)})",
+                            )
         if isinstance(value, dict):
             for key in schema.get("required", ()):
                 if key not in value:

@@ -20,8 +20,20 @@ from ._cli_answer import answer
 from ._cli_load import FORMAT_HELP, Query, SceneError, demo_scene_text, format_help, load_scene
 from ._cli_present import PICTURE_LIMIT, as_json, check_output, picture, table, write_output
 
-__all__ = ["main", "answer", "load_scene", "table", "as_json", "picture", "demo_scene_text", "Query", "SceneError",
-           "FORMAT_HELP", "DEMO_PICTURE", "PICTURE_LIMIT"]
+__all__ = [
+    "main",
+    "answer",
+    "load_scene",
+    "table",
+    "as_json",
+    "picture",
+    "demo_scene_text",
+    "Query",
+    "SceneError",
+    "FORMAT_HELP",
+    "DEMO_PICTURE",
+    "PICTURE_LIMIT",
+]
 
 DEMO_PICTURE = "circledist_demo.png"
 
@@ -31,14 +43,20 @@ def _parser() -> argparse.ArgumentParser:
         prog="circledist",
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Answer the queries of a circledist scene file (JSON or .npz): intersects, within,\n"
-                    "distance, closest_points, nearest, pairs_within. Without a file: the shipped demo\n"
-                    f"scene, drawn to {DEMO_PICTURE}.",
-        epilog=format_help())
+        "distance, closest_points, nearest, pairs_within. Without a file: the shipped demo\n"
+        f"scene, drawn to {DEMO_PICTURE}.",
+        epilog=format_help(),
+    )
     p.add_argument("scene", nargs="?", help="scene file (.json or .npz); default: the demo scene in the package")
-    p.add_argument("--json", nargs="?", const="-", metavar="PATH",
-                   help="write the answers as JSON to PATH (to standard output, instead of the table, "
-                        "when PATH is omitted or '-'); a number beyond a double's range (an infinite "
-                        "distance) is written as null")
+    p.add_argument(
+        "--json",
+        nargs="?",
+        const="-",
+        metavar="PATH",
+        help="write the answers as JSON to PATH (to standard output, instead of the table, "
+        "when PATH is omitted or '-'); a number beyond a double's range (an infinite "
+        "distance) is written as null",
+    )
     p.add_argument("--plot", metavar="PATH", help="draw the scene and its closest points to PATH (PNG, matplotlib)")
     p.add_argument("--no-plot", action="store_true", help="do not draw the demo scene")
     p.add_argument("--version", action="version", version=f"circledist {_version()}")
@@ -47,6 +65,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def _version() -> str:
     from . import __version__
+
     return __version__
 
 
@@ -66,15 +85,21 @@ def main(argv: list[str] | None = None) -> int:
         else:
             scene = load_scene(args.scene)
         if plot is not None and scene.count > PICTURE_LIMIT:
-            print(f"circledist: --plot draws at most {PICTURE_LIMIT} shapes, {scene.path} holds {scene.count}; "
-                  "use --no-plot", file=sys.stderr)
+            print(
+                f"circledist: --plot draws at most {PICTURE_LIMIT} shapes, {scene.path} holds {scene.count}; "
+                "use --no-plot",
+                file=sys.stderr,
+            )
             return 1
         if plot is not None:
             try:
                 import matplotlib  # noqa: F401
             except ImportError:
-                print("circledist: --plot needs matplotlib (pip install matplotlib); use --no-plot to skip "
-                      "the picture", file=sys.stderr)
+                print(
+                    "circledist: --plot needs matplotlib (pip install matplotlib); use --no-plot to skip "
+                    "the picture",
+                    file=sys.stderr,
+                )
                 return 1
         queries = answer(scene)
         text = table(scene, queries)

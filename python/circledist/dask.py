@@ -30,9 +30,22 @@ from dask.highlevelgraph import HighLevelGraph
 from . import _core
 from ._batch import TRAILING_DIMS, index_fields
 
-__all__ = ["Annulus", "Arc", "Bezier", "Circle", "ClosestPoints", "Disk", "Line", "Point", "Ray", "Segment",
-           "closest_points", "distance", "pairs_within", "within"]
-
+__all__ = [
+    "Annulus",
+    "Arc",
+    "Bezier",
+    "Circle",
+    "ClosestPoints",
+    "Disk",
+    "Line",
+    "Point",
+    "Ray",
+    "Segment",
+    "closest_points",
+    "distance",
+    "pairs_within",
+    "within",
+]
 
 
 class _Shape:
@@ -42,8 +55,10 @@ class _Shape:
 
     def __init__(self, *args, sweep=None):
         if len(args) != len(self._names):
-            raise TypeError(f"{type(self).__name__}() takes {len(self._names)} arrays "
-                            f"({', '.join(self._names)}), got {len(args)}")
+            raise TypeError(
+                f"{type(self).__name__}() takes {len(self._names)} arrays "
+                f"({', '.join(self._names)}), got {len(args)}"
+            )
         fields = dict(zip(self._names, args))
         if sweep is not None:
             fields["sweep"] = sweep
@@ -56,19 +71,22 @@ class _Shape:
             value = da.asarray(value)
             core = TRAILING_DIMS[name]
             if value.ndim < core or (core and value.shape[-1] != 3):
-                raise ValueError(f"{type(self).__name__}: {name} must have shape (..., "
-                                 f"{'3' if core == 1 else 'k+1, 3' if core == 2 else ''}), "
-                                 f"got {value.shape}")
+                raise ValueError(
+                    f"{type(self).__name__}: {name} must have shape (..., "
+                    f"{'3' if core == 1 else 'k+1, 3' if core == 2 else ''}), "
+                    f"got {value.shape}"
+                )
             # The per-element dimensions in one chunk: each block then holds whole elements.
             if core:
                 value = value.rechunk({axis: -1 for axis in range(value.ndim - core, value.ndim)})
             self.fields[name] = value
-            batches.append(value.shape[:value.ndim - core])
+            batches.append(value.shape[: value.ndim - core])
         try:
             self.batch_shape = np.broadcast_shapes(*batches)
         except ValueError as error:
-            raise ValueError(f"{type(self).__name__}: the fields' batch shapes {batches} do not "
-                             "broadcast") from error
+            raise ValueError(
+                f"{type(self).__name__}: the fields' batch shapes {batches} do not " "broadcast"
+            ) from error
         for name, value in self.fields.items():
             setattr(self, name, value)
 
@@ -124,10 +142,12 @@ class _Shape:
 
 def _shape_class(name, names):
     signature = f"{name}({', '.join(names)}, *, sweep=None)"
-    doc = (f"{signature}\n\nA batch of `circledist.{name}` shapes whose fields are dask arrays (NumPy arrays "
-           f"and scalars are taken as dask arrays), with the arguments of `circledist.{name}`.\n\n"
-           "Indexing (``shape[i]``, ``shape[a:b]``) selects along the batch axes, lazily; ``compute()`` "
-           "gives the `circledist` shape.")
+    doc = (
+        f"{signature}\n\nA batch of `circledist.{name}` shapes whose fields are dask arrays (NumPy arrays "
+        f"and scalars are taken as dask arrays), with the arguments of `circledist.{name}`.\n\n"
+        "Indexing (``shape[i]``, ``shape[a:b]``) selects along the batch axes, lazily; ``compute()`` "
+        "gives the `circledist` shape."
+    )
     return type(name, (_Shape,), {"_names": names, "__doc__": doc, "__module__": __name__})
 
 
@@ -177,9 +197,9 @@ def _renumbered(error, index_of):
     if found is None:
         return error
     if found == ():  # a single shape: circledist names the field alone
-        text = message[:m.start(2) - 1] + message[m.end(2) + 1:]
+        text = message[: m.start(2) - 1] + message[m.end(2) + 1 :]
     else:
-        text = message[:m.start(2)] + ", ".join(str(int(i)) for i in found) + message[m.end(2):]
+        text = message[: m.start(2)] + ", ".join(str(int(i)) for i in found) + message[m.end(2) :]
     return type(error)(text)
 
 
@@ -193,10 +213,21 @@ def _checked_block_shape(kind, fields, index_of):
 
 # A dummy element per field, to learn the answers' dtypes from circledist itself (its rule: the
 # precision keyword, else the fields' dtypes) instead of restating that rule here.
-_DUMMY = {"p": [1.0, 2.0, 3.0], "origin": [0.0, 0.0, 0.0], "direction": [1.0, 0.0, 0.0],
-          "p0": [0.0, 0.0, 0.0], "p1": [1.0, 0.0, 0.0], "center": [0.0, 0.0, 0.0],
-          "normal": [0.0, 0.0, 1.0], "radius": 1.0, "start": [1.0, 0.0, 0.0], "angle": 1.0,
-          "inner_radius": 0.5, "outer_radius": 1.0, "sweep": 0.0}
+_DUMMY = {
+    "p": [1.0, 2.0, 3.0],
+    "origin": [0.0, 0.0, 0.0],
+    "direction": [1.0, 0.0, 0.0],
+    "p0": [0.0, 0.0, 0.0],
+    "p1": [1.0, 0.0, 0.0],
+    "center": [0.0, 0.0, 0.0],
+    "normal": [0.0, 0.0, 1.0],
+    "radius": 1.0,
+    "start": [1.0, 0.0, 0.0],
+    "angle": 1.0,
+    "inner_radius": 0.5,
+    "outer_radius": 1.0,
+    "sweep": 0.0,
+}
 
 
 def _dummy(shape):
@@ -223,10 +254,10 @@ def _indices(ndim_out, shapes, extra=()):
         for name, value in shape.fields.items():
             core = TRAILING_DIMS[name]
             batch = value.ndim - core
-            args += [value, out[ndim_out - batch:] + tuple(f"c{s}{name}{k}" for k in range(core))]
+            args += [value, out[ndim_out - batch :] + tuple(f"c{s}{name}{k}" for k in range(core))]
             layout.append((s, name))
     for value in extra:
-        args += [value, out[ndim_out - value.ndim:]]
+        args += [value, out[ndim_out - value.ndim :]]
     for k in range(ndim_out):
         args += [da.arange(batch_shape[k], chunks=-1 if batch_shape[k] <= 1 else "auto"), (out[k],)]
     return out, args, layout
@@ -235,8 +266,11 @@ def _indices(ndim_out, shapes, extra=()):
 def _field_batches(shapes, extra=()):
     """The batch shapes of the whole batch, for the blocks' messages: (shape, field) -> the
     field's; "d" -> within's d; "out" -> the answers'."""
-    batches = {(s, name): value.shape[:value.ndim - TRAILING_DIMS[name]]
-               for s, shape in enumerate(shapes) for name, value in shape.fields.items()}
+    batches = {
+        (s, name): value.shape[: value.ndim - TRAILING_DIMS[name]]
+        for s, shape in enumerate(shapes)
+        for name, value in shape.fields.items()
+    }
     if extra:
         batches["d"] = extra[0].shape
     batches["out"] = np.broadcast_shapes(*[s.batch_shape for s in shapes], *[x.shape for x in extra])
@@ -249,7 +283,7 @@ def _shifted(whole, local, starts):
     on it, a broadcast axis (length 1) left at 0."""
     if len(local) != len(whole):
         return None
-    offset = starts[len(starts) - len(whole):] if whole else []
+    offset = starts[len(starts) - len(whole) :] if whole else []
     return tuple(i + (o if n > 1 else 0) for i, o, n in zip(local, offset, whole))
 
 
@@ -257,8 +291,8 @@ def _unpack(layout, kinds, blocks, ndim_out, batches):
     """The two shapes of a block (blocks: the fields, the extra arrays, then one array of indices
     per output axis), the block's output shape, the extra arrays, and a function that renumbers
     the call's errors; an error names its element's index within the whole batch."""
-    starts = [int(axis[0]) if len(axis) else 0 for axis in blocks[len(blocks) - ndim_out:]]
-    blocks = blocks[:len(blocks) - ndim_out]
+    starts = [int(axis[0]) if len(axis) else 0 for axis in blocks[len(blocks) - ndim_out :]]
+    blocks = blocks[: len(blocks) - ndim_out]
     fields = [{}, {}]
     for (s, name), block in zip(layout, blocks):
         fields[s][name] = block
@@ -266,9 +300,13 @@ def _unpack(layout, kinds, blocks, ndim_out, batches):
     def field_index(s):
         def index_of(name, local):
             # A field's own batch axes (right-aligned with the output's); the shape's otherwise.
-            whole = batches[(s, name)] if (s, name) in batches else np.broadcast_shapes(
-                *[b for key, b in batches.items() if isinstance(key, tuple) and key[0] == s])
+            whole = (
+                batches[(s, name)]
+                if (s, name) in batches
+                else np.broadcast_shapes(*[b for key, b in batches.items() if isinstance(key, tuple) and key[0] == s])
+            )
             return _shifted(whole, local, starts)
+
         return index_of
 
     def answer_index(name, local):
@@ -278,7 +316,7 @@ def _unpack(layout, kinds, blocks, ndim_out, batches):
     a, b = (_checked_block_shape(kind, f, field_index(s)) for s, (kind, f) in enumerate(zip(kinds, fields)))
     # The block's shape: the fields' batch shapes broadcast, padded on the left to the output's
     # rank (cd returns the rank of its inputs, or a scalar for single shapes).
-    extra = blocks[len(layout):]
+    extra = blocks[len(layout) :]
     shape = np.broadcast_shapes(a.batch_shape, b.batch_shape, *[x.shape for x in extra])
     return a, b, (1,) * (ndim_out - len(shape)) + shape, extra, answer_index
 
@@ -313,9 +351,18 @@ def distance(a, b, *, precision=None, solver=None, workers=1):
     options = _options(precision, solver, workers)
     dtype = np.asarray(_core.distance(_dummy(a), _dummy(b), **options)).dtype
     out, args, layout = _indices(ndim, (a, b))
-    return da.blockwise(_distance_block, out, *args, dtype=dtype, concatenate=True,
-                        layout=layout, kinds=(a.kind, b.kind), ndim=ndim, options=options,
-                        batches=_field_batches((a, b)))
+    return da.blockwise(
+        _distance_block,
+        out,
+        *args,
+        dtype=dtype,
+        concatenate=True,
+        layout=layout,
+        kinds=(a.kind, b.kind),
+        ndim=ndim,
+        options=options,
+        batches=_field_batches((a, b)),
+    )
 
 
 def _within_block(*blocks, layout, kinds, ndim, options, batches):
@@ -328,13 +375,28 @@ def within(a, b, d, *, precision=None, solver=None, workers=1):
     a, b, (d,), ndim = _prepare(a, b, (d,))
     options = _options(precision, solver, workers)
     out, args, layout = _indices(ndim, (a, b), (d,))
-    return da.blockwise(_within_block, out, *args, dtype=bool, concatenate=True,
-                        layout=layout, kinds=(a.kind, b.kind), ndim=ndim, options=options,
-                        batches=_field_batches((a, b), (d,)))
+    return da.blockwise(
+        _within_block,
+        out,
+        *args,
+        dtype=bool,
+        concatenate=True,
+        layout=layout,
+        kinds=(a.kind, b.kind),
+        ndim=ndim,
+        options=options,
+        batches=_field_batches((a, b), (d,)),
+    )
 
 
-_RESULT_FIELDS = (("distance", ()), ("point_a", (3,)), ("point_b", (3,)), ("param_a", (2,)),
-                  ("param_b", (2,)), ("unique", ()))
+_RESULT_FIELDS = (
+    ("distance", ()),
+    ("point_a", (3,)),
+    ("point_b", (3,)),
+    ("param_a", (2,)),
+    ("param_b", (2,)),
+    ("unique", ()),
+)
 
 
 def _closest_block(*blocks, layout, kinds, ndim, options, batches):
@@ -367,28 +429,44 @@ def closest_points(a, b, *, precision=None, solver=None, workers=1):
     options = _options(precision, solver, workers)
     probe = _core.closest_points(_dummy(a), _dummy(b), **options)
     out, args, layout = _indices(ndim, (a, b))
-    solved = da.blockwise(_closest_block, out, *args, dtype=object, meta=np.empty((0,) * ndim, object),
-                          concatenate=True, layout=layout, kinds=(a.kind, b.kind), ndim=ndim,
-                          options=options, batches=_field_batches((a, b)))
+    solved = da.blockwise(
+        _closest_block,
+        out,
+        *args,
+        dtype=object,
+        meta=np.empty((0,) * ndim, object),
+        concatenate=True,
+        layout=layout,
+        kinds=(a.kind, b.kind),
+        ndim=ndim,
+        options=options,
+        batches=_field_batches((a, b)),
+    )
     fields = {}
     for name, trailing in _RESULT_FIELDS:
         dtype = np.asarray(getattr(probe, name)).dtype
         new_axis = list(range(ndim, ndim + len(trailing))) or None
-        fields[name] = da.map_blocks(operator.itemgetter(name), solved, dtype=dtype,
-                                     meta=np.empty((0,) * (ndim + len(trailing)), dtype),
-                                     new_axis=new_axis, chunks=solved.chunks + tuple((n,) for n in trailing),
-                                     name=f"closest-{name}-" + dask.base.tokenize(solved, name))
+        fields[name] = da.map_blocks(
+            operator.itemgetter(name),
+            solved,
+            dtype=dtype,
+            meta=np.empty((0,) * (ndim + len(trailing)), dtype),
+            new_axis=new_axis,
+            chunks=solved.chunks + tuple((n,) for n in trailing),
+            name=f"closest-{name}-" + dask.base.tokenize(solved, name),
+        )
     return ClosestPoints(**fields)
 
 
 # ---- pairs_within: spatial tiles --------------------------------------------------------------
+
 
 def _flat(shape):
     """The fields broadcast to the batch and flattened: (N, per-element...), one chunking."""
     n = int(np.prod(shape.batch_shape, dtype=np.int64))
     flat = {}
     for name, value in shape.fields.items():
-        core = value.shape[value.ndim - TRAILING_DIMS[name]:] if TRAILING_DIMS[name] else ()
+        core = value.shape[value.ndim - TRAILING_DIMS[name] :] if TRAILING_DIMS[name] else ()
         flat[name] = da.broadcast_to(value, shape.batch_shape + core).reshape((n,) + core)
     # The finest chunking any field has along the batch: broadcast fields follow it.
     chunks = max((v.chunks[0] for v in flat.values()), key=len)
@@ -426,7 +504,7 @@ def _flat_index(name, local, *, start, batch, fields):
         return None
     whole = tuple(fields.get(name, batch))
     index = np.unravel_index(start + local[0], batch) if batch else ()
-    index = index[len(index) - len(whole):]
+    index = index[len(index) - len(whole) :]
     return tuple(int(i) if n > 1 else 0 for i, n in zip(index, whole))
 
 
@@ -587,8 +665,7 @@ def _chunk_fields(g, label, flat):
     """Per chunk: the key of a task giving that chunk's fields as a dict."""
     names = list(flat)
     keys = [list(dask.core.flatten(v.__dask_keys__())) for v in flat.values()]
-    return [g.add((label, c), functools.partial(_fields_of, names), *[k[c] for k in keys])
-            for c in range(len(keys[0]))]
+    return [g.add((label, c), functools.partial(_fields_of, names), *[k[c] for k in keys]) for c in range(len(keys[0]))]
 
 
 def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1):
@@ -641,12 +718,21 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
     starts_b = np.r_[0, np.cumsum(chunks_b)].astype(np.int64)
     merged = []
     if na and nb:
+
         def index_of(shape, starts, c):
-            return functools.partial(_flat_index, start=int(starts[c]), batch=tuple(shape.batch_shape),
-                                     fields={n: v.shape[:v.ndim - TRAILING_DIMS[n]] for n, v in shape.fields.items()})
-        extents = g.compute([g.add(("extent", c), functools.partial(_extent, a.kind, index_of=index_of(a, starts_a, c)),
-                                   f)
-                             for c, f in enumerate(blocks_a)])
+            return functools.partial(
+                _flat_index,
+                start=int(starts[c]),
+                batch=tuple(shape.batch_shape),
+                fields={n: v.shape[: v.ndim - TRAILING_DIMS[n]] for n, v in shape.fields.items()},
+            )
+
+        extents = g.compute(
+            [
+                g.add(("extent", c), functools.partial(_extent, a.kind, index_of=index_of(a, starts_a, c)), f)
+                for c, f in enumerate(blocks_a)
+            ]
+        )
         extents = [x for x in extents if x is not None]
         if extents:
             lo = np.min([x[0] for x in extents], axis=0)
@@ -661,32 +747,60 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
             grid = _Grid(None, None, None, d, 0.0, n_chunks=len(chunks_a))
         # The tiles' sizes first, so that the graph below holds only non-empty parts.
         counts = g.compute(
-            [g.add(("count-a", c), functools.partial(_count_a, kind=a.kind, grid=grid, chunk=c), f)
-             for c, f in enumerate(blocks_a)]
-            + [g.add(("count-b", c), functools.partial(_count_b, kind=b.kind, grid=grid,
-                                                       index_of=None if self_pairs else index_of(b, starts_b, c)), f)
-               for c, f in enumerate(blocks_b)])
-        count_a, count_b = np.array(counts[:len(blocks_a)]), np.array(counts[len(blocks_a):])
-        split_a = [g.add(("split-a", c), functools.partial(_split, kind=a.kind, grid=grid, chunk=c,
-                                                           offset=starts_a[c], is_a=True), f)
-                   for c, f in enumerate(blocks_a)]
-        split_b = [g.add(("split-b", c), functools.partial(_split, kind=b.kind, grid=grid, chunk=c,
-                                                           offset=starts_b[c], is_a=False), f)
-                   for c, f in enumerate(blocks_b)]
+            [
+                g.add(("count-a", c), functools.partial(_count_a, kind=a.kind, grid=grid, chunk=c), f)
+                for c, f in enumerate(blocks_a)
+            ]
+            + [
+                g.add(
+                    ("count-b", c),
+                    functools.partial(
+                        _count_b, kind=b.kind, grid=grid, index_of=None if self_pairs else index_of(b, starts_b, c)
+                    ),
+                    f,
+                )
+                for c, f in enumerate(blocks_b)
+            ]
+        )
+        count_a, count_b = np.array(counts[: len(blocks_a)]), np.array(counts[len(blocks_a) :])
+        split_a = [
+            g.add(
+                ("split-a", c),
+                functools.partial(_split, kind=a.kind, grid=grid, chunk=c, offset=starts_a[c], is_a=True),
+                f,
+            )
+            for c, f in enumerate(blocks_a)
+        ]
+        split_b = [
+            g.add(
+                ("split-b", c),
+                functools.partial(_split, kind=b.kind, grid=grid, chunk=c, offset=starts_b[c], is_a=False),
+                f,
+            )
+            for c, f in enumerate(blocks_b)
+        ]
         per_chunk = {c: [] for c in range(len(chunks_a))}
         for t in np.flatnonzero(count_a.sum(axis=0) * count_b.sum(axis=0)):
             t = int(t)
             ca, cb = np.flatnonzero(count_a[:, t]), np.flatnonzero(count_b[:, t])
             answered = g.add(
                 ("tile", t),
-                functools.partial(_tile_pairs, kinds=kinds, d=d, self_pairs=self_pairs, options=options,
-                                  a_bounds={int(c): (int(starts_a[c]), int(starts_a[c + 1])) for c in ca}),
+                functools.partial(
+                    _tile_pairs,
+                    kinds=kinds,
+                    d=d,
+                    self_pairs=self_pairs,
+                    options=options,
+                    a_bounds={int(c): (int(starts_a[c]), int(starts_a[c + 1])) for c in ca},
+                ),
                 [g.add(("part-a", int(c), t), operator.getitem, split_a[c], t) for c in ca],
-                [g.add(("part-b", int(c), t), operator.getitem, split_b[c], t) for c in cb])
+                [g.add(("part-b", int(c), t), operator.getitem, split_b[c], t) for c in cb],
+            )
             for c in ca:
                 per_chunk[c].append(g.add(("answer", int(c), t), operator.getitem, answered, int(c)))
-        merged = [g.add(("merged", c), functools.partial(_merge, dtype=dtype), per_chunk[c])
-                  for c in range(len(chunks_a))]
+        merged = [
+            g.add(("merged", c), functools.partial(_merge, dtype=dtype), per_chunk[c]) for c in range(len(chunks_a))
+        ]
     else:
         merged = [g.add(("merged", 0), functools.partial(_merge, dtype=dtype), [])]
     columns = []
@@ -697,6 +811,5 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
         column = _Graph(f"pairs-within-{label}-{token}", [solved])
         for c, m in enumerate(merged):
             column.add((c,), operator.getitem, m, k)
-        columns.append(da.Array(column.graph(), column.name, chunks=((np.nan,) * len(merged),),
-                                dtype=column_dtype))
+        columns.append(da.Array(column.graph(), column.name, chunks=((np.nan,) * len(merged),), dtype=column_dtype))
     return tuple(columns)

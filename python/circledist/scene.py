@@ -52,7 +52,7 @@ class _Grown:
     def reserve(self, extra: int) -> None:
         if self.count + extra > len(self.data):
             grown = np.empty((max(2 * len(self.data), self.count + extra, 16),) + self.data.shape[1:], self.data.dtype)
-            grown[:self.count] = self.data[:self.count]
+            grown[: self.count] = self.data[: self.count]
             self.data = grown
 
     def append(self, value) -> None:
@@ -62,12 +62,12 @@ class _Grown:
 
     def extend(self, values: np.ndarray) -> None:
         self.reserve(len(values))
-        self.data[self.count:self.count + len(values)] = values
+        self.data[self.count : self.count + len(values)] = values
         self.count += len(values)
 
     @property
     def array(self) -> np.ndarray:
-        return self.data[:self.count]
+        return self.data[: self.count]
 
 
 class _Group:
@@ -274,11 +274,11 @@ class Scene:
         self._names: list[str] = []
         self._index: dict[str, int] = {}
         self._groups: dict[tuple, _Group] = {}
-        self._keys: dict[tuple, int] = {}          # group key -> group number
-        self._group_list: list[_Group] = []        # group number -> group
+        self._keys: dict[tuple, int] = {}  # group key -> group number
+        self._group_list: list[_Group] = []  # group number -> group
         self._item_group = array("q")  # per item: its group number
-        self._item_row = array("q")    # per item: its row in the group
-        self._broadphase = None        # made by the first query; holds items [0, len(it))
+        self._item_row = array("q")  # per item: its row in the group
+        self._broadphase = None  # made by the first query; holds items [0, len(it))
         self.last_stats: dict = {}
         if shapes is not None:
             items = shapes.items() if hasattr(shapes, "items") else shapes
@@ -288,12 +288,15 @@ class Scene:
     # ---- pickling and copying: the stored arrays (the hierarchy is rebuilt on demand) -------
     def __getstate__(self) -> dict:
         with self._current(build=False):
-            return {"names": list(self._names),
-                    "groups": [(key, g.kind, [f.copy() for f in g.fields], g.ids.copy())
-                               for key, g in self._groups.items()],
-                    "item_group": np.array(self._item_group, dtype=np.int64),
-                    "item_row": np.array(self._item_row, dtype=np.int64),
-                    "last_stats": dict(self.last_stats)}
+            return {
+                "names": list(self._names),
+                "groups": [
+                    (key, g.kind, [f.copy() for f in g.fields], g.ids.copy()) for key, g in self._groups.items()
+                ],
+                "item_group": np.array(self._item_group, dtype=np.int64),
+                "item_row": np.array(self._item_row, dtype=np.int64),
+                "last_stats": dict(self.last_stats),
+            }
 
     def __setstate__(self, state: dict) -> None:
         try:
@@ -324,8 +327,9 @@ class Scene:
         item_row = np.asarray(state["item_row"])
         for label, column in (("item_group", item_group), ("item_row", item_row)):
             if column.shape != (n,) or (n and column.dtype.kind not in "iu"):
-                raise ValueError(f"{label} must hold one integer per name ({n}), got shape {column.shape}, "
-                                 f"dtype {column.dtype}")
+                raise ValueError(
+                    f"{label} must hold one integer per name ({n}), got shape {column.shape}, " f"dtype {column.dtype}"
+                )
         item_group, item_row = item_group.astype(np.int64), item_row.astype(np.int64)
         self._groups, self._keys, self._group_list = {}, {}, []
         owner = np.full(n, -1, np.int64)  # the group that holds each item, from the groups' ids
@@ -335,8 +339,10 @@ class Scene:
                 raise ValueError(f"group {number}: unknown kind {kind!r}")
             fields = [np.asarray(f) for f in fields]
             if len(fields) != len(KIND_FIELDS[kind]) + 1:
-                raise ValueError(f"group {number}: a {kind} group has {len(KIND_FIELDS[kind]) + 1} fields "
-                                 f"(the sweep last), got {len(fields)}")
+                raise ValueError(
+                    f"group {number}: a {kind} group has {len(KIND_FIELDS[kind]) + 1} fields "
+                    f"(the sweep last), got {len(fields)}"
+                )
             if len(key) == 2:  # written before groups had dtypes: float64 throughout, with a sweep
                 key = key + (tuple(np.dtype(np.float64) for _ in fields), True)
             if len(key) != 4 or key[0] != kind or len(key[2]) != len(fields):
@@ -347,8 +353,9 @@ class Scene:
             ids = ids.astype(np.int64)
             for name, f in zip(KIND_FIELDS[kind] + ("sweep",), fields):
                 if f.ndim < 1 or len(f) != len(ids):
-                    raise ValueError(f"group {number}: field {name} has {len(f) if f.ndim else 0} rows for "
-                                     f"{len(ids)} ids")
+                    raise ValueError(
+                        f"group {number}: field {name} has {len(f) if f.ndim else 0} rows for " f"{len(ids)} ids"
+                    )
             if len(ids) and (ids.min() < 0 or ids.max() >= n):
                 raise ValueError(f"group {number}: an id is not an item number in [0, {n})")
             rows = np.arange(len(ids))
@@ -420,8 +427,10 @@ class Scene:
         if not isinstance(shape, _core.Shape):
             raise TypeError(f"Scene.add: {name!r} must be a circledist shape, got {type(shape).__name__}")
         if shape.batch_shape != ():
-            raise ValueError(f"Scene.add: {name!r} is a batch of shape {shape.batch_shape}; "
-                             "add batches with Scene.extend(names, batch)")
+            raise ValueError(
+                f"Scene.add: {name!r} is a batch of shape {shape.batch_shape}; "
+                "add batches with Scene.extend(names, batch)"
+            )
         if not isinstance(name, str):
             raise TypeError(f"Scene: shape names must be strings, got {name!r}")
         with self._lock.writing():
@@ -487,7 +496,7 @@ class Scene:
         values = []
         for field in KIND_FIELDS[kind] + ("sweep",):
             a = arrays.get(field, _NO_SWEEP)
-            trailing = a.shape[a.ndim - TRAILING_DIMS[field]:] if TRAILING_DIMS[field] else ()
+            trailing = a.shape[a.ndim - TRAILING_DIMS[field] :] if TRAILING_DIMS[field] else ()
             values.append(np.broadcast_to(a, shape + trailing).reshape((-1,) + trailing))
         with self._lock.writing():
             self._insert(names, [(kind, values, np.arange(count), "sweep" in arrays)], distinct=generated)
@@ -504,8 +513,12 @@ class Scene:
         item_group = np.empty(len(names), np.int64)
         item_row = np.empty(len(names), np.int64)
         for kind, values, positions, swept in parts:
-            group, number = self._group(kind, values[0].shape[1:] if kind == "Bezier" else None,
-                                        [np.zeros(v.shape[1:], v.dtype) for v in values], swept)
+            group, number = self._group(
+                kind,
+                values[0].shape[1:] if kind == "Bezier" else None,
+                [np.zeros(v.shape[1:], v.dtype) for v in values],
+                swept,
+            )
             item_group[positions] = number
             item_row[positions] = np.arange(len(group), len(group) + len(positions))
             group.extend(values, start + np.asarray(positions, dtype=np.int64))
@@ -634,7 +647,7 @@ class Scene:
         bp = self._broadphase
         if len(bp) < len(self._names):
             fresh = [(number, g) for number, g in enumerate(self._group_list) if g.indexed < len(g)]
-            bp.add([(g.rows_from(g.indexed), g.ids[g.indexed:], number, g.indexed) for number, g in fresh], workers)
+            bp.add([(g.rows_from(g.indexed), g.ids[g.indexed :], number, g.indexed) for number, g in fresh], workers)
             for _, g in fresh:
                 g.indexed = len(g)
         return bp
@@ -644,8 +657,9 @@ class Scene:
         supported = _supported()
         for g in self._group_list:
             if (kind, g.kind) not in supported:
-                raise TypeError(f"circledist has no query between a {kind} and a {g.kind} "
-                                f"(the scene holds {g.kind} shapes)")
+                raise TypeError(
+                    f"circledist has no query between a {kind} and a {g.kind} " f"(the scene holds {g.kind} shapes)"
+                )
 
     def _evaluate(self, shape, items: np.ndarray, fn, *args) -> np.ndarray:
         """fn(shape, batch_of_items, *args) for items grouped by kind; results in items' order."""
@@ -736,7 +750,7 @@ class Scene:
         # 1. An upper bound tau on the k-th distance: the exact distances of the few shapes of
         #    smallest lower bound (the broadphase's best-first search).
         seeds, _ = bp.nearest_by_bound(shape, k + 2 + len(skip))
-        seeds = seeds[~np.isin(seeds, skip_arr)][:k + 2]
+        seeds = seeds[~np.isin(seeds, skip_arr)][: k + 2]
         if len(seeds):
             d = self._evaluate(shape, seeds, _core.distance)
             known.update(zip(seeds.tolist(), d.tolist()))
@@ -757,9 +771,9 @@ class Scene:
             # own limit (its pair's margin) decides.
             if np.isfinite(tau) and bound[at] > bp.limit(shape, tau):
                 break
-            part = items[at:at + chunk]
+            part = items[at : at + chunk]
             if np.isfinite(tau):
-                part = part[bound[at:at + chunk] <= bp.limit(shape, tau, part)]
+                part = part[bound[at : at + chunk] <= bp.limit(shape, tau, part)]
                 d = self._evaluate(shape, part, _core.distance_if_within, tau)
             else:
                 d = self._evaluate(shape, part, _core.distance)

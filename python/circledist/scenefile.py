@@ -7,11 +7,13 @@ the package (``circledist/scene.schema.json``, see ``schema_text()``); the ``.np
 the same content as arrays, for scenes of millions of shapes. ``python -m circledist --help``
 summarizes both; README.md shows their use.
 
-Format version 3 (version 2 without annuli, version 1 without arcs either). The version goes up with any change to what a valid
+Format version 3 (version 2 without annuli, version 1 without arcs either). The version goes up with any
+change to what a valid
 file may hold or to what it means (a new kind, field, effect or array, a changed default); a
 reader refuses files of a newer version with a message saying so instead of misreading them, and
 keeps reading older ones. A file of an older version may hold only what that version holds (an
-arc in a version 1 file, an annulus in a version 2 one, is refused); `write_scene` writes the oldest version that holds the scene.
+arc in a version 1 file, an annulus in a version 2 one, is refused); `write_scene` writes the oldest version
+that holds the scene.
 Files must say ``"format": "circledist-scene"`` and ``"version"``: without them a JSON file is
 refused (the message says which two fields to add), so that a file is never read under a version
 it was not written for.
@@ -39,31 +41,100 @@ from .scene import MAX_CONTROL_POINTS, ROLE_TRAILING_DIMS  # noqa: F401
 # The format, its checks and the two file types live in the modules below; every name stays
 # reachable here, as circledist.scenefile.NAME.
 from ._scene_format import (  # noqa: F401
-    FORMAT, KINDS, KIND_SINCE, PAIR_EFFECTS, SCENE_EFFECTS, SCHEMA_RESOURCE, SHAPE_BYTES,
-    SceneFile, SceneFileError, ShapeEntry, VERSION, VERSIONS, _FILE_TYPES, _LINE_BREAKS, _NPZ_TOP,
-    _REFERENCE, _RowFields, _SWEEP, _SWEEP_ROLE, _VALIDATOR, _check_angles, _check_bytes,
-    _check_directions, _check_shape_count, _check_texts, _column, _entries_from_json,
-    _entry_from_json, _error, _finite_array, _float_column, _gigabytes, _json_index,
-    _memory_budget, _open_regular, _refused_rows, _roles, _text, _validator, schema, schema_text)
+    FORMAT,
+    KINDS,
+    KIND_SINCE,
+    PAIR_EFFECTS,
+    SCENE_EFFECTS,
+    SCHEMA_RESOURCE,
+    SHAPE_BYTES,
+    SceneFile,
+    SceneFileError,
+    ShapeEntry,
+    VERSION,
+    VERSIONS,
+    _FILE_TYPES,
+    _LINE_BREAKS,
+    _NPZ_TOP,
+    _REFERENCE,
+    _RowFields,
+    _SWEEP,
+    _SWEEP_ROLE,
+    _VALIDATOR,
+    _check_angles,
+    _check_bytes,
+    _check_directions,
+    _check_shape_count,
+    _check_texts,
+    _column,
+    _entries_from_json,
+    _entry_from_json,
+    _error,
+    _finite_array,
+    _float_column,
+    _gigabytes,
+    _json_index,
+    _memory_budget,
+    _open_regular,
+    _refused_rows,
+    _roles,
+    _text,
+    _validator,
+    schema,
+    schema_text,
+)
 from ._scene_queries import (  # noqa: F401
-    _check_names, _check_queries)
+    _check_names,
+    _check_queries,
+)
 from ._scene_json import (  # noqa: F401
-    _MAX_DEPTH, _check_format, _check_kind_version, _file_version, _nested_too_deeply,
-    _not_json_constant, _parse_json, _scene_from_json, scene_from_json)
+    _MAX_DEPTH,
+    _check_format,
+    _check_kind_version,
+    _file_version,
+    _nested_too_deeply,
+    _not_json_constant,
+    _parse_json,
+    _scene_from_json,
+    scene_from_json,
+)
 from ._scene_npz import (  # noqa: F401
-    _Header, _NPY_HEADERS, _NpzArrays, _WORD_CHARS, _ZIP_ERRORS, _ZIP_METHODS, _npz_field,
-    _npz_index, _npz_integer, _npz_string, _scene_from_npz, _scene_from_npz_handle, scene_from_npz)
+    _Header,
+    _NPY_HEADERS,
+    _NpzArrays,
+    _WORD_CHARS,
+    _ZIP_ERRORS,
+    _ZIP_METHODS,
+    _npz_field,
+    _npz_index,
+    _npz_integer,
+    _npz_string,
+    _scene_from_npz,
+    _scene_from_npz_handle,
+    scene_from_npz,
+)
 
 
-__all__ = ["FORMAT", "VERSION", "SceneFileError", "SceneFile", "ShapeEntry", "read_scene", "write_scene",
-           "schema", "schema_text", "SCHEMA_RESOURCE"]
+__all__ = [
+    "FORMAT",
+    "VERSION",
+    "SceneFileError",
+    "SceneFile",
+    "ShapeEntry",
+    "read_scene",
+    "write_scene",
+    "schema",
+    "schema_text",
+    "SCHEMA_RESOURCE",
+]
 
 
 def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
     """Reads and validates a scene file, JSON or ``.npz``.
 
     The format (``circledist --help``, and the JSON Schema ``scene.schema.json`` in the package):
-    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need, or 3, which annuli need), the shapes (single
+    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need, or 3, which annuli need), the
+    shapes (single
     or batches) and the queries.
 
     Parameters
@@ -162,7 +233,7 @@ def _entries_of(shapes) -> tuple[list, list]:
         for f, role in _roles(kind).items():
             a = np.asarray(getattr(shape, f), dtype=np.float64)
             dims = ROLE_TRAILING_DIMS[role]
-            trailing = a.shape[a.ndim - dims:] if dims else ()
+            trailing = a.shape[a.ndim - dims :] if dims else ()
             # A column: one row per shape, C order; one value if all rows agree.
             a = broadcast[f] = np.broadcast_to(a, batch + trailing).reshape((count,) + trailing)
             bits = a.view(np.uint64)  # bit for bit: -0.0 stays -0.0
@@ -277,8 +348,9 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
             if count is None:  # fields already lists
                 data["shapes"].append({"name": name, "kind": kind, **fields})
             else:
-                data["shapes"].append({"name": name, "kind": kind, "count": count,
-                                       **{f: a.tolist() for f, a in fields.items()}})
+                data["shapes"].append(
+                    {"name": name, "kind": kind, "count": count, **{f: a.tolist() for f, a in fields.items()}}
+                )
         if queries:
             data["queries"] = queries
         text = _json_text(data)
@@ -287,8 +359,11 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
         payload = text.encode("utf-8")
         _write_atomically(path, lambda f: f.write(payload))
         return
-    arrays = {"format": np.array(FORMAT), "version": np.array(_file_version(e[1] for e in entries), dtype=np.int64),
-              "shapes": np.array([e[0] for e in entries], dtype=str)}
+    arrays = {
+        "format": np.array(FORMAT),
+        "version": np.array(_file_version(e[1] for e in entries), dtype=np.int64),
+        "shapes": np.array([e[0] for e in entries], dtype=str),
+    }
     if description:
         arrays["description"] = np.array(description)
     for name, kind, count, fields in entries:
@@ -302,10 +377,12 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
     # (a 10^6-shape file is read in a second or two), except for names holding a NUL, which NumPy's
     # string arrays and the zip's member names cut short; where that check declines, the file is
     # read back before it replaces anything, so that the error raised is the reader's.
-    fine = (_written_scene_is_valid(entries, columns, queries, description)
-            and not any("\x00" in name for name, _, _, _ in entries))
-    _write_atomically(path, lambda f: np.savez(f, **arrays),
-                      check=None if fine else lambda tmp: scene_from_npz(tmp, path))
+    fine = _written_scene_is_valid(entries, columns, queries, description) and not any(
+        "\x00" in name for name, _, _, _ in entries
+    )
+    _write_atomically(
+        path, lambda f: np.savez(f, **arrays), check=None if fine else lambda tmp: scene_from_npz(tmp, path)
+    )
 
 
 def _item_encoder():
@@ -313,11 +390,13 @@ def _item_encoder():
     of the time of a short item), or json.dumps where the C encoder is missing or differs."""
     make = getattr(json.encoder, "c_make_encoder", None)
     try:
-        encoder = make(None, json.JSONEncoder().default, json.encoder.encode_basestring_ascii, None, ": ", ", ",
-                       False, False, True)
+        encoder = make(
+            None, json.JSONEncoder().default, json.encoder.encode_basestring_ascii, None, ": ", ", ", False, False, True
+        )
 
         def encode(item) -> str:
             return "".join(encoder(item, 0))
+
         sample = {"name": "s\u00e9", "kind": "point", "p": [0.1, -0.0, 1e-300], "sweep": 2, "t": [True, None]}
         if encode(sample) == json.dumps(sample):
             return encode

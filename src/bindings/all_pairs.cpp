@@ -5,6 +5,7 @@
 // distance is the one distance() gives, to the bit, and no geometry is written here.
 #include "all_pairs_doc.hpp"
 #include "module.hpp"
+#include "all_pairs_culling.hpp"
 
 #include <circledist/broadphase.hpp>
 
@@ -27,335 +28,6 @@
 namespace circledist::python {
 namespace {
 
-using Volumes = std::vector<Volume<double>>;
-using PairList = BroadPairs;
-
-Index flat_size(const Shape& s) {
-  Index n = 1;
-  for (const Index d : s.batch) n *= d;
-  return n;
-}
-
-// The volumes of the elements [begin, end) of a shape's batch, in double (the float64 values of
-// every field: a long-double or float32 query's shapes differ from them by far less than the
-// culling margin).
-template <class S> void fill_volumes(const Shape& s, const FieldElements& e, Index begin, Index end, Volume<double>* out) {
-  const size_t nf = s.fields.size();
-  std::array<const double*, kMaxShapeFields> ptr{};
-  for (Index i = begin; i < end; ++i) {
-    for (size_t f = 0; f < nf; ++f) ptr[f] = s.fields[f].data() + e.of(f, i) * s.fields[f].width;
-    out[i] = circledist::volume(ShapeTraits<S>::make(ptr.data(), s.points), *ptr[nf - 1]);
-  }
-}
-
-void fill_volumes(const Shape& s, Index begin, Index end, Volume<double>* out) {
-  const FieldElements e(s);
-  visit_kind<double>(s.kind, [&](auto tag) { fill_volumes<typename decltype(tag)::type>(s, e, begin, end, out); });
-}
-
-// The volumes of several shapes' elements, one after the other (flat indices, in order).
-Volumes volumes_of(const std::vector<const Shape*>& shapes, int workers) {
-  Index total = 0;
-  for (const Shape* s : shapes) total += flat_size(*s);
-  Volumes out(static_cast<size_t>(total));
-  Index at = 0;
-  for (const Shape* s : shapes) {
-    Volume<double>* base = out.data() + at;
-    run_released(flat_size(*s), workers, [&](Index begin, Index end) { fill_volumes(*s, begin, end, base); });
-    at += flat_size(*s);
-  }
-  return out;
-}
-
-// Runs build(interrupted) without the GIL, `interrupted` asking for Ctrl-C (SignalCheck) now and
-// then: a build it stopped (BuildInterrupted) raises KeyboardInterrupt here.
-template <class Build> auto interruptible(Build&& build) {
-  SignalCheck signals;
-  const Interrupted interrupted = std::ref(signals);
-  try {
-    py::gil_scoped_release release;
-    return build(interrupted);
-  } catch (const BuildInterrupted&) {
-    signals.raise_if_seen();
-    throw;
-  }
-}
-
-// The hierarchy over a set's volumes, built without the GIL on up to `workers` threads.
-BoundingVolumeHierarchy<double> tree_of(Volumes volumes, int workers) {
-  return interruptible([&](const Interrupted& interrupted) {
-    return BoundingVolumeHierarchy<double>(std::move(volumes), 4, workers, interrupted);
-  });
-}
-
-// The culling of queries a against a set b: a's volumes, their spatial order, and the
-// hierarchy over b's volumes. With workers to spare, a's side is made on a thread of its own
-// while b's tree is built on the workers, so that each side's steps that one thread takes (the
-// allocations, the tree's top, the order's last merge) run beside the other's work. The volumes
-// and the tree's build stop on Ctrl-C (interruptible).
-struct Culling {
-  Volumes va;
-  std::vector<BroadIndex> order;
-  BoundingVolumeHierarchy<double> tree;
-
-  Culling(const Shape& a, const Shape& b, int workers) {
-    interruptible([&](const Interrupted& interrupted) {
-      build(a, b, workers, interrupted);
-      return 0;
-    });
-  }
-
- private:
-  void build(const Shape& a, const Shape& b, int workers, const Interrupted& interrupted) {
-    const auto volumes = [&](const Shape& s, int threads) {
-      Volumes out(static_cast<size_t>(flat_size(s)));
-      if (!run_in_chunks(flat_size(s), threads, [&](Index begin, Index end) { fill_volumes(s, begin, end, out.data()); },
-                         [&](Index) { return interrupted(); }))
-        throw BuildInterrupted();
-      return out;
-    };
-    const auto side_a = [&](int threads) {
-      va = volumes(a, threads);
-      order = spatial_order(va, threads);
-    };
-    std::thread thread;
-    std::exception_ptr failure;
-    if (workers > 1) {
-      try {
-        thread = std::thread([&] {
-          try {
-            side_a(1);
-          } catch (...) {
-            failure = std::current_exception();
-          }
-        });
-      } catch (const std::system_error&) {  // no thread to be had: one side after the other
-      }
-    }
-    if (!thread.joinable()) side_a(workers);
-    try {
-      tree = BoundingVolumeHierarchy<double>(volumes(b, workers), 4, workers, interrupted);
-    } catch (...) {
-      if (thread.joinable()) thread.join();
-      throw;
-    }
-    if (thread.joinable()) thread.join();
-    if (failure) std::rethrow_exception(failure);
-  }
-};
-
-// progress= of the all-pairs queries: the work is several stages run one after the other (the
-// search for candidates over a's shapes, the candidates' exact distances, ...), each of which
-// reports (done, total) of its own through run_released. The caller sees one count: `stages`
-// times len(a) steps, each stage worth len(a) of them; stage(s) is the callable a stage reports
-// to, which scales its count into stage s's share. Repeated values are not passed on, so the
-// caller sees (total, total) once, at the end (finish()).
-struct StagedProgress {
-  py::object user;  // None, or progress(done, total)
-  Index per_stage, total;
-  std::shared_ptr<Index> last = std::make_shared<Index>(-1);
-
-  StagedProgress(py::object progress, int stages, Index n) : user(std::move(progress)), per_stage(n), total(stages * n) {}
-
-  // A callable progress(done, of) for stage s: it reports base + within(done, of) of `total` to
-  // the caller's progress, each value once; None when the caller asked for no progress.
-  template <class Within> py::object reporter(int s, Within within) const {
-    if (user.is_none()) return py::none();
-    return py::cpp_function([user = user, last = last, base = s * per_stage, total = total, within](Index done, Index of) {
-      const Index scaled = base + within(done, of);
-      if (scaled == *last) return;
-      *last = scaled;
-      user(scaled, total);
-    });
-  }
-  // What stage s (0-based) reports to. Not part(s, 0, 1, 1): that rounds per_stage * (done / of)
-  // where this rounds per_stage * done / of (49 * (1 / 49) < 1), and reports the stage's start,
-  // not its end, for of = 0.
-  py::object stage(int s) const {
-    return reporter(s, [per_stage = per_stage](Index done, Index of) {
-      return of > 0 ? Index(double(per_stage) * double(done) / double(of)) : per_stage;
-    });
-  }
-  // A stage's share of a count: blocks of a stage (the candidates' distances in blocks) report
-  // through a stage of their own, base offset by the blocks before.
-  py::object part(int s, Index first, Index count, Index of) const {
-    return reporter(s, [per_stage = per_stage, first, count, of](Index done, Index block) {
-      const double fraction = of > 0 ? (double(first) + double(count) * double(done) / double(std::max<Index>(block, 1))) / double(of) : 1.0;
-      return Index(double(per_stage) * fraction);
-    });
-  }
-  void finish() const {
-    if (user.is_none() || *last == total) return;
-    *last = total;
-    if (!report_progress(user, total, total)) throw py::error_already_set();
-  }
-};
-
-// The most candidate pairs pairs_within stores by default (16 bytes each, twice while they are
-// sorted, and the answers' 24 bytes a pair on top): beyond them it refuses (max_pairs).
-constexpr Index kDefaultMaxPairs = 100000000;
-
-// A count with thousands separators, for messages.
-std::string grouped(Index n) {
-  std::string digits = std::to_string(n), out;
-  for (size_t k = 0; k < digits.size(); ++k) {
-    if (k > 0 && (digits.size() - k) % 3 == 0) out += ',';
-    out += digits[k];
-  }
-  return out;
-}
-
-// max_pairs= of the pairs queries: None (no limit) or an integer >= 0; -1 stands for None.
-Index max_pairs_of(const char* owner, py::handle max_pairs) {
-  if (max_pairs.is_none()) return -1;
-  constexpr const char* wanted = "an integer >= 0 or None";
-  const long long value = integer_of(owner, "max_pairs", max_pairs, wanted);
-  if (value < 0)
-    throw py::value_error(std::string(owner) + ": max_pairs must be " + wanted + ", got " + std::to_string(value));
-  return Index(value);
-}
-
-// Candidate pairs (i, j), i in [0, n), found by find(begin, end, out) over chunks of [0, n) (the
-// positions of a spatial order of the queries) on `workers` threads, then sorted by (i, j): the
-// same list for every worker count. find's positions [begin, end) must name queries no other
-// chunk names (a permutation's positions do), so that each query's pairs come from one chunk:
-// each chunk then counts its queries' pairs and moves them to their place alone, and no thread
-// joins the parts by itself.
-// max_pairs >= 0: the candidates are counted as they are found, query by query, and once more
-// than max_pairs are, the search stops and MemoryError is raised (owner's name in its message):
-// no more than max_pairs (and the last query's pairs on each thread) are ever held.
-// `find` is type-erased: one copy of this function serves every caller (a template copy per
-// caller's lambda cost the module 8 kB each), and a call per chunk or per query is nothing
-// against the tree walk it makes.
-using FindPairs = std::function<void(Index, Index, PairList&)>;
-PairList chunked_pairs(Index n, int workers, const FindPairs& find, py::handle progress = py::none(),
-                       Index max_pairs = -1, const char* owner = "pairs_within") {
-  const Index chunk = chunk_size(n, workers);
-  std::vector<PairList> parts(static_cast<size_t>((n + chunk - 1) / chunk));
-  std::vector<size_t> start(size_t(n) + 1, 0);  // start[i + 1]: query i's pairs, then where they end
-  std::atomic<Index> found{0};
-  std::atomic<bool> over{false};
-  run_released(n, workers, [&](Index begin, Index end) {
-    PairList& part = parts[size_t(begin / chunk)];
-    if (max_pairs < 0) {
-      find(begin, end, part);
-    } else {
-      for (Index k = begin; k < end && !over.load(std::memory_order_relaxed); ++k) {
-        const Index before = Index(part.size());
-        find(k, k + 1, part);
-        const Index added = Index(part.size()) - before;
-        if (found.fetch_add(added, std::memory_order_relaxed) + added > max_pairs) over.store(true, std::memory_order_relaxed);
-      }
-      if (over.load(std::memory_order_relaxed)) {
-        PairList().swap(part);
-        return;
-      }
-    }
-    for (const auto& p : part) ++start[size_t(p.first) + 1];
-  }, progress, chunk);
-  if (over) {
-    const std::string text = std::string(owner) + ": more than max_pairs=" + grouped(max_pairs) +
-                             " candidate pairs to test (pairs whose bounds put them within d, and the margin, of each "
-                             "other; every one would be held in memory): pass a smaller d, or a larger max_pairs (None: "
-                             "no limit)";
-    PyErr_SetString(PyExc_MemoryError, text.c_str());
-    throw py::error_already_set();
-  }
-  PairList out;
-  std::vector<size_t> at;
-  {
-    py::gil_scoped_release release;
-    for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-    out.resize(start.back());
-    at.assign(start.begin(), start.end() - 1);
-  }
-  // Copying and sorting a large list takes a good part of a second: Ctrl-C is heard between chunks.
-  run_released(Index(parts.size()), workers, [&](Index first, Index last) {
-    for (Index k = first; k < last; ++k) {
-      for (const auto& p : parts[size_t(k)]) out[at[size_t(p.first)]++] = p;
-      PairList().swap(parts[size_t(k)]);
-    }
-  }, py::none(), 1);
-  run_released(n, workers, [&](Index first, Index last) {
-    for (Index i = first; i < last; ++i)
-      if (start[size_t(i) + 1] - start[size_t(i)] > 1)
-        std::sort(out.begin() + std::ptrdiff_t(start[size_t(i)]), out.begin() + std::ptrdiff_t(start[size_t(i) + 1]));
-  });
-  return out;
-}
-
-// The shape's elements at the flat indices rows[0, count), as a batch of shape (count,): each
-// field keeps its dtype flags (float32 given, long double values), a field of one value stays
-// one value. Arrays are made with the GIL held, filled without it.
-Shape gather(const Shape& s, const FieldElements& e, const Index* rows, Index count, int workers) {
-  std::vector<Field> fields;
-  struct Copy {
-    const double* from;
-    double* to;
-    const long double* wide_from = nullptr;
-    long double* wide_to = nullptr;
-    Index width;
-    size_t field;
-  };
-  std::vector<Copy> copies;
-  for (size_t k = 0; k < s.fields.size(); ++k) {
-    const Field& f = s.fields[k];
-    if (e.maps[k].mode == FieldElements::Mode::One) {
-      fields.push_back(f);
-      continue;
-    }
-    Field g = f;
-    std::vector<Index> shape{count};
-    for (Index d = Index(f.batch.size()); d < f.array.ndim(); ++d) shape.push_back(f.array.shape(d));
-    g.array = decltype(f.array)(shape);
-    g.batch = {count};
-    g.is_widened = false;
-    g.widened = no_array<Field::Wide>();
-    Copy c{f.data(), g.array.mutable_data(), nullptr, nullptr, f.width, k};
-    if (f.is_wide) {
-      g.wide = Field::Wide(shape);
-      c.wide_from = f.wide.data();
-      c.wide_to = g.wide.mutable_data();
-    }
-    copies.push_back(c);
-    fields.push_back(std::move(g));
-  }
-  {
-    py::gil_scoped_release release;
-    run_in_chunks(count, workers, [&](Index begin, Index end) {
-      for (const Copy& c : copies) {
-        for (Index i = begin; i < end; ++i) {
-          const Index at = e.of(c.field, rows[i]) * c.width;
-          std::copy_n(c.from + at, c.width, c.to + i * c.width);
-          if (c.wide_from) std::copy_n(c.wide_from + at, c.width, c.wide_to + i * c.width);
-        }
-      }
-    }, [](Index) { return false; });  // a copy: over in milliseconds, no Ctrl-C check needed
-  }
-  return Shape(s.kind, std::move(fields));
-}
-
-// One side of a query: the argument read as a shape (its name in messages).
-struct Side {
-  py::object keep;
-  const Shape* shape;
-  Side(py::handle value, const char* owner, const char* name) {
-    try {
-      const Argument arg(value);
-      keep = arg.keep;
-      shape = arg.shape;
-    } catch (py::error_already_set& error) {  // not a shape, and not an array of points either
-      const std::string text = std::string(owner) + ": " + name + " must be a circledist shape or an array of points, got " +
-                               Py_TYPE(value.ptr())->tp_name + " (" + py::str(error.value()).cast<std::string>() + ")";
-      if (error.matches(PyExc_ValueError)) throw py::value_error(text);
-      throw py::type_error(text);
-    } catch (const std::exception& error) {
-      throw py::type_error(std::string(owner) + ": " + name + " must be a circledist shape or an array of points (" +
-                           error.what() + ")");
-    }
-  }
-};
-
 // The distances of the pairs (a[i], b[j]) of a list, in blocks (bounded memory), through the
 // distance kernels; Real is the answers' type (float for float32, whose answers are rounded).
 // Given a `limit` (a scene's pairs), within(a[i], b[j], limit) instead, through the within
@@ -370,7 +42,8 @@ template <class Real> struct Evaluator {
 
   // Calls block(start, count, distances) for the pairs [start, start + count) of the list, block
   // after block, distances[k] that of pair start + k; reports to `progress`'s stage `stage`.
-  template <class Block> void run_blocks(const PairList& pairs, const StagedProgress& progress, int stage, Block&& block) const {
+  template <class Block>
+  void run_blocks(const PairList& pairs, const StagedProgress& progress, int stage, Block&& block) const {
     std::vector<Index> rows_a, rows_b;
     for (Index start = 0; start < Index(pairs.size()); start += kBlock) {
       const Index count = std::min<Index>(kBlock, Index(pairs.size()) - start);
@@ -378,22 +51,27 @@ template <class Real> struct Evaluator {
       rows_b.resize(size_t(count));
       {
         py::gil_scoped_release release;
-        run_in_chunks(count, choice.workers, [&](Index first, Index last) {
-          for (Index k = first; k < last; ++k) {
-            rows_a[size_t(k)] = pairs[size_t(start + k)].first;
-            rows_b[size_t(k)] = pairs[size_t(start + k)].second;
-          }
-        }, [](Index) { return false; });  // a copy: over in a millisecond
+        run_in_chunks(
+            count, choice.workers,
+            [&](Index first, Index last) {
+              for (Index k = first; k < last; ++k) {
+                rows_a[size_t(k)] = pairs[size_t(start + k)].first;
+                rows_b[size_t(k)] = pairs[size_t(start + k)].second;
+              }
+            },
+            [](Index) { return false; });  // a copy: over in a millisecond
       }
       const Shape ga = gather(a, ea, rows_a.data(), count, choice.workers);
       const Shape gb = gather(b, eb, rows_b.data(), count, choice.workers);
       // Both single shapes (one element each) answer with a scalar: made an array of the block.
       const py::object part = progress.part(stage, start, count, Index(pairs.size()));
       const py::object answer = py::module_::import("numpy").attr("broadcast_to")(
-          py::module_::import("numpy").attr("asarray")(limit ? shapes_within(ga, gb, *limit, false, choice, part)
-                                                             : shapes_distance(ga, gb, choice, part)).attr("reshape")(-1),
+          py::module_::import("numpy")
+              .attr("asarray")(limit ? shapes_within(ga, gb, *limit, false, choice, part)
+                                     : shapes_distance(ga, gb, choice, part))
+              .attr("reshape")(-1),
           py::make_tuple(count));
-      const auto values = py::array_t<Real, py::array::c_style | py::array::forcecast>::ensure(answer);
+      const auto values = py::array_t < Real, py::array::c_style | py::array::forcecast > ::ensure(answer);
       block(start, count, values.data());
     }
   }
@@ -403,9 +81,12 @@ template <class Real> struct Evaluator {
   template <class Take> void run(const PairList& pairs, const StagedProgress& progress, int stage, Take&& take) const {
     run_blocks(pairs, progress, stage, [&](Index start, Index count, const Real* d) {
       py::gil_scoped_release release;
-      run_in_chunks(count, choice.workers, [&](Index first, Index last) {
-        for (Index k = first; k < last; ++k) take(start + k, d[k]);
-      }, [](Index) { return false; });  // a pass over the block: milliseconds
+      run_in_chunks(
+          count, choice.workers,
+          [&](Index first, Index last) {
+            for (Index k = first; k < last; ++k) take(start + k, d[k]);
+          },
+          [](Index) { return false; });  // a pass over the block: milliseconds
     });
   }
 };
@@ -437,30 +118,39 @@ template <class T> py::array_t<T> to_array(const std::vector<T>& v, BatchShape s
 // for float64 and float32 answers (the float32 value, exactly) and a numpy.longdouble for long
 // double ones, so d is compared in double, or in long double.
 template <class Real> bool at_most(Real distance, double d) {
-  if constexpr (std::is_same_v<Real, long double>) return distance <= (long double)d;
-  else return double(distance) <= d;
+  if constexpr (std::is_same_v<Real, long double>)
+    return distance <= (long double)d;
+  else
+    return double(distance) <= d;
 }
 
 // The elements k of [0, count) for which keep(k) holds, in order, on `workers` threads (the GIL
 // released): each slice counts its own, make_room(total) is called once, then each slice calls
 // put(k, at) for its kept elements, `at` their rank among all kept ones.
-template <class Keep, class Room, class Put> void keep_in_order(Index count, int workers, Keep&& keep, Room&& make_room, Put&& put) {
+template <class Keep, class Room, class Put>
+void keep_in_order(Index count, int workers, Keep&& keep, Room&& make_room, Put&& put) {
   const Index slice = 16384;
   std::vector<Index> kept(size_t((count + slice - 1) / slice) + 1, 0);
   const auto no_interrupt = [](Index) { return false; };  // a pass over the elements: milliseconds
   py::gil_scoped_release release;
-  run_in_chunks(count, workers, [&](Index first, Index last) {
-    Index within = 0;
-    for (Index k = first; k < last; ++k) within += keep(k) ? 1 : 0;
-    kept[size_t(first / slice) + 1] = within;
-  }, no_interrupt, slice);
+  run_in_chunks(
+      count, workers,
+      [&](Index first, Index last) {
+        Index within = 0;
+        for (Index k = first; k < last; ++k) within += keep(k) ? 1 : 0;
+        kept[size_t(first / slice) + 1] = within;
+      },
+      no_interrupt, slice);
   for (size_t s = 1; s < kept.size(); ++s) kept[s] += kept[s - 1];
   make_room(kept.back());
-  run_in_chunks(count, workers, [&](Index first, Index last) {
-    Index at = kept[size_t(first / slice)];
-    for (Index k = first; k < last; ++k)
-      if (keep(k)) put(k, at++);
-  }, no_interrupt, slice);
+  run_in_chunks(
+      count, workers,
+      [&](Index first, Index last) {
+        Index at = kept[size_t(first / slice)];
+        for (Index k = first; k < last; ++k)
+          if (keep(k)) put(k, at++);
+      },
+      no_interrupt, slice);
 }
 
 template <class Real>
@@ -471,30 +161,37 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, Index max_pa
   if (b) {
     const Culling culling(a, *b, c.workers);
     const PairLimit<double> limit{d, relative_margin(c)};
-    candidates = chunked_pairs(flat_size(a), c.workers, [&](Index begin, Index end, PairList& out) {
-      candidate_pairs(culling.va, culling.order, culling.tree, limit, begin, end, out);
-    }, progress.stage(0), max_pairs);
+    candidates = chunked_pairs(
+        flat_size(a), c.workers,
+        [&](Index begin, Index end, PairList& out) {
+          candidate_pairs(culling.va, culling.order, culling.tree, limit, begin, end, out);
+        },
+        progress.stage(0), max_pairs);
   } else {
     const BoundingVolumeHierarchy<double> tree = tree_of(volumes_of({&a}, c.workers), c.workers);
     const PairLimit<double> limit{d, relative_margin(c)};
-    candidates = chunked_pairs(tree.size(), c.workers, [&](Index begin, Index end, PairList& out) {
-      candidate_pairs(tree, limit, begin, end, out);
-    }, progress.stage(0), max_pairs);
+    candidates = chunked_pairs(
+        tree.size(), c.workers,
+        [&](Index begin, Index end, PairList& out) { candidate_pairs(tree, limit, begin, end, out); },
+        progress.stage(0), max_pairs);
   }
   std::vector<Index> is, js;
   std::vector<Real> distances;
   Evaluator<Real>{a, other, c}.run_blocks(candidates, progress, 1, [&](Index start, Index count, const Real* dist) {
     // The block's pairs within d, appended in order.
     const size_t base = is.size();
-    keep_in_order(count, c.workers, [&](Index k) { return at_most(dist[k], d); }, [&](Index total) {
-      is.resize(base + size_t(total));
-      js.resize(is.size());
-      distances.resize(is.size());
-    }, [&](Index k, Index at) {
-      is[base + size_t(at)] = candidates[size_t(start + k)].first;
-      js[base + size_t(at)] = candidates[size_t(start + k)].second;
-      distances[base + size_t(at)] = dist[k];
-    });
+    keep_in_order(
+        count, c.workers, [&](Index k) { return at_most(dist[k], d); },
+        [&](Index total) {
+          is.resize(base + size_t(total));
+          js.resize(is.size());
+          distances.resize(is.size());
+        },
+        [&](Index k, Index at) {
+          is[base + size_t(at)] = candidates[size_t(start + k)].first;
+          js[base + size_t(at)] = candidates[size_t(start + k)].second;
+          distances[base + size_t(at)] = dist[k];
+        });
   });
   stats().culled += std::uint64_t(std::max<Index>(
       0, (b ? flat_size(a) * flat_size(*b) : flat_size(a) * (flat_size(a) - 1) / 2) - Index(candidates.size())));
@@ -508,14 +205,18 @@ py::tuple pairs_within_as(const Shape& a, const Shape* b, double d, Index max_pa
 std::vector<size_t> starts_of(const PairList& pairs, Index n, int workers) {
   std::vector<size_t> start(size_t(n) + 1, pairs.size());
   py::gil_scoped_release release;
-  run_in_chunks(n, workers, [&](Index first, Index last) {
-    size_t at = size_t(std::lower_bound(pairs.begin(), pairs.end(), first, [](const auto& p, Index i) { return p.first < i; }) -
-                       pairs.begin());
-    for (Index i = first; i < last; ++i) {
-      while (at < pairs.size() && pairs[at].first < i) ++at;
-      start[size_t(i)] = at;
-    }
-  }, [](Index) { return false; });  // bisections and a pass: milliseconds
+  run_in_chunks(
+      n, workers,
+      [&](Index first, Index last) {
+        size_t at = size_t(
+            std::lower_bound(pairs.begin(), pairs.end(), first, [](const auto& p, Index i) { return p.first < i; }) -
+            pairs.begin());
+        for (Index i = first; i < last; ++i) {
+          while (at < pairs.size() && pairs[at].first < i) ++at;
+          start[size_t(i)] = at;
+        }
+      },
+      [](Index) { return false; });  // bisections and a pass: milliseconds
   return start;
 }
 
@@ -561,12 +262,15 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   //    smallest of their exact distances, tau, bounds the kk-th nearest distance from above. The
   //    two spare seeds keep a huge shape, whose bound is small and distance large (a ring around
   //    the set), from setting tau for every query.
-  const PairList first = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
-    for (Index p = begin; p < end; ++p) {
-      const Index i = order[size_t(p)];
-      for (const auto& entry : tree.nearest_by_bound(va[size_t(i)], seeds)) out.emplace_back(i, entry.second);
-    }
-  }, progress.stage(0));
+  const PairList first = chunked_pairs(
+      n, c.workers,
+      [&](Index begin, Index end, PairList& out) {
+        for (Index p = begin; p < end; ++p) {
+          const Index i = order[size_t(p)];
+          for (const auto& entry : tree.nearest_by_bound(va[size_t(i)], seeds)) out.emplace_back(i, entry.second);
+        }
+      },
+      progress.stage(0));
   // The lists' distances by position, and where each query's pairs start: every step below is a
   // pass over the queries, on the workers.
   std::vector<Real> first_distances(first.size());
@@ -580,34 +284,43 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   std::vector<BroadIndex> tie(static_cast<size_t>(n), std::numeric_limits<BroadIndex>::max());
   {
     py::gil_scoped_release release;
-    run_in_chunks(n, c.workers, [&](Index begin, Index end) {
-      std::vector<std::pair<Real, BroadIndex>> known;
-      for (Index i = begin; i < end; ++i) {
-        known.clear();
-        for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
-          known.emplace_back(first_distances[p], first[p].second);
-        if (Index(known.size()) < kk || kk == 0) continue;
-        std::nth_element(known.begin(), known.begin() + (kk - 1), known.end());
-        tau[size_t(i)] = double(known[size_t(kk - 1)].first);
-        if (known[size_t(kk - 1)].first <= 0) tie[size_t(i)] = known[size_t(kk - 1)].second;
-      }
-    }, no_interrupt);
+    run_in_chunks(
+        n, c.workers,
+        [&](Index begin, Index end) {
+          std::vector<std::pair<Real, BroadIndex>> known;
+          for (Index i = begin; i < end; ++i) {
+            known.clear();
+            for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
+              known.emplace_back(first_distances[p], first[p].second);
+            if (Index(known.size()) < kk || kk == 0) continue;
+            std::nth_element(known.begin(), known.begin() + (kk - 1), known.end());
+            tau[size_t(i)] = double(known[size_t(kk - 1)].first);
+            if (known[size_t(kk - 1)].first <= 0) tie[size_t(i)] = known[size_t(kk - 1)].second;
+          }
+        },
+        no_interrupt);
   }
   // 2. Every other shape whose bound is within tau (and the margin): the nearest are among them.
   PairList second;
   std::vector<Real> second_distances;
   if (seeds < nb) {
-    second = chunked_pairs(n, c.workers, [&](Index begin, Index end, PairList& out) {
-      for (Index p = begin; p < end; ++p) {
-        const Index i = order[size_t(p)];
-        const size_t known = first_start[size_t(i)], known_end = first_start[size_t(i) + 1];
-        tree.visit_within(va[size_t(i)], PairLimit<double>{tau[size_t(i)], relative_margin(c)}, [&](BroadIndex j, double) {
-          for (size_t q = known; q < known_end; ++q)
-            if (first[q].second == j) return;
-          out.emplace_back(i, j);
-        }, tie[size_t(i)]);
-      }
-    }, progress.stage(2));
+    second = chunked_pairs(
+        n, c.workers,
+        [&](Index begin, Index end, PairList& out) {
+          for (Index p = begin; p < end; ++p) {
+            const Index i = order[size_t(p)];
+            const size_t known = first_start[size_t(i)], known_end = first_start[size_t(i) + 1];
+            tree.visit_within(
+                va[size_t(i)], PairLimit<double>{tau[size_t(i)], relative_margin(c)},
+                [&](BroadIndex j, double) {
+                  for (size_t q = known; q < known_end; ++q)
+                    if (first[q].second == j) return;
+                  out.emplace_back(i, j);
+                },
+                tie[size_t(i)]);
+          }
+        },
+        progress.stage(2));
     second_distances.resize(second.size());
     evaluate.run(second, progress, 3, [&](Index p, Real distance) { second_distances[size_t(p)] = distance; });
     stats().culled += std::uint64_t(std::max<Index>(0, n * nb - Index(first.size() + second.size())));
@@ -619,26 +332,29 @@ template <class Real> py::tuple nearest_as(const Shape& a, const Shape& b, Index
   Real* distances = distance_out.mutable_data();
   {
     py::gil_scoped_release release;
-    run_in_chunks(n, c.workers, [&](Index begin, Index end) {
-      std::vector<std::pair<Real, Index>> found;
-      for (Index i = begin; i < end; ++i) {
-        found.clear();
-        for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
-          found.emplace_back(first_distances[p], first[p].second);
-        for (size_t p = second_start[size_t(i)]; p < second_start[size_t(i) + 1]; ++p)
-          found.emplace_back(second_distances[p], second[p].second);
-        const Index take = std::min<Index>(k, Index(found.size()));
-        std::partial_sort(found.begin(), found.begin() + take, found.end());
-        Index* row_indices = indices + i * k;
-        Real* row_distances = distances + i * k;
-        for (Index r = 0; r < take; ++r) {
-          row_distances[r] = found[size_t(r)].first;
-          row_indices[r] = found[size_t(r)].second;
-        }
-        std::fill(row_indices + take, row_indices + k, Index(-1));
-        std::fill(row_distances + take, row_distances + k, std::numeric_limits<Real>::infinity());
-      }
-    }, no_interrupt);
+    run_in_chunks(
+        n, c.workers,
+        [&](Index begin, Index end) {
+          std::vector<std::pair<Real, Index>> found;
+          for (Index i = begin; i < end; ++i) {
+            found.clear();
+            for (size_t p = first_start[size_t(i)]; p < first_start[size_t(i) + 1]; ++p)
+              found.emplace_back(first_distances[p], first[p].second);
+            for (size_t p = second_start[size_t(i)]; p < second_start[size_t(i) + 1]; ++p)
+              found.emplace_back(second_distances[p], second[p].second);
+            const Index take = std::min<Index>(k, Index(found.size()));
+            std::partial_sort(found.begin(), found.begin() + take, found.end());
+            Index* row_indices = indices + i * k;
+            Real* row_distances = distances + i * k;
+            for (Index r = 0; r < take; ++r) {
+              row_distances[r] = found[size_t(r)].first;
+              row_indices[r] = found[size_t(r)].second;
+            }
+            std::fill(row_indices + take, row_indices + k, Index(-1));
+            std::fill(row_distances + take, row_distances + k, std::numeric_limits<Real>::infinity());
+          }
+        },
+        no_interrupt);
   }
   return py::make_tuple(std::move(index_out), std::move(distance_out));
 }
@@ -702,7 +418,7 @@ struct SceneBroadphase {
     Index total = 0;
     for (py::handle p : parts) {
       const py::tuple t = py::reinterpret_borrow<py::tuple>(p);
-      Part part{&constructed(t[0]), py::array_t<Index, py::array::c_style | py::array::forcecast>::ensure(t[1]),
+      Part part{&constructed(t[0]), py::array_t < Index, py::array::c_style | py::array::forcecast > ::ensure(t[1]),
                 t[2].cast<Index>(), t[3].cast<Index>()};
       if (!part.items || part.items.size() != flat_size(*part.shape))
         throw py::value_error("_Broadphase.add: one item number per element of a part's shape");
@@ -783,7 +499,7 @@ struct SceneBroadphase {
     const double reach = query(shape).reach();
     const PairLimit<double> limit{d};
     if (items.is_none()) return py::float_(limit(reach, tree.scale()));
-    const auto at = py::array_t<Index, py::array::c_style | py::array::forcecast>::ensure(items);
+    const auto at = py::array_t < Index, py::array::c_style | py::array::forcecast > ::ensure(items);
     if (!at) throw py::type_error("_Broadphase.limit: items must be an array of item numbers");
     py::array_t<double> out(at.size());
     for (Index k = 0; k < at.size(); ++k) {
@@ -834,13 +550,13 @@ struct SceneBroadphase {
         throw py::value_error("_Broadphase.pairs_within: the groups do not hold the items added");
     // Every pass below over the candidates (which may take a good part of a second) hears Ctrl-C
     // (run_released, interruptible).
-    const BoundingVolumeHierarchy<double>* all = interruptible([&](const Interrupted& interrupted) {
-      return &tree.merged(workers, interrupted);
-    });
+    const BoundingVolumeHierarchy<double>* all =
+        interruptible([&](const Interrupted& interrupted) { return &tree.merged(workers, interrupted); });
     const PairLimit<double> limit{d};
-    const PairList candidates = chunked_pairs(all->size(), workers, [&](Index begin, Index end, PairList& out) {
-      candidate_pairs(*all, limit, begin, end, out);
-    }, py::none(), most, "Scene.pairs_within");
+    const PairList candidates = chunked_pairs(
+        all->size(), workers,
+        [&](Index begin, Index end, PairList& out) { candidate_pairs(*all, limit, begin, end, out); }, py::none(), most,
+        "Scene.pairs_within");
     // The candidates' positions, bucket after bucket (a bucket per pair of groups), in list order
     // within each: each slice of the list counts its pairs per bucket, then places them at the
     // offsets the slices before it leave.
@@ -850,10 +566,13 @@ struct SceneBroadphase {
     };
     std::vector<Index> at(size_t(slices * buckets), 0), bucket_start(size_t(buckets) + 1, 0);
     std::vector<Index> placed(static_cast<size_t>(m));
-    run_released(m, workers, [&](Index first, Index last) {
-      Index* count = at.data() + (first / slice) * buckets;
-      for (Index p = first; p < last; ++p) ++count[bucket(p)];
-    }, py::none(), slice);
+    run_released(
+        m, workers,
+        [&](Index first, Index last) {
+          Index* count = at.data() + (first / slice) * buckets;
+          for (Index p = first; p < last; ++p) ++count[bucket(p)];
+        },
+        py::none(), slice);
     {
       py::gil_scoped_release release;
       Index total = 0;
@@ -867,10 +586,13 @@ struct SceneBroadphase {
       }
       bucket_start[size_t(buckets)] = total;
     }
-    run_released(m, workers, [&](Index first, Index last) {
-      Index* next = at.data() + (first / slice) * buckets;
-      for (Index p = first; p < last; ++p) placed[size_t(next[bucket(p)]++)] = p;
-    }, py::none(), slice);
+    run_released(
+        m, workers,
+        [&](Index first, Index last) {
+          Index* next = at.data() + (first / slice) * buckets;
+          for (Index p = first; p < last; ++p) placed[size_t(next[bucket(p)]++)] = p;
+        },
+        py::none(), slice);
     std::vector<char> hit(size_t(m), 0);
     const Shape limit_d = limit_shape("pairs_within", py::float_(d));
     const StagedProgress progress(py::none(), 1, m);
@@ -886,17 +608,18 @@ struct SceneBroadphase {
         }
       });
       const Choice choice(py::none(), py::none(), A, B, py::int_(workers), py::none());
-      Evaluator<bool>{A, B, choice, &limit_d}.run(rows, progress, 0, [&](Index k, bool within) {
-        hit[size_t(placed[size_t(first + k)])] = within;
-      });
+      Evaluator<bool>{A, B, choice, &limit_d}.run(
+          rows, progress, 0, [&](Index k, bool within) { hit[size_t(placed[size_t(first + k)])] = within; });
     }
     PairList kept;
-    keep_in_order(m, workers, [&](Index p) { return hit[size_t(p)] != 0; }, [&](Index total) { kept.resize(size_t(total)); },
-                  [&](Index p, Index at) { kept[size_t(at)] = candidates[size_t(p)]; });
+    keep_in_order(
+        m, workers, [&](Index p) { return hit[size_t(p)] != 0; }, [&](Index total) { kept.resize(size_t(total)); },
+        [&](Index p, Index at) { kept[size_t(at)] = candidates[size_t(p)]; });
     py::list out(kept.size());
     for (size_t k = 0; k < kept.size(); ++k) {
       if (k % 65536 == 65535 && PyErr_CheckSignals() != 0) throw py::error_already_set();  // millions: a second
-      PyObject* pair = PyTuple_Pack(2, PyList_GET_ITEM(names.ptr(), kept[k].first), PyList_GET_ITEM(names.ptr(), kept[k].second));
+      PyObject* pair =
+          PyTuple_Pack(2, PyList_GET_ITEM(names.ptr(), kept[k].first), PyList_GET_ITEM(names.ptr(), kept[k].second));
       if (!pair) throw py::error_already_set();
       // A pair of strings is in no cycle: left out of the collector's lists (CPython untracks
       // such tuples itself, lazily, in its collections, which 210k new tuples would set off).
@@ -934,8 +657,9 @@ void bind_all_pairs(py::module_& m) {
            "Adds items numbered on from len(self): parts are (shape, item numbers, group, first row).")
       .def("__len__", [](const SceneBroadphase& s) { return s.tree.size(); })
       .def_property_readonly("scale", [](const SceneBroadphase& s) { return s.tree.scale(); })
-      .def_property_readonly("trees", [](const SceneBroadphase& s) { return s.tree.trees(); },
-                             "How many trees hold the items (at most log2(len) + 1).")
+      .def_property_readonly(
+          "trees", [](const SceneBroadphase& s) { return s.tree.trees(); },
+          "How many trees hold the items (at most log2(len) + 1).")
       .def("merge", &SceneBroadphase::merge, py::arg("workers") = 1,
            "Merges the trees into one (pairs_within's tree), the GIL released.")
       .def("locate", &SceneBroadphase::locate, py::arg("items"), "(groups, rows) of items.")
@@ -945,9 +669,10 @@ void bind_all_pairs(py::module_& m) {
            "(indices, lower bounds) of the elements within their culling limit of d of a single shape, sorted.")
       .def("nearest_by_bound", &SceneBroadphase::nearest_by_bound, py::arg("shape"), py::arg("k"),
            "(indices, lower bounds) of the k elements of smallest lower bound, by bound.")
-      .def("pairs_within", &SceneBroadphase::pairs_within, py::arg("groups"), py::arg("names"), py::arg("d"),
-           py::arg("workers") = 1, py::arg("max_pairs") = kDefaultMaxPairs,
-           "(pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.");
+      .def(
+          "pairs_within", &SceneBroadphase::pairs_within, py::arg("groups"), py::arg("names"), py::arg("d"),
+          py::arg("workers") = 1, py::arg("max_pairs") = kDefaultMaxPairs,
+          "(pairs, candidates): (names[i], names[j]) for the items i < j within d, sorted, and how many pairs were tested.");
 }
 
 }  // namespace circledist::python

@@ -44,13 +44,15 @@ inline const char* const kMaxPairsParameter = R"(max_pairs : int or None, defaul
 )";
 
 inline const char* kPairsWithin() {
-  static const std::string text = std::string() +
-    "Every pair of a and b within distance d of each other, with its distance.\n\n"
-    "Exactly the pairs ``(i, j)`` for which ``distance(a[i], b[j]) <= d``, as a brute-force double loop\n"
-    "over `distance` finds them, with the same distances to the bit; far fewer pairs are evaluated.\n"
-    "Like ``scipy.spatial.cKDTree.query_pairs`` (b None) and ``sparse_distance_matrix`` (with b), for\n"
-    "shapes.\n\n"
-    "Parameters\n----------\n" + R"(a : Shape or array_like
+  static const std::string text =
+      std::string() +
+      "Every pair of a and b within distance d of each other, with its distance.\n\n"
+      "Exactly the pairs ``(i, j)`` for which ``distance(a[i], b[j]) <= d``, as a brute-force double loop\n"
+      "over `distance` finds them, with the same distances to the bit; far fewer pairs are evaluated.\n"
+      "Like ``scipy.spatial.cKDTree.query_pairs`` (b None) and ``sparse_distance_matrix`` (with b), for\n"
+      "shapes.\n\n"
+      "Parameters\n----------\n" +
+      R"(a : Shape or array_like
     A batch of shapes of any kind and batch shape, indexed flat (see Notes). An array of shape
     (..., 3) is a `Point` batch.
 b : Shape, array_like or None
@@ -58,7 +60,8 @@ b : Shape, array_like or None
     itself).
 d : float
     Distance limit, finite and >= 0. Pairs at distance exactly d are included.
-)" + kChoiceParameters + kAllPairsProgressParameter + kMaxPairsParameter + R"(
+)" + kChoiceParameters +
+      kAllPairsProgressParameter + kMaxPairsParameter + R"(
 Returns
 -------
 i, j : numpy.ndarray of numpy.intp, shape (m,)
@@ -86,7 +89,8 @@ See Also
 nearest : the k nearest shapes of b to each shape of a.
 Scene.pairs_within : the same culling over a scene's named shapes.
 
-)" + kAllPairsNotes + R"(
+)" + kAllPairsNotes +
+      R"(
 Examples
 --------
 >>> import numpy as np
@@ -107,18 +111,21 @@ ValueError: pairs_within: d must be a finite number >= 0, got -1
 }
 
 inline const char* kNearest() {
-  static const std::string text = std::string() +
-    "The k shapes of b nearest to each shape of a, with their distances.\n\n"
-    "The same as sorting every ``distance(a[i], b[j])`` by (distance, j) and keeping the first k,\n"
-    "with the same distances to the bit; far fewer pairs are evaluated. Like\n"
-    "``scipy.spatial.cKDTree.query(x, k)``, for shapes (but indices first, and always two-dimensional).\n\n"
-    "Parameters\n----------\n" + R"(a : Shape or array_like
+  static const std::string text =
+      std::string() +
+      "The k shapes of b nearest to each shape of a, with their distances.\n\n"
+      "The same as sorting every ``distance(a[i], b[j])`` by (distance, j) and keeping the first k,\n"
+      "with the same distances to the bit; far fewer pairs are evaluated. Like\n"
+      "``scipy.spatial.cKDTree.query(x, k)``, for shapes (but indices first, and always two-dimensional).\n\n"
+      "Parameters\n----------\n" +
+      R"(a : Shape or array_like
     The query shapes: a batch of any kind and batch shape, indexed flat (see Notes).
 b : Shape or array_like
     The shapes to search: a batch of any kind, indexed flat.
 k : int, default 1
     How many nearest shapes per query, >= 1.
-)" + kChoiceParameters + kAllPairsProgressParameter + R"(
+)" + kChoiceParameters +
+      kAllPairsProgressParameter + R"(
 Returns
 -------
 indices : numpy.ndarray of numpy.intp, shape (len(a), k)
@@ -146,7 +153,8 @@ See Also
 pairs_within : every pair within a distance.
 Scene.nearest : the nearest named shapes of a scene to one shape.
 
-)" + kAllPairsNotes + R"(
+)" + kAllPairsNotes +
+      R"(
 Examples
 --------
 >>> import circledist as cd

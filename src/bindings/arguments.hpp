@@ -77,8 +77,8 @@ inline long long integer_of(const std::string& owner, const char* name, py::hand
   int overflow = 0;
   const long long out = PyLong_AsLongLongAndOverflow(index, &overflow);
   if (overflow != 0)
-    throw py::value_error(prefix + " must be " + wanted + (overflow > 0 ? " (at most 2**63 - 1)" : " (at least -2**63)") +
-                          ", got " + shown(value));
+    throw py::value_error(prefix + " must be " + wanted +
+                          (overflow > 0 ? " (at most 2**63 - 1)" : " (at least -2**63)") + ", got " + shown(value));
   if (out == -1 && PyErr_Occurred()) throw py::error_already_set();
   return out;
 }
@@ -120,8 +120,9 @@ inline const Shape& constructed(py::handle value) {
     throw py::type_error(std::string("expected a circledist shape, got ") + Py_TYPE(value.ptr())->tp_name);
   const auto storage = reinterpret_cast<py::detail::instance*>(value.ptr())->get_value_and_holder();
   if (!storage.holder_constructed())
-    throw py::type_error(std::string(Py_TYPE(value.ptr())->tp_name) +
-                         " was not initialized: build shapes with their constructor, e.g. Circle(center, normal, radius)");
+    throw py::type_error(
+        std::string(Py_TYPE(value.ptr())->tp_name) +
+        " was not initialized: build shapes with their constructor, e.g. Circle(center, normal, radius)");
   return *reinterpret_cast<const Shape*>(storage.value_ptr());
 }
 
@@ -169,14 +170,14 @@ struct Choice {
 // Runs `query` (a Call<Real> -> result) on the table of the choice: float32 runs the double one
 // (float32.hpp).
 // `progress` is the choice's own unless a caller reports elsewhere (the all-pairs queries' stages).
-template <class Query>
-auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query,
-               py::handle progress) {
+template <class Query> auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c,
+                                      Query&& query, py::handle progress) {
   if (c.precision == kLongDouble)
     return query(Call<long double>{pairs().of<long double>(c.solver), a, b, limit, c.workers, progress});
   return query(Call<double>{pairs().of<double>(c.solver), a, b, limit, c.workers, progress});
 }
-template <class Query> auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query) {
+template <class Query>
+auto with_call(const Shape& a, const Shape& b, const Shape* limit, const Choice& c, Query&& query) {
   return with_call(a, b, limit, c, std::forward<Query>(query), c.progress);
 }
 

@@ -44,7 +44,8 @@ template <class Real> py::object scalar(Real value) {
 // first use of a float64 field makes its long-double copy, Field::data_as).
 template <class Real> Operand<Real> operand(const Shape& s) {
   Operand<Real> out{s.kind, s.points, &s.batch};
-  for (const Field& f : s.fields) out.fields[size_t(out.count++)] = {f.name, f.template data_as<Real>(), f.width, &f.batch};
+  for (const Field& f : s.fields)
+    out.fields[size_t(out.count++)] = {f.name, f.template data_as<Real>(), f.width, &f.batch};
   return out;
 }
 
@@ -130,7 +131,7 @@ template <class Real> struct Call {
   const Shape& a;
   const Shape& b;
   const Shape* limit = nullptr;
-  int workers = 1;  // threads for a batch (run_in_chunks)
+  int workers = 1;                   // threads for a batch (run_in_chunks)
   py::handle progress = py::none();  // None, or a callable progress(done, total) (arguments.hpp resolves True)
 
   bool reversed() const { return table.reversed[a.kind][b.kind]; }
@@ -159,7 +160,7 @@ template <class Real> struct Call {
   // batch shape empty) answers in a local, with the GIL held: no array, no thread switch (most of
   // a scalar call's cost), and `single` makes it a Python object.
   template <class T, class Single>
-  py::object answers(KernelFn<Real> fn, T* Request<Real>::*slot, Single&& single) const {
+  py::object answers(KernelFn<Real> fn, T* Request<Real>::* slot, Single&& single) const {
     Request<Real> r = request();
     if (r.elements.shape.empty()) {
       T value;
@@ -226,10 +227,10 @@ template <class Real> struct Call {
     }
     run(fn, r);
     if (shape.empty())
-      return {scalar<Real>(r.distance[0]), std::move(point_a), std::move(point_b), std::move(param_a),
-              std::move(param_b), py::bool_(r.flag[0])};
-    return {std::move(distance), std::move(point_a), std::move(point_b), std::move(param_a), std::move(param_b),
-            std::move(unique)};
+      return {scalar<Real>(r.distance[0]), std::move(point_a), std::move(point_b),
+              std::move(param_a),          std::move(param_b), py::bool_(r.flag[0])};
+    return {std::move(distance), std::move(point_a), std::move(point_b),
+            std::move(param_a),  std::move(param_b), std::move(unique)};
   }
 };
 

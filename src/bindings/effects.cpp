@@ -59,20 +59,23 @@ void bind_effects(py::module_& m) {
       py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kIntersects());
   m.def(
       "within",
-      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
+      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, Count workers,
+         ProgressLike progress) {
         return Flags(run_within(a, b, limit_shape("within", d), false, precision, solver, workers, progress));
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
       py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kWithin());
   m.def(
       "distance_if_within",
-      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
-        return Distances(run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver, workers, progress));
+      [](ShapeLike a, ShapeLike b, ArrayLike d, PrecisionName precision, SolverName solver, Count workers,
+         ProgressLike progress) {
+        return Distances(
+            run_within(a, b, limit_shape("distance_if_within", d), true, precision, solver, workers, progress));
       },
       py::arg("a"), py::arg("b"), py::arg("d"), py::kw_only(), py::arg("precision") = py::none(),
-      py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kDistanceIfWithin());
-  m.def("stats", &stats_dict,
-        doc::kStats);
+      py::arg("solver") = py::none(), py::arg("workers") = 1, py::arg("progress") = py::none(),
+      doc::kDistanceIfWithin());
+  m.def("stats", &stats_dict, doc::kStats);
   m.def("reset_stats", &reset_stats, doc::kResetStats);
   m.def(
       "_query_kinds",

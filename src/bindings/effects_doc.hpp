@@ -10,10 +10,12 @@
 namespace circledist::python::doc {
 
 inline const char* kIntersects() {
-  static const std::string text = std::string() + "Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.\n\n"
-                                       "Cheap exact bounds decide first; the polynomial solver runs only where they "
-                                       "cannot.\n\n"
-                                       "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + kProgressParameter + R"(
+  static const std::string text = std::string() +
+                                  "Whether a and b touch or overlap (sweeps included): ``within(a, b, 0)``.\n\n"
+                                  "Cheap exact bounds decide first; the polynomial solver runs only where they "
+                                  "cannot.\n\n"
+                                  "Parameters\n----------\n" +
+                                  kQueryParameters + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 bool or numpy.ndarray
@@ -33,11 +35,12 @@ array([False,  True])
 }
 
 inline const char* kWithin() {
-  static const std::string text = std::string() + "Whether distance(a, b) <= d.\n\n"
-                                   "Up to a rounding tolerance of 64 eps times the pair's size. Cheap exact bounds "
-                                   "decide first; the polynomial solver runs only where they cannot.\n\n"
-                                   "Parameters\n----------\n" + kQueryParameters + kLimitParameter +
-                                       + kChoiceParameters + kProgressParameter + R"(
+  static const std::string text = std::string() +
+                                  "Whether distance(a, b) <= d.\n\n"
+                                  "Up to a rounding tolerance of 64 eps times the pair's size. Cheap exact bounds "
+                                  "decide first; the polynomial solver runs only where they cannot.\n\n"
+                                  "Parameters\n----------\n" +
+                                  kQueryParameters + kLimitParameter + +kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 bool or numpy.ndarray
@@ -60,9 +63,10 @@ array([False,  True])
 
 inline const char* kDistanceIfWithin() {
   static const std::string text = std::string() +
-    "``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.\n\n"
-    "The distance is only computed where the bounds cannot show that it exceeds d.\n\n"
-    "Parameters\n----------\n" + kQueryParameters + kLimitParameter + kChoiceParameters + kProgressParameter + R"(
+                                  "``distance(a, b)`` where ``within(a, b, d)`` holds, inf elsewhere.\n\n"
+                                  "The distance is only computed where the bounds cannot show that it exceeds d.\n\n"
+                                  "Parameters\n----------\n" +
+                                  kQueryParameters + kLimitParameter + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 float or numpy.ndarray

@@ -61,12 +61,10 @@ inline py::object to_float32(const py::object& value, const char* entry, const c
 }
 
 inline ClosestPoints to_float32(const ClosestPoints& r) {
-  return {to_float32(r.distance, "closest_points", "distance", 1),
-          to_float32(r.point_a, "closest_points", "point_a", 3),
-          to_float32(r.point_b, "closest_points", "point_b", 3),
-          to_float32(r.param_a, "closest_points", "param_a", 2),
-          to_float32(r.param_b, "closest_points", "param_b", 2),
-          r.unique};
+  return {
+      to_float32(r.distance, "closest_points", "distance", 1), to_float32(r.point_a, "closest_points", "point_a", 3),
+      to_float32(r.point_b, "closest_points", "point_b", 3),   to_float32(r.param_a, "closest_points", "param_a", 2),
+      to_float32(r.param_b, "closest_points", "param_b", 2),   r.unique};
 }
 
 }  // namespace circledist::python

@@ -41,18 +41,23 @@ ClosestPoints run_closest(py::handle a, py::handle b, const py::object& precisio
 void bind_queries(py::module_& m) {
   // Properties rather than def_readonly, so that signatures and stubs name the result types.
   py::class_<ClosestPoints>(m, "ClosestPoints", doc::kClosestPoints)
-      .def_property_readonly("distance", [](const ClosestPoints& r) { return Distances(r.distance); },
-                             "The distance, as distance() gives it.")
-      .def_property_readonly("point_a", [](const ClosestPoints& r) { return Array(r.point_a); },
-                             "A closest point on the first argument, shape (..., 3).")
-      .def_property_readonly("point_b", [](const ClosestPoints& r) { return Array(r.point_b); },
-                             "A closest point on the second argument, shape (..., 3).")
-      .def_property_readonly("param_a", [](const ClosestPoints& r) { return Array(r.param_a); },
-                             "point_a's parameters, shape (..., 2): (t, 0), (theta, 0) on circles, (s, theta) on disks.")
-      .def_property_readonly("param_b", [](const ClosestPoints& r) { return Array(r.param_b); },
-                             "point_b's parameters, shape (..., 2).")
-      .def_property_readonly("unique", [](const ClosestPoints& r) { return Flags(r.unique); },
-                             "False when another distinct pair is as close.")
+      .def_property_readonly(
+          "distance", [](const ClosestPoints& r) { return Distances(r.distance); },
+          "The distance, as distance() gives it.")
+      .def_property_readonly(
+          "point_a", [](const ClosestPoints& r) { return Array(r.point_a); },
+          "A closest point on the first argument, shape (..., 3).")
+      .def_property_readonly(
+          "point_b", [](const ClosestPoints& r) { return Array(r.point_b); },
+          "A closest point on the second argument, shape (..., 3).")
+      .def_property_readonly(
+          "param_a", [](const ClosestPoints& r) { return Array(r.param_a); },
+          "point_a's parameters, shape (..., 2): (t, 0), (theta, 0) on circles, (s, theta) on disks.")
+      .def_property_readonly(
+          "param_b", [](const ClosestPoints& r) { return Array(r.param_b); }, "point_b's parameters, shape (..., 2).")
+      .def_property_readonly(
+          "unique", [](const ClosestPoints& r) { return Flags(r.unique); },
+          "False when another distinct pair is as close.")
       .def("__repr__", [](const ClosestPoints& r) {
         return "ClosestPoints(distance=" + py::repr(r.distance).cast<std::string>() +
                ", point_a=" + py::repr(r.point_a).cast<std::string>() +

@@ -8,7 +8,8 @@
 
 namespace circledist::python::doc {
 
-inline const char* const kClosestPoints = R"(The answer of `closest_points`: the distance, a closest pair and its parameters.
+inline const char* const kClosestPoints =
+    R"(The answer of `closest_points`: the distance, a closest pair and its parameters.
 
 For single shapes the distance is a float (a ``numpy.longdouble`` in long double) and the flag
 a bool; for batches each attribute is an array of the broadcast batch shape (with a trailing
@@ -42,9 +43,11 @@ Examples
 )";
 
 inline const char* kDistance() {
-  static const std::string text = std::string() + "Distance between a and b.\n\n"
-                                     "Does no closest-point work. Both argument orders agree to the bit.\n\n"
-                                     "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + kProgressParameter + R"(
+  static const std::string text = std::string() +
+                                  "Distance between a and b.\n\n"
+                                  "Does no closest-point work. Both argument orders agree to the bit.\n\n"
+                                  "Parameters\n----------\n" +
+                                  kQueryParameters + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 float or numpy.ndarray
@@ -81,17 +84,21 @@ ValueError: solver must be None, 'default', 'companion', 'polished', 'bracketing
 }
 
 inline const char* kClosest() {
-  static const std::string text = std::string() + "Distance, closest points on a and b, their parameters and whether they are unique.\n\n"
-                                    "``closest_points(b, a)`` is ``closest_points(a, b)`` with the points and parameters "
-                                    "exchanged.\n\n"
-                                    "Parameters\n----------\n" + kQueryParameters + kChoiceParameters + kProgressParameter + R"(
+  static const std::string text =
+      std::string() +
+      "Distance, closest points on a and b, their parameters and whether they are unique.\n\n"
+      "``closest_points(b, a)`` is ``closest_points(a, b)`` with the points and parameters "
+      "exchanged.\n\n"
+      "Parameters\n----------\n" +
+      kQueryParameters + kChoiceParameters + kProgressParameter + R"(
 Returns
 -------
 ClosestPoints
     ``distance``, ``point_a``, ``point_b``, ``param_a``, ``param_b`` and ``unique``: scalars and
     single points for two single shapes, arrays of the broadcast batch shape otherwise.
 
-)" + kQueryRaises + R"(
+)" + kQueryRaises +
+      R"(
 Examples
 --------
 >>> import circledist as cd

@@ -22,7 +22,8 @@ template <int K> struct ShapeOf : Shape {
 
 // Every shape class holds one C++ object, a ShapeOf<K>: a Shape with nothing added, so the two
 // share their address (standard layout) and the first value slot of the instance is the Shape.
-static_assert(std::is_standard_layout_v<ShapeOf<kCircle>>, "a ShapeOf<K> must be pointer-interconvertible with its Shape");
+static_assert(std::is_standard_layout_v<ShapeOf<kCircle>>,
+              "a ShapeOf<K> must be pointer-interconvertible with its Shape");
 
 py::typing::Tuple<py::int_, py::ellipsis> batch_tuple(py::handle self) {
   const Shape& s = constructed(self);
@@ -167,7 +168,8 @@ void bind_shapes(py::module_& m) {
           "__len__",
           [](py::handle self) {
             const Shape& s = constructed(self);
-            if (s.batch.empty()) throw py::type_error(std::string("len() of a single ") + kind_name(s.kind) + " (batch shape ())");
+            if (s.batch.empty())
+              throw py::type_error(std::string("len() of a single ") + kind_name(s.kind) + " (batch shape ())");
             return s.batch[0];
           },
           "The length of the first batch axis; TypeError for a single shape.")
@@ -175,9 +177,8 @@ void bind_shapes(py::module_& m) {
       // truth a TypeError).
       .def("__bool__", [](py::handle) { return true; })
       // Iterating a batch gives its shapes along the first axis (not NumPy's sequence probing).
-      .def("__iter__", [](py::handle self) {
-        return py::module_::import("circledist._batch").attr("iterate_shape")(self);
-      })
+      .def("__iter__",
+           [](py::handle self) { return py::module_::import("circledist._batch").attr("iterate_shape")(self); })
       // A shape pickles, copies and deep-copies as its arrays (to_arrays), rebuilt by its class.
       .def("__reduce__", [](py::handle self) -> py::tuple {
         const py::object rebuild = py::module_::import("circledist._core").attr("_from_arrays");
@@ -197,10 +198,11 @@ void bind_shapes(py::module_& m) {
 }
 
 void bind_shape_fields(py::module_& m) {
-  m.def("_shape_fields", &shape_fields,
-        "Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' "
-        "(shape (3,), not zero), 'length' (a number >= 0), 'angle' (a number in (0, 2 pi]) or 'control_points' (shape (k + 1, 3)). Read by the scene "
-        "files, the command line and circledist.Scene.");
+  m.def(
+      "_shape_fields", &shape_fields,
+      "Each kind's constructor fields in order, as (name, role) pairs; role 'vector' (shape (3,)), 'direction' "
+      "(shape (3,), not zero), 'length' (a number >= 0), 'angle' (a number in (0, 2 pi]) or 'control_points' (shape (k + 1, 3)). Read by the scene "
+      "files, the command line and circledist.Scene.");
   m.attr("_max_control_points") = kMaxBezierDegree + 1;  // a Bezier curve's, from primitives.hpp
   m.def(
       "_sweep_field", [] { return FieldPair(py::make_tuple(kSweepField.name, field_role(kSweepField))); },

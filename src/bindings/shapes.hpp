@@ -35,7 +35,7 @@ struct Field {
   Array array = no_array<Array>();
   BatchShape batch;
   Index width = 0;
-  bool single = false;  // given as float32: computing in float reproduces the input exactly
+  bool single = false;   // given as float32: computing in float reproduces the input exactly
   bool is_wide = false;  // given as np.longdouble (wider than float64): `wide` holds the values
   Wide wide = no_array<Wide>();
   mutable bool is_widened = false;          // `widened`: the float64 values as long double, made
@@ -153,8 +153,9 @@ inline py::object frozen_copy(const py::object& given, bool wide, bool copy = tr
     double bytes = double(sizeof(double));
     for (py::handle d : shape) bytes *= py::cast<double>(d);
     text.precision(3);
-    text << " (shape " << py::str(shape).cast<std::string>() << ", " << bytes
-         << " bytes as a contiguous float64 array; copy=False refers to a C-contiguous float64 array without copying it)";
+    text
+        << " (shape " << py::str(shape).cast<std::string>() << ", " << bytes
+        << " bytes as a contiguous float64 array; copy=False refers to a C-contiguous float64 array without copying it)";
   }
   PyErr_SetString(PyExc_MemoryError, text.str().c_str());
   throw py::error_already_set();
@@ -186,7 +187,7 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
     real = false;
   }
   if (!real) throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
-  f.array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(converted);
+  f.array = py::array_t < double, py::array::c_style | py::array::forcecast > ::ensure(converted);
   if (!f.array) {
     PyErr_Clear();
     throw py::value_error(std::string(owner) + ": " + name + " must be a real number array");
@@ -231,8 +232,8 @@ inline Field make_field(const char* owner, const char* name, py::handle value, I
       std::ostringstream got;
       got.precision(17);
       got << e[0];
-      throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) +
-                            " must be in (0, 2 pi], got " + got.str());
+      throw py::value_error(std::string(owner) + ": " + name + index_text(i, f.batch) + " must be in (0, 2 pi], got " +
+                            got.str());
     }
   }
   return f;
@@ -398,9 +399,9 @@ inline Field sweep_field(const char* owner, py::handle value, bool copy = true) 
   return make_field(owner, kSweepField.name, value, kSweepField.width, kSweepField.check, copy);
 }
 
-inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields, kSegmentFields,
-                                                             kRoundFields,   kRoundFields,  kBezierFields,
-                                                             kArcFields,     kAnnulusFields};
+inline constexpr const FieldSpec* kFieldSpecs[kKindCount] = {kPointFields,   kLinearFields, kLinearFields,
+                                                             kSegmentFields, kRoundFields,  kRoundFields,
+                                                             kBezierFields,  kArcFields,    kAnnulusFields};
 
 }  // namespace circledist::python
 

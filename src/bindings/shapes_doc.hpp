@@ -19,12 +19,16 @@ inline const char* field(const std::string& name) {
   if (name == "center") return "The center, shape (..., 3): a read-only array, as stored.";
   if (name == "normal") return "The normal as given (not normalized), shape (..., 3): a read-only array.";
   if (name == "radius") return "The radius, of the radius's own batch shape (0-d for one): a read-only array.";
-  if (name == "start") return "The start direction as given (its projection onto the plane starts the arc), shape (..., 3): a read-only array.";
-  if (name == "angle") return "The angle in (0, 2 pi], of the angle's own batch shape (0-d for one): a read-only array.";
-  if (name == "inner_radius") return "The inner radius (of the hole), of its own batch shape (0-d for one): a read-only array.";
+  if (name == "start")
+    return "The start direction as given (its projection onto the plane starts the arc), shape (..., 3): a read-only array.";
+  if (name == "angle")
+    return "The angle in (0, 2 pi], of the angle's own batch shape (0-d for one): a read-only array.";
+  if (name == "inner_radius")
+    return "The inner radius (of the hole), of its own batch shape (0-d for one): a read-only array.";
   if (name == "outer_radius") return "The outer radius, of its own batch shape (0-d for one): a read-only array.";
   if (name == "control_points") return "The control points, shape (..., k + 1, 3): a read-only array, as stored.";
-  if (name == "sweep") return "The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).";
+  if (name == "sweep")
+    return "The sweep radius (>= 0; 0-d 0 when not given): the shape grown by it (a ball, a capsule, a torus, a tube).";
   return "A field of the shape: a read-only array, as stored.";
 }
 
@@ -94,36 +98,34 @@ Point(p=array([1., 2., 3.]))
 }
 
 inline const std::string& linear(const char* kind) {
-  static const std::string line = shape_doc(
-      "The line ``origin + t * direction``, t real.",
-      R"(
+  static const std::string line = shape_doc("The line ``origin + t * direction``, t real.",
+                                            R"(
 origin : array_like, shape (3,) or (..., 3)
     A point on the line, the parameter origin (t = 0).
 direction : array_like, shape (3,) or (..., 3)
     Direction, of any finite nonzero length (it is normalized internally; parameters t of
     `closest_points` are in units of this vector as given).)",
-      R"(
+                                            R"(
 origin : numpy.ndarray, shape (..., 3)
 direction : numpy.ndarray, shape (..., 3)
 )",
-      R"(
+                                            R"(
 >>> import circledist as cd
 >>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])
 >>> cd.distance(line, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
 0.5
 )");
-  static const std::string ray = shape_doc(
-      "The ray ``origin + t * direction``, t >= 0.",
-      R"(
+  static const std::string ray = shape_doc("The ray ``origin + t * direction``, t >= 0.",
+                                           R"(
 origin : array_like, shape (3,) or (..., 3)
     The ray's start (t = 0).
 direction : array_like, shape (3,) or (..., 3)
     Direction, of any finite nonzero length.)",
-      R"(
+                                           R"(
 origin : numpy.ndarray, shape (..., 3)
 direction : numpy.ndarray, shape (..., 3)
 )",
-      R"(
+                                           R"(
 >>> import circledist as cd
 >>> ray = cd.Ray([0, 0, 2], [0, 0, 1])
 >>> cd.distance(ray, [0, 0, 0])  # the point lies behind the start
@@ -133,15 +135,14 @@ direction : numpy.ndarray, shape (..., 3)
 }
 
 inline const std::string& segment() {
-  static const std::string text = shape_doc(
-      "The segment ``p0 + t * (p1 - p0)``, t in [0, 1]; ``p0 == p1`` is a point.",
-      R"(
+  static const std::string text = shape_doc("The segment ``p0 + t * (p1 - p0)``, t in [0, 1]; ``p0 == p1`` is a point.",
+                                            R"(
 p0, p1 : array_like, shape (3,) or (..., 3)
     End points.)",
-      R"(
+                                            R"(
 p0, p1 : numpy.ndarray, shape (..., 3)
 )",
-      R"(
+                                            R"(
 >>> import circledist as cd
 >>> capsule = cd.Segment([0, 0, 0], [1, 0, 0], sweep=0.1)
 >>> round(cd.distance(capsule, [0.5, 0, 1]), 12)
@@ -298,9 +299,9 @@ array([1., 0., 0.])
 // The class docstring of each kind, in Kind's order (kernels/batch.hpp): the module binds every kind
 // from this list and shapes.hpp's field table, with no per-kind code.
 inline const std::string& shape_class(int kind) {
-  static const std::string* const docs[] = {&point(),  &linear("Line"),        &linear("Ray"),        &segment(),
-                                            &round_shape("Circle"), &round_shape("Disk"), &bezier(),
-                                            &arc(), &annulus()};
+  static const std::string* const docs[] = {
+      &point(),  &linear("Line"), &linear("Ray"), &segment(), &round_shape("Circle"), &round_shape("Disk"),
+      &bezier(), &arc(),          &annulus()};
   static_assert(sizeof(docs) / sizeof(docs[0]) == kKindCount, "a kind without a class docstring");
   return *docs[kind];
 }

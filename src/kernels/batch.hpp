@@ -31,7 +31,8 @@ inline const char* kind_name(int kind) {
 inline std::string shape_text(const BatchShape& shape) {
   std::ostringstream s;
   s << '(';
-  for (size_t i = 0; i < shape.size(); ++i) s << shape[i] << (shape.size() == 1 ? "," : (i + 1 < shape.size() ? ", " : ""));
+  for (size_t i = 0; i < shape.size(); ++i)
+    s << shape[i] << (shape.size() == 1 ? "," : (i + 1 < shape.size() ? ", " : ""));
   s << ')';
   return s.str();
 }
@@ -90,11 +91,15 @@ template <class Real> struct ShapeTraits<Segment3<Real>> {
 };
 template <class Real> struct ShapeTraits<Circle3<Real>> {
   static constexpr int kind = kCircle;
-  template <class T> static Circle3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+  template <class T> static Circle3<Real> make(const T* const* f, int) {
+    return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])};
+  }
 };
 template <class Real> struct ShapeTraits<Disk3<Real>> {
   static constexpr int kind = kDisk;
-  template <class T> static Disk3<Real> make(const T* const* f, int) { return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])}; }
+  template <class T> static Disk3<Real> make(const T* const* f, int) {
+    return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2])};
+  }
 };
 template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
   static constexpr int kind = kBezier;
@@ -129,9 +134,8 @@ template <class Real> struct ShapeTraits<Annulus3<Real>> {
 
 // The C++ primitive of each kind, in Kind's order: the one list a new kind adds its type to, so
 // that code over every kind (the broadphase's volumes, bindings/all_pairs.cpp) has no per-kind branch.
-template <class Real>
-using KindTypes = std::tuple<Vec3<Real>, Line3<Real>, Ray3<Real>, Segment3<Real>, Circle3<Real>, Disk3<Real>,
-                             BezierCurve3<Real>, Arc3<Real>, Annulus3<Real>>;
+template <class Real> using KindTypes = std::tuple<Vec3<Real>, Line3<Real>, Ray3<Real>, Segment3<Real>, Circle3<Real>,
+                                                   Disk3<Real>, BezierCurve3<Real>, Arc3<Real>, Annulus3<Real>>;
 static_assert(std::tuple_size_v<KindTypes<double>> == kKindCount, "a kind without a primitive in KindTypes");
 
 template <class T> struct TypeTag {
@@ -194,14 +198,15 @@ template <class T> class Broadcast {
       const Operand<T>& first = reversed ? b : a;
       const Operand<T>& second = reversed ? a : b;
       throw std::invalid_argument(std::string("batch shapes ") + shape_text(*first.batch) + " of the " +
-                            kind_name(first.kind) + " and " + shape_text(*second.batch) + " of the " +
-                            kind_name(second.kind) + " do not broadcast");
+                                  kind_name(first.kind) + " and " + shape_text(*second.batch) + " of the " +
+                                  kind_name(second.kind) + " do not broadcast");
     }
     if (limit) {
       const BatchShape joined = broadcast_shapes(shape, *limit->batch, ok);
       if (!ok)
-        throw std::invalid_argument(std::string(limit->fields[0].name) + " of batch shape " + shape_text(*limit->batch) +
-                              " does not broadcast with the shapes' batch shape " + shape_text(shape));
+        throw std::invalid_argument(std::string(limit->fields[0].name) + " of batch shape " +
+                                    shape_text(*limit->batch) + " does not broadcast with the shapes' batch shape " +
+                                    shape_text(shape));
       shape = joined;
     }
     for (Index d : shape) size *= d;
@@ -215,8 +220,9 @@ template <class T> class Broadcast {
   // the pair, PairKernels::kFields), so that the pointers stay in registers and advance by a fixed
   // step (most of the loop's own cost on the point queries), in one copy of the loop.
   template <int Count, class Fn> void for_each(Fn&& fn, Index begin, Index end) const {
-    walk<Count>([&](const T* const* base, const Index* step, Index start, Index n) { run<Count>(fn, base, step, start, n); },
-                begin, end);
+    walk<Count>(
+        [&](const T* const* base, const Index* step, Index start, Index n) { run<Count>(fn, base, step, start, n); },
+        begin, end);
   }
 
   // As for_each, but block(first_index, field_pointers, field_steps) answers each Width
@@ -286,8 +292,7 @@ template <class T> class Broadcast {
   }
 
   // fn(start + i, pointers) for i in [0, n), each field's pointer advancing by its step.
-  template <int N, class Fn>
-  void run(Fn& fn, const T* const* base, const Index* step, Index start, Index n) const {
+  template <int N, class Fn> void run(Fn& fn, const T* const* base, const Index* step, Index start, Index n) const {
     std::array<const T*, N> ptr{};
     std::array<Index, N> st{};
     for (int f = 0; f < N; ++f) ptr[f] = base[f], st[f] = step[f];

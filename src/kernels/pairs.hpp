@@ -36,10 +36,7 @@ template <class Real> struct Request {
   Real *point_a = nullptr, *point_b = nullptr, *param_a = nullptr, *param_b = nullptr;
 
   Request(const Operand<Real>& a, const Operand<Real>& b, const Operand<Real>* limit, bool reversed, bool any_sweep)
-      : elements(a, b, limit, reversed),
-        a_points(a.points),
-        b_points(b.points),
-        swept(any_sweep) {}
+      : elements(a, b, limit, reversed), a_points(a.points), b_points(b.points), swept(any_sweep) {}
 
   void store(Index i, const Result<Real>& r) const {
     distance[i] = r.distance;
@@ -63,11 +60,10 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
   // A point against a circle, a disk or an annulus in double: closest_points answers kLanes
   // elements at once (detail/point_round_lanes.hpp: the scalar query's answers, bit for bit).
   static constexpr bool kPointRoundLanes =
-      std::is_same_v<A, Vec3<double>> && (std::is_same_v<B, Circle3<double>> || std::is_same_v<B, Disk3<double>> ||
-                                          std::is_same_v<B, Annulus3<double>>);
+      std::is_same_v<A, Vec3<double>> &&
+      (std::is_same_v<B, Circle3<double>> || std::is_same_v<B, Disk3<double>> || std::is_same_v<B, Annulus3<double>>);
   // Fields of both shapes, each with its sweep (within() adds the limit after them).
-  static constexpr int kFields =
-      int(kFieldCounts[ShapeTraits<A>::kind] + 1 + kFieldCounts[ShapeTraits<B>::kind] + 1);
+  static constexpr int kFields = int(kFieldCounts[ShapeTraits<A>::kind] + 1 + kFieldCounts[ShapeTraits<B>::kind] + 1);
   // Where shape b's fields and within()'s limit start: constants of the pair (a shape's fields
   // and its sweep), so that every field pointer sits at a fixed index and can stay in a register
   // (read at a runtime offset, the pointers lived in memory: 14.5 against 12.4 ns per
@@ -87,13 +83,15 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
   static void distance(const Request<Real>& r, Index begin, Index end) {
     Real* out = r.distance;
     if (!r.swept) {
-      r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-        out[i] = circledist::distance<Roots>(first_core(r, f), second_core(r, f));
-      }, begin, end);
+      r.elements.template for_each<kFields>(
+          [&](Index i, Fields f)
+              CIRCLEDIST_PER_ELEMENT { out[i] = circledist::distance<Roots>(first_core(r, f), second_core(r, f)); },
+          begin, end);
     } else {
-      r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-        out[i] = circledist::distance<Roots>(first(r, f), second(r, f));
-      }, begin, end);
+      r.elements.template for_each<kFields>(
+          [&](Index i, Fields f)
+              CIRCLEDIST_PER_ELEMENT { out[i] = circledist::distance<Roots>(first(r, f), second(r, f)); },
+          begin, end);
     }
     stats().distances += std::uint64_t(end - begin);
   }
@@ -101,15 +99,18 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
   // effects.hpp over the broadcast of a, b and the limits d.
   static void within(const Request<Real>& r, Index begin, Index end) {
     bool* out = r.flag;
-    r.elements.template for_each<kFields + 1>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-      out[i] = circledist::within<Roots>(first(r, f), second(r, f), *f[kLimitAt]);
-    }, begin, end);
+    r.elements.template for_each<kFields + 1>(
+        [&](Index i, Fields f)
+            CIRCLEDIST_PER_ELEMENT { out[i] = circledist::within<Roots>(first(r, f), second(r, f), *f[kLimitAt]); },
+        begin, end);
   }
   static void distance_if_within(const Request<Real>& r, Index begin, Index end) {
     Real* out = r.distance;
-    r.elements.template for_each<kFields + 1>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-      out[i] = circledist::distance_if_within<Roots>(first(r, f), second(r, f), *f[kLimitAt]);
-    }, begin, end);
+    r.elements.template for_each<kFields + 1>(
+        [&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
+          out[i] = circledist::distance_if_within<Roots>(first(r, f), second(r, f), *f[kLimitAt]);
+        },
+        begin, end);
   }
 
   // closest_points of one element of an unswept pair, stored.
@@ -131,9 +132,10 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
     if (!r.swept) {
       r.elements.template for_each<kFields>(one, begin, end);
     } else {
-      r.elements.template for_each<kFields>([&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
-        r.store(i, circledist::closest_points<Roots>(first(r, f), second(r, f)));
-      }, begin, end);
+      r.elements.template for_each<kFields>(
+          [&](Index i, Fields f)
+              CIRCLEDIST_PER_ELEMENT { r.store(i, circledist::closest_points<Roots>(first(r, f), second(r, f))); },
+          begin, end);
     }
     stats().closest_points += std::uint64_t(end - begin);
   }
@@ -149,18 +151,18 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
       // Field j (a 3-vector, or a number) of the kLanes elements: twelve consecutive numbers where
       // the field's elements are consecutive (the usual layout), else gathered lane by lane.
       const auto vector_lanes = [&](int j, detail::Lanes& x, detail::Lanes& y, detail::Lanes& z)
-          __attribute__((target("avx"))) {
-        if (step[j] == 3) return detail::load_triples(f[j], x, y, z);
-        x = detail::strided_lanes(f[j], step[j]);
-        y = detail::strided_lanes(f[j] + 1, step[j]);
-        z = detail::strided_lanes(f[j] + 2, step[j]);
-      };
+                                    __attribute__((target("avx"))) {
+                                      if (step[j] == 3) return detail::load_triples(f[j], x, y, z);
+                                      x = detail::strided_lanes(f[j], step[j]);
+                                      y = detail::strided_lanes(f[j] + 1, step[j]);
+                                      z = detail::strided_lanes(f[j] + 2, step[j]);
+                                    };
       detail::PointRoundLanes in;
       vector_lanes(0, in.px, in.py, in.pz);
       vector_lanes(kBAt, in.cx, in.cy, in.cz);
       vector_lanes(kBAt + 1, in.wx, in.wy, in.wz);
       constexpr bool annulus = std::is_same_v<B, Annulus3<double>>;  // fields: inner, outer radius
-      constexpr auto target = annulus ? detail::LaneTarget::kRing
+      constexpr auto target = annulus                            ? detail::LaneTarget::kRing
                               : std::is_same_v<B, Disk3<double>> ? detail::LaneTarget::kDisk
                                                                  : detail::LaneTarget::kCircle;
       constexpr int outer = annulus ? kBAt + 3 : kBAt + 2;
@@ -203,10 +205,14 @@ enum Solver : int { kCompanion, kPolished, kBracketing, kEigen, kSolverCount };
 
 // The table index of a root policy.
 template <class Roots> constexpr int solver_index() {
-  if constexpr (std::is_same_v<Roots, EigenPolished>) return kPolished;
-  else if constexpr (std::is_same_v<Roots, Bracketing>) return kBracketing;
-  else if constexpr (std::is_same_v<Roots, EigenPolynomialSolver>) return kEigen;
-  else return kCompanion;
+  if constexpr (std::is_same_v<Roots, EigenPolished>)
+    return kPolished;
+  else if constexpr (std::is_same_v<Roots, Bracketing>)
+    return kBracketing;
+  else if constexpr (std::is_same_v<Roots, EigenPolynomialSolver>)
+    return kEigen;
+  else
+    return kCompanion;
 }
 
 // The tables of the precisions that have their own instantiations: double and long double
@@ -217,8 +223,10 @@ struct PairTables {
   int default_solver = solver_index<DefaultRoots>();  // solver=None: the C++ default
 
   template <class Real> PairTable<Real>& of(int solver) {
-    if constexpr (std::is_same_v<Real, long double>) return long_doubles[solver];
-    else return doubles[solver];
+    if constexpr (std::is_same_v<Real, long double>)
+      return long_doubles[solver];
+    else
+      return doubles[solver];
   }
   template <class Real> const PairTable<Real>& of(int solver) const {
     return const_cast<PairTables*>(this)->of<Real>(solver);
@@ -257,7 +265,7 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<Disk3<Real>, Disk3<Real>>();
   v.template add<BezierCurve3<Real>, Disk3<Real>>();
   v.template add<BezierCurve3<Real>, Circle3<Real>>();
-  v.template add<BezierCurve3<Real>, Vec3<Real>>();  // bezier_point.hpp
+  v.template add<BezierCurve3<Real>, Vec3<Real>>();   // bezier_point.hpp
   v.template add<BezierCurve3<Real>, Line3<Real>>();  // bezier_linear.hpp
   v.template add<BezierCurve3<Real>, Ray3<Real>>();
   v.template add<BezierCurve3<Real>, Segment3<Real>>();
@@ -281,9 +289,9 @@ template <class Real, class Visitor> void for_each_polynomial_pair(Visitor&& v) 
   v.template add<Annulus3<Real>, Annulus3<Real>>();
 }
 template <class Real, class Visitor> void for_each_closed_form_pair(Visitor&& v) {
-  v.template add<Vec3<Real>, Circle3<Real>>();  // point_circle.hpp
-  v.template add<Vec3<Real>, Disk3<Real>>();    // point_disk.hpp
-  v.template add<Vec3<Real>, Arc3<Real>>();     // arc.hpp (closed form)
+  v.template add<Vec3<Real>, Circle3<Real>>();   // point_circle.hpp
+  v.template add<Vec3<Real>, Disk3<Real>>();     // point_disk.hpp
+  v.template add<Vec3<Real>, Arc3<Real>>();      // arc.hpp (closed form)
   v.template add<Vec3<Real>, Annulus3<Real>>();  // annulus.hpp (closed form)
   // linear_linear.hpp: points, lines, rays and segments against each other.
   v.template add<Vec3<Real>, Vec3<Real>>();
@@ -331,9 +339,11 @@ inline SelectedEigenPolicy::Which selected_eigen_policy(int solver) {
 // pair_unit.cpp alone (CMakeLists.txt builds it once per entry, with the same list); the module
 // sees the declarations only, and registers each unit once. The default policy, Bracketing, has
 // its own unit, so its path pays no switch.
-#define CIRCLEDIST_PAIR_UNITS(X)                                                          \
-  X(double, Bracketing) X(double, SelectedEigenPolicy) X(double, NoRoots)                 \
+// clang-format off: one line per precision
+#define CIRCLEDIST_PAIR_UNITS(X)                                                         \
+  X(double, Bracketing) X(double, SelectedEigenPolicy) X(double, NoRoots)                \
   X(long double, Bracketing) X(long double, SelectedEigenPolicy) X(long double, NoRoots)
+// clang-format on
 #define CIRCLEDIST_DECLARE_PAIR_UNIT(REAL, ROOTS) extern template void register_pairs<REAL, ROOTS>(PairTables&);
 CIRCLEDIST_PAIR_UNITS(CIRCLEDIST_DECLARE_PAIR_UNIT)
 #undef CIRCLEDIST_DECLARE_PAIR_UNIT

@@ -21,9 +21,7 @@ namespace circledist::python {
 // Elements per chunk at most: enough chunks for the threads to share unevenly priced elements (a
 // batch mixes tangencies with easy cases), each large enough that taking it costs nothing beside
 // it.
-inline Index chunk_size(Index size, int workers) {
-  return std::clamp<Index>(size / (Index(workers) * 16), 256, 16384);
-}
+inline Index chunk_size(Index size, int workers) { return std::clamp<Index>(size / (Index(workers) * 16), 256, 16384); }
 
 // And in time: the caller's first chunk is small (kFirstChunk elements) and timed, and the chunks
 // after it are sized to take about kChunkTime, so that the caller, which checks for Ctrl-C and
@@ -65,7 +63,8 @@ bool run_in_chunks(Index size, int workers, Work&& work, Interrupted&& interrupt
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
           const double per_element = seconds / double(end - begin);
           const double wanted = std::chrono::duration<double>(kChunkTime).count() / std::max(per_element, 1e-12);
-          chunk.store(Index(std::clamp<double>(wanted, double(kFirstChunk), double(largest))), std::memory_order_relaxed);
+          chunk.store(Index(std::clamp<double>(wanted, double(kFirstChunk), double(largest))),
+                      std::memory_order_relaxed);
         }
         const Index answered = done.fetch_add(end - begin, std::memory_order_relaxed) + (end - begin);
         if (caller && interrupted(answered)) {

@@ -24,4 +24,3 @@ def make(kind, data):
     if kind == "bezier":
         return cd.Bezier(data if isinstance(data, np.ndarray) else np.array(data, dtype=float))
     raise ValueError(kind)
-

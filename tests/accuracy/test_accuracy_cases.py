@@ -8,6 +8,7 @@ shape, which no accuracy check can notice (an annulus's radii were swapped that 
 converted case, read back in the documented layout, must be the differential test's own shapes:
 the same fields, and the same distance to the bit.
 """
+
 import numpy as np
 import pytest
 
@@ -49,8 +50,20 @@ def test_every_kind_is_converted():
     assert {"point-annulus", "annulus-annulus", "point-arc", "circle-disk", "bezier-circle"} <= kinds
 
 
-FIELDS = ("center", "normal", "radius", "inner_radius", "outer_radius", "start", "angle", "origin", "direction",
-          "p0", "p1", "control_points")
+FIELDS = (
+    "center",
+    "normal",
+    "radius",
+    "inner_radius",
+    "outer_radius",
+    "start",
+    "angle",
+    "origin",
+    "direction",
+    "p0",
+    "p1",
+    "control_points",
+)
 
 
 @pytest.mark.parametrize("kind", sorted({case.kind for _, case in PAIRS}))
@@ -61,15 +74,20 @@ def test_converted_shapes_are_the_family_shapes(kind):
             continue
         (ka, va), (kb, vb) = acc.split_values(case.kind, case.values)
         mine = [_from_layout(ka, va), _from_layout(kb, vb)]
-        theirs = [D.make_shape(cd, k, np.asarray(data, dtype=np.float64))
-                  for k, data in ((c["a"], c["a_data"]), (c["b"], c["b_data"]))]
+        theirs = [
+            D.make_shape(cd, k, np.asarray(data, dtype=np.float64))
+            for k, data in ((c["a"], c["a_data"]), (c["b"], c["b_data"]))
+        ]
         if (c["a"], c["b"]) != (ka, kb):  # converted to the report's order of the kinds
             theirs.reverse()
         for shape, other in zip(mine, theirs):
             for field in FIELDS:
                 if hasattr(shape, field):
-                    np.testing.assert_array_equal(np.asarray(getattr(shape, field)), np.asarray(getattr(other, field)),
-                                                  err_msg=f"{case.name}: {field}")
+                    np.testing.assert_array_equal(
+                        np.asarray(getattr(shape, field)),
+                        np.asarray(getattr(other, field)),
+                        err_msg=f"{case.name}: {field}",
+                    )
             if getattr(shape, "kind", None) == "annulus":
                 assert shape.inner_radius <= shape.outer_radius, case.name
         assert cd.distance(*mine) == cd.distance(*theirs), case.name

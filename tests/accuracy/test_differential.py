@@ -50,23 +50,27 @@ from circledist_cases import differential as D
 cd = pytest.importorskip("circledist")
 
 SEED = 20261114
-PER_PAIR = 4          # cases per (family, kind pair) ...
-MIN_PER_FAMILY = 40   # ... and at least this many per family
+PER_PAIR = 4  # cases per (family, kind pair) ...
+MIN_PER_FAMILY = 40  # ... and at least this many per family
 PER_PAIR_NO_ROUND = 2  # cases per (family, kind pair) of the families without a circle or disk
-PER_PAIR_ARC = 2       # cases per (family, kind pair) of the arc families
-PER_PAIR_ANN = 2       # ... and of the annulus families
-PER_PAIR_EFFECT = 4    # ... and of the effect families (every kind pair; check_effects_definition too)
+PER_PAIR_ARC = 2  # cases per (family, kind pair) of the arc families
+PER_PAIR_ANN = 2  # ... and of the annulus families
+PER_PAIR_EFFECT = 4  # ... and of the effect families (every kind pair; check_effects_definition too)
 # The arc families' direct 50-digit comparison (~0.2 s a case with every combination) takes the
 # first case of every third (family, kind pair): the pair whose index in the family's list is the
 # family's index mod 3, so every arc pair is compared directly in some families.
-DIRECT_ARC_EVERY = 3   # (the annulus families alike)
-SCALAR_EVERY = 4      # scalar calls on every 4th case
+DIRECT_ARC_EVERY = 3  # (the annulus families alike)
+SCALAR_EVERY = 4  # scalar calls on every 4th case
 # The direct 50-digit comparison takes the first case of every (family, kind pair), except for a
 # Bezier curve against a point, line, ray or segment (whose reference costs ~0.5 s a case): one
 # (family, pair) each, an adversarial one.  Their other families' findings are confirmed against
 # the same references all the same, and tests/pairs/test_bezier_point_linear.py compares them directly.
-DIRECT_BEZIER_LINEAR = {("bezier", "point"): "bezier_large_linear", ("bezier", "line"): "bezier_tangent_line",
-                        ("bezier", "ray"): "bezier_crossing", ("bezier", "segment"): "bezier_far_control_linear"}
+DIRECT_BEZIER_LINEAR = {
+    ("bezier", "point"): "bezier_large_linear",
+    ("bezier", "line"): "bezier_tangent_line",
+    ("bezier", "ray"): "bezier_crossing",
+    ("bezier", "segment"): "bezier_far_control_linear",
+}
 
 
 def slice_cases():
@@ -114,10 +118,12 @@ def results():
     direct = {}
     ref_findings, diags = D.reference_check(cd, list(firsts.values()), stats=direct)
     t2 = time.perf_counter()
-    print(f"\ndifferential slice: {len(cases)} cases, {sum(stats['answers'].values())} library answers, "
-          f"{t1 - t0:.1f} s checks; "
-          f"{len(firsts)} direct 50-digit references, {t2 - t1:.1f} s; unique checked "
-          f"(screen) {dict(stats['unique_checked'])}, (direct) {dict(sorted(direct['unique_checked_direct'].items()))}")
+    print(
+        f"\ndifferential slice: {len(cases)} cases, {sum(stats['answers'].values())} library answers, "
+        f"{t1 - t0:.1f} s checks; "
+        f"{len(firsts)} direct 50-digit references, {t2 - t1:.1f} s; unique checked "
+        f"(screen) {dict(stats['unique_checked'])}, (direct) {dict(sorted(direct['unique_checked_direct'].items()))}"
+    )
     return dict(cases=cases, findings=findings + ref_findings, diags=diags, firsts=list(firsts.values()))
 
 
@@ -130,9 +136,11 @@ def describe(findings, limit=12):
         combos = collections.Counter((f["solver"], f["precision"]) for f in fs)
         errors = [f["error"] for f in fs if isinstance(f.get("error"), float)]
         worst = max(fs, key=lambda f: f.get("error") or 0) if errors else fs[0]
-        lines.append(f"\n[{check}] family={family} pair={pair}: {len(fs)} answers, "
-                     f"cases {sorted({f['case_id'] for f in fs})[:4]}, combos {dict(combos)}"
-                     + (f", worst relative error {max(errors):.3g}" if errors else ""))
+        lines.append(
+            f"\n[{check}] family={family} pair={pair}: {len(fs)} answers, "
+            f"cases {sorted({f['case_id'] for f in fs})[:4]}, combos {dict(combos)}"
+            + (f", worst relative error {max(errors):.3g}" if errors else "")
+        )
         lines.append(D.reproducer(worst))
     return "\n".join(lines)
 
@@ -161,8 +169,9 @@ def test_no_confirmed_findings(results, family):
     assert not unknown, describe(unknown)
     known = {pair: why for (fam, pair), why in KNOWN_FAILURES.items() if fam == family}
     for pair in known:
-        assert any(D.finding_class(f)[2] == pair for f in bad), (
-            f"{family}/{pair} no longer fails: remove it from KNOWN_FAILURES")
+        assert any(
+            D.finding_class(f)[2] == pair for f in bad
+        ), f"{family}/{pair} no longer fails: remove it from KNOWN_FAILURES"
     if known:
         pytest.xfail("; ".join(f"{family} {pair}: {why}" for pair, why in known.items()))
 
@@ -176,26 +185,40 @@ def test_screen_false_alarms_and_reference_misses(results):
     missed = [f for f in results["findings"] if f.get("reference_missed")]
     problems = []
     if refuted:
-        problems.append(f"{len(refuted)} screen alarms refuted by the reference: " + "; ".join(
-            f"{f['case_id']} {f['solver']}/{f['precision']} {f['check']} lib {f.get('library')} "
-            f"screen {f.get('screen')} ref {f.get('reference')}" for f in refuted[:5]))
+        problems.append(
+            f"{len(refuted)} screen alarms refuted by the reference: "
+            + "; ".join(
+                f"{f['case_id']} {f['solver']}/{f['precision']} {f['check']} lib {f.get('library')} "
+                f"screen {f.get('screen')} ref {f.get('reference')}"
+                for f in refuted[:5]
+            )
+        )
     if missed:
-        problems.append(f"{len(missed)} findings where the reference missed the minimum the screen found: "
-                        + "; ".join(f"{f['case_id']} ref {f['reference']} screen {f.get('reference_screen')}"
-                                    for f in missed[:5]))
+        problems.append(
+            f"{len(missed)} findings where the reference missed the minimum the screen found: "
+            + "; ".join(f"{f['case_id']} ref {f['reference']} screen {f.get('reference_screen')}" for f in missed[:5])
+        )
     problems += [str(d) for d in results["diags"]]
     assert not problems, "\n".join(problems)
 
 
 # ---- the tools on their own (no library call) ------------------------------------------------
 def far_curve_case():
-    """The long run's false bezier_large finding (circledist_cases/scenes.py, tests/accuracy/test_regressions_bezier.py): a degree-1 curve 2e4
+    """The long run's false bezier_large finding (circledist_cases/scenes.py,
+    tests/accuracy/test_regressions_bezier.py): a degree-1 curve 2e4
     long passing a ring of radius 0.78, with two local minima 2.5e-5 apart in t whose values
     differ by 5.9e-13; both tools used to refine only the higher one."""
     from circledist_cases.scenes import FAR_CURVE_CONTROL, FAR_CURVE_DISTANCE, FAR_CURVE_RING
+
     center, normal, radius = FAR_CURVE_RING
-    case = dict(family="bezier_large", id="far_curve", a="bezier", a_data=FAR_CURVE_CONTROL.tolist(),
-                b="circle", b_data=list(center) + list(normal) + [radius])
+    case = dict(
+        family="bezier_large",
+        id="far_curve",
+        a="bezier",
+        a_data=FAR_CURVE_CONTROL.tolist(),
+        b="circle",
+        b_data=list(center) + list(normal) + [radius],
+    )
     return case, FAR_CURVE_DISTANCE, radius
 
 
@@ -226,37 +249,65 @@ def _hand_case(ka, a, kb, b):
 CIRCLE = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0]
 
 
-@pytest.mark.parametrize("ka, a, kb, b, want", [
-    # a straight curve at height 2 across the circle, symmetric about its axis: x = +-1 tie
-    ("bezier", [[-2.0, 0.0, 2.0], [0.0, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, None),
-    # the same, one side only: x = 1
-    ("bezier", [[0.2, 0.0, 2.0], [1.1, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, True),
-    # a curve on the circle's axis (every control point): every rim point as close
-    ("bezier", [[0.0, 0.0, 1.0], [0.0, 0.0, 3.0], [0.0, 0.0, 2.0]], "circle", CIRCLE, False),
-    # a curve ending at the circle's plane, short of its rim: the minimum at the end t = 1
-    ("bezier", [[0.3, 0.0, 2.0], [0.3, 0.5, 1.0], [0.5, 0.0, 0.0]], "disk", CIRCLE, True),
-    # a curve along a line (a flat run of minima)
-    ("bezier", [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [2.0, 0.0, 1.0]], "line", [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], None),
-    # two coplanar circles apart: one pair
-    ("circle", CIRCLE, "circle", [3.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0], True),
-    # a circle tangent to the other's axis at its centre, nearest there (a strict minimum over its
-    # angle): every rim point of the other is as close (distance 1), the target's nearest point is
-    # not unique there
-    ("circle", [1.2, 0.0, 0.0, 0.0, 1.0, 0.0, 1.2], "circle", CIRCLE, None),
-    # an arc in a vertical plane from beyond an annulus's outer rim up over its ring, nearest at
-    # its start (0, 3, 1)
-    ("arc", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 3.0, 0.0, 1.0, 0.0, 1.0], "annulus",
-     [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.5, 1.0], True),
-    # a huge circle through a tiny-holed annulus 8e-8 from its axis, in a scene of scale 3.7e8
-    # (ann_huge_circle/21/216): within the scene's rounding of the inner rim's axis, not called
-    ("circle", [120582553.34208253, -148834309.91328016, -317319889.41030097, -0.06949600391428644,
-                -0.7651446695945717, 0.3324713521195893, 370653091.7178497], "annulus",
-     [0.6756174095537185, -1.6265741399653666, -1.8059190432074093, 0.11639810755213308, 0.2329988340881641,
-      0.7955980667529972, 1.65122495808562, 1.6512249580856201e-09], None),
-    # a line over an annulus's ring, parallel to its plane (a flat run) and tilted (one pair)
-    ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], None),
-    ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.25], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], True),
-])
+@pytest.mark.parametrize(
+    "ka, a, kb, b, want",
+    [
+        # a straight curve at height 2 across the circle, symmetric about its axis: x = +-1 tie
+        ("bezier", [[-2.0, 0.0, 2.0], [0.0, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, None),
+        # the same, one side only: x = 1
+        ("bezier", [[0.2, 0.0, 2.0], [1.1, 0.0, 2.0], [2.0, 0.0, 2.0]], "circle", CIRCLE, True),
+        # a curve on the circle's axis (every control point): every rim point as close
+        ("bezier", [[0.0, 0.0, 1.0], [0.0, 0.0, 3.0], [0.0, 0.0, 2.0]], "circle", CIRCLE, False),
+        # a curve ending at the circle's plane, short of its rim: the minimum at the end t = 1
+        ("bezier", [[0.3, 0.0, 2.0], [0.3, 0.5, 1.0], [0.5, 0.0, 0.0]], "disk", CIRCLE, True),
+        # a curve along a line (a flat run of minima)
+        ("bezier", [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [2.0, 0.0, 1.0]], "line", [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], None),
+        # two coplanar circles apart: one pair
+        ("circle", CIRCLE, "circle", [3.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0], True),
+        # a circle tangent to the other's axis at its centre, nearest there (a strict minimum over its
+        # angle): every rim point of the other is as close (distance 1), the target's nearest point is
+        # not unique there
+        ("circle", [1.2, 0.0, 0.0, 0.0, 1.0, 0.0, 1.2], "circle", CIRCLE, None),
+        # an arc in a vertical plane from beyond an annulus's outer rim up over its ring, nearest at
+        # its start (0, 3, 1)
+        (
+            "arc",
+            [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 3.0, 0.0, 1.0, 0.0, 1.0],
+            "annulus",
+            [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.5, 1.0],
+            True,
+        ),
+        # a huge circle through a tiny-holed annulus 8e-8 from its axis, in a scene of scale 3.7e8
+        # (ann_huge_circle/21/216): within the scene's rounding of the inner rim's axis, not called
+        (
+            "circle",
+            [
+                120582553.34208253,
+                -148834309.91328016,
+                -317319889.41030097,
+                -0.06949600391428644,
+                -0.7651446695945717,
+                0.3324713521195893,
+                370653091.7178497,
+            ],
+            "annulus",
+            [
+                0.6756174095537185,
+                -1.6265741399653666,
+                -1.8059190432074093,
+                0.11639810755213308,
+                0.2329988340881641,
+                0.7955980667529972,
+                1.65122495808562,
+                1.6512249580856201e-09,
+            ],
+            None,
+        ),
+        # a line over an annulus's ring, parallel to its plane (a flat run) and tilted (one pair)
+        ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.0], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], None),
+        ("line", [0.0, 0.0, 1.0, 1.0, 0.0, 0.25], "annulus", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0], True),
+    ],
+)
 def test_unique_rule_by_hand(ka, a, kb, b, want):
     """The unique rules on hand-made cases whose answer is plain (differential.expected_unique's
     exact continua, else differential.reference_unique's 50-digit search), and the library's

@@ -27,12 +27,28 @@ def _fuzz_module():
 @pytest.mark.serial
 def test_fuzz_slice_finds_nothing(tmp_path):
     report = tmp_path / "fuzz.json"
-    proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--cases", "6000", "--seed", "15",
-                           "--chunk", "3000", "--report", str(report)], capture_output=True, text=True, timeout=600)
+    proc = subprocess.run(
+        [
+            sys.executable,
+            str(ROOT / "tools" / "fuzz_crash.py"),
+            "--cases",
+            "6000",
+            "--seed",
+            "15",
+            "--chunk",
+            "3000",
+            "--report",
+            str(report),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     summary = json.loads(report.read_text())
     assert summary["cases"] == 6000
     assert (summary["crashes"], summary["hangs"], summary["findings"]) == (0, 0, 0), json.dumps(
-        summary["examples"][:3], indent=1)
+        summary["examples"][:3], indent=1
+    )
     assert proc.returncode == 0
 
 
@@ -47,12 +63,26 @@ def test_hostile_files_slice_finds_nothing(tmp_path):
     fuzz_crash = _fuzz_module()
     report = tmp_path / "files.json"
     cases = 2 * len(fuzz_crash.FILE_CLASSES)
-    proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--files", str(cases), "--seed", "15",
-                           "--report", str(report)], capture_output=True, text=True, timeout=600)
+    proc = subprocess.run(
+        [
+            sys.executable,
+            str(ROOT / "tools" / "fuzz_crash.py"),
+            "--files",
+            str(cases),
+            "--seed",
+            "15",
+            "--report",
+            str(report),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     summary = json.loads(report.read_text())
     assert summary["cases"] == cases and set(summary["classes"]) == set(fuzz_crash.FILE_CLASSES)
     assert (summary["crashes"], summary["hangs"], summary["findings"]) == (0, 0, 0), json.dumps(
-        summary["examples"][:3], indent=1)
+        summary["examples"][:3], indent=1
+    )
     assert proc.returncode == 0
 
 
@@ -64,12 +94,26 @@ def test_threads_slice_finds_nothing(tmp_path):
     within, queries by name, distance_matrix, pickling mid-run and adding a name taken; each
     scenario in its own child, every answer that of a serial scene of a prefix of the adds."""
     report = tmp_path / "threads.json"
-    proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--threads", "3", "--seed", "15",
-                           "--report", str(report)], capture_output=True, text=True, timeout=600)
+    proc = subprocess.run(
+        [
+            sys.executable,
+            str(ROOT / "tools" / "fuzz_crash.py"),
+            "--threads",
+            "3",
+            "--seed",
+            "15",
+            "--report",
+            str(report),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     summary = json.loads(report.read_text())
     assert summary["cases"] == 3
     assert (summary["crashes"], summary["hangs"], summary["findings"]) == (0, 0, 0), json.dumps(
-        summary["examples"][:3], indent=1)
+        summary["examples"][:3], indent=1
+    )
     assert proc.returncode == 0
 
 
@@ -125,8 +169,23 @@ def test_arguments_slice_finds_nothing(tmp_path):
     and IndexError, never pybind11's words; every entry point called."""
     fuzz_crash = _fuzz_module()
     report = tmp_path / "arguments.json"
-    proc = subprocess.run([sys.executable, str(ROOT / "tools" / "fuzz_crash.py"), "--arguments", "800", "--seed", "15",
-                           "--chunk", "400", "--report", str(report)], capture_output=True, text=True, timeout=600)
+    proc = subprocess.run(
+        [
+            sys.executable,
+            str(ROOT / "tools" / "fuzz_crash.py"),
+            "--arguments",
+            "800",
+            "--seed",
+            "15",
+            "--chunk",
+            "400",
+            "--report",
+            str(report),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     summary = json.loads(report.read_text())
     assert summary["cases"] == sum(summary["classes"].values()) > 700
     assert set(summary["classes"]) >= set(fuzz_crash.ARGUMENTS) - {"dask.pairs_within"}
@@ -146,13 +205,18 @@ def test_argument_calls_catch_what_they_look_for():
     case = {"index": 0, "entry": "nearest", "argument": "k", "value": "2**64+1", "batch": "small", "kind": "point"}
     assert fuzz_crash.run_argument_case(cd, case) is None
     real = cd.nearest
-    for error, words in ((TypeError("Unable to cast Python instance"), "pybind11's words"),
-                         (RuntimeError("boom"), "RuntimeError"), (MemoryError("std::bad_alloc"), "C++"),
-                         (MemoryError("nearest: too large"), "after growing")):
+    for error, words in (
+        (TypeError("Unable to cast Python instance"), "pybind11's words"),
+        (RuntimeError("boom"), "RuntimeError"),
+        (MemoryError("std::bad_alloc"), "C++"),
+        (MemoryError("nearest: too large"), "after growing"),
+    ):
+
         def raising(*args, error=error, grow=words == "after growing", **kw):
             if grow:
                 np.ones(fuzz_crash.ARGUMENT_GROWTH // 4)  # twice the growth that counts, touched
             raise error
+
         try:
             cd.nearest = raising
             found = fuzz_crash.run_argument_case(cd, case)

@@ -33,8 +33,12 @@ piece, point_to_piece, reference = RL.piece, RL.point_to_piece, RL.reference
 
 
 def make(kind, p, q):
-    return {"point": lambda: cd.Point(p), "line": lambda: cd.Line(p, q), "ray": lambda: cd.Ray(p, q),
-            "segment": lambda: cd.Segment(p, q)}[kind]()
+    return {
+        "point": lambda: cd.Point(p),
+        "line": lambda: cd.Line(p, q),
+        "ray": lambda: cd.Ray(p, q),
+        "segment": lambda: cd.Segment(p, q),
+    }[kind]()
 
 
 def floor(ka, a, kb, b):
@@ -51,8 +55,9 @@ def cases():
     out = []
     for ka, kb in PAIRS:
         for i in range(6):  # random
-            out.append(("random", ka, (rng.normal(size=3), rng.normal(size=3)), kb,
-                        (rng.normal(size=3), rng.normal(size=3))))
+            out.append(
+                ("random", ka, (rng.normal(size=3), rng.normal(size=3)), kb, (rng.normal(size=3), rng.normal(size=3)))
+            )
         for angle in (1e-2, 1e-5, 1e-8, 1e-12):  # nearly parallel, crossing or just apart
             for gap in (0.0, 1e-15, 1e-9):
                 x = rng.normal(size=3)
@@ -112,23 +117,53 @@ def cases():
     # Found by the differential test (linear_far_origin/1/290, /235): a point 6e-9 from a segment
     # whose ends lie 1e11 and 1e8 away answered 1.7e-5; a ray and a segment 5e-17 rad apart, their
     # origin and far end 3e10 and 9e9 from where they pass 3.7e-7 apart, answered 3.5e-8.
-    out.append(("found: point by a long far segment", "point",
-                ([0.8001554157507818, -0.3458700927461995, 0.13286317186295868], [0.0, 0.0, 0.0]), "segment",
-                ([112221190684.01337, -61990910881.69316, -70779235551.27132],
-                 [-99936905.46298178, 55205080.01550244, 63031391.847861975])))
-    out.append(("found: far ray and segment 5e-17 rad apart", "ray",
-                ([10355145348.85256, -11762825922.486448, 29936564446.30502],
-                 [-0.0960963293781369, 0.10915968400308561, -0.2778129963567933]), "segment",
-                ([-0.7800725896139666, -0.9680412084446177, 1.9812839500368162],
-                 [-2881389669.7702622, 3273086367.5970874, -8330052798.097823])))
+    out.append(
+        (
+            "found: point by a long far segment",
+            "point",
+            ([0.8001554157507818, -0.3458700927461995, 0.13286317186295868], [0.0, 0.0, 0.0]),
+            "segment",
+            (
+                [112221190684.01337, -61990910881.69316, -70779235551.27132],
+                [-99936905.46298178, 55205080.01550244, 63031391.847861975],
+            ),
+        )
+    )
+    out.append(
+        (
+            "found: far ray and segment 5e-17 rad apart",
+            "ray",
+            (
+                [10355145348.85256, -11762825922.486448, 29936564446.30502],
+                [-0.0960963293781369, 0.10915968400308561, -0.2778129963567933],
+            ),
+            "segment",
+            (
+                [-0.7800725896139666, -0.9680412084446177, 1.9812839500368162],
+                [-2881389669.7702622, 3273086367.5970874, -8330052798.097823],
+            ),
+        )
+    )
     # Found by a random search: crossing segments 1e-5 rad apart answered 1.5e-11 for 5.8e-18.
-    out.append(("found: crossing segments", "segment",
-                ([0.469088546821133, 0.026205966427920835, 1.8590472355014187],
-                 [-1.0934957465634532, 0.7561085485942733, 0.22038671559146072]), "segment",
-                ([1.9660258787094098, -0.6730321024438254, 3.428864695992459],
-                 [-0.3778505617265781, 0.4218217708477871, 0.9708739150794374])))
-    return [(name, ka, tuple(np.asarray(x, float) for x in a), kb, tuple(np.asarray(x, float) for x in b))
-            for name, ka, a, kb, b in out]
+    out.append(
+        (
+            "found: crossing segments",
+            "segment",
+            (
+                [0.469088546821133, 0.026205966427920835, 1.8590472355014187],
+                [-1.0934957465634532, 0.7561085485942733, 0.22038671559146072],
+            ),
+            "segment",
+            (
+                [1.9660258787094098, -0.6730321024438254, 3.428864695992459],
+                [-0.3778505617265781, 0.4218217708477871, 0.9708739150794374],
+            ),
+        )
+    )
+    return [
+        (name, ka, tuple(np.asarray(x, float) for x in a), kb, tuple(np.asarray(x, float) for x in b))
+        for name, ka, a, kb, b in out
+    ]
 
 
 CASES = cases()
@@ -144,7 +179,9 @@ def test_linear_pairs_against_the_reference(case):
     A, B = make(ka, *a), make(kb, *b)
     for first, second in ((A, B), (B, A)):  # long double: the same inputs, the 1e-15 bar
         d = cd.distance(first, second, precision="longdouble")
-        assert abs(mp.mpf(repr(float(d))) + mp.mpf(repr(float(d - np.longdouble(float(d))))) - exact) <= 1e-15 * max(truth, floor(ka, a, kb, b)), f"{name}: long double {d!r}"
+        assert abs(mp.mpf(repr(float(d))) + mp.mpf(repr(float(d - np.longdouble(float(d))))) - exact) <= 1e-15 * max(
+            truth, floor(ka, a, kb, b)
+        ), f"{name}: long double {d!r}"
     for solver in ("bracketing", "companion"):
         for first, second, swapped in ((A, B, False), (B, A, True)):
             d = float(cd.distance(first, second, solver=solver))
@@ -167,19 +204,34 @@ def near_largest_cases():
     out = []
     for x in (1e306, 1.5e308, 1.7e308):
         p = np.array([x, 0.0, 1.0])
-        for kind, b in (("ray", ([0.0, 0, 0], [1.9, 0, 0])), ("line", ([0.0, 0, 0], [1.9, 0, 0])),
-                        ("segment", ([0.0, 0, 0], [1.79e308, 0, 0])), ("segment", ([-x, 0, 0], [x, 0, 0]))):
+        for kind, b in (
+            ("ray", ([0.0, 0, 0], [1.9, 0, 0])),
+            ("line", ([0.0, 0, 0], [1.9, 0, 0])),
+            ("segment", ([0.0, 0, 0], [1.79e308, 0, 0])),
+            ("segment", ([-x, 0, 0], [x, 0, 0])),
+        ):
             out.append((f"point {x:g} from {kind}", "point", (p, p), kind, tuple(np.asarray(v) for v in b)))
             if kind != "segment" or b[0][0] == 0:  # (the line first: the reference's search runs along it)
-                out.append((f"a line across a {kind} at {x:g}", "line", (p, np.array([0.0, 1.0, 0.0])), kind,
-                            tuple(np.asarray(v) for v in b)))
+                out.append(
+                    (
+                        f"a line across a {kind} at {x:g}",
+                        "line",
+                        (p, np.array([0.0, 1.0, 0.0])),
+                        kind,
+                        tuple(np.asarray(v) for v in b),
+                    )
+                )
     d, m = np.array([3.0, 4.0, 12.0]), np.array([4.0, -3.0, 0.0])  # d.m = 0
     for k in (1018, 1020):
         far = np.ldexp(1.0, k)
         for e in (-30, 0):
             p = np.ldexp(1.0, e) * m  # 5 h from the line through 0 along d
-            for kind, b in (("line", (-far * d, d)), ("ray", (-far * d, d)), ("segment", (-far * d, far / 2 * d)),
-                            ("segment", (-far * d, 0.25 * d))):
+            for kind, b in (
+                ("line", (-far * d, d)),
+                ("ray", (-far * d, d)),
+                ("segment", (-far * d, far / 2 * d)),
+                ("segment", (-far * d, 0.25 * d)),
+            ):
                 out.append((f"point 2^{e} off a {kind} from 2^{k}", "point", (p, p), kind, b))
     return out
 

@@ -33,7 +33,6 @@ their bar is the double one plus the rounding of the answer (4 float32 ulps).
 # polished.  Fixed (bezier.hpp, push_refined_curve_height_roots) and kept in test_regressions.py
 # (test_bezier_through_ring, test_bezier_crossing_ring_family).
 
-
 # ---- closest_points().unique: a huge arc's end against a small far annulus ------------------
 # The first version of the direct unique check (differential.reference_unique, the annulus's
 # nearest point taken as unique without a margin beyond its outer rim) flagged two of the 3,325
@@ -63,12 +62,31 @@ import pytest  # noqa: E402
 cd = pytest.importorskip("circledist")
 
 _HUGE_ARC_SMALL_RING = (
-    [259192780.31313407, -270557883.219172, 421082870.61115444, -4.055213681401723, -0.006223477386581729,
-     2.4921419847326933, 563642839.6161832, -0.3249552448068777, -0.7827759976809177, -0.530721985908956,
-     4.71238898038469],
+    [
+        259192780.31313407,
+        -270557883.219172,
+        421082870.61115444,
+        -4.055213681401723,
+        -0.006223477386581729,
+        2.4921419847326933,
+        563642839.6161832,
+        -0.3249552448068777,
+        -0.7827759976809177,
+        -0.530721985908956,
+        4.71238898038469,
+    ],
     # annulus: centre, normal, OUTER, inner (the differential's order)
-    [-1.2695014980474324, -0.36772547765984753, -0.9259401945315068, 4.7207662175972205, -0.5914057431543157,
-     -0.1420351059521013, 0.16411236659247133, 0.07106066831417106])
+    [
+        -1.2695014980474324,
+        -0.36772547765984753,
+        -0.9259401945315068,
+        4.7207662175972205,
+        -0.5914057431543157,
+        -0.1420351059521013,
+        0.16411236659247133,
+        0.07106066831417106,
+    ],
+)
 
 
 def test_huge_arc_small_ring_one_pair():
@@ -77,6 +95,7 @@ def test_huge_arc_small_ring_one_pair():
     from circledist_cases import reference_annulus as RA
     from circledist_cases import reference_arc as A
     from circledist_cases import reference_round as R
+
     arc_d, ann_d = _HUGE_ARC_SMALL_RING
     arc = A.ArcMP(A.arc(arc_d[:3], arc_d[3:6], arc_d[6], arc_d[7:10], arc_d[10]))
     ann = RA.AnnulusMP(RA.annulus(ann_d[:3], ann_d[3:6], ann_d[7], ann_d[6]))
@@ -95,8 +114,11 @@ def test_huge_arc_small_ring_one_pair():
     assert g(phi + R.ctx.pi) - d > R.mpf("0.3")
 
 
-@pytest.mark.xfail(strict=True, reason="polished, double: unique=False for a huge arc's end against a small far "
-                                       "annulus (one strict closest pair at 50 digits)")
+@pytest.mark.xfail(
+    strict=True,
+    reason="polished, double: unique=False for a huge arc's end against a small far "
+    "annulus (one strict closest pair at 50 digits)",
+)
 def test_huge_arc_small_ring_unique():
     arc, ann = _HUGE_ARC_SMALL_RING
     a = cd.Arc(arc[:3], arc[3:6], arc[6], arc[7:10], arc[10])

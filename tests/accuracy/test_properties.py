@@ -34,8 +34,7 @@ coord = st.floats(min_value=-10, max_value=10, allow_nan=False, allow_infinity=F
 small = st.floats(min_value=-1, max_value=1, allow_nan=False, allow_infinity=False)
 vec = st.tuples(coord, coord, coord)
 nonzero_vec = vec.filter(lambda v: math.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2) > 1e-2)
-radius_st = st.one_of(st.floats(min_value=0.05, max_value=5.0), st.just(0.0),
-                      st.sampled_from([1.0, 2.5]))
+radius_st = st.one_of(st.floats(min_value=0.05, max_value=5.0), st.just(0.0), st.sampled_from([1.0, 2.5]))
 tiny = st.sampled_from([0.0, 1e-15, 1e-12, 1e-9, 1e-6, 1e-3])
 
 
@@ -119,11 +118,13 @@ def _random_rotation(q):
     q = np.asarray(q, float)
     q = q / np.linalg.norm(q)
     w, x, y, z = q
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-    ])
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
 
 
 def _move(sc, Q, T):
@@ -140,8 +141,7 @@ def _move(sc, Q, T):
     return lk, tuple(ld2), rk, tuple(rd2)
 
 
-quaternion = st.tuples(small, small, small, small).filter(
-    lambda q: sum(x * x for x in q) > 0.1)
+quaternion = st.tuples(small, small, small, small).filter(lambda q: sum(x * x for x in q) > 0.1)
 
 
 @pytest.mark.parametrize("kinds", KIND_PAIRS, ids=IDS)
@@ -188,6 +188,7 @@ def test_points_on_shapes(lib, kinds):
 def test_point_distance_is_closest_points_distance(lib, round_kind, precision):
     """A point's distance() and closest_points().distance come from the same height and radial
     offset: equal to the bit, and the closest point lies in the shape's plane."""
+
     @given(scene("point", round_kind))
     def check(sc):
         _, ld, rk, rd = sc
@@ -231,14 +232,14 @@ def _samples_round(rk, rd, rng, n=200):
         rr = np.full(n, R)
     else:
         rr = R * np.sqrt(rng.uniform(0, 1, n))
-        rr[:40] = R          # rim points
-        rr[40] = 0.0         # centre
+        rr[:40] = R  # rim points
+        rr[40] = 0.0  # centre
     return c + (rr * np.cos(th))[:, None] * u + (rr * np.sin(th))[:, None] * v
 
 
 @pytest.mark.parametrize("kinds", KIND_PAIRS, ids=IDS)
 def test_no_sampled_pair_is_closer(lib, kinds):
-    @given(scene(*kinds), st.integers(0, 2 ** 32 - 1))
+    @given(scene(*kinds), st.integers(0, 2**32 - 1))
     def check(sc, seed):
         lk, ld, rk, rd = sc
         d = lib.distance(make_shape(lib, lk, ld), make_shape(lib, rk, rd))

@@ -45,9 +45,11 @@ ORDERS = ["lin_first", "round_first"]
 
 def in_both_orders(cases):
     """Parametrizes a test by every one of `cases` (named by its id) and both argument orders."""
+
     def parametrized(test):
         by_case = pytest.mark.parametrize("case", cases, ids=[c.id for c in cases])(test)
         return pytest.mark.parametrize("order", ORDERS)(by_case)
+
     return parametrized
 
 
@@ -79,7 +81,8 @@ def test_distance(cd, case, order):
     err = abs(mpf(d) - r.distance)
     assert err <= REL * scale, (
         f"distance {d!r} vs reference {_fmt(r.distance)}: error {float(err):.3e} = "
-        f"{float(err / scale):.3e} * scale (allowed 1e-12), scale {float(scale):.3e}")
+        f"{float(err / scale):.3e} * scale (allowed 1e-12), scale {float(scale):.3e}"
+    )
 
 
 def _check_closest(case, order, res, r):
@@ -98,18 +101,21 @@ def _check_closest(case, order, res, r):
         return [f"non-finite points {p_lin}, {p_round}"]
     err = abs(mpf(d) - r.distance)
     if err > tol:
-        problems.append(f"closest_points.distance {d!r} vs reference {_fmt(r.distance)}: "
-                        f"error {float(err / scale):.3e} * scale")
-    sl_lin = 2 * EPS * float(np.linalg.norm(p_lin))      # representation limit
+        problems.append(
+            f"closest_points.distance {d!r} vs reference {_fmt(r.distance)}: " f"error {float(err / scale):.3e} * scale"
+        )
+    sl_lin = 2 * EPS * float(np.linalg.norm(p_lin))  # representation limit
     sl_round = 2 * EPS * float(np.linalg.norm(p_round))
     on_lin = ref.distance_to_shape(p_lin, case.lin_kind, case.lin_data)
     on_round = ref.distance_to_shape(p_round, case.round_kind, case.round_data)
     if on_lin > tol + sl_lin:
-        problems.append(f"point on {case.lin_kind} is {float(on_lin):.3e} off it "
-                        f"(allowed {float(tol + sl_lin):.3e})")
+        problems.append(
+            f"point on {case.lin_kind} is {float(on_lin):.3e} off it " f"(allowed {float(tol + sl_lin):.3e})"
+        )
     if on_round > tol + sl_round:
-        problems.append(f"point on {case.round_kind} is {float(on_round):.3e} off it "
-                        f"(allowed {float(tol + sl_round):.3e})")
+        problems.append(
+            f"point on {case.round_kind} is {float(on_round):.3e} off it " f"(allowed {float(tol + sl_round):.3e})"
+        )
     sep = ref.mp_distance(p_lin, p_round)
     if abs(sep - mpf(d)) > tol + sl_lin + sl_round:
         problems.append(f"|point_a - point_b| = {_fmt(sep)} but distance = {d!r}")
@@ -120,8 +126,10 @@ def _check_closest(case, order, res, r):
     eta = 10 ** (math.ceil(math.log10(eta) * 4) / 4)
     ra, rb = r.near_optimal_radius(eta)
     floor = 1e-6 * float(scale)
-    for kind, point, reference_point, radius, slack in ((case.lin_kind, p_lin, r.point_lin, ra, sl_lin),
-                                                        (case.round_kind, p_round, r.point_round, rb, sl_round)):
+    for kind, point, reference_point, radius, slack in (
+        (case.lin_kind, p_lin, r.point_lin, ra, sl_lin),
+        (case.round_kind, p_round, r.point_round, rb, sl_round),
+    ):
         if math.isfinite(radius):
             dev = float(ref.mp_vec_distance(point, reference_point))
             lim = max(floor, radius + float(tol) + slack)

@@ -21,8 +21,8 @@ from circledist_cases import scenes
 # ----------------------------------------------------------------------------
 # 1. analytic cases
 # ----------------------------------------------------------------------------
-Z = (0.0, 0.0, 0.0, 0.0, 0.0, 1.0)          # centre 0, normal +z (radius appended)
-TILTED = (0.5, -1.25, 2.0, 1.0, 2.0, 2.0)   # centre, normal (1,2,2) of length 3
+Z = (0.0, 0.0, 0.0, 0.0, 0.0, 1.0)  # centre 0, normal +z (radius appended)
+TILTED = (0.5, -1.25, 2.0, 1.0, 2.0, 2.0)  # centre, normal (1,2,2) of length 3
 
 
 def _tilted_point(a, b, h):
@@ -34,71 +34,97 @@ def _tilted_point(a, b, h):
 
 ANALYTIC = [
     # id, lin kind, lin data, round kind, round data, exact distance, expected uniqueness
-    ("point_on_axis_circle", "point", (0, 0, 0.75), "circle", Z + (1.5,),
-     mp.sqrt(mpf(1.5) ** 2 + mpf(0.75) ** 2), "degenerate"),
-    ("point_on_axis_tilted_circle", "point", (0.75, -0.75, 2.5), "circle",
-     TILTED + (1.5,), mp.sqrt(mpf(1.5) ** 2 + mpf(0.75) ** 2), "degenerate"),
+    (
+        "point_on_axis_circle",
+        "point",
+        (0, 0, 0.75),
+        "circle",
+        Z + (1.5,),
+        mp.sqrt(mpf(1.5) ** 2 + mpf(0.75) ** 2),
+        "degenerate",
+    ),
+    (
+        "point_on_axis_tilted_circle",
+        "point",
+        (0.75, -0.75, 2.5),
+        "circle",
+        TILTED + (1.5,),
+        mp.sqrt(mpf(1.5) ** 2 + mpf(0.75) ** 2),
+        "degenerate",
+    ),
     ("point_at_center_circle", "point", (0, 0, 0), "circle", Z + (2.0,), mpf(2), "degenerate"),
     ("point_on_axis_disk", "point", (0, 0, 0.75), "disk", Z + (1.5,), mpf(0.75), "unique"),
-    ("point_above_interior_disk", "point", (0.25, -0.5, -0.625), "disk", Z + (1.0,),
-     mpf(0.625), "unique"),
-    ("point_in_plane_outside_disk", "point", (3.0, 4.0, 0.0), "disk", Z + (2.0,), mpf(3),
-     "unique"),
+    ("point_above_interior_disk", "point", (0.25, -0.5, -0.625), "disk", Z + (1.0,), mpf(0.625), "unique"),
+    ("point_in_plane_outside_disk", "point", (3.0, 4.0, 0.0), "disk", Z + (2.0,), mpf(3), "unique"),
     ("point_outside_circle", "point", (3.0, 4.0, 0.0), "circle", Z + (2.0,), mpf(3), "unique"),
-    ("point_inside_circle_in_plane", "point", (0.375, 0.5, 0.0), "circle", Z + (2.0,),
-     mpf(1.375), "unique"),
-    ("line_along_axis_circle", "line", (0, 0, 0.5, 0, 0, 3), "circle", Z + (1.25,),
-     mpf(1.25), "degenerate"),
-    ("line_along_tilted_axis_circle", "line", (0.5, -1.25, 2.0, 1, 2, 2), "circle",
-     TILTED + (1.25,), mpf(1.25), "degenerate"),
-    ("line_along_axis_disk", "line", (0, 0, 0.5, 0, 0, 3), "disk", Z + (1.25,), mpf(0),
-     "unique"),
-    ("line_tangent_in_plane_circle", "line", (1.5, 0, 0, 0, 2, 0), "circle", Z + (1.5,),
-     mpf(0), "unique"),
-    ("line_tangent_in_plane_disk", "line", (1.5, 0, 0, 0, 2, 0), "disk", Z + (1.5,), mpf(0),
-     "unique"),
-    ("line_parallel_tangent_h1e-3_circle", "line", (1, 0, 1e-3, 0, 1, 0), "circle", Z + (1.0,),
-     mpf(1e-3), "unique"),
-    ("line_parallel_tangent_h1e-9_circle", "line", (1, 0, 1e-9, 0, 1, 0), "circle", Z + (1.0,),
-     mpf(1e-9), "unique"),
-    ("line_parallel_tangent_h1e-9_disk", "line", (1, 0, 1e-9, 0, 1, 0), "disk", Z + (1.0,),
-     mpf(1e-9), "unique"),
-    ("line_parallel_to_axis_inside_circle", "line", (0.25, 0, 7, 0, 0, -1), "circle",
-     Z + (1.0,), mpf(0.75), "unique"),
-    ("line_parallel_to_axis_outside_circle", "line", (2.5, 0, 7, 0, 0, -1), "circle",
-     Z + (1.0,), mpf(1.5), "unique"),
+    ("point_inside_circle_in_plane", "point", (0.375, 0.5, 0.0), "circle", Z + (2.0,), mpf(1.375), "unique"),
+    ("line_along_axis_circle", "line", (0, 0, 0.5, 0, 0, 3), "circle", Z + (1.25,), mpf(1.25), "degenerate"),
+    (
+        "line_along_tilted_axis_circle",
+        "line",
+        (0.5, -1.25, 2.0, 1, 2, 2),
+        "circle",
+        TILTED + (1.25,),
+        mpf(1.25),
+        "degenerate",
+    ),
+    ("line_along_axis_disk", "line", (0, 0, 0.5, 0, 0, 3), "disk", Z + (1.25,), mpf(0), "unique"),
+    ("line_tangent_in_plane_circle", "line", (1.5, 0, 0, 0, 2, 0), "circle", Z + (1.5,), mpf(0), "unique"),
+    ("line_tangent_in_plane_disk", "line", (1.5, 0, 0, 0, 2, 0), "disk", Z + (1.5,), mpf(0), "unique"),
+    ("line_parallel_tangent_h1e-3_circle", "line", (1, 0, 1e-3, 0, 1, 0), "circle", Z + (1.0,), mpf(1e-3), "unique"),
+    ("line_parallel_tangent_h1e-9_circle", "line", (1, 0, 1e-9, 0, 1, 0), "circle", Z + (1.0,), mpf(1e-9), "unique"),
+    ("line_parallel_tangent_h1e-9_disk", "line", (1, 0, 1e-9, 0, 1, 0), "disk", Z + (1.0,), mpf(1e-9), "unique"),
+    ("line_parallel_to_axis_inside_circle", "line", (0.25, 0, 7, 0, 0, -1), "circle", Z + (1.0,), mpf(0.75), "unique"),
+    ("line_parallel_to_axis_outside_circle", "line", (2.5, 0, 7, 0, 0, -1), "circle", Z + (1.0,), mpf(1.5), "unique"),
     # an exact tie between two zeros: not unique, but ties at d ~ 0 are not claimed
     # "degenerate" (see RefResult.degenerate)
-    ("line_in_plane_through_center_circle", "line", (0, 0, 0, 1, 0.5, 0), "circle",
-     Z + (1.0,), mpf(0), "not-unique"),
-    ("line_in_plane_through_center_disk", "line", (0, 0, 0, 1, 0.5, 0), "disk",
-     Z + (1.0,), mpf(0), "degenerate"),
-    ("line_parallel_over_interior_disk", "line", (0, 0.5, 0.25, 1, 0, 0), "disk", Z + (1.0,),
-     mpf(0.25), "degenerate"),
-    ("line_parallel_over_interior_circle", "line", (0, 0.5, 0.25, 1, 0, 0), "circle",
-     Z + (1.0,), mpf(0.25), "degenerate"),
-    ("line_crossing_disk_interior", "line", (0.25, 0.25, 1, 0.5, 0.25, -2), "disk",
-     Z + (1.0,), mpf(0), "unique"),
-    ("segment_in_plane_inside_disk", "segment", (-0.25, 0.125, 0, 0.5, -0.25, 0), "disk",
-     Z + (1.0,), mpf(0), "degenerate"),
-    ("segment_in_plane_inside_circle", "segment", (0, 0.25, 0, 0, 0.5, 0), "circle",
-     Z + (1.0,), mpf(0.5), "unique"),
-    ("segment_above_parallel_inside_disk", "segment", (-0.25, 0.125, 0.25, 0.5, -0.25, 0.25),
-     "disk", Z + (1.0,), mpf(0.25), "degenerate"),
-    ("segment_ends_on_rim_disk", "segment", (1, 0, 0, 1.5, 0.25, 0.75), "disk", Z + (1.0,),
-     mpf(0), "unique"),
-    ("segment_zero_length_on_axis_circle", "segment", (0, 0, 0.75, 0, 0, 0.75), "circle",
-     Z + (1.0,), mpf(1.25), "degenerate"),
-    ("ray_above_interior_away_disk", "ray", (0.25, 0.125, 0.5, 0.1, 0.2, 1), "disk",
-     Z + (1.0,), mpf(0.5), "unique"),
-    ("ray_above_interior_toward_disk", "ray", (0.25, 0.125, 0.5, 0.1, 0.2, -1), "disk",
-     Z + (1.0,), mpf(0), "unique"),
-    ("ray_axis_up_circle", "ray", (0, 0, 0.75, 0, 0, 1), "circle", Z + (1.0,), mpf(1.25),
-     "degenerate"),
-    ("ray_axis_up_disk", "ray", (0, 0, 0.75, 0, 0, 1), "disk", Z + (1.0,), mpf(0.75),
-     "unique"),
-    ("ray_tangent_start_after_circle", "ray", (1, 0.75, 0, 0, 1, 0), "circle", Z + (1.0,),
-     mpf(0.25), "unique"),
+    ("line_in_plane_through_center_circle", "line", (0, 0, 0, 1, 0.5, 0), "circle", Z + (1.0,), mpf(0), "not-unique"),
+    ("line_in_plane_through_center_disk", "line", (0, 0, 0, 1, 0.5, 0), "disk", Z + (1.0,), mpf(0), "degenerate"),
+    ("line_parallel_over_interior_disk", "line", (0, 0.5, 0.25, 1, 0, 0), "disk", Z + (1.0,), mpf(0.25), "degenerate"),
+    (
+        "line_parallel_over_interior_circle",
+        "line",
+        (0, 0.5, 0.25, 1, 0, 0),
+        "circle",
+        Z + (1.0,),
+        mpf(0.25),
+        "degenerate",
+    ),
+    ("line_crossing_disk_interior", "line", (0.25, 0.25, 1, 0.5, 0.25, -2), "disk", Z + (1.0,), mpf(0), "unique"),
+    (
+        "segment_in_plane_inside_disk",
+        "segment",
+        (-0.25, 0.125, 0, 0.5, -0.25, 0),
+        "disk",
+        Z + (1.0,),
+        mpf(0),
+        "degenerate",
+    ),
+    ("segment_in_plane_inside_circle", "segment", (0, 0.25, 0, 0, 0.5, 0), "circle", Z + (1.0,), mpf(0.5), "unique"),
+    (
+        "segment_above_parallel_inside_disk",
+        "segment",
+        (-0.25, 0.125, 0.25, 0.5, -0.25, 0.25),
+        "disk",
+        Z + (1.0,),
+        mpf(0.25),
+        "degenerate",
+    ),
+    ("segment_ends_on_rim_disk", "segment", (1, 0, 0, 1.5, 0.25, 0.75), "disk", Z + (1.0,), mpf(0), "unique"),
+    (
+        "segment_zero_length_on_axis_circle",
+        "segment",
+        (0, 0, 0.75, 0, 0, 0.75),
+        "circle",
+        Z + (1.0,),
+        mpf(1.25),
+        "degenerate",
+    ),
+    ("ray_above_interior_away_disk", "ray", (0.25, 0.125, 0.5, 0.1, 0.2, 1), "disk", Z + (1.0,), mpf(0.5), "unique"),
+    ("ray_above_interior_toward_disk", "ray", (0.25, 0.125, 0.5, 0.1, 0.2, -1), "disk", Z + (1.0,), mpf(0), "unique"),
+    ("ray_axis_up_circle", "ray", (0, 0, 0.75, 0, 0, 1), "circle", Z + (1.0,), mpf(1.25), "degenerate"),
+    ("ray_axis_up_disk", "ray", (0, 0, 0.75, 0, 0, 1), "disk", Z + (1.0,), mpf(0.75), "unique"),
+    ("ray_tangent_start_after_circle", "ray", (1, 0.75, 0, 0, 1, 0), "circle", Z + (1.0,), mpf(0.25), "unique"),
     ("radius0_point", "point", (3.0, 4.0, 12.0), "circle", Z + (0.0,), mpf(13), "unique"),
     ("radius0_line", "line", (3.0, 4.0, 12.0, 0, 0, 1), "disk", Z + (0.0,), mpf(5), "unique"),
 ]
@@ -164,11 +190,11 @@ WORKING_PRECISION_FLOOR = mpf("1e-45")
 def test_reference_two_formulations_agree(case):
     """Rim (theta) formulation vs line-parameter formulation, 50 digits each."""
     r = ref.reference(case.lin_kind, case.lin_data, case.round_kind, case.round_data)
-    alt = ref.reference_by_line_parameter(case.lin_kind, case.lin_data, case.round_kind,
-                                          case.round_data)
+    alt = ref.reference_by_line_parameter(case.lin_kind, case.lin_data, case.round_kind, case.round_data)
     err = abs(r.distance - alt)
-    assert err <= max(mpf("1e-18") * _scale(r), WORKING_PRECISION_FLOOR), (
-        f"rim {mp.nstr(r.distance, 25)} vs line-parameter {mp.nstr(alt, 25)}")
+    assert err <= max(
+        mpf("1e-18") * _scale(r), WORKING_PRECISION_FLOOR
+    ), f"rim {mp.nstr(r.distance, 25)} vs line-parameter {mp.nstr(alt, 25)}"
 
 
 @pytest.mark.slow
@@ -185,8 +211,7 @@ def test_reference_points_consistent(case):
     assert abs(sep - r.distance) <= mpf("1e-30") * s
 
 
-BRUTE_CASES = [c for c in VALIDATION_CASES if c.offset == 0.0 and
-               (c.random or c.orientation == "tilt")]
+BRUTE_CASES = [c for c in VALIDATION_CASES if c.offset == 0.0 and (c.random or c.orientation == "tilt")]
 
 
 @pytest.mark.slow
@@ -202,8 +227,7 @@ def test_reference_vs_brute_force(case):
     assert best <= d + 1.01 * gap + 1e-13 * coord, f"brute force {best!r}, ref {d!r}, gap {gap}"
 
 
-POINT_DISK_CASES = [c for c in VALIDATION_CASES if c.lin_kind == "point" and
-                    c.round_kind == "disk"]
+POINT_DISK_CASES = [c for c in VALIDATION_CASES if c.lin_kind == "point" and c.round_kind == "disk"]
 
 
 @pytest.mark.slow
@@ -224,8 +248,11 @@ SYMMETRY_CASES = [c for c in VALIDATION_CASES if c.random][::3]
 
 @pytest.mark.slow
 @pytest.mark.parametrize("case", SYMMETRY_CASES, ids=[c.id for c in SYMMETRY_CASES])
-@pytest.mark.parametrize("perm", [((1, 2, 0), (1, 1, 1)), ((2, 0, 1), (-1, 1, -1)),
-                                  ((0, 2, 1), (1, -1, 1))], ids=["yzx", "zxy_neg", "xzy_refl"])
+@pytest.mark.parametrize(
+    "perm",
+    [((1, 2, 0), (1, 1, 1)), ((2, 0, 1), (-1, 1, -1)), ((0, 2, 1), (1, -1, 1))],
+    ids=["yzx", "zxy_neg", "xzy_refl"],
+)
 def test_reference_exact_symmetries(case, perm):
     """Coordinate permutations and sign flips are exact on binary64 inputs and change the
     circle frame the reference builds; the distance must be unchanged to ~1e-40."""

@@ -68,8 +68,15 @@ def far_cases():
             lin = (*(near - far * u), *(near + 2 * far * u))
         else:
             lin = (*(near - far * u), *d)
-        out.append((f"far-{kind}-{round_kind}-{i}", kind, tuple(map(float, lin)), round_kind,
-                    (*map(float, c), *map(float, n), radius)))
+        out.append(
+            (
+                f"far-{kind}-{round_kind}-{i}",
+                kind,
+                tuple(map(float, lin)),
+                round_kind,
+                (*map(float, c), *map(float, n), radius),
+            )
+        )
     return out
 
 
@@ -90,90 +97,261 @@ def near_axis_piece_cases():
         d = rng.normal(size=3)
         kind, round_kind = ("ray", "segment")[i % 2], ("circle", "disk")[(i // 2) % 2]
         lin = (*origin, *(origin + d * rng.uniform(0.5, 3))) if kind == "segment" else (*origin, *d)
-        out.append((f"near-axis-{kind}-{round_kind}-{i}", kind, tuple(map(float, lin)), round_kind,
-                    (*map(float, c), *map(float, n), radius)))
+        out.append(
+            (
+                f"near-axis-{kind}-{round_kind}-{i}",
+                kind,
+                tuple(map(float, lin)),
+                round_kind,
+                (*map(float, c), *map(float, n), radius),
+            )
+        )
     return out
 
 
-CASES = [
-    # same center, tilted normals (was 1.0305 for 0.75).
-    ("concentric-tilted", "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0), "circle",
-     (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25)),
-    ("concentric-tilted-disk", "circle", (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25),
-     "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
-    # class 1, nearly coincident circles (this session's differential findings): equal radii and
-    # centers, normals 1e-9 apart, crossing at two points (was 4.3e-10 for 0: the octic built from
-    # coordinates was rounding noise, Newton's slopes too).
-    ("coincident-tilted-1e-9", "circle",
-     (0.12750855989671986, 0.10261255696347438, -1.9517312279239007, 0.6340284494039545, 1.7910770082922698,
-      0.9309507724499886, 1.3555314658661317),
-     "circle", (0.12750855989671986, 0.10261255696347438, -1.9517312279239007, 0.6340284513171991,
-                1.7910770080701348, 0.9309507715743348, 1.3555314658661317)),
-    # centers 1e-14 apart, radii 2e-15 apart, normals 1e-11 apart (was 2.8e-13 for 5.4e-15).
-    ("near-coincident", "circle",
-     (-1.74547821380097, -1.4657723068379012, 1.2530721344667481, -1.5419364639385165, 0.5984487778812372,
-      5.186182052446005, 1.3794242348725156),
-     "circle", (-1.74547821380097, -1.4657723068378894, 1.2530721344667477, -1.5419364639476623,
-                0.5984487778926577, 5.186182052441968, 1.3794242348725134)),
-    # parallel circles 2e-16 apart, in-plane offset 4.8e-10, radii 1e-10 apart (was 1.0e-10).
-    ("parallel-offset-crossing", "circle", (0.7500000000000002, -1.0, 0.5000000004760804, 4.0, 0.0, 0.0,
-                                            0.4999999998990075),
-     "circle", (0.75, -1.0, 0.5, -4.0, 0.0, 0.0, 0.5)),
-    ("parallel-offset-crossing-disk", "circle", (0.7500000000000002, -1.0, 0.5000000004760804, 4.0, 0.0, 0.0,
-                                                 0.4999999998990075),
-     "disk", (0.75, -1.0, 0.5, -4.0, 0.0, 0.0, 0.5)),
-    # same center and radius, normals far apart: a V-shaped minimum at the crossings, which the
-    # bracketed polish located only to its tolerance (3.7e-14 in long double).
-    ("concentric-equal-tilted", "circle",
-     (1.2592478072399258, 0.14027546544875585, -0.9841590253828076, -0.020157603160997208, -0.16364105621647634,
-      0.07705977505769378, 3.050637383643485),
-     "circle", (1.2592478072399258, 0.14027546544875585, -0.9841590253828076, -0.1646635595550553,
-                0.04868799385030749, 0.06031852606184729, 3.050637383643485)),
-    # class 2: a full line within rounding of parallel to the axis (was 0.50435 for 0.076247).
-    ("line-near-axis", "line",
-     (2.0700467755863365, -2.0815260920330347, 0.35595969593672966, 0.4563340808821868, 1.1910227438142138,
-      2.341964889099623),
-     "circle", (0.6821735490706006, -0.6302111640340619, 0.0034660242883280783, 0.6037179912167538,
-                1.5756917760753888, 3.098357974083505, 1.9600563100695587)),
-    # A ray whose line's shadow crosses the circle's center (b2 within rounding of 0), 1e-3 rad
-    # from the plane, holding the line's second local minimum: the quartic's near-double root at
-    # mu = -s^2 gave a spurious secular root under every policy (was 1.0005708 for 1.0005854, the
-    # circle point 1.5e-5 off the plane).
-    ("ray-shadow-through-center", "ray",
-     (0.41408413446005754, -4.300726756172416, -0.862734666659365, 1.0, -0.0005056398324408602,
-      -0.000862744666659365),
-     "circle", (-8.928271630420693e-221, -3.7950869237315557, 1e-05, -8.928271630420693e-221,
-                -3.7950869237315557, -6.475342314612934, 1.0)),
-    # class 5: a huge circle passing a small disk (EigenCompanion's distance() missed it).
-    ("huge-circle-small-disk", "circle",
-     (18280.04179502556, -54.213965961425515, 4601.483430373689, -0.1957562084777642, -2.121825972601985,
-      0.7520805892207797, 18850.0536564025),
-     "disk", (-0.8880296507945876, -0.4868890686859325, 0.024596382191250814, -0.27997269122479157,
-              0.23333396281266564, 0.6601691219441461, 1.9407931413808321)),
-    # class 6: one far control point (was 1.0 for 2.5e-21).
-    ("bezier-far-control", "bezier", ((0.0, 0.0, 0.0), (1e10, 0.0, 0.0), (1.0, 1.0, 1.0)), "circle",
-     (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
-    # a stack buffer overflow in root isolation (truth 4.2227480).
-    ("bezier-dominant-point", "bezier",
-     ((1000.0, 0.0, 1.0), (1.0, 0.0, 1.0), (2.0, 0.0, 1.0), (3.0, 0.0, 1.0), (4.0, 0.0, 1.0), (5.0, 0.0, 1.0),
-      (6.0, 0.0, 1.0), (7.0, 0.0, 1.0)),
-     "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
-    ("bezier-dominant-point-disk", "bezier",
-     ((1e8, 0.0, 1.0), (1.0, 0.0, 1.0), (2.0, 0.0, 1.0), (3.0, 0.0, 1.0), (4.0, 0.0, 1.0), (5.0, 0.0, 1.0)),
-     "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
-    # long and short directions (was 0.0 for 1.0).
-    ("lines-long-directions", "line", (0.0, 0.0, 0.0, 1e80, 0.0, 0.0), "line", (0.0, 1.0, 0.0, 0.0, 0.0, 1e80)),
-    ("lines-short-directions", "line", (0.0, 0.0, 0.0, 1e-80, 0.0, 0.0), "line", (0.0, 1.0, 0.0, 0.0, 0.0, 1e-80)),
-    # normals whose squared length overflows or underflows.
-    ("point-circle-huge-normal", "point", (1.0, 1.0, 1.0), "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1e200, 1.0)),
-    ("point-disk-tiny-normal", "point", (0.0, 0.0, 1.0), "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1e-200, 1.0)),
-    ("circles-extreme-normals", "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1e200, 1.0), "circle",
-     (4.0, 0.0, 0.0, 0.0, 1e-200, 0.0, 1.0)),
-    ("line-circle-huge-direction", "line", (0.0, 0.5, -3.0, 0.0, 0.0, 1e200), "circle",
-     (0.0, 0.0, 2.0, 1.0, 0.0, 1e-170, 1.0)),
-    ("ray-disk-tiny-direction", "ray", (0.3, 0.5, -3.0, 0.0, 1e-200, 1e-200), "disk",
-     (0.0, 0.0, 2.0, 1.0, 1e-170, 0.0, 1.0)),
-] + far_cases() + near_axis_piece_cases()
+CASES = (
+    [
+        # same center, tilted normals (was 1.0305 for 0.75).
+        (
+            "concentric-tilted",
+            "circle",
+            (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+            "circle",
+            (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25),
+        ),
+        (
+            "concentric-tilted-disk",
+            "circle",
+            (0.0, 0.0, 0.0, 0.5403023058681398, 0.8414709848078965, 1e-9, 0.25),
+            "disk",
+            (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+        ),
+        # class 1, nearly coincident circles (this session's differential findings): equal radii and
+        # centers, normals 1e-9 apart, crossing at two points (was 4.3e-10 for 0: the octic built from
+        # coordinates was rounding noise, Newton's slopes too).
+        (
+            "coincident-tilted-1e-9",
+            "circle",
+            (
+                0.12750855989671986,
+                0.10261255696347438,
+                -1.9517312279239007,
+                0.6340284494039545,
+                1.7910770082922698,
+                0.9309507724499886,
+                1.3555314658661317,
+            ),
+            "circle",
+            (
+                0.12750855989671986,
+                0.10261255696347438,
+                -1.9517312279239007,
+                0.6340284513171991,
+                1.7910770080701348,
+                0.9309507715743348,
+                1.3555314658661317,
+            ),
+        ),
+        # centers 1e-14 apart, radii 2e-15 apart, normals 1e-11 apart (was 2.8e-13 for 5.4e-15).
+        (
+            "near-coincident",
+            "circle",
+            (
+                -1.74547821380097,
+                -1.4657723068379012,
+                1.2530721344667481,
+                -1.5419364639385165,
+                0.5984487778812372,
+                5.186182052446005,
+                1.3794242348725156,
+            ),
+            "circle",
+            (
+                -1.74547821380097,
+                -1.4657723068378894,
+                1.2530721344667477,
+                -1.5419364639476623,
+                0.5984487778926577,
+                5.186182052441968,
+                1.3794242348725134,
+            ),
+        ),
+        # parallel circles 2e-16 apart, in-plane offset 4.8e-10, radii 1e-10 apart (was 1.0e-10).
+        (
+            "parallel-offset-crossing",
+            "circle",
+            (0.7500000000000002, -1.0, 0.5000000004760804, 4.0, 0.0, 0.0, 0.4999999998990075),
+            "circle",
+            (0.75, -1.0, 0.5, -4.0, 0.0, 0.0, 0.5),
+        ),
+        (
+            "parallel-offset-crossing-disk",
+            "circle",
+            (0.7500000000000002, -1.0, 0.5000000004760804, 4.0, 0.0, 0.0, 0.4999999998990075),
+            "disk",
+            (0.75, -1.0, 0.5, -4.0, 0.0, 0.0, 0.5),
+        ),
+        # same center and radius, normals far apart: a V-shaped minimum at the crossings, which the
+        # bracketed polish located only to its tolerance (3.7e-14 in long double).
+        (
+            "concentric-equal-tilted",
+            "circle",
+            (
+                1.2592478072399258,
+                0.14027546544875585,
+                -0.9841590253828076,
+                -0.020157603160997208,
+                -0.16364105621647634,
+                0.07705977505769378,
+                3.050637383643485,
+            ),
+            "circle",
+            (
+                1.2592478072399258,
+                0.14027546544875585,
+                -0.9841590253828076,
+                -0.1646635595550553,
+                0.04868799385030749,
+                0.06031852606184729,
+                3.050637383643485,
+            ),
+        ),
+        # class 2: a full line within rounding of parallel to the axis (was 0.50435 for 0.076247).
+        (
+            "line-near-axis",
+            "line",
+            (
+                2.0700467755863365,
+                -2.0815260920330347,
+                0.35595969593672966,
+                0.4563340808821868,
+                1.1910227438142138,
+                2.341964889099623,
+            ),
+            "circle",
+            (
+                0.6821735490706006,
+                -0.6302111640340619,
+                0.0034660242883280783,
+                0.6037179912167538,
+                1.5756917760753888,
+                3.098357974083505,
+                1.9600563100695587,
+            ),
+        ),
+        # A ray whose line's shadow crosses the circle's center (b2 within rounding of 0), 1e-3 rad
+        # from the plane, holding the line's second local minimum: the quartic's near-double root at
+        # mu = -s^2 gave a spurious secular root under every policy (was 1.0005708 for 1.0005854, the
+        # circle point 1.5e-5 off the plane).
+        (
+            "ray-shadow-through-center",
+            "ray",
+            (
+                0.41408413446005754,
+                -4.300726756172416,
+                -0.862734666659365,
+                1.0,
+                -0.0005056398324408602,
+                -0.000862744666659365,
+            ),
+            "circle",
+            (
+                -8.928271630420693e-221,
+                -3.7950869237315557,
+                1e-05,
+                -8.928271630420693e-221,
+                -3.7950869237315557,
+                -6.475342314612934,
+                1.0,
+            ),
+        ),
+        # class 5: a huge circle passing a small disk (EigenCompanion's distance() missed it).
+        (
+            "huge-circle-small-disk",
+            "circle",
+            (
+                18280.04179502556,
+                -54.213965961425515,
+                4601.483430373689,
+                -0.1957562084777642,
+                -2.121825972601985,
+                0.7520805892207797,
+                18850.0536564025,
+            ),
+            "disk",
+            (
+                -0.8880296507945876,
+                -0.4868890686859325,
+                0.024596382191250814,
+                -0.27997269122479157,
+                0.23333396281266564,
+                0.6601691219441461,
+                1.9407931413808321,
+            ),
+        ),
+        # class 6: one far control point (was 1.0 for 2.5e-21).
+        (
+            "bezier-far-control",
+            "bezier",
+            ((0.0, 0.0, 0.0), (1e10, 0.0, 0.0), (1.0, 1.0, 1.0)),
+            "circle",
+            (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+        ),
+        # a stack buffer overflow in root isolation (truth 4.2227480).
+        (
+            "bezier-dominant-point",
+            "bezier",
+            (
+                (1000.0, 0.0, 1.0),
+                (1.0, 0.0, 1.0),
+                (2.0, 0.0, 1.0),
+                (3.0, 0.0, 1.0),
+                (4.0, 0.0, 1.0),
+                (5.0, 0.0, 1.0),
+                (6.0, 0.0, 1.0),
+                (7.0, 0.0, 1.0),
+            ),
+            "circle",
+            (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+        ),
+        (
+            "bezier-dominant-point-disk",
+            "bezier",
+            ((1e8, 0.0, 1.0), (1.0, 0.0, 1.0), (2.0, 0.0, 1.0), (3.0, 0.0, 1.0), (4.0, 0.0, 1.0), (5.0, 0.0, 1.0)),
+            "disk",
+            (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+        ),
+        # long and short directions (was 0.0 for 1.0).
+        ("lines-long-directions", "line", (0.0, 0.0, 0.0, 1e80, 0.0, 0.0), "line", (0.0, 1.0, 0.0, 0.0, 0.0, 1e80)),
+        ("lines-short-directions", "line", (0.0, 0.0, 0.0, 1e-80, 0.0, 0.0), "line", (0.0, 1.0, 0.0, 0.0, 0.0, 1e-80)),
+        # normals whose squared length overflows or underflows.
+        ("point-circle-huge-normal", "point", (1.0, 1.0, 1.0), "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1e200, 1.0)),
+        ("point-disk-tiny-normal", "point", (0.0, 0.0, 1.0), "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1e-200, 1.0)),
+        (
+            "circles-extreme-normals",
+            "circle",
+            (0.0, 0.0, 0.0, 0.0, 0.0, 1e200, 1.0),
+            "circle",
+            (4.0, 0.0, 0.0, 0.0, 1e-200, 0.0, 1.0),
+        ),
+        (
+            "line-circle-huge-direction",
+            "line",
+            (0.0, 0.5, -3.0, 0.0, 0.0, 1e200),
+            "circle",
+            (0.0, 0.0, 2.0, 1.0, 0.0, 1e-170, 1.0),
+        ),
+        (
+            "ray-disk-tiny-direction",
+            "ray",
+            (0.3, 0.5, -3.0, 0.0, 1e-200, 1e-200),
+            "disk",
+            (0.0, 0.0, 2.0, 1.0, 1e-170, 0.0, 1.0),
+        ),
+    ]
+    + far_cases()
+    + near_axis_piece_cases()
+)
 
 # The references' line searches are scaled by |direction| (circledist_cases/reference.py), so these cases
 # are referenced through the same line with a direction of moderate length (the same point set).
@@ -252,8 +430,13 @@ FLOAT32_CASES = [c for c in CASES if fits_float32(c[2]) and fits_float32(c[4])] 
     ("f32-cc-touching", "circle", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0), "circle", (2.0, 0.0, 1e-3, 0.0, 1.0, 0.0, 1.0)),
     ("f32-cd-near", "circle", (0.1, 0.2, 0.30001, 0.0, 0.0, 1.0, 0.7), "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0)),
     ("f32-dd-apart", "disk", (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 100.0), "disk", (583.0, 0.0, 0.0, 0.3, 0.0, 1.0, 100.0)),
-    ("f32-bd-plane", "bezier", ((-1.0, 0.0, 1e-3), (0.0, 1.0, 1e-3), (1.0, 0.5, 1e-3)), "disk",
-     (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5)),
+    (
+        "f32-bd-plane",
+        "bezier",
+        ((-1.0, 0.0, 1e-3), (0.0, 1.0, 1e-3), (1.0, 0.5, 1e-3)),
+        "disk",
+        (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5),
+    ),
 ]
 
 
@@ -309,7 +492,6 @@ def test_longdouble_inputs_circle_gap(solver):
         batch = cd.Circle(np.zeros((2, 3), dtype=LD), np.array([0, 0, 1], dtype=LD), np.array([LD(1), LD(1) + gap]))
         expected = [cd.distance(inner, inner, solver=solver), cd.distance(outer, inner, solver=solver)]
         assert np.array_equal(cd.distance(batch, inner, solver=solver), np.array(expected, dtype=LD))
-
 
 
 @pytest.mark.parametrize("solver", SOLVERS)

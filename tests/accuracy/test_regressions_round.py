@@ -22,10 +22,24 @@ from regressions_common import BARS, EPS, SOLVERS, cd, make
 # within(d) said True 1.75e-9 below the distance. The truth (the planes' separation) is computed
 # here in mpmath.
 PARALLEL_COAXIAL = (
-    (-1.7049544532287482, -0.4196123492227376, -0.6174039345691138, 4.669208110269334, -0.9104412238263111,
-     -3.44955441916865, 2.0775529896862657),
-    (-1.7049546023051612, -0.41961232015457256, -0.6174038244332648, -4.669208110269334, 0.9104412238263111,
-     3.44955441916865, 2.0775529896862657),
+    (
+        -1.7049544532287482,
+        -0.4196123492227376,
+        -0.6174039345691138,
+        4.669208110269334,
+        -0.9104412238263111,
+        -3.44955441916865,
+        2.0775529896862657,
+    ),
+    (
+        -1.7049546023051612,
+        -0.41961232015457256,
+        -0.6174038244332648,
+        -4.669208110269334,
+        0.9104412238263111,
+        3.44955441916865,
+        2.0775529896862657,
+    ),
 )
 
 
@@ -52,10 +66,24 @@ def test_within_parallel_nearly_coaxial(kinds, precision):
 # the radius, and reported at distance 0. Closest points lie on both disks to a few ulps.
 @pytest.mark.parametrize("solver", SOLVERS)
 def test_disks_coplanar_within_rounding_points_on_both(solver):
-    a = (-1.4156594408668646, 0.4715817383194796, -0.3749771405031259, -3.660440794139036, -4.569617412843425,
-         0.22856891273652835, 1.9878174268191156)
-    b = (-1.4156594408668686, 0.4715817383194747, -0.3749771405031257, -3.660440794139036, -4.569617412843425,
-         0.22856891273652835, 1.9878174268191156)
+    a = (
+        -1.4156594408668646,
+        0.4715817383194796,
+        -0.3749771405031259,
+        -3.660440794139036,
+        -4.569617412843425,
+        0.22856891273652835,
+        1.9878174268191156,
+    )
+    b = (
+        -1.4156594408668686,
+        0.4715817383194747,
+        -0.3749771405031257,
+        -3.660440794139036,
+        -4.569617412843425,
+        0.22856891273652835,
+        1.9878174268191156,
+    )
     mp.dps = 50
     n = [mpf(x) for x in a[3:6]]
     norm = mp.sqrt(sum(x * x for x in n))
@@ -75,17 +103,23 @@ def test_disks_coplanar_within_rounding_points_on_both(solver):
         assert off_disk(r.point_a, dx) <= 8 * EPS * 2 and off_disk(r.point_b, dy) <= 8 * EPS * 2
 
 
-
 # Two rings of equal radius whose centers differ by 1e-14 and whose planes are tilted cross at two
 # points. The raw eigenvalue policies answered 0.505 (the rings' size): the octic's roots were too
 # far off to lead the polish there; the points where one ring crosses the other's plane are now
 # starts too. Reference: 50-digit mpmath minimization over the angle (the long differential
 # run, docs/reports/differential.md), 1.0925491132860966e-14.
 NEAR_CONCENTRIC_RINGS = (
-    ([-0.6647478320178631, -0.1478456243803689, 0.5419060141101574],
-     [1.2516289029374994, 1.918050346932966, -2.020965388079425], 0.39345072874537984),
-    ([-0.6647478320178529, -0.14784562438033882, 0.5419060141101185],
-     [0.09078177042049894, 2.543035662455498, 1.689532903938856], 0.39345072874537984))
+    (
+        [-0.6647478320178631, -0.1478456243803689, 0.5419060141101574],
+        [1.2516289029374994, 1.918050346932966, -2.020965388079425],
+        0.39345072874537984,
+    ),
+    (
+        [-0.6647478320178529, -0.14784562438033882, 0.5419060141101185],
+        [0.09078177042049894, 2.543035662455498, 1.689532903938856],
+        0.39345072874537984,
+    ),
+)
 
 
 @pytest.mark.parametrize("solver", ["companion", "polished", "bracketing", "eigen"])
@@ -154,8 +188,10 @@ def test_coplanar_rings_crossing_near_tangency(cd, precision):
         bar = BARS[precision] * max(float(truth), ra, rb)
         for solver in SOLVERS:
             for x, y in ((ring, other), (other, ring)):
-                for got in (cd.distance(x, y, solver=solver, precision=precision),
-                            cd.closest_points(x, y, solver=solver, precision=precision).distance):
+                for got in (
+                    cd.distance(x, y, solver=solver, precision=precision),
+                    cd.closest_points(x, y, solver=solver, precision=precision).distance,
+                ):
                     if not abs(mpf(str(got)) - truth) <= bar:
                         failures.append((kind, ca, cb, axis, ra, rb, solver, str(got), float(truth)))
     assert not failures, failures[:5]

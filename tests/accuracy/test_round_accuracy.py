@@ -33,8 +33,13 @@ except Exception as exc:  # noqa: BLE001 - reported by every library test
 
 REL_TOL = 1e-12
 AUTO = "auto"  # unique expectation read from the reference (asserted only when clear-cut)
-KIND_SHAPES = {"cc": ("circle", "circle"), "cd": ("circle", "disk"), "dd": ("disk", "disk"),
-               "bd": ("bezier", "disk"), "bc": ("bezier", "circle")}
+KIND_SHAPES = {
+    "cc": ("circle", "circle"),
+    "cd": ("circle", "disk"),
+    "dd": ("disk", "disk"),
+    "bd": ("bezier", "disk"),
+    "bc": ("bezier", "circle"),
+}
 
 
 # ------------------------------------------------------------------------------------------------
@@ -58,10 +63,10 @@ class Case:
     name: str
     a: tuple
     b: tuple
-    unique: object = AUTO          # True / False: known truth; None: not checked; AUTO: reference
+    unique: object = AUTO  # True / False: known truth; None: not checked; AUTO: reference
     exact: Optional[float] = None  # analytic distance of the float inputs, when known
-    exact_tol: float = 1e-30       # relative; looser only where an input is a rounded irrational
-    robust: bool = True            # the unique truth survives ~1 ulp perturbations of the inputs
+    exact_tol: float = 1e-30  # relative; looser only where an input is a rounded irrational
+    robust: bool = True  # the unique truth survives ~1 ulp perturbations of the inputs
     #                                (tangencies do not: rounding may split one contact point into
     #                                two nearby crossings, so their variants assert nothing)
     straight: Optional[tuple] = None  # (p0, p1) when the Bezier is a straight segment
@@ -73,7 +78,7 @@ class Case:
 
 SQ2 = math.sqrt(0.5)
 EPS_TILT = 1e-9
-TILT_X = (math.sin(EPS_TILT), 0.0, math.cos(EPS_TILT))   # z axis tilted by 1e-9 rad
+TILT_X = (math.sin(EPS_TILT), 0.0, math.cos(EPS_TILT))  # z axis tilted by 1e-9 rad
 TILT_Y = (0.0, math.sin(EPS_TILT), math.cos(EPS_TILT))
 Z = (0.0, 0.0, 1.0)
 Y = (0.0, 1.0, 0.0)
@@ -92,9 +97,15 @@ def _map_shape(s: tuple, fpoint, fdir) -> tuple:
 
 
 def _variant(c: Case, suffix: str, fpoint, fdir) -> Case:
-    return replace(c, name=f"{c.name}-{suffix}", a=_map_shape(c.a, fpoint, fdir),
-                   b=_map_shape(c.b, fpoint, fdir), exact=None,
-                   unique=c.unique if c.robust else None, straight=None)
+    return replace(
+        c,
+        name=f"{c.name}-{suffix}",
+        a=_map_shape(c.a, fpoint, fdir),
+        b=_map_shape(c.b, fpoint, fdir),
+        exact=None,
+        unique=c.unique if c.robust else None,
+        straight=None,
+    )
 
 
 def rotated(c: Case) -> Case:
@@ -141,8 +152,8 @@ def _bern_from_power(a, n):
 
 # Degree-5 curves with several local minima: z(t) = 0.3 + 0.2 T5(2t - 1) -/+ 0.05 (2t - 1) (T5 the
 # Chebyshev polynomial) has three local minima on [0, 1]; (x, y) is a straight path.
-WAVY_Z_INTERIOR = (0.15, 2.13, -3.89, 4.49, -1.53, 0.45)   # global minimum inside (0, 1)
-WAVY_Z_ENDPOINT = (0.05, 2.07, -3.91, 4.51, -1.47, 0.55)   # global minimum at t = 0
+WAVY_Z_INTERIOR = (0.15, 2.13, -3.89, 4.49, -1.53, 0.45)  # global minimum inside (0, 1)
+WAVY_Z_ENDPOINT = (0.05, 2.07, -3.91, 4.51, -1.47, 0.55)  # global minimum at t = 0
 
 
 def _wavy(x0, x1, y0, y1, zs):
@@ -161,8 +172,7 @@ def hard_cases():
         Case("cc", "concentric-coplanar", C(O, Z, 1), C(O, Z, 2), False, 1.0),
         Case("cc", "concentric-coplanar-flipped", C(O, Z, 1), C(O, (0, 0, -3), 2), False, 1.0),
         Case("cc", "coplanar-overlap", C(O, Z, 1), C((1, 0, 0), Z, 1), False, 0.0),
-        Case("cc", "coplanar-nested", C(O, Z, 2), C((0.7, 0.2, 0), Z, 0.5), True,
-             2 - (math.sqrt(0.53) + 0.5), 1e-15),
+        Case("cc", "coplanar-nested", C(O, Z, 2), C((0.7, 0.2, 0), Z, 0.5), True, 2 - (math.sqrt(0.53) + 0.5), 1e-15),
         Case("cc", "coplanar-disjoint", C(O, Z, 1), C((3, 0, 0), Z, 0.5), True, 1.5),
         Case("cc", "coaxial-equal", C(O, Z, 1), C((0, 0, 0.75), Z, 1), False, 0.75),
         Case("cc", "coaxial-unequal", C(O, Z, 1), C((0, 0, 0.5), (0, 0, 2), 1.5), False, math.sqrt(0.5), 1e-15),
@@ -243,83 +253,194 @@ def hard_cases():
     P0, P1 = (-2.0, 0.25, 1.0), (1.0, -0.5, 0.25)
     bd += [
         Case("bd", "straight-deg1", bez(P0, P1), D(O, (0.1, 0.2, 1), 1), AUTO, straight=(P0, P1)),
-        Case("bd", "straight-deg3", bez(P0, (-1, 0, 0.75), (0, -0.25, 0.5), P1), D(O, (0.1, 0.2, 1), 1),
-             AUTO, straight=(P0, P1)),
-        Case("bd", "straight-piercing", bez((0.3, 0.2, -1), (0.1, 0.3, 1)), D(O, Z, 1), True, 0.0,
-             straight=((0.3, 0.2, -1), (0.1, 0.3, 1))),
-        Case("bd", "straight-in-plane-crossing", bez((-2, 0.5, 0), (2, 0.25, 0)), D(O, Z, 1), False, 0.0,
-             straight=((-2, 0.5, 0), (2, 0.25, 0))),
-        Case("bd", "straight-over-rim-tangent", bez((-2, 1, 0.5), (2, 1, 0.5)), D(O, Z, 1), None, 0.5,
-             straight=((-2, 1, 0.5), (2, 1, 0.5))),  # unique but quartic-flat: not asserted
-        Case("bd", "straight-crossing-rim", bez((1, 0, -1), (1, 0, 1)), D(O, Z, 1), True, 0.0,
-             straight=((1, 0, -1), (1, 0, 1))),
-        Case("bd", "tangent-to-rim-in-plane", bez((-1, 1.25, 0), (0, 0.75, 0), (1, 1.25, 0)), D(O, Z, 1),
-             True, 0.0, robust=False),
-        Case("bd", "tangent-to-rim-above", bez((-1, 1.25, 0.3), (0, 0.75, 0.3), (1, 1.25, 0.3)), D(O, Z, 1),
-             None, 0.3),
-        Case("bd", "in-plane-inside", bez((-0.5, 0, 0), (0, 0.8, 0), (0.5, -0.2, 0), (0.3, 0.3, 0)),
-             D(O, Z, 1), False, 0.0),
+        Case(
+            "bd",
+            "straight-deg3",
+            bez(P0, (-1, 0, 0.75), (0, -0.25, 0.5), P1),
+            D(O, (0.1, 0.2, 1), 1),
+            AUTO,
+            straight=(P0, P1),
+        ),
+        Case(
+            "bd",
+            "straight-piercing",
+            bez((0.3, 0.2, -1), (0.1, 0.3, 1)),
+            D(O, Z, 1),
+            True,
+            0.0,
+            straight=((0.3, 0.2, -1), (0.1, 0.3, 1)),
+        ),
+        Case(
+            "bd",
+            "straight-in-plane-crossing",
+            bez((-2, 0.5, 0), (2, 0.25, 0)),
+            D(O, Z, 1),
+            False,
+            0.0,
+            straight=((-2, 0.5, 0), (2, 0.25, 0)),
+        ),
+        Case(
+            "bd",
+            "straight-over-rim-tangent",
+            bez((-2, 1, 0.5), (2, 1, 0.5)),
+            D(O, Z, 1),
+            None,
+            0.5,
+            straight=((-2, 1, 0.5), (2, 1, 0.5)),
+        ),  # unique but quartic-flat: not asserted
+        Case(
+            "bd",
+            "straight-crossing-rim",
+            bez((1, 0, -1), (1, 0, 1)),
+            D(O, Z, 1),
+            True,
+            0.0,
+            straight=((1, 0, -1), (1, 0, 1)),
+        ),
+        Case(
+            "bd",
+            "tangent-to-rim-in-plane",
+            bez((-1, 1.25, 0), (0, 0.75, 0), (1, 1.25, 0)),
+            D(O, Z, 1),
+            True,
+            0.0,
+            robust=False,
+        ),
+        Case("bd", "tangent-to-rim-above", bez((-1, 1.25, 0.3), (0, 0.75, 0.3), (1, 1.25, 0.3)), D(O, Z, 1), None, 0.3),
+        Case(
+            "bd",
+            "in-plane-inside",
+            bez((-0.5, 0, 0), (0, 0.8, 0), (0.5, -0.2, 0), (0.3, 0.3, 0)),
+            D(O, Z, 1),
+            False,
+            0.0,
+        ),
         Case("bd", "in-plane-outside", bez((1.5, -1, 0), (0.9, 0.2, 0), (1.6, 1.4, 0)), D(O, Z, 1), True),
-        Case("bd", "crossing-rim-above", bez((0, 0, 0.5), (0.8, 0, 0.2), (1.3, 0.1, 0.3), (2, 0, 0.1)),
-             D(O, Z, 1)),
+        Case("bd", "crossing-rim-above", bez((0, 0, 0.5), (0.8, 0, 0.2), (1.3, 0.1, 0.3), (2, 0, 0.1)), D(O, Z, 1)),
         Case("bd", "crossing-plane-twice", bez((-0.8, 0, 0.5), (0, 0.2, -0.8), (0.7, 0.1, 0.6)), D(O, Z, 1), False),
         Case("bd", "wavy-deg5-interior-min", _wavy(-0.6, 0.6, 0.1, 0.3, WAVY_Z_INTERIOR), D(O, Z, 1), True),
         Case("bd", "wavy-deg5-endpoint-min", _wavy(-0.6, 0.6, 0.1, 0.3, WAVY_Z_ENDPOINT), D(O, Z, 1), True),
         Case("bd", "wavy-deg5-across-rim", _wavy(0.7, 1.3, -0.3, 0.2, WAVY_Z_INTERIOR), D(O, Z, 1)),
         Case("bd", "endpoint-min", bez((0.2, 0.1, 0.4), (0.5, 0.5, 1.0), (1.5, -0.5, 2)), D(O, Z, 1), True),
-        Case("bd", "deg4-tilted-disk", bez((-1, -1, 1), (0, 2, -1), (1, 0, 2), (2, 1, -1), (0, 1, 1)),
-             D((0.2, 0.1, 0.3), (1, 1, 1), 1.2)),
+        Case(
+            "bd",
+            "deg4-tilted-disk",
+            bez((-1, -1, 1), (0, 2, -1), (1, 0, 2), (2, 1, -1), (0, 1, 1)),
+            D((0.2, 0.1, 0.3), (1, 1, 1), 1.2),
+        ),
         Case("bd", "ratio-disk-1e-6", bez((-1, 0.1, 0.3), (0, -0.2, 0.2), (1, 0.3, 0.4)), D(O, Z, 1e-6)),
         Case("bd", "ratio-disk-1e6", bez((-1, 0.1, 0.3), (0, -0.2, 0.2), (1, 0.3, 0.4)), D(O, Z, 1e6), None),
-        Case("bd", "ratio-disk-1e6-near-rim", bez((1e6 - 1, 0.1, 0.3), (1e6 + 1, -0.2, -0.2), (1e6 + 2, 0.3, 0.4)),
-             D(O, Z, 1e6)),
+        Case(
+            "bd",
+            "ratio-disk-1e6-near-rim",
+            bez((1e6 - 1, 0.1, 0.3), (1e6 + 1, -0.2, -0.2), (1e6 + 2, 0.3, 0.4)),
+            D(O, Z, 1e6),
+        ),
     ]
     # ---------------- Bezier-circle (a = Bezier, b = circle) ----------------
     Q0, Q1 = (-1.5, 0.5, 0.75), (1.5, -0.5, -0.25)
     bc += [
-        Case("bc", "straight-along-axis", bez((0, 0, -1), (0, 0, 1)), C(O, Z, 1), False, 1.0,
-             straight=((0, 0, -1), (0, 0, 1))),
-        Case("bc", "straight-in-plane-crossing", bez((-2, 0, 0), (2, 0, 0)), C(O, Z, 1), False, 0.0,
-             straight=((-2, 0, 0), (2, 0, 0))),
-        Case("bc", "straight-piercing", bez((1, 0, -1), (1, 0, 1)), C(O, Z, 1), True, 0.0,
-             straight=((1, 0, -1), (1, 0, 1))),
+        Case(
+            "bc",
+            "straight-along-axis",
+            bez((0, 0, -1), (0, 0, 1)),
+            C(O, Z, 1),
+            False,
+            1.0,
+            straight=((0, 0, -1), (0, 0, 1)),
+        ),
+        Case(
+            "bc",
+            "straight-in-plane-crossing",
+            bez((-2, 0, 0), (2, 0, 0)),
+            C(O, Z, 1),
+            False,
+            0.0,
+            straight=((-2, 0, 0), (2, 0, 0)),
+        ),
+        Case(
+            "bc",
+            "straight-piercing",
+            bez((1, 0, -1), (1, 0, 1)),
+            C(O, Z, 1),
+            True,
+            0.0,
+            straight=((1, 0, -1), (1, 0, 1)),
+        ),
         Case("bc", "straight-deg1", bez(Q0, Q1), C((0.1, 0.2, 0), (0.2, 0.1, 1), 1.1), AUTO, straight=(Q0, Q1)),
         # collinear control points, non-uniform speed: B(t) = Q0 + (Q1 - Q0)(t + t^2)/2
-        Case("bc", "straight-deg2-nonuniform", bez(Q0, (-0.75, 0.25, 0.5), Q1), C((0.1, 0.2, 0), (0.2, 0.1, 1), 1.1),
-             AUTO, straight=(Q0, Q1)),
-        Case("bc", "tangent-in-plane", bez((-1, 1.25, 0), (0, 0.75, 0), (1, 1.25, 0)), C(O, Z, 1), True, 0.0,
-             robust=False),
+        Case(
+            "bc",
+            "straight-deg2-nonuniform",
+            bez(Q0, (-0.75, 0.25, 0.5), Q1),
+            C((0.1, 0.2, 0), (0.2, 0.1, 1), 1.1),
+            AUTO,
+            straight=(Q0, Q1),
+        ),
+        Case(
+            "bc",
+            "tangent-in-plane",
+            bez((-1, 1.25, 0), (0, 0.75, 0), (1, 1.25, 0)),
+            C(O, Z, 1),
+            True,
+            0.0,
+            robust=False,
+        ),
         Case("bc", "inside-in-plane", bez((-0.3, 0, 0), (0, 0.5, 0), (0.4, 0.1, 0)), C(O, Z, 1), True),
         Case("bc", "through-center-orthogonal", bez((0, 0, 0), (1, 0, 1), (2, 0, 0)), C(O, Z, 1)),
         Case("bc", "wavy-deg5-interior-min", _wavy(-0.6, 0.6, 0.1, 0.3, WAVY_Z_INTERIOR), C(O, Z, 1)),
         Case("bc", "wavy-deg5-across-rim", _wavy(0.7, 1.3, -0.3, 0.2, WAVY_Z_INTERIOR), C(O, Z, 1), True),
-        Case("bc", "deg4-tilted", bez((-1, -1, 1), (0, 2, -1), (1, 0, 2), (2, 1, -1), (0, 1, 1)),
-             C((0.2, 0.1, 0.3), (1, 1, 1), 1.2)),
+        Case(
+            "bc",
+            "deg4-tilted",
+            bez((-1, -1, 1), (0, 2, -1), (1, 0, 2), (2, 1, -1), (0, 1, 1)),
+            C((0.2, 0.1, 0.3), (1, 1, 1), 1.2),
+        ),
         Case("bc", "ratio-circle-1e-6", bez((-1, 0.1, 0.3), (0, -0.2, 0.2), (1, 0.3, 0.4)), C(O, Z, 1e-6)),
-        Case("bc", "ratio-circle-1e6", bez((1e6 - 1, -1, 0.5), (1e6 + 1, 0, -0.2), (1e6 - 0.5, 1, 0.4)),
-             C(O, Z, 1e6)),
+        Case("bc", "ratio-circle-1e6", bez((1e6 - 1, -1, 0.5), (1e6 + 1, 0, -0.2), (1e6 - 0.5, 1, 0.4)), C(O, Z, 1e6)),
     ]
 
     def by_name(lst, name):
         return next(c for c in lst if c.name == name)
 
     variants = []
-    for lst, names in ((cc, ["concentric-coplanar", "coplanar-nested", "coplanar-disjoint", "coaxial-equal",
-                             "through-center-orthogonal", "linked", "touching-external",
-                             "same-center-orthogonal"]),
-                       (cdk, ["in-plane-inside", "coaxial-smaller", "coplanar-disjoint", "linked-with-rim",
-                              "touching-face", "above-face"]),
-                       (dd, ["coplanar-overlap", "coaxial-parallel", "parallel-disjoint", "edge-over-face",
-                             "linked"]),
-                       (bd, ["straight-deg1", "wavy-deg5-interior-min", "in-plane-inside"]),
-                       (bc, ["straight-along-axis", "wavy-deg5-interior-min"])):
+    for lst, names in (
+        (
+            cc,
+            [
+                "concentric-coplanar",
+                "coplanar-nested",
+                "coplanar-disjoint",
+                "coaxial-equal",
+                "through-center-orthogonal",
+                "linked",
+                "touching-external",
+                "same-center-orthogonal",
+            ],
+        ),
+        (
+            cdk,
+            [
+                "in-plane-inside",
+                "coaxial-smaller",
+                "coplanar-disjoint",
+                "linked-with-rim",
+                "touching-face",
+                "above-face",
+            ],
+        ),
+        (dd, ["coplanar-overlap", "coaxial-parallel", "parallel-disjoint", "edge-over-face", "linked"]),
+        (bd, ["straight-deg1", "wavy-deg5-interior-min", "in-plane-inside"]),
+        (bc, ["straight-along-axis", "wavy-deg5-interior-min"]),
+    ):
         variants += [rotated(by_name(lst, n)) for n in names]
-    for lst, names in ((cc, ["concentric-coplanar", "coaxial-equal", "linked", "coplanar-disjoint",
-                             "same-center-tilted"]),
-                       (cdk, ["in-plane-inside", "coaxial-smaller", "linked-with-rim", "above-face"]),
-                       (dd, ["coaxial-parallel", "edge-over-face", "coplanar-disjoint", "linked"]),
-                       (bd, ["straight-deg1", "wavy-deg5-interior-min"]),
-                       (bc, ["wavy-deg5-interior-min", "straight-piercing"])):
+    for lst, names in (
+        (cc, ["concentric-coplanar", "coaxial-equal", "linked", "coplanar-disjoint", "same-center-tilted"]),
+        (cdk, ["in-plane-inside", "coaxial-smaller", "linked-with-rim", "above-face"]),
+        (dd, ["coaxial-parallel", "edge-over-face", "coplanar-disjoint", "linked"]),
+        (bd, ["straight-deg1", "wavy-deg5-interior-min"]),
+        (bc, ["wavy-deg5-interior-min", "straight-piercing"]),
+    ):
         for n in names:
             variants += [translated(by_name(lst, n), 1e6), translated(by_name(lst, n), 1e8)]
     return cc + cdk + dd + bd + bc + variants
@@ -425,8 +546,9 @@ def ordered(c: Case, order: str):
 def test_reference_matches_analytic(case):
     ref = ref_of(case)
     scale = max(abs(case.exact), radius_scale(case.a, case.b), 1.0)
-    assert abs(float(ref.distance - R.mpf(case.exact))) <= case.exact_tol * scale, (
-        f"reference {R.ctx.nstr(ref.distance, 25)} vs analytic {case.exact!r}")
+    assert (
+        abs(float(ref.distance - R.mpf(case.exact))) <= case.exact_tol * scale
+    ), f"reference {R.ctx.nstr(ref.distance, 25)} vs analytic {case.exact!r}"
 
 
 def test_reference_basic_analytic():
@@ -596,8 +718,7 @@ def _batch_cases(n=16):
 
 def _stack(cases, which):
     shapes = [getattr(c, which) for c in cases]
-    return (np.array([s[1] for s in shapes]), np.array([s[2] for s in shapes]),
-            np.array([s[3] for s in shapes]))
+    return (np.array([s[1] for s in shapes]), np.array([s[2] for s in shapes]), np.array([s[3] for s in shapes]))
 
 
 @pytest.mark.parametrize("order", ORDERS)

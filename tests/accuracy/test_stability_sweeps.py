@@ -43,4 +43,5 @@ def test_default_policy_within_bar(cd, case):
     err, ref, radius = sweeps.relative_error(d, case)
     assert err <= BAR, (
         f"{case.label}: distance {d!r}, reference {mp.nstr(ref, 20)}, largest radius {radius}, "
-        f"relative error {err:.3e} > {BAR:.0e}")
+        f"relative error {err:.3e} > {BAR:.0e}"
+    )

@@ -86,17 +86,30 @@ def test_one_linear_vs_n_rounds(cd, lk, rk):
     c, n, r = _rounds(N)
     o, d = _linears(1)
     lin = _make_lin(cd, lk, o[0], d[0])
-    _check_n_results(cd, lin, _make_round(cd, rk, c, n, r), lambda i: lin,
-                     lambda i: _make_round(cd, rk, c[i], n[i], r[i]), "one vs N", "N vs one (swapped)")
+    _check_n_results(
+        cd,
+        lin,
+        _make_round(cd, rk, c, n, r),
+        lambda i: lin,
+        lambda i: _make_round(cd, rk, c[i], n[i], r[i]),
+        "one vs N",
+        "N vs one (swapped)",
+    )
 
 
 @pytest.mark.parametrize("lk,rk", PAIRS, ids=PAIR_IDS)
 def test_n_vs_n(cd, lk, rk):
     c, n, r = _rounds(N)
     o, d = _linears(N)
-    _check_n_results(cd, _make_lin(cd, lk, o, d), _make_round(cd, rk, c, n, r),
-                     lambda i: _make_lin(cd, lk, o[i], d[i]), lambda i: _make_round(cd, rk, c[i], n[i], r[i]),
-                     "N vs N", "N vs N (swapped)")
+    _check_n_results(
+        cd,
+        _make_lin(cd, lk, o, d),
+        _make_round(cd, rk, c, n, r),
+        lambda i: _make_lin(cd, lk, o[i], d[i]),
+        lambda i: _make_round(cd, rk, c[i], n[i], r[i]),
+        "N vs N",
+        "N vs N (swapped)",
+    )
 
 
 @pytest.mark.parametrize("lk,rk", PAIRS, ids=PAIR_IDS)
@@ -108,8 +121,10 @@ def test_outer_broadcast(cd, lk, rk):
     rounds = _make_round(cd, rk, c, n, r)
     got = cd.distance(lins, rounds)
     assert isinstance(got, np.ndarray) and got.shape == (N, M)
-    singles = [[cd.distance(_make_lin(cd, lk, o[i], d[i]), _make_round(cd, rk, c[j], n[j], r[j]))
-                for j in range(M)] for i in range(N)]
+    singles = [
+        [cd.distance(_make_lin(cd, lk, o[i], d[i]), _make_round(cd, rk, c[j], n[j], r[j])) for j in range(M)]
+        for i in range(N)
+    ]
     _close(got, singles, "(N,1) vs (M,)")
     swapped = cd.distance(rounds, lins)
     assert swapped.shape == (N, M)
@@ -209,8 +224,10 @@ def test_float32_inputs(cd, lk, rk):
     c, n, r = (x.astype(np.float32) for x in _rounds(N))
     o, d = (x.astype(np.float32) for x in _linears(N))
     got = cd.distance(_make_lin(cd, lk, o, d), _make_round(cd, rk, c, n, r))
-    want = cd.distance(_make_lin(cd, lk, o.astype(float), d.astype(float)),
-                       _make_round(cd, rk, c.astype(float), n.astype(float), r.astype(float)))
+    want = cd.distance(
+        _make_lin(cd, lk, o.astype(float), d.astype(float)),
+        _make_round(cd, rk, c.astype(float), n.astype(float), r.astype(float)),
+    )
     assert np.shape(got) == (N,)
     # the float32 values, read exactly, describe the same scene
     np.testing.assert_allclose(got, want, rtol=1e-6, atol=1e-6)
@@ -226,7 +243,7 @@ def test_integer_inputs(cd):
 # ----------------------------------------------------------------------------
 # input validation
 # ----------------------------------------------------------------------------
-BAD_AT = 13          # first offending index in a batch of 20
+BAD_AT = 13  # first offending index in a batch of 20
 ALSO_BAD = 17
 
 
@@ -263,6 +280,7 @@ def _round_case(kind, field, value):
 
     def build(cd):
         return (cd.Circle if kind == "circle" else cd.Disk)(c, n, r)
+
     return build
 
 
@@ -275,6 +293,7 @@ def _lin_case(kind, field, value):
 
     def build(cd):
         return getattr(cd, kind.capitalize())(a, b)
+
     return build
 
 
@@ -320,13 +339,13 @@ def _raise_on_use(cd, build, is_round):
     return str(info.value)
 
 
-@pytest.mark.parametrize("build,name,is_round", [c[1:] for c in BAD_BATCH],
-                         ids=[c[0] for c in BAD_BATCH])
+@pytest.mark.parametrize("build,name,is_round", [c[1:] for c in BAD_BATCH], ids=[c[0] for c in BAD_BATCH])
 def test_bad_batch_input(cd, build, name, is_round):
     msg = _raise_on_use(cd, build, is_round)
     assert name in msg, f"message does not name {name!r}: {msg!r}"
-    assert re.search(rf"(?<![\d.]){BAD_AT}(?![\d.])", msg), \
-        f"message does not give the first bad index {BAD_AT}: {msg!r}"
+    assert re.search(
+        rf"(?<![\d.]){BAD_AT}(?![\d.])", msg
+    ), f"message does not give the first bad index {BAD_AT}: {msg!r}"
 
 
 SINGLE_BAD = [
@@ -356,15 +375,15 @@ SINGLE_BAD = [
 ]
 
 
-@pytest.mark.parametrize("build,name,is_round", [c[1:] for c in SINGLE_BAD],
-                         ids=[c[0] for c in SINGLE_BAD])
+@pytest.mark.parametrize("build,name,is_round", [c[1:] for c in SINGLE_BAD], ids=[c[0] for c in SINGLE_BAD])
 def test_bad_input_names_argument(cd, build, name, is_round):
     msg = _raise_on_use(cd, build, is_round)
     assert name in msg, f"message does not name {name!r}: {msg!r}"
 
 
-@pytest.mark.parametrize("point", [(np.nan, 0, 0), (0, np.inf, 0), (0, 0), (0, 0, 0, 0)],
-                         ids=["nan", "inf", "dim2", "dim4"])
+@pytest.mark.parametrize(
+    "point", [(np.nan, 0, 0), (0, np.inf, 0), (0, 0), (0, 0, 0, 0)], ids=["nan", "inf", "dim2", "dim4"]
+)
 def test_bad_point(cd, point):
     with pytest.raises(ValueError):
         cd.distance(np.array(point, float), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
@@ -444,10 +463,10 @@ CRASH_SCRIPT = textwrap.dedent(r"""
 
 
 def test_odd_inputs_do_not_crash_the_interpreter(cd):
-    proc = subprocess.run([sys.executable, "-c", CRASH_SCRIPT], capture_output=True, text=True,
-                          timeout=120)
-    assert proc.returncode == 0 and "survived" in proc.stdout, (
-        f"interpreter died (return code {proc.returncode}): {proc.stderr[-2000:]}")
+    proc = subprocess.run([sys.executable, "-c", CRASH_SCRIPT], capture_output=True, text=True, timeout=120)
+    assert (
+        proc.returncode == 0 and "survived" in proc.stdout
+    ), f"interpreter died (return code {proc.returncode}): {proc.stderr[-2000:]}"
 
 
 # Validation checks every value's exponent bits in one pass: the extremes of the finite range

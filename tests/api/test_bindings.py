@@ -79,8 +79,10 @@ def test_float32_is_the_double_query_on_rounded_inputs(pair):
     for solver in SOLVERS:
         single, double = dict(solver=solver, precision="float32"), dict(solver=solver, precision="float64")
         _same(cd.distance(a, b, **single), cd.distance(ra, rb, **double).astype(np.float32))
-        _same(cd.distance_if_within(a, b, d, **single),
-              cd.distance_if_within(ra, rb, _to_float32(d), **double).astype(np.float32))
+        _same(
+            cd.distance_if_within(a, b, d, **single),
+            cd.distance_if_within(ra, rb, _to_float32(d), **double).astype(np.float32),
+        )
         _same(cd.within(a, b, d, **single), cd.within(ra, rb, _to_float32(d), **double))
         got, want = cd.closest_points(a, b, **single), cd.closest_points(ra, rb, **double)
         for name in ("distance", "point_a", "point_b", "param_a", "param_b"):
@@ -113,7 +115,8 @@ def test_gathered_broadcast_equals_the_tiled_batch(pair):
 
 
 CLOSED_FORMS = {("Point", "Circle"), ("Point", "Disk")} | {
-    tuple(sorted((x, y))) for x in ("Point", "Line", "Ray", "Segment") for y in ("Point", "Line", "Ray", "Segment")}
+    tuple(sorted((x, y))) for x in ("Point", "Line", "Ray", "Segment") for y in ("Point", "Line", "Ray", "Segment")
+}
 
 
 @pytest.mark.parametrize("pair", _pairs(), ids="-".join)
@@ -133,8 +136,11 @@ def test_single_queries_are_the_batch_elements(pair):
             for i in range(N):
                 ai = _make(pair[0], fa, transform=lambda x: x[i])
                 bi = _make(pair[1], fb, transform=lambda x: x[i])
-                single = (cd.distance(ai, bi, **opts), cd.within(ai, bi, d[i], **opts),
-                          cd.distance_if_within(ai, bi, d[i], **opts))
+                single = (
+                    cd.distance(ai, bi, **opts),
+                    cd.within(ai, bi, d[i], **opts),
+                    cd.distance_if_within(ai, bi, d[i], **opts),
+                )
                 assert type(single[1]) is bool
                 for got, want in zip(single, batch):
                     _same(np.asarray(got, dtype=np.asarray(want).dtype), np.asarray(want)[i])

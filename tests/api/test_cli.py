@@ -57,12 +57,14 @@ def test_json_answers_match_the_library(tmp_path, capsys):
     assert [x["name"] for x in nearest] == ["tip", "rail"] or len(nearest) == 2
     shapes = {s["name"]: s for s in SCENE["shapes"]}
     scene = cli.load_scene("x.json", json.dumps(SCENE))
-    expected = sorted((cd.distance(scene.shapes["ring"], s), i, n) for i, (n, s) in enumerate(scene.shapes.items())
-                      if n != "ring")[:2]
+    expected = sorted(
+        (cd.distance(scene.shapes["ring"], s), i, n) for i, (n, s) in enumerate(scene.shapes.items()) if n != "ring"
+    )[:2]
     assert [x["name"] for x in nearest] == [n for _, _, n in expected]
     assert [x["distance"] for x in nearest] == [d for d, _, _ in expected]
-    assert answers[3]["within"] == [n for n in shapes if n != "coin"
-                                    and cd.within(scene.shapes["coin"], scene.shapes[n], 3.0)]
+    assert answers[3]["within"] == [
+        n for n in shapes if n != "coin" and cd.within(scene.shapes["coin"], scene.shapes[n], 3.0)
+    ]
     assert "answers written to" in capsys.readouterr().out
 
 
@@ -108,8 +110,7 @@ def test_demo_scene_ships_in_the_package():
 
 def test_module_runs_the_demo_without_arguments(tmp_path):
     pytest.importorskip("matplotlib")
-    r = subprocess.run([sys.executable, "-m", "circledist"], cwd=tmp_path, capture_output=True, text=True,
-                       timeout=120)
+    r = subprocess.run([sys.executable, "-m", "circledist"], cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr
     assert "closest_points" in r.stdout and "nearest" in r.stdout
     png = tmp_path / cli.DEMO_PICTURE
@@ -117,8 +118,9 @@ def test_module_runs_the_demo_without_arguments(tmp_path):
 
 
 def test_module_no_plot(tmp_path):
-    r = subprocess.run([sys.executable, "-m", "circledist", "--no-plot"], cwd=tmp_path, capture_output=True,
-                       text=True, timeout=120)
+    r = subprocess.run(
+        [sys.executable, "-m", "circledist", "--no-plot"], cwd=tmp_path, capture_output=True, text=True, timeout=120
+    )
     assert r.returncode == 0, r.stderr
     assert os.listdir(tmp_path) == []
 
@@ -144,8 +146,14 @@ def run_limited(args, cwd, timeout=60):
         resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
 
     try:
-        return subprocess.run([sys.executable, "-m", "circledist", *args], cwd=cwd, capture_output=True,
-                              text=True, timeout=timeout, preexec_fn=limit)
+        return subprocess.run(
+            [sys.executable, "-m", "circledist", *args],
+            cwd=cwd,
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+            preexec_fn=limit,
+        )
     except subprocess.TimeoutExpired:
         pytest.fail(f"circledist {' '.join(args)} still running after {timeout} s")
 
@@ -163,13 +171,17 @@ def _fifo(tmp_path, name="scene.json"):
 
 
 @pytest.mark.skipif(not hasattr(os, "mkfifo") or not os.path.exists("/dev/zero"), reason="POSIX files")
-@pytest.mark.parametrize("make,what", [
-    (_fifo, "a FIFO"),
-    (lambda tmp_path: _fifo(tmp_path, "scene.npz"), "a FIFO"),
-    (lambda tmp_path: "/dev/zero", "a character device"),
-    (lambda tmp_path: "/dev/urandom", "a character device"),
-    (lambda tmp_path: str(tmp_path), "a directory"),
-], ids=["fifo", "fifo-npz", "dev-zero", "dev-urandom", "directory"])
+@pytest.mark.parametrize(
+    "make,what",
+    [
+        (_fifo, "a FIFO"),
+        (lambda tmp_path: _fifo(tmp_path, "scene.npz"), "a FIFO"),
+        (lambda tmp_path: "/dev/zero", "a character device"),
+        (lambda tmp_path: "/dev/urandom", "a character device"),
+        (lambda tmp_path: str(tmp_path), "a directory"),
+    ],
+    ids=["fifo", "fifo-npz", "dev-zero", "dev-urandom", "directory"],
+)
 @pytest.mark.parametrize("suffix_args", [[], ["--json", "-"]], ids=["table", "json"])
 def test_files_that_are_not_regular_are_refused(tmp_path, make, what, suffix_args):
     path = make(tmp_path)
@@ -187,17 +199,28 @@ def test_a_count_beyond_memory_is_refused_before_anything_is_built(tmp_path, cou
     the scene would take before any name or array of its shapes is made: one line naming the
     count, in bounded time and memory (the subprocess may take MEMORY_LIMIT bytes)."""
     if form == "json":
-        path = write(tmp_path, {"format": "circledist-scene", "version": 1,
-                                "shapes": [{"name": "dust", "kind": "point", "count": count, "p": [0, 0, 0],
-                                            "sweep": 0}],
-                                "queries": [{"effects": ["pairs_within"], "d": 1}]})
+        path = write(
+            tmp_path,
+            {
+                "format": "circledist-scene",
+                "version": 1,
+                "shapes": [{"name": "dust", "kind": "point", "count": count, "p": [0, 0, 0], "sweep": 0}],
+                "queries": [{"effects": ["pairs_within"], "d": 1}],
+            },
+        )
         where = "$.shapes[0].count (shape 'dust')"
     else:
         if count >= 2**63:
             pytest.skip("an .npz count is an int64")
         path = str(tmp_path / "scene.npz")
-        arrays = {"format": np.array("circledist-scene"), "version": np.array(1), "shapes": np.array(["dust"]),
-                  "dust/kind": np.array("point"), "dust/count": np.array(count), "dust/p": np.zeros(3)}
+        arrays = {
+            "format": np.array("circledist-scene"),
+            "version": np.array(1),
+            "shapes": np.array(["dust"]),
+            "dust/kind": np.array("point"),
+            "dust/count": np.array(count),
+            "dust/p": np.zeros(3),
+        }
         if form == "npz":
             arrays["dust/sweep"] = np.zeros(1)
         np.savez(path, **arrays)
@@ -224,10 +247,10 @@ def test_deeply_nested_json_is_one_line(tmp_path, capsys, place):
         doc = {
             "shapes": '{"format": "circledist-scene", "version": 1, "shapes": %s}' % deep,
             "field": '{"format": "circledist-scene", "version": 1, "shapes": [{"name": "a", "kind": "point", '
-                     '"count": 2, "p": %s}]}' % deep,
+            '"count": 2, "p": %s}]}' % deep,
             "description": '{"format": "circledist-scene", "version": 1, "description": %s, "shapes": []}' % deep,
             "query": '{"format": "circledist-scene", "version": 1, "shapes": [{"name": "a", "kind": "point", '
-                     '"p": [0, 0, 0]}], "queries": [{"a": "a", "effects": %s}]}' % deep,
+            '"p": [0, 0, 0]}], "queries": [{"a": "a", "effects": %s}]}' % deep,
             "top": deep,
         }[place]
         path = write(tmp_path, doc)
@@ -237,8 +260,11 @@ def test_deeply_nested_json_is_one_line(tmp_path, capsys, place):
 
 
 def test_deeply_nested_json_from_the_console(tmp_path):
-    path = write(tmp_path, '{"format": "circledist-scene", "version": 1, "shapes": [{"name": "a", "kind": "point", '
-                           '"count": 2, "p": %s}]}' % _deep(985))
+    path = write(
+        tmp_path,
+        '{"format": "circledist-scene", "version": 1, "shapes": [{"name": "a", "kind": "point", '
+        '"count": 2, "p": %s}]}' % _deep(985),
+    )
     assert_one_error_line(run_limited([path, "--no-plot"], tmp_path), f"{path}: ")
 
 
@@ -247,7 +273,7 @@ SURROGATE = "\ud800"
 
 @pytest.mark.parametrize("place", ["name", "description", "query name"])
 def test_lone_surrogates_are_refused(tmp_path, capsys, place):
-    """"\\ud800" is valid JSON but no character: a name, description or query name holding one is
+    """ "\\ud800" is valid JSON but no character: a name, description or query name holding one is
     refused where it stands (it could not be printed or written as UTF-8 later)."""
     doc = json.loads(json.dumps(SCENE))
     if place == "name":
@@ -275,8 +301,11 @@ def test_outputs_that_cannot_be_written(tmp_path, capsys, target, option):
     if option == "--plot":
         pytest.importorskip("matplotlib")
     (tmp_path / "file").write_text("")
-    out = {"missing folder": tmp_path / "absent" / "out", "a folder": tmp_path,
-           "under a file": tmp_path / "file" / "out"}[target]
+    out = {
+        "missing folder": tmp_path / "absent" / "out",
+        "a folder": tmp_path,
+        "under a file": tmp_path / "file" / "out",
+    }[target]
     scene = write(tmp_path, SCENE)
     other = tmp_path / ("answers.json" if option == "--plot" else "picture.png")
     other_option = "--json" if option == "--plot" else "--plot"
@@ -295,11 +324,18 @@ FAR = 1e308
 def test_json_answers_beyond_a_double_are_null(tmp_path, capsys):
     """Two points 2e308 apart: the distance overflows to inf; --json writes null (valid JSON, no
     Infinity) where the table prints inf."""
-    doc = {"format": "circledist-scene", "version": 1,
-           "shapes": [{"name": "east", "kind": "point", "p": [FAR, 0, 0]},
-                      {"name": "west", "kind": "point", "p": [-FAR, 0, 0]}],
-           "queries": [{"a": "east", "b": "west", "effects": ["distance", "closest_points"]},
-                       {"a": "east", "effects": ["nearest"]}]}
+    doc = {
+        "format": "circledist-scene",
+        "version": 1,
+        "shapes": [
+            {"name": "east", "kind": "point", "p": [FAR, 0, 0]},
+            {"name": "west", "kind": "point", "p": [-FAR, 0, 0]},
+        ],
+        "queries": [
+            {"a": "east", "b": "west", "effects": ["distance", "closest_points"]},
+            {"a": "east", "effects": ["nearest"]},
+        ],
+    }
     east, west = cd.Point([FAR, 0, 0]), cd.Point([-FAR, 0, 0])
     assert cd.distance(east, west) == float("inf")  # what the answer is, before the format
     path = write(tmp_path, doc)
@@ -309,13 +345,13 @@ def test_json_answers_beyond_a_double_are_null(tmp_path, capsys):
 
     def refuse(name):
         raise ValueError(f"{name} is not JSON")
+
     answers = json.loads(out.read_text(), parse_constant=refuse)["answers"]
     assert answers[0]["distance"] is None and answers[0]["closest_points"]["distance"] is None
     assert answers[0]["closest_points"]["point_a"] == [FAR, 0.0, 0.0]
     assert answers[1]["nearest"] == [{"name": "west", "distance": None}]
     assert cli.main([path, "--json"]) == 0
     assert json.loads(capsys.readouterr().out, parse_constant=refuse)["answers"] == answers
-
 
 
 @pytest.mark.parametrize("option", ["--json", "--plot"])
@@ -332,8 +368,12 @@ def test_outputs_honour_the_umask_and_keep_a_replaced_files_mode(tmp_path, umask
 
 
 def _extreme(shapes, description=""):
-    doc = {"format": "circledist-scene", "version": 3, "shapes": shapes,
-           "queries": [{"a": shapes[0]["name"], "b": shapes[1]["name"], "effects": ["closest_points"]}]}
+    doc = {
+        "format": "circledist-scene",
+        "version": 3,
+        "shapes": shapes,
+        "queries": [{"a": shapes[0]["name"], "b": shapes[1]["name"], "effects": ["closest_points"]}],
+    }
     if description:
         doc["description"] = description
     return doc
@@ -342,28 +382,66 @@ def _extreme(shapes, description=""):
 TINY, HUGE = 5e-324, 1e308
 RING_AT_ORIGIN = {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1}
 EXTREME_SCENES = {
-    "subnormal normal": _extreme([{"name": "coin", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, TINY],
-                                   "radius": 1}, {"name": "tip", "kind": "point", "p": [0, 0, 2]}]),
-    "huge normal": _extreme([{"name": "coin", "kind": "disk", "center": [0, 0, 0], "normal": [HUGE, HUGE, 0],
-                              "radius": 1}, {"name": "washer", "kind": "annulus", "center": [3, 0, 0],
-                                             "normal": [0, HUGE, HUGE], "inner_radius": 0.5, "outer_radius": 1}]),
-    "subnormal directions": _extreme([{"name": "rail", "kind": "line", "origin": [0, 0, 0],
-                                       "direction": [TINY, 0, 0]},
-                                      {"name": "hook", "kind": "arc", "center": [0, 3, 0], "normal": [0, 0, TINY],
-                                       "radius": 1, "start": [TINY, TINY, 0], "angle": 4}]),
-    "huge coordinates": _extreme([{"name": "east", "kind": "point", "p": [HUGE, HUGE, HUGE]},
-                                  {"name": "west", "kind": "point", "p": [-HUGE, -HUGE, -HUGE]}]),
-    "huge ring": _extreme([{"name": "ring", "kind": "circle", "center": [HUGE, 0, 0], "normal": [0, 0, 1],
-                            "radius": HUGE}, {"name": "ray", "kind": "ray", "origin": [-HUGE, 0, 0],
-                                              "direction": [1, 0, 0]}]),
-    "huge curve": _extreme([{"name": "cable", "kind": "bezier", "control_points": [[-HUGE, 0, 0], [0, HUGE, 0],
-                                                                                   [HUGE, 0, 0]]},
-                            {"name": "stick", "kind": "segment", "p0": [0, 0, -HUGE], "p1": [0, 0, HUGE]}]),
-    "tiny scene": _extreme([{"name": "a", "kind": "point", "p": [TINY, 0, 0]},
-                            {"name": "b", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1],
-                             "radius": 1e-300}]),
-    "long description": _extreme([RING_AT_ORIGIN, {"name": "x" * 10**5, "kind": "point", "p": [0, 0, 2]}],
-                                 description="a" * 10**6),
+    "subnormal normal": _extreme(
+        [
+            {"name": "coin", "kind": "disk", "center": [0, 0, 0], "normal": [0, 0, TINY], "radius": 1},
+            {"name": "tip", "kind": "point", "p": [0, 0, 2]},
+        ]
+    ),
+    "huge normal": _extreme(
+        [
+            {"name": "coin", "kind": "disk", "center": [0, 0, 0], "normal": [HUGE, HUGE, 0], "radius": 1},
+            {
+                "name": "washer",
+                "kind": "annulus",
+                "center": [3, 0, 0],
+                "normal": [0, HUGE, HUGE],
+                "inner_radius": 0.5,
+                "outer_radius": 1,
+            },
+        ]
+    ),
+    "subnormal directions": _extreme(
+        [
+            {"name": "rail", "kind": "line", "origin": [0, 0, 0], "direction": [TINY, 0, 0]},
+            {
+                "name": "hook",
+                "kind": "arc",
+                "center": [0, 3, 0],
+                "normal": [0, 0, TINY],
+                "radius": 1,
+                "start": [TINY, TINY, 0],
+                "angle": 4,
+            },
+        ]
+    ),
+    "huge coordinates": _extreme(
+        [
+            {"name": "east", "kind": "point", "p": [HUGE, HUGE, HUGE]},
+            {"name": "west", "kind": "point", "p": [-HUGE, -HUGE, -HUGE]},
+        ]
+    ),
+    "huge ring": _extreme(
+        [
+            {"name": "ring", "kind": "circle", "center": [HUGE, 0, 0], "normal": [0, 0, 1], "radius": HUGE},
+            {"name": "ray", "kind": "ray", "origin": [-HUGE, 0, 0], "direction": [1, 0, 0]},
+        ]
+    ),
+    "huge curve": _extreme(
+        [
+            {"name": "cable", "kind": "bezier", "control_points": [[-HUGE, 0, 0], [0, HUGE, 0], [HUGE, 0, 0]]},
+            {"name": "stick", "kind": "segment", "p0": [0, 0, -HUGE], "p1": [0, 0, HUGE]},
+        ]
+    ),
+    "tiny scene": _extreme(
+        [
+            {"name": "a", "kind": "point", "p": [TINY, 0, 0]},
+            {"name": "b", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1e-300},
+        ]
+    ),
+    "long description": _extreme(
+        [RING_AT_ORIGIN, {"name": "x" * 10**5, "kind": "point", "p": [0, 0, 2]}], description="a" * 10**6
+    ),
 }
 
 
@@ -393,12 +471,20 @@ def test_errors_stay_one_line_whatever_the_names_hold(tmp_path, capsys, brk, pla
     name = f"a{brk}b"
     if place == "npz name":
         path = str(tmp_path / "scene.npz")
-        np.savez(path, format=np.array("circledist-scene"), version=np.array(1), shapes=np.array(["ok", name]),
-                 **{"ok/kind": np.array("point"), "ok/p": np.zeros(3)})
+        np.savez(
+            path,
+            format=np.array("circledist-scene"),
+            version=np.array(1),
+            shapes=np.array(["ok", name]),
+            **{"ok/kind": np.array("point"), "ok/p": np.zeros(3)},
+        )
     else:
-        doc = {"format": "circledist-scene", "version": 1,
-               "shapes": [{"name": name, "kind": "point", "count": 2, "p": [0, 0, 0]}],
-               "queries": [{"a": name, "effects": ["nearest"]}]}
+        doc = {
+            "format": "circledist-scene",
+            "version": 1,
+            "shapes": [{"name": name, "kind": "point", "count": 2, "p": [0, 0, 0]}],
+            "queries": [{"a": name, "effects": ["nearest"]}],
+        }
         path = write(tmp_path, doc, f"scene{brk}.json" if place == "file name" else "scene.json")
         if place == "file name":
             doc["shapes"][0]["name"] = "ab"

@@ -29,15 +29,19 @@ KIND_PAIRS = sorted(SUPPORTED)
 @pytest.fixture(scope="module")
 def client():
     # No dashboard: its fixed port may be taken by another run on this machine.
-    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as c:
+    with (
+        distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=None) as cluster,
+        distributed.Client(cluster) as c,
+    ):
         yield c
 
 
 def chunked(shape, chunks):
     """The dask shape of a circledist shape, its batched fields cut into `chunks`."""
-    fields = {name: da.from_array(value, chunks={0: chunks} if value.ndim > TRAILING[name] else -1)
-              for name, value in shape.to_arrays().items()}
+    fields = {
+        name: da.from_array(value, chunks={0: chunks} if value.ndim > TRAILING[name] else -1)
+        for name, value in shape.to_arrays().items()
+    }
     return getattr(cdd, shape.kind).from_arrays(fields)
 
 
@@ -95,15 +99,21 @@ def test_broadcasting_n1_by_m(client):
     column = {name: v[:, None] for name, v in arrays.items()}
     rings_n1 = cd.Circle.from_arrays(column)
     # Fields chunked three ways, and one a NumPy array.
-    lazy_rings = cdd.Circle(da.from_array(column["center"], chunks=(5, 1, 3)), column["normal"],
-                            da.from_array(column["radius"], chunks=(4, 1)),
-                            sweep=da.from_array(column["sweep"], chunks=(6, 1)))
+    lazy_rings = cdd.Circle(
+        da.from_array(column["center"], chunks=(5, 1, 3)),
+        column["normal"],
+        da.from_array(column["radius"], chunks=(4, 1)),
+        sweep=da.from_array(column["sweep"], chunks=(6, 1)),
+    )
     lazy_points = chunked(points, 8)
     # d broadcasting against both, and a point array read as points, as cd reads it.
     d = rng.uniform(0, 4, (1, 29))
-    got = dask.compute(cdd.distance(lazy_rings, lazy_points), cdd.within(lazy_rings, lazy_points, d),
-                       cdd.closest_points(lazy_rings, lazy_points).point_a,
-                       cdd.distance(lazy_rings, da.from_array(points.to_arrays()["p"], chunks=10)))
+    got = dask.compute(
+        cdd.distance(lazy_rings, lazy_points),
+        cdd.within(lazy_rings, lazy_points, d),
+        cdd.closest_points(lazy_rings, lazy_points).point_a,
+        cdd.distance(lazy_rings, da.from_array(points.to_arrays()["p"], chunks=10)),
+    )
     assert got[0].shape == (17, 29)
     same(got[0], cd.distance(rings_n1, points))
     same(got[1], cd.within(rings_n1, points, d))
@@ -119,8 +129,10 @@ def test_precision_solver_and_workers_pass_through(client, precision, solver):
     rng = np.random.default_rng(5)
     a, b = random_batch("Disk", 20, rng), random_batch("Bezier", 20, rng)
     opts = {"precision": precision, "solver": solver}
-    got = dask.compute(cdd.distance(chunked(a, 6), chunked(b, 9), workers=2, **opts),
-                       cdd.closest_points(chunked(a, 6), chunked(b, 9), **opts).point_b)
+    got = dask.compute(
+        cdd.distance(chunked(a, 6), chunked(b, 9), workers=2, **opts),
+        cdd.closest_points(chunked(a, 6), chunked(b, 9), **opts).point_b,
+    )
     same(got[0], cd.distance(a, b, **opts))
     same(got[1], cd.closest_points(a, b, **opts).point_b)
 
@@ -151,8 +163,9 @@ def test_closest_points_solves_once_for_all_attributes(monkeypatch):
 def test_kinds_without_a_query_and_bad_fields_raise():
     line = cdd.Line([0, 0, 0], [1, 0, 0])
     # every pair of kinds has a query now, curves against curves too (bezier_bezier.hpp)
-    assert float(cdd.distance(cdd.Bezier([[0, 0, 1], [1, 0, 1]]), cdd.Bezier([[0, 0, 0], [1, 1, 1]])).compute()) == \
-        cd.distance(cd.Bezier([[0, 0, 1], [1, 0, 1]]), cd.Bezier([[0, 0, 0], [1, 1, 1]]))
+    assert float(
+        cdd.distance(cdd.Bezier([[0, 0, 1], [1, 0, 1]]), cdd.Bezier([[0, 0, 0], [1, 1, 1]])).compute()
+    ) == cd.distance(cd.Bezier([[0, 0, 1], [1, 0, 1]]), cd.Bezier([[0, 0, 0], [1, 1, 1]]))
     with pytest.raises(ValueError, match="center"):
         cdd.Circle(np.zeros((4, 2)), [0, 0, 1], 1.0)
     with pytest.raises(ValueError, match="do not broadcast"):
@@ -175,10 +188,22 @@ def scene(kind, n, rng, clustered):
     return getattr(cd, kind).from_arrays(arrays)
 
 
-PAIR_CASES = [("Circle", "Segment"), ("Point", "Circle"), ("Disk", "Disk"), ("Bezier", "Circle"),
-              ("Line", "Disk"), ("Segment", "Ray"), ("Line", "Line"), ("Circle", "Bezier"), ("Arc", "Segment"),
-              ("Disk", "Arc"), ("Arc", "Arc"), ("Annulus", "Circle"), ("Segment", "Annulus"),
-              ("Annulus", "Annulus")]
+PAIR_CASES = [
+    ("Circle", "Segment"),
+    ("Point", "Circle"),
+    ("Disk", "Disk"),
+    ("Bezier", "Circle"),
+    ("Line", "Disk"),
+    ("Segment", "Ray"),
+    ("Line", "Line"),
+    ("Circle", "Bezier"),
+    ("Arc", "Segment"),
+    ("Disk", "Arc"),
+    ("Arc", "Arc"),
+    ("Annulus", "Circle"),
+    ("Segment", "Annulus"),
+    ("Annulus", "Annulus"),
+]
 
 
 def pairs_cases(clustered, n_a, n_b, cases):
@@ -225,8 +250,9 @@ def test_pairs_within_on_the_cluster(client, clustered):
 def test_pairs_within_a_batch_shape_and_empty_batches(client):
     rng = np.random.default_rng(13)
     rings = random_batch("Circle", 24, rng)
-    arrays = {n: (v.reshape((4, 6) + v.shape[1:]) if v.ndim and v.shape[0] == 24 else v)
-              for n, v in rings.to_arrays().items()}
+    arrays = {
+        n: (v.reshape((4, 6) + v.shape[1:]) if v.ndim and v.shape[0] == 24 else v) for n, v in rings.to_arrays().items()
+    }
     grid_rings = cd.Circle.from_arrays(arrays)
     points = rng.uniform(-4, 4, (40, 3))
     got = dask.compute(*cdd.pairs_within(grid_rings, da.from_array(points, chunks=(9, 3)), 1.0))
@@ -240,17 +266,37 @@ def test_pairs_within_a_batch_shape_and_empty_batches(client):
 
 
 def test_circledist_does_not_import_dask_and_the_error_without_it_is_clear():
-    run = subprocess.run([sys.executable, "-c", "import sys, circledist; assert 'dask' not in sys.modules"],
-                         capture_output=True, text=True)
+    run = subprocess.run(
+        [sys.executable, "-c", "import sys, circledist; assert 'dask' not in sys.modules"],
+        capture_output=True,
+        text=True,
+    )
     assert run.returncode == 0, run.stderr
     # sys.modules[name] = None makes that import fail, as an environment without dask would.
-    run = subprocess.run([sys.executable, "-c", "import sys; sys.modules['dask'] = None; import circledist.dask"],
-                         capture_output=True, text=True)
+    run = subprocess.run(
+        [sys.executable, "-c", "import sys; sys.modules['dask'] = None; import circledist.dask"],
+        capture_output=True,
+        text=True,
+    )
     assert "circledist.dask needs dask: pip install 'circledist[dask]'" in run.stderr
 
 
-BATCH_KEYS = [0, -1, 2, slice(1, 3), slice(None, None, -2), (1, 2), (slice(None), 3), (-2, slice(1, None)),
-              (Ellipsis, 1), (1, Ellipsis), (Ellipsis,), (), np.int64(1), (slice(0, 0),)]
+BATCH_KEYS = [
+    0,
+    -1,
+    2,
+    slice(1, 3),
+    slice(None, None, -2),
+    (1, 2),
+    (slice(None), 3),
+    (-2, slice(1, None)),
+    (Ellipsis, 1),
+    (1, Ellipsis),
+    (Ellipsis,),
+    (),
+    np.int64(1),
+    (slice(0, 0),),
+]
 
 
 @pytest.mark.slow
@@ -264,15 +310,21 @@ def test_indexing_a_batch_is_numpy_indexing_of_its_broadcast_fields(client, key)
     center = rng.normal(size=(3, 4, 3))
     normal = rng.normal(size=(3, 1, 3)).astype(np.float32)
     radius = rng.uniform(0.5, 2, 4)
-    lazy = cdd.Circle(da.from_array(center, chunks=(2, 3, 3)), da.from_array(normal, chunks=(1, 1, 3)),
-                      da.from_array(radius, chunks=2), sweep=0.25)
+    lazy = cdd.Circle(
+        da.from_array(center, chunks=(2, 3, 3)),
+        da.from_array(normal, chunks=(1, 1, 3)),
+        da.from_array(radius, chunks=2),
+        sweep=0.25,
+    )
     assert lazy.batch_shape == (3, 4) and len(lazy) == 3
     # Which elements, by NumPy on an array of the batch's shape; then those rows of each field.
     taken = np.arange(12).reshape(3, 4)[key]
-    fields = {"center": np.broadcast_to(center, (3, 4, 3)).reshape(12, 3)[taken],
-              "normal": np.broadcast_to(normal, (3, 4, 3)).reshape(12, 3)[taken],
-              "radius": np.broadcast_to(radius, (3, 4)).reshape(12)[taken],
-              "sweep": np.full(12, 0.25)[taken]}
+    fields = {
+        "center": np.broadcast_to(center, (3, 4, 3)).reshape(12, 3)[taken],
+        "normal": np.broadcast_to(normal, (3, 4, 3)).reshape(12, 3)[taken],
+        "radius": np.broadcast_to(radius, (3, 4)).reshape(12)[taken],
+        "sweep": np.full(12, 0.25)[taken],
+    }
     part = lazy[key]
     assert isinstance(part, cdd.Circle) and part.batch_shape == fields["radius"].shape
     got = part.compute().to_arrays()
@@ -305,6 +357,7 @@ def test_indexing_refuses_what_is_not_basic_indexing():
 
 # ---- bad input: circledist's own errors, word for word, naming the element of the whole batch --
 
+
 def _message(call):
     with pytest.raises((ValueError, TypeError, OverflowError)) as error:
         call()
@@ -314,9 +367,11 @@ def _message(call):
 def _spoilt(batch, where, field, value):
     """Circle fields (centers on a grid, radius 0.1) of batch shape `batch`, field[where] = value."""
     n = int(np.prod(batch))
-    fields = {"center": np.stack([np.arange(n) * 3.0, np.zeros(n), np.zeros(n)], axis=-1).reshape(batch + (3,)),
-              "normal": np.tile([0.0, 0.0, 1.0], (n, 1)).reshape(batch + (3,)),
-              "radius": np.full(batch, 0.1)}
+    fields = {
+        "center": np.stack([np.arange(n) * 3.0, np.zeros(n), np.zeros(n)], axis=-1).reshape(batch + (3,)),
+        "normal": np.tile([0.0, 0.0, 1.0], (n, 1)).reshape(batch + (3,)),
+        "radius": np.full(batch, 0.1),
+    }
     fields[field] = fields[field].copy()
     fields[field][where] = value
     return fields
@@ -331,8 +386,11 @@ BAD_ELEMENTS = [
 ]
 
 
-@pytest.mark.parametrize("batch, where, field, value, chunks", BAD_ELEMENTS,
-                         ids=[f"{f}-{'x'.join(map(str, b))}" for b, _, f, _, _ in BAD_ELEMENTS])
+@pytest.mark.parametrize(
+    "batch, where, field, value, chunks",
+    BAD_ELEMENTS,
+    ids=[f"{f}-{'x'.join(map(str, b))}" for b, _, f, _, _ in BAD_ELEMENTS],
+)
 @pytest.mark.parametrize("call", ["distance", "within", "closest_points", "pairs_within-a", "pairs_within-b"])
 def test_bad_elements_are_named_as_circledist_names_them(batch, where, field, value, chunks, call):
     """A NaN, a zero normal or a negative radius deep in a chunked batch: the error is the one
@@ -341,28 +399,45 @@ def test_bad_elements_are_named_as_circledist_names_them(batch, where, field, va
     fields = _spoilt(batch, where, field, value)
     expected = _message(lambda: cd.Circle(*fields.values()))
     assert f"{field}[{', '.join(map(str, where))}]" in expected[1]
-    lazy = cdd.Circle(*[da.from_array(v, chunks={**chunks, **({v.ndim - 1: -1} if v.ndim > len(batch) else {})})
-                        for v in fields.values()])
+    lazy = cdd.Circle(
+        *[
+            da.from_array(v, chunks={**chunks, **({v.ndim - 1: -1} if v.ndim > len(batch) else {})})
+            for v in fields.values()
+        ]
+    )
     other = cdd.Point(np.zeros(batch + (3,)))
-    run = {"distance": lambda: cdd.distance(lazy, other).compute(scheduler="sync"),
-           "within": lambda: cdd.within(other, lazy, 0.5).compute(scheduler="sync"),
-           "closest_points": lambda: cdd.closest_points(lazy, other).distance.compute(scheduler="sync"),
-           "pairs_within-a": lambda: dask.compute(*cdd.pairs_within(lazy, other, 0.5), scheduler="sync"),
-           "pairs_within-b": lambda: dask.compute(*cdd.pairs_within(other, lazy, 0.5), scheduler="sync")}[call]
+    run = {
+        "distance": lambda: cdd.distance(lazy, other).compute(scheduler="sync"),
+        "within": lambda: cdd.within(other, lazy, 0.5).compute(scheduler="sync"),
+        "closest_points": lambda: cdd.closest_points(lazy, other).distance.compute(scheduler="sync"),
+        "pairs_within-a": lambda: dask.compute(*cdd.pairs_within(lazy, other, 0.5), scheduler="sync"),
+        "pairs_within-b": lambda: dask.compute(*cdd.pairs_within(other, lazy, 0.5), scheduler="sync"),
+    }[call]
     assert _message(run) == expected
 
 
-@pytest.mark.parametrize("d", ["0.3", b"0.3", True, None, -1.0, float("nan"), float("inf"), [0.3]],
-                         ids=["str", "bytes", "bool", "none", "negative", "nan", "inf", "list"])
+@pytest.mark.parametrize(
+    "d",
+    ["0.3", b"0.3", True, None, -1.0, float("nan"), float("inf"), [0.3]],
+    ids=["str", "bytes", "bool", "none", "negative", "nan", "inf", "list"],
+)
 def test_pairs_within_checks_d_as_circledist_does(d):
     points = np.zeros((5, 3))
     expected = _message(lambda: cd.pairs_within(cd.Point(points), cd.Point(points), d))
     assert _message(lambda: cdd.pairs_within(cdd.Point(points), cdd.Point(points), d)) == expected
 
 
-@pytest.mark.parametrize("tiles, kind, words", [
-    (-5, ValueError, "-5"), (0, ValueError, "0"), (2.5, TypeError, "2.5"), (True, TypeError, "True"),
-    ("4", TypeError, "'4'"), (float("nan"), TypeError, "nan")])
+@pytest.mark.parametrize(
+    "tiles, kind, words",
+    [
+        (-5, ValueError, "-5"),
+        (0, ValueError, "0"),
+        (2.5, TypeError, "2.5"),
+        (True, TypeError, "True"),
+        ("4", TypeError, "'4'"),
+        (float("nan"), TypeError, "nan"),
+    ],
+)
 def test_pairs_within_tiles_must_be_a_positive_integer(tiles, kind, words):
     points = cdd.Point(np.zeros((5, 3)))
     with pytest.raises(kind) as error:
@@ -372,8 +447,9 @@ def test_pairs_within_tiles_must_be_a_positive_integer(tiles, kind, words):
     assert len(i) == 25
 
 
-@pytest.mark.parametrize("batch, where, chunks", [((20000,), (12345,), {0: 5000}), ((30, 40), (17, 29), {0: 7, 1: 15})],
-                         ids=["1d", "2d"])
+@pytest.mark.parametrize(
+    "batch, where, chunks", [((20000,), (12345,), {0: 5000}), ((30, 40), (17, 29), {0: 7, 1: 15})], ids=["1d", "2d"]
+)
 @pytest.mark.parametrize("bad", ["negative d", "nan d", "float32 overflow"])
 def test_errors_of_the_calls_name_the_whole_batch_index(batch, where, chunks, bad):
     """Errors the calls themselves raise (within's d, an answer beyond float32's range) name the
@@ -385,8 +461,11 @@ def test_errors_of_the_calls_name_the_whole_batch_index(batch, where, chunks, ba
         points[where] = [3e38, 0, 0]
         others[where] = [-3e38, 0, 0]
         expected = _message(lambda: cd.distance(cd.Point(points), cd.Point(others), precision="float32"))
-        lazy = cdd.distance(cdd.Point(da.from_array(points, chunks={**chunks, len(batch): -1})),
-                            cdd.Point(da.from_array(others, chunks={**chunks, len(batch): -1})), precision="float32")
+        lazy = cdd.distance(
+            cdd.Point(da.from_array(points, chunks={**chunks, len(batch): -1})),
+            cdd.Point(da.from_array(others, chunks={**chunks, len(batch): -1})),
+            precision="float32",
+        )
     else:
         d[where] = -1.0 if bad == "negative d" else np.nan
         expected = _message(lambda: cd.within(cd.Point(points), cd.Point(others), d))

@@ -41,13 +41,36 @@ def with_sweep(shape, sweep):
     return type(shape)(**arrays, sweep=sweep)
 
 
-PAIRS = [("Line", "Circle"), ("Ray", "Disk"), ("Segment", "Circle"), ("Segment", "Disk"),
-         ("Circle", "Circle"), ("Circle", "Disk"), ("Disk", "Disk"), ("Bezier", "Disk"),
-         ("Bezier", "Circle"), ("Point", "Disk"), ("Segment", "Segment"), ("Point", "Line"),
-         ("Line", "Ray"), ("Arc", "Point"), ("Arc", "Line"), ("Ray", "Arc"), ("Segment", "Arc"),
-         ("Arc", "Circle"), ("Disk", "Arc"), ("Arc", "Arc"), ("Annulus", "Point"), ("Line", "Annulus"),
-         ("Annulus", "Ray"), ("Segment", "Annulus"), ("Annulus", "Circle"), ("Disk", "Annulus"),
-         ("Annulus", "Arc"), ("Annulus", "Annulus")]
+PAIRS = [
+    ("Line", "Circle"),
+    ("Ray", "Disk"),
+    ("Segment", "Circle"),
+    ("Segment", "Disk"),
+    ("Circle", "Circle"),
+    ("Circle", "Disk"),
+    ("Disk", "Disk"),
+    ("Bezier", "Disk"),
+    ("Bezier", "Circle"),
+    ("Point", "Disk"),
+    ("Segment", "Segment"),
+    ("Point", "Line"),
+    ("Line", "Ray"),
+    ("Arc", "Point"),
+    ("Arc", "Line"),
+    ("Ray", "Arc"),
+    ("Segment", "Arc"),
+    ("Arc", "Circle"),
+    ("Disk", "Arc"),
+    ("Arc", "Arc"),
+    ("Annulus", "Point"),
+    ("Line", "Annulus"),
+    ("Annulus", "Ray"),
+    ("Segment", "Annulus"),
+    ("Annulus", "Circle"),
+    ("Disk", "Annulus"),
+    ("Annulus", "Arc"),
+    ("Annulus", "Annulus"),
+]
 
 
 # ---- the sweep keyword ----------------------------------------------------------------------
@@ -112,17 +135,17 @@ def test_swept_distance_is_core_distance_less_sweeps(ka, kb):
 
 
 def test_swept_closest_points_by_hand():
-    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.1)          # a torus
-    rail = cd.Line([-3, 1, 0.5], [1, 0, 0], sweep=0.2)               # a cylinder, 0.5 above the rim
+    ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.1)  # a torus
+    rail = cd.Line([-3, 1, 0.5], [1, 0, 0], sweep=0.2)  # a cylinder, 0.5 above the rim
     r = cd.closest_points(rail, ring)
     assert r.distance == pytest.approx(0.2, abs=1e-14)
     np.testing.assert_allclose(r.point_a, [0, 1, 0.3], atol=1e-12)
     np.testing.assert_allclose(r.point_b, [0, 1, 0.1], atol=1e-12)
-    capsule = cd.Segment([0.5, 0, -1], [0.5, 0, 1], sweep=0.05)      # pierces the disk: d == 0
+    capsule = cd.Segment([0.5, 0, -1], [0.5, 0, 1], sweep=0.05)  # pierces the disk: d == 0
     r = cd.closest_points(capsule, cd.Disk([0, 0, 0], [0, 0, 1], 1.0))
     assert r.distance == 0 and not r.unique
     np.testing.assert_allclose(r.point_a, [0.5, 0, 0], atol=1e-12)
-    ball = cd.Point([3, 0, 0], sweep=1.5)                            # a ball around a point
+    ball = cd.Point([3, 0, 0], sweep=1.5)  # a ball around a point
     assert cd.distance(ball, cd.Circle([0, 0, 0], [0, 0, 1], 1.0)) == pytest.approx(0.5)
 
 
@@ -180,13 +203,13 @@ def separated_and_overlapping():
     return [
         (cd.Circle([10, 0, 0], [0, 1, 0], 1.0), disk, False),
         (cd.Line([0, 5, 0], [1, 0, 0]), ring, False),
-        (cd.Segment([0, 0, 2], [1, 1, 3]), disk, False),                     # above the plane
+        (cd.Segment([0, 0, 2], [1, 1, 3]), disk, False),  # above the plane
         (cd.Disk(far, [1, 1, 0], 2.0), disk, False),
         (cd.Bezier([[5, 5, 5], [6, 5, 5], [6, 6, 5]]), ring, False),
-        (cd.Ray([0, 0, 3], [0, 1, 1]), disk, False),                          # pointing away
-        (cd.Segment([0.5, 0, -1], [0.5, 0, 1]), disk, True),                  # pierces
+        (cd.Ray([0, 0, 3], [0, 1, 1]), disk, False),  # pointing away
+        (cd.Segment([0.5, 0, -1], [0.5, 0, 1]), disk, True),  # pierces
         (cd.Line([0.2, 0.1, -4], [0.1, 0, 1]), disk, True),
-        (cd.Circle([0.5, 0, 0], [1, 0, 0], 0.7), disk, True),                 # through the disk
+        (cd.Circle([0.5, 0, 0], [1, 0, 0], 0.7), disk, True),  # through the disk
         (cd.Disk([0.5, 0, 0], [1, 0, 0], 1.0), disk, True),
         (cd.Circle([1, 0, 0], [0, 1, 0], 1.0, sweep=0.6), cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.5), True),
         (cd.Line([-3, 1, 0.5], [1, 0, 0], sweep=0.3), cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.25), True),
@@ -266,8 +289,14 @@ def test_distance_does_no_closest_point_work():
 
 def test_stats_keys_and_reset():
     cd.reset_stats()
-    assert cd.stats() == {"solves": 0, "distances": 0, "closest_points": 0, "within": 0,
-                          "decided_by_bounds": 0, "culled": 0}
+    assert cd.stats() == {
+        "solves": 0,
+        "distances": 0,
+        "closest_points": 0,
+        "within": 0,
+        "decided_by_bounds": 0,
+        "culled": 0,
+    }
     # A tilted line off the axis: one bracketed root of the line-circle quartic.
     cd.distance(cd.Line([0.5, 0.2, 1], [1, 0.3, 0.4]), cd.Circle([0, 0, 0], [0, 0, 1], 1.0))
     assert cd.stats()["solves"] == 1 and cd.stats()["distances"] == 1
@@ -332,8 +361,15 @@ REPORTED_DEGENERATE = [  # (kind, data) pairs in circledist_cases.differential's
 @pytest.mark.parametrize("a,b", REPORTED_DEGENERATE)
 def test_reported_center_on_axis_pairs_are_not_within_below_the_distance(a, b):
     from circledist_cases import differential as D
-    case = dict(family="effect_degenerate", id="reported", a=a[0], a_data=[float(v) for v in a[1]], b=b[0],
-                b_data=[float(v) for v in b[1]])
+
+    case = dict(
+        family="effect_degenerate",
+        id="reported",
+        a=a[0],
+        a_data=[float(v) for v in a[1]],
+        b=b[0],
+        b_data=[float(v) for v in b[1]],
+    )
     x0, y0 = D.make_shape(cd, a[0], a[1]), D.make_shape(cd, b[0], b[1])
     dist = cd.distance(x0, y0)
     assert abs(dist - float(D.mp_reference(case))) <= 1e-12 * max(dist, 2.0)  # the 50-digit reference
@@ -356,14 +392,17 @@ def test_effects_equal_their_definition_on_small_integer_configurations():
     the 680 configurations (circle-circle, circle-disk, circle-annulus, disk-annulus) answer
     wrongly, half of them at limits below 0.95 D."""
     from circledist_cases import differential as D
+
     pairs = [p for p in D.KIND_PAIRS if "circle" in p or "disk" in p]
     cases = []
     for i, (ka, kb) in enumerate(pairs):
         rng = np.random.default_rng([RNG_SEED, i])
         for j in range(40):
             a, b = D._fam_effect_degenerate(rng, ka, kb)
-            cases.append(dict(family="effect_degenerate", id=f"test/{i}/{j}", a=ka, a_data=D._plain(a), b=kb,
-                              b_data=D._plain(b)))
+            cases.append(
+                dict(family="effect_degenerate", id=f"test/{i}/{j}", a=ka, a_data=D._plain(a), b=kb, b_data=D._plain(b))
+            )
     findings = D.check_effects_definition(cd, cases, sweeps=(0.0, 0.5), scenes=False)
-    assert not findings, [(f["pair"], f["order"], f["entry"], f["a_data"], f["b_data"], f["library"], f["d"])
-                          for f in findings[:6]]
+    assert not findings, [
+        (f["pair"], f["order"], f["entry"], f["a_data"], f["b_data"], f["library"], f["d"]) for f in findings[:6]
+    ]

@@ -36,8 +36,10 @@ def _same_shape(x, y):
 
 def _same_answers(x, y):
     ring = cd.Circle([0.1, 0.2, 0.3], [0.3, -0.2, 1.0], 0.7)
-    for got, want in ((cd.distance(y, ring), cd.distance(x, ring)),
-                      (cd.closest_points(y, ring).point_a, cd.closest_points(x, ring).point_a)):
+    for got, want in (
+        (cd.distance(y, ring), cd.distance(x, ring)),
+        (cd.closest_points(y, ring).point_a, cd.closest_points(x, ring).point_a),
+    ):
         got, want = np.asarray(got), np.asarray(want)
         assert got.dtype == want.dtype and np.array_equal(got, want)
 

@@ -150,8 +150,10 @@ def crowded():
     # 40,000 disks in a box of side 60: a few neighbours each within 0.3, seconds of distances.
     rng = np.random.default_rng(5)
     n = 40_000
-    return (cd.Disk(rng.uniform(0, 60, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 0.6, n)),
-            cd.Disk(rng.uniform(0, 60, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 0.6, n)))
+    return (
+        cd.Disk(rng.uniform(0, 60, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 0.6, n)),
+        cd.Disk(rng.uniform(0, 60, (n, 3)), rng.normal(size=(n, 3)), rng.uniform(0.2, 0.6, n)),
+    )
 
 
 @pytest.mark.slow

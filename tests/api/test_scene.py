@@ -55,8 +55,11 @@ QUERIES = {
 @pytest.mark.parametrize("k", [1, 4])
 def test_nearest_equals_brute_force(query, k):
     # Bezier curves have queries against circles and disks only.
-    kinds = ("Disk", "Circle", "Segment", "Point") if query in ("line", "ray") else \
-        ("Disk", "Circle", "Segment", "Point", "Bezier")
+    kinds = (
+        ("Disk", "Circle", "Segment", "Point")
+        if query in ("line", "ray")
+        else ("Disk", "Circle", "Segment", "Point", "Bezier")
+    )
     scene, shapes = mixed_scene(5 + k, kinds=kinds)
     q = QUERIES[query]
     d = brute_distances(q, shapes)
@@ -75,7 +78,7 @@ def test_nearest_with_sweeps_and_names():
     name = scene.names[10]
     q = scene[name]
     d = brute_distances(q, shapes)
-    d[10] = np.inf                      # a name as the query leaves that shape out
+    d[10] = np.inf  # a name as the query leaves that shape out
     order = np.argsort(d, kind="stable")[:3]
     assert scene.nearest(name, 3) == [(scene.names[i], d[i]) for i in order]
     assert scene.nearest(q, 1)[0] == (name, 0.0)
@@ -85,8 +88,11 @@ def test_nearest_with_sweeps_and_names():
 @pytest.mark.parametrize("query", list(QUERIES))
 @pytest.mark.parametrize("d", [0.0, 0.5, 3.0])
 def test_within_equals_brute_force(query, d):
-    kinds = ("Disk", "Circle", "Segment", "Point") if query in ("line", "ray") else \
-        ("Disk", "Circle", "Segment", "Point", "Bezier")
+    kinds = (
+        ("Disk", "Circle", "Segment", "Point")
+        if query in ("line", "ray")
+        else ("Disk", "Circle", "Segment", "Point", "Bezier")
+    )
     scene, shapes = mixed_scene(11, kinds=kinds)
     q = QUERIES[query]
     expected = [scene.names[i] for i, s in enumerate(shapes) if cd.within(q, s, d)]
@@ -102,8 +108,12 @@ def test_within_equals_brute_force(query, d):
 def test_pairs_within_equals_brute_force(d):
     scene, shapes = mixed_scene(21, n=240, box=8.0, kinds=("Disk", "Circle", "Segment", "Point"))
     names = scene.names
-    expected = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
-                if cd.within(shapes[i], shapes[j], d)]
+    expected = [
+        (names[i], names[j])
+        for i in range(len(shapes))
+        for j in range(i + 1, len(shapes))
+        if cd.within(shapes[i], shapes[j], d)
+    ]
     cd.reset_stats()
     got = scene.pairs_within(d)
     assert got == expected
@@ -115,8 +125,12 @@ def test_pairs_within_equals_brute_force(d):
 def test_pairs_within_with_lines():
     scene, shapes = mixed_scene(4, n=150, box=6.0, kinds=("Disk", "Circle", "Segment", "Line"))
     names = scene.names
-    expected = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
-                if cd.within(shapes[i], shapes[j], 0.5)]
+    expected = [
+        (names[i], names[j])
+        for i in range(len(shapes))
+        for j in range(i + 1, len(shapes))
+        if cd.within(shapes[i], shapes[j], 0.5)
+    ]
     assert scene.pairs_within(0.5) == expected
 
 
@@ -219,8 +233,12 @@ def check_copies(scene):
                 assert f.dtype == e.dtype and np.array_equal(f, e)
             assert np.array_equal(g.ids, h.ids)
         ring32 = again["ring32"].to_arrays()
-        assert {k: v.dtype for k, v in ring32.items()} == {"center": np.float32, "normal": np.float64,
-                                                           "radius": np.float32, "sweep": np.float32}
+        assert {k: v.dtype for k, v in ring32.items()} == {
+            "center": np.float32,
+            "normal": np.float64,
+            "radius": np.float32,
+            "sweep": np.float32,
+        }
         assert again.pairs_within(0.5) == before
         assert again.nearest(probe, 5) == scene.nearest(probe, 5)
         assert again.within(probe, 1.0) == scene.within(probe, 1.0)
@@ -266,8 +284,12 @@ def test_adding_after_queries_and_mixing_add_and_extend():
             d = np.array([cd.distance(probe, e) for e in expected])
             order = np.lexsort((np.arange(len(d)), d))[:3]
             assert scene.nearest(probe, 3) == [(scene.names[i], d[i]) for i in order]
-    pairs = [(scene.names[i], scene.names[j]) for i in range(len(expected)) for j in range(i + 1, len(expected))
-             if cd.within(expected[i], expected[j], 0.3)]
+    pairs = [
+        (scene.names[i], scene.names[j])
+        for i in range(len(expected))
+        for j in range(i + 1, len(expected))
+        if cd.within(expected[i], expected[j], 0.3)
+    ]
     assert scene.pairs_within(0.3) == pairs
     assert scene.pairs_within(0.3, workers=2) == pairs
 
@@ -284,8 +306,12 @@ def test_pairs_within_gives_the_same_pairs_for_every_worker_count():
         scene.add(f"f{k}", s)
         shapes.append(s)
     names = scene.names
-    expected = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
-                if cd.within(shapes[i], shapes[j], 0.3)]
+    expected = [
+        (names[i], names[j])
+        for i in range(len(shapes))
+        for j in range(i + 1, len(shapes))
+        if cd.within(shapes[i], shapes[j], 0.3)
+    ]
     assert len(expected) > 200
     state = scene.__getstate__()
     for workers in (1, 2, 3, 7):
@@ -308,17 +334,24 @@ def test_adds_between_queries_grow_the_hierarchy_and_answers_stay_brute_force():
     for step in range(400):
         if step % 25 == 24:
             count = int(rng.integers(2, 30))
-            batch = cd.Segment(rng.uniform(-6, 6, (count, 3)), rng.uniform(-6, 6, (count, 3)) * 0.1 +
-                               rng.uniform(-6, 6, (count, 3)))
+            batch = cd.Segment(
+                rng.uniform(-6, 6, (count, 3)), rng.uniform(-6, 6, (count, 3)) * 0.1 + rng.uniform(-6, 6, (count, 3))
+            )
             scene.extend(f"b{step}_", batch)
             arrays = batch.to_arrays()
             shapes += [cd.Segment(arrays["p0"][i], arrays["p1"][i]) for i in range(count)]
         else:
             kind = step % 3
             c = rng.uniform(-6, 6, 3)
-            s = (cd.Disk(c, rand_dirs(rng, 1)[0], rng.uniform(0.1, 0.6)) if kind == 0 else
-                 cd.Point(c, sweep=float(rng.uniform(0, 0.3))) if kind == 1 else
-                 cd.Line(c, rand_dirs(rng, 1)[0]) if step % 30 == 2 else cd.Circle(c, rand_dirs(rng, 1)[0], 0.4))
+            s = (
+                cd.Disk(c, rand_dirs(rng, 1)[0], rng.uniform(0.1, 0.6))
+                if kind == 0
+                else cd.Point(c, sweep=float(rng.uniform(0, 0.3)))
+                if kind == 1
+                else cd.Line(c, rand_dirs(rng, 1)[0])
+                if step % 30 == 2
+                else cd.Circle(c, rand_dirs(rng, 1)[0], 0.4)
+            )
             scene.add(f"s{step}", s)
             shapes.append(s)
         if step % 7 == 0 or step == 399:
@@ -330,8 +363,12 @@ def test_adds_between_queries_grow_the_hierarchy_and_answers_stay_brute_force():
             assert 1 <= scene._broadphase.trees <= np.log2(len(shapes)) + 1
     assert scene._broadphase.trees > 1
     names = scene.names
-    pairs = [(names[i], names[j]) for i in range(len(shapes)) for j in range(i + 1, len(shapes))
-             if cd.within(shapes[i], shapes[j], 0.2)]
+    pairs = [
+        (names[i], names[j])
+        for i in range(len(shapes))
+        for j in range(i + 1, len(shapes))
+        if cd.within(shapes[i], shapes[j], 0.2)
+    ]
     assert scene.pairs_within(0.2, workers=2) == pairs
     assert scene._broadphase.trees == 1
     scene.add("last", cd.Point([0, 0, 0]))
@@ -357,9 +394,21 @@ def test_shapes_come_back_with_the_dtypes_they_were_added_with():
 
     f32, f64, ld = np.float32, np.float64, np.longdouble
     _, shapes = mixed_scene(41, n=70, box=5.0)
-    variants = [{}, {"center": f32, "normal": f32, "radius": f32, "p": f32, "p0": f32, "p1": f32,
-                     "control_points": f32, "sweep": f32},
-                {"center": ld, "p": ld, "control_points": ld}, {"radius": f32, "p1": f32, "sweep": ld}]
+    variants = [
+        {},
+        {
+            "center": f32,
+            "normal": f32,
+            "radius": f32,
+            "p": f32,
+            "p0": f32,
+            "p1": f32,
+            "control_points": f32,
+            "sweep": f32,
+        },
+        {"center": ld, "p": ld, "control_points": ld},
+        {"radius": f32, "p1": f32, "sweep": ld},
+    ]
     scene, added = cd.Scene(), {}
     for i, s in enumerate(shapes):
         shape = as_dtype(s, variants[i % 4])
@@ -369,8 +418,9 @@ def test_shapes_come_back_with_the_dtypes_they_were_added_with():
             scene.nearest(cd.Circle([0, 0, 0], [0, 0, 1], 1.0))  # a query in between: arrays consolidated
     batch = cd.Circle(np.float32([[0, 0, 0], [1, 0, 0], [2, 0, 0]]), [0, 0, 1], np.float32([1, 2, 3]))
     scene.extend("b", batch)
-    added.update({f"b{i}": cd.Circle(np.float32([i, 0, 0]), np.float64([0, 0, 1]), np.float32(i + 1))
-                  for i in range(3)})
+    added.update(
+        {f"b{i}": cd.Circle(np.float32([i, 0, 0]), np.float64([0, 0, 1]), np.float32(i + 1)) for i in range(3)}
+    )
     assert {dt for s in added.values() for dt in dtypes_of(s).values()} == {np.dtype(f32), np.dtype(f64), np.dtype(ld)}
     assert any("sweep" not in s.to_arrays() for s in added.values())
     for copy in (scene, pickle.loads(pickle.dumps(scene))):
@@ -397,15 +447,22 @@ def test_queries_measure_shapes_as_added_in_any_mix_of_dtypes():
     query32 = as_dtype(ring, f32)
     f64 = {k: np.float64 for k in f32}
     # The float32 shapes are measured in float32 against a float32 query: not as float64 copies.
-    rounded = [i for i in range(len(shapes))
-               if i % 3 and cd.distance(query32, shapes[i]) != cd.distance(query32, as_dtype(shapes[i], f64))]
+    rounded = [
+        i
+        for i in range(len(shapes))
+        if i % 3 and cd.distance(query32, shapes[i]) != cd.distance(query32, as_dtype(shapes[i], f64))
+    ]
     assert rounded
     i = rounded[0]
     assert scene.distance_matrix([f"s{i}"], ["s0"])[0, 0] == cd.distance(shapes[i], shapes[0])
     names = [n for n, _ in scene.nearest(query32, len(shapes))]
     assert dict(scene.nearest(query32, len(shapes)))[f"s{i}"] == cd.distance(query32, shapes[i]) and f"s{i}" in names
-    pairs = [(f"s{a}", f"s{b}") for a in range(len(shapes)) for b in range(a + 1, len(shapes))
-             if cd.within(shapes[a], shapes[b], 0.3)]
+    pairs = [
+        (f"s{a}", f"s{b}")
+        for a in range(len(shapes))
+        for b in range(a + 1, len(shapes))
+        if cd.within(shapes[a], shapes[b], 0.3)
+    ]
     assert scene.pairs_within(0.3) == pairs
 
 
@@ -415,8 +472,10 @@ def test_a_pickle_of_float64_groups_without_dtypes_still_loads():
 
     scene = cd.Scene({"ring": cd.Circle([0, 0, 0], [0, 0, 1], 1.0, sweep=0.0), "dot": cd.Point([0, 0, 2])})
     state = scene.__getstate__()
-    state["groups"] = [((key[0], key[1]), kind, [np.asarray(f, np.float64) for f in fields], ids)
-                       for key, kind, fields, ids in state["groups"]]
+    state["groups"] = [
+        ((key[0], key[1]), kind, [np.asarray(f, np.float64) for f in fields], ids)
+        for key, kind, fields, ids in state["groups"]
+    ]
     old = cd.Scene.__new__(cd.Scene)
     old.__setstate__(pickle.loads(pickle.dumps(state)))
     assert old.names == ["ring", "dot"]
@@ -428,8 +487,10 @@ def _state(scene):
     """Everything a scene stores: names, groups (keys, kinds, each field's array with its dtype,
     item numbers) and each item's group and row."""
     state = scene.__getstate__()
-    groups = [(key, kind, [(f.dtype, f.shape, f.tobytes()) for f in fields], ids.tolist())
-              for key, kind, fields, ids in state["groups"]]
+    groups = [
+        (key, kind, [(f.dtype, f.shape, f.tobytes()) for f in fields], ids.tolist())
+        for key, kind, fields, ids in state["groups"]
+    ]
     return state["names"], groups, state["item_group"].tolist(), state["item_row"].tolist()
 
 
@@ -441,8 +502,11 @@ def test_a_scene_added_one_by_one_equals_the_scene_extended_by_batches():
     _, shapes = mixed_scene(43, n=120, box=5.0, kinds=("Disk", "Circle", "Segment", "Point", "Line"))
     _, curves = mixed_scene(44, n=12, box=5.0, kinds=("Bezier",))
     shapes += curves + [cd.Bezier(np.arange(6.0).reshape(2, 3) + i) for i in range(3)]  # another degree
-    dtypes = [{}, {"center": f32, "p": f32, "p0": f32, "origin": f32, "control_points": f32, "sweep": f32},
-              {"radius": ld, "p1": ld, "direction": ld}]
+    dtypes = [
+        {},
+        {"center": f32, "p": f32, "p0": f32, "origin": f32, "control_points": f32, "sweep": f32},
+        {"radius": ld, "p1": ld, "direction": ld},
+    ]
     shapes = [as_dtype(s, dtypes[(i // 5) % 3]) for i, s in enumerate(shapes)]
     runs = []  # [signature, [(name, shape), ...]]: consecutive shapes that one batch can hold
     for i, s in enumerate(shapes):
@@ -473,8 +537,10 @@ def test_a_scene_added_one_by_one_equals_the_scene_extended_by_batches():
             assert got.keys() == want.keys()
             assert all(got[k].dtype == want[k].dtype and np.array_equal(got[k], want[k]) for k in want)
     probe = cd.Circle([0.5, 0.2, 0.1], [0, 1, 1], 1.5)
-    answers = [(s.nearest(probe, 9), s.within(probe, 0.7), s.nearest("s7", 4), s.within("s3", 1.0))
-               for s in (one_by_one, batched, mixed)]
+    answers = [
+        (s.nearest(probe, 9), s.within(probe, 0.7), s.nearest("s7", 4), s.within("s3", 1.0))
+        for s in (one_by_one, batched, mixed)
+    ]
     assert answers[0] == answers[1] == answers[2]
     d = brute_distances(probe, shapes)
     assert answers[0][0] == [(f"s{i}", d[i]) for i in sorted(range(len(shapes)), key=lambda i: (d[i], i))[:9]]
@@ -499,8 +565,10 @@ def test_names_are_checked_as_before_in_batches():
         with pytest.raises(error, match=message):
             scene.extend(names, three)
         assert _state(scene) == before
+
     class Name(str):
         pass
+
     scene.extend([Name("e0"), "e1", Name("e2")], three)  # str subclasses are strings
     scene.extend("f", three)
     assert scene.names == ["d0", "d1", "d2", "e0", "e1", "e2", "f0", "f1", "f2"]
@@ -558,13 +626,14 @@ def test_a_scene_shared_by_threads_answers_as_serial_queries_do(seed):
             except BaseException as error:  # noqa: BLE001 (reported by the main thread)
                 failures.append(error)
                 done.set()
+
         return run
 
     def adder():
         at = first
         while at < n:
             if at % 50 == 0 and at + 5 <= n:
-                scene.extend(names[at:at + 5], cd.Point(centers[at:at + 5], sweep=sweeps[at:at + 5]))
+                scene.extend(names[at : at + 5], cd.Point(centers[at : at + 5], sweep=sweeps[at : at + 5]))
                 at += 5
             else:
                 scene.add(names[at], cd.Point(centers[at], sweep=sweeps[at]))
@@ -661,9 +730,21 @@ def _tampered(state, how):
     return state
 
 
-TAMPERED = ["duplicated_ids", "swapped_ids", "id_out_of_range", "row_out_of_range", "group_out_of_range",
-            "short_item_column", "duplicated_name", "name_not_a_string", "fewer_rows_than_ids", "missing_field",
-            "unknown_kind", "negative_radius", "not_a_dict"]
+TAMPERED = [
+    "duplicated_ids",
+    "swapped_ids",
+    "id_out_of_range",
+    "row_out_of_range",
+    "group_out_of_range",
+    "short_item_column",
+    "duplicated_name",
+    "name_not_a_string",
+    "fewer_rows_than_ids",
+    "missing_field",
+    "unknown_kind",
+    "negative_radius",
+    "not_a_dict",
+]
 
 
 @pytest.mark.parametrize("how", TAMPERED)

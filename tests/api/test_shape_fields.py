@@ -98,11 +98,15 @@ def test_command_line_describes_and_draws_every_kind(tmp_path, capsys):
     for kind, fields in TABLE.items():
         # "line and ray (origin, direction)": the kind, then its group's fields
         assert re.search(rf"\b{kind.lower()}\b[a-z ]*\({', '.join(n for n, _ in fields)}\b", kinds), (kind, kinds)
-    shapes = [{"name": kind.lower(), "kind": kind.lower(), **{n: _value(r, i) for i, (n, r) in enumerate(f)}}
-              for kind, f in TABLE.items()]
+    shapes = [
+        {"name": kind.lower(), "kind": kind.lower(), **{n: _value(r, i) for i, (n, r) in enumerate(f)}}
+        for kind, f in TABLE.items()
+    ]
     queries = [{"a": s["name"], "b": "circle", "effects": ["closest_points"]} for s in shapes if s["name"] != "circle"]
     path = tmp_path / "every_kind.json"
-    path.write_text(json.dumps({"format": "circledist-scene", "version": sf.VERSION, "shapes": shapes, "queries": queries}))
+    path.write_text(
+        json.dumps({"format": "circledist-scene", "version": sf.VERSION, "shapes": shapes, "queries": queries})
+    )
     answers = tmp_path / "answers.json"
     argv = [str(path), "--json", str(answers)]
     if importlib.util.find_spec("matplotlib") is not None:  # the picture draws every kind too
@@ -126,8 +130,9 @@ def test_the_control_point_limit_is_the_modules():
         cd.Bezier(np.zeros((most + 1, 3)))
     schema = json.loads(importlib.resources.files("circledist").joinpath(sf.SCHEMA_RESOURCE).read_text())
     sets = [node for node in _nodes(schema) if "maxItems" in node and "2 to" in node.get("title", "")]
-    assert len(sets) == 2 and all(node["maxItems"] == most and f"2 to {most} control points" in node["title"]
-                                  for node in sets)
+    assert len(sets) == 2 and all(
+        node["maxItems"] == most and f"2 to {most} control points" in node["title"] for node in sets
+    )
     assert f"control_points: 2 to {most} points" in cli.FORMAT_HELP
 
 

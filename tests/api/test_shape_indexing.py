@@ -9,8 +9,12 @@ import circledist as cd
 
 def rings(n=6, dtype=float):
     rng = np.random.default_rng(3)
-    return cd.Circle(rng.normal(size=(n, 3)).astype(dtype), np.array([0.2, 0.3, 1.0], dtype=dtype),
-                     rng.uniform(0.5, 2, n).astype(dtype), sweep=np.full(n, 0.125, dtype=dtype))
+    return cd.Circle(
+        rng.normal(size=(n, 3)).astype(dtype),
+        np.array([0.2, 0.3, 1.0], dtype=dtype),
+        rng.uniform(0.5, 2, n).astype(dtype),
+        sweep=np.full(n, 0.125, dtype=dtype),
+    )
 
 
 def lines(n=6):
@@ -18,8 +22,21 @@ def lines(n=6):
     return cd.Line(rng.normal(size=(n, 3)), rng.normal(size=(n, 3)))
 
 
-KEYS = [0, -1, 3, slice(1, 5), slice(None, None, -2), Ellipsis, (Ellipsis,), [4, 0, 4],
-        np.array([True, False, True, True, False, False]), np.arange(6) % 2 == 0, np.int64(2), [], slice(7, 9)]
+KEYS = [
+    0,
+    -1,
+    3,
+    slice(1, 5),
+    slice(None, None, -2),
+    Ellipsis,
+    (Ellipsis,),
+    [4, 0, 4],
+    np.array([True, False, True, True, False, False]),
+    np.arange(6) % 2 == 0,
+    np.int64(2),
+    [],
+    slice(7, 9),
+]
 
 
 @pytest.mark.parametrize("key", KEYS, ids=repr)
@@ -66,8 +83,9 @@ def test_len_iteration_and_truth():
     assert len(batch) == 6
     items = list(batch)
     assert len(items) == 6 and all(s.batch_shape == () for s in items)
-    np.testing.assert_array_equal([cd.distance(s, cd.Point([1, 2, 3])) for s in items],
-                                  cd.distance(batch, cd.Point([1, 2, 3])))
+    np.testing.assert_array_equal(
+        [cd.distance(s, cd.Point([1, 2, 3])) for s in items], cd.distance(batch, cd.Point([1, 2, 3]))
+    )
     single = cd.Point([1, 2, 3])
     assert bool(single) and bool(batch)
     with pytest.raises(TypeError, match="single Point"):
@@ -76,18 +94,22 @@ def test_len_iteration_and_truth():
         iter(single)
 
 
-@pytest.mark.parametrize("key, error, match", [
-    ((0, 0), IndexError, "too many indices"),
-    (6, IndexError, "out of bounds"),
-    (None, TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
-    ((slice(None), None), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
-    ((None, 0), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
-    ((Ellipsis, np.newaxis), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
-    (True, TypeError, "index a batch"),
-    (1.5, TypeError, "index a batch"),
-    ((Ellipsis, Ellipsis), IndexError, "single ellipsis"),
-    (np.array([0.5]), TypeError, "index a batch"),
-], ids=repr)
+@pytest.mark.parametrize(
+    "key, error, match",
+    [
+        ((0, 0), IndexError, "too many indices"),
+        (6, IndexError, "out of bounds"),
+        (None, TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+        ((slice(None), None), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+        ((None, 0), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+        ((Ellipsis, np.newaxis), TypeError, r"None \(numpy.newaxis\) is not supported in a batch index"),
+        (True, TypeError, "index a batch"),
+        (1.5, TypeError, "index a batch"),
+        ((Ellipsis, Ellipsis), IndexError, "single ellipsis"),
+        (np.array([0.5]), TypeError, "index a batch"),
+    ],
+    ids=repr,
+)
 def test_bad_indices(key, error, match):
     with pytest.raises(error, match=match):
         rings()[key]
@@ -111,9 +133,13 @@ def test_arc_batches_index_as_the_batch_with_fields_broadcast():
     index answers with the bits the whole batch gives it, dtypes kept."""
     rng = np.random.default_rng(8)
     for dtype in (np.float64, np.float32, np.longdouble):
-        arcs = cd.Arc(rng.normal(size=(4, 3)).astype(dtype), np.array([0.2, 0.3, 1.0], dtype=dtype),
-                      rng.uniform(0.5, 2, 4).astype(dtype), np.array([1.0, 0.0, 0.0], dtype=dtype),
-                      rng.uniform(0.5, 6, (3, 1)).astype(dtype))
+        arcs = cd.Arc(
+            rng.normal(size=(4, 3)).astype(dtype),
+            np.array([0.2, 0.3, 1.0], dtype=dtype),
+            rng.uniform(0.5, 2, 4).astype(dtype),
+            np.array([1.0, 0.0, 0.0], dtype=dtype),
+            rng.uniform(0.5, 6, (3, 1)).astype(dtype),
+        )
         assert arcs.batch_shape == (3, 4)
         target = cd.Segment([0, 0, 0], [1, 2, 0.5])
         whole = cd.distance(arcs, target)
@@ -127,7 +153,7 @@ def test_arc_batches_index_as_the_batch_with_fields_broadcast():
 # bounds of every batch: NumPy's own conversion raised OverflowError ("Python int too large to
 # convert to C long") or called it no integer.
 @pytest.mark.parametrize("form", ["alone", "tuple", "with ellipsis"])
-@pytest.mark.parametrize("index", [2**63, 2**64 - 1, "uint64", 2**64, 10**30, -2**63 - 1])
+@pytest.mark.parametrize("index", [2**63, 2**64 - 1, "uint64", 2**64, 10**30, -(2**63) - 1])
 @pytest.mark.parametrize("rows", [0, 3])
 def test_batch_index_beyond_int64_is_out_of_bounds(index, form, rows):
     index = np.uint64(2**64 - 1) if index == "uint64" else index

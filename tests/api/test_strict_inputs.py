@@ -4,7 +4,6 @@ accepted, errors are clear, Scene bounds stay conservative at every magnitude, a
 bad files with its one-line error. Each crash-prone call runs in a child process so that a
 regression fails the test instead of taking pytest down."""
 
-import json
 import math
 import re
 import subprocess
@@ -29,12 +28,24 @@ KINDS = {
 
 
 @pytest.mark.parametrize("kind", sorted(KINDS))
-@pytest.mark.parametrize("use", ["repr(p)", "p.kind", "p.batch_shape", "p.sweep", "cd.distance(p, cd.Point([0, 0, 5]))",
-                                 "cd.closest_points(cd.Point([0, 0, 5]), p)", "cd.within(p, p, 1.0)",
-                                 "cd.intersects(p, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))"])
+@pytest.mark.parametrize(
+    "use",
+    [
+        "repr(p)",
+        "p.kind",
+        "p.batch_shape",
+        "p.sweep",
+        "cd.distance(p, cd.Point([0, 0, 5]))",
+        "cd.closest_points(cd.Point([0, 0, 5]), p)",
+        "cd.within(p, p, 1.0)",
+        "cd.intersects(p, cd.Circle([0, 0, 0], [0, 0, 1], 1.0))",
+    ],
+)
 def test_shape_without_constructor_is_a_type_error(kind, use):
-    code = (f"import circledist as cd\np = cd.{kind}.__new__(cd.{kind})\n"
-            f"try:\n    {use}\nexcept TypeError as e:\n    print('TypeError', e)\n")
+    code = (
+        f"import circledist as cd\np = cd.{kind}.__new__(cd.{kind})\n"
+        f"try:\n    {use}\nexcept TypeError as e:\n    print('TypeError', e)\n"
+    )
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.startswith("TypeError") and "not initialized" in proc.stdout, proc.stdout
@@ -48,8 +59,11 @@ def test_fields_are_read_only_copies(kind):
     for a in args:
         a[...] = 0.0 if a.ndim == 0 else 7.0  # the caller's arrays change ...
     assert cd.distance(shape, PROBE) == before  # ... the shape does not
-    for name in ("sweep",) + tuple(n for n in ("p", "origin", "direction", "p0", "p1", "center", "normal", "radius",
-                                                "control_points") if hasattr(shape, n)):
+    for name in ("sweep",) + tuple(
+        n
+        for n in ("p", "origin", "direction", "p0", "p1", "center", "normal", "radius", "control_points")
+        if hasattr(shape, n)
+    ):
         field = getattr(shape, name)
         with pytest.raises(ValueError, match="read-only"):
             field[...] = 0
@@ -95,10 +109,22 @@ def test_batch_fields_do_not_alias():
     assert cd.distance(c, cd.Point([0, 0, 2])) == pytest.approx(math.sqrt(5), rel=1e-15)
 
 
-@pytest.mark.parametrize("value", [
-    [0, 0, 3 + 4j], np.array([1, 2, 3], dtype=complex), np.array([1, 2, 3], dtype="datetime64[s]"),
-    np.array([1, 2, 3], dtype="timedelta64[s]"), ["1", "2", "3"], np.array(["1", "2", "3"]), [b"1", b"2", b"3"],
-    [None, None, None], [1.0, None, 2.0], [True, False, True], [1.0, "x", 2.0]])
+@pytest.mark.parametrize(
+    "value",
+    [
+        [0, 0, 3 + 4j],
+        np.array([1, 2, 3], dtype=complex),
+        np.array([1, 2, 3], dtype="datetime64[s]"),
+        np.array([1, 2, 3], dtype="timedelta64[s]"),
+        ["1", "2", "3"],
+        np.array(["1", "2", "3"]),
+        [b"1", b"2", b"3"],
+        [None, None, None],
+        [1.0, None, 2.0],
+        [True, False, True],
+        [1.0, "x", 2.0],
+    ],
+)
 def test_only_real_numbers(value):
     with pytest.raises(ValueError, match="Point: p must be a real number array"):
         cd.Point(value)
@@ -110,8 +136,13 @@ def test_only_real_scalars(value):
         cd.Circle([0, 0, 0], [0, 0, 1], value)
 
 
-ROLE_VALUES = {"vector": [1.0, 2.0, 3.0], "direction": [0.0, 0.0, 1.0], "length": 1.0, "angle": 1.0,
-               "control_points": [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.0]]}
+ROLE_VALUES = {
+    "vector": [1.0, 2.0, 3.0],
+    "direction": [0.0, 0.0, 1.0],
+    "length": 1.0,
+    "angle": 1.0,
+    "control_points": [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.0]],
+}
 FIELDS = [(kind, i) for kind, fields in cd._core._shape_fields().items() for i in range(len(fields))]
 
 
@@ -126,8 +157,13 @@ def test_a_field_too_large_to_copy_is_a_memory_error_naming_it(kind, field, copy
     name = fields[field][0]
     one = np.asarray(values[field], dtype=float)
     values[field] = np.broadcast_to(one, (10**15,) + one.shape)
-    with pytest.raises(MemoryError, match=(rf"{kind}: {name} cannot be copied: out of memory "
-                                           rf"\(shape \(1000000000000000,.*\), [0-9.e+]+ bytes as a contiguous float64 array")):
+    with pytest.raises(
+        MemoryError,
+        match=(
+            rf"{kind}: {name} cannot be copied: out of memory "
+            rf"\(shape \(1000000000000000,.*\), [0-9.e+]+ bytes as a contiguous float64 array"
+        ),
+    ):
         getattr(cd, kind)(*values, copy=copy)
 
 
@@ -141,6 +177,7 @@ def test_limits_and_sweeps_too_large_to_copy_are_a_memory_error():
 
 def test_real_objects_are_accepted():
     from fractions import Fraction
+
     assert cd.distance(cd.Point([Fraction(1, 2), 0, 0]), cd.Point([0, 0, 0])) == 0.5
     assert cd.distance(cd.Point(np.array([1, 2, 2], dtype=np.int8)), [0, 0, 0]) == 3.0
 
@@ -181,6 +218,7 @@ def _scene():
 def _dask_pairs(**options):
     pytest.importorskip("dask.array")
     import circledist.dask as dask_module
+
     return dask_module.pairs_within(_P, _RING, 1.0, **options)
 
 
@@ -210,7 +248,7 @@ def test_integer_arguments_refuse_bools_and_non_integers(entry, value):
 
 
 @pytest.mark.parametrize("entry", sorted(INTEGER_ARGUMENTS))
-@pytest.mark.parametrize("value", [2**63, 2**64 + 1, 10**30, -2**63 - 1, -10**400])
+@pytest.mark.parametrize("value", [2**63, 2**64 + 1, 10**30, -(2**63) - 1, -(10**400)])
 def test_integer_arguments_beyond_64_bits_are_a_value_error(entry, value):
     name, call = INTEGER_ARGUMENTS[entry]
     bound = "at most 2\\*\\*63 - 1" if value > 0 else "at least -2\\*\\*63"
@@ -241,6 +279,7 @@ DISTANCE_LIMITS = {
 def _dask_pairs_d(d):
     pytest.importorskip("dask.array")
     import circledist.dask as dask_module
+
     return dask_module.pairs_within(_P, _RING, d)
 
 
@@ -249,7 +288,7 @@ def _owner(entry):
 
 
 @pytest.mark.parametrize("entry", sorted(DISTANCE_LIMITS))
-@pytest.mark.parametrize("d", [10**400, -10**400])
+@pytest.mark.parametrize("d", [10**400, -(10**400)])
 def test_distance_limits_beyond_float64_are_a_value_error(entry, d):
     with pytest.raises(ValueError, match=f"{_owner(entry)}: d must be a .*number >= 0, got an integer of 401 digits"):
         DISTANCE_LIMITS[entry](d)
@@ -272,8 +311,11 @@ def test_distance_limits_refuse_inf_nan_and_negatives(entry, d):
 @pytest.mark.parametrize("far", [1e155, 1e200, 1e300, 1.7e308, -1e300])
 def test_scene_bounds_stay_conservative_with_far_shapes(far):
     """One far shape must not overflow the hierarchy's bounds into culling the near ones."""
-    near = {"seg": cd.Segment([1, 0, 0], [1, 1, 0]), "ring": cd.Circle([0, 3, 0], [0, 0, 1], 1.0),
-            "coin": cd.Disk([0, 0, -2], [1, 1, 1], 0.5)}
+    near = {
+        "seg": cd.Segment([1, 0, 0], [1, 1, 0]),
+        "ring": cd.Circle([0, 3, 0], [0, 0, 1], 1.0),
+        "coin": cd.Disk([0, 0, -2], [1, 1, 1], 0.5),
+    }
     shapes = dict(near)
     shapes["far"] = cd.Point([far, 0, 0])
     shapes["far ring"] = cd.Circle([far, far, 0], [0, 0, 1], abs(far) / 10)
@@ -287,12 +329,18 @@ def test_scene_bounds_stay_conservative_with_far_shapes(far):
     assert ("seg", "ring") in pairs and ("seg", "coin") in pairs
 
 
-@pytest.mark.parametrize("text,message", [
-    ('{"format": "circledist-scene", "version": 1, "shapes": [{"name": "a", "kind": "circle", "center": [0, 0, 0], '
-     '"normal": [0, 0, 1], "radius": 1' + "0" * 400 + "}]}",
-     "$.shapes[0].radius: expected a finite number (within a double's range), got an integer of 401 digits"),
-    ("[" * 100000 + "]" * 100000, "nested too deeply"),
-])
+@pytest.mark.parametrize(
+    "text,message",
+    [
+        (
+            '{"format": "circledist-scene", "version": 1, "shapes": [{"name": "a", "kind": "circle", '
+            '"center": [0, 0, 0], '
+            '"normal": [0, 0, 1], "radius": 1' + "0" * 400 + "}]}",
+            "$.shapes[0].radius: expected a finite number (within a double's range), got an integer of 401 digits",
+        ),
+        ("[" * 100000 + "]" * 100000, "nested too deeply"),
+    ],
+)
 def test_cli_bad_files_give_the_one_line_error(tmp_path, capsys, text, message):
     path = tmp_path / "scene.json"
     path.write_text(text)
@@ -315,11 +363,13 @@ def test_effects_at_extreme_scales(scale, precision):
     """within / intersects / distance_if_within agree with the distance at every magnitude (a scale
     of inf from an overflowed |c_a - c_b| made every pair 'within')."""
     q = cd.Point([0, 0, 0])
-    shapes = [(cd.Point([3 * scale, 4 * scale, 0]), 5 * scale),
-              (cd.Circle([0, 0, 6 * scale], [0, 0, 1], scale), math.sqrt(37) * scale),
-              (cd.Line([0, 2 * scale, 0], [1e-200, 0, 1]), 2 * scale),
-              (cd.Segment([2 * scale, -scale, 0], [2 * scale, scale, 0]), 2 * scale),
-              (cd.Disk([0, 0, 2 * scale], [0, 1e200, 1e200], scale), math.sqrt(2 + (math.sqrt(2) - 1) ** 2) * scale)]
+    shapes = [
+        (cd.Point([3 * scale, 4 * scale, 0]), 5 * scale),
+        (cd.Circle([0, 0, 6 * scale], [0, 0, 1], scale), math.sqrt(37) * scale),
+        (cd.Line([0, 2 * scale, 0], [1e-200, 0, 1]), 2 * scale),
+        (cd.Segment([2 * scale, -scale, 0], [2 * scale, scale, 0]), 2 * scale),
+        (cd.Disk([0, 0, 2 * scale], [0, 1e200, 1e200], scale), math.sqrt(2 + (math.sqrt(2) - 1) ** 2) * scale),
+    ]
     for shape, truth in shapes:
         for a, b in ((q, shape), (shape, q)):
             assert cd.distance(a, b, precision=precision) == pytest.approx(truth, rel=1e-14)
@@ -365,7 +415,10 @@ def test_float32_answers_beyond_float32_range_are_an_overflow_error():
     with pytest.raises(OverflowError, match=r"param_a is beyond float32's range"):
         cd.closest_points(cd.Line([3e38, 0, 0], [1e-30, 0, 0]), cd.Point([0, 1, 0]), precision="float32")
     # Answers inside the range are unaffected, and float32 stays float32.
-    r = cd.closest_points(cd.Point(np.float32([1e38, 0, 0])), cd.Circle(np.float32([3.1e38, 0, 0]), np.float32([0, 0, 1]), np.float32(2.1e38)))
+    r = cd.closest_points(
+        cd.Point(np.float32([1e38, 0, 0])),
+        cd.Circle(np.float32([3.1e38, 0, 0]), np.float32([0, 0, 1]), np.float32(2.1e38)),
+    )
     assert r.point_b.dtype == np.float32 and np.all(np.isfinite(r.point_b))
     # distance_if_within's inf means "beyond the limit", which a distance past float32 always is.
     assert cd.distance_if_within(cd.Point([-3e38, 0, 0]), cd.Point([3e38, 0, 0]), 1.0, precision="float32") == math.inf

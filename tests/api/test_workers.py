@@ -21,8 +21,18 @@ WORKERS = (2, 3, -1)
 
 def _answers(a, b, d, **opts):
     r = cd.closest_points(a, b, **opts)
-    return [cd.distance(a, b, **opts), cd.within(a, b, d, **opts), cd.distance_if_within(a, b, d, **opts),
-            cd.intersects(a, b, **opts), r.distance, r.point_a, r.point_b, r.param_a, r.param_b, r.unique]
+    return [
+        cd.distance(a, b, **opts),
+        cd.within(a, b, d, **opts),
+        cd.distance_if_within(a, b, d, **opts),
+        cd.intersects(a, b, **opts),
+        r.distance,
+        r.point_a,
+        r.point_b,
+        r.param_a,
+        r.param_b,
+        r.unique,
+    ]
 
 
 @pytest.mark.slow
@@ -76,9 +86,13 @@ def test_counters_add_up_across_threads():
 def test_bad_worker_count_is_a_value_error(workers):
     p = cd.Point(np.zeros((10, 3)))
     ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
-    for call in (lambda: cd.distance(p, ring, workers=workers), lambda: cd.closest_points(p, ring, workers=workers),
-                 lambda: cd.within(p, ring, 1.0, workers=workers), lambda: cd.intersects(p, ring, workers=workers),
-                 lambda: cd.distance_if_within(p, ring, 1.0, workers=workers)):
+    for call in (
+        lambda: cd.distance(p, ring, workers=workers),
+        lambda: cd.closest_points(p, ring, workers=workers),
+        lambda: cd.within(p, ring, 1.0, workers=workers),
+        lambda: cd.intersects(p, ring, workers=workers),
+        lambda: cd.distance_if_within(p, ring, 1.0, workers=workers),
+    ):
         with pytest.raises(ValueError, match=f"workers must be a positive integer or -1.*got {workers}"):
             call()
 
@@ -119,11 +133,15 @@ def test_ctrl_c_stops_a_long_batch(workers):
 # each is seconds of work here at these sizes, most of it a hierarchy's build or passes over the
 # candidates, which hear Ctrl-C as the batches do.
 LONG_PHASES = {
-    "scene_first_query": ("scene = cd.Scene(); scene.extend('p', cd.Point(rng.uniform(0, 100, (N, 3))))",
-                          "scene.nearest([0.0, 0.0, 0.0])"),
-    "scene_pairs_within": ("scene = cd.Scene(); scene.extend('p', cd.Point(rng.uniform(0, 100, (N, 3))))\n"
-                           "scene.nearest([0.0, 0.0, 0.0]); scene.add('x', cd.Point([0.0, 0.0, 0.0]))",
-                           "scene.pairs_within(0.05)"),
+    "scene_first_query": (
+        "scene = cd.Scene(); scene.extend('p', cd.Point(rng.uniform(0, 100, (N, 3))))",
+        "scene.nearest([0.0, 0.0, 0.0])",
+    ),
+    "scene_pairs_within": (
+        "scene = cd.Scene(); scene.extend('p', cd.Point(rng.uniform(0, 100, (N, 3))))\n"
+        "scene.nearest([0.0, 0.0, 0.0]); scene.add('x', cd.Point([0.0, 0.0, 0.0]))",
+        "scene.pairs_within(0.05)",
+    ),
     "pairs_within": ("points = cd.Point(rng.uniform(0, 100, (N, 3)))", "cd.pairs_within(points, None, 0.05)"),
     "nearest": ("points = cd.Point(rng.uniform(0, 100, (N, 3)))", "cd.nearest(points, points, k=2)"),
 }
@@ -138,14 +156,17 @@ def test_ctrl_c_stops_the_broadphase_phases(phase):
     Scene.pairs_within, and pairs_within / nearest over a large set: KeyboardInterrupt within
     half a second; the interrupted scene then answers as before."""
     setup, call = LONG_PHASES[phase]
-    script = textwrap.dedent("""
+    script = (
+        textwrap.dedent("""
         import os, signal, threading, time
         import numpy as np
         import circledist as cd
         signal.signal(signal.SIGINT, signal.default_int_handler)  # as in the test above
         rng = np.random.default_rng(2)
         N = 1_500_000
-    """) + setup + textwrap.dedent(f"""
+    """)
+        + setup
+        + textwrap.dedent(f"""
         threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
         start = time.perf_counter()
         try:
@@ -159,6 +180,7 @@ def test_ctrl_c_stops_the_broadphase_phases(phase):
         else:
             print(True)
     """)
+    )
     out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
     assert out.returncode == 0, out.stderr
     outcome, seconds, after = out.stdout.split()

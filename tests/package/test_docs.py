@@ -18,8 +18,19 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs"
 NEEDED = ("sphinx", "numpydoc", "myst_parser")
 PICTURES = (DOCS / "derivations" / "line_disk.png").exists()  # False in the sdist
-DERIVATIONS = ("line_circle", "line_disk", "circle_circle", "circle_disk", "disk_disk", "bezier", "bezier_linear",
-               "bezier_bezier", "arc", "annulus", "references")
+DERIVATIONS = (
+    "line_circle",
+    "line_disk",
+    "circle_circle",
+    "circle_disk",
+    "disk_disk",
+    "bezier",
+    "bezier_linear",
+    "bezier_bezier",
+    "arc",
+    "annulus",
+    "references",
+)
 
 
 def markdown_pages():
@@ -44,8 +55,12 @@ def html(tmp_path_factory):
     out = tmp_path_factory.mktemp("docs")
     # The subprocess imports the circledist this test imports (PYTHONPATH as here).
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
-    run = subprocess.run([sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", "-b", "html",
-                          str(DOCS), str(out)], capture_output=True, text=True, env=env)
+    run = subprocess.run(
+        [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", "-b", "html", str(DOCS), str(out)],
+        capture_output=True,
+        text=True,
+        env=env,
+    )
     assert run.returncode == 0, f"the docs build failed or warned:\n{run.stdout}{run.stderr}"
     return out
 
@@ -126,8 +141,9 @@ def test_every_table_renders(page):
             while i < len(lines) and row(lines[i]):
                 i += 1
             table = lines[start:i]
-            assert len(table) >= 2 and delimiter.match(table[1].strip()), \
-                f"{page_id(page)} line {start + 1}: a table without a delimiter row: {table[0][:80]}"
+            assert len(table) >= 2 and delimiter.match(
+                table[1].strip()
+            ), f"{page_id(page)} line {start + 1}: a table without a delimiter row: {table[0][:80]}"
             assert cells(table[1]) == cells(table[0]), f"{page_id(page)} line {start + 1}: delimiter cells"
         i += 1
 

@@ -44,7 +44,7 @@ def signature_parameters(obj):
         return [name for name in parameters if name != "self"]
     except ValueError:  # a pybind11 function: read its signature line
         line = target.__doc__.splitlines()[0]
-        inside = line[line.index("(") + 1:line.rindex(") ->")]
+        inside = line[line.index("(") + 1 : line.rindex(") ->")]
         names, depth, start = [], 0, 0
         for i, char in enumerate(inside + ","):
             depth += char in "[(" and 1 or char in "])" and -1 or 0
@@ -58,15 +58,27 @@ def signature_parameters(obj):
 
 def public_methods(cls):
     """Methods and properties defined on cls itself whose names do not start with '_'."""
-    return [name for name, value in vars(cls).items() if not name.startswith("_") and
-            (callable(value) or isinstance(value, (property, classmethod)))]
+    return [
+        name
+        for name, value in vars(cls).items()
+        if not name.startswith("_") and (callable(value) or isinstance(value, (property, classmethod)))
+    ]
 
 
 def test_every_public_object_is_listed():
     """The test below covers every object of __all__: a new name must come with help."""
-    assert set(PUBLIC) == set(SHAPE_CLASSES) | set(QUERIES) | {"Shape", "ClosestPoints", "Scene", "stats",
-                                                                  "reset_stats", "SceneFileError", "read_scene",
-                                                                  "write_scene", "pairs_within", "nearest"}
+    assert set(PUBLIC) == set(SHAPE_CLASSES) | set(QUERIES) | {
+        "Shape",
+        "ClosestPoints",
+        "Scene",
+        "stats",
+        "reset_stats",
+        "SceneFileError",
+        "read_scene",
+        "write_scene",
+        "pairs_within",
+        "nearest",
+    }
 
 
 @pytest.mark.parametrize("name", PUBLIC)

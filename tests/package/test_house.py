@@ -24,8 +24,11 @@ SOURCES = ("*.py", "*.hpp", "*.cpp", "*.h", "*.sh", "*.cmake", "CMakeLists.txt",
 
 
 def test_no_source_file_over_a_thousand_lines():
-    long = {str(p.relative_to(ROOT)): n for p in tracked(*SOURCES)
-            if p.name != "CHANGELOG.md" and (n := p.read_text(errors="replace").count("\n")) > 1000}
+    long = {
+        str(p.relative_to(ROOT)): n
+        for p in tracked(*SOURCES)
+        if p.name != "CHANGELOG.md" and (n := p.read_text(errors="replace").count("\n")) > 1000
+    }
     assert not long, f"split these files (at most 1,000 lines each): {long}"
 
 
@@ -68,8 +71,9 @@ def test_pair_map_names_every_pair_and_its_files():
         for path in paths:
             assert (ROOT / path).is_file(), f"docs/design/pairs.md, {cells[0]}: no file {path}"
         header = Path(paths[0])
-        assert header.parent.as_posix() == "cpp/include/circledist" and tuple(sorted(header.stem.split("_"))) == pair, \
-            f"{cells[0]}: the header is named for the pair ({paths[0]})"
+        assert (
+            header.parent.as_posix() == "cpp/include/circledist" and tuple(sorted(header.stem.split("_"))) == pair
+        ), f"{cells[0]}: the header is named for the pair ({paths[0]})"
     answered = {tuple(sorted(FAMILY.get(k.lower(), k.lower()) for k in p)) for p in cd._core._query_kinds()}
     missing = answered - set(named)
     assert not missing, f"pairs the module answers that docs/design/pairs.md does not map: {sorted(missing)}"

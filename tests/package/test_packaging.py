@@ -28,18 +28,32 @@ def sdist_names(tmp_path_factory):
 
 
 def test_sdist_holds_the_sources(sdist_names):
-    for needed in ("pyproject.toml", "CMakeLists.txt", "LICENSE", "README.md", "src/bindings/module.cpp",
-                   "src/kernels/pair_unit.cpp", "cpp/include/circledist/circledist.hpp",
-                   "cpp/cmake/circledistConfig.cmake", "python/circledist/__init__.py",
-                   "tests/conftest.py", "circledist_cases/__init__.py", "circledist_cases/scenes.py",
-                   "docs/derivations/circle_disk.md"):
+    for needed in (
+        "pyproject.toml",
+        "CMakeLists.txt",
+        "LICENSE",
+        "README.md",
+        "src/bindings/module.cpp",
+        "src/kernels/pair_unit.cpp",
+        "cpp/include/circledist/circledist.hpp",
+        "cpp/cmake/circledistConfig.cmake",
+        "python/circledist/__init__.py",
+        "tests/conftest.py",
+        "circledist_cases/__init__.py",
+        "circledist_cases/scenes.py",
+        "docs/derivations/circle_disk.md",
+    ):
         assert needed in sdist_names, needed
 
 
 def test_sdist_holds_nothing_else(sdist_names):
-    unwanted = [n for n in sdist_names
-                if n.startswith((".ci/", "bench/", "build/", ".venv/", "dist/"))
-                or n.endswith((".so", ".o", ".pyc", ".png", ".json")) and not n.startswith("python/")]
+    unwanted = [
+        n
+        for n in sdist_names
+        if n.startswith((".ci/", "bench/", "build/", ".venv/", "dist/"))
+        or n.endswith((".so", ".o", ".pyc", ".png", ".json"))
+        and not n.startswith("python/")
+    ]
     assert not unwanted, unwanted[:10]
 
 
@@ -49,8 +63,11 @@ def test_installed_package_has_no_binding_sources():
 
 
 def test_compiled_module_is_at_most_6_mb():
-    module = [p for p in resources.files("circledist").iterdir()
-              if p.name.startswith("_core.") and p.name.endswith((".so", ".pyd"))]
+    module = [
+        p
+        for p in resources.files("circledist").iterdir()
+        if p.name.startswith("_core.") and p.name.endswith((".so", ".pyd"))
+    ]
     assert len(module) == 1, module
     size = os.path.getsize(str(module[0]))
     assert size <= 6 * 1024 * 1024, f"{module[0].name}: {size / 2**20:.1f} MB"
@@ -59,6 +76,7 @@ def test_compiled_module_is_at_most_6_mb():
 def _local_includes(path, seen):
     """The files of src/ and cpp/include/ that `path` includes, transitively."""
     import re
+
     if path in seen:
         return seen
     seen.add(path)
@@ -109,6 +127,7 @@ def test_binding_sources_include_before_code():
     """Every file of src/ names its includes at its top, before any code: no header is included
     half-way down a translation unit (each binding topic is a unit of its own)."""
     import re
+
     src = os.path.join(ROOT, "src")
     if not os.path.isdir(src):
         pytest.skip("no sources here")
@@ -129,12 +148,19 @@ def test_installed_distribution_holds_the_package_only():
     """What the wheel installed (its RECORD): the compiled module, the Python files, the stub, the
     demo scene; no sources, no build outputs."""
     import importlib.metadata
+
     files = [str(f) for f in importlib.metadata.files("circledist") or []]
     if not files:
         pytest.skip("circledist is not installed from a wheel here")
     package = [f for f in files if f.startswith("circledist/")]
-    for needed in ("circledist/__init__.py", "circledist/scene.py", "circledist/cli.py", "circledist/py.typed",
-                   "circledist/_core.pyi", "circledist/scenes/demo.json"):
+    for needed in (
+        "circledist/__init__.py",
+        "circledist/scene.py",
+        "circledist/cli.py",
+        "circledist/py.typed",
+        "circledist/_core.pyi",
+        "circledist/scenes/demo.json",
+    ):
         assert needed in package, needed
     assert [f for f in package if f.startswith("circledist/_core.") and f.endswith((".so", ".pyd"))]
     assert not [f for f in files if f.endswith((".cpp", ".hpp", ".h", ".o", ".cmake"))], files
@@ -147,6 +173,7 @@ def test_wheel_alone_has_no_compiler_and_no_build_requirements():
     Eigen would: this checks that it does (else its passing would prove nothing)."""
     import importlib.util
     import shutil
+
     assert not [c for c in ("c++", "g++", "gcc", "cc", "clang++", "cmake") if shutil.which(c)]
     for module in ("pybind11", "cmeel", "scikit_build_core"):
         assert importlib.util.find_spec(module) is None, module

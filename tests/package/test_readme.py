@@ -31,9 +31,17 @@ def test_pair_table_offers_every_registered_pair():
     other: its rows and columns are the families (lines, rays and segments are one)."""
     import circledist
 
-    family = {"Point": "point", "Line": "line, ray, segment", "Ray": "line, ray, segment",
-              "Segment": "line, ray, segment", "Circle": "circle", "Disk": "disk", "Arc": "arc",
-              "Annulus": "annulus", "Bezier": "Bézier curve"}
+    family = {
+        "Point": "point",
+        "Line": "line, ray, segment",
+        "Ray": "line, ray, segment",
+        "Segment": "line, ray, segment",
+        "Circle": "circle",
+        "Disk": "disk",
+        "Arc": "arc",
+        "Annulus": "annulus",
+        "Bezier": "Bézier curve",
+    }
     section = README.split("## What it answers", 1)[1].split("\n## ", 1)[0]
     rows = [line for line in section.splitlines() if line.startswith("|")]
     columns = [cell.strip() for cell in rows[0].strip("|").split("|")][1:]

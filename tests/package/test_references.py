@@ -8,9 +8,32 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 REFERENCES = (ROOT / "docs" / "derivations" / "references.md").read_text()
 
 # The named methods and authors the sources cite; each one found in them must be in the list.
-CITED_NAMES = ["Eberly", "Geometric Tools", "Halley", "Horner", "Estrin", "Brent", "Parlett", "Reinsch",
-               "Cauchy", "Fujiwara", "Pellet", "Moré", "Sorensen", "Martinez", "Dekker", "Knuth", "Shewchuk",
-               "Kahan", "hypot", "Casteljau", "Morton", "mpmath", "distance3d", "cKDTree"]
+CITED_NAMES = [
+    "Eberly",
+    "Geometric Tools",
+    "Halley",
+    "Horner",
+    "Estrin",
+    "Brent",
+    "Parlett",
+    "Reinsch",
+    "Cauchy",
+    "Fujiwara",
+    "Pellet",
+    "Moré",
+    "Sorensen",
+    "Martinez",
+    "Dekker",
+    "Knuth",
+    "Shewchuk",
+    "Kahan",
+    "hypot",
+    "Casteljau",
+    "Morton",
+    "mpmath",
+    "distance3d",
+    "cKDTree",
+]
 
 
 def cited_sources():

@@ -24,8 +24,10 @@ def test_installed_package_is_typed():
     assert (package / "_core.pyi").read_text() == (ROOT / "python" / "circledist" / "_core.pyi").read_text()
 
 
-@pytest.mark.skipif(importlib.util.find_spec("pybind11_stubgen") is None,
-                    reason="pybind11-stubgen is not installed (the `docs` extra; tools/run.sh test installs it)")
+@pytest.mark.skipif(
+    importlib.util.find_spec("pybind11_stubgen") is None,
+    reason="pybind11-stubgen is not installed (the `docs` extra; tools/run.sh test installs it)",
+)
 def test_checked_in_stubs_are_generated_from_the_module():
     # The subprocess imports the circledist this test imports (PYTHONPATH as here).
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
@@ -34,8 +36,11 @@ def test_checked_in_stubs_are_generated_from_the_module():
     except subprocess.CalledProcessError as error:
         pytest.fail(f"pybind11-stubgen failed:\n{error.stdout}{error.stderr}")
     checked_in = STUBS["CHECKED_IN"].read_text()
-    diff = "".join(difflib.unified_diff(checked_in.splitlines(True), generated.splitlines(True),
-                                        "checked-in _core.pyi", "generated"))
+    diff = "".join(
+        difflib.unified_diff(
+            checked_in.splitlines(True), generated.splitlines(True), "checked-in _core.pyi", "generated"
+        )
+    )
     assert not diff, f"the stubs are stale: regenerate them with `python tools/stubs.py`\n{diff}"
 
 

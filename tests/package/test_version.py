@@ -27,6 +27,7 @@ def test_module_and_metadata_report_the_written_version():
 
 
 def test_command_line_version():
-    out = subprocess.run([sys.executable, "-m", "circledist", "--version"], capture_output=True, text=True,
-                         timeout=120, check=True)
+    out = subprocess.run(
+        [sys.executable, "-m", "circledist", "--version"], capture_output=True, text=True, timeout=120, check=True
+    )
     assert out.stdout.strip() == f"circledist {written_version()}"

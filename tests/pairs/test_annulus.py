@@ -30,15 +30,37 @@ import pytest
 
 import circledist as cd
 from circledist_cases import reference_round as R
-from circledist_cases.reference_annulus import (AnnulusMP, annulus, bezier_reference, curves_of, minimum_along,
-                                                point_distance_function, reference, rim_curve)
+from circledist_cases.reference_annulus import (
+    AnnulusMP,
+    annulus,
+    bezier_reference,
+    curves_of,
+    minimum_along,
+    point_distance_function,
+    reference,
+    rim_curve,
+)
 from circledist_cases.reference_arc import arc
-from circledist_cases.kind_checks import (as_floats as _t, assert_batched_equals_single,
-                                          assert_broadphase_finds_points_on, assert_effects_agree_with_distance,
-                                          assert_exact_and_unique, assert_float32, assert_long_double,
-                                          assert_older_version_refused, assert_scene_file_round_trip, file_version,
-                                          assert_scene_equals_brute_force, batch_of, both_orders, make, mixed_shapes,
-                                          radii, random_shape, translated)
+from circledist_cases.kind_checks import (
+    as_floats as _t,
+    assert_batched_equals_single,
+    assert_broadphase_finds_points_on,
+    assert_effects_agree_with_distance,
+    assert_exact_and_unique,
+    assert_float32,
+    assert_long_double,
+    assert_older_version_refused,
+    assert_scene_file_round_trip,
+    file_version,
+    assert_scene_equals_brute_force,
+    batch_of,
+    both_orders,
+    make,
+    mixed_shapes,
+    radii,
+    random_shape,
+    translated,
+)
 from circledist_cases.kind_checks import check as _check
 
 mpf, ctx = R.mpf, R.ctx
@@ -47,6 +69,7 @@ OTHER_KINDS = ("point", "line", "ray", "segment", "circle", "disk", "arc", "annu
 TWO_PI = 2 * math.pi
 REL = 1e-12
 REL_LD = 1e-15
+
 
 @pytest.mark.slow
 def test_point_annulus_closed_form_matches_sampling():
@@ -57,8 +80,9 @@ def test_point_annulus_closed_form_matches_sampling():
         a = annulus(rng.normal(size=3), rng.normal(size=3), outer * rng.uniform(0.2, 0.8), outer)
         ring = AnnulusMP(a)
         p = R.vec(ring.c[i] + mpf(x) for i, x in enumerate(rng.normal(size=3) * 2))
-        rims = [rim_curve(ring.c, ring.u, ring.v, ring.inner + (ring.outer - ring.inner) * k / 60)[0]
-                for k in range(61)]
+        rims = [
+            rim_curve(ring.c, ring.u, ring.v, ring.inner + (ring.outer - ring.inner) * k / 60)[0] for k in range(61)
+        ]
         sampled = min(R.dist(p, at(2 * ctx.pi * j / 720)) for at in rims for j in range(720))
         closed = ring.point_distance(p)
         assert closed <= sampled + mpf("1e-40") and sampled - closed < 2e-2 * float(ring.outer)
@@ -110,12 +134,27 @@ HARD = [
     # extreme radius ratios
     ("pinhole-point-above", annulus(O, Z, 1e-6, 1.0), ("point", (0.0, 0.0, 1e-7)), math.sqrt(1e-14 + 1e-12), False),
     ("thin-big-ring-small-circle", annulus(O, Z, 9999.0, 1e4), ("circle", (9999.5, 0.0, 0.5), Y, 0.1), None, None),
-    ("tiny-annulus-big-circle", annulus((0.3, 0.2, 0.1), (0.3, 1.0, 0.2), 1e-6, 2e-6), ("circle", O, Z, 1.0),
-     None, None),
-    ("big-annulus-small-disk", annulus(O, (0.1, 0.2, 1.0), 5e3, 1e4), ("disk", (300.0, 9000.0, 2.0), Y, 0.01),
-     None, None),
-    ("small-annulus-segment", annulus((0.5, 0.5, 0.5), (1.0, 1.0, 0.0), 1e-5, 3e-5),
-     ("segment", O, (1.0, 1.0, 1.0)), None, None),
+    (
+        "tiny-annulus-big-circle",
+        annulus((0.3, 0.2, 0.1), (0.3, 1.0, 0.2), 1e-6, 2e-6),
+        ("circle", O, Z, 1.0),
+        None,
+        None,
+    ),
+    (
+        "big-annulus-small-disk",
+        annulus(O, (0.1, 0.2, 1.0), 5e3, 1e4),
+        ("disk", (300.0, 9000.0, 2.0), Y, 0.01),
+        None,
+        None,
+    ),
+    (
+        "small-annulus-segment",
+        annulus((0.5, 0.5, 0.5), (1.0, 1.0, 0.0), 1e-5, 3e-5),
+        ("segment", O, (1.0, 1.0, 1.0)),
+        None,
+        None,
+    ),
 ]
 # Translated by 1e6 and 1e8: every random kind and a few of the hard ones.
 FAR = []
@@ -231,8 +270,12 @@ def test_inner_zero_is_the_disk_and_inner_outer_the_circle_bit_for_bit(kind):
 def test_batched_equals_scalar_and_broadcasts(kind):
     rings, others = assert_batched_equals_single(random_cases(kind, 10, 8), 10)
     # (N, 1) against (M,): an N x M matrix of the single answers
-    column = cd.Annulus.from_arrays({k: np.expand_dims(v, 1) if v.ndim > (1 if k in ("center", "normal") else 0)
-                                     else v for k, v in rings[:4].to_arrays().items()})
+    column = cd.Annulus.from_arrays(
+        {
+            k: np.expand_dims(v, 1) if v.ndim > (1 if k in ("center", "normal") else 0) else v
+            for k, v in rings[:4].to_arrays().items()
+        }
+    )
     m = cd.distance(column, others[:6])
     assert m.shape == (4, 6)
     for i in range(4):
@@ -320,20 +363,25 @@ def test_annulus_bezier_batched_equals_scalar():
 # ------------------------------------------------------------------------------------------------
 # bad input: the argument and the index named
 # ------------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("args,message", [
-    (([0, 0, 0], [0, 0, 1], 2.0, 1.0), r"Annulus: inner_radius exceeds outer_radius \(2 > 1\)"),
-    (([0, 0, 0], [0, 0, 1], [0.5, 1.5], 1.0), r"Annulus: inner_radius\[1\] exceeds outer_radius\[1\] \(1.5 > 1\)"),
-    (([0, 0, 0], [0, 0, 1], 0.5, [[1.0], [0.25]]), r"Annulus: inner_radius\[1, 0\] exceeds outer_radius\[1, 0\]"),
-    (([0, 0, 0], [0, 0, 1], -0.5, 1.0), r"Annulus: inner_radius is negative"),
-    (([0, 0, 0], [0, 0, 1], 0.5, [1.0, -1.0]), r"Annulus: outer_radius\[1\] is negative"),
-    (([0, 0, 0], [0, 0, 1], [0.5, np.nan], 1.0), r"Annulus: inner_radius\[1\] contains NaN or inf"),
-    (([0, 0, 0], [0, 0, 1], 0.5, np.inf), r"Annulus: outer_radius contains NaN or inf"),
-    (([0, 0, 0], [0, 0, 0], 0.5, 1.0), r"Annulus: normal has zero length"),
-    (([0, 0, np.nan], [0, 0, 1], 0.5, 1.0), r"Annulus: center contains NaN or inf"),
-    (([0, 0, 0], [0, 0, 1], [0.5, 0.7], [1.0, 2.0, 3.0]), r"does not broadcast"),
-    (([0, 0, 0], [0, 0, 1], np.longdouble(1) + np.finfo(np.longdouble).eps, np.longdouble(1)),
-     r"Annulus: inner_radius exceeds outer_radius"),  # compared as given (in long double)
-])
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (([0, 0, 0], [0, 0, 1], 2.0, 1.0), r"Annulus: inner_radius exceeds outer_radius \(2 > 1\)"),
+        (([0, 0, 0], [0, 0, 1], [0.5, 1.5], 1.0), r"Annulus: inner_radius\[1\] exceeds outer_radius\[1\] \(1.5 > 1\)"),
+        (([0, 0, 0], [0, 0, 1], 0.5, [[1.0], [0.25]]), r"Annulus: inner_radius\[1, 0\] exceeds outer_radius\[1, 0\]"),
+        (([0, 0, 0], [0, 0, 1], -0.5, 1.0), r"Annulus: inner_radius is negative"),
+        (([0, 0, 0], [0, 0, 1], 0.5, [1.0, -1.0]), r"Annulus: outer_radius\[1\] is negative"),
+        (([0, 0, 0], [0, 0, 1], [0.5, np.nan], 1.0), r"Annulus: inner_radius\[1\] contains NaN or inf"),
+        (([0, 0, 0], [0, 0, 1], 0.5, np.inf), r"Annulus: outer_radius contains NaN or inf"),
+        (([0, 0, 0], [0, 0, 0], 0.5, 1.0), r"Annulus: normal has zero length"),
+        (([0, 0, np.nan], [0, 0, 1], 0.5, 1.0), r"Annulus: center contains NaN or inf"),
+        (([0, 0, 0], [0, 0, 1], [0.5, 0.7], [1.0, 2.0, 3.0]), r"does not broadcast"),
+        (
+            ([0, 0, 0], [0, 0, 1], np.longdouble(1) + np.finfo(np.longdouble).eps, np.longdouble(1)),
+            r"Annulus: inner_radius exceeds outer_radius",
+        ),  # compared as given (in long double)
+    ],
+)
 def test_bad_input_names_the_argument_and_index(args, message):
     with pytest.raises(ValueError, match=message):
         cd.Annulus(*args)
@@ -385,8 +433,7 @@ def test_sweep_grows_the_annulus():
 # ------------------------------------------------------------------------------------------------
 def test_effects_on_annuli_agree_with_distance():
     shapes = mixed_shapes(OTHER_KINDS, 12, 5)
-    assert_effects_agree_with_distance([s for name, s in shapes.items() if name.startswith("annulus")],
-                                       shapes.values())
+    assert_effects_agree_with_distance([s for name, s in shapes.items() if name.startswith("annulus")], shapes.values())
     # touching: a line through the ring, a circle round the outer rim; not: a line through the hole
     assert cd.intersects(make(WASHER), cd.Line([1.5, 0, -1], [0, 0, 1]))
     assert cd.intersects(make(WASHER), cd.Circle([3, 0, 0], [0, 0, 1], 1.0))
@@ -446,12 +493,16 @@ def test_broadphase_boxes_hold_the_annuli():
 
 
 def test_scene_with_annuli_and_bezier_curves_answers_that_pair():
-    shapes = {"washer": make(WASHER), "cable": cd.Bezier([[5, 0, 0], [6, 1, 1]]),
-              "ring": cd.Circle([0, 0, 0], [0, 0, 1], 0.5)}
+    shapes = {
+        "washer": make(WASHER),
+        "cable": cd.Bezier([[5, 0, 0], [6, 1, 1]]),
+        "ring": cd.Circle([0, 0, 0], [0, 0, 1], 0.5),
+    }
     s = cd.Scene(shapes)
     assert s.nearest("ring", k=1) == [("washer", 0.5)]
-    assert s.nearest("washer", k=2) == sorted(((n, cd.distance(shapes["washer"], x)) for n, x in shapes.items()
-                                               if n != "washer"), key=lambda e: e[1])
+    assert s.nearest("washer", k=2) == sorted(
+        ((n, cd.distance(shapes["washer"], x)) for n, x in shapes.items() if n != "washer"), key=lambda e: e[1]
+    )
     assert abs(cd.distance(shapes["washer"], shapes["cable"]) - 3.0) <= 1e-12 * 3  # the cable's end to the rim
     assert ("cable", "washer") in {tuple(sorted(p[:2])) for p in s.pairs_within(3.0)}
 
@@ -465,12 +516,18 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     an annulus is format version 3, one with only an arc stays version 2 and one with neither
     version 1 (older readers read them), and an annulus in a version 2 file is refused."""
     cases = random_cases("disk", 3, 17)
-    shapes = {"washer": make(WASHER), "washers": batch_of([a for a, _ in cases]),
-              "thin": cd.Annulus(np.float32([0, 0, 1]), np.float32([0, 1, 1]), np.float32(0.4), np.float32(0.5),
-                                 sweep=np.float32(0.1)),
-              "coin": make(cases[0][1])}
-    queries = [{"a": "washer", "b": "coin", "effects": ["distance", "closest_points"]},
-               {"a": "washers[1]", "effects": ["nearest"], "k": 2}]
+    shapes = {
+        "washer": make(WASHER),
+        "washers": batch_of([a for a, _ in cases]),
+        "thin": cd.Annulus(
+            np.float32([0, 0, 1]), np.float32([0, 1, 1]), np.float32(0.4), np.float32(0.5), sweep=np.float32(0.1)
+        ),
+        "coin": make(cases[0][1]),
+    }
+    queries = [
+        {"a": "washer", "b": "coin", "effects": ["distance", "closest_points"]},
+        {"a": "washers[1]", "effects": ["nearest"], "k": 2},
+    ]
     path = tmp_path / f"annuli{suffix}"
     assert_scene_file_round_trip(path, shapes, queries, "coin")
     assert_older_version_refused(path, 3, "washer", "annulus")
@@ -486,11 +543,22 @@ def test_command_line_answers_and_draws_an_annulus(tmp_path):
 
     from circledist import cli
 
-    doc = {"format": "circledist-scene", "version": 3, "shapes": [
-        {"name": "washer", "kind": "annulus", "center": [0, 0, 0], "normal": [0, 0, 1], "inner_radius": 1,
-         "outer_radius": 2},
-        {"name": "pole", "kind": "line", "origin": [0, 0, 3], "direction": [0, 0, 1]}],
-        "queries": [{"a": "washer", "b": "pole", "effects": ["distance", "closest_points"]}]}
+    doc = {
+        "format": "circledist-scene",
+        "version": 3,
+        "shapes": [
+            {
+                "name": "washer",
+                "kind": "annulus",
+                "center": [0, 0, 0],
+                "normal": [0, 0, 1],
+                "inner_radius": 1,
+                "outer_radius": 2,
+            },
+            {"name": "pole", "kind": "line", "origin": [0, 0, 3], "direction": [0, 0, 1]},
+        ],
+        "queries": [{"a": "washer", "b": "pole", "effects": ["distance", "closest_points"]}],
+    }
     path, answers = tmp_path / "annulus.json", tmp_path / "answers.json"
     path.write_text(json.dumps(doc))
     argv = [str(path), "--json", str(answers)]

@@ -28,14 +28,29 @@ import pytest
 import circledist as cd
 from circledist_cases import differential as D
 from circledist_cases import reference_round as R
+
 # the reference (50 digits), shared with the differential test
 from circledist_cases.reference_arc import ArcMP, _t, arc, point_distance_function, reference
-from circledist_cases.kind_checks import (assert_batched_equals_single, assert_broadphase_finds_points_on,
-                                          assert_effects_agree_with_distance, assert_exact_and_unique, assert_float32,
-                                          assert_long_double, assert_older_version_refused,
-                                          assert_scene_equals_brute_force, assert_scene_file_round_trip, batch_of,
-                                          both_orders, file_version, make, mixed_shapes, radii, random_shape, rounded,
-                                          translated)
+from circledist_cases.kind_checks import (
+    assert_batched_equals_single,
+    assert_broadphase_finds_points_on,
+    assert_effects_agree_with_distance,
+    assert_exact_and_unique,
+    assert_float32,
+    assert_long_double,
+    assert_older_version_refused,
+    assert_scene_equals_brute_force,
+    assert_scene_file_round_trip,
+    batch_of,
+    both_orders,
+    file_version,
+    make,
+    mixed_shapes,
+    radii,
+    random_shape,
+    rounded,
+    translated,
+)
 from circledist_cases.kind_checks import check as _check
 
 mpf, ctx = R.mpf, R.ctx
@@ -99,10 +114,14 @@ HARD = [
     # extreme radius ratios
     ("tiny-arc-big-circle", arc((0.3, 0.2, 0.1), (0.3, 1.0, 0.2), 1e-6, X, 2.0), ("circle", O, Z, 1.0), None, None),
     ("big-arc-small-disk", arc(O, (0.1, 0.2, 1.0), 1e4, X, 0.5), ("disk", (9990.0, 300.0, 2.0), Y, 0.01), None, None),
-    ("big-arc-small-circle", arc(O, Z, 1e3, X, 1.0), ("circle", (995.0, 5.0, 0.5), (0.2, 0.1, 1.0), 1e-3),
-     None, None),
-    ("small-arc-segment", arc((0.5, 0.5, 0.5), (1.0, 1.0, 0.0), 1e-5, Z, 3.0), ("segment", O, (1.0, 1.0, 1.0)),
-     None, None),
+    ("big-arc-small-circle", arc(O, Z, 1e3, X, 1.0), ("circle", (995.0, 5.0, 0.5), (0.2, 0.1, 1.0), 1e-3), None, None),
+    (
+        "small-arc-segment",
+        arc((0.5, 0.5, 0.5), (1.0, 1.0, 0.0), 1e-5, Z, 3.0),
+        ("segment", O, (1.0, 1.0, 1.0)),
+        None,
+        None,
+    ),
 ]
 # Translated by 1e6 and 1e8: every random kind and a few of the hard ones.
 FAR = []
@@ -216,8 +235,12 @@ def test_angle_two_pi_given_as_float64_is_whole_in_long_double():
 def test_batched_equals_scalar_and_broadcasts(kind):
     arcs, others = assert_batched_equals_single(random_cases(kind, 12, 8), 12)
     # (N, 1) against (M,): an N x M matrix of the single answers
-    column = cd.Arc.from_arrays({k: np.expand_dims(v, 1) if v.ndim > (1 if k in ("center", "normal", "start") else 0)
-                                 else v for k, v in arcs[:5].to_arrays().items()})
+    column = cd.Arc.from_arrays(
+        {
+            k: np.expand_dims(v, 1) if v.ndim > (1 if k in ("center", "normal", "start") else 0) else v
+            for k, v in arcs[:5].to_arrays().items()
+        }
+    )
     m = cd.distance(column, others[:7])
     assert m.shape == (5, 7)
     for i in range(5):
@@ -238,8 +261,9 @@ def test_precision_follows_the_dtypes():
     assert isinstance(cd.distance(ald, [2, 0, 0]), np.longdouble)
     assert isinstance(cd.distance(cd.Arc([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], 2.0), [2, 0, 0]), float)
     # float32's rounding of 2 pi (just above 2 pi) is 2 pi given as float32: the whole circle
-    whole32 = cd.Arc(np.float32([0, 0, 0]), np.float32([0, 0, 1]), np.float32(1), np.float32([1, 0, 0]),
-                     np.float32(TWO_PI))
+    whole32 = cd.Arc(
+        np.float32([0, 0, 0]), np.float32([0, 0, 1]), np.float32(1), np.float32([1, 0, 0]), np.float32(TWO_PI)
+    )
     assert cd.distance(whole32, np.float32([-2, 0, 0])) == 1.0
 
 
@@ -249,8 +273,11 @@ def test_precision_follows_the_dtypes():
 def curve_reference(a, ctrl):
     """min over the curve's t in [0, 1] of the arc's closed-form distance from its point (50 digits)."""
     arc_a = ArcMP(a)
-    return float(R.minimize_1d(lambda t: arc_a.point_distance(R.bezier_point(ctrl, t)), mpf(0), mpf(1), 720,
-                               periodic=False)[0].value)
+    return float(
+        R.minimize_1d(lambda t: arc_a.point_distance(R.bezier_point(ctrl, t)), mpf(0), mpf(1), 720, periodic=False)[
+            0
+        ].value
+    )
 
 
 def curve_scale(a, ctrl, ref):
@@ -277,19 +304,42 @@ CURVE_HARD = [
     ("along-the-axis", QUARTER, ((0.0, 0.0, -1.0), (0.0, 0.0, 0.5), (0.0, 0.0, 1.0)), 1.0, False),
     ("coplanar-across", QUARTER, ((0.0, 0.0, 0.0), (1.0, 0.4, 0.0), (2.0, 1.5, 0.0)), 0.0, None),
     ("coplanar-off-the-arc", QUARTER, ((-2.0, -0.5, 0.0), (-1.0, -2.0, 0.0), (0.5, -1.5, 0.0)), None, None),
-    ("degree-7-wave", QUARTER, tuple((math.cos(k / 2), math.sin(k / 2), 0.3 * (-1) ** k) for k in range(8)),
-     None, None),
-    ("tiny-arc", arc((0.3, 0.2, 0.1), (0.3, 1.0, 0.2), 1e-6, X, 2.0), ((-1.0, 0.5, 0.2), (0.3, -1.0, 0.4), (1.0, 1.0, -0.3)),
-     None, None),
-    ("huge-arc", arc(O, Z, 1e6, X, 0.2), ((1e6 - 0.5, -0.3, 0.2), (1e6 + 0.2, 0.4, -0.3), (1e6 + 0.7, 0.1, 0.5)),
-     None, None),
+    (
+        "degree-7-wave",
+        QUARTER,
+        tuple((math.cos(k / 2), math.sin(k / 2), 0.3 * (-1) ** k) for k in range(8)),
+        None,
+        None,
+    ),
+    (
+        "tiny-arc",
+        arc((0.3, 0.2, 0.1), (0.3, 1.0, 0.2), 1e-6, X, 2.0),
+        ((-1.0, 0.5, 0.2), (0.3, -1.0, 0.4), (1.0, 1.0, -0.3)),
+        None,
+        None,
+    ),
+    (
+        "huge-arc",
+        arc(O, Z, 1e6, X, 0.2),
+        ((1e6 - 0.5, -0.3, 0.2), (1e6 + 0.2, 0.4, -0.3), (1e6 + 0.7, 0.1, 0.5)),
+        None,
+        None,
+    ),
 ]
 for _shift in (1e6, 1e8):
     _by = (_shift, -0.5 * _shift, 0.25 * _shift)
-    for _name, _a, _c, _exact, _unique in CURVE_HARD[:4] + [(f"random-{i}", a, c, None, None)
-                                                             for i, (a, c) in enumerate(random_curve_cases(2, 12))]:
-        CURVE_HARD.append((f"{_name}-translated-{_shift:g}", translated(_a, _by),
-                           tuple(tuple(x + y for x, y in zip(p, _by)) for p in _c), None, None))
+    for _name, _a, _c, _exact, _unique in CURVE_HARD[:4] + [
+        (f"random-{i}", a, c, None, None) for i, (a, c) in enumerate(random_curve_cases(2, 12))
+    ]:
+        CURVE_HARD.append(
+            (
+                f"{_name}-translated-{_shift:g}",
+                translated(_a, _by),
+                tuple(tuple(x + y for x, y in zip(p, _by)) for p in _c),
+                None,
+                None,
+            )
+        )
 
 
 def curve_both_orders(a, ctrl, **kw):
@@ -395,22 +445,25 @@ def test_arc_bezier_batches_and_effects():
 # ------------------------------------------------------------------------------------------------
 # bad input: the argument and the index named
 # ------------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("args,message", [
-    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], 0.0), r"Arc: angle must be in \(0, 2 pi\], got 0"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, -0.5]), r"Arc: angle\[1\] must be in \(0, 2 pi\], got -0.5"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, 2.0, 7.0]), r"Arc: angle\[2\] must be in \(0, 2 pi\]"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], TWO_PI * (1 + 1e-15)), r"Arc: angle must be in \(0, 2 pi\]"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, np.nan]), r"Arc: angle\[1\] contains NaN or inf"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [[1, 0, 0], [0, 0, -3]], 1.0), r"Arc: start\[1\] is parallel to normal\[1\]"),
-    (([0, 0, 0], [[0, 0, 1], [0, 1, 0]], 1.0, [0, 2, 0], 1.0), r"Arc: start\[1\] is parallel to normal\[1\]"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [0, 0, 0], 1.0), r"Arc: start has zero length"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [1, np.inf, 0], 1.0), r"Arc: start contains NaN or inf"),
-    (([0, 0, 0], [0, 0, 1], -1.0, [1, 0, 0], 1.0), r"Arc: radius is negative"),
-    (([0, 0, 0], [0, 0, 0], 1.0, [1, 0, 0], 1.0), r"Arc: normal has zero length"),
-    (([0, 0, np.nan], [0, 0, 1], 1.0, [1, 0, 0], 1.0), r"Arc: center contains NaN or inf"),
-    (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [[1.0], [2.0]]), None),  # fine: broadcasts
-    (([0, 0, 0], [0, 0, 1], [1.0, 2.0], [1, 0, 0], [1.0, 2.0, 3.0]), r"does not broadcast"),
-])
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], 0.0), r"Arc: angle must be in \(0, 2 pi\], got 0"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, -0.5]), r"Arc: angle\[1\] must be in \(0, 2 pi\], got -0.5"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, 2.0, 7.0]), r"Arc: angle\[2\] must be in \(0, 2 pi\]"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], TWO_PI * (1 + 1e-15)), r"Arc: angle must be in \(0, 2 pi\]"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [1.0, np.nan]), r"Arc: angle\[1\] contains NaN or inf"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [[1, 0, 0], [0, 0, -3]], 1.0), r"Arc: start\[1\] is parallel to normal\[1\]"),
+        (([0, 0, 0], [[0, 0, 1], [0, 1, 0]], 1.0, [0, 2, 0], 1.0), r"Arc: start\[1\] is parallel to normal\[1\]"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [0, 0, 0], 1.0), r"Arc: start has zero length"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [1, np.inf, 0], 1.0), r"Arc: start contains NaN or inf"),
+        (([0, 0, 0], [0, 0, 1], -1.0, [1, 0, 0], 1.0), r"Arc: radius is negative"),
+        (([0, 0, 0], [0, 0, 0], 1.0, [1, 0, 0], 1.0), r"Arc: normal has zero length"),
+        (([0, 0, np.nan], [0, 0, 1], 1.0, [1, 0, 0], 1.0), r"Arc: center contains NaN or inf"),
+        (([0, 0, 0], [0, 0, 1], 1.0, [1, 0, 0], [[1.0], [2.0]]), None),  # fine: broadcasts
+        (([0, 0, 0], [0, 0, 1], [1.0, 2.0], [1, 0, 0], [1.0, 2.0, 3.0]), r"does not broadcast"),
+    ],
+)
 def test_bad_input_names_the_argument_and_index(args, message):
     if message is None:
         assert cd.Arc(*args).batch_shape == (2, 1)
@@ -508,11 +561,16 @@ def test_scene_file_round_trip_and_version(tmp_path, suffix):
     arc is format version 2, one without stays version 1 (older readers read it), and an arc in a
     version 1 file is refused."""
     cases = random_cases("disk", 3, 17)
-    shapes = {"hook": make(QUARTER), "hooks": batch_of([a for a, _ in cases]),
-              "bent": cd.Arc([0, 0, 1], [0, 1, 1], 0.5, [1, 0, 0], 5.0, sweep=0.1),
-              "coin": make(cases[0][1])}
-    queries = [{"a": "hook", "b": "coin", "effects": ["distance", "closest_points"]},
-               {"a": "hooks[1]", "effects": ["nearest"], "k": 2}]
+    shapes = {
+        "hook": make(QUARTER),
+        "hooks": batch_of([a for a, _ in cases]),
+        "bent": cd.Arc([0, 0, 1], [0, 1, 1], 0.5, [1, 0, 0], 5.0, sweep=0.1),
+        "coin": make(cases[0][1]),
+    }
+    queries = [
+        {"a": "hook", "b": "coin", "effects": ["distance", "closest_points"]},
+        {"a": "hooks[1]", "effects": ["nearest"], "k": 2},
+    ]
     path = tmp_path / f"arcs{suffix}"
     assert_scene_file_round_trip(path, shapes, queries, "coin")
     assert_older_version_refused(path, 2, "hook", "arc")
@@ -527,11 +585,23 @@ def test_command_line_answers_and_draws_an_arc(tmp_path):
 
     from circledist import cli
 
-    doc = {"format": "circledist-scene", "version": 2, "shapes": [
-        {"name": "hook", "kind": "arc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1, "start": [1, 0, 0],
-         "angle": 1.5707963267948966},
-        {"name": "rail", "kind": "line", "origin": [-5, -1, 0], "direction": [1, 0, 0]}],
-        "queries": [{"a": "hook", "b": "rail", "effects": ["distance", "closest_points"]}]}
+    doc = {
+        "format": "circledist-scene",
+        "version": 2,
+        "shapes": [
+            {
+                "name": "hook",
+                "kind": "arc",
+                "center": [0, 0, 0],
+                "normal": [0, 0, 1],
+                "radius": 1,
+                "start": [1, 0, 0],
+                "angle": 1.5707963267948966,
+            },
+            {"name": "rail", "kind": "line", "origin": [-5, -1, 0], "direction": [1, 0, 0]},
+        ],
+        "queries": [{"a": "hook", "b": "rail", "effects": ["distance", "closest_points"]}],
+    }
     path, answers = tmp_path / "arc.json", tmp_path / "answers.json"
     path.write_text(json.dumps(doc))
     argv = [str(path), "--json", str(answers)]
@@ -563,8 +633,13 @@ def test_bounds_decide_separated_arc_pairs_without_a_solve():
     disk, are decided with no polynomial solved."""
     rng = np.random.default_rng(30)
     n = 200
-    far = cd.Arc(rng.uniform(-1, 1, (n, 3)) + [0, 0, 10], rng.normal(size=(n, 3)), rng.uniform(0.2, 1, n),
-                 rng.normal(size=(n, 3)), rng.uniform(0.3, 6, n))
+    far = cd.Arc(
+        rng.uniform(-1, 1, (n, 3)) + [0, 0, 10],
+        rng.normal(size=(n, 3)),
+        rng.uniform(0.2, 1, n),
+        rng.normal(size=(n, 3)),
+        rng.uniform(0.3, 6, n),
+    )
     for target in (cd.Circle([0, 0, 0], [0, 0, 1], 1.0), cd.Disk([0, 0, 0], [0, 0, 1], 1.0)):
         cd.reset_stats()
         assert not np.any(cd.within(far, target, 1.0))
@@ -592,7 +667,7 @@ def test_bounds_decide_separated_arc_pairs_without_a_solve():
 SCALE_KINDS = ("point", "line", "ray", "segment", "circle", "disk", "arc", "annulus", "bezier")
 NORMAL_SCALES = (1e-300, 1e-150, 1e-100, 1e-90, 1e-80, 1e-75, 1e-70, 1e-50, 1.0, 1e50, 1e150, 1e300)
 START_SCALES = (1e-300, 1e-60, 1e-20, 1.0, 1e60, 1e300)
-F32_SCALES = (2.0 ** -100, 2.0 ** -50, 1.0, 2.0 ** 50, 2.0 ** 100)  # float32's range, exact
+F32_SCALES = (2.0**-100, 2.0**-50, 1.0, 2.0**50, 2.0**100)  # float32's range, exact
 
 
 def scale_cases(kind, n, seed):
@@ -605,8 +680,13 @@ def scale_cases(kind, n, seed):
         normal /= np.linalg.norm(normal)
         start = rng.normal(size=3)
         start /= np.linalg.norm(start)
-        unit = list(rng.uniform(-1.5, 1.5, 3)) + list(normal) + [float(rng.uniform(0.3, 2))] + list(start) + [
-            float(rng.uniform(0.3, 2 * np.pi))]
+        unit = (
+            list(rng.uniform(-1.5, 1.5, 3))
+            + list(normal)
+            + [float(rng.uniform(0.3, 2))]
+            + list(start)
+            + [float(rng.uniform(0.3, 2 * np.pi))]
+        )
         if kind == "bezier":
             at = rng.uniform(-1.5, 1.5, 3)
             other = [list(at + rng.uniform(-1.5, 1.5, 3)) for _ in range(4)]
@@ -663,8 +743,13 @@ def test_normal_and_start_scales_do_not_change_the_answer(kind):
             for order in ("ab", "ba"):
                 d = np.asarray(cd.distance(x, arcs, **kw) if order == "ab" else cd.distance(arcs, x, **kw), float)
                 bad = np.flatnonzero(~(np.abs(d - ref) <= bar))
-                assert not len(bad), (kind, solver, precision, order, [(rows[i][3], rows[i][7], d[i], ref)
-                                                                       for i in bad[:4]])
+                assert not len(bad), (
+                    kind,
+                    solver,
+                    precision,
+                    order,
+                    [(rows[i][3], rows[i][7], d[i], ref) for i in bad[:4]],
+                )
                 r = cd.closest_points(x, arcs, **kw) if order == "ab" else cd.closest_points(arcs, x, **kw)
                 pa, pb = np.asarray(r.point_a, float), np.asarray(r.point_b, float)
                 on_arc, on_other = (pb, pa) if order == "ab" else (pa, pb)

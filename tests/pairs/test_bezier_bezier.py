@@ -53,8 +53,21 @@ def case(name, a, b, unique=None):
 def _random_cases():
     rng = np.random.default_rng(2019)
     out = []
-    for na, nb in ((2, 2), (2, 2), (3, 3), (3, 3), (3, 3), (3, 2), (1, 3), (1, 1), (4, 5), (5, 3), (7, 2), (6, 7),
-                   (7, 7)):
+    for na, nb in (
+        (2, 2),
+        (2, 2),
+        (3, 3),
+        (3, 3),
+        (3, 3),
+        (3, 2),
+        (1, 3),
+        (1, 1),
+        (4, 5),
+        (5, 3),
+        (7, 2),
+        (6, 7),
+        (7, 7),
+    ):
         a = rng.uniform(-2, 2, (na + 1, 3))
         b = rng.uniform(-2, 2, (nb + 1, 3)) + rng.uniform(-1, 1, 3)
         out.append(case(f"random_deg{na}_deg{nb}_{len(out)}", a, b))
@@ -212,8 +225,13 @@ def test_degenerate_curves_agree_with_point_and_segment_queries():
     assert abs(cd.distance(a, b) - cd.distance(sa, sb)) <= 1e-15
     assert abs(cd.distance(a, cd.Bezier(np.array(CUBIC_B))) - cd.distance(sa, cd.Bezier(np.array(CUBIC_B)))) <= 1e-15
     line = cd.Bezier(np.array(LINE))
-    assert abs(cd.distance(line, cd.Bezier(np.array(CUBIC_B))) -
-               cd.distance(cd.Segment(LINE[0], LINE[-1]), cd.Bezier(np.array(CUBIC_B)))) <= 1e-15
+    assert (
+        abs(
+            cd.distance(line, cd.Bezier(np.array(CUBIC_B)))
+            - cd.distance(cd.Segment(LINE[0], LINE[-1]), cd.Bezier(np.array(CUBIC_B)))
+        )
+        <= 1e-15
+    )
     # an empty batch
     assert cd.distance(cd.Bezier(np.zeros((0, 3, 3))), cubic).shape == (0,)
 

@@ -132,25 +132,45 @@ def _hard_cases():
         case("segment_far_control", FAR, "segment", (1, 0, -1), (1, 0, 1), scale=1.0),
         # a straight curve nearly along the piece (from a random search): every piece of the
         # curve survived the branch and bound and the cap of pieces was spent next to t = 0
-        case("segment_nearly_along_straight_curve",
-             ((0.469088546821133, 0.026205966427920835, 1.8590472355014187),
-              (-1.0934957465634532, 0.7561085485942733, 0.22038671559146072)), "segment",
-             (1.9660258787094098, -0.6730321024438254, 3.428864695992459),
-             (-0.3778505617265781, 0.4218217708477871, 0.9708739150794374)),
-        case("ray_nearly_along_straight_curve",
-             ((-0.9657236606277491, 1.6991824952754198, 1.5083294665863227),
-              (-0.1909397366488217, 0.19917479281428063, 0.8024648344382479)), "ray",
-             (-0.6547856173686233, 1.0971959987048914, 1.2250502697758192),
-             (7.747839236849074e-08, -1.5000077013826996e-07, -7.058646311897121e-08)),
+        case(
+            "segment_nearly_along_straight_curve",
+            (
+                (0.469088546821133, 0.026205966427920835, 1.8590472355014187),
+                (-1.0934957465634532, 0.7561085485942733, 0.22038671559146072),
+            ),
+            "segment",
+            (1.9660258787094098, -0.6730321024438254, 3.428864695992459),
+            (-0.3778505617265781, 0.4218217708477871, 0.9708739150794374),
+        ),
+        case(
+            "ray_nearly_along_straight_curve",
+            (
+                (-0.9657236606277491, 1.6991824952754198, 1.5083294665863227),
+                (-0.1909397366488217, 0.19917479281428063, 0.8024648344382479),
+            ),
+            "ray",
+            (-0.6547856173686233, 1.0971959987048914, 1.2250502697758192),
+            (7.747839236849074e-08, -1.5000077013826996e-07, -7.058646311897121e-08),
+        ),
         # a straight curve's end point against a segment 1e6 away (from a random search): the
         # closed form in world coordinates erred by 6.6e-12 (1.01e-12 of the query's size)
-        case("segment_translated_curve_end",
-             ((1000000.0079412854, -2000001.2940920747, 299999.72433899983),
-              (999999.8538955955, -2000001.360227488, 299998.9743287738)), "segment",
-             (1000003.4983533251, -2000000.1162210216, 300000.34578803234),
-             (999997.8895753128, -1999996.7627101275, 300000.6542917533)),
-        case("segment_translated", _shifted(CUBIC, SHIFT), "segment", np.array((1.5, 0, 1)) + SHIFT,
-             np.array((1.5, 2, -1)) + SHIFT),
+        case(
+            "segment_translated_curve_end",
+            (
+                (1000000.0079412854, -2000001.2940920747, 299999.72433899983),
+                (999999.8538955955, -2000001.360227488, 299998.9743287738),
+            ),
+            "segment",
+            (1000003.4983533251, -2000000.1162210216, 300000.34578803234),
+            (999997.8895753128, -1999996.7627101275, 300000.6542917533),
+        ),
+        case(
+            "segment_translated",
+            _shifted(CUBIC, SHIFT),
+            "segment",
+            np.array((1.5, 0, 1)) + SHIFT,
+            np.array((1.5, 2, -1)) + SHIFT,
+        ),
     ]
 
 
@@ -220,8 +240,11 @@ def test_distance(name, precision, solver):
     d = cd.distance(a, b, **opts)
     assert d == cd.distance(b, a, **opts)  # both orders, to the bit
     dtype = np.longdouble if precision == "longdouble" else np.float64
-    err = abs(R.to_mp(d) - ref.distance) if precision == "float64" else abs(
-        R.mpf(np.format_float_scientific(np.longdouble(d), unique=True)) - ref.distance)
+    err = (
+        abs(R.to_mp(d) - ref.distance)
+        if precision == "float64"
+        else abs(R.mpf(np.format_float_scientific(np.longdouble(d), unique=True)) - ref.distance)
+    )
     assert float(err) <= TOL[precision] * bar_scale(c, ref), (d, ref)
     assert np.asarray(d).dtype == dtype
 

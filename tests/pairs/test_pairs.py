@@ -16,6 +16,8 @@ import circledist as cd
 from circledist_cases.batches import SUPPORTED, TRAILING, random_batch
 
 KINDS = list(cd._core._shape_fields())  # every kind, Arc included
+
+
 def size(shape):
     return int(np.prod(shape.batch_shape, dtype=np.int64))
 
@@ -26,7 +28,7 @@ def elements(shape):
     batch = shape.batch_shape
     flat = {}
     for name, value in arrays.items():
-        trailing = value.shape[value.ndim - TRAILING[name]:] if TRAILING[name] else ()
+        trailing = value.shape[value.ndim - TRAILING[name] :] if TRAILING[name] else ()
         flat[name] = np.broadcast_to(value, batch + trailing).reshape((-1,) + trailing)
     return [type(shape).from_arrays({name: v[i] for name, v in flat.items()}) for i in range(size(shape))]
 
@@ -91,8 +93,9 @@ def test_every_kind_pair_has_a_query():
 
 def column(shape):
     """A batch of shape (n,) made (n, 1), to broadcast against another batch into a matrix."""
-    return type(shape).from_arrays({k: np.expand_dims(v, 1) if v.ndim > TRAILING[k] else v
-                                    for k, v in shape.to_arrays().items()})
+    return type(shape).from_arrays(
+        {k: np.expand_dims(v, 1) if v.ndim > TRAILING[k] else v for k, v in shape.to_arrays().items()}
+    )
 
 
 def test_larger_mixed_sets_equal_the_distance_matrix():
@@ -157,8 +160,9 @@ def test_empty_batches_and_k_beyond_b():
 # holds (2**44 columns of 4 queries: 2**50 bytes), are a MemoryError naming k; so is a row too
 # large for NumPy's shapes with no query. Run in a child process, so that a regression fails the
 # test instead of taking pytest down.
-@pytest.mark.parametrize("n, k", [(4, 2**62), (8, 2**61), (3, 2**63 - 1), (2, 2**59 + 1), (4, 2**44), (1, 2**60),
-                                  (0, 2**62), (0, 2**63 - 1)])
+@pytest.mark.parametrize(
+    "n, k", [(4, 2**62), (8, 2**61), (3, 2**63 - 1), (2, 2**59 + 1), (4, 2**44), (1, 2**60), (0, 2**62), (0, 2**63 - 1)]
+)
 def test_nearest_k_whose_answers_cannot_exist_is_a_memory_error(n, k):
     code = textwrap.dedent(f"""
         import numpy as np, circledist as cd
@@ -196,8 +200,9 @@ def test_nearest_among_coincident_shapes_equals_brute_force(kind, copies):
     rng = np.random.default_rng(len(kind) * 100 + copies)
     few = random_batch(kind, max(1, 40 // copies), rng)
     arrays = few.to_arrays()
-    many = type(few).from_arrays({name: np.repeat(np.asarray(v), copies, axis=0) if np.ndim(v) else v
-                                  for name, v in arrays.items()})
+    many = type(few).from_arrays(
+        {name: np.repeat(np.asarray(v), copies, axis=0) if np.ndim(v) else v for name, v in arrays.items()}
+    )
     mixed = random_batch("Point", 5, rng)
     for a, b in ((many, many), (mixed, many), (many, few)):
         for k in (1, 3, copies + 2):
@@ -277,46 +282,59 @@ def test_every_worker_count_gives_the_same_bits():
         cd.pairs_within(rings, segments, 0.2, workers=0)
 
 
-@pytest.mark.parametrize("precision,dtype", [("float32", np.float32), ("longdouble", np.longdouble),
-                                             ("float64", np.float64)])
+@pytest.mark.parametrize(
+    "precision,dtype", [("float32", np.float32), ("longdouble", np.longdouble), ("float64", np.float64)]
+)
 def test_precisions_equal_brute_force(precision, dtype):
     rng = np.random.default_rng(8)
     a, b = random_batch("Circle", 12, rng), random_batch("Segment", 12, rng)
     assert_pairs(cd.pairs_within(a, b, 1.0, precision=precision), brute_pairs(a, b, 1.0, precision=precision), dtype)
     assert_nearest(cd.nearest(a, b, 3, precision=precision), brute_nearest(a, b, 3, precision=precision), dtype)
     for solver in ("companion", "polished"):
-        assert_pairs(cd.pairs_within(a, b, 1.0, precision=precision, solver=solver),
-                     brute_pairs(a, b, 1.0, precision=precision, solver=solver), dtype)
+        assert_pairs(
+            cd.pairs_within(a, b, 1.0, precision=precision, solver=solver),
+            brute_pairs(a, b, 1.0, precision=precision, solver=solver),
+            dtype,
+        )
     # Inputs given as float32 (precision=None follows them) and as long double.
     a32 = cd.Circle.from_arrays({k: np.asarray(v, np.float32) for k, v in a.to_arrays().items()})
-    assert_pairs(cd.pairs_within(a32, b.to_arrays()["p0"].astype(np.float32), 1.5),
-                 brute_pairs(a32, cd.Point(b.to_arrays()["p0"].astype(np.float32)), 1.5), np.float32)
+    assert_pairs(
+        cd.pairs_within(a32, b.to_arrays()["p0"].astype(np.float32), 1.5),
+        brute_pairs(a32, cd.Point(b.to_arrays()["p0"].astype(np.float32)), 1.5),
+        np.float32,
+    )
     along = cd.Circle.from_arrays({k: np.asarray(v, np.longdouble) for k, v in a.to_arrays().items()})
     assert_pairs(cd.pairs_within(along, b, 1.0), brute_pairs(along, b, 1.0), np.longdouble)
 
 
-@pytest.mark.parametrize("d,error,match", [
-    (-1.0, ValueError, "pairs_within: d must be a finite number >= 0, got -1.0"),
-    (float("nan"), ValueError, "pairs_within: d must be a finite number >= 0, got nan"),
-    (float("inf"), ValueError, "pairs_within: d must be a finite number >= 0, got inf"),
-    ("0.1", TypeError, "pairs_within: d must be a real number >= 0, got '0.1'"),
-    (None, TypeError, "pairs_within: d must be a real number >= 0, got None"),
-    (True, TypeError, "pairs_within: d must be a real number >= 0, got True"),
-    (np.array([0.1, 0.2]), TypeError, "pairs_within: d must be a real number"),
-])
+@pytest.mark.parametrize(
+    "d,error,match",
+    [
+        (-1.0, ValueError, "pairs_within: d must be a finite number >= 0, got -1.0"),
+        (float("nan"), ValueError, "pairs_within: d must be a finite number >= 0, got nan"),
+        (float("inf"), ValueError, "pairs_within: d must be a finite number >= 0, got inf"),
+        ("0.1", TypeError, "pairs_within: d must be a real number >= 0, got '0.1'"),
+        (None, TypeError, "pairs_within: d must be a real number >= 0, got None"),
+        (True, TypeError, "pairs_within: d must be a real number >= 0, got True"),
+        (np.array([0.1, 0.2]), TypeError, "pairs_within: d must be a real number"),
+    ],
+)
 def test_bad_d(d, error, match):
     ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
     with pytest.raises(error, match=match.replace("(", r"\(").replace(")", r"\)")):
         cd.pairs_within(ring, ring, d)
 
 
-@pytest.mark.parametrize("k,error,match", [
-    (0, ValueError, "nearest: k must be an integer >= 1, got 0"),
-    (-2, ValueError, "nearest: k must be an integer >= 1, got -2"),
-    (1.5, TypeError, "nearest: k must be an integer >= 1, got 1.5"),
-    ("2", TypeError, "nearest: k must be an integer >= 1, got '2'"),
-    (True, TypeError, "nearest: k must be an integer >= 1, got True"),
-])
+@pytest.mark.parametrize(
+    "k,error,match",
+    [
+        (0, ValueError, "nearest: k must be an integer >= 1, got 0"),
+        (-2, ValueError, "nearest: k must be an integer >= 1, got -2"),
+        (1.5, TypeError, "nearest: k must be an integer >= 1, got 1.5"),
+        ("2", TypeError, "nearest: k must be an integer >= 1, got '2'"),
+        (True, TypeError, "nearest: k must be an integer >= 1, got True"),
+    ],
+)
 def test_bad_k(k, error, match):
     ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
     with pytest.raises(error, match=match):

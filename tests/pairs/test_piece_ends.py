@@ -102,11 +102,14 @@ def test_pieces_ending_at_stationary_points(solver, precision, references):
         got = cd.distance(piece, ring, solver=solver, precision=precision)
         closest = cd.closest_points(piece, ring, solver=solver, precision=precision)
         error = abs(float(got) - float(expected.distance))
-        separation = float(np.linalg.norm(np.asarray(closest.point_a, np.longdouble) -
-                                          np.asarray(closest.point_b, np.longdouble)))
+        separation = float(
+            np.linalg.norm(np.asarray(closest.point_a, np.longdouble) - np.asarray(closest.point_b, np.longdouble))
+        )
         if error > bar or closest.distance != got or abs(separation - float(got)) > bar:
-            failures.append(f"{case_id}: got {float(got)!r}, reference {float(expected.distance)!r}, "
-                            f"closest {float(closest.distance)!r}, separation {separation!r}")
+            failures.append(
+                f"{case_id}: got {float(got)!r}, reference {float(expected.distance)!r}, "
+                f"closest {float(closest.distance)!r}, separation {separation!r}"
+            )
     assert not failures, f"{len(failures)} of {len(PIECES)}:\n" + "\n".join(failures[:10])
 
 

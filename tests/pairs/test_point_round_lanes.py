@@ -4,7 +4,8 @@ the answers must be the single queries', bit for bit, in every field, whatever t
 (the elements left after the last block of four), its layout (a field repeated, broadcast over a
 grid, strided views), the argument order, the dtype and the thread count, and wherever a lane
 leaves the common path (points on the axis, on the rim, normals of extreme length, huge and
-tiny scenes, points over an annulus's hole and on its inner rim), alone in its block or not. cpp/tests/test_point_round_lanes.cpp
+tiny scenes, points over an annulus's hole and on its inner rim), alone in its block or not.
+cpp/tests/test_point_round_lanes.cpp
 checks the lanes themselves against the scalar query."""
 
 import numpy as np
@@ -13,6 +14,8 @@ import pytest
 import circledist as cd
 
 FIELDS = ("distance", "point_a", "point_b", "param_a", "param_b", "unique")
+
+
 def annulus(center, normal, radius):
     """An annulus of outer radius `radius` and a hole of 0.4 of it."""
     return cd.Annulus(center, normal, 0.4 * np.asarray(radius), radius)
@@ -61,29 +64,54 @@ def test_every_length_and_order(kind, n):
 @pytest.mark.parametrize("kind", KINDS, ids=lambda k: k.__name__)
 def test_layouts(kind):
     p, c, w, r = random_batch(24, 7)
-    check(p[0], c, w, r, kind)                          # one point against many rounds (a field repeated)
-    check(p, c[0], w[0], r[0], kind)                    # many points against one round
+    check(p[0], c, w, r, kind)  # one point against many rounds (a field repeated)
+    check(p, c[0], w[0], r[0], kind)  # many points against one round
     check(p[:, None, :], c[None, :6], w[None, :6], r[None, :6], kind)  # a grid (N, 1) x (M,)
-    check(p[::2], c[::2], w[1::2], r[::2], kind)        # strided views
-    check(np.asfortranarray(p), c, w, 0.5, kind)        # another memory order, a scalar radius
-    check(p.astype(np.float32), c.astype(np.float32), w.astype(np.float32), r.astype(np.float32), kind,
-          precision="float32")
+    check(p[::2], c[::2], w[1::2], r[::2], kind)  # strided views
+    check(np.asfortranarray(p), c, w, 0.5, kind)  # another memory order, a scalar radius
+    check(
+        p.astype(np.float32),
+        c.astype(np.float32),
+        w.astype(np.float32),
+        r.astype(np.float32),
+        kind,
+        precision="float32",
+    )
     check(p, c, w, r, kind, workers=2)
 
 
 def hard_points():
     """Points where a lane leaves the common path, or sits on its edge, for the unit round about z."""
     e = np.finfo(float).eps
-    return np.array([
-        [0, 0, 1], [0, 0, 0], [0, 0, -3], [1e-300, 0, 0.5], [1, 0, 0], [0, 1, 0], [1 + e, 0, 0], [0.5, 0.5, 0],
-        [1, 0, 1e-300], [2, 0, 0], [1e-17, 1e-17, 1], [1e200, 1e200, 0],
-        [3e-310, 0, 0], [0.3, -0.4, 5], [0.4, 0, 0.2], [0.4 * (1 - 1e-16), 0, 0], [0.2, 0.1, -1], [1e-9, 0, 2],
-    ], dtype=float)
+    return np.array(
+        [
+            [0, 0, 1],
+            [0, 0, 0],
+            [0, 0, -3],
+            [1e-300, 0, 0.5],
+            [1, 0, 0],
+            [0, 1, 0],
+            [1 + e, 0, 0],
+            [0.5, 0.5, 0],
+            [1, 0, 1e-300],
+            [2, 0, 0],
+            [1e-17, 1e-17, 1],
+            [1e200, 1e200, 0],
+            [3e-310, 0, 0],
+            [0.3, -0.4, 5],
+            [0.4, 0, 0.2],
+            [0.4 * (1 - 1e-16), 0, 0],
+            [0.2, 0.1, -1],
+            [1e-9, 0, 2],
+        ],
+        dtype=float,
+    )
 
 
 @pytest.mark.parametrize("kind", KINDS, ids=lambda k: k.__name__)
-@pytest.mark.parametrize("normal", [[0, 0, 1], [0, 0, -1], [1, 1, 0], [1e-200, 0, 1e-200], [1e200, 1, 0],
-                                    [1e-17, 1, 0]])
+@pytest.mark.parametrize(
+    "normal", [[0, 0, 1], [0, 0, -1], [1, 1, 0], [1e-200, 0, 1e-200], [1e200, 1, 0], [1e-17, 1, 0]]
+)
 def test_hard_points_alone_and_among_random_ones(kind, normal):
     hard = hard_points()
     p, c, w, r = random_batch(4 * len(hard), 11)

@@ -26,8 +26,9 @@ def frame(normal):
     n = w / np.sqrt((w * w).sum(axis=1))[:, None]
     x_major = np.abs(w[:, 0]) > np.abs(w[:, 1])
     zero = np.zeros(len(w), dtype=LD)
-    u = np.where(x_major[:, None], np.stack([-w[:, 2], zero, w[:, 0]], axis=1),
-                 np.stack([zero, w[:, 2], -w[:, 1]], axis=1))
+    u = np.where(
+        x_major[:, None], np.stack([-w[:, 2], zero, w[:, 0]], axis=1), np.stack([zero, w[:, 2], -w[:, 1]], axis=1)
+    )
     u = u / np.sqrt((u * u).sum(axis=1))[:, None]
     return u, np.cross(n, u)
 
@@ -72,8 +73,10 @@ def check(kind, fields, point, param, distance, unique):
     err = np.sqrt(((np.asarray(point, dtype=LD) - expected) ** 2).sum(axis=1)).astype(float)
     scale = np.maximum(fields[2], np.abs(distance))
     bad = unique & ~(err <= 1e-12 * scale)
-    assert not bad.any(), (f"{bad.sum()} of {len(bad)} points are not the point their parameter names; "
-                           f"worst {np.max(err / scale):.3g} x scale")
+    assert not bad.any(), (
+        f"{bad.sum()} of {len(bad)} points are not the point their parameter names; "
+        f"worst {np.max(err / scale):.3g} x scale"
+    )
 
 
 @pytest.mark.parametrize("solver", SOLVERS)
@@ -84,8 +87,11 @@ def test_round_param_names_its_point(other, round_kind, solver):
     target, fields = round_shape(round_kind, rng, N)
     a, _ = other_shape(other, rng, N)
     for order in ("other first", "round first"):
-        r = cd.closest_points(a, target, solver=solver) if order == "other first" else \
-            cd.closest_points(target, a, solver=solver)
+        r = (
+            cd.closest_points(a, target, solver=solver)
+            if order == "other first"
+            else cd.closest_points(target, a, solver=solver)
+        )
         point, param = (r.point_b, r.param_b) if order == "other first" else (r.point_a, r.param_a)
         check(round_kind, fields, point, param, r.distance, np.asarray(r.unique))
 
@@ -99,14 +105,22 @@ def test_round_param_one_by_one(other, round_kind):
     make = cd.Circle if round_kind == "circle" else cd.Disk
     _, single = other_shape(other, rng, n)
     rows = [cd.closest_points(single(i), make(*(f[i] for f in fields))) for i in range(n)]
-    check(round_kind, fields, np.array([r.point_b for r in rows]), np.array([r.param_b for r in rows]),
-          np.array([r.distance for r in rows]), np.array([r.unique for r in rows]))
+    check(
+        round_kind,
+        fields,
+        np.array([r.point_b for r in rows]),
+        np.array([r.param_b for r in rows]),
+        np.array([r.distance for r in rows]),
+        np.array([r.unique for r in rows]),
+    )
 
 
 # A point on a disk's axis has no in-plane direction: its angle is 0 (the documented choice), for
 # every normal and either sign of zero in the inputs; atan2(0, -0) is pi, and a -0 from the
 # angle's terms once made it so (a disk facing -z, a point above its center).
-@pytest.mark.parametrize("normal", [[0, 0, -1], [0, 0, 1], [-1, 0, 0], [1, 0, 0], [0, -1, 0], [-1, 0, 1], [0.0, -0.0, -2.0]])
+@pytest.mark.parametrize(
+    "normal", [[0, 0, -1], [0, 0, 1], [-1, 0, 0], [1, 0, 0], [0, -1, 0], [-1, 0, 1], [0.0, -0.0, -2.0]]
+)
 @pytest.mark.parametrize("height", [2.0, -2.0, 0.0, -0.0])
 def test_disk_angle_on_the_axis_is_zero(normal, height):
     n = np.asarray(normal, float)
@@ -209,7 +223,8 @@ def _named(kind, fields, param):
         s = np.asarray(start, dtype=LD)
         theta = np.arctan2((s * v).sum(axis=1), (s * u).sum(axis=1)) + t
         return np.asarray(center, dtype=LD) + np.asarray(radius, dtype=LD)[:, None] * (
-            np.cos(theta)[:, None] * u + np.sin(theta)[:, None] * v)
+            np.cos(theta)[:, None] * u + np.sin(theta)[:, None] * v
+        )
     return named_point("disk", (fields[0], fields[1], None), param)
 
 
@@ -221,8 +236,10 @@ def test_params_stay_in_their_domain_near_degenerate_pairs(kind, other):
     shape, fields = _shape(kind, rng, n)
     near, near_fields = _shape(other, rng, n, near=_anchors(kind, shape, fields, rng, n))
     forward, backward = cd.closest_points(shape, near), cd.closest_points(near, shape)
-    for r, param, point, other_param in [(forward, forward.param_a, forward.point_a, forward.param_b),
-                                         (backward, backward.param_b, backward.point_b, backward.param_a)]:
+    for r, param, point, other_param in [
+        (forward, forward.param_a, forward.point_a, forward.param_b),
+        (backward, backward.param_b, backward.point_b, backward.param_a),
+    ]:
         bad = ~_in_domain(kind, fields, param)
         assert not bad.any(), f"{bad.sum()} of {n} params outside the domain, e.g. {param[bad][:3, 0]}"
         err = np.sqrt(((np.asarray(point, dtype=LD) - _named(kind, fields, param)) ** 2).sum(axis=1)).astype(float)

@@ -27,12 +27,50 @@ from .threads import THREAD_KINDS
 # scene shape's name), a message with pybind11's "Unable to cast" or "incompatible function
 # arguments", or a MemoryError not in the library's words (std::bad_alloc, NumPy's "Unable to
 # allocate": memory really asked for) or after the process really grew by ARGUMENT_GROWTH bytes.
-HOSTILE = ("2**62", "2**63", "2**64+1", "10**30", "-2**63-1", "-1", "0", "1", "3", "True", "False",
-           "np.int64(2**62)", "np.uint64(2**64-1)", "np.int8(-1)", "np.intc(2)", "np.bool_(True)", "np.bool_(False)",
-           "1.5", "2.0", "1e300", "-0.0", "nan", "inf", "-inf", "np.float64(3.0)", "np.float32('nan')",
-           "np.longdouble('1e4000')", "'3'", "''", "'float64'", "None", "b'1'", "[1]", "[]", "(2, 3)",
-           "np.array(2**62)", "np.array([1, 2])", "np.zeros((0,))", "1+0j", "fractions.Fraction(1, 3)",
-           "decimal.Decimal('1e400')", "object()")
+HOSTILE = (
+    "2**62",
+    "2**63",
+    "2**64+1",
+    "10**30",
+    "-2**63-1",
+    "-1",
+    "0",
+    "1",
+    "3",
+    "True",
+    "False",
+    "np.int64(2**62)",
+    "np.uint64(2**64-1)",
+    "np.int8(-1)",
+    "np.intc(2)",
+    "np.bool_(True)",
+    "np.bool_(False)",
+    "1.5",
+    "2.0",
+    "1e300",
+    "-0.0",
+    "nan",
+    "inf",
+    "-inf",
+    "np.float64(3.0)",
+    "np.float32('nan')",
+    "np.longdouble('1e4000')",
+    "'3'",
+    "''",
+    "'float64'",
+    "None",
+    "b'1'",
+    "[1]",
+    "[]",
+    "(2, 3)",
+    "np.array(2**62)",
+    "np.array([1, 2])",
+    "np.zeros((0,))",
+    "1+0j",
+    "fractions.Fraction(1, 3)",
+    "decimal.Decimal('1e400')",
+    "object()",
+)
 BATCHES = ("small", "empty", "one", "outer", "huge")
 HUGE = 10**15
 POSITIONS = ("p", "p0", "p1", "origin", "center", "control_points")  # the fields a translation moves
@@ -63,9 +101,14 @@ def generate_arguments(seed: int, count: int):
     for index in range(count):
         entry = entries[rng.integers(0, len(entries))]
         slot = ARGUMENTS[entry][rng.integers(0, len(ARGUMENTS[entry]))]
-        yield {"index": index, "entry": entry, "argument": slot, "value": HOSTILE[rng.integers(0, len(HOSTILE))],
-               "batch": BATCHES[rng.integers(0, len(BATCHES))],
-               "kind": THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))]}
+        yield {
+            "index": index,
+            "entry": entry,
+            "argument": slot,
+            "value": HOSTILE[rng.integers(0, len(HOSTILE))],
+            "batch": BATCHES[rng.integers(0, len(BATCHES))],
+            "kind": THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))],
+        }
 
 
 class _Stopped(Exception):
@@ -96,8 +139,9 @@ def _argument_batch(cd, kind, batch, column=False):
     if kind in ("circle", "disk", "arc"):
         fields.update(radius=1.0)
     fields.pop("sweep", None)
-    rows = {"small": (3,), "empty": (0,), "one": None, "outer": (10**5, 1) if column else (1, 10**5),
-            "huge": (HUGE,)}[batch]
+    rows = {"small": (3,), "empty": (0,), "one": None, "outer": (10**5, 1) if column else (1, 10**5), "huge": (HUGE,)}[
+        batch
+    ]
     arrays = {k: np.asarray(v, dtype=float) for k, v in fields.items()}
     if rows is not None:
         arrays = {k: np.broadcast_to(v, (*rows, *v.shape)) for k, v in arrays.items()}
@@ -106,8 +150,12 @@ def _argument_batch(cd, kind, batch, column=False):
     if batch not in ("huge", "one"):
         # Elements spread over a box of side 1000 (coincident ones would tie in every query)
         offset = np.random.default_rng(2 + column).uniform(0, 1000, (*rows, 3))
-        arrays = {k: np.ascontiguousarray(v + (offset if v.ndim == len(rows) + 1 else offset[..., None, :])
-                                          if k in POSITIONS else v) for k, v in arrays.items()}
+        arrays = {
+            k: np.ascontiguousarray(
+                v + (offset if v.ndim == len(rows) + 1 else offset[..., None, :]) if k in POSITIONS else v
+            )
+            for k, v in arrays.items()
+        }
     return getattr(cd, kind.capitalize())(*arrays.values(), copy=False)
 
 
@@ -123,10 +171,13 @@ def _argument_call(cd, case):
         return None  # the memory a large max_pairs lets pairs_within hold is what the caller asked for
     progress = _stop if big else None
     if entry in ("distance", "closest_points", "within", "intersects", "distance_if_within", "nearest", "pairs_within"):
+
         def call():
             fn = getattr(cd, entry)
-            args = {"a": _argument_batch(cd, case["kind"], batch, column=True),
-                    "b": _argument_batch(cd, "point", "small" if batch == "huge" else batch)}
+            args = {
+                "a": _argument_batch(cd, case["kind"], batch, column=True),
+                "b": _argument_batch(cd, "point", "small" if batch == "huge" else batch),
+            }
             if entry in ("within", "distance_if_within", "pairs_within"):
                 args["d"] = 1.0
             if entry == "nearest":
@@ -139,8 +190,10 @@ def _argument_call(cd, case):
             else:
                 kw[slot] = value
             return fn(*args.values(), **kw)
+
         return call
     if entry.startswith("Scene."):
+
         def call():
             a = _argument_batch(cd, case["kind"], batch)
             b = _argument_batch(cd, "point", batch)
@@ -149,16 +202,23 @@ def _argument_call(cd, case):
                 for i, shape in enumerate([a[0], a[-1], b[0]] if batch != "one" else [a, b]):
                     scene.add(f"s{i}", shape)
             query = b[0] if batch not in ("one", "empty") else cd.Point([0.0, 0.0, 0.0])
-            args = {"shape": query, "k": 2} if entry == "Scene.nearest" else {"shape": query, "d": 1.0} \
-                if entry == "Scene.within" else {"d": 1.0}
+            args = (
+                {"shape": query, "k": 2}
+                if entry == "Scene.nearest"
+                else {"shape": query, "d": 1.0}
+                if entry == "Scene.within"
+                else {"d": 1.0}
+            )
             kw = {}
             if slot in args:
                 args[slot] = value
             else:
                 kw[slot] = value
             return getattr(scene, entry.split(".")[1])(*args.values(), **kw)
+
         return call
     if entry == "constructor":
+
         def call():
             a = _argument_batch(cd, case["kind"], "small" if big else batch)
             arrays = {k: np.asarray(v) for k, v in a.to_arrays().items() if k != "sweep"}
@@ -170,12 +230,15 @@ def _argument_call(cd, case):
             else:
                 kw[slot] = value
             return type(a)(*arrays.values(), **kw)
+
         return call
     if entry == "indexing":
+
         def call():
             a = _argument_batch(cd, case["kind"], "small" if batch == "huge" else batch, column=True)
             key = value if slot == "key" else slice(value) if slot == "slice" else (value, Ellipsis)
             return a[key]
+
         return call
 
     def call():
@@ -183,8 +246,11 @@ def _argument_call(cd, case):
 
         fields = _argument_batch(cd, case["kind"], batch).to_arrays()
         sweep = fields.pop("sweep", None)
-        args = {"a": getattr(cdd, case["kind"].capitalize())(*fields.values(), sweep=sweep),
-                "b": np.asarray(_argument_batch(cd, "point", batch).to_arrays()["p"]), "d": 1.0}
+        args = {
+            "a": getattr(cdd, case["kind"].capitalize())(*fields.values(), sweep=sweep),
+            "b": np.asarray(_argument_batch(cd, "point", batch).to_arrays()["p"]),
+            "d": 1.0,
+        }
         kw = {"tiles": 2} if slot != "tiles" else {}
         if slot in args:
             args[slot] = value
@@ -193,6 +259,7 @@ def _argument_call(cd, case):
         import dask
 
         return dask.compute(*cdd.pairs_within(*args.values(), **kw))
+
     return call
 
 
@@ -233,8 +300,11 @@ def run_argument_case(cd, case):
         return None
     except ALLOWED_ERRORS + (KeyError,) as error:
         text = str(error)
-        if isinstance(error, KeyError) and not (case["entry"].startswith("Scene.") and case["argument"] == "shape"
-                                                and isinstance(_hostile(case["value"]), str)):
+        if isinstance(error, KeyError) and not (
+            case["entry"].startswith("Scene.")
+            and case["argument"] == "shape"
+            and isinstance(_hostile(case["value"]), str)
+        ):
             return {"finding": f"{where}: KeyError", "detail": text[:500]}
         if "Unable to cast" in text or "incompatible function arguments" in text:
             return {"finding": f"{where}: pybind11's words", "detail": f"{type(error).__name__}: {text[:500]}"}
@@ -267,6 +337,10 @@ def fuzz_arguments(count, seed, chunk, timeout, python=sys.executable, progress=
                 summary["classes"][c["entry"]] = summary["classes"].get(c["entry"], 0) + 1
             _run_chunk(todo, "arguments", python, timeout, tmp, summary, memory=ARGUMENT_MEMORY)
             if progress:
-                print(f"  {summary['cases']} calls, {summary['crashes']} crashes, {summary['hangs']} hangs, "
-                      f"{summary['findings']} findings", file=sys.stderr, flush=True)
+                print(
+                    f"  {summary['cases']} calls, {summary['crashes']} crashes, {summary['hangs']} hangs, "
+                    f"{summary['findings']} findings",
+                    file=sys.stderr,
+                    flush=True,
+                )
     return summary

@@ -26,7 +26,9 @@ def _magnitude(rng):
         return float(10 ** rng.uniform(-300, 300))
     # float32's edges too (3.4e38 and 1.4e-45): answers past float32's range from inputs inside it
     # (a closest point at 5.2e38).
-    return float(10.0 ** int(rng.choice([-300, -200, -155, -100, -45, -38, 38, 100, 155, 200, 300])) * rng.uniform(1, 9))
+    return float(
+        10.0 ** int(rng.choice([-300, -200, -155, -100, -45, -38, 38, 100, 155, 200, 300])) * rng.uniform(1, 9)
+    )
 
 
 def _vector(rng, scale):
@@ -85,11 +87,20 @@ def _shape(rng, kind, scale, center):
     if kind == "segment":
         p0 = near()
         return {"p0": p0, "p1": list(p0) if rng.random() < 0.1 else near()}
-    if kind == "annulus":  # inner radius 0 (the disk), equal to the outer one (the circle), tiny, or now and then past it
+    if (
+        kind == "annulus"
+    ):  # inner radius 0 (the disk), equal to the outer one (the circle), tiny, or now and then past it
         outer = 0.0 if rng.random() < 0.05 else abs(scale * rng.uniform(0.1, 3))
         r = rng.random()
-        inner = 0.0 if r < 0.1 else outer if r < 0.2 else outer * 10.0 ** rng.uniform(-300, -1) if r < 0.3 else (
-            outer * rng.uniform(1, 2) if r < 0.35 else outer * rng.uniform(0, 1))
+        inner = (
+            0.0
+            if r < 0.1
+            else outer
+            if r < 0.2
+            else outer * 10.0 ** rng.uniform(-300, -1)
+            if r < 0.3
+            else (outer * rng.uniform(1, 2) if r < 0.35 else outer * rng.uniform(0, 1))
+        )
         return {"center": near(), "normal": _direction(rng), "inner_radius": inner, "outer_radius": outer}
     if kind in ("circle", "disk", "arc"):
         radius = 0.0 if rng.random() < 0.05 else abs(scale * rng.uniform(0.1, 3))
@@ -199,8 +210,10 @@ def run_case(cd, case):
 
 def _group_key(case):
     """Cases that can run as one batched call: the same kinds, field layout and query."""
+
     def layout(kind, fields):
         return (kind, tuple(sorted(fields)), len(fields.get("control_points", ())))
+
     return (layout(*case["a"]), layout(*case["b"]), case["entry"], case["precision"], case["solver"])
 
 
@@ -235,8 +248,14 @@ def run_batch(cd, cases):
             finite = np.isfinite(d)
             bad = np.isnan(d) | (finite & ~(np.isfinite(pa).all(-1) & np.isfinite(pb).all(-1)))
             bad |= np.asarray(cd.distance(a, b, **kw), dtype=np.longdouble) != d
-            return (int(np.argmax(bad)), "NaN distance, non-finite points, or distance() and "
-                    "closest_points().distance disagree (batch)") if bad.any() else None
+            return (
+                (
+                    int(np.argmax(bad)),
+                    "NaN distance, non-finite points, or distance() and " "closest_points().distance disagree (batch)",
+                )
+                if bad.any()
+                else None
+            )
         if entry in ("within", "intersects"):
             out = cd.within(a, b, d_limit, **kw) if entry == "within" else cd.intersects(a, b, **kw)
             np.asarray(out, dtype=bool)
@@ -258,6 +277,10 @@ def fuzz(count, seed, chunk, timeout, python=sys.executable, progress=False, bat
                 break
             _run_chunk(todo, "1" if batched else "0", python, timeout, tmp, summary)
             if progress:
-                print(f"  {summary['cases']} cases, {summary['crashes']} crashes, {summary['hangs']} hangs, "
-                      f"{summary['findings']} findings", file=sys.stderr, flush=True)
+                print(
+                    f"  {summary['cases']} cases, {summary['crashes']} crashes, {summary['hangs']} hangs, "
+                    f"{summary['findings']} findings",
+                    file=sys.stderr,
+                    flush=True,
+                )
     return summary

@@ -21,24 +21,55 @@ from .common import _limit_memory
 # FILE_MEMORY bytes of address space and FILE_TIMEOUT seconds; a finding is anything but exit
 # status 2 with one line "circledist: error: FILE: ..." on stderr and nothing on stdout (the
 # mutated classes may also be valid: exit 0 then).
-FILE_CLASSES = ("fifo", "device", "zip_bomb", "lying_header", "deep_json", "deep_queries", "surrogate",
-                "huge_count", "compression", "foreign_member", "truncated", "flipped")
+FILE_CLASSES = (
+    "fifo",
+    "device",
+    "zip_bomb",
+    "lying_header",
+    "deep_json",
+    "deep_queries",
+    "surrogate",
+    "huge_count",
+    "compression",
+    "foreign_member",
+    "truncated",
+    "flipped",
+)
 MUST_REFUSE = set(FILE_CLASSES) - {"truncated", "flipped"}
 FILE_TIMEOUT = 60.0
-_FILE_SCENE = {"format": "circledist-scene", "version": 3, "description": "hostile",
-               "shapes": [{"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1},
-                          {"name": "dust", "kind": "point", "count": 3, "p": [[0, 0, 2], [1, 0, 2], [2, 0, 2]]},
-                          {"name": "rail", "kind": "line", "origin": [-3, 1, 0.5], "direction": [1, 0, 0]}],
-               "queries": [{"a": "rail", "b": "ring", "effects": ["distance"]},
-                           {"a": "dust[1]", "effects": ["nearest"], "k": 2}]}
-_NPZ_ROLES = {"format": ("<U", ()), "version": ("<i8", ()), "shapes": ("<U", (3,)), "queries": ("<U", ()),
-              "ring/kind": ("<U", ()), "ring/center": ("<f8", (3,)), "ring/radius": ("<f8", ()),
-              "dust/count": ("<i8", ()), "dust/p": ("<f8", (3, 3)), "rail/direction": ("<f8", (3,))}
+_FILE_SCENE = {
+    "format": "circledist-scene",
+    "version": 3,
+    "description": "hostile",
+    "shapes": [
+        {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1},
+        {"name": "dust", "kind": "point", "count": 3, "p": [[0, 0, 2], [1, 0, 2], [2, 0, 2]]},
+        {"name": "rail", "kind": "line", "origin": [-3, 1, 0.5], "direction": [1, 0, 0]},
+    ],
+    "queries": [{"a": "rail", "b": "ring", "effects": ["distance"]}, {"a": "dust[1]", "effects": ["nearest"], "k": 2}],
+}
+_NPZ_ROLES = {
+    "format": ("<U", ()),
+    "version": ("<i8", ()),
+    "shapes": ("<U", (3,)),
+    "queries": ("<U", ()),
+    "ring/kind": ("<U", ()),
+    "ring/center": ("<f8", (3,)),
+    "ring/radius": ("<f8", ()),
+    "dust/count": ("<i8", ()),
+    "dust/p": ("<f8", (3, 3)),
+    "rail/direction": ("<f8", (3,)),
+}
 
 
 def _npz_arrays():
-    arrays = {"format": np.array("circledist-scene"), "version": np.array(3), "description": np.array("hostile"),
-              "shapes": np.array(["ring", "dust", "rail"]), "queries": np.array(json.dumps(_FILE_SCENE["queries"]))}
+    arrays = {
+        "format": np.array("circledist-scene"),
+        "version": np.array(3),
+        "description": np.array("hostile"),
+        "shapes": np.array(["ring", "dust", "rail"]),
+        "queries": np.array(json.dumps(_FILE_SCENE["queries"])),
+    }
     for spec in _FILE_SCENE["shapes"]:
         name = spec["name"]
         arrays[f"{name}/kind"] = np.array(spec["kind"])
@@ -72,6 +103,7 @@ def _npy_header(descr, shape):
         for _ in range(zeros >> 20):
             f.write(piece)
         f.write(bytes(zeros & ((1 << 20) - 1)))
+
     return write
 
 
@@ -121,9 +153,14 @@ def _hostile_file(rng, kind, folder, index):
             return path, f"queries nested {depth} deep"
         place = str(rng.choice(["shapes", "description", "center", "p", "queries", "effects", "top"]))
         doc = json.loads(json.dumps(_FILE_SCENE))
-        target = {"shapes": (doc, "shapes"), "description": (doc, "description"), "center": (doc["shapes"][0], "center"),
-                  "p": (doc["shapes"][1], "p"), "queries": (doc, "queries"),
-                  "effects": (doc["queries"][0], "effects")}.get(place)
+        target = {
+            "shapes": (doc, "shapes"),
+            "description": (doc, "description"),
+            "center": (doc["shapes"][0], "center"),
+            "p": (doc["shapes"][1], "p"),
+            "queries": (doc, "queries"),
+            "effects": (doc["queries"][0], "effects"),
+        }.get(place)
         if target is None:
             text = deep
         else:
@@ -177,7 +214,7 @@ def _hostile_file(rng, kind, folder, index):
         for signature, offset in ((b"PK\x03\x04", 8), (b"PK\x01\x02", 10)):
             at = data.find(signature)
             while at >= 0:
-                data[at + offset:at + offset + 2] = method.to_bytes(2, "little")
+                data[at + offset : at + offset + 2] = method.to_bytes(2, "little")
                 at = data.find(signature, at + 4)
         with open(path, "wb") as f:
             f.write(data)
@@ -218,8 +255,14 @@ def _hostile_file(rng, kind, folder, index):
 def run_file_case(path, kind, python=sys.executable):
     """None, or what is wrong with the command line's answer to the file."""
     try:
-        proc = subprocess.run([python, "-m", "circledist", path, "--no-plot"], capture_output=True, text=True,
-                              timeout=FILE_TIMEOUT, preexec_fn=_limit_memory, stdin=subprocess.DEVNULL)
+        proc = subprocess.run(
+            [python, "-m", "circledist", path, "--no-plot"],
+            capture_output=True,
+            text=True,
+            timeout=FILE_TIMEOUT,
+            preexec_fn=_limit_memory,
+            stdin=subprocess.DEVNULL,
+        )
     except subprocess.TimeoutExpired:
         return "hang", ""
     err = proc.stderr
@@ -227,8 +270,7 @@ def run_file_case(path, kind, python=sys.executable):
         return None
     if proc.returncode != 2:
         return f"exit {proc.returncode}", err[-2000:]
-    if not err.startswith(f"circledist: error: {path}: ") or err.count("\n") != 1 or "Traceback" in err \
-            or proc.stdout:
+    if not err.startswith(f"circledist: error: {path}: ") or err.count("\n") != 1 or "Traceback" in err or proc.stdout:
         return "not one clean error line", err[-2000:]
     return None
 
@@ -248,9 +290,13 @@ def fuzz_files(count, seed, python=sys.executable, progress=False):
             if found is not None:
                 key = "hangs" if found[0] == "hang" else "crashes" if found[0].startswith("exit -") else "findings"
                 summary[key] += 1
-                summary["examples"].append({"finding": found[0], "case": {"index": index, "class": kind, "file": what},
-                                            "stderr": found[1]})
+                summary["examples"].append(
+                    {"finding": found[0], "case": {"index": index, "class": kind, "file": what}, "stderr": found[1]}
+                )
             if progress:
-                print(f"  {index} {kind} ({what[:60]}): {found[0] if found else 'ok'} {time.time() - start:.1f} s",
-                      file=sys.stderr, flush=True)
+                print(
+                    f"  {index} {kind} ({what[:60]}): {found[0] if found else 'ok'} {time.time() - start:.1f} s",
+                    file=sys.stderr,
+                    flush=True,
+                )
     return summary

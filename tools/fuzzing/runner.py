@@ -13,6 +13,7 @@ from .common import _limit_memory
 # the script whose --child mode runs a chunk
 SCRIPT = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "fuzz_crash.py")
 
+
 # ----------------------------------------------------------------------------------------------
 # the parent: chunks in child processes
 # ----------------------------------------------------------------------------------------------
@@ -25,9 +26,14 @@ def _run_child(todo, mode, python, timeout, tmp, memory=None):
         if os.path.exists(f):
             os.remove(f)
     try:
-        proc = subprocess.run([python, SCRIPT, "--child", cases_file, current_file, results_file,
-                               mode], timeout=timeout, capture_output=True, text=True, stdin=subprocess.DEVNULL,
-                              preexec_fn=None if memory is None else lambda: _limit_memory(memory))
+        proc = subprocess.run(
+            [python, SCRIPT, "--child", cases_file, current_file, results_file, mode],
+            timeout=timeout,
+            capture_output=True,
+            text=True,
+            stdin=subprocess.DEVNULL,
+            preexec_fn=None if memory is None else lambda: _limit_memory(memory),
+        )
         if proc.returncode == 0 and os.path.exists(results_file):
             return json.load(open(results_file)), None, None
         what = f"crash (exit {proc.returncode})", proc.stderr[-2000:]

@@ -26,8 +26,19 @@ from .cases import _shape
 # scene gives.
 THREAD_KINDS = ("point", "circle", "disk", "segment", "arc", "annulus", "bezier")
 THREAD_TIMEOUT = 120.0
-THREAD_OPS = ("add", "extend", "pairs", "nearest", "within", "nearest_name", "within_name", "matrix", "shape",
-              "pickle", "duplicate")
+THREAD_OPS = (
+    "add",
+    "extend",
+    "pairs",
+    "nearest",
+    "within",
+    "nearest_name",
+    "within_name",
+    "matrix",
+    "shape",
+    "pickle",
+    "duplicate",
+)
 # Outcomes a valid query may have: an answer, or one of these errors (the serial scene must agree).
 THREAD_ERRORS = ("TypeError", "ValueError", "KeyError", "MemoryError")
 
@@ -35,8 +46,13 @@ THREAD_ERRORS = ("TypeError", "ValueError", "KeyError", "MemoryError")
 def generate_threads(seed: int, count: int):
     rng = np.random.default_rng(seed)
     for index in range(count):
-        yield {"index": index, "seed": int(rng.integers(0, 2**63 - 1)), "shapes": int(rng.integers(8, 120)),
-               "threads": int(rng.integers(3, 6)), "ops": int(rng.integers(10, 60))}
+        yield {
+            "index": index,
+            "seed": int(rng.integers(0, 2**63 - 1)),
+            "shapes": int(rng.integers(8, 120)),
+            "threads": int(rng.integers(3, 6)),
+            "ops": int(rng.integers(10, 60)),
+        }
 
 
 def _scene_shapes(cd, rng, count):
@@ -45,8 +61,11 @@ def _scene_shapes(cd, rng, count):
     shapes, layout = [], None
     while len(shapes) < count:
         if layout is None or rng.random() < 0.6:
-            layout = (THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))],
-                      np.float32 if rng.random() < 0.15 else np.float64, rng.random() < 0.25)
+            layout = (
+                THREAD_KINDS[rng.integers(0, len(THREAD_KINDS))],
+                np.float32 if rng.random() < 0.15 else np.float64,
+                rng.random() < 0.25,
+            )
         kind, dtype, swept = layout
         outlier = rng.random() < 0.1
         scale = float(10 ** rng.uniform(6, 15)) if outlier and rng.random() < 0.5 else float(rng.uniform(0.1, 2))
@@ -75,9 +94,12 @@ def _stacked(cd, shapes):
     """The shapes (of one layout) as one batch, or None when their layouts differ."""
     arrays = [s.to_arrays() for s in shapes]
     first = arrays[0]
-    if any(s.kind != shapes[0].kind or a.keys() != first.keys()
-           or any(a[k].shape != first[k].shape or a[k].dtype != first[k].dtype for k in a)
-           for s, a in zip(shapes, arrays)):
+    if any(
+        s.kind != shapes[0].kind
+        or a.keys() != first.keys()
+        or any(a[k].shape != first[k].shape or a[k].dtype != first[k].dtype for k in a)
+        for s, a in zip(shapes, arrays)
+    ):
         return None
     return type(shapes[0]).from_arrays({k: np.stack([a[k] for a in arrays]) for k in first})
 
@@ -112,12 +134,14 @@ def _query(scene, op, names, queries):
     if name == "shape":
         return lambda: sorted((k, v.dtype.str, v.tobytes().hex()) for k, v in scene[names[args[0]]].to_arrays().items())
     if name == "pickle":  # pickled and loaded, or deep-copied
+
         def copied():
             import copy
             import pickle
 
             twin = pickle.loads(pickle.dumps(scene)) if args[1] == "pickle" else copy.deepcopy(scene)
             return twin.names, twin.pairs_within(args[0]), twin.nearest(queries[0], k=3)
+
         return copied
     raise AssertionError(op)
 
@@ -131,8 +155,11 @@ def run_thread_case(cd, case):
     n = case["shapes"]
     shapes = _scene_shapes(cd, rng, n)
     names = [f"s{i}" for i in range(n)]
-    queries = [cd.Point(rng.uniform(0, 10, 3))] + _scene_shapes(cd, rng, 3) + [
-        cd.Line(rng.uniform(0, 10, 3), rng.normal(size=3)), cd.Point([1e12, -3e14, 2.0])]
+    queries = (
+        [cd.Point(rng.uniform(0, 10, 3))]
+        + _scene_shapes(cd, rng, 3)
+        + [cd.Line(rng.uniform(0, 10, 3), rng.normal(size=3)), cd.Point([1e12, -3e14, 2.0])]
+    )
     first = int(rng.integers(0, n // 2))
     scene = cd.Scene()
     for i in range(first):
@@ -191,8 +218,10 @@ def run_thread_case(cd, case):
                     elif op == "within_name":
                         args = (pick(), distance_limit(r))
                     elif op == "matrix":
-                        args = (tuple(pick() for _ in range(int(r.integers(0, 4)))),
-                                tuple(pick() for _ in range(int(r.integers(0, 4)))))
+                        args = (
+                            tuple(pick() for _ in range(int(r.integers(0, 4)))),
+                            tuple(pick() for _ in range(int(r.integers(0, 4)))),
+                        )
                     else:
                         args = (pick(),)
                 before = len(scene)
@@ -242,20 +271,32 @@ def run_thread_case(cd, case):
             # max_pairs: the count at which the search stops may follow the workers' order
             expected = [serial_answer(op, m)[:2] for m in range(before, after + 1)]
             if got[:2] not in expected:
-                return {"finding": "pairs_within with max_pairs: an error no serial scene gives",
-                        "detail": f"{op} with {before}..{after} shapes: {got}, serial: {expected}"}
+                return {
+                    "finding": "pairs_within with max_pairs: an error no serial scene gives",
+                    "detail": f"{op} with {before}..{after} shapes: {got}, serial: {expected}",
+                }
             continue
         if not any(serial_answer(op, m) == got for m in range(before, after + 1)):
-            return {"finding": f"{op[0]}: an answer no serial scene gives",
-                    "detail": f"{op} with {before}..{after} shapes: {str(got)[:500]}; serial: "
-                              f"{str(serial_answer(op, before))[:500]}"}
-    final = [("pairs", 1.0, 1, None), ("nearest", 0, 3), ("within", 1, 2.0), ("pickle", 0.5, "pickle"),
-             ("pickle", 0.5, "deepcopy"), ("shape", n - 1)]
+            return {
+                "finding": f"{op[0]}: an answer no serial scene gives",
+                "detail": f"{op} with {before}..{after} shapes: {str(got)[:500]}; serial: "
+                f"{str(serial_answer(op, before))[:500]}",
+            }
+    final = [
+        ("pairs", 1.0, 1, None),
+        ("nearest", 0, 3),
+        ("within", 1, 2.0),
+        ("pickle", 0.5, "pickle"),
+        ("pickle", 0.5, "deepcopy"),
+        ("shape", n - 1),
+    ]
     for op in final:
         got, expected = _outcome(_query(scene, op, names, queries)), serial_answer(op, n)
         if got != expected:
-            return {"finding": f"the scene's end state: {op[0]} differs from the serial scene's",
-                    "detail": f"{op}: {str(got)[:500]}; serial: {str(expected)[:500]}"}
+            return {
+                "finding": f"the scene's end state: {op[0]} differs from the serial scene's",
+                "detail": f"{op}: {str(got)[:500]}; serial: {str(expected)[:500]}",
+            }
     if scene.names != names:
         return {"finding": "the scene's end state: names differ from the serial order", "detail": ""}
     return None
@@ -268,6 +309,10 @@ def fuzz_threads(count, seed, python=sys.executable, progress=False, timeout=THR
         for case in generate_threads(seed, count):
             _run_chunk([case], "threads", python, timeout, tmp, summary)
             if progress and (case["index"] + 1) % 10 == 0:
-                print(f"  {summary['cases']} scenarios, {summary['crashes']} crashes, {summary['hangs']} hangs, "
-                      f"{summary['findings']} findings", file=sys.stderr, flush=True)
+                print(
+                    f"  {summary['cases']} scenarios, {summary['crashes']} crashes, {summary['hangs']} hangs, "
+                    f"{summary['findings']} findings",
+                    file=sys.stderr,
+                    flush=True,
+                )
     return summary

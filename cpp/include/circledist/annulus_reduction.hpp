@@ -57,7 +57,8 @@ namespace circledist {
 namespace detail {
 
 // distance(disk, disk) does, so the answers are the disk's to the bit.)
-template <class Roots, class X, class Real> Real degenerate_distance(const X& x, const Annulus3<Real>& a, AnnulusKind kind) {
+template <class Roots, class X, class Real>
+Real degenerate_distance(const X& x, const Annulus3<Real>& a, AnnulusKind kind) {
   if (kind == AnnulusKind::kDisk) return circledist::distance<Roots>(x, annulus_disk(a));
   if (kind == AnnulusKind::kCircle) return circledist::distance<Roots>(x, outer_rim(a));
   return degenerate_annulus_result<Real>(kind).distance;
@@ -65,7 +66,8 @@ template <class Roots, class X, class Real> Real degenerate_distance(const X& x,
 template <class Roots, class X, class Real>
 Result<Real> degenerate_closest(const X& x, const Annulus3<Real>& a, AnnulusKind kind) {
   if (kind == AnnulusKind::kDisk) return circledist::closest_points<Roots>(x, annulus_disk(a));
-  if (kind == AnnulusKind::kCircle) return rim_as_annulus(circledist::closest_points<Roots>(x, outer_rim(a)), a.outer_radius);
+  if (kind == AnnulusKind::kCircle)
+    return rim_as_annulus(circledist::closest_points<Roots>(x, outer_rim(a)), a.outer_radius);
   return degenerate_annulus_result<Real>(kind);
 }
 
@@ -196,8 +198,7 @@ InteriorVerdict<Real> circle_annulus_interior(const Circle3<Real>& c, const Annu
 
 // The best of a set of candidate Results, `unique` false when another reaches the same distance
 // within the tie tolerance at a distinct pair (or the best is a continuum itself).
-template <class Real, class Candidates>
-Result<Real> best_of(const Candidates& candidates, Real scale) {
+template <class Real, class Candidates> Result<Real> best_of(const Candidates& candidates, Real scale) {
   Result<Real> best = candidates.item[candidates.best];
   const Real tie = tie_tolerance(std::max(scale, best.distance));
   const Real apart = distinct_points_tolerance(scale);
@@ -231,9 +232,9 @@ InteriorVerdict<Real> ring_interior(const Arc3<Real>& arc, const Annulus3<Real>&
 // (bezier-disk's interior candidates, refined on the curve: push_refined_curve_height_roots,
 // detail/curve_round_query.hpp, since nothing polishes them here) and its two ends.
 // An empty curve has none (its rims' answers are empty too).
-template <class Roots, class Real, class Add>
-InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b, const Annulus3<Real>& a, bool with_points,
-                                    const Add& add) {
+template <class Roots, class Real, class Add> InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b,
+                                                                                  const Annulus3<Real>& a,
+                                                                                  bool with_points, const Add& add) {
   if (b.control.cols() == 0) return {std::numeric_limits<Real>::infinity(), true};
   const Round<Real> round(a.center, a.normal, a.outer_radius);
   const LocalBezier<Real> c(b, round);
@@ -242,11 +243,12 @@ InteriorVerdict<Real> ring_interior(const BezierCurve3<Real>& b, const Annulus3<
   heights.push(Real(0));
   heights.push(Real(1));
   push_refined_curve_height_roots<Roots>(c, scale, heights);
-  return interior_in_ring(heights, a, round, scale, with_points, add, [&](Real t) { return c.at(t); },
-                          [&](Real t, Result<Real>& r) {
-                            r.point_a = b.at(t);
-                            r.param_a = Vec2<Real>(t, 0);
-                          });
+  return interior_in_ring(
+      heights, a, round, scale, with_points, add, [&](Real t) { return c.at(t); },
+      [&](Real t, Result<Real>& r) {
+        r.point_a = b.at(t);
+        r.param_a = Vec2<Real>(t, 0);
+      });
 }
 
 // The length scale of a ring query (tolerances follow it): the annulus's radius, the round's

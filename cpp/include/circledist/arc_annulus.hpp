@@ -27,7 +27,8 @@ template <class Real> struct ArcAnnulusPair {
   template <class Roots = DefaultRoots> static Result<Real> closest(const Arc3<Real>& arc, const Annulus3<Real>& a) {
     const detail::AnnulusKind kind = detail::annulus_kind(a);
     if (kind != detail::AnnulusKind::kRing) return detail::degenerate_closest<Roots>(arc, a, kind);
-    if (whole_arc(arc)) return as_arc_result(detail::curve_ring_closest<Roots>(arc_circle(arc), a), ArcSpan<Real>(arc), 0);
+    if (whole_arc(arc))
+      return as_arc_result(detail::curve_ring_closest<Roots>(arc_circle(arc), a), ArcSpan<Real>(arc), 0);
     if (!(arc.radius > 0)) return Query<Vec3<Real>, Annulus3<Real>>::template closest<Roots>(arc.center, a);
     return detail::curve_ring_closest<Roots>(arc, a);
   }

@@ -11,6 +11,7 @@
 
 namespace circledist {
 
-template <class Real> struct Query<BezierCurve3<Real>, Annulus3<Real>> : detail::CurveAnnulusQuery<Real, BezierCurve3<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Annulus3<Real>>
+    : detail::CurveAnnulusQuery<Real, BezierCurve3<Real>> {};
 
 }  // namespace circledist

@@ -33,8 +33,8 @@ template <class Real> Real arc_target_distance(const ArcTarget<Real>& target, co
   const int e = target.nearest_end(p);
   return e < 0 ? RingTarget<Real>::distance(p, target.radius) : (p - target.end[e]).norm();
 }
-template <class Real>
-Jet<Real> arc_target_jet(const ArcTarget<Real>& target, const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2) {
+template <class Real> Jet<Real> arc_target_jet(const ArcTarget<Real>& target, const Vec3<Real>& p, const Vec3<Real>& p1,
+                                               const Vec3<Real>& p2) {
   const int e = target.nearest_end(p);
   return e < 0 ? RingTarget<Real>::jet(p, p1, p2, target.radius) : point_jet(p, p1, p2, target.end[e]);
 }
@@ -49,26 +49,29 @@ template <class Real> struct BezierArcPair : CurveRoundBase<Real> {
   // Each piece's candidates: the circle's (push_curve_round_candidates, the ends t = 0 and 1
   // among them) and each arc end's stationary points (its point query's equation on the piece
   // moved to the end: AxisTarget).
-  template <class Roots>
-  static typename Base::Found solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round,
-                                    const ArcTarget<Real>& target, Real scale, BestPiece<Real>* where = nullptr) {
+  template <class Roots> static typename Base::Found solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b,
+                                                           const Round<Real>& round, const ArcTarget<Real>& target,
+                                                           Real scale, BestPiece<Real>* where = nullptr) {
     const auto distance_of = [&](const Vec3<Real>& p) { return arc_target_distance(target, p); };
-    return Base::solve_pieces(c, b, round, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s) {
-      typename Base::Starts starts;
-      push_curve_round_candidates<Roots, RingTarget<Real>>(piece, target.radius, s, starts);
-      for (const Vec3<Real>& e : target.end) {
-        AxisTarget<Real> end;
-        end.origin = e;
-        push_curve_point_roots<Roots>(end.moved(piece), s, starts);
-      }
-      const auto h = [&](Real t) { return distance_of(piece.at(t)); };
-      const auto jet = [&](Real t) {
-        return piece.jet_of(t, [&](const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2) {
-          return arc_target_jet(target, p, p1, p2);
-        });
-      };
-      return Base::template polish<Roots>(piece, starts, s, h, jet);
-    }, where);
+    return Base::solve_pieces(
+        c, b, round, scale, distance_of,
+        [&](const LocalBezier<Real>& piece, Real s) {
+          typename Base::Starts starts;
+          push_curve_round_candidates<Roots, RingTarget<Real>>(piece, target.radius, s, starts);
+          for (const Vec3<Real>& e : target.end) {
+            AxisTarget<Real> end;
+            end.origin = e;
+            push_curve_point_roots<Roots>(end.moved(piece), s, starts);
+          }
+          const auto h = [&](Real t) { return distance_of(piece.at(t)); };
+          const auto jet = [&](Real t) {
+            return piece.jet_of(t, [&](const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>& p2) {
+              return arc_target_jet(target, p, p1, p2);
+            });
+          };
+          return Base::template polish<Roots>(piece, starts, s, h, jet);
+        },
+        where);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Arc3<Real>& arc) {
@@ -80,8 +83,10 @@ template <class Real> struct BezierArcPair : CurveRoundBase<Real> {
     return solve<Roots>(c, b, round, ArcTarget<Real>(arc), bezier_round_scale(c, arc.radius)).best.value;
   }
 
-  template <class Roots = DefaultRoots> static Result<Real> closest(const BezierCurve3<Real>& b, const Arc3<Real>& arc) {
-    if (whole_arc(arc)) return as_arc_result(CurveCircle::template closest<Roots>(b, arc_circle(arc)), ArcSpan<Real>(arc), 1);
+  template <class Roots = DefaultRoots>
+  static Result<Real> closest(const BezierCurve3<Real>& b, const Arc3<Real>& arc) {
+    if (whole_arc(arc))
+      return as_arc_result(CurveCircle::template closest<Roots>(b, arc_circle(arc)), ArcSpan<Real>(arc), 1);
     if (!(arc.radius > 0)) return CurvePoint::template closest<Roots>(b, arc.center);
     if (b.control.cols() == 0) return empty_curve_result<Real>();
     const Round<Real> round(arc.center, arc.normal, arc.radius);

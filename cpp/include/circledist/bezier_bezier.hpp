@@ -165,8 +165,7 @@ template <class Real> struct CurvePairSolver {
       if (hold_s && hold_t) break;
       const Real mu = lambda * (std::abs(h11) + std::abs(h22));
       const Real a11 = h11 + mu, a22 = h22 + mu, det = a11 * a22 - h12 * h12;
-      const bool definite =
-          hold_s ? a22 > 0 : hold_t ? a11 > 0 : (a11 > 0 && a22 > 0 && det > 0 && std::isfinite(det));
+      const bool definite = hold_s ? a22 > 0 : hold_t ? a11 > 0 : (a11 > 0 && a22 > 0 && det > 0 && std::isfinite(det));
       if (!definite) {
         lambda = lambda == 0 ? Real(1e-6) : lambda * 8;
         if (!(lambda < Real(1e12)) || !(std::abs(h11) + std::abs(h22) > 0)) break;
@@ -246,9 +245,8 @@ template <class Real> struct CurvePairSolver {
 
   // §3-§4: the interior candidates, appended to `out`; `upper` is the best value so far (the
   // edges'), lowered as the search goes.
-  template <class Roots>
-  static void interior(const LocalBezier<Real>& ca, const LocalBezier<Real>& cb, Real scale, Real upper,
-                       std::vector<Candidate>& out) {
+  template <class Roots> static void interior(const LocalBezier<Real>& ca, const LocalBezier<Real>& cb, Real scale,
+                                              Real upper, std::vector<Candidate>& out) {
     // At most kMaxLeaves flat pairs are polished and kMaxPairs pairs examined: a continuum of
     // closest pairs (identical or parallel curves) keeps every pair along it alive; past the caps
     // the pairs left are polished as they are, while leaves remain.
@@ -302,7 +300,7 @@ template <class Real> struct CurvePairSolver {
       if (described || pairs >= kMaxPairs) continue;
       const bool split_a = flat_a == flat_b ? extent_a >= extent_b : !flat_a;
       const Real mid_a = (p.a0 + p.a1) / 2, mid_b = (p.b0 + p.b1) / 2;
-      const bool can_a = mid_a > p.a0 && mid_a < p.a1, can_b = mid_b > p.b0 && mid_b < p.b1;
+      const bool can_a = mid_a > p.a0 && mid_a<p.a1, can_b = mid_b> p.b0 && mid_b < p.b1;
       const bool halve_a = split_a ? can_a : !can_b && can_a, halve_b = !halve_a && can_b;
       if (!halve_a && !halve_b) continue;  // neither span splits any more (t at rounding)
       for (int half = 0; half < 2; ++half) {

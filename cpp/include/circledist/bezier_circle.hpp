@@ -11,6 +11,7 @@
 
 namespace circledist {
 
-template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>> : detail::CurveRoundQuery<Real, detail::RingTarget<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Circle3<Real>>
+    : detail::CurveRoundQuery<Real, detail::RingTarget<Real>> {};
 
 }  // namespace circledist

@@ -11,6 +11,7 @@
 
 namespace circledist {
 
-template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>> : detail::CurveRoundQuery<Real, detail::DiskTarget<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Disk3<Real>>
+    : detail::CurveRoundQuery<Real, detail::DiskTarget<Real>> {};
 
 }  // namespace circledist

@@ -128,8 +128,7 @@ template <class Real, class Piece> struct CurvePieceQuery {
 
   // The interior candidate: the best minimum of the distance to the whole line whose foot lies in
   // the piece; `unique` false when another such minimum ties with it at another point.
-  template <class Roots>
-  static void interior(const BezierCurve3<Real>& b, const Linear<Real>& linear, Found& out) {
+  template <class Roots> static void interior(const BezierCurve3<Real>& b, const Linear<Real>& linear, Found& out) {
     const CurveLineFrame<Real> f(b, linear);
     out.scale = std::max(out.scale, f.scale);
     BestPiece<Real> where;
@@ -172,7 +171,8 @@ template <class Real, class Piece> struct CurvePieceQuery {
     const int n = int(b.control.cols()) - 1;
     for (const int i : {0, n}) {
       const Vec3<Real> p = b.control.col(i);
-      Result<Real> r = Query<Vec3<Real>, Piece>::template closest<Roots>(Vec3<Real>::Zero(), detail::piece_moved_by(piece, p));
+      Result<Real> r =
+          Query<Vec3<Real>, Piece>::template closest<Roots>(Vec3<Real>::Zero(), detail::piece_moved_by(piece, p));
       r.point_a = p;
       r.point_b = p + r.point_b;
       r.param_a = Vec2<Real>(Real(i == 0 ? 0 : 1), 0);
@@ -226,6 +226,7 @@ template <class Real, class Piece> struct CurvePieceQuery {
 }  // namespace detail
 
 template <class Real> struct Query<BezierCurve3<Real>, Ray3<Real>> : detail::CurvePieceQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<BezierCurve3<Real>, Segment3<Real>> : detail::CurvePieceQuery<Real, Segment3<Real>> {};
+template <class Real> struct Query<BezierCurve3<Real>, Segment3<Real>> : detail::CurvePieceQuery<Real, Segment3<Real>> {
+};
 
 }  // namespace circledist

@@ -89,8 +89,8 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   // t = 0 before reaching its minimum. Ends within 2^-40 of the size of each other and of the
   // target (a closed loop through the point) count as such a curve too.
   static Real reach(const LocalBezier<Real>& c, const AxisTarget<Real>& target) {
-    const Real ends = std::max({target.distance(c.q[0]), target.distance(c.q[c.n]),
-                                std::sqrt((c.q[c.n] - c.q[0]).squaredNorm())});
+    const Real ends =
+        std::max({target.distance(c.q[0]), target.distance(c.q[c.n]), std::sqrt((c.q[c.n] - c.q[0]).squaredNorm())});
     return ends >= std::ldexp(c.size, -40) && c.size > std::ldexp(ends, 20) ? ends : c.size;
   }
 
@@ -101,30 +101,33 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   // sought among the line's minima. `every_minimum` polishes every candidate (no screening on
   // the best value so far, CurveRoundBase::polish): a ray or a segment needs the line's local minima
   // whose foot lies in the piece, not only the line's best one.
-  template <class Roots>
-  static Found solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round,
-                     const AxisTarget<Real>& target, Real scale, BestPiece<Real>* where = nullptr) {
-    return solve<Roots>(c, b, round, target, scale, where, [&](const Vec3<Real>& q) { return target.distance(q); },
-                        false);
+  template <class Roots> static Found solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b,
+                                            const Round<Real>& round, const AxisTarget<Real>& target, Real scale,
+                                            BestPiece<Real>* where = nullptr) {
+    return solve<Roots>(
+        c, b, round, target, scale, where, [&](const Vec3<Real>& q) { return target.distance(q); }, false);
   }
 
-  template <class Roots, class BoundOf>
-  static Found solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round,
-                     const AxisTarget<Real>& target, Real scale, BestPiece<Real>* where, const BoundOf& bound_of,
-                     bool every_minimum) {
-    return Base::solve_pieces(c, b, round, scale, bound_of, [&](const LocalBezier<Real>& piece, Real) {
-      const LocalBezier<Real> m = target.moved(piece);
-      const Real s = bezier_round_scale(m, Real(0));
-      typename Base::Starts starts;
-      starts.push(Real(0));
-      starts.push(Real(1));
-      push_curve_point_roots<Roots>(m, s, starts);
-      const auto h = [&](Real t) { return PointTarget<Real>::distance(m.at(t), Real(0)); };
-      const auto jet = [&](Real t) { return m.template jet<PointTarget<Real>>(t, Real(0)); };
-      if (!every_minimum) return Base::template polish<Roots>(m, starts, s, h, jet);
-      return polish_offsets<Roots>(jet, h, starts, Real(1e-3), Real(0), Real(1), parameter_tolerance(m.speed, s),
-                                   std::numeric_limits<Real>::infinity());
-    }, where);
+  template <class Roots, class BoundOf> static Found solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b,
+                                                           const Round<Real>& round, const AxisTarget<Real>& target,
+                                                           Real scale, BestPiece<Real>* where, const BoundOf& bound_of,
+                                                           bool every_minimum) {
+    return Base::solve_pieces(
+        c, b, round, scale, bound_of,
+        [&](const LocalBezier<Real>& piece, Real) {
+          const LocalBezier<Real> m = target.moved(piece);
+          const Real s = bezier_round_scale(m, Real(0));
+          typename Base::Starts starts;
+          starts.push(Real(0));
+          starts.push(Real(1));
+          push_curve_point_roots<Roots>(m, s, starts);
+          const auto h = [&](Real t) { return PointTarget<Real>::distance(m.at(t), Real(0)); };
+          const auto jet = [&](Real t) { return m.template jet<PointTarget<Real>>(t, Real(0)); };
+          if (!every_minimum) return Base::template polish<Roots>(m, starts, s, h, jet);
+          return polish_offsets<Roots>(jet, h, starts, Real(1e-3), Real(0), Real(1), parameter_tolerance(m.speed, s),
+                                       std::numeric_limits<Real>::infinity());
+        },
+        where);
   }
 
   // The best minimum's point on the curve, local and world (from its piece when the curve was
@@ -136,12 +139,12 @@ template <class Real> struct CurveAxisSolver : CurveRoundBase<Real> {
   }
 
   // Whether the minima hold another closest pair (detail/minimize.hpp's another_closest_pair).
-  template <int N>
-  static bool tied(const Minima<Real, N>& minima, const LocalBezier<Real>& c, const AxisTarget<Real>& target,
-                   const Vec3<Real>& pa, Real scale) {
+  template <int N> static bool tied(const Minima<Real, N>& minima, const LocalBezier<Real>& c,
+                                    const AxisTarget<Real>& target, const Vec3<Real>& pa, Real scale) {
     const auto other = [&](const Vec3<Real>& q, bool&) { return target.nearest(q); };
-    return another_closest_pair(minima, scale, [&](Real x) { return c.at(x); }, other, pa, target.nearest(pa),
-                                distinct_points_tolerance(std::min(scale, c.size)), distinct_points_tolerance(scale));
+    return another_closest_pair(
+        minima, scale, [&](Real x) { return c.at(x); }, other, pa, target.nearest(pa),
+        distinct_points_tolerance(std::min(scale, c.size)), distinct_points_tolerance(scale));
   }
 };
 

@@ -26,9 +26,9 @@
 namespace circledist {
 
 template <class Real> struct DistanceBounds {
-  Real lower = 0;                                         // the distance is >= lower
-  Real upper = std::numeric_limits<Real>::infinity();     // the distance is <= upper
-  Real scale = 1;                                         // the pair's length scale (for tolerances)
+  Real lower = 0;                                      // the distance is >= lower
+  Real upper = std::numeric_limits<Real>::infinity();  // the distance is <= upper
+  Real scale = 1;                                      // the pair's length scale (for tolerances)
   Real rounding = 0;  // what rounding of the shapes' coordinates can move the bounds by (far points)
 };
 
@@ -121,7 +121,8 @@ template <class Real> Range<Real> height_range(const Segment3<Real>& s, const Pl
   const Real a = plane.height(s.p0), b = plane.height(s.p1);
   return {std::min(a, b), std::max(a, b)};
 }
-template <class Real, class R, class = detail::target_t<R>> Range<Real> height_range(const R& round, const Plane<Real>& plane) {
+template <class Real, class R, class = detail::target_t<R>>
+Range<Real> height_range(const R& round, const Plane<Real>& plane) {
   const Real h = plane.height(round.center);
   const Vec3<Real> m = unit_vector(round.normal);
   const Real spread = round.radius * plane.n.cross(m).norm();  // radius * sin(angle between the planes)
@@ -168,12 +169,13 @@ template <class T> constexpr bool is_round_v = is_round<T>::value;
 template <class T> constexpr bool is_disk_v = std::is_same_v<T, Disk3<scalar_t<T>>>;
 template <class T> constexpr bool is_circle_v = std::is_same_v<T, Circle3<scalar_t<T>>>;
 template <class T> constexpr bool is_point_v = std::is_same_v<T, Vec3<scalar_t<T>>>;
-template <class T> constexpr bool is_linear_v =
-    std::is_same_v<T, Line3<scalar_t<T>>> || std::is_same_v<T, Ray3<scalar_t<T>>> ||
-    std::is_same_v<T, Segment3<scalar_t<T>>>;
+template <class T> constexpr bool is_linear_v = std::is_same_v<T, Line3<scalar_t<T>>> ||
+                                                std::is_same_v<T, Ray3<scalar_t<T>>> ||
+                                                std::is_same_v<T, Segment3<scalar_t<T>>>;
 
 // The exact distance from a point to a round (closed form).
-template <class Real, class R, class = detail::target_t<R>> Real point_round_distance(const Vec3<Real>& p, const R& round) {
+template <class Real, class R, class = detail::target_t<R>>
+Real point_round_distance(const Vec3<Real>& p, const R& round) {
   return Query<Vec3<Real>, R>::distance(p, round);
 }
 
@@ -199,10 +201,12 @@ void sample_linear_points(const detail::Linear<Real>& piece, const R& round, con
   const Real slope = plane.n.dot(piece.direction);
   if (slope != 0) visit(at(-plane.height(piece.origin) / slope));  // the plane crossing
 }
-template <class Real, class R, class Visit> void sample_points(const Line3<Real>& l, const R& round, const Visit& visit) {
+template <class Real, class R, class Visit>
+void sample_points(const Line3<Real>& l, const R& round, const Visit& visit) {
   sample_linear_points(detail::as_linear(l), round, visit);
 }
-template <class Real, class R, class Visit> void sample_points(const Ray3<Real>& l, const R& round, const Visit& visit) {
+template <class Real, class R, class Visit>
+void sample_points(const Ray3<Real>& l, const R& round, const Visit& visit) {
   sample_linear_points(detail::as_linear(l), round, visit);
 }
 template <class Real, class R, class Visit>
@@ -262,7 +266,8 @@ void sample_points(const A& a, const R& round, const Visit& visit) {
   }
 }
 // An arc: its ends, and its point toward the round's center where that angle falls on the arc.
-template <class Real, class R, class Visit> void sample_points(const Arc3<Real>& a, const R& round, const Visit& visit) {
+template <class Real, class R, class Visit>
+void sample_points(const Arc3<Real>& a, const R& round, const Visit& visit) {
   const detail::ArcSpan<Real> span(a);
   visit(span.world(a.center, a.radius, span.lo()));
   visit(span.world(a.center, a.radius, span.hi()));
@@ -274,7 +279,8 @@ template <class Real, class R, class Visit> void sample_points(const Arc3<Real>&
 }
 // An annulus: its outer disk's points that lie in the ring (not in the hole), and its inner rim's
 // (the annulus's point where the disk's fell in the hole, docs/derivations/annulus.md "Convex shapes").
-template <class Real, class R, class Visit> void sample_points(const Annulus3<Real>& a, const R& round, const Visit& visit) {
+template <class Real, class R, class Visit>
+void sample_points(const Annulus3<Real>& a, const R& round, const Visit& visit) {
   sample_points(detail::annulus_disk(a), round, [&](const Vec3<Real>& p) {
     if ((p - a.center).norm() >= a.inner_radius) visit(p);
   });
@@ -331,7 +337,8 @@ template <class A, class R> DistanceBounds<scalar_t<R>> bounds_against_round(con
   if constexpr (is_round_v<A>) out.lower = std::max(out.lower, height_range(b, Plane<Real>(a)).gap());
   // Upper: concrete points.
   if constexpr (is_disk_v<A> && is_disk_v<R>) {
-    const detail::DiskContact<Real> contact = detail::disk_contact(a, detail::Round<Real>(b.center, b.normal, b.radius), b.radius);
+    const detail::DiskContact<Real> contact =
+        detail::disk_contact(a, detail::Round<Real>(b.center, b.normal, b.radius), b.radius);
     if (contact.intersect && !contact.borderline) {
       out.upper = 0;
       return out;
@@ -346,14 +353,20 @@ template <class A, class R> DistanceBounds<scalar_t<R>> bounds_against_round(con
 
 // Whether bounds are worth computing for a pair: one side is a circle or disk and the other is not
 // a bare point (point-round distances are closed forms already cheaper than the bounds).
-template <class A, class B>
-constexpr bool has_bounds_v = (is_round_v<A> || is_round_v<B>) && !is_point_v<A> && !is_point_v<B>;
+template <class A, class B> constexpr bool has_bounds_v =
+    (is_round_v<A> || is_round_v<B>) && !is_point_v<A> && !is_point_v<B>;
 
 // A shape moved by -anchor: only its points move (directions, normals and radii stay).
 template <class Real> Vec3<Real> moved_by(const Vec3<Real>& p, const Vec3<Real>& o) { return p - o; }
-template <class Real> Line3<Real> moved_by(const Line3<Real>& l, const Vec3<Real>& o) { return {l.origin - o, l.direction}; }
-template <class Real> Ray3<Real> moved_by(const Ray3<Real>& r, const Vec3<Real>& o) { return {r.origin - o, r.direction}; }
-template <class Real> Segment3<Real> moved_by(const Segment3<Real>& s, const Vec3<Real>& o) { return {s.p0 - o, s.p1 - o}; }
+template <class Real> Line3<Real> moved_by(const Line3<Real>& l, const Vec3<Real>& o) {
+  return {l.origin - o, l.direction};
+}
+template <class Real> Ray3<Real> moved_by(const Ray3<Real>& r, const Vec3<Real>& o) {
+  return {r.origin - o, r.direction};
+}
+template <class Real> Segment3<Real> moved_by(const Segment3<Real>& s, const Vec3<Real>& o) {
+  return {s.p0 - o, s.p1 - o};
+}
 template <class R, class = detail::target_t<R>> R moved_by(const R& round, const Vec3<scalar_t<R>>& o) {
   return {round.center - o, round.normal, round.radius};
 }

@@ -104,7 +104,8 @@ struct Stop {
 // microseconds). Where no thread can be had, the caller runs the slices left. `work` must not
 // throw: it runs on threads that have no one to pass an exception to.
 template <class Work> void run_in_slices(std::ptrdiff_t size, int threads, std::ptrdiff_t smallest, Work&& work) {
-  const std::ptrdiff_t slices = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, size / std::max<std::ptrdiff_t>(smallest, 1)));
+  const std::ptrdiff_t slices =
+      std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, size / std::max<std::ptrdiff_t>(smallest, 1)));
   const auto bound = [&](std::ptrdiff_t s) { return size * s / slices; };
   std::vector<std::thread> pool;
   std::ptrdiff_t s = 0;
@@ -124,7 +125,8 @@ template <class Work> void run_in_slices(std::ptrdiff_t size, int threads, std::
 // with distinct indices are), the result is std::sort's whatever the thread count.
 template <class T> void sort_in_slices(std::vector<T>& v, int threads, std::ptrdiff_t smallest) {
   const std::ptrdiff_t size = std::ptrdiff_t(v.size());
-  const std::ptrdiff_t slices = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, size / std::max<std::ptrdiff_t>(smallest, 1)));
+  const std::ptrdiff_t slices =
+      std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, size / std::max<std::ptrdiff_t>(smallest, 1)));
   if (slices == 1) {
     std::sort(v.begin(), v.end());
     return;
@@ -132,7 +134,8 @@ template <class T> void sort_in_slices(std::vector<T>& v, int threads, std::ptrd
   std::vector<std::ptrdiff_t> bounds;
   for (std::ptrdiff_t s = 0; s <= slices; ++s) bounds.push_back(size * s / slices);
   run_in_slices(slices, int(slices), 1, [&](std::ptrdiff_t first, std::ptrdiff_t last) {
-    for (std::ptrdiff_t s = first; s < last; ++s) std::sort(v.begin() + bounds[size_t(s)], v.begin() + bounds[size_t(s + 1)]);
+    for (std::ptrdiff_t s = first; s < last; ++s)
+      std::sort(v.begin() + bounds[size_t(s)], v.begin() + bounds[size_t(s + 1)]);
   });
   std::vector<T> other(v.size());
   while (bounds.size() > 2) {
@@ -174,8 +177,8 @@ Volume<Real> bounded_volume(const Vec3<Real>& box_lo, const Vec3<Real>& box_hi, 
   return v;
 }
 
-template <class Real> Volume<Real> line_volume(const Vec3<Real>& origin, const Vec3<Real>& direction, bool ray,
-                                               Real sweep) {
+template <class Real>
+Volume<Real> line_volume(const Vec3<Real>& origin, const Vec3<Real>& direction, bool ray, Real sweep) {
   Volume<Real> v;
   if (!origin.allFinite() || !direction.allFinite() || !std::isfinite(sweep)) return v;
   v.kind = Volume<Real>::Kind::Unbounded;
@@ -259,7 +262,8 @@ template <class Real> Real lower_bound(const Volume<Real>& a, const Volume<Real>
 // The limit bounds are culled against for pairs within d (see the header comment): `scale` is
 // the larger of both sets' scale(), `relative` the margin per unit of size (sqrt(eps) by
 // default; a caller whose exact test is less accurate, e.g. in float, passes its own).
-template <class Real> Real cull_limit(Real d, Real scale, Real relative = std::sqrt(std::numeric_limits<Real>::epsilon())) {
+template <class Real>
+Real cull_limit(Real d, Real scale, Real relative = std::sqrt(std::numeric_limits<Real>::epsilon())) {
   return d + relative * (d + 2 * scale);
 }
 
@@ -337,8 +341,10 @@ template <class Real> class BoundingVolumeHierarchy {
         throw;
       }
     }
-    if (making.joinable()) making.join();
-    else if (!stop.stopped) make_buffers();
+    if (making.joinable())
+      making.join();
+    else if (!stop.stopped)
+      make_buffers();
     if (failure) std::rethrow_exception(failure);
     if (stop.stopped) throw BuildInterrupted();
     // The volumes in the leaves' order, then the unbounded ones: a leaf's shapes lie side by side
@@ -435,7 +441,9 @@ template <class Real> class BoundingVolumeHierarchy {
         bool operator>(const NodeEntry& o) const { return bound > o.bound || (bound == o.bound && least > o.least); }
       };
       std::priority_queue<NodeEntry, std::vector<NodeEntry>, std::greater<NodeEntry>> open;
-      const auto push = [&](BroadIndex at) { open.push({node_bound(q, nodes_[size_t(at)]), nodes_[size_t(at)].least, at}); };
+      const auto push = [&](BroadIndex at) {
+        open.push({node_bound(q, nodes_[size_t(at)]), nodes_[size_t(at)].least, at});
+      };
       push(0);
       while (!open.empty()) {
         const NodeEntry top = open.top();
@@ -456,10 +464,10 @@ template <class Real> class BoundingVolumeHierarchy {
 
  private:
   struct Node {
-    Vec3<Real> lo, hi;      // the box of the boxes under the node
-    Vec3<Real> center;      // a ball holding the balls under the node
+    Vec3<Real> lo, hi;  // the box of the boxes under the node
+    Vec3<Real> center;  // a ball holding the balls under the node
     Real radius = 0;
-    Real reach = 0;         // the largest Volume::reach under the node (for a PairLimit)
+    Real reach = 0;                   // the largest Volume::reach under the node (for a PairLimit)
     BroadIndex first = 0, count = 0;  // a leaf: the shapes at positions [first, first + count)
     BroadIndex right = 0;             // an inner node: its children are the next node and `right`
     BroadIndex least = 0;             // the least index of a shape under the node
@@ -470,7 +478,7 @@ template <class Real> class BoundingVolumeHierarchy {
   std::vector<BroadIndex> index_;      // the shape at each position
   std::vector<BroadIndex> position_;   // the position of each shape
   BroadIndex bounded_ = 0;             // positions [0, bounded_) are in the tree
-  std::vector<Node> nodes_;           // depth first: a node's left child follows it
+  std::vector<Node> nodes_;            // depth first: a node's left child follows it
   int leaf_size_ = 4;
   // The fewest shapes worth a thread of their own in a loop over them (a thread costs tens of
   // microseconds, a shape a few nanoseconds).
@@ -623,7 +631,6 @@ template <class Real> class BoundingVolumeHierarchy {
     }
     node.least = std::min(nodes_[size_t(at + 1)].least, nodes_[size_t(node.right)].least);
   }
-
 };
 
 // A hierarchy that grows: shapes come in batches, numbered on from the ones before, with queries
@@ -645,7 +652,8 @@ template <class Real> class GrowingHierarchy {
     if (volumes.empty()) return;
     BroadIndex taken = 0;
     size_t keep = trees_.size();
-    while (keep > 0 && trees_[keep - 1].size() < 2 * (BroadIndex(volumes.size()) + taken)) taken += trees_[--keep].size();
+    while (keep > 0 && trees_[keep - 1].size() < 2 * (BroadIndex(volumes.size()) + taken))
+      taken += trees_[--keep].size();
     if (taken > 0) {
       std::vector<Volume<Real>> all;
       all.reserve(size_t(taken) + volumes.size());
@@ -692,7 +700,8 @@ template <class Real> class GrowingHierarchy {
   }
 
   // BoundingVolumeHierarchy's visit_within over every tree.
-  template <class Limit, class Visit> void visit_within(const Volume<Real>& q, const Limit& limit, Visit&& visit) const {
+  template <class Limit, class Visit>
+  void visit_within(const Volume<Real>& q, const Limit& limit, Visit&& visit) const {
     for (size_t t = 0; t < trees_.size(); ++t)
       trees_[t].visit_within(q, limit, [&, first = first_[t]](BroadIndex j, Real bound) { visit(first + j, bound); });
   }
@@ -709,8 +718,8 @@ template <class Real> class GrowingHierarchy {
 
  private:
   static constexpr int kLeafSize = 4;
-  std::vector<Tree> trees_;          // oldest first
-  std::vector<BroadIndex> first_;    // the number of each tree's first shape
+  std::vector<Tree> trees_;        // oldest first
+  std::vector<BroadIndex> first_;  // the number of each tree's first shape
   BroadIndex size_ = 0;
   Real scale_ = 0;
 };
@@ -771,17 +780,18 @@ inline void sort_pairs(BroadPairs& pairs, BroadIndex n) {
   std::vector<size_t> at(start.begin(), start.end() - 1);
   for (const auto& p : pairs) out[at[size_t(p.first)]++] = p;
   for (size_t i = 0; i + 1 < start.size(); ++i)
-    if (start[i + 1] - start[i] > 1) std::sort(out.begin() + std::ptrdiff_t(start[i]), out.begin() + std::ptrdiff_t(start[i + 1]));
+    if (start[i + 1] - start[i] > 1)
+      std::sort(out.begin() + std::ptrdiff_t(start[i]), out.begin() + std::ptrdiff_t(start[i + 1]));
   pairs.swap(out);
 }
 
 // Candidate pairs (i, j), i of `queries` and j of `tree`, whose lower bound is <= limit, for the
 // queries i = order[k], k in [begin, end) (order: e.g. spatial_order(queries)), appended to `out`
 // unsorted. Threads split [0, queries.size()) and sort_pairs joins their parts.
-template <class Real, class Limit>
-void candidate_pairs(const std::vector<Volume<Real>>& queries, const std::vector<BroadIndex>& order,
-                     const BoundingVolumeHierarchy<Real>& tree, const Limit& limit, BroadIndex begin, BroadIndex end,
-                     BroadPairs& out) {
+template <class Real, class Limit> void candidate_pairs(const std::vector<Volume<Real>>& queries,
+                                                        const std::vector<BroadIndex>& order,
+                                                        const BoundingVolumeHierarchy<Real>& tree, const Limit& limit,
+                                                        BroadIndex begin, BroadIndex end, BroadPairs& out) {
   for (BroadIndex k = begin; k < end; ++k) {
     const BroadIndex i = order[size_t(k)];
     tree.visit_within(queries[size_t(i)], limit, [&](BroadIndex j, Real) { out.emplace_back(i, j); });
@@ -791,9 +801,8 @@ void candidate_pairs(const std::vector<Volume<Real>>& queries, const std::vector
 // Candidate pairs i < j within the tree's own set, for the shapes i = tree.order()[k], k in
 // [begin, end) (each pair is found from both ends and kept from the one of smaller index),
 // appended to `out` unsorted.
-template <class Real, class Limit>
-void candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, const Limit& limit, BroadIndex begin, BroadIndex end,
-                     BroadPairs& out) {
+template <class Real, class Limit> void candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, const Limit& limit,
+                                                        BroadIndex begin, BroadIndex end, BroadPairs& out) {
   for (BroadIndex k = begin; k < end; ++k) {
     const BroadIndex i = tree.order()[size_t(k)];
     tree.visit_within(tree.volume(i), limit, [&](BroadIndex j, Real) {
@@ -803,9 +812,9 @@ void candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, const Limit& lim
 }
 
 // Every candidate pair between two sets, sorted by (i, j) (one thread).
-template <class Real, class Limit>
-BroadPairs candidate_pairs(const std::vector<Volume<Real>>& queries, const BoundingVolumeHierarchy<Real>& tree,
-                           const Limit& limit) {
+template <class Real, class Limit> BroadPairs candidate_pairs(const std::vector<Volume<Real>>& queries,
+                                                              const BoundingVolumeHierarchy<Real>& tree,
+                                                              const Limit& limit) {
   BroadPairs out;
   candidate_pairs(queries, spatial_order(queries), tree, limit, 0, BroadIndex(queries.size()), out);
   sort_pairs(out, BroadIndex(queries.size()));
@@ -813,7 +822,8 @@ BroadPairs candidate_pairs(const std::vector<Volume<Real>>& queries, const Bound
 }
 
 // Every candidate pair i < j within one set, sorted (one thread).
-template <class Real, class Limit> BroadPairs candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, const Limit& limit) {
+template <class Real, class Limit>
+BroadPairs candidate_pairs(const BoundingVolumeHierarchy<Real>& tree, const Limit& limit) {
   BroadPairs out;
   candidate_pairs(tree, limit, 0, tree.size(), out);
   sort_pairs(out, tree.size());

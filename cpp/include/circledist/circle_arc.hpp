@@ -55,9 +55,8 @@ template <class Real, class Target> struct ArcRoundQuery {
 
   // `heights`: against a disk, circle-disk's height candidates (computed once for the verdict
   // and the solve); unused against a ring.
-  template <class Roots>
-  static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
-                               const Heights& heights) {
+  template <class Roots> static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c,
+                                                      Real radius, Real scale, const Heights& heights) {
     const CircleOverRound<Real> view(c, radius);
     const auto distance = [&](Real t) { return view.template distance<Target>(t); };
     const auto h = with_end_values(span, distance);
@@ -68,8 +67,9 @@ template <class Real, class Target> struct ArcRoundQuery {
       // disk parallel to the arc's plane (rounding noise there: the distance is the planes' gap
       // over the disk) came out differently, and the continuum's `unique` with them, wrong in 4
       // of 6 changed cases (docs/derivations/arc.md, "Cost").
-      return polish_on_arc<Roots>(span, CircleDisk::template candidates<Roots>(view, scale, heights, arc_bound(span, h)),
-                                  jet, h, c.radius, scale);
+      return polish_on_arc<Roots>(span,
+                                  CircleDisk::template candidates<Roots>(view, scale, heights, arc_bound(span, h)), jet,
+                                  h, c.radius, scale);
     } else {
       (void)heights;
       using CircleCircle = Query<Circle3<Real>, Circle3<Real>>;
@@ -96,9 +96,8 @@ template <class Real, class Target> struct ArcRoundQuery {
     Real best;
     bool decided;
   };
-  template <class Roots>
-  static HeightVerdict height_verdict(const ArcSpan<Real>& span, const LocalCircle<Real>& c, Real radius, Real scale,
-                                      const Heights& heights) {
+  template <class Roots> static HeightVerdict height_verdict(const ArcSpan<Real>& span, const LocalCircle<Real>& c,
+                                                             Real radius, Real scale, const Heights& heights) {
     // One sine and cosine per point: |z| at each, then the disk's distance only at the points
     // whose |z| is within the tolerance of the lowest (elsewhere it is at least |z|, above
     // lowest + tolerance: such a point can neither decide nor be the decided best).
@@ -193,9 +192,8 @@ template <class Real, class Target> struct ArcRoundQuery {
 
 template <class Real> struct ArcArcQuery {
   // A (span: an arc, or a circle whole) parametrized against arc B.
-  template <class Roots>
-  static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c, const ArcTarget<Real>& target,
-                               Real scale) {
+  template <class Roots> static ArcMinima<Real> solve(const ArcSpan<Real>& span, const LocalCircle<Real>& c,
+                                                      const ArcTarget<Real>& target, Real scale) {
     const CircleOverRound<Real> view(c, target.radius);
     // One sine and cosine per evaluation: the point for the sector test and the ring's form
     // from the same cos t and sin t (CircleOverRound's overloads: the values of the angle forms
@@ -211,7 +209,8 @@ template <class Real> struct ArcArcQuery {
       const Real cs = std::cos(t), sn = std::sin(t);
       const Vec3<Real> w = cs * c.e1 + sn * c.e2, p = c.center + w;
       const int e = target.nearest_end(p);
-      return e < 0 ? view.template jet<RingTarget<Real>>(cs, sn) : point_jet(p, Vec3<Real>(cs * c.e2 - sn * c.e1), Vec3<Real>(-w), target.end[e]);
+      return e < 0 ? view.template jet<RingTarget<Real>>(cs, sn)
+                   : point_jet(p, Vec3<Real>(cs * c.e2 - sn * c.e1), Vec3<Real>(-w), target.end[e]);
     };
     const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, target.radius); };
     // The ring's octic under a distance A's arc reaches (the arc's distance is at least the

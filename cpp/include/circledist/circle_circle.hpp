@@ -35,9 +35,9 @@ template <class Real> struct CircleCirclePair {
   // samples or the caller's; an arc passes one its own points reach, detail/arc_span.hpp), and the extra
   // starts below. `samples` are the full circle's (sampled_distances).
   // `within`: an arc's angles, where alone its octic is searched (push_circle_ring_roots).
-  template <class Roots>
-  static Starts candidates(const CircleOverRound<Real>& view, Real scale, Real bound,
-                           const SampledDistances<Real>& samples, const Intervals<Real>* within = nullptr) {
+  template <class Roots> static Starts candidates(const CircleOverRound<Real>& view, Real scale, Real bound,
+                                                  const SampledDistances<Real>& samples,
+                                                  const Intervals<Real>* within = nullptr) {
     Starts starts;
     push_circle_candidates(starts);
     push_circle_ring_roots<Roots>(view, scale, bound, starts, within);

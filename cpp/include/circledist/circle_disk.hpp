@@ -46,7 +46,8 @@ template <class Real> struct CircleDiskPair {
     return heights;
   }
 
-  template <class Roots> static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale) {
+  template <class Roots>
+  static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale) {
     return solve<Roots>(c, radius, scale, height_candidates<Roots>(c, scale));
   }
 
@@ -55,9 +56,8 @@ template <class Real> struct CircleDiskPair {
   // ring's: there the minimum is at most `bound`, any disk distance the circle reaches (its best
   // sample; an arc passes one its own points reach, detail/arc_span.hpp) (ring_search_intervals).
   // `within`: an arc's angles, where alone its octic is searched (push_circle_ring_roots).
-  template <class Roots>
-  static Starts candidates(const CircleOverRound<Real>& view, Real scale, const Heights& heights, Real bound,
-                           const Intervals<Real>* within = nullptr) {
+  template <class Roots> static Starts candidates(const CircleOverRound<Real>& view, Real scale, const Heights& heights,
+                                                  Real bound, const Intervals<Real>* within = nullptr) {
     Starts starts;
     for (int i = 0; i < heights.count; ++i) starts.push(heights.value[i]);
     push_rim_partition<Roots>(view, scale, starts);
@@ -65,9 +65,8 @@ template <class Real> struct CircleDiskPair {
     return starts;
   }
 
-  template <class Roots>
-  static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
-                                              const Heights& heights) {
+  template <class Roots> static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius,
+                                                                     Real scale, const Heights& heights) {
     const CircleOverRound<Real> view(c, radius);
     const auto squared = [&](const Vec3<Real>& p) { return DiskTarget<Real>::distance_squared(p, radius); };
     const Starts starts = candidates<Roots>(view, scale, heights, sampled_distance(c, squared));

@@ -81,9 +81,9 @@ template <class Roots> struct Counted {
     return Roots::roots(coefficients, degree, lo, hi, out);
   }
 
-  template <class Real, int Capacity>
-  static void roots_in(const Real* coefficients, int degree, const Intervals<Real>& intervals,
-                       Candidates<Real, Capacity>& out) {
+  template <class Real, int Capacity> static void roots_in(const Real* coefficients, int degree,
+                                                           const Intervals<Real>& intervals,
+                                                           Candidates<Real, Capacity>& out) {
     ++stats().solves;
     Roots::roots_in(coefficients, degree, intervals, out);
   }
@@ -172,11 +172,12 @@ WithinAnswer<scalar_t<core_t<A>>> moderate_within(const A& a, const B& b, scalar
 template <class S> auto promoted_shape(const S& s) { return promoted(s); }
 template <class S> auto promoted_shape(const Swept<S>& s) { return swept(promoted(s.shape), double(s.sweep)); }
 template <class S> S scaled_shape(const S& s, int e) { return scaled(s, e); }
-template <class S> Swept<S> scaled_shape(const Swept<S>& s, int e) { return {scaled(s.shape, e), std::ldexp(s.sweep, e)}; }
-template <class A, class B>
-constexpr bool promotable_pair_v = promotable<core_t<A>>::value && promotable<core_t<B>>::value;
-template <class A, class B>
-constexpr bool scalable_pair_v = scalable<core_t<A>>::value && scalable<core_t<B>>::value;
+template <class S> Swept<S> scaled_shape(const Swept<S>& s, int e) {
+  return {scaled(s.shape, e), std::ldexp(s.sweep, e)};
+}
+template <class A, class B> constexpr bool promotable_pair_v =
+    promotable<core_t<A>>::value && promotable<core_t<B>>::value;
+template <class A, class B> constexpr bool scalable_pair_v = scalable<core_t<A>>::value && scalable<core_t<B>>::value;
 
 }  // namespace detail
 

@@ -13,6 +13,7 @@ namespace circledist {
 
 template <class Real> struct Query<Line3<Real>, Annulus3<Real>> : detail::ConvexAnnulusQuery<Real, Line3<Real>> {};
 template <class Real> struct Query<Ray3<Real>, Annulus3<Real>> : detail::ConvexAnnulusQuery<Real, Ray3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Annulus3<Real>> : detail::ConvexAnnulusQuery<Real, Segment3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Annulus3<Real>> : detail::ConvexAnnulusQuery<Real, Segment3<Real>> {
+};
 
 }  // namespace circledist

@@ -98,7 +98,7 @@ template <class Real> struct ArcEnds {
   Vec3<Real> u, v;  // |W|^2 times the start's in-plane part (u'), and W x u' (|v| = |W| |u|)
   Vec3<Real> end[2];
   Real angle = 0, s = 0, length = 0;  // |W|, |u|
-  bool usable = false;  // false: a start along the normal, a zero or huge normal, a NaN angle
+  bool usable = false;                // false: a start along the normal, a zero or huge normal, a NaN angle
 
   // Unnormalized (no division: the sector test is an angle, scale-free; find_ends scales).
   // W is first scaled by a power of two (exact: only its direction counts) to |W|^2 in
@@ -201,7 +201,8 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
     if (test.verdict != 0 || line_data.on_axis) return false;
     const Vec3<Real>& direction = pl.line.direction;
     Real tau;
-    if (std::isfinite(linear.lo) && end_point_slope(piece_end(piece, linear.lo), c, line_data.unit_normal, direction) > 0)
+    if (std::isfinite(linear.lo) &&
+        end_point_slope(piece_end(piece, linear.lo), c, line_data.unit_normal, direction) > 0)
       tau = linear.lo;
     else if (std::isfinite(linear.hi) &&
              end_point_slope(piece_end(piece, linear.hi), c, line_data.unit_normal, direction) < 0)
@@ -316,7 +317,8 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
     const Real tie = tie_tolerance(scale), apart = distinct_points_tolerance(scale);
     for (int i = 0; i < count; ++i)
       if (i != best && list[i].value <= out.value + tie &&
-          ((list[i].arc_point - out.arc_point).norm() > apart || (list[i].piece_point - out.piece_point).norm() > apart))
+          ((list[i].arc_point - out.arc_point).norm() > apart ||
+           (list[i].piece_point - out.piece_point).norm() > apart))
         out.tied = true;
     if (!out.unique) out.tied = true;
   }
@@ -390,9 +392,9 @@ template <class Real, class Piece> struct PieceArcQuery {
     r.param_a = Vec2<Real>(t, 0);
     r.point_b = span.world(arc.center, arc.radius, best);
     r.param_b = span.param(best);
-    r.unique = !another_closest_pair(minima, scale, at, piece_point_of, pa, pb,
-                                     distinct_points_tolerance(std::min(scale, arc.radius)),
-                                     distinct_points_tolerance(scale));
+    r.unique =
+        !another_closest_pair(minima, scale, at, piece_point_of, pa, pb,
+                              distinct_points_tolerance(std::min(scale, arc.radius)), distinct_points_tolerance(scale));
     return r;
   }
 };

@@ -105,9 +105,9 @@ bool choose_from_line(const Piece& piece, const Circle3<Real>& c, PieceChoice<Re
   };
   const auto may_hold = [&](Real tau_max) {
     const Real lo = tau_of(linear.lo), hi = tau_of(linear.hi);
-    const Real slack = 64 * std::numeric_limits<Real>::epsilon() * (std::abs(tau_max) + m.anchor.norm() +
-                                                                      (std::isfinite(lo) ? std::abs(lo) : Real(0)) +
-                                                                      (std::isfinite(hi) ? std::abs(hi) : Real(0)));
+    const Real slack = 64 * std::numeric_limits<Real>::epsilon() *
+                       (std::abs(tau_max) + m.anchor.norm() + (std::isfinite(lo) ? std::abs(lo) : Real(0)) +
+                        (std::isfinite(hi) ? std::abs(hi) : Real(0)));
     return tau_max > 0 ? hi >= -slack && lo <= tau_max + slack : lo <= slack && hi >= tau_max - slack;
   };
   const int other = other_line_minimum<Roots>(m, c.radius, out.second, may_hold, second_test);
@@ -138,8 +138,7 @@ bool choose_from_line(const Piece& piece, const Circle3<Real>& c, PieceChoice<Re
   return true;
 }
 
-template <class Real>
-Result<Real> line_minimum_result(const PieceChoice<Real>& choice, const Circle3<Real>& c) {
+template <class Real> Result<Real> line_minimum_result(const PieceChoice<Real>& choice, const Circle3<Real>& c) {
   return line_ring_result(choice.line, c, choice.winner == PieceChoice<Real>::kSecond ? choice.second : choice.global);
 }
 

@@ -27,7 +27,9 @@ namespace detail {
 template <class Real, class Piece> using LinearDiskQuery = LinearRoundQuery<Real, Piece, DiskTarget<Real>>;
 
 // The disk's rim, the circle line_ring_minimum answers a line against.
-template <class Real> Circle3<Real> disk_rim(const Disk3<Real>& disk) { return {disk.center, disk.normal, disk.radius}; }
+template <class Real> Circle3<Real> disk_rim(const Disk3<Real>& disk) {
+  return {disk.center, disk.normal, disk.radius};
+}
 
 // A full line's distance to a disk: zero where it crosses the disk's plane inside the rim, and
 // otherwise its distance to the rim circle. The distance to the line is convex over the plane and

@@ -51,7 +51,8 @@ template <class Real> Linear<Real> unit_scaled(const Linear<Real>& piece, int& e
 
 // `exact` is set to the candidates that may be the least (within their rounding of the best) when
 // the rounding of the pieces' offsets may exceed about 1e3 eps of the answer; else 0.
-template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact);
+template <class Real>
+LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact);
 
 template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const Linear<Real>& b) {
   int ea = 0, eb = 0;
@@ -75,7 +76,8 @@ template <class Real> LinearPair<Real> linear_pair(const Linear<Real>& a, const 
   return p;
 }
 
-template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact) {
+template <class Real>
+LinearPair<Real> linear_pair_scaled(const Linear<Real>& a, const Linear<Real>& b, unsigned& exact) {
   const Vec3<Real>& u = a.direction;
   const Vec3<Real>& v = b.direction;
   const Vec3<Real> w = a.origin - b.origin;
@@ -104,8 +106,12 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
     }
   };
   // The stationary value of one parameter with the other fixed, clamped.
-  const auto t_for = [&](Real s) { return b_point ? clamp_to(Real(0), b.lo, b.hi) : clamp_to((bb * s + ee) / cc, b.lo, b.hi); };
-  const auto s_for = [&](Real t) { return a_point ? clamp_to(Real(0), a.lo, a.hi) : clamp_to((bb * t - dd) / aa, a.lo, a.hi); };
+  const auto t_for = [&](Real s) {
+    return b_point ? clamp_to(Real(0), b.lo, b.hi) : clamp_to((bb * s + ee) / cc, b.lo, b.hi);
+  };
+  const auto s_for = [&](Real t) {
+    return a_point ? clamp_to(Real(0), a.lo, a.hi) : clamp_to((bb * t - dd) / aa, a.lo, a.hi);
+  };
   // The candidates on the box's edges: a finite end of one piece, the other parameter its
   // stationary value clamped.
   const auto for_each_end = [&](const auto& visit) {
@@ -138,7 +144,8 @@ template <class Real> LinearPair<Real> linear_pair_scaled(const Linear<Real>& a,
       // scenes beyond the moderate range back by up to 2^1023, could not even represent the
       // points): the dot-product values stand, as before, with `unique` false from the
       // parallel test below.
-      const Real scene = std::max({w.cwiseAbs().maxCoeff(), a.origin.cwiseAbs().maxCoeff(), b.origin.cwiseAbs().maxCoeff()});
+      const Real scene =
+          std::max({w.cwiseAbs().maxCoeff(), a.origin.cwiseAbs().maxCoeff(), b.origin.cwiseAbs().maxCoeff()});
       const Real far = scene / std::numeric_limits<Real>::epsilon();
       if (std::abs(s_accurate) * std::sqrt(aa) <= far && std::abs(t_accurate) * std::sqrt(cc) <= far) {
         s = s_accurate;
@@ -223,11 +230,16 @@ template <class Real, class PieceA, class PieceB> struct LinearLinearQuery {
 
 }  // namespace detail
 
-template <class Real> struct Query<Line3<Real>, Line3<Real>> : detail::LinearLinearQuery<Real, Line3<Real>, Line3<Real>> {};
-template <class Real> struct Query<Line3<Real>, Ray3<Real>> : detail::LinearLinearQuery<Real, Line3<Real>, Ray3<Real>> {};
-template <class Real> struct Query<Line3<Real>, Segment3<Real>> : detail::LinearLinearQuery<Real, Line3<Real>, Segment3<Real>> {};
+template <class Real> struct Query<Line3<Real>, Line3<Real>>
+    : detail::LinearLinearQuery<Real, Line3<Real>, Line3<Real>> {};
+template <class Real> struct Query<Line3<Real>, Ray3<Real>> : detail::LinearLinearQuery<Real, Line3<Real>, Ray3<Real>> {
+};
+template <class Real> struct Query<Line3<Real>, Segment3<Real>>
+    : detail::LinearLinearQuery<Real, Line3<Real>, Segment3<Real>> {};
 template <class Real> struct Query<Ray3<Real>, Ray3<Real>> : detail::LinearLinearQuery<Real, Ray3<Real>, Ray3<Real>> {};
-template <class Real> struct Query<Ray3<Real>, Segment3<Real>> : detail::LinearLinearQuery<Real, Ray3<Real>, Segment3<Real>> {};
-template <class Real> struct Query<Segment3<Real>, Segment3<Real>> : detail::LinearLinearQuery<Real, Segment3<Real>, Segment3<Real>> {};
+template <class Real> struct Query<Ray3<Real>, Segment3<Real>>
+    : detail::LinearLinearQuery<Real, Ray3<Real>, Segment3<Real>> {};
+template <class Real> struct Query<Segment3<Real>, Segment3<Real>>
+    : detail::LinearLinearQuery<Real, Segment3<Real>, Segment3<Real>> {};
 
 }  // namespace circledist

@@ -67,7 +67,8 @@ template <class Real> struct PointArcPair {
                        seen.norm2 * start.z() - k * seen.wz);
     // |u'| = sqrt(|u'|^2) (Eigen's norm()): zero exactly where its square is, so the test needs
     // no square root; the length itself only where an end point is formed.
-    if (!(u.squaredNorm() > 0)) return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
+    if (!(u.squaredNorm() > 0))
+      return cold_solve(p, arc, on_ring);  // no projection: Frame's U (the definition's fallback)
     const Vec3<Real> v(seen.wy * u.z() - seen.wz * u.y(), seen.wz * u.x() - seen.wx * u.z(),
                        seen.wx * u.y() - seen.wy * u.x());
     if (seen.on_axis(radius)) {  // every arc point as close: the start
@@ -171,7 +172,8 @@ template <class Real> struct PointArcPair {
 #if defined(__GNUC__) || defined(__clang__)
   __attribute__((noinline, cold))
 #endif
-  static Result<Real> cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
+  static Result<Real>
+  cold_solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
     Arc3<Real> a = arc;
     a.start = Frame<Real>(arc.normal).u;
     if (!(a.start.squaredNorm() > 0)) {  // a zero or NaN normal: no answer

@@ -23,7 +23,8 @@ template <class Real, class Piece> struct PointLinearQuery {
   static Real parameter(const Vec3<Real>& offset, const Linear<Real>& l, Linear<Real>& scaled, int& exponent) {
     scaled = unit_scaled(l, exponent);
     const Real aa = scaled.direction.squaredNorm();
-    return aa > 0 ? clamp_to(offset.dot(scaled.direction) / aa, scaled.lo, scaled.hi) : clamp_to(Real(0), scaled.lo, scaled.hi);
+    return aa > 0 ? clamp_to(offset.dot(scaled.direction) / aa, scaled.lo, scaled.hi)
+                  : clamp_to(Real(0), scaled.lo, scaled.hi);
   }
 
   // The closest point's offset from p, from p's offset from the origin (subtracted first, exact
@@ -59,7 +60,8 @@ template <class Real, class Piece> struct PointLinearQuery {
       }
     }
     if constexpr (WithPoint)
-      out.point_b = scaled.has_end && out.t == scaled.hi ? scaled.end : Vec3<Real>(scaled.origin + out.t * scaled.direction);
+      out.point_b =
+          scaled.has_end && out.t == scaled.hi ? scaled.end : Vec3<Real>(scaled.origin + out.t * scaled.direction);
     out.t = std::ldexp(out.t, -exponent);
     return out;
   }

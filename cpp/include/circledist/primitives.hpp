@@ -77,8 +77,8 @@ template <class Real> bool precedes(const Vec3<Real>& x, const Vec3<Real>& y) {
   return std::lexicographical_compare(x.data(), x.data() + 3, y.data(), y.data() + 3);
 }
 namespace detail {
-template <class Real> bool precedes_pair(const Vec3<Real>& x0, const Vec3<Real>& x1, const Vec3<Real>& y0,
-                                         const Vec3<Real>& y1) {
+template <class Real>
+bool precedes_pair(const Vec3<Real>& x0, const Vec3<Real>& x1, const Vec3<Real>& y0, const Vec3<Real>& y1) {
   return precedes(x0, y0) || (!precedes(y0, x0) && precedes(x1, y1));
 }
 }  // namespace detail
@@ -101,9 +101,7 @@ template <class Round> bool precedes_round(const Round& x, const Round& y) {
 template <class Real> bool precedes(const Circle3<Real>& x, const Circle3<Real>& y) {
   return detail::precedes_round(x, y);
 }
-template <class Real> bool precedes(const Disk3<Real>& x, const Disk3<Real>& y) {
-  return detail::precedes_round(x, y);
-}
+template <class Real> bool precedes(const Disk3<Real>& x, const Disk3<Real>& y) { return detail::precedes_round(x, y); }
 // Arcs: as circles, then the start and the angle.
 template <class Real> bool precedes(const Arc3<Real>& x, const Arc3<Real>& y) {
   if (detail::precedes_round(x, y)) return true;
@@ -217,7 +215,9 @@ template <class Real> Real extent(const Arc3<Real>& a) { return std::max(extent(
 // The parameters of the shape from those of the scaled one: a disk's s is a length; a line's or
 // ray's t follows its direction's scaling (P = o + t' d 2^-k in the scene scaled by 2^e, so
 // t = t' 2^(-k-e)); a segment's t, a curve's t and angles do not change.
-template <class Real, class Shape> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Shape&, int) { return param; }
+template <class Real, class Shape> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Shape&, int) {
+  return param;
+}
 template <class Real> Vec2<Real> unscaled_param(const Vec2<Real>& param, const Disk3<Real>&, int e) {
   return Vec2<Real>(std::ldexp(param.x(), -e), param.y());
 }
@@ -234,7 +234,9 @@ template <class Real> Vec2<Real> unscaled_param(const Vec2<Real>& param, const R
 // Templates deduced from the argument (no conversions: an Eigen vector of double would convert
 // to one of float), enabled for float only.
 template <class Real> using if_float = std::enable_if_t<std::is_same<Real, float>::value, int>;
-template <class Real, if_float<Real> = 0> Vec3<double> promoted(const Vec3<Real>& p) { return p.template cast<double>(); }
+template <class Real, if_float<Real> = 0> Vec3<double> promoted(const Vec3<Real>& p) {
+  return p.template cast<double>();
+}
 template <class Real, if_float<Real> = 0> Line3<double> promoted(const Line3<Real>& l) {
   return {promoted(l.origin), promoted(l.direction)};
 }
@@ -369,7 +371,8 @@ template <class Real>
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline, cold))
 #endif
-Vec3<Real> unit_vector_scaled(const Vec3<Real>& v) {
+Vec3<Real>
+unit_vector_scaled(const Vec3<Real>& v) {
   const int exponent = std::ilogb(v.cwiseAbs().maxCoeff());
   const Vec3<Real> w(std::ldexp(v.x(), -exponent), std::ldexp(v.y(), -exponent), std::ldexp(v.z(), -exponent));
   return w / w.norm();

@@ -44,8 +44,9 @@ template <class A> struct needs_order : std::true_type {};
 template <class Real> struct needs_order<Vec3<Real>> : std::false_type {};
 template <class A, class B, class = void> struct ordered : std::false_type {};
 template <class A>
-struct ordered<A, A, std::enable_if_t<needs_order<A>::value,
-                                      std::void_t<decltype(precedes(std::declval<const A&>(), std::declval<const A&>()))>>>
+struct ordered<A, A,
+               std::enable_if_t<needs_order<A>::value,
+                                std::void_t<decltype(precedes(std::declval<const A&>(), std::declval<const A&>()))>>>
     : std::true_type {};
 template <class A, class B> constexpr bool ordered_v = ordered<A, B>::value;
 
@@ -55,7 +56,8 @@ template <class A, class = void> struct promotable : std::false_type {};
 template <class A> struct promotable<A, std::void_t<decltype(promoted(std::declval<const A&>()))>> : std::true_type {};
 template <class A, class = void> struct scalable : std::false_type {};
 template <class A>
-struct scalable<A, std::void_t<decltype(scaled(std::declval<const A&>(), 0)), decltype(extent(std::declval<const A&>()))>>
+struct scalable<A,
+                std::void_t<decltype(scaled(std::declval<const A&>(), 0)), decltype(extent(std::declval<const A&>()))>>
     : std::true_type {};
 
 // Distances between 2^(min_exponent / 4) and 2^(max_exponent / 4) (1e-77 .. 1e77 in double) are

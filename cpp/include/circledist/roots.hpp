@@ -42,8 +42,7 @@ enum class Polish { Newton, Bracketed };
 // candidate's start value tells how low it can lead (screening_margin, detail/angle_polish.hpp).
 // Policies that do not say are taken as not accurate.
 template <class Roots, class = void> struct has_accurate_roots : std::false_type {};
-template <class Roots>
-struct has_accurate_roots<Roots, std::enable_if_t<Roots::accurate_roots>> : std::true_type {};
+template <class Roots> struct has_accurate_roots<Roots, std::enable_if_t<Roots::accurate_roots>> : std::true_type {};
 
 // Degree 8 covers the line and circle queries (the circle-disk and circle-circle octics);
 // coefficients ascending. Curves need more: a Bezier curve of degree n against a circle gives
@@ -99,7 +98,10 @@ template <class Real> struct Intervals {
         if (++pieces > capacity) return *this;
         out.add(a, b);
       }
-      if (hi[i] < other.hi[j]) ++i; else ++j;
+      if (hi[i] < other.hi[j])
+        ++i;
+      else
+        ++j;
     }
     return out;
   }
@@ -181,9 +183,15 @@ template <class Matrix> void balance(Matrix& a) {
       if (col == 0 || row == 0) continue;
       Real g = row / radix, f = 1;
       const Real s = col + row;
-      while (col < g) { f *= radix; col *= radix2; }
+      while (col < g) {
+        f *= radix;
+        col *= radix2;
+      }
       g = row * radix;
-      while (col > g) { f /= radix; col /= radix2; }
+      while (col > g) {
+        f /= radix;
+        col /= radix2;
+      }
       if ((col + row) / f < Real(0.95) * s) {
         done = false;
         a.row(i) /= f;
@@ -221,7 +229,8 @@ bool companion_roots(const Real* c, int degree, Real tol, Candidates<Real, Capac
 // could not reduce (below): found without eigenvalues, by the bracketing policy's isolation over
 // the root bound, or none where that finds more values than a polynomial of this degree has
 // roots (rounding noise) or the degree is beyond its buffers. Defined after isolate_roots.
-template <class Real, int Capacity> void roots_without_eigenvalues(const Real* c, int degree, Candidates<Real, Capacity>& out);
+template <class Real, int Capacity>
+void roots_without_eigenvalues(const Real* c, int degree, Candidates<Real, Capacity>& out);
 
 // A few Newton steps on p from x, kept only while |p| decreases (multiple roots converge slowly
 // and are left to the distance polish).
@@ -374,7 +383,8 @@ struct EigenPolished {
     const int first = out.count;
     EigenCompanion::roots(coefficients, degree, lo, hi, out);
     degree = trimmed_degree(coefficients, degree);
-    for (int i = first; i < out.count; ++i) out.value[i] = detail::newton_on_polynomial(coefficients, degree, out.value[i]);
+    for (int i = first; i < out.count; ++i)
+      out.value[i] = detail::newton_on_polynomial(coefficients, degree, out.value[i]);
   }
 
   template <class Real, int Capacity>
@@ -488,27 +498,44 @@ template <int N, class Real> Real estrin_with_error(const Real* c, Real x, Real&
 template <class Real> Real polynomial_value(const Real* c, int n, Real x) {
   const Real x2 = x * x, x4 = x2 * x2;
   switch (n) {
-    case 1: return estrin<1>(c, x, x2, x4);
-    case 2: return estrin<2>(c, x, x2, x4);
-    case 3: return estrin<3>(c, x, x2, x4);
-    case 4: return estrin<4>(c, x, x2, x4);
-    case 5: return estrin<5>(c, x, x2, x4);
-    case 6: return estrin<6>(c, x, x2, x4);
-    case 7: return estrin<7>(c, x, x2, x4);
-    case 8: return estrin<8>(c, x, x2, x4);
-    default: return horner(c, n, x);
+    case 1:
+      return estrin<1>(c, x, x2, x4);
+    case 2:
+      return estrin<2>(c, x, x2, x4);
+    case 3:
+      return estrin<3>(c, x, x2, x4);
+    case 4:
+      return estrin<4>(c, x, x2, x4);
+    case 5:
+      return estrin<5>(c, x, x2, x4);
+    case 6:
+      return estrin<6>(c, x, x2, x4);
+    case 7:
+      return estrin<7>(c, x, x2, x4);
+    case 8:
+      return estrin<8>(c, x, x2, x4);
+    default:
+      return horner(c, n, x);
   }
 }
 
 template <class Real> Real value_with_error(const Real* c, int n, Real x, Real& error) {
   switch (n) {
-    case 3: return estrin_with_error<3>(c, x, error);
-    case 4: return estrin_with_error<4>(c, x, error);
-    case 5: return estrin_with_error<5>(c, x, error);
-    case 6: return estrin_with_error<6>(c, x, error);
-    case 7: return estrin_with_error<7>(c, x, error);
-    case 8: return estrin_with_error<8>(c, x, error);
-    default: error = horner_error(c, n, x); return horner(c, n, x);
+    case 3:
+      return estrin_with_error<3>(c, x, error);
+    case 4:
+      return estrin_with_error<4>(c, x, error);
+    case 5:
+      return estrin_with_error<5>(c, x, error);
+    case 6:
+      return estrin_with_error<6>(c, x, error);
+    case 7:
+      return estrin_with_error<7>(c, x, error);
+    case 8:
+      return estrin_with_error<8>(c, x, error);
+    default:
+      error = horner_error(c, n, x);
+      return horner(c, n, x);
   }
 }
 
@@ -562,13 +589,20 @@ Real halley_search(const Pass& pass, int n, Real a, Real b, Real pa, Real x, Rea
 template <class Real>
 Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol) {
   switch (n) {
-    case 3: return halley_search(EstrinPass<3, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
-    case 4: return halley_search(EstrinPass<4, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
-    case 5: return halley_search(EstrinPass<5, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
-    case 6: return halley_search(EstrinPass<6, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
-    case 7: return halley_search(EstrinPass<7, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
-    case 8: return halley_search(EstrinPass<8, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
-    default: return halley_search(HornerPass<Real>{c, n}, n, a, b, pa, x, rel_tol, abs_tol);
+    case 3:
+      return halley_search(EstrinPass<3, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 4:
+      return halley_search(EstrinPass<4, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 5:
+      return halley_search(EstrinPass<5, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 6:
+      return halley_search(EstrinPass<6, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 7:
+      return halley_search(EstrinPass<7, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    case 8:
+      return halley_search(EstrinPass<8, Real>(c), n, a, b, pa, x, rel_tol, abs_tol);
+    default:
+      return halley_search(HornerPass<Real>{c, n}, n, a, b, pa, x, rel_tol, abs_tol);
   }
 }
 
@@ -694,7 +728,8 @@ template <class Real> bool isolated_roots(const Real* c, int degree, Real lo, Re
          isolate_roots(c, degree, lo, hi, 2 * std::numeric_limits<Real>::epsilon(), found, count, kIsolateCapacity);
 }
 
-template <class Real, int Capacity> void roots_without_eigenvalues(const Real* c, int degree, Candidates<Real, Capacity>& out) {
+template <class Real, int Capacity>
+void roots_without_eigenvalues(const Real* c, int degree, Candidates<Real, Capacity>& out) {
   if (degree < 1) return;
   const Real bound = root_bound(c, degree);
   Real found[kIsolateCapacity];
@@ -792,26 +827,35 @@ struct SelectedEigenPolicy {
   template <class Real, int Capacity>
   static void roots(const Real* coefficients, int degree, Real lo, Real hi, Candidates<Real, Capacity>& out) {
     switch (selected()) {
-      case Which::Polished: return EigenPolished::roots(coefficients, degree, lo, hi, out);
-      case Which::PolynomialSolver: return EigenPolynomialSolver::roots(coefficients, degree, lo, hi, out);
-      default: return EigenCompanion::roots(coefficients, degree, lo, hi, out);
+      case Which::Polished:
+        return EigenPolished::roots(coefficients, degree, lo, hi, out);
+      case Which::PolynomialSolver:
+        return EigenPolynomialSolver::roots(coefficients, degree, lo, hi, out);
+      default:
+        return EigenCompanion::roots(coefficients, degree, lo, hi, out);
     }
   }
 
   template <class Real, int Capacity>
   static void roots_in(const Real* c, int degree, const Intervals<Real>& intervals, Candidates<Real, Capacity>& out) {
     switch (selected()) {
-      case Which::Polished: return EigenPolished::roots_in(c, degree, intervals, out);
-      case Which::PolynomialSolver: return EigenPolynomialSolver::roots_in(c, degree, intervals, out);
-      default: return EigenCompanion::roots_in(c, degree, intervals, out);
+      case Which::Polished:
+        return EigenPolished::roots_in(c, degree, intervals, out);
+      case Which::PolynomialSolver:
+        return EigenPolynomialSolver::roots_in(c, degree, intervals, out);
+      default:
+        return EigenCompanion::roots_in(c, degree, intervals, out);
     }
   }
 
   template <class Real> static Real bracketed_root(const Real* c, int degree, Real lo, Real hi, Real p_lo, Real p_hi) {
     switch (selected()) {
-      case Which::Polished: return EigenPolished::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
-      case Which::PolynomialSolver: return EigenPolynomialSolver::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
-      default: return EigenCompanion::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
+      case Which::Polished:
+        return EigenPolished::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
+      case Which::PolynomialSolver:
+        return EigenPolynomialSolver::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
+      default:
+        return EigenCompanion::bracketed_root(c, degree, lo, hi, p_lo, p_hi);
     }
   }
 };

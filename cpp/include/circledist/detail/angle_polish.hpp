@@ -67,8 +67,7 @@ template <class Real, int N> struct ScreenedStarts {
 // circle parallel to a disk) would otherwise let Newton's steps run to t = 5e16.
 template <class Roots, class Real, int N, class J, class H>
 Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, N>& starts, Real width, Real lo,
-                               Real hi, Real abs_tol, Real margin,
-                               Real reach = std::numeric_limits<Real>::infinity()) {
+                               Real hi, Real abs_tol, Real margin, Real reach = std::numeric_limits<Real>::infinity()) {
   Minima<Real, N> out;
   const ScreenedStarts<Real, N> screened(h, starts);
   for (int k = 0; k < screened.count; ++k) {
@@ -82,7 +81,8 @@ Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, 
       const auto g = [&](Real d) { return jet(t0 + d); };
       // A parameter without a period (a curve's t: `reach` infinite) widens its search where
       // its start was far from the minimum (minimize.hpp, polish_newton).
-      m = polish_newton(g, f, Real(0), width, below, above, abs_tol, screened.value[i], !(reach < std::numeric_limits<Real>::infinity()));
+      m = polish_newton(g, f, Real(0), width, below, above, abs_tol, screened.value[i],
+                        !(reach < std::numeric_limits<Real>::infinity()));
     } else {
       m = polish_minimum(f, Real(0), width, below, above, abs_tol);
       // Where the shapes cross (h = 0), h is a V whose bottom the bracket locates only to its

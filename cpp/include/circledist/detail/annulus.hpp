@@ -27,7 +27,8 @@ template <class Real> AnnulusKind annulus_kind(const Annulus3<Real>& a) {
 // The Result of the empty set or a NaN annulus (b's side).
 template <class Real> Result<Real> degenerate_annulus_result(AnnulusKind kind) {
   Result<Real> r;
-  r.distance = kind == AnnulusKind::kEmpty ? std::numeric_limits<Real>::infinity() : std::numeric_limits<Real>::quiet_NaN();
+  r.distance =
+      kind == AnnulusKind::kEmpty ? std::numeric_limits<Real>::infinity() : std::numeric_limits<Real>::quiet_NaN();
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
   r.point_a = r.point_b = Vec3<Real>::Constant(nan);
   r.param_a = r.param_b = Vec2<Real>::Constant(nan);

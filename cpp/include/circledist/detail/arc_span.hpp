@@ -25,11 +25,13 @@ namespace circledist::detail {
 // -pi, t then 0 or pi). False for a NaN or infinite x or y. A comparison of t with a threshold
 // is decided by the octant where [lo, hi], widened by another slack for the threshold's own
 // rounding, lies wholly on one side: there t answers the same (docs/derivations/arc.md, "Cost").
-template <class Real> constexpr Real octant_slack() { return 128 * std::numeric_limits<Real>::epsilon() * 2 * pi_v<Real>(); }
+template <class Real> constexpr Real octant_slack() {
+  return 128 * std::numeric_limits<Real>::epsilon() * 2 * pi_v<Real>();
+}
 template <class Real> CIRCLEDIST_INLINE bool octant_bounds(Real x, Real y, Real& lo, Real& hi) {
   if (!(std::abs(x) + std::abs(y) < std::numeric_limits<Real>::infinity())) return false;  // NaN too
   const Real quarter = pi_v<Real>() / 4, slack = octant_slack<Real>();
-  const bool lower = y < 0, left = x < 0, steep = std::abs(y) > std::abs(x);
+  const bool lower = y < 0, left = x<0, steep = std::abs(y)> std::abs(x);
   static constexpr int octants[8] = {0, 1, 3, 2, 7, 6, 4, 5};  // by 4 lower + 2 left + steep
   const int k = octants[4 * lower + 2 * left + steep];
   lo = k * quarter - slack;
@@ -108,7 +110,9 @@ template <class Real> struct ArcSpan {
   Vec3<Real> from_center(Real radius, Real theta) const {
     return radius * (std::cos(theta) * frame.u + std::sin(theta) * frame.v);
   }
-  Vec3<Real> world(const Vec3<Real>& center, Real radius, Real theta) const { return center + from_center(radius, theta); }
+  Vec3<Real> world(const Vec3<Real>& center, Real radius, Real theta) const {
+    return center + from_center(radius, theta);
+  }
 };
 
 // The answer of a whole arc from its circle's: the arc's parameter is its t, the circle's angle
@@ -154,7 +158,8 @@ template <class Real, class H> auto with_end_values(const ArcSpan<Real>& span, c
 // samples are at most pi/4 apart along the arc, as the whole circle's eight are; the samples cost
 // no sine or cosine, and against a ring they are the ones the circle query takes anyway.
 // The whole circle's best sample may lie off the arc. docs/derivations/arc.md, "Cost".
-template <class Real, class H, class Sample> Real arc_bound(const ArcSpan<Real>& span, const H& h, const Sample& sample) {
+template <class Real, class H, class Sample>
+Real arc_bound(const ArcSpan<Real>& span, const H& h, const Sample& sample) {
   Real best = std::min(h(span.lo()), h(span.hi()));
   for (int i = 0; i < 8; ++i)
     if (span.holds(i * (pi_v<Real>() / 4))) best = std::min(best, sample(i));

@@ -31,9 +31,11 @@ template <class Real> struct ArcTarget {
   bool sectors;  // whether sector() may decide (a finite angle in [0, 2 pi), radius and start)
 
   explicit ArcTarget(const Arc3<Real>& b)
-      : span(b), radius(b.radius), end{ArcSpan<Real>::local(b.radius, span.lo()), ArcSpan<Real>::local(b.radius, span.hi())} {
-    sectors = span.angle >= 0 && span.angle < 2 * pi_v<Real>() && radius > 0 && radius < std::numeric_limits<Real>::infinity() &&
-              std::isfinite(span.lo());
+      : span(b),
+        radius(b.radius),
+        end{ArcSpan<Real>::local(b.radius, span.lo()), ArcSpan<Real>::local(b.radius, span.hi())} {
+    sectors = span.angle >= 0 && span.angle < 2 * pi_v<Real>() && radius > 0 &&
+              radius < std::numeric_limits<Real>::infinity() && std::isfinite(span.lo());
   }
 
   // -1 where the ring's point is on the arc, else the nearer end's index. The sector test of
@@ -65,7 +67,7 @@ template <class Real> struct ArcTarget {
       if (c0 > tol && c1 > tol) return 1;
       if (c0 < -tol || c1 < -tol) return 0;  // offset in (pi, 2 pi) or in (angle, angle + pi)
     } else {
-      if (c0 > tol || c1 > tol) return 1;  // offset in (0, pi) or in (angle - pi, angle)
+      if (c0 > tol || c1 > tol) return 1;    // offset in (0, pi) or in (angle - pi, angle)
       if (c0 < -tol && c1 < -tol) return 0;  // offset in (pi, 2 pi) and in (angle, 2 pi)
     }
     return -1;
@@ -94,7 +96,8 @@ Jet<Real> point_jet(const Vec3<Real>& p, const Vec3<Real>& p1, const Vec3<Real>&
 
 // The angle on circle c (LocalCircle: P(t) = O + E1 cos t + E2 sin t, |E1| = |E2|, E1.E2 = 0) of the
 // point nearest a point q: the angle of q - O in the basis E1, E2 (none when q is on the axis).
-template <class Real, int N> void push_nearest_angle(const LocalCircle<Real>& c, const Vec3<Real>& q, Candidates<Real, N>& out) {
+template <class Real, int N>
+void push_nearest_angle(const LocalCircle<Real>& c, const Vec3<Real>& q, Candidates<Real, N>& out) {
   const Vec3<Real> d = q - c.center;
   const Real x = d.dot(c.e1), y = d.dot(c.e2);
   if (x != 0 || y != 0) out.push(std::atan2(y, x));

@@ -62,14 +62,15 @@ template <> CIRCLEDIST_INLINE double atan2<double>(double y, double x) {
   // rule, the same rounding (every term is under 6 % of t in the end).
   const double z2 = z * z, z4 = z2 * z2, z8 = z4 * z4;
   const double p01 = -0.3333333333333333 + 0.1999999999999552 * z, p23 = -0.14285714284666542 + 0.11111111015256361 * z;
-  const double p45 = -0.09090904578123901 + 0.07692183190826085 * z, p67 = -0.06664511447381931 + 0.05858148912802064 * z;
+  const double p45 = -0.09090904578123901 + 0.07692183190826085 * z,
+               p67 = -0.06664511447381931 + 0.05858148912802064 * z;
   const double p89 = -0.05085449737939498 + 0.03923165829556517 * z, p10 = -0.019176887119035292;
   const double p = (p01 + z2 * p23) + z4 * (p45 + z2 * p67) + z8 * (p89 + z2 * p10);
   // m pi/4 as a double plus the rest, so that the sum rounds once, at the end.
   static constexpr double quarter_pi_hi[5] = {0.0, 0.7853981633974483, 1.5707963267948966, 2.356194490192345,
                                               3.141592653589793};
-  static constexpr double quarter_pi_lo[5] = {0.0, 3.061616997868383e-17, 6.123233995736766e-17,
-                                              9.184850993605148e-17, 1.2246467991473532e-16};
+  static constexpr double quarter_pi_lo[5] = {0.0, 3.061616997868383e-17, 6.123233995736766e-17, 9.184850993605148e-17,
+                                              1.2246467991473532e-16};
   return std::copysign(quarter_pi_hi[m] + (quarter_pi_lo[m] + (t + t * z * p)), y);
 }
 

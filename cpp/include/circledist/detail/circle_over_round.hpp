@@ -51,8 +51,8 @@ template <class Real> struct CircleOverRound {
     const Real x = size(c.center.x(), c.e1.x(), c.e2.x()), y = size(c.center.y(), c.e1.y(), c.e2.y());
     const Real z = size(z0, z1, z2);
     const Real from_coordinates = 2 * radius * (x + y) + radius * radius;
-    const Real from_harmonics = c.center.squaredNorm() + std::abs((r - radius) * (r + radius)) + std::abs(q1) +
-                                std::abs(q2) + z * z;
+    const Real from_harmonics =
+        c.center.squaredNorm() + std::abs((r - radius) * (r + radius)) + std::abs(q1) + std::abs(q2) + z * z;
     // And only where |s| <= R^2 / 4 on the whole circle: rho = sqrt(R^2 + s) must not cancel (a
     // small circle near the center of a ring of radius 4e8 has s = -R^2 + O(1), and rho from it
     // erred by sqrt(eps) R).
@@ -183,9 +183,9 @@ template <class Real> std::array<Real, 5> circle_rim_quartic(const CircleOverRou
 // (ring_search_intervals, which searches everywhere for an infinite bound; the margin of
 // 1e-4 scale dwarfs the rounding of its quadratics), and, for an arc, only on its angles
 // (`within`, in u = tan(t/2): ArcSpan::half_angle_range, docs/derivations/arc.md "Cost"; null for a circle).
-template <class Roots, class Real, int N>
-void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale, Real bound, Candidates<Real, N>& out,
-                            const Intervals<Real>* within = nullptr) {
+template <class Roots, class Real, int N> void push_circle_ring_roots(const CircleOverRound<Real>& v, Real scale,
+                                                                      Real bound, Candidates<Real, N>& out,
+                                                                      const Intervals<Real>* within = nullptr) {
   const std::array<Real, 9> p = circle_ring_octic(v, scale);
   const Intervals<Real> where = ring_search_intervals(v.c, v.radius, bound + Real(1e-4) * scale);
   push_half_angle_roots<Roots>(p.data(), 8, within ? where.within(*within) : where, out);
@@ -199,8 +199,9 @@ template <class Target, class Real, int N>
 Result<Real> circle_round_result(const Circle3<Real>& a, const LocalCircle<Real>& c, const Round<Real>& round,
                                  const Minima<Real, N>& minima, Real scale) {
   const Minimum<Real>& best = minima.best;
-  Result<Real> r = round_side_result<Target>(minima, [&](Real x) { return c.at(x); }, c.at(best.x), round, scale,
-                                             distinct_points_tolerance(std::min(scale, c.radius)));
+  Result<Real> r = round_side_result<Target>(
+      minima, [&](Real x) { return c.at(x); }, c.at(best.x), round, scale,
+      distinct_points_tolerance(std::min(scale, c.radius)));
   r.point_a = a.center + c.radius * (std::cos(best.x) * c.frame.u + std::sin(best.x) * c.frame.v);
   r.param_a = Vec2<Real>(best.x, 0);
   return r;

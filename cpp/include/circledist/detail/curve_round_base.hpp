@@ -24,8 +24,9 @@ Result<Real> curve_target_result(const BezierCurve3<Real>& b, const LocalBezier<
                                  const PointOf& point_of, const ParamOf& param_of) {
   const Minimum<Real>& best = minima.best;
   const Vec3<Real> pa = where.valid ? where.piece.at(where.s) : c.at(best.x);
-  Result<Real> r = target_side_result(minima, [&](Real x) { return c.at(x); }, pa, round, scale,
-                                      distinct_points_tolerance(std::min(scale, c.size)), point_of, param_of);
+  Result<Real> r = target_side_result(
+      minima, [&](Real x) { return c.at(x); }, pa, round, scale, distinct_points_tolerance(std::min(scale, c.size)),
+      point_of, param_of);
   r.point_a = where.valid ? round.world(pa) : b.at(best.x);
   r.param_a = Vec2<Real>(best.x, 0);
   return r;

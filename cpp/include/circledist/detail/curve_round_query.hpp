@@ -123,18 +123,20 @@ template <class Real, class Target> struct CurveRoundQuery : CurveRoundBase<Real
   using Base = CurveRoundBase<Real>;
   using Shape = typename Target::Shape;
 
-  template <class Roots>
-  static auto solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b, const Round<Real>& round, Real scale,
-                    BestPiece<Real>* where = nullptr) {
+  template <class Roots> static auto solve(const LocalBezier<Real>& c, const BezierCurve3<Real>& b,
+                                           const Round<Real>& round, Real scale, BestPiece<Real>* where = nullptr) {
     const Real radius = round.radius;
     const auto distance_of = [&](const Vec3<Real>& p) { return Target::distance(p, radius); };
-    return Base::solve_pieces(c, b, round, scale, distance_of, [&](const LocalBezier<Real>& piece, Real s) {
-      typename Base::Starts starts;
-      push_curve_round_candidates<Roots, Target>(piece, radius, s, starts);
-      const auto h = [&](Real t) { return Target::distance(piece.at(t), radius); };
-      const auto jet = [&](Real t) { return piece.template jet<Target>(t, radius); };
-      return Base::template polish<Roots>(piece, starts, s, h, jet);
-    }, where);
+    return Base::solve_pieces(
+        c, b, round, scale, distance_of,
+        [&](const LocalBezier<Real>& piece, Real s) {
+          typename Base::Starts starts;
+          push_curve_round_candidates<Roots, Target>(piece, radius, s, starts);
+          const auto h = [&](Real t) { return Target::distance(piece.at(t), radius); };
+          const auto jet = [&](Real t) { return piece.template jet<Target>(t, radius); };
+          return Base::template polish<Roots>(piece, starts, s, h, jet);
+        },
+        where);
   }
 
   template <class Roots = DefaultRoots> static Real distance(const BezierCurve3<Real>& b, const Shape& shape) {

@@ -40,15 +40,14 @@ int end_point_slope(const Vec3<Real>& p, const Circle3<Real>& ring, const Vec3<R
   const Real z = n.dot(d);
   const Real rho = (d - z * n).norm();
   const Real size = d.template lpNorm<1>();
-  const Real tolerance = 64 * std::numeric_limits<Real>::epsilon() * (size + ring.radius) * size *
-                         direction.template lpNorm<1>();
+  const Real tolerance =
+      64 * std::numeric_limits<Real>::epsilon() * (size + ring.radius) * size * direction.template lpNorm<1>();
   const Real e = (rho - ring.radius) * d.dot(direction) + ring.radius * z * n.dot(direction);
   return e > tolerance ? 1 : e < -tolerance ? -1 : 0;
 }
 
-template <class Piece, class Round>
-auto end_point_result(const Piece& piece, decltype(Round::radius) t, const Round& round,
-                      const Vec3<decltype(Round::radius)>& n) {
+template <class Piece, class Round> auto end_point_result(const Piece& piece, decltype(Round::radius) t,
+                                                          const Round& round, const Vec3<decltype(Round::radius)>& n) {
   using Real = decltype(Round::radius);
   const Vec3<Real> p = piece_end(piece, t);
   Result<Real> r = PointRoundQuery<Real, std::is_same_v<Round, Disk3<Real>>>::closest(p, round);

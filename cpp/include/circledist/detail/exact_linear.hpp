@@ -70,7 +70,8 @@ template <class Real>
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline, cold))  // rare: kept out of the plain path's code
 #endif
-LinearPair<Real> point_to_exact_piece(const Vec3<Real>& x, const ExactPiece<Real>& b) {
+LinearPair<Real>
+point_to_exact_piece(const Vec3<Real>& x, const ExactPiece<Real>& b) {
   using DD = DoubleDouble<Real>;
   const Linear<Real>& l = b.piece;
   LinearPair<Real> out;
@@ -102,7 +103,8 @@ template <class Real>
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline, cold))  // rare: kept out of the plain path's code
 #endif
-LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b, unsigned contenders) {
+LinearPair<Real>
+exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b, unsigned contenders) {
   using DD = DoubleDouble<Real>;
   LinearPair<Real> best;
   const auto take = [&](const LinearPair<Real>& c) {
@@ -147,7 +149,8 @@ LinearPair<Real> exact_pair(const ExactPiece<Real>& a, const ExactPiece<Real>& b
         const Real n_norm = rounded(n).norm();
         const Real n_error = n_norm > 0 ? a.dir_size() * b.dir_size() / n_norm : Real(0);
         const Real w_error = rounded(w).cwiseAbs().sum() * n_error;
-        const Real near_error = rounded(near).cwiseAbs().sum() * n_error + rounded(pa).cwiseAbs().sum() + rounded(pb).cwiseAbs().sum();
+        const Real near_error =
+            rounded(near).cwiseAbs().sum() * n_error + rounded(pa).cwiseAbs().sum() + rounded(pb).cwiseAbs().sum();
         c.point_a = rounded(pa);
         c.point_b = rounded(pb);
         c.distance = std::abs(dot(near_error < w_error ? near : w, n).value()) / std::sqrt(n2.value());

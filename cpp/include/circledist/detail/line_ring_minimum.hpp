@@ -35,7 +35,7 @@ template <class Real> struct LineRingMinimum {
   Vec3<Real> mirror;  // the ring point reflected across the plane of e2 and n: the other minimum's
                       // neighbor when b1 is small (the two minima differ by 4 R^2 |b1 z1|)
   Vec3<Real> anchor, unit_direction, unit_normal;  // a, m and n
-  bool on_axis = false;  // a line along the axis: every ring point is closest
+  bool on_axis = false;                            // a line along the axis: every ring point is closest
   // The secular equation's data, for the line's other local minimum (other_line_minimum): b1,
   // b2^2, s^2 (s2 = 0 for a line parallel to the axis to within eps, whose distance has one
   // minimum), and the anchor's in-plane parts along m_xy and across it.
@@ -78,8 +78,8 @@ LineRingOutcome line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& 
   // The anchor from w = o x d to one rounding per component (as LocalLinear): accurate relative
   // to its own length however far along the line the origin lies.
   const Vec3<Real> m = line.direction * inverse_length;
-  const Vec3<Real> a = m.cross(offset_cross(ExactDifference<Real>(line.origin, circle.center), line.direction)) *
-                       inverse_length;
+  const Vec3<Real> a =
+      m.cross(offset_cross(ExactDifference<Real>(line.origin, circle.center), line.direction)) * inverse_length;
   if (!a.allFinite()) return Outcome::Declined;
   out.anchor = a;
   out.unit_direction = m;
@@ -90,7 +90,7 @@ LineRingOutcome line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& 
   const Vec3<Real> tilt = accurate_cross(line.direction, circle.normal) * (inverse_length * inverse_normal);
   const Vec3<Real> a_xy = a - a.dot(n) * n, m_xy = n.cross(tilt);
   const Real s2 = tilt.squaredNorm();  // |m_xy|^2 without 1 - (m.n)^2's cancellation
-  Vec3<Real> direction;  // of the closest ring point
+  Vec3<Real> direction;                // of the closest ring point
   if (!(s2 > std::numeric_limits<Real>::epsilon() * std::numeric_limits<Real>::epsilon())) {
     // Parallel to the axis (to a tilt below eps): the ring point toward the line.
     const Real rho = a_xy.norm();
@@ -189,7 +189,7 @@ bool line_ring_minimum(const Line3<Real>& line, const Circle3<Real>& circle, Lin
 // second half, other_line_minimum, solves the root where the test found one.
 template <class Real> struct SecondMinimumTest {
   using Work = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
-  int verdict = 0;  // 0: no second minimum; 1: one, in (mu0, -|b1|); -1: undecided (the general path)
+  int verdict = 0;          // 0: no second minimum; 1: one, in (mu0, -|b1|); -1: undecided (the general path)
   Work one_k = 0, rho = 0;  // 1 + k and rho, for the root (verdict 1)
 };
 
@@ -281,7 +281,8 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
     for (int step = 0; step < 200; ++step) {
       const Work value = phi(root);
       if (!(value > 0)) break;
-      const Work slope = -2 * b1_squared / (root * root * root) - 2 * b2_squared / ((root + t2) * (root + t2) * (root + t2));
+      const Work slope =
+          -2 * b1_squared / (root * root * root) - 2 * b2_squared / ((root + t2) * (root + t2) * (root + t2));
       const Work next = root - value / slope;
       if (!(next < root && next > mu0)) break;
       root = next;
@@ -329,8 +330,8 @@ Result<Real> line_ring_result(const Line3<Real>& line, const Circle3<Real>& c, c
   // mirror-image minimum when b1 is (nearly) zero (the mirror point bounds it from above), or
   // a distance flat to rounding over the ring (a line within rounding of the center's axis).
   const Real scale = std::max(c.radius, m.anchor.norm());
-  r.unique = !m.on_axis &&
-             !(tied_with_mirror(c, m) && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale));
+  r.unique =
+      !m.on_axis && !(tied_with_mirror(c, m) && (m.mirror - m.ring_point).norm() > distinct_points_tolerance(scale));
   return r;
 }
 

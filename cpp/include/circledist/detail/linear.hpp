@@ -149,9 +149,9 @@ template <class Real> struct LocalLinear {
 };
 
 // Exact candidates every linear-vs-round query evaluates as they are, clamped to the interval
-// (they are not estimates of a stationary point, so they are not polished): the anchor, the plane crossing (where the disk's
-// height kinks; for a circle, the closest point of a line along the axis, where the quartic
-// vanishes identically), and the finite interval ends (the note's "ray origin" rule).
+// (they are not estimates of a stationary point, so they are not polished): the anchor, the plane crossing (where the
+// disk's height kinks; for a circle, the closest point of a line along the axis, where the quartic vanishes
+// identically), and the finite interval ends (the note's "ray origin" rule).
 template <class Real> void push_linear_candidates(const LocalLinear<Real>& line, Candidates<Real>& out) {
   out.push(Real(0));
   if (line.is_point) return;
@@ -243,9 +243,8 @@ Minima<Real> minimize_linear(const J& jet, const H& h, const LocalLinear<Real>& 
 // The world point of the piece at `tau` of its local line, and its parameter t: an end point
 // exactly when tau sits there; otherwise from the world anchor (accurate relative to its distance
 // from the center, where origin + t direction would err by eps |origin - center| across the line).
-template <class Real>
-Vec3<Real> piece_point(const Linear<Real>& piece, const LocalLinear<Real>& line, const Round<Real>& round, Real tau,
-                       Real& t) {
+template <class Real> Vec3<Real> piece_point(const Linear<Real>& piece, const LocalLinear<Real>& line,
+                                             const Round<Real>& round, Real tau, Real& t) {
   t = line.is_point ? Real(0) : line.t_of(tau);
   t = std::min(std::max(t, piece.lo), piece.hi);
   if (line.is_point || tau <= line.lo) {
@@ -265,8 +264,8 @@ template <class Target, class Real>
 Result<Real> linear_round_result(const Linear<Real>& piece, const LocalLinear<Real>& line, const Round<Real>& round,
                                  const Minima<Real>& minima, Real scale) {
   const Minimum<Real>& best = minima.best;
-  Result<Real> r = round_side_result<Target>(minima, [&](Real x) { return line.at(x); }, line.at(best.x), round, scale,
-                                             distinct_points_tolerance(scale));
+  Result<Real> r = round_side_result<Target>(
+      minima, [&](Real x) { return line.at(x); }, line.at(best.x), round, scale, distinct_points_tolerance(scale));
   Real t;
   r.point_a = piece_point(piece, line, round, best.x, t);
   r.param_a = Vec2<Real>(t, 0);

@@ -148,8 +148,8 @@ template <class Real> Intervals<Real> ring_search_intervals(const LocalCircle<Re
   for (int i = 0; i <= cut_count; ++i) {
     const Real lo = i == 0 ? -inf : cuts[i - 1], hi = i == cut_count ? inf : cuts[i];
     if (!(lo <= hi)) continue;  // a NaN cut
-    const Real inside = cut_count == 0 ? Real(0)
-                        : i == 0       ? hi - std::max(Real(1), std::abs(hi))
+    const Real inside = cut_count == 0   ? Real(0)
+                        : i == 0         ? hi - std::max(Real(1), std::abs(hi))
                         : i == cut_count ? lo + std::max(Real(1), std::abs(lo))
                                          : (lo + hi) / 2;
     bool kept = true;

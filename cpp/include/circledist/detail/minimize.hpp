@@ -21,8 +21,7 @@ template <class Real> struct Minimum {
 
 // Brent's minimization (golden section + parabolic steps) of f on [a, b] starting from x, with
 // fx = f(x) on entry and the minimum's value on return.
-template <class Real, class F>
-Real brent_minimize(const F& f, Real a, Real b, Real x, Real& fx, Real abs_tol) {
+template <class Real, class F> Real brent_minimize(const F& f, Real a, Real b, Real x, Real& fx, Real abs_tol) {
   const Real golden = Real(0.3819660112501051517954131656343618822796908201942371378645513772947395371);
   const Real rel_tol = std::sqrt(std::numeric_limits<Real>::epsilon());
   Real w = x, v = x, fw = fx, fv = fx;
@@ -37,7 +36,10 @@ Real brent_minimize(const F& f, Real a, Real b, Real x, Real& fx, Real abs_tol) 
       Real q = (x - v) * (fx - fw);
       Real p = (x - v) * q - (x - w) * r;
       q = 2 * (q - r);
-      if (q > 0) p = -p; else q = -q;
+      if (q > 0)
+        p = -p;
+      else
+        q = -q;
       const Real e_previous = e;
       e = d;
       if (std::abs(p) < std::abs(q * e_previous / 2) && p > q * (a - x) && p < q * (b - x)) {
@@ -54,14 +56,29 @@ Real brent_minimize(const F& f, Real a, Real b, Real x, Real& fx, Real abs_tol) 
     const Real u = x + (std::abs(d) >= tol ? d : (d > 0 ? tol : -tol));
     const Real fu = f(u);
     if (fu <= fx) {
-      if (u < x) b = x; else a = x;
-      v = w; fv = fw; w = x; fw = fx; x = u; fx = fu;
+      if (u < x)
+        b = x;
+      else
+        a = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
     } else {
-      if (u < x) a = u; else b = u;
+      if (u < x)
+        a = u;
+      else
+        b = u;
       if (fu <= fw || w == x) {
-        v = w; fv = fw; w = u; fw = fu;
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
       } else if (fu <= fv || v == x || v == w) {
-        v = u; fv = fu;
+        v = u;
+        fv = fu;
       }
     }
   }
@@ -220,9 +237,7 @@ Minima<Real> polish_candidates_newton(const J& jet, const F& distance, const Can
 }
 
 // Distances within this of the best one are a tie: the same distance up to rounding.
-template <class Real> Real tie_tolerance(Real scale) {
-  return 64 * std::numeric_limits<Real>::epsilon() * scale;
-}
+template <class Real> Real tie_tolerance(Real scale) { return 64 * std::numeric_limits<Real>::epsilon() * scale; }
 
 // Two closest points farther apart than this are distinct pairs. Flat minima (tangencies) are
 // only located to about eps^(1/4) * scale, so anything finer would split one pair into two.

@@ -18,8 +18,8 @@ namespace circledist::detail {
 // the line's two local minima over a ring, the plane crossing of a disk); the rest is shared
 // (PieceRoundQuery).
 template <class Real> struct PieceChoice {
-  Line3<Real> line;  // the full line through the piece
-  LineRingMinimum<Real> global, second;  // the line's minima over the ring (second: the other local one)
+  Line3<Real> line;                          // the full line through the piece
+  LineRingMinimum<Real> global, second;      // the line's minima over the ring (second: the other local one)
   Vec3<Real> crossing = Vec3<Real>::Zero();  // a disk's: where the line meets its plane inside the rim
   enum Winner { kGlobal, kSecond, kCrossing, kEnd } winner = kGlobal;
   Real t = 0, value = std::numeric_limits<Real>::infinity();  // the end's parameter; the winner's distance
@@ -64,7 +64,8 @@ template <class Real, class Piece, class Target> struct PieceRoundQuery : Linear
       r.distance = choice.value;
       return r;
     }
-    if (choice.winner == PieceChoice<Real>::kEnd) return end_point_result(piece, choice.t, round, choice.global.unit_normal);
+    if (choice.winner == PieceChoice<Real>::kEnd)
+      return end_point_result(piece, choice.t, round, choice.global.unit_normal);
     return line_minimum_result(choice, round);
   }
 };

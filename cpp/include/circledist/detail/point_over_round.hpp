@@ -44,8 +44,12 @@ template <class Real> struct PointOverRound {
   Real radial;      // rho
 
   CIRCLEDIST_INLINE PointOverRound(const Vec3<Real>& p, const Vec3<Real>& center, const Vec3<Real>& normal)
-      : dx(p.x() - center.x()), dy(p.y() - center.y()), dz(p.z() - center.z()),
-        wx(normal.x()), wy(normal.y()), wz(normal.z()) {
+      : dx(p.x() - center.x()),
+        dy(p.y() - center.y()),
+        dz(p.z() - center.z()),
+        wx(normal.x()),
+        wy(normal.y()),
+        wz(normal.z()) {
     // |W| in [2^-50, 2^50] keeps (W x d) x W, |W|^2 |d|, as far from overflow and the subnormals
     // as d itself is (the front end scales scenes whose distances leave the moderate range).
     constexpr Real lo = power_of_two<Real>(-100), hi = power_of_two<Real>(100);
@@ -105,7 +109,8 @@ template <class Real> struct PointOverRound {
 #if defined(__GNUC__) || defined(__clang__)
   __attribute__((noinline, cold))
 #endif
-  Vec3<Real> rim_at_zero(const Vec3<Real>& center, Real radius) const {
+  Vec3<Real>
+  rim_at_zero(const Vec3<Real>& center, Real radius) const {
     return center + radius * Frame<Real>(Vec3<Real>(wx, wy, wz)).u;
   }
 
@@ -114,7 +119,8 @@ template <class Real> struct PointOverRound {
 #if defined(__GNUC__) || defined(__clang__)
   __attribute__((noinline, cold))
 #endif
-  void rescale_normal() {
+  void
+  rescale_normal() {
     const int exponent = std::ilogb(std::max({std::abs(wx), std::abs(wy), std::abs(wz)}));
     wx = std::ldexp(wx, -exponent);
     wy = std::ldexp(wy, -exponent);
@@ -181,7 +187,8 @@ template <class Real, bool Interior> struct PointRoundQuery {
 
   // F = sqrt(z^2 + (rho - R)^2) from the rim (note 000 §1), |z| over a disk (rho <= R, note 001
   // §2).
-  template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Round& round) {
+  template <class Roots = DefaultRoots>
+  CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Round& round) {
     const PointOverRound<Real> seen(p, round.center, round.normal);
     if constexpr (Interior) return Answers::over_disk_distance(seen, round.radius);
     return length2d(seen.height, seen.radial - round.radius);
@@ -190,7 +197,8 @@ template <class Real, bool Interior> struct PointRoundQuery {
   // The rim point in the direction of the point's in-plane part, param (theta, 0) on a circle and
   // (R, theta) on a disk; over a disk, the point below P, param (rho, theta); theta = atan2(y, x)
   // in the round's frame.
-  template <class Roots = DefaultRoots> CIRCLEDIST_INLINE static Result<Real> closest(const Vec3<Real>& p, const Round& round) {
+  template <class Roots = DefaultRoots>
+  CIRCLEDIST_INLINE static Result<Real> closest(const Vec3<Real>& p, const Round& round) {
     const PointOverRound<Real> seen(p, round.center, round.normal);
     Result<Real> r;
     r.point_a = p;

@@ -54,7 +54,9 @@ inline bool has_lanes() {
 // Four doubles, with the scalar operators: the code below reads as the scalar code it mirrors.
 struct Lanes {
   __m256d v;
-  static CIRCLEDIST_LANES_FN Lanes of(double x0, double x1, double x2, double x3) { return {_mm256_set_pd(x3, x2, x1, x0)}; }
+  static CIRCLEDIST_LANES_FN Lanes of(double x0, double x1, double x2, double x3) {
+    return {_mm256_set_pd(x3, x2, x1, x0)};
+  }
   static CIRCLEDIST_LANES_FN Lanes both(double x) { return {_mm256_set1_pd(x)}; }
   CIRCLEDIST_LANES_FN void to(double* out) const { _mm256_storeu_pd(out, v); }
 };
@@ -132,8 +134,8 @@ CIRCLEDIST_LANES_FN bool atan2_lanes(Lanes y, Lanes x, Lanes& angle) {
   static constexpr double past_pi_8[2] = {0.0, 1.0};
   static constexpr double quarter_pi_hi[5] = {0.0, 0.7853981633974483, 1.5707963267948966, 2.356194490192345,
                                               3.141592653589793};
-  static constexpr double quarter_pi_lo[5] = {0.0, 3.061616997868383e-17, 6.123233995736766e-17,
-                                              9.184850993605148e-17, 1.2246467991473532e-16};
+  static constexpr double quarter_pi_lo[5] = {0.0, 3.061616997868383e-17, 6.123233995736766e-17, 9.184850993605148e-17,
+                                              1.2246467991473532e-16};
   alignas(32) double sign[kLanes], f[kLanes], hi[kLanes], lo[kLanes];
   for (int k = 0; k < kLanes; ++k) {
     const int octant = 4 * ((steep >> k) & 1) + 2 * ((far >> k) & 1) + ((negative >> k) & 1);
@@ -150,7 +152,8 @@ CIRCLEDIST_LANES_FN bool atan2_lanes(Lanes y, Lanes x, Lanes& angle) {
   const Lanes p23 = Lanes::both(-0.14285714284666542) + Lanes::both(0.11111111015256361) * z;
   const Lanes p45 = Lanes::both(-0.09090904578123901) + Lanes::both(0.07692183190826085) * z;
   const Lanes p67 = Lanes::both(-0.06664511447381931) + Lanes::both(0.05858148912802064) * z;
-  const Lanes p89 = Lanes::both(-0.05085449737939498) + Lanes::both(0.03923165829556517) * z, p10 = Lanes::both(-0.019176887119035292);
+  const Lanes p89 = Lanes::both(-0.05085449737939498) + Lanes::both(0.03923165829556517) * z,
+              p10 = Lanes::both(-0.019176887119035292);
   const Lanes p = (p01 + z2 * p23) + z4 * (p45 + z2 * p67) + z8 * (p89 + z2 * p10);
   angle = copysign(Lanes{_mm256_load_pd(hi)} + (Lanes{_mm256_load_pd(lo)} + (t + t * z * p)), y);
   return true;
@@ -171,8 +174,8 @@ struct PointRoundLanes {
 };
 struct PointRoundAnswerLanes {
   Lanes distance;
-  Lanes bx, by, bz;        // the closest point of the round (the point itself is the other)
-  Lanes param0, param1;    // the round's param: (theta, 0) on a circle, (rho, theta) on a disk or ring
+  Lanes bx, by, bz;      // the closest point of the round (the point itself is the other)
+  Lanes param0, param1;  // the round's param: (theta, 0) on a circle, (rho, theta) on a disk or ring
 };
 
 // PointRoundQuery<double, Target == kDisk>::closest (PointRingQuery::closest for rings) in every

@@ -19,7 +19,9 @@ namespace circledist::detail {
 
 // The interior's squared distance z^2 and its derivatives along a curve, from the height z and
 // its first two derivatives.
-template <class Real> Jet<Real> height_jet(Real z, Real z1, Real z2) { return {z * z, 2 * z * z1, 2 * (z1 * z1 + z * z2)}; }
+template <class Real> Jet<Real> height_jet(Real z, Real z1, Real z2) {
+  return {z * z, 2 * z * z1, 2 * (z1 * z1 + z * z2)};
+}
 
 template <class Real, bool Interior> struct RoundTarget {
   static constexpr bool interior = Interior;

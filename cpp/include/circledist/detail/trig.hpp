@@ -133,7 +133,8 @@ void push_half_angle_roots(const Real* p, int degree, const Intervals<Real>& whe
 }
 
 // The same for the roots of a trigonometric polynomial f, through its half-angle polynomial.
-template <class Roots, class Real, int K, int N> void push_trig_roots(const Trig<Real, K>& f, Candidates<Real, N>& out) {
+template <class Roots, class Real, int K, int N>
+void push_trig_roots(const Trig<Real, K>& f, Candidates<Real, N>& out) {
   static_assert(2 * K <= kMaxDegree, "circledist: trigonometric degree too high for the default root policy");
   const std::array<Real, 2 * K + 1> p = half_angle(f);
   push_half_angle_roots<Roots>(p.data(), 2 * K, Intervals<Real>::everywhere(), out);
