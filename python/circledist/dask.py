@@ -684,8 +684,8 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
     d : float
         Distance limit, finite and >= 0.
     tiles : int, optional
-        About how many tiles to cut a's box into (default: 4 per chunk of a). More tiles mean
-        smaller tasks and more copies of b.
+        About how many tiles to cut a's box into (default: 4 per chunk of a; at most one per
+        element of a). More tiles mean smaller tasks and more copies of b.
     precision, solver, workers
         As `circledist.pairs_within`, for each tile.
 
@@ -739,7 +739,9 @@ def pairs_within(a, b, d, *, tiles=None, precision=None, solver=None, workers=1)
             hi = np.max([x[1] for x in extents], axis=0)
             pad = d + max(x[2] for x in extents)
             scale = max(x[3] for x in extents)
-            per_axis = math.ceil((tiles or 4 * len(chunks_a)) ** (1 / 3))
+            # At most a tile per element of a: more would be empty, and the grid's per-tile
+            # arrays would grow with the count asked for (tiles=2**62 asked for gigabytes).
+            per_axis = math.ceil(min(tiles or 4 * len(chunks_a), max(1, na)) ** (1 / 3))
             # No thinner than the padding: thinner tiles would only copy each b more often.
             side = max(float(np.max(hi - lo)) / per_axis, pad, 1e-300)
             grid = _Grid(lo, hi, side, pad, scale)

@@ -472,3 +472,24 @@ def test_errors_of_the_calls_name_the_whole_batch_index(batch, where, chunks, ba
         lazy = cdd.within(cdd.Point(points), cdd.Point(others), da.from_array(d, chunks=chunks))
     assert f"[{', '.join(map(str, where))}]" in expected[1]
     assert _message(lambda: lazy.compute(scheduler="sync")) == expected
+
+
+# More tiles than a has elements are empty tiles: the count is capped at one per element, so a
+# huge tiles= neither allocates per-tile arrays of that size (tiles=2**62 grew 400 MB and raised
+# MemoryError) nor changes the answers.
+@pytest.mark.parametrize("d", [0.0, 1e-9, 0.3])
+@pytest.mark.parametrize("tiles", [41, 10**6, 2**62])
+def test_pairs_within_with_more_tiles_than_shapes_stays_small(tiles, d):
+    import tracemalloc
+
+    rng = np.random.default_rng(17)
+    a, b = rng.uniform(-1, 1, (40, 3)), cd.Point(rng.uniform(-1, 1, (30, 3)))
+    tracemalloc.start()
+    try:
+        got = dask.compute(*cdd.pairs_within(da.from_array(a, chunks=(7, 3)), b, d, tiles=tiles), scheduler="sync")
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 16 << 20, f"{peak / 2**20:.0f} MiB at the peak"
+    for g, e in zip(got, cd.pairs_within(cd.Point(a), b, d)):
+        same(g, e)
