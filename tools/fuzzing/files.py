@@ -129,7 +129,7 @@ def _hostile_file(rng, kind, folder, index):
             item = np.dtype(str(rng.choice(["<f8", "<i8", "<U8", "<f4"])))
             claim = (size // item.itemsize,) if rng.random() < 0.7 else ()
             header = _npy_header(item.str, claim)
-            zeros = size if claim else item.itemsize
+            zeros = size  # under a scalar's header too: a member declaring one value over 32 MiB
             if rng.random() < 0.3:  # a small header over all the data
                 header, zeros = _npy_header(descr, shape), size
             members[f"{key}.npy"] = lambda f: header(f, zeros)
