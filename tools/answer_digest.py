@@ -54,12 +54,6 @@ def _load(path):
         return {kind: [row[~np.isnan(row)] for row in data[kind]] for kind in data.files}
 
 
-def _split(kind, values):
-    from circledist_cases import accuracy as A
-
-    return A.split_values(kind, values)
-
-
 class Digest:
     def __init__(self):
         self.groups = {}
@@ -98,11 +92,12 @@ def _answers(cd, a, b, solver, precision, limit):
 
 
 def _scalar(cd, cases, digest):
+    from circledist_cases import accuracy as A
     from circledist_cases import shapes as S
 
     for kind, rows in sorted(cases.items()):
         for values in rows:
-            (ka, va), (kb, vb) = _split(kind, values)
+            (ka, va), (kb, vb) = A.split_values(kind, values)
             a, b = S.make_shape(cd, ka, va), S.make_shape(cd, kb, vb)
             limit = 1.0
             for solver in SOLVERS:

@@ -34,18 +34,18 @@ def test_no_source_file_over_a_thousand_lines():
 
 PROVENANCE = {
     "an issue number": re.compile(r"\bissues? #?\d+", re.I),
-    "a date": re.compile(r"\b20[2-3]\d-[01]\d-[0-3]\d\b"),
-    "a machine path": re.compile(r"(?<![\w.])/(?:work|home|root)/"),
+    "a date": re.compile(r"\b20\d\d-[01]\d-[0-3]\d\b"),
+    "a machine path": re.compile(r"(?<![\w.])/(?:work|tmp|home|root)/"),
     "a load average": re.compile(r"\bload (?:average|about|~)", re.I),
     "a branch's history": re.compile(r"\(branch \w+\)|\bfrom branch \w+", re.I),
 }
 
 
 def test_no_history_in_code_tests_or_docs():
-    this = Path(__file__).resolve()  # this file and test_docs.py name the patterns they look for
+    this = Path(__file__).resolve()  # this file names the patterns it looks for
     found = {}
     for p in tracked(*SOURCES, ".ci/*"):
-        if p.name == "CHANGELOG.md" or p.resolve() == this or p.name == "test_docs.py" or not p.is_file():
+        if p.name == "CHANGELOG.md" or p.resolve() == this or not p.is_file():
             continue
         text = p.read_text(errors="replace")
         hits = [f"{what}: {m.group(0)!r}" for what, pattern in PROVENANCE.items() for m in pattern.finditer(text)]
