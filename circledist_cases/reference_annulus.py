@@ -136,7 +136,9 @@ def _feature(a, b):
     for s in (a, b):
         if s[0] == "annulus" and s[4] > s[3]:
             lengths += [s[4] - s[3]] + ([s[3]] if s[3] > 0 else [])
-    return mpf(min(lengths)) / 8
+    # An annulus of radius 0 (a point) against a shape without a radius: no feature of its own;
+    # the curve's or piece's distance to a point is resolved at the unit length.
+    return mpf(min(lengths, default=1)) / 8
 
 
 def minimum_along(curve, other, feature):

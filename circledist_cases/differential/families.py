@@ -150,9 +150,8 @@ def _oblique_normal(rng):
 def _small_shape(rng, kind, c, n):
     """A shape of `kind` anchored at c (a round's center, a piece's origin or first point, a curve's
     first control point) along n (a round's normal, a piece's direction half the time), with
-    small integer data: a circle's or disk's radius 0, 1 or 2, an arc's or annulus's 1 or 2, an
-    annulus's inner radius 0..outer (0: the disk, = outer: the circle), a segment of length 0
-    sometimes."""
+    small integer data: a round's radius 0, 1 or 2 (0: a point), an annulus's inner radius
+    0..outer (0: the disk, = outer: the circle), a segment of length 0 sometimes."""
 
     def along():
         return n * float(rng.choice([1, -1, 2])) if rng.random() < 0.5 else _small_int_vector(rng, True)
@@ -168,8 +167,6 @@ def _small_shape(rng, kind, c, n):
     r = float(rng.integers(0, 3))
     if kind in ("circle", "disk"):
         return list(c) + list(n) + [r]
-    r = max(r, 1.0)  # an arc or annulus of radius 0 is a point, on which the unique rules and
-    # _check_hole (inner 0: the disk's answers, inner = outer: the circle's) disagree
     if kind == "arc":
         start = _small_int_vector(rng, True)
         while not np.any(np.cross(start, n)):

@@ -18,11 +18,12 @@ from .base import LINEAR, _key
 #   unique must be False where the inputs are EXACTLY (in rationals) a configuration with a
 #   continuum of closest pairs, by symmetry:
 #     - a point, line, ray, segment or Bezier curve (every control point: the curve lies in their
-#       hull) lying on the axis of a circle, an arc (angle >= 1e-3) or an annulus with a hole
-#       (inner > 0): every rim (inner rim) point is as far from each point of the axis, so the
-#       closest pairs of any closest axis point form a circle (an arc);
-#     - two coaxial shapes among circle, disk, annulus and arc (not two arcs; an arc's angle
-#       >= 1e-3): common axis (normals parallel, the centres' offset along it).  The set of closest
+#       hull), or a round of radius 0 (the point at its centre), lying on the axis of a circle or
+#       an arc (angle >= 1e-3) of radius > 0 or an annulus with a hole (inner > 0): every rim
+#       (inner rim) point is as far from each point of the axis, so the closest pairs of any
+#       closest axis point form a circle (an arc);
+#     - two coaxial shapes of radius > 0 among circle, disk, annulus and arc (not two arcs; an
+#       arc's angle >= 1e-3): common axis (normals parallel, the centres' offset along it).  The set of closest
 #       pairs is invariant under the rotations about the axis (for an arc: every arc point is as
 #       far from the other shape); a pair off the axis has distinct rotated copies, and a pair on
 #       the axis needs both shapes to meet the axis (two disks), whose every vertical pair over
@@ -91,11 +92,12 @@ def _on_axis(kind, data, C, N):
 
 def _continuum_round(kind, data):
     """Whether a round-like shape has every one of its (rim) points as far from each axis point:
-    a circle, an arc of angle >= UNIQUE_MIN_ARC, an annulus with a hole."""
+    a circle or an arc (of angle >= UNIQUE_MIN_ARC) of radius > 0, an annulus with a hole. A
+    round of radius 0 is a single point: its axis carries no continuum."""
     if kind == "circle":
-        return True
+        return data[6] > 0
     if kind == "arc":
-        return data[10] >= UNIQUE_MIN_ARC
+        return data[6] > 0 and data[10] >= UNIQUE_MIN_ARC
     if kind == "annulus":
         return data[7] > 0
     return False
@@ -165,10 +167,13 @@ def _expected_unique(case):
     a, b = case["a_data"], case["b_data"]
     # continua by symmetry (exact)
     for (k1, d1), (k2, d2) in (((ka, a), (kb, b)), ((kb, b), (ka, a))):
+        # a round of radius 0 is the point at its centre
+        k1, d1 = ("point", d1[:3]) if k1 in _SYM and d1[6] == 0 else (k1, d1)
         if (k1 in LINEAR or k1 == "bezier") and k2 in _SYM and _continuum_round(k2, d2):
             if _on_axis(k1, d1, _fr(d2[:3]), _fr(d2[3:6])):
                 return False, f"the {k1} lies on the {k2}'s axis"
-    if ka in _SYM and kb in _SYM and not (ka == "arc" and kb == "arc"):
+    # coaxial rounds of radius > 0 (a round of radius 0 is a point: the rule above)
+    if ka in _SYM and kb in _SYM and not (ka == "arc" and kb == "arc") and a[6] > 0 and b[6] > 0:
         arcs_ok = all(d[10] >= UNIQUE_MIN_ARC for k, d in ((ka, a), (kb, b)) if k == "arc")
         Na, Nb = _fr(a[3:6]), _fr(b[3:6])
         if arcs_ok and _fcross_zero(Na, Nb) and _fcross_zero(_fsub(_fr(b[:3]), _fr(a[:3])), Na):

@@ -321,3 +321,42 @@ def test_unique_rule_by_hand(ka, a, kb, b, want):
         x, y = D.make_shape(cd, ka, a), D.make_shape(cd, kb, b)
         assert cd.closest_points(x, y).unique is want
         assert cd.closest_points(y, x).unique is want
+
+
+# A round of radius 0 is the point at its centre: its axis carries no continuum of closest pairs,
+# and a point-like round on another round's axis is a point there. Each round kind at radius 0,
+# tilted, centred at Z0 on the axis (N0 through the origin) that the other shape shares.
+N0 = [1.0, 2.0, 2.0]
+Z0 = [2.0, 4.0, 4.0]
+ZERO_ROUNDS = {
+    "circle": Z0 + N0 + [0.0],
+    "disk": Z0 + N0 + [0.0],
+    "annulus": Z0 + N0 + [0.0, 0.0],
+    "arc": Z0 + N0 + [0.0, 2.0, -1.0, 0.0, 2.0],
+}
+AXIS_SHAPES = [
+    ("point", [-1.0, -2.0, -2.0], True),  # a point on the axis: point to point
+    ("line", [0.0, 0.0, 0.0] + N0, True),  # the axis itself, through the round's centre
+    ("segment", [0.0, 0.0, 0.0, -1.0, -2.0, -2.0], True),  # a piece of the axis short of it
+    ("circle", [0.0, 0.0, 0.0] + N0 + [1.5], False),  # a coaxial ring: every rim point as far
+    ("disk", [0.0, 0.0, 0.0] + N0 + [1.5], True),  # a coaxial disk: its centre is nearest
+    ("annulus", [0.0, 0.0, 0.0] + N0 + [1.5, 0.5], False),  # the hole's rim, all as far
+    ("annulus", [0.0, 0.0, 0.0] + N0 + [1.5, 0.0], True),  # no hole: a disk
+    ("arc", [0.0, 0.0, 0.0] + N0 + [1.5, 2.0, -1.0, 0.0, 2.0], False),  # every arc point as far
+]
+
+
+@pytest.mark.parametrize("kind", sorted(ZERO_ROUNDS))
+@pytest.mark.parametrize("kb, b, want", AXIS_SHAPES, ids=[f"{k}-{i}" for i, (k, _, _) in enumerate(AXIS_SHAPES)])
+def test_unique_rule_rounds_of_radius_zero(kind, kb, b, want):
+    """A round of radius 0 against shapes on its axis, in both orders: unique is what the point
+    at its centre would have (the exact rule says False only where the other shape's rim is a
+    continuum about the axis; elsewhere it says True or nothing, never False), and the library
+    agrees."""
+    a = ZERO_ROUNDS[kind]
+    for case in (_hand_case(kind, a, kb, b), _hand_case(kb, b, kind, a)):
+        got = D.expected_unique(case)[0]
+        assert got is want or (want is True and got is None), (case, got)
+    x, y = D.make_shape(cd, kind, a), D.make_shape(cd, kb, b)
+    assert cd.closest_points(x, y).unique is want
+    assert cd.closest_points(y, x).unique is want

@@ -124,3 +124,68 @@ def test_batch_equals_scalar():
         batch = cd.distance(pieces, rings)
         scalar = [cd.distance(*_shapes(kind, case[2], case[3], np.float64)) for case in chosen]
         assert np.array_equal(batch, np.array(scalar))
+
+
+# A ray or segment can be closest at its line's other local minimum over the ring, which exists
+# only for a line near the circle's axis (docs/derivations/line_circle.md, the second minimum).
+# Its ring point must lie in the circle's plane to rounding however far above the plane the line
+# passes: small-integer scenes (exact inputs) keep the lines that pass within R / 2 of the axis.
+PLANE_ULPS = 8  # of the scene's largest coordinate or radius
+
+
+def _near_axis_scenes(count=4000, seed=11):
+    rng = np.random.default_rng(seed)
+    n = 12 * count
+    center = rng.integers(-3, 4, (n, 3)).astype(float)
+    normal = rng.integers(-2, 3, (n, 3)).astype(float)
+    radius = rng.integers(1, 4, n).astype(float)
+    p, q = rng.integers(-3, 4, (n, 3)).astype(float), rng.integers(-3, 4, (n, 3)).astype(float)
+    direction = q - p
+    keep = np.any(normal != 0, axis=1) & np.any(direction != 0, axis=1)
+    # the distance between the line and the axis (0 where they are parallel: kept out)
+    across = np.cross(direction, normal)
+    size = np.linalg.norm(across, axis=1)
+    keep &= size > 0
+    gap = np.abs(np.einsum("ij,ij->i", p - center, across)) / np.where(size > 0, size, 1)
+    keep &= gap < radius / 2
+    idx = np.flatnonzero(keep)[:count]
+    return center[idx], normal[idx], radius[idx], p[idx], q[idx]
+
+
+def _off_plane_in_ulps(points, center, normal, scale, precision):
+    """|(X - C) . N| / |N| in long double (the inputs are exact in it), in ulps of `scale`."""
+    ld = np.longdouble
+    x, c, w = np.asarray(points, dtype=ld), center.astype(ld), normal.astype(ld)
+    height = np.einsum("ij,ij->i", x - c, w) / np.sqrt(np.einsum("ij,ij->i", w, w))
+    eps = np.finfo(ld if precision == "longdouble" else np.float64).eps
+    return (np.abs(height) / (ld(eps) * scale.astype(ld))).astype(float)
+
+
+@pytest.mark.parametrize("precision", ["float64", "longdouble"])
+@pytest.mark.parametrize("target", ["circle", "annulus", "arc"])
+@pytest.mark.parametrize("piece", ["ray", "segment"])
+def test_rim_point_of_a_piece_near_the_axis_lies_in_the_plane(piece, target, precision):
+    center, normal, radius, p, q = _near_axis_scenes()
+    start = np.cross(normal, np.where(np.abs(normal[:, :1]) > 0, [[0.0, 1.0, 0.0]], [[1.0, 0.0, 0.0]]))
+    shape = {
+        "circle": lambda: cd.Circle(center, normal, radius),
+        "annulus": lambda: cd.Annulus(center, normal, radius / 2, radius),
+        "arc": lambda: cd.Arc(center, normal, radius, start, 4.0),
+    }[target]()
+    line = cd.Ray(p, q - p) if piece == "ray" else cd.Segment(p, q)
+    scale = np.maximum(np.abs(np.concatenate([center, p, q], axis=1)).max(axis=1), radius)
+    for solver in SOLVERS:
+        ab = cd.closest_points(line, shape, solver=solver, precision=precision)
+        ba = cd.closest_points(shape, line, solver=solver, precision=precision)
+        for name, points in (("ab", ab.point_b), ("ba", ba.point_a)):
+            off = _off_plane_in_ulps(points, center, normal, scale, precision)
+            worst = int(np.argmax(off))
+            assert off[worst] <= PLANE_ULPS, (
+                solver,
+                name,
+                off[worst],
+                center[worst],
+                normal[worst],
+                p[worst],
+                q[worst],
+            )

@@ -290,7 +290,12 @@ int other_line_minimum(const LineRingMinimum<Real>& m, Real radius, LineRingMini
   }
   const Real mu = Real(root);
   // z = (b1 / mu, b2 / (mu + s^2)), scaled by mu (mu + s^2) < 0: hence the sign.
-  const Vec3<Real> direction = -(m.a_parallel * (mu + m.s2) + m.a_across * mu);
+  // a_across carries a's rounding, eps |a|, out of the plane, and this minimum exists only for a
+  // line near the axis (|a_xy| within R s^2), so that rounding can be large beside the direction
+  // itself for a line far above the plane: the direction is taken back into the plane (to its own
+  // rounding), as the ring point must lie there.
+  Vec3<Real> direction = -(m.a_parallel * (mu + m.s2) + m.a_across * mu);
+  direction -= direction.dot(m.unit_normal) * m.unit_normal;
   const Real length = direction.norm();
   if (!(length > 0) || !std::isfinite(length)) return -1;
   second = m;
