@@ -169,6 +169,40 @@ inline LD bezier_circle(const BezierCurve3<double>& c, const Circle3<double>& k)
       0, 1, false);
 }
 
+// An arc relative to an origin, in its own frame: u from the start's projection onto the plane
+// (the circle's angle 0, Frame's U, where the start has none: the definition's fallback), v = n x u.
+struct Arc {
+  V3 c, n, u, v;
+  LD r, angle;
+  bool whole;
+  Arc(const Arc3<double>& a, const V3d& origin) : c(a.center.cast<LD>() - origin.cast<LD>()), r(a.radius) {
+    n = a.normal.cast<LD>() / a.normal.cast<LD>().norm();
+    const V3 s = a.start.cast<LD>();
+    const V3 q = s - n.dot(s) * n;
+    u = q.norm() > 0 ? V3(q / q.norm()) : V3(Frame<double>(a.normal).u.cast<LD>());
+    v = n.cross(u);
+    whole = a.angle >= 6.283185307179586;
+    angle = whole ? 2 * kPi : LD(std::max(a.angle, 0.0));
+  }
+  V3 at(LD t) const { return c + r * (std::cos(t) * u + std::sin(t) * v); }
+  // The distance from p (relative to the origin): the ring's where p's angle lies on the arc (the
+  // distance to the circle's point rises with the angular gap up to pi), else the nearer end's.
+  LD distance(const V3& p) const {
+    const V3 d = p - c;
+    const LD z = d.dot(n), x = d.dot(u), y = d.dot(v);
+    const LD rho = std::hypot(x, y);
+    LD phi = std::atan2(y, x);
+    if (phi < 0) phi += 2 * kPi;
+    if (phi <= angle || rho == 0) return std::hypot(z, rho - r);
+    return std::min((p - at(0)).norm(), (p - at(angle)).norm());
+  }
+  // The minimum over the arc of f(point): dense sampling and zooming.
+  template <class F> LD min_over(const F& f, int samples = 4096) const {
+    if (!(r > 0) || angle == 0) return f(at(0));
+    return minimize([&](LD t) { return f(at(t)); }, 0, angle, whole, samples);
+  }
+};
+
 }  // namespace ref
 
 // ---------------------------------------------------------------------------------------------

@@ -2,7 +2,8 @@
 // long-double references that use no library code: the arc sampled directly (its own u from the
 // start's projection, v = n x u), the inner distance from an arc point to the other shape in
 // closed form (point, line, ray, segment; the elementary projection onto a circle or disk, as
-// round_reference.hpp does) or, against another arc, itself sampled and refined, and the minimum
+// round_reference.hpp does; against another arc, the ring's where the point's angle lies on it,
+// else the nearer end's: ref::Arc), and the minimum
 // over the arc's t found by dense sampling and zooming (ref::minimize). Bar in double:
 // |error| <= 1e-12 * max(true distance, largest radius). Also: the closest points lie on their
 // shapes, their separation is the distance, the arc's parameter gives its point, both argument
@@ -36,28 +37,8 @@ const double kTurn = 6.283185307179586;
 // ---------------------------------------------------------------------------------------------
 // The references.
 
-// The arc relative to an origin (differences of doubles are exact in long double).
-struct RefArc {
-  V3 c, u, v;
-  LD r, angle;
-  bool whole;
-  RefArc(const Arc& a, const V3d& origin) : c(a.center.cast<LD>() - origin.cast<LD>()), r(a.radius) {
-    const V3 n = a.normal.cast<LD>() / a.normal.cast<LD>().norm();
-    const V3 s = a.start.cast<LD>();
-    const V3 q = s - n.dot(s) * n;
-    // No projection: the definition's fallback, the circle's angle 0 (Frame's U).
-    u = q.norm() > 0 ? V3(q / q.norm()) : V3(Frame<double>(a.normal).u.cast<LD>());
-    v = n.cross(u);
-    whole = a.angle >= kTurn;
-    angle = whole ? 2 * ref::kPi : LD(std::max(a.angle, 0.0));
-  }
-  V3 at(LD t) const { return c + r * (std::cos(t) * u + std::sin(t) * v); }
-  // The minimum over the arc of f(point).
-  LD min_over(const std::function<LD(const V3&)>& f, int samples = 4096) const {
-    if (!(r > 0) || angle == 0) return f(at(0));
-    return ref::minimize([&](LD t) { return f(at(t)); }, 0, angle, whole, samples);
-  }
-};
+// The arc relative to an origin (differences of doubles are exact in long double): ref::Arc.
+using RefArc = ref::Arc;
 
 // A linear piece relative to an origin: points o + s d, s in [lo, hi].
 struct RefPiece {
@@ -101,11 +82,11 @@ LD ref_disk_arc(const Disk& d, const Arc& a) {
   const ref::Round rd(d.center, d.normal, d.radius, a.center);
   return ra.min_over([&](const V3& x) { return (x - rd.disk_point(x)).norm(); });
 }
-// Arc against arc: the inner point-arc distance sampled and refined too (fewer samples: it is
-// unimodal on the arc, least at the projection's angle or an end).
+// Arc against arc: one arc sampled and refined, the distance from its point to the other arc in
+// closed form (ref::Arc::distance).
 LD ref_arc_arc(const Arc& a, const Arc& b) {
   const RefArc ra(a, a.center), rb(b, a.center);
-  return ra.min_over([&](const V3& x) { return rb.min_over([&](const V3& y) { return (x - y).norm(); }, 64); }, 1024);
+  return ra.min_over([&](const V3& x) { return rb.distance(x); });
 }
 
 // ---------------------------------------------------------------------------------------------

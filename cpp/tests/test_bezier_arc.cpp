@@ -42,31 +42,8 @@ bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; 
 // ---------------------------------------------------------------------------------------------
 // The references.
 
-// The arc relative to an origin, in its own frame (u from the start's projection).
-struct RefArc {
-  V3 c, n, u, v;
-  LD r, angle;
-  RefArc(const Arc& a, const V3d& origin) : c(a.center.cast<LD>() - origin.cast<LD>()), r(a.radius) {
-    n = a.normal.cast<LD>() / a.normal.cast<LD>().norm();
-    const V3 s = a.start.cast<LD>();
-    const V3 q = s - n.dot(s) * n;
-    u = q / q.norm();
-    v = n.cross(u);
-    angle = a.angle >= kTurn ? 2 * ref::kPi : LD(std::max(a.angle, 0.0));
-  }
-  V3 at(LD t) const { return c + r * (std::cos(t) * u + std::sin(t) * v); }
-  // The distance from p: the ring's where p's angle lies on the arc (the distance to the circle's
-  // point rises with the angular gap), else the nearer end's.
-  LD distance(const V3& p) const {
-    const V3 d = p - c;
-    const LD z = d.dot(n), x = d.dot(u), y = d.dot(v);
-    const LD rho = std::hypot(x, y);
-    LD phi = std::atan2(y, x);
-    if (phi < 0) phi += 2 * ref::kPi;
-    if (phi <= angle || rho == 0) return std::hypot(z, rho - r);
-    return std::min((p - at(0)).norm(), (p - at(angle)).norm());
-  }
-};
+// The arc relative to an origin, in its own frame, with its distance in closed form: ref::Arc.
+using RefArc = ref::Arc;
 
 // The annulus relative to an origin: |z| over the ring, else the nearer rim's distance.
 struct RefAnnulus {
