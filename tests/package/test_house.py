@@ -36,7 +36,9 @@ PROVENANCE = {
     "an issue number": re.compile(r"\bissues? #?\d+", re.I),
     "a date": re.compile(r"\b20\d\d-[01]\d-[0-3]\d\b"),
     "a machine path": re.compile(r"(?<![\w.])/(?:work|tmp|home|root)/"),
-    "a load average": re.compile(r"\bload (?:average|about|~)", re.I),
+    "a load average": re.compile(r"\bload (?:average|about|~|\d)", re.I),
+    "a before/after measurement": re.compile(r"\d[\d.,]* ?(?:->|\u2192) ?\d[\d.,]* ?(?:[KMG]B|[mnu\u00b5]?s)\b"),
+    "a byte count": re.compile(r"\b\d{1,3}(?:,\d{3}){2,} bytes\b"),
     "a branch's history": re.compile(r"\(branch \w+\)|\bfrom branch \w+", re.I),
 }
 
