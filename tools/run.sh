@@ -6,9 +6,11 @@
 #                            file it is built from changed since its last install, run pytest on every
 #                            core except the tests marked slow (pyproject.toml's markers)
 #   bash tools/run.sh test   install what is missing, build the package's wheel and install it, run pytest
-#                            (every test: on every core, then the ones marked serial alone) and
-#                            the C++ tests (ctest), one C++ test built against cmeel-eigen's Eigen (the
-#                            fallback), and the wheel's tests in a venv of its own with no compiler on PATH
+#                            (every test: on every core, then the ones marked serial alone) and the
+#                            wheel's tests in a venv of its own with no compiler on PATH; beside them,
+#                            at low priority, the C++ tests (ctest): the suites under the sanitizers,
+#                            the headers alone, the LTO build, the find_package consumer, and one
+#                            C++ test built against cmeel-eigen's Eigen (the fallback)
 #   bash tools/run.sh bench  install what is missing, build, run the benchmarks
 #   bash tools/run.sh lint   ruff and clang-format (pinned in pyproject.toml's lint extra) over every
 #                            tracked source file; builds nothing
@@ -88,24 +90,6 @@ if [ "$task" = lint ]; then
   exit $status
 fi
 
-# The package is built as a wheel, which is installed: the tests then run on what a user installs.
-# The check task skips both while no file the wheel is built from is newer than the last install
-# (a stamp taken before that build started; a folder's time changes when a file in it is removed).
-built_from=(CMakeLists.txt pyproject.toml README.md LICENSE src cpp/include cpp/cmake python)
-stamp=.venv/circledist-installed.stamp
-if [ "$task" = check ] && [ -f "$stamp" ] && [ -z "$(find "${built_from[@]}" -newer "$stamp" -print -quit)" ]; then
-  echo "== circledist is installed from these sources already"
-else
-  echo "== building the circledist wheel, and installing it"
-  rm -f "$stamp"
-  mkdir -p build
-  touch build/installed.stamp
-  rm -rf build/wheel
-  "$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps -w build/wheel .
-  pip_install --force-reinstall --no-deps build/wheel/circledist-*.whl
-  mv build/installed.stamp "$stamp"
-fi
-
 # pytest on every core: the tests not marked serial spread over one worker process per core
 # (pytest-xdist), a test file to one worker (--dist loadfile: the references a file caches and its
 # module fixtures are computed once, as in one process), then the serial ones in one process with
@@ -167,34 +151,102 @@ eigen_fallback() {
   "$dir/cpp/tests/test_line_circle"  # the test on its own (cpp/tests/CMakeLists.txt)
 }
 
+# The C++ suites, once, built at -O1 with address and undefined-behaviour checks and Eigen's and
+# the library's assertions on; every suite runs in full. Their answers are those of an optimized
+# build: optimization does not change IEEE arithmetic without -ffast-math or FMA contraction,
+# which x86-64's baseline has no instructions for. Line tables only: -g1 as the Debug
+# configuration's flags, which come after CMAKE_CXX_FLAGS (its default, a full -g, was most of the
+# compile time); the reports' stacks still name file and line. Not the UB checks that find nothing
+# here and cost much of the rest: vptr (no polymorphic type in the library), alignment (Eigen
+# asserts its types' alignment in this build; nothing else is cast), null and pointer-overflow (a
+# null or wild pointer that is used is AddressSanitizer's report).
+cpp_sanitized() {
+  echo "== C++ suites under AddressSanitizer and UndefinedBehaviorSanitizer (ctest -L suite)"
+  cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DCIRCLEDIST_BUILD_TESTS=ON \
+    -DCMAKE_CXX_FLAGS="-O1 -fsanitize=address,undefined -fno-sanitize=vptr,alignment,null,pointer-overflow -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
+    >/dev/null || return 1
+  cmake --build build/sanitize -j 2 || return 1
+  ctest --test-dir build/sanitize -j 2 -L suite --timeout 600 --output-on-failure
+}
+
+# What only an optimized build shows: each header compiles on its own, the link-time optimization
+# build's suites (cpp/tests/CMakeLists.txt: target optimized_checks), the installed CMake package
+# (consumer); then the Eigen fallback.
+cpp_optimized() {
+  local status=0
+  echo "== C++ headers alone, link-time optimization build, find_package consumer (ctest -L 'lto|install')"
+  cmake -S . -B build/cpp -G Ninja -DCMAKE_BUILD_TYPE=Release -DCIRCLEDIST_BUILD_TESTS=ON >/dev/null || return 1
+  cmake --build build/cpp -j 1 --target optimized_checks || return 1
+  ctest --test-dir build/cpp -L "lto|install" --timeout 600 --output-on-failure || status=1
+  echo "== C++ test against cmeel-eigen's Eigen (the fallback where the system has none)"
+  eigen_fallback || status=1
+  return $status
+}
+
+# The test task's C++ side runs beside its Python side, at the lowest priority: it takes the cores
+# pytest leaves idle (its single-process pass, the last files of its parallel one) and all of
+# them once pytest is done. Its output goes to build/test-logs/ and is printed when it is done.
+cpp_lane_start() {
+  mkdir -p build/test-logs
+  echo "== C++ tests: built and run at low priority beside the Python side (output: build/test-logs/)"
+  (renice -n 19 "$BASHPID" >/dev/null && cpp_sanitized) >build/test-logs/cpp_sanitized.log 2>&1 &
+  cpp_sanitized_pid=$!
+  (renice -n 19 "$BASHPID" >/dev/null && cpp_optimized) >build/test-logs/cpp_optimized.log 2>&1 &
+  cpp_optimized_pid=$!
+  trap cpp_lane_stop EXIT
+}
+# An early exit (a failed build of the wheel) stops the C++ side with it.
+cpp_lane_stop() {
+  [ -z "${cpp_lane_waited:-}" ] || return 0
+  local pid
+  for pid in "$cpp_sanitized_pid" "$cpp_optimized_pid"; do kill_tree "$pid"; done
+}
+kill_tree() {  # kill_tree PID: the process and every descendant
+  local child
+  for child in $(cat /proc/"$1"/task/*/children 2>/dev/null || true); do kill_tree "$child"; done
+  kill "$1" 2>/dev/null || true
+}
+cpp_lane_wait() {
+  local status=0
+  cpp_lane_waited=1
+  wait "$cpp_sanitized_pid" || status=1
+  cat build/test-logs/cpp_sanitized.log
+  wait "$cpp_optimized_pid" || status=1
+  cat build/test-logs/cpp_optimized.log
+  return $status
+}
+
+[ "$task" != test ] || cpp_lane_start
+
+# The package is built as a wheel, which is installed: the tests then run on what a user installs.
+# The check task skips both while no file the wheel is built from is newer than the last install
+# (a stamp taken before that build started; a folder's time changes when a file in it is removed).
+built_from=(CMakeLists.txt pyproject.toml README.md LICENSE src cpp/include cpp/cmake python)
+stamp=.venv/circledist-installed.stamp
+if [ "$task" = check ] && [ -f "$stamp" ] && [ -z "$(find "${built_from[@]}" -newer "$stamp" -print -quit)" ]; then
+  echo "== circledist is installed from these sources already"
+else
+  echo "== building the circledist wheel, and installing it"
+  rm -f "$stamp"
+  mkdir -p build
+  touch build/installed.stamp
+  rm -rf build/wheel
+  "$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps -w build/wheel .
+  pip_install --force-reinstall --no-deps build/wheel/circledist-*.whl
+  mv build/installed.stamp "$stamp"
+fi
+
 case "$task" in
   demo)
     "$py" examples/demo.py  # picture: build/demo_scene.png (`examples/demo.py PATH` writes it elsewhere)
     ;;
   test)
-    echo "== pytest"
     status=0
+    echo "== pytest"
     pytest_on_every_core || status=$?
-    echo "== C++ tests (ctest)"
-    cpp_build
-    ctest --test-dir build/cpp -j 2 --output-on-failure || status=1
-    # Every suite at -O1 with address and undefined-behaviour checks, drawing a tenth of its random
-    # cases (check.hpp: check::scale()); every fixed and hard case runs. Line tables only: -g1 as
-    # the Debug configuration's flags, which come after CMAKE_CXX_FLAGS (its default, a full -g,
-    # was most of the compile time); the reports' stacks still name file and line. Not the UB
-    # checks that find nothing here and cost much of the rest: vptr (no polymorphic type in the
-    # library), alignment (Eigen asserts its types' alignment in this build, which keeps
-    # assertions on; nothing else is cast), null and pointer-overflow (a null or wild pointer that
-    # is used is AddressSanitizer's report).
-    echo "== C++ tests under AddressSanitizer and UndefinedBehaviorSanitizer"
-    cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DCIRCLEDIST_BUILD_TESTS=ON \
-      -DCMAKE_CXX_FLAGS="-O1 -fsanitize=address,undefined -fno-sanitize=vptr,alignment,null,pointer-overflow -fno-sanitize-recover=undefined -fno-omit-frame-pointer" >/dev/null
-    cmake --build build/sanitize -j 2
-    timeout 600 ctest --test-dir build/sanitize -j 2 -E consumer --output-on-failure || status=1
-    echo "== C++ test against cmeel-eigen's Eigen (the fallback where the system has none)"
-    eigen_fallback || status=1
     echo "== the wheel alone: a fresh venv with the wheel and the test extra, no compiler or Eigen on PATH"
     wheel_alone || status=1
+    cpp_lane_wait || status=1
     exit $status
     ;;
   check)

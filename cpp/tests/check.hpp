@@ -38,10 +38,7 @@ template <class Real> Real closed_form_bar() {
 }
 
 // The multiplier of the random draws' counts (scaled()): CIRCLEDIST_TEST_SCALE when it is set
-// (a longer run: 10), else 1, or a tenth when built with the address sanitizer. The sanitizers
-// find memory and undefined-behaviour errors on a code path, not on the millionth draw through
-// it: every fixed and hard case runs at any scale, and each scaled loop keeps enough draws to
-// reach every pair, policy and precision it visits.
+// (a longer run: 10), else 1. Every fixed and hard case runs at any scale.
 inline double scale() {
   static const double value = [] {
     if (const char* text = std::getenv("CIRCLEDIST_TEST_SCALE")) {
@@ -51,13 +48,6 @@ inline double scale() {
       std::fprintf(stderr, "CIRCLEDIST_TEST_SCALE must be a positive number, not '%s'\n", text);
       std::exit(2);
     }
-#if defined(__SANITIZE_ADDRESS__)
-    return 0.1;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    return 0.1;
-#endif
-#endif
     return 1.0;
   }();
   return value;

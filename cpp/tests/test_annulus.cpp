@@ -25,8 +25,7 @@
 
 namespace test_annulus {
 
-// Random draws: check::scaled(n) of them (a tenth under the sanitizers, check.hpp); the hard
-// cases all run at any scale.
+// Random draws: check::scaled(n) of them (check.hpp); the hard cases all run at any scale.
 
 using Annulus = Annulus3<double>;
 using Line = Line3<double>;

@@ -27,7 +27,7 @@ using Segment = Segment3<double>;
 using Circle = Circle3<double>;
 using Disk = Disk3<double>;
 
-// Random draws: check::scaled(n) of them (a tenth under the sanitizers, check.hpp): the
+// Random draws: check::scaled(n) of them (check.hpp): the
 // references' dense sampling is most of this test's time; the hard cases all run at any scale.
 
 namespace {

@@ -29,8 +29,7 @@ using Arc = Arc3<double>;
 using Annulus = Annulus3<double>;
 using Curve = BezierCurve3<double>;
 
-// Random draws: check::scaled(n) of them (a longer run: CIRCLEDIST_TEST_SCALE=10; a tenth under
-// the sanitizers, check.hpp).
+// Random draws: check::scaled(n) of them (a longer run: CIRCLEDIST_TEST_SCALE=10, check.hpp).
 
 namespace {
 

@@ -79,7 +79,7 @@ void pruning_tests() {
   auto vec = [&] { return V3d(normal(rng), normal(rng), normal(rng)); };
   auto radius = [&] { return std::exp(0.7 * normal(rng)); };
   int pruned = 0, total = 0;
-  for (int k = 0; k < check::scaled(300); ++k) {  // a tenth under the sanitizers (check.hpp)
+  for (int k = 0; k < check::scaled(300); ++k) {
     Circle3<double> a{vec(), vec(), radius()}, b{vec(), vec(), radius()};
     if (k % 3 == 1) b.center = a.center + a.radius * Frame<double>(a.normal).u + 1e-9 * vec();  // touching
     if (k % 3 == 2)

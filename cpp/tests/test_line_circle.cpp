@@ -114,7 +114,7 @@ template <class Real, class Roots> void agreement_cases() {
   using V = Vec3<Real>;
   test_random::Random random(20261126);
   int disagreements = 0;
-  for (int i = 0; i < check::scaled(3000); ++i) {  // a tenth under the sanitizers (check.hpp)
+  for (int i = 0; i < check::scaled(3000); ++i) {
     const V center = random.vector(1).template cast<Real>(), normal = random.direction().template cast<Real>();
     const Real radius = Real(random.uniform(0.5, 2));
     const V unit = normal.normalized();

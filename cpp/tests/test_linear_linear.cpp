@@ -22,7 +22,7 @@ using V = Vec3<double>;
 test_random::Random source(20261122);
 
 void linear_cases() {
-  for (int i = 0; i < check::scaled(40); ++i) {  // a tenth under the sanitizers (check.hpp)
+  for (int i = 0; i < check::scaled(40); ++i) {
     const Segment3<double> a = source.segment(2), b = source.segment(2);
     const double d = distance(a, b);
     double sampled = std::numeric_limits<double>::infinity();

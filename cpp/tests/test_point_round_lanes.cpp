@@ -185,7 +185,7 @@ int main() {
     return Case{rng.vector(3), rng.vector(2), rng.direction(), radius, radius * rng.uniform(0.0, 1.0)};
   };
   Case cases[kLanes];
-  const int blocks = check::scaled(100000);  // a tenth under the sanitizers (check.hpp)
+  const int blocks = check::scaled(100000);
   for (int i = 0; i < blocks; ++i) {
     for (Case& c : cases) c = random_case();
     check_both(cases);
