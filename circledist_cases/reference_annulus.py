@@ -26,6 +26,7 @@ import math
 from . import reference_kit as K
 from . import reference_round as R
 from .reference_arc import ArcMP
+from .reference_store import stored
 
 mpf, ctx = K.mpf, K.ctx
 TWO_PI = 2 * math.pi
@@ -160,6 +161,7 @@ def minimum_along(curve, other, feature):
 
 
 @functools.lru_cache(maxsize=None)
+@stored
 def reference_mp(a, b):
     """The distance between the annulus a and the shape b, at 50 digits (an mpf; module docstring)."""
     ring = AnnulusMP(a)
@@ -177,6 +179,7 @@ def reference(a, b):
     return float(reference_mp(a, b))
 
 
+@stored
 def bezier_reference_mp(a, ctrl):
     """The distance between the annulus a and the Bezier curve `ctrl` at 50 digits (an mpf): the
     least of the point-annulus closed form over the curve's t (its speed bounded by

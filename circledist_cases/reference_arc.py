@@ -25,6 +25,7 @@ import math
 
 from . import reference_kit as K
 from . import reference_round as R
+from .reference_store import stored
 
 mpf, ctx = K.mpf, K.ctx
 TWO_PI = 2 * math.pi  # float64's 2 pi: an angle >= this is the whole circle (docs/derivations/arc.md)
@@ -109,6 +110,7 @@ ZOOM_SAMPLES = 4000  # the zoom's cap on added samples per reference (lowest bou
 
 
 @functools.lru_cache(maxsize=4096)
+@stored
 def reference_mp(a, b, intervals=INTERVALS):
     """min over the arc a's angle t of the closed-form distance from a(t) to b (an mpf).
 
@@ -167,6 +169,7 @@ def _least(point_at, other, hi, intervals, periodic, lipschitz, scale, round_res
     return minima[0].value
 
 
+@stored
 def bezier_arc(ctrl, arc_shape):
     """A Bezier curve (control points) against an arc: min over the curve's t of the point-arc
     closed form, zoomed as above (the curve's speed bounded by its hodograph, reference_round's

@@ -27,12 +27,14 @@ curve's first one).
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import List, Sequence
 
 import numpy as np
 
 from . import reference_kit as K
 from . import reference_round as R
+from .reference_store import stored
 
 mpf = K.mpf
 ctx = K.ctx
@@ -223,14 +225,20 @@ def _valley(pa: List[K.Vec], pb: List[K.Vec], s, t, width=mpf("1e-2")):
     return ctx.sqrt(value), s, t
 
 
+@dataclass
 class BezierPair:
-    def __init__(self, value, s, t, pa, pb):
-        self.value, self.s, self.t, self.pa, self.pb = value, s, t, pa, pb
+    value: object
+    s: object
+    t: object
+    pa: object
+    pb: object
 
 
+@dataclass(repr=False)
 class BezierReference:
-    def __init__(self, distance, pairs, scale):
-        self.distance, self.pairs, self.scale = distance, pairs, scale
+    distance: object
+    pairs: list
+    scale: float
 
     def __float__(self):
         return float(self.distance)
@@ -239,6 +247,7 @@ class BezierReference:
         return f"BezierReference({K.ctx.nstr(self.distance, 20)}, scale={self.scale:.3g})"
 
 
+@stored
 def bezier_bezier(ctrl_a: Sequence, ctrl_b: Sequence) -> BezierReference:
     pa = [K.vec(p) for p in ctrl_a]
     pb = [K.vec(p) for p in ctrl_b]

@@ -19,6 +19,7 @@ import mpmath as mp
 import numpy as np
 
 from .golden import golden_section
+from .reference_store import stored
 
 mp.mp.dps = 50
 KINDS = ("point", "line", "ray", "segment")
@@ -79,6 +80,7 @@ def reference(a, b):
     return min(values[i], best)
 
 
+@stored
 def linear_linear(ka, a_data, kb, b_data):
     """The reference for two pieces given as flat float data (point: 3 numbers; line / ray:
     origin, direction; segment: two ends)."""

@@ -60,6 +60,7 @@ from .reference_kit import (  # noqa: F401
     to_mp,
     vec,
 )
+from .reference_store import stored
 
 CIRCLE_SAMPLES = 720  # samples of an angle over [0, 2 pi)
 CURVE_SAMPLES = 600  # intervals of a Bezier parameter over [0, 1] (end points included)
@@ -232,6 +233,7 @@ class Pair:
     pb: Vec
     rise: object
     degenerate: bool  # the closest point on the other shape is not unique (point on an axis)
+    t: object = None  # a Bezier curve's parameter at the pair (bezier_disk, bezier_circle, bezier_other)
 
 
 @dataclass(repr=False)
@@ -329,6 +331,7 @@ def _scale_of(*radii) -> float:
     return float(max(abs(to_mp(r)) for r in radii))
 
 
+@stored
 def circle_circle(ca, na, ra, cb, nb, rb, formulations: str = "ab") -> Reference:
     """Circle-circle: min over the angle of one circle of the point-circle distance to the other.
 
@@ -345,6 +348,7 @@ def circle_circle(ca, na, ra, cb, nb, rb, formulations: str = "ab") -> Reference
     return Reference(pairs[0].value, pairs, _scale_of(ra, rb))
 
 
+@stored
 def circle_disk(ca, na, ra, cb, nb, rb) -> Reference:
     """Circle A against disk B: min over A's angle of the closed-form point-disk distance."""
     A, B = make_round(ca, na, ra), make_round(cb, nb, rb)
@@ -411,6 +415,7 @@ def disk_disk_rims(ca, na, ra, cb, nb, rb) -> List[Pair]:
     return pairs
 
 
+@stored
 def disk_disk(ca, na, ra, cb, nb, rb) -> Reference:
     """Disk-disk distance: 0 when they meet (see disks_intersect), else the rim formula.
 
@@ -487,11 +492,13 @@ def _bezier_round(ctrl, center, normal, radius, disk: bool) -> Reference:
     return Reference(pairs[0].value, pairs, _scale_of(radius))
 
 
+@stored
 def bezier_disk(ctrl, center, normal, radius) -> Reference:
     """Bezier B(t), t in [0, 1], against a disk: min over t of the point-disk closed form."""
     return _bezier_round(ctrl, center, normal, radius, disk=True)
 
 
+@stored
 def bezier_circle(ctrl, center, normal, radius) -> Reference:
     """Bezier B(t), t in [0, 1], against a circle: min over t of the point-circle closed form."""
     return _bezier_round(ctrl, center, normal, radius, disk=False)
@@ -590,6 +597,7 @@ def bezier_other_scale(ctrl, kind: str, *data) -> float:
     return extent
 
 
+@stored
 def bezier_other(ctrl, kind: str, *data) -> Reference:
     """Bezier B(t), t in [0, 1], against a point (kind "point", data (p,)), a line or ray
     (origin, direction) or a segment (p0, p1): min over t of the closed-form distance from B(t)

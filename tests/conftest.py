@@ -50,3 +50,13 @@ def umask_022():
     old = os.umask(0o022)
     yield
     os.umask(old)
+
+
+def pytest_sessionfinish(session):
+    """In record mode (CIRCLEDIST_REFERENCES=record: python -m tools.references record) the
+    references this process computed are written to tests/references/ (each pytest-xdist worker
+    adds its own)."""
+    if os.environ.get("CIRCLEDIST_REFERENCES") == "record":
+        from circledist_cases import reference_store
+
+        reference_store.write_recorded()

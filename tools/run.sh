@@ -24,7 +24,9 @@
 #                            (build/reports/fuzz_arguments_report.json), then the differential accuracy
 #                            test's long mode over N library answers (every solver x precision x
 #                            entry point, both orders; 168 per case) (build/reports/differential_report.json);
-#                            then rewrites docs/reports/fuzz.md and differential.md from those records
+#                            then computes every recorded 50-digit reference of tests/references/
+#                            again (python -m tools.references verify), and rewrites
+#                            docs/reports/fuzz.md and differential.md from those records
 # Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
 # from apt when missing; the Python packages pyproject.toml lists (build requires, dependencies,
 # the task's extras) go into ./.venv (which sees the system's site-packages).
@@ -262,6 +264,8 @@ case "$task" in
     "$py" tools/fuzz_crash.py --arguments $(( ${2:-10000000} / 100 + 1 )) --chunk 5000 --timeout 600 \
       --report build/reports/fuzz_arguments_report.json || status=$?
     "$py" -m tools.differential --answers "${2:-10000000}" --seed 1 --report build/reports/differential_report.json || status=$?
+    # Every recorded 50-digit reference the tests read, computed again (tests/references/).
+    "$py" -m tools.references verify || status=$?
     # The report pages, rewritten whole from these records (commit them when the run is worth keeping).
     "$py" -m tools.report_pages fuzz build/reports/fuzz_report.json build/reports/fuzz_threads_report.json \
       build/reports/fuzz_arguments_report.json || status=$?

@@ -13,6 +13,7 @@ from .families import bar_scale
 from .unique import expected_unique
 from .check import _call, _finding, make_shape
 from .confirm import _CURVE_MINIMA, _REF_CACHE, ann_shape, mp_reference
+from ..reference_store import stored
 
 
 REF_UNIQUE_REL = "1e-6"  # the second-best distinct local minimum must be worse by this x max(d, scale)
@@ -98,6 +99,13 @@ def _target_point_unique(p, kind, data, margin):
 
 
 def reference_unique(case):
+    """The rule of _reference_unique (below) for the case's shapes."""
+    ka, a, kb, b = _key(case)
+    return _reference_unique(ka, a, kb, b)
+
+
+@stored(also=("differential/base.py", "differential/confirm.py", "differential/families.py"))
+def _reference_unique(ka, a, kb, b):
     """(True, why) or (None, "") from a 50-digit one-parameter search, for the pairs of
     _unique_roles: a circle or arc against a line, ray, segment, disk, circle, arc or annulus, a
     Bezier curve against any of those and a point, a line, ray or segment against a disk or
@@ -124,6 +132,11 @@ def reference_unique(case):
     None: the rule never says False from sampling (expected_unique's exact continua do).  Used
     by reference_check (the direct 50-digit comparison of a few cases) and unique_direct_check
     (the long mode's sample), not by the screen."""
+
+    def data(d):
+        return [list(p) for p in d] if d and isinstance(d[0], tuple) else list(d)
+
+    case = {"a": ka, "a_data": data(a), "b": kb, "b_data": data(b)}
     roles = _unique_roles(case)
     if roles is None:
         return None, ""

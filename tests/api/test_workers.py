@@ -19,7 +19,7 @@ cd = pytest.importorskip("circledist")
 # at every worker count below; the Bezier pairs (the costliest) 3 chunks, more than one thread.
 N = 6 * 256
 N_BEZIER = 3 * 256
-WORKERS = (2, 3, -1)
+WORKERS = (2, 3)  # workers=-1 (every core): test_counters_add_up_across_threads
 
 
 def _answers(a, b, d, **opts):
