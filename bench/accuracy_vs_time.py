@@ -12,7 +12,7 @@
    coplanar and concentric annuli, ...), each placed in the round shape's own
    frame, under a generic rotation, and translated by 1e6 and 1e8, plus radii 1e-9 and 1e9.
    The stability sweeps of circledist_cases/sweeps.py are appended (double only, not timed).
-2. Computes 50-digit references by an independent method: circledist_cases/reference.py (linear
+2. Computes 50-digit references by an independent method: circledist_cases/reference_linear_round.py (linear
    shapes against circles and disks), reference_round.py (circle, disk and Bezier kinds),
    reference_arc.py (every kind against an arc: the arc's angle) and reference_annulus.py (every
    kind against an annulus: the other shape's parameter, or both regions' rims)
@@ -91,7 +91,7 @@ def _reference_version():
     h = hashlib.sha256()
     for name in (
         "reference_kit.py",
-        "reference.py",
+        "reference_linear_round.py",
         "reference_round.py",
         "reference_bezier.py",
         "reference_arc.py",
@@ -489,7 +489,7 @@ def write_markdown(
         "rounded inputs (so the error measures the solver, not the input rounding); the long double",
         "inputs are the doubles extended exactly and share the double references.",
         "",
-        "References: 50-digit mpmath, by an independent method (circledist_cases/reference.py and",
+        "References: 50-digit mpmath, by an independent method (circledist_cases/reference_linear_round.py and",
         "circledist_cases/reference_round.py): the distance is minimised over ONE parameter (an angle of a circle or",
         "the curve/line parameter) of a closed-form point-to-shape distance, by dense sampling and",
         "golden-section refinement; no polynomial and no root finding. Two Bezier curves",

@@ -12,7 +12,7 @@ written in a local frame (the round shape is the unit circle or disk, the arc of
 from +x on the unit circle, the annulus of radii 0.5 and 1: center 0, normal +z) and placed in
 the world: in that frame, under a generic rotation, translated by 1e6 and 1e8, plus radius and
 scale variants. References (``reference_distance``) are of the exact float inputs, by an
-independent method: reference.py, reference_round.py, reference_arc.py and reference_annulus.py
+independent method: reference_linear_round.py, reference_round.py, reference_arc.py and reference_annulus.py
 minimise a closed-form point-to-shape distance over ONE parameter in mpmath; no polynomial, no
 root finding.
 """
@@ -26,7 +26,7 @@ import numpy as np
 from mpmath import mp, mpf
 
 from . import bezier_cases
-from . import reference as LREF  # linear shapes vs circle / disk
+from . import reference_linear_round as LREF  # linear shapes vs circle / disk
 from . import reference_annulus as NREF  # every kind against an annulus
 from . import reference_arc as AREF  # every kind but the annulus against an arc
 from . import reference_bezier as BREF  # Bezier against Bezier

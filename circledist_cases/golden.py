@@ -1,4 +1,4 @@
-"""Golden-section search, shared by the 50-digit references (reference.py, reference_round.py,
+"""Golden-section search, shared by the 50-digit references (reference_linear_round.py, reference_round.py,
 reference_linear.py): each brackets a minimum of its own one-parameter function by sampling and
 narrows the bracket here."""
 

@@ -199,22 +199,26 @@ class _File:
 
     def write(self):
         """The values computed in record mode, added to those recorded now (another process of
-        the same run may have written some since this one read the file), one per line, sorted."""
+        the same run may have written some since this one read the file), one per line, sorted,
+        into CIRCLEDIST_REFERENCES_OUT (tools.references record: a folder it then moves into
+        place) or else the file itself."""
         import fcntl
 
-        STORE.mkdir(parents=True, exist_ok=True)
+        out = pathlib.Path(os.environ.get("CIRCLEDIST_REFERENCES_OUT") or STORE)
+        path = out / self.path.name
+        out.mkdir(parents=True, exist_ok=True)
         (ROOT / "build").mkdir(exist_ok=True)
         with open(ROOT / "build" / "reference_store.lock", "w") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
             values = {}
-            if self.path.exists():
-                data = json.loads(self.path.read_text())
+            if path.exists():
+                data = json.loads(path.read_text())
                 if data.get("source") == self.source:
                     values = data["values"]
             values.update(self.new)
             lines = [f"  {json.dumps(k)}: {json.dumps(values[k], sort_keys=True)}" for k in sorted(values)]
             head = f'{{\n"source": {json.dumps(self.source)},\n"sources": {json.dumps(self.sources)},\n'
-            self.path.write_text(head + '"values": {\n' + ",\n".join(lines) + "\n}}\n")
+            path.write_text(head + '"values": {\n' + ",\n".join(lines) + "\n}}\n")
 
 
 def _file(name, sources) -> _File:

@@ -6,15 +6,17 @@
                                         # one that differs fails its test
 
 Both run the tests that are not marked serial on every core, with CIRCLEDIST_REFERENCES set to the
-mode; extra arguments go to pytest (a test file, -k EXPR). record starts from empty files unless
-given a test selection, so a reference no test uses any more is dropped. Record again after a
-change to a reference module (tests/package/test_reference_store.py fails until then).
+mode; extra arguments go to pytest (a test file, -k EXPR). record writes into build/ and moves
+the files into place at the end; over every test it starts from nothing, so that a reference no
+test uses any more is dropped, and a selection adds to the files. Record again after a change to
+a reference module (tests/package/test_reference_store.py fails until then).
 """
 
 from __future__ import annotations
 
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 
@@ -30,15 +32,28 @@ def main(argv=None) -> int:
         print(__doc__, file=sys.stderr)
         return 2
     mode, rest = argv[0], argv[1:]
-    if mode == "record" and not rest:
-        for f in STORE.glob("*.json"):
-            f.unlink()
+    env = {**os.environ, "CIRCLEDIST_REFERENCES": mode}
+    out = ROOT / "build" / "references-recorded"
+    if mode == "record":
+        # Recorded into a folder of its own, moved into place at the end: the run's own tests see
+        # the files as they were. A run over every test starts from nothing, so that a reference
+        # no test uses any more is dropped; a selection adds to the files.
+        shutil.rmtree(out, ignore_errors=True)
+        out.mkdir(parents=True)
+        if rest:
+            for f in STORE.glob("*.json"):
+                shutil.copy(f, out / f.name)
+        env["CIRCLEDIST_REFERENCES_OUT"] = str(out)
     cmd = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-n", str(os.cpu_count() or 1)]
     cmd += ["--dist", "loadfile", "-m", "not serial"] + (rest or ["tests"])
     print("==", " ".join(cmd), f"(CIRCLEDIST_REFERENCES={mode})", flush=True)
-    rc = subprocess.call(cmd, cwd=ROOT, env={**os.environ, "CIRCLEDIST_REFERENCES": mode})
+    rc = subprocess.call(cmd, cwd=ROOT, env=env)
     if mode == "record":
-        files = sorted(STORE.glob("*.json"))
+        for f in STORE.glob("*.json"):
+            f.unlink()
+        files = sorted(out.glob("*.json"))
+        for f in files:
+            shutil.move(str(f), STORE / f.name)
         print(f"== {len(files)} files in {STORE.relative_to(ROOT)}: " + ", ".join(f.stem for f in files))
     return rc
 

@@ -153,10 +153,11 @@ eigen_fallback() {
   "$dir/cpp/tests/test_line_circle"  # the test on its own (cpp/tests/CMakeLists.txt)
 }
 
-# The C++ suites, once, built at -O1 with address and undefined-behaviour checks and Eigen's and
+# The C++ suites, once, built at -Og with address and undefined-behaviour checks and Eigen's and
 # the library's assertions on; every suite runs in full. Their answers are those of an optimized
 # build: optimization does not change IEEE arithmetic without -ffast-math or FMA contraction,
-# which x86-64's baseline has no instructions for. Line tables only: -g1 as the Debug
+# which x86-64's baseline has no instructions for. -Og, not -O1: a quarter less to compile for a
+# few seconds more of running (the compile is most of the time). Line tables only: -g1 as the Debug
 # configuration's flags, which come after CMAKE_CXX_FLAGS (its default, a full -g, was most of the
 # compile time); the reports' stacks still name file and line. Not the UB checks that find nothing
 # here and cost much of the rest: vptr (no polymorphic type in the library), alignment (Eigen
@@ -165,7 +166,7 @@ eigen_fallback() {
 cpp_sanitized() {
   echo "== C++ suites under AddressSanitizer and UndefinedBehaviorSanitizer (ctest -L suite)"
   cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DCIRCLEDIST_BUILD_TESTS=ON \
-    -DCMAKE_CXX_FLAGS="-O1 -fsanitize=address,undefined -fno-sanitize=vptr,alignment,null,pointer-overflow -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
+    -DCMAKE_CXX_FLAGS="-Og -fsanitize=address,undefined -fno-sanitize=vptr,alignment,null,pointer-overflow -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
     >/dev/null || return 1
   cmake --build build/sanitize -j 2 || return 1
   ctest --test-dir build/sanitize -j 2 -L suite --timeout 600 --output-on-failure
@@ -191,9 +192,9 @@ cpp_optimized() {
 cpp_lane_start() {
   mkdir -p build/test-logs
   echo "== C++ tests: built and run at low priority beside the Python side (output: build/test-logs/)"
-  (renice -n 19 "$BASHPID" >/dev/null && cpp_sanitized) >build/test-logs/cpp_sanitized.log 2>&1 &
+  (renice -n 19 "$BASHPID" >/dev/null && timed cpp_sanitized) >build/test-logs/cpp_sanitized.log 2>&1 &
   cpp_sanitized_pid=$!
-  (renice -n 19 "$BASHPID" >/dev/null && cpp_optimized) >build/test-logs/cpp_optimized.log 2>&1 &
+  (renice -n 19 "$BASHPID" >/dev/null && timed cpp_optimized) >build/test-logs/cpp_optimized.log 2>&1 &
   cpp_optimized_pid=$!
   trap cpp_lane_stop EXIT
 }
@@ -208,6 +209,14 @@ kill_tree() {  # kill_tree PID: the process and every descendant
   for child in $(cat /proc/"$1"/task/*/children 2>/dev/null || true); do kill_tree "$child"; done
   kill "$1" 2>/dev/null || true
 }
+# timed COMMAND...: runs it, then prints how long it took (seconds of wall time) and adds that to
+# build/test-logs/times (the test task's summary at the end).
+timed() {
+  local start=$SECONDS status=0
+  "$@" || status=$?
+  echo "$1: $((SECONDS - start)) s" | tee -a build/test-logs/times
+  return $status
+}
 cpp_lane_wait() {
   local status=0
   cpp_lane_waited=1
@@ -218,7 +227,12 @@ cpp_lane_wait() {
   return $status
 }
 
-[ "$task" != test ] || cpp_lane_start
+if [ "$task" = test ]; then
+  test_start=$SECONDS
+  mkdir -p build/test-logs
+  : >build/test-logs/times
+  cpp_lane_start
+fi
 
 # The package is built as a wheel, which is installed: the tests then run on what a user installs.
 # The check task skips both while no file the wheel is built from is newer than the last install
@@ -233,8 +247,10 @@ else
   mkdir -p build
   touch build/installed.stamp
   rm -rf build/wheel
+  wheel_start=$SECONDS
   "$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps -w build/wheel .
   pip_install --force-reinstall --no-deps build/wheel/circledist-*.whl
+  [ "$task" != test ] || echo "wheel: $((SECONDS - wheel_start)) s" >>build/test-logs/times
   mv build/installed.stamp "$stamp"
 fi
 
@@ -245,10 +261,12 @@ case "$task" in
   test)
     status=0
     echo "== pytest"
-    pytest_on_every_core || status=$?
+    timed pytest_on_every_core || status=$?
     echo "== the wheel alone: a fresh venv with the wheel and the test extra, no compiler or Eigen on PATH"
-    wheel_alone || status=1
+    timed wheel_alone || status=1
     cpp_lane_wait || status=1
+    # Where the time went (the C++ side ran beside the rest, from the wheel's build on).
+    echo "== time (s): $(paste -sd, build/test-logs/times | sed 's/,/, /g'); in all $((SECONDS - test_start)) s"
     exit $status
     ;;
   check)

@@ -81,7 +81,7 @@ def answers_per_case(n_combos, within=True):
 
 
 def _load(name):
-    """A reference module of circledist_cases (reference, reference_round), imported on first use:
+    """A reference module of circledist_cases (reference_linear_round, reference_round), imported on first use:
     mpmath is needed only to confirm findings."""
     return importlib.import_module(f"..{name}", __package__)
 

@@ -12,7 +12,7 @@ whose are not its disk's / circle's (docs/derivations/annulus.md).
 The bound an answer is held against is the screen's, or lower: the separation (plus the
 measured distances off their shapes) of any combination's closest points, a genuine pair too.
 ``confirm`` re-judges an accuracy finding against the 50-digit mpmath references of
-circledist_cases/reference.py, reference_round.py (Bezier curves, also against linear pieces:
+circledist_cases/reference_linear_round.py, reference_round.py (Bezier curves, also against linear pieces:
 bezier_other), reference_arc.py (arcs: the arc's angle against the other's closed form) and
 reference_linear.py (linear pieces among themselves: the search of
 tests/accuracy/test_linear_accuracy.py), reference_annulus.py (annuli: the other shape's parameter

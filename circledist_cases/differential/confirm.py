@@ -22,7 +22,7 @@ def mp_reference(case):
     key = _key(case)
     if key in _REF_CACHE:
         return _REF_CACHE[key]
-    L, R = _load("reference"), _load("reference_round")
+    L, R = _load("reference_linear_round"), _load("reference_round")
     ka, a, kb, b = key
     if kb == "annulus":
         ref = _ann_reference(ka, a, b)
@@ -81,7 +81,7 @@ def _mp_line_point(ka, a, C, x):
     """The point (reference_round's context) of the line, ray or segment a at the screen's
     parameter x: relative to the anchor (a's point nearest C), in units of the direction scaled
     by the power of two sc of _anchor: t = tc + x sc."""
-    L, R = _load("reference"), _load("reference_round")
+    L, R = _load("reference_linear_round"), _load("reference_round")
     lin = L.Linear(ka, a)
     if lin.mm == 0:
         t = L.mpf(0)
@@ -104,7 +104,7 @@ def _mpf_ld(x):
 def mp_screen_value(case, form, param):
     """The screen's best pair re-evaluated at 50 digits: the exact distance between the genuine
     point the screen's parameter names and the other shape (an upper bound of the truth)."""
-    L, R = _load("reference"), _load("reference_round")
+    L, R = _load("reference_linear_round"), _load("reference_round")
     ka, kb = case["a"], case["b"]
     a, b = case["a_data"], case["b_data"]
     x = _mpf_ld(param) if not isinstance(param, tuple) else None
@@ -191,7 +191,7 @@ def confirm(finding, case, screen_info):
 def confirm_point(finding, case):
     """Re-measure point_off_shape at 50 digits (closed forms; Bezier: the 50-digit point-curve
     distance by the reference's one-parameter minimisation)."""
-    L, R = _load("reference"), _load("reference_round")
+    L, R = _load("reference_linear_round"), _load("reference_round")
     ka, kb = finding["kinds"]
     a, b = finding["a_data"], finding["b_data"]
     offs = []

@@ -30,6 +30,9 @@ using V3d = Vec3<double>;
 
 namespace ref {
 
+// A whole turn, 2 pi rounded to double: an arc of this angle is its circle.
+inline constexpr double kTurn = 6.283185307179586;
+
 const LD kPi = 3.141592653589793238462643383279502884L;
 
 // Any right-handed orthonormal frame of n: the angle origin differs from the library's on purpose.
@@ -181,7 +184,7 @@ struct Arc {
     const V3 q = s - n.dot(s) * n;
     u = q.norm() > 0 ? V3(q / q.norm()) : V3(Frame<double>(a.normal).u.cast<LD>());
     v = n.cross(u);
-    whole = a.angle >= 6.283185307179586;
+    whole = a.angle >= kTurn;
     angle = whole ? 2 * kPi : LD(std::max(a.angle, 0.0));
   }
   V3 at(LD t) const { return c + r * (std::cos(t) * u + std::sin(t) * v); }
@@ -355,7 +358,7 @@ struct ShapeDraw {
   double radius() { return std::exp(0.7 * normal(rng)); }
   // An arc's angle: a tenth below 1e-6..1, a tenth within 1e-3 of 2 pi, the rest up to 2 pi.
   double angle() {
-    const double turn = 6.283185307179586, x = uniform(rng);
+    const double turn = ref::kTurn, x = uniform(rng);
     return x < 0.1   ? std::pow(10.0, -6 * uniform(rng))
            : x < 0.2 ? turn * (1 - 1e-3 * uniform(rng))
                      : turn * uniform(rng);
@@ -414,13 +417,13 @@ inline std::vector<RoundCase> tangent_round_cases() {
     const V3d ca = vec(), na = vec().normalized();
     const double ra = std::exp(normal(rng)), rb = std::exp(normal(rng));
     const Frame<double> f(na);
-    const double t = 6.283185307179586 * uniform(rng);
+    const double t = ref::kTurn * uniform(rng);
     const V3d p = ca + ra * (std::cos(t) * f.u + std::sin(t) * f.v);
     const V3d tangent = -std::sin(t) * f.u + std::cos(t) * f.v, radial = (p - ca).normalized();
     const double offset = k % 2 == 0 ? 0.0 : std::pow(10.0, -12 * uniform(rng));
     V3d cb, nb;
     if (k % 3 == 0) {  // B's plane turned about the common tangent
-      const double phi = 6.283185307179586 * uniform(rng);
+      const double phi = ref::kTurn * uniform(rng);
       const V3d in_b = std::cos(phi) * radial + std::sin(phi) * na;
       cb = p + rb * in_b + offset * vec();
       nb = tangent.cross(in_b);

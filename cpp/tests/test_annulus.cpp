@@ -495,7 +495,7 @@ void coplanar_tests() {
     const Annulus a = d.annulus();
     const Frame<double> f(a.normal);
     const double tilt = i % 3 == 0 ? 0.0 : i % 3 == 1 ? 1e-9 : 1e-5;
-    const double phi = 6.283185307179586 * d.uniform(d.rng);
+    const double phi = ref::kTurn * d.uniform(d.rng);
     const V3d axis = std::cos(phi) * f.u + std::sin(phi) * f.v;
     const V3d n = std::cos(tilt) * f.n + std::sin(tilt) * axis.cross(f.n);
     const auto in_plane = [&](double spread) {

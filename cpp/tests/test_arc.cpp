@@ -32,7 +32,7 @@ using Disk = Disk3<double>;
 
 namespace {
 
-const double kTurn = 6.283185307179586;
+using ref::kTurn;
 
 // ---------------------------------------------------------------------------------------------
 // The references.

@@ -33,7 +33,7 @@ using Curve = BezierCurve3<double>;
 
 namespace {
 
-const double kTurn = 6.283185307179586;
+using ref::kTurn;
 std::map<std::string, int> counts;
 
 bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
@@ -517,7 +517,7 @@ void annulus_crossing() {
     const double outer = 0.2 + 2.8 * d.uniform(d.rng);
     const double inner = outer * (k % 5 == 0 ? 1e-6 : 0.05 + 0.85 * d.uniform(d.rng));
     const Frame<double> f(n);
-    const double phi = 6.283185307179586 * d.uniform(d.rng);
+    const double phi = kTurn * d.uniform(d.rng);
     const V3d r = std::cos(phi) * f.u + std::sin(phi) * f.v, t = -std::sin(phi) * f.u + std::cos(phi) * f.v;
     const double margin = outer * std::pow(10.0, -9 + 5 * d.uniform(d.rng));
     const double rho = k % 3 == 0   ? inner + (outer - inner) * d.uniform(d.rng)

@@ -1,8 +1,11 @@
 // Circle against disk (circle_disk.hpp) against the long-double references of round_reference.hpp.
 #include "round_reference.hpp"
 
+#include <circledist/effects.hpp>
+
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace test_circle_disk {
@@ -53,8 +56,38 @@ void circle_disk_tests() {
   }
 }
 
+// distance<EigenX> and closest_points<EigenX> are SelectedEigenPolicy's answers with X selected
+// for the call (query.hpp), to the bit, whatever the thread had selected, which they leave as it
+// was; Counted<EigenX> (the effects' wrapper) alike.
+void eigen_policies_run_as_selected() {
+  using Which = SelectedEigenPolicy::Which;
+  ShapeDraw d(41);
+  for (int k = 0; k < 50; ++k) {
+    const Circle3<double> a{d.vec(), d.vec(), d.radius()};
+    const Disk3<double> b{d.vec(), d.vec(), d.radius()};
+    const auto as_selected = [&](Which which) {
+      const SelectedEigenPolicy::Use use(which);
+      return std::pair(distance<SelectedEigenPolicy>(a, b), closest_points<SelectedEigenPolicy>(b, a));
+    };
+    const auto same = [](const auto& x, const auto& y) {
+      return x.first == y.first && x.second.distance == y.second.distance && x.second.point_a == y.second.point_a &&
+             x.second.point_b == y.second.point_b && x.second.unique == y.second.unique;
+    };
+    const SelectedEigenPolicy::Use outer(Which::PolynomialSolver);  // another selection around the calls
+    CHECK(same(std::pair(distance<EigenCompanion>(a, b), closest_points<EigenCompanion>(b, a)),
+               as_selected(Which::Companion)));
+    CHECK(same(std::pair(distance<EigenPolished>(a, b), closest_points<EigenPolished>(b, a)),
+               as_selected(Which::Polished)));
+    CHECK(SelectedEigenPolicy::selected() == Which::PolynomialSolver);
+    CHECK(same(std::pair(distance<Counted<EigenPolished>>(a, b), closest_points<Counted<EigenPolished>>(b, a)),
+               as_selected(Which::Polished)));
+    CHECK(SelectedEigenPolicy::selected() == Which::PolynomialSolver);
+  }
+}
+
 int main() {
   circle_disk_tests();
+  eigen_policies_run_as_selected();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
   shared_round_cases([](const RoundCase& r) { circle_disk_case("random", r.a, r.db, ref::circle_disk(r.a, r.db)); },
                      [](const RoundCase& r) { circle_disk_case("tangent", r.b, r.da, ref::circle_disk(r.b, r.da)); },

@@ -9,7 +9,7 @@ float32); both argument orders; distance(), closest_points(), within(), distance
 intersects(), batched and scalar.  Each answer is judged by the fast NumPy screen (an independent
 one-parameter minimisation, an upper bound from genuine points) and by the closest points the
 library returns (on their shapes, separation == distance); every accuracy finding is confirmed
-against the 50-digit mpmath references of circledist_cases/reference.py, reference_round.py,
+against the 50-digit mpmath references of circledist_cases/reference_linear_round.py, reference_round.py,
 reference_arc.py, reference_annulus.py and reference_linear.py before it counts; closest_points().unique is
 checked where differential.expected_unique's independent rule decides it (exact continua by symmetry:
 False; closed forms and strict convexity with a margin: True), and in the direct comparisons (float64

@@ -23,7 +23,7 @@ import pytest
 from hypothesis import given, note
 from hypothesis import strategies as st
 
-from circledist_cases import reference as ref
+from circledist_cases import reference_linear_round as ref
 from circledist_cases.shapes import make_shape
 
 EPS = float(np.finfo(float).eps)

@@ -1,4 +1,4 @@
-"""Accuracy of circledist against the independent 50-digit references (circledist_cases/reference.py).
+"""Accuracy of circledist against the independent 50-digit references (circledist_cases/reference_linear_round.py).
 
 Kinds: point, line, ray and segment against circle and disk.  Each kind has 40 seeded
 random cases and every hard scene of circledist_cases/scenes.py (tangent, near-tangent at heights
@@ -30,7 +30,7 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-from circledist_cases import reference as ref
+from circledist_cases import reference_linear_round as ref
 from circledist_cases import scenes
 from circledist_cases.shapes import make_shape
 

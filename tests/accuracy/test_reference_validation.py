@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-from circledist_cases import reference as ref
+from circledist_cases import reference_linear_round as ref
 from circledist_cases import scenes
 
 # ----------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 """Regression cases of the accuracy and crash reports, each against an independent 50-digit
-reference (circledist_cases/reference.py and circledist_cases/reference_round.py: one-parameter
+reference (circledist_cases/reference_linear_round.py and circledist_cases/reference_round.py: one-parameter
 minimization in mpmath, no polynomial roots), under every solver policy, in both argument orders,
 through distance(), closest_points() and a batch: the table of reported cases (points, lines,
 rays, segments, circles, disks and Bezier curves at extreme magnitudes and in degenerate
@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-from circledist_cases import reference as L
+from circledist_cases import reference_linear_round as L
 from circledist_cases import reference_round as R
 from regressions_common import BARS, EPS, LINEAR, SOLVERS, cd, make
 
@@ -353,7 +353,7 @@ CASES = (
     + near_axis_piece_cases()
 )
 
-# The references' line searches are scaled by |direction| (circledist_cases/reference.py), so these cases
+# The references' line searches are scaled by |direction| (circledist_cases/reference_linear_round.py), so these cases
 # are referenced through the same line with a direction of moderate length (the same point set).
 REFERENCE_INPUTS = {
     "line-circle-huge-direction": (0.0, 0.5, -3.0, 0.0, 0.0, 1.0),

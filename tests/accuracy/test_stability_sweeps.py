@@ -8,7 +8,7 @@ plots every policy into docs/reports/stability_sweeps.png):
   circle-tilt   a circle / disk tilted from coplanar by 10^-k rad, k = 0..16
 Bar (never loosened): |d - d_ref| <= 1e-12 * max(d_ref, largest radius of the query), in double.
 References are of the exact float inputs: the analytic distance where there is one, else a
-50-digit one-parameter minimisation of a closed form (circledist_cases/reference.py,
+50-digit one-parameter minimisation of a closed form (circledist_cases/reference_linear_round.py,
 reference_round.py).
 """
 

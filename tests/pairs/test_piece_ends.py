@@ -9,14 +9,14 @@ circle's axis (the distance's cusp): these tests put ends exactly there and at o
 1e-15 to 1e-3 on both sides, for lines in general position, lines crossing the axis, and lines
 near the axis (where the line has a second minimum, and the slope is not asked), under every
 solver policy, in double and long double. The reference is the 50-digit minimization over the
-piece's parameter (circledist_cases/reference.py), which uses no library code.
+piece's parameter (circledist_cases/reference_linear_round.py), which uses no library code.
 """
 
 import numpy as np
 import pytest
 
 import circledist as cd
-from circledist_cases import reference as ref
+from circledist_cases import reference_linear_round as ref
 
 SOLVERS = ("bracketing", "companion", "polished", "eigen")
 BARS = {"float64": 1e-12, "longdouble": 1e-15}

@@ -12,6 +12,8 @@
 
 namespace circledist {
 
+template <class Roots> struct Counted;  // effects.hpp
+
 template <class A, class B, class Enable = void> struct Query {
   static constexpr bool defined = false;
 };
@@ -191,25 +193,61 @@ template <class Roots, class A, class B> CIRCLEDIST_INLINE auto promoted_closest
   }
 }
 
+// The three eigenvalue policies are answered through SelectedEigenPolicy (roots.hpp), the
+// caller's policy the thread's choice for the call: they differ only in their roots() and
+// polish(), which it switches between, so a program that uses more than one of them compiles
+// each solver once for all three. Counted<> (effects.hpp) of one of them alike.
+template <class Roots> struct selected_eigen {
+  static constexpr bool value = false;
+};
+template <> struct selected_eigen<EigenCompanion> {
+  static constexpr bool value = true;
+  static constexpr SelectedEigenPolicy::Which which = SelectedEigenPolicy::Which::Companion;
+  using type = SelectedEigenPolicy;
+};
+template <> struct selected_eigen<EigenPolished> {
+  static constexpr bool value = true;
+  static constexpr SelectedEigenPolicy::Which which = SelectedEigenPolicy::Which::Polished;
+  using type = SelectedEigenPolicy;
+};
+template <> struct selected_eigen<EigenPolynomialSolver> {
+  static constexpr bool value = true;
+  static constexpr SelectedEigenPolicy::Which which = SelectedEigenPolicy::Which::PolynomialSolver;
+  using type = SelectedEigenPolicy;
+};
+template <class Roots> struct selected_eigen<Counted<Roots>> : selected_eigen<Roots> {
+  using type = Counted<SelectedEigenPolicy>;
+};
+
 }  // namespace detail
 
 // The distance only: no closest points are built. Two shapes of one kind are answered in one
 // order whichever way they are given (detail::ordered_v).
 template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto distance(const A& a, const B& b) {
   static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
-  if constexpr (detail::ordered_v<A, B>) {
-    if (precedes(b, a)) return detail::promoted_distance<Roots>(b, a);
+  if constexpr (detail::selected_eigen<Roots>::value) {
+    const SelectedEigenPolicy::Use use(detail::selected_eigen<Roots>::which);
+    return distance<typename detail::selected_eigen<Roots>::type>(a, b);
+  } else {
+    if constexpr (detail::ordered_v<A, B>) {
+      if (precedes(b, a)) return detail::promoted_distance<Roots>(b, a);
+    }
+    return detail::promoted_distance<Roots>(a, b);
   }
-  return detail::promoted_distance<Roots>(a, b);
 }
 
 // Distance, closest points on a and b, their parameters and the `unique` flag.
 template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto closest_points(const A& a, const B& b) {
   static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
-  if constexpr (detail::ordered_v<A, B>) {
-    if (precedes(b, a)) return detail::promoted_closest_points<Roots>(b, a).swapped();
+  if constexpr (detail::selected_eigen<Roots>::value) {
+    const SelectedEigenPolicy::Use use(detail::selected_eigen<Roots>::which);
+    return closest_points<typename detail::selected_eigen<Roots>::type>(a, b);
+  } else {
+    if constexpr (detail::ordered_v<A, B>) {
+      if (precedes(b, a)) return detail::promoted_closest_points<Roots>(b, a).swapped();
+    }
+    return detail::promoted_closest_points<Roots>(a, b);
   }
-  return detail::promoted_closest_points<Roots>(a, b);
 }
 
 }  // namespace circledist

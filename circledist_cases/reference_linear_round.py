@@ -76,6 +76,7 @@ from mpmath import mp, mpf
 # the shared 50-digit toolkit: vector operations (on the numbers' own operators, so in this
 # module's global context), frames, and the minimiser this module was validated with
 from .reference_kit import BRACKET_SAMPLES, bracket_golden, bracketed_min_1d, in_plane_axes
+from .reference_store import stored
 from .reference_kit import add as _add, cross as _cross, dot as _dot, scale as _mul, sub as _sub  # noqa: F401
 
 DPS = 50
@@ -553,7 +554,28 @@ def _ref_point_disk(lin, rnd):
 def reference(lin_kind, lin_data, round_kind, round_data):
     """Reference for the pair (linear shape, round shape); inputs are tuples of floats:
     point (x,y,z); line/ray (ox,oy,oz,dx,dy,dz); segment (p0..., p1...);
-    round (cx,cy,cz,nx,ny,nz,R)."""
+    round (cx,cy,cz,nx,ny,nz,R). Its numbers and its near-optimal radii are recorded
+    (reference_store): the search runs only for what is not."""
+    case = (lin_kind, lin_data, round_kind, round_data)
+    distance, point_lin, point_round, radius, via = _reference_values(*case)
+    return RefResult(distance, point_lin, point_round, radius, functools.partial(_radius_at, *case), via)
+
+
+@stored
+def _reference_values(lin_kind, lin_data, round_kind, round_data):
+    r = _computed(lin_kind, lin_data, round_kind, round_data)
+    return r.distance, r.point_lin, r.point_round, r.R, r.via
+
+
+@stored
+def _radius_at(lin_kind, lin_data, round_kind, round_data, level, slack):
+    """RefResult's radius function at (level, slack), of the search's own result."""
+    return _computed(lin_kind, lin_data, round_kind, round_data)._radius_fn(level, slack)
+
+
+@functools.lru_cache(maxsize=None)
+def _computed(lin_kind, lin_data, round_kind, round_data):
+    """The search itself (reference's RefResult, with its radius function)."""
     lin = Linear(lin_kind, lin_data)
     rnd = Round(round_kind, round_data)
     if rnd.R == 0 or round_kind == "disk":
