@@ -190,7 +190,6 @@ cpp_optimized() {
 # pytest leaves idle (its single-process pass, the last files of its parallel one) and all of
 # them once pytest is done. Its output goes to build/test-logs/ and is printed when it is done.
 cpp_lane_start() {
-  mkdir -p build/test-logs
   echo "== C++ tests: built and run at low priority beside the Python side (output: build/test-logs/)"
   (renice -n 19 "$BASHPID" >/dev/null && timed cpp_sanitized) >build/test-logs/cpp_sanitized.log 2>&1 &
   cpp_sanitized_pid=$!

@@ -95,8 +95,8 @@ def test_close_tells_recorded_from_other_values():
 calls = []
 
 
-@S.stored
 def _toy_reference(x, scale=1.0):
+    """Stored afresh (S.stored, an empty in-process memo) at each step of the test below."""
     calls.append(x)
     return K.to_mp(x) * scale / 3
 
@@ -114,18 +114,17 @@ def test_a_stored_function_records_reads_and_samples(tmp_path, monkeypatch):
     # record: computed and written
     monkeypatch.setenv("CIRCLEDIST_REFERENCES", "record")
     calls.clear()
-    _toy_reference.__wrapped__  # noqa: B018 - the undecorated function is reachable
-    memo_free = S.stored(_toy_reference.__wrapped__)
-    assert memo_free(inside) == K.mpf(inside) / 3 and memo_free(outside) == K.mpf(outside) / 3
+    recorder = S.stored(_toy_reference)
+    assert recorder(inside) == K.mpf(inside) / 3 and recorder(outside) == K.mpf(outside) / 3
     S.write_recorded()
-    path = tmp_path / f"{memo_free.store_name}.json"
+    path = tmp_path / f"{recorder.store_name}.json"
     data = json.loads(path.read_text())
     assert len(data["values"]) == 2 and data["source"] == S.source_hash(data["sources"])
     # default mode: read, except the sampled key, which is computed and compared
     monkeypatch.delenv("CIRCLEDIST_REFERENCES")
     monkeypatch.setattr(S, "_files", {})
     calls.clear()
-    reader = S.stored(_toy_reference.__wrapped__)
+    reader = S.stored(_toy_reference)
     assert reader(outside) == K.mpf(outside) / 3 and calls == []
     assert reader(inside) == K.mpf(inside) / 3 and calls == [inside]
     # a recorded value that is not what the code computes is a failure when it is checked
@@ -134,14 +133,14 @@ def test_a_stored_function_records_reads_and_samples(tmp_path, monkeypatch):
     monkeypatch.setattr(S, "_files", {})
     monkeypatch.setenv("CIRCLEDIST_REFERENCES", "verify")
     with pytest.raises(S.Mismatch, match="python -m tools.references record"):
-        S.stored(_toy_reference.__wrapped__)(outside)
+        S.stored(_toy_reference)(outside)
     # a file recorded by other code is not read
     data["source"] = "0" * 32
     path.write_text(json.dumps(data))
     monkeypatch.setattr(S, "_files", {})
     monkeypatch.delenv("CIRCLEDIST_REFERENCES")
     calls.clear()
-    assert S.stored(_toy_reference.__wrapped__)(outside) == K.mpf(outside) / 3 and calls == [outside]
+    assert S.stored(_toy_reference)(outside) == K.mpf(outside) / 3 and calls == [outside]
 
 
 def test_a_bad_mode_is_named(monkeypatch):

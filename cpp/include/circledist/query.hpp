@@ -12,8 +12,6 @@
 
 namespace circledist {
 
-template <class Roots> struct Counted;  // effects.hpp
-
 template <class A, class B, class Enable = void> struct Query {
   static constexpr bool defined = false;
 };
@@ -193,36 +191,11 @@ template <class Roots, class A, class B> CIRCLEDIST_INLINE auto promoted_closest
   }
 }
 
-// The three eigenvalue policies are answered through SelectedEigenPolicy (roots.hpp), the
-// caller's policy the thread's choice for the call: they differ only in their roots() and
-// polish(), which it switches between, so a program that uses more than one of them compiles
-// each solver once for all three. Counted<> (effects.hpp) of one of them alike.
-template <class Roots> struct selected_eigen {
-  static constexpr bool value = false;
-};
-template <> struct selected_eigen<EigenCompanion> {
-  static constexpr bool value = true;
-  static constexpr SelectedEigenPolicy::Which which = SelectedEigenPolicy::Which::Companion;
-  using type = SelectedEigenPolicy;
-};
-template <> struct selected_eigen<EigenPolished> {
-  static constexpr bool value = true;
-  static constexpr SelectedEigenPolicy::Which which = SelectedEigenPolicy::Which::Polished;
-  using type = SelectedEigenPolicy;
-};
-template <> struct selected_eigen<EigenPolynomialSolver> {
-  static constexpr bool value = true;
-  static constexpr SelectedEigenPolicy::Which which = SelectedEigenPolicy::Which::PolynomialSolver;
-  using type = SelectedEigenPolicy;
-};
-template <class Roots> struct selected_eigen<Counted<Roots>> : selected_eigen<Roots> {
-  using type = Counted<SelectedEigenPolicy>;
-};
-
 }  // namespace detail
 
 // The distance only: no closest points are built. Two shapes of one kind are answered in one
-// order whichever way they are given (detail::ordered_v).
+// order whichever way they are given (detail::ordered_v). An eigenvalue policy is answered
+// through SelectedEigenPolicy, with it chosen for the call (roots.hpp, detail::selected_eigen).
 template <class Roots = DefaultRoots, class A, class B> CIRCLEDIST_INLINE auto distance(const A& a, const B& b) {
   static_assert(has_symmetric_query_v<A, B>, "circledist: no query for this pair of shapes");
   if constexpr (detail::selected_eigen<Roots>::value) {

@@ -860,6 +860,32 @@ struct SelectedEigenPolicy {
   }
 };
 
+template <class Roots> struct Counted;  // effects.hpp
+
+namespace detail {
+
+// The other way round: the choice each of the three stands for, which the front end
+// (query.hpp) makes for a call of distance<P> or closest_points<P> with P one of them (or
+// Counted<> of one), answering through SelectedEigenPolicy: the three differ only in roots()
+// and polish(), so a program that uses several of them compiles each solver once, and the
+// answers are the same bits.
+template <class Roots> struct selected_eigen {
+  static constexpr bool value = false;
+};
+template <SelectedEigenPolicy::Which Choice> struct selected_as {
+  static constexpr bool value = true;
+  static constexpr SelectedEigenPolicy::Which which = Choice;
+  using type = SelectedEigenPolicy;
+};
+template <> struct selected_eigen<EigenCompanion> : selected_as<SelectedEigenPolicy::Which::Companion> {};
+template <> struct selected_eigen<EigenPolished> : selected_as<SelectedEigenPolicy::Which::Polished> {};
+template <> struct selected_eigen<EigenPolynomialSolver> : selected_as<SelectedEigenPolicy::Which::PolynomialSolver> {};
+template <class Roots> struct selected_eigen<Counted<Roots>> : selected_eigen<Roots> {
+  using type = Counted<SelectedEigenPolicy>;
+};
+
+}  // namespace detail
+
 // The default policy of every solver, chosen by bench/accuracy_vs_time.py (see the README):
 // Bracketing and EigenCompanion are equally accurate on every hard case in every precision, and
 // Bracketing is the faster (about 3x on the geometric mean of the kinds).
