@@ -39,6 +39,7 @@ if not __package__:  # run as a file: its sibling one_core would not import
     sys.exit("bench/bench_queries.py: run it from the repository's root as python -m bench.bench_queries")
 
 from . import one_core  # noqa: F401  (before NumPy: one BLAS thread)
+from . import baseline
 
 import numpy as np
 
@@ -214,6 +215,7 @@ class Row:
     batch_min_ns: Optional[float] = None  # the fastest call (or batch of n/10)
     closest_ns: Optional[float] = None  # cd.closest_points(A, B) batched, per query
     paired_ratios: list = field(default_factory=list)  # batch/C++ of alternating rounds
+    release_ratios: list = field(default_factory=list)  # C++ now / at the previous release, per round
     batch_distances: Optional[np.ndarray] = None
     scalar_us: Optional[float] = None
     d3d_ns: Optional[float] = None
@@ -352,6 +354,26 @@ def run_paired(cd, binary, rows, workdir):
             f"   {row.kind.name:15s} batch/C++ per round: " + " ".join(f"{r:.2f}" for r in row.paired_ratios),
             flush=True,
         )
+
+
+RELEASE_ROUNDS = 5
+RELEASE_ROUND_SECONDS = 0.2  # each program's time per kind in a round
+TARGET_RELEASE_RATIO = 1.10  # no kind slower than at the previous release by more than this
+
+
+def run_release(binary, rows, workdir, rounds):
+    """Every kind's C++ loop against the same loop at the previous release (bench/baseline.py),
+    the two programs alternating on the input file run_cpp wrote."""
+    inp = Path(workdir) / "queries.bin"
+    if rounds <= 0 or not Path(binary).is_file() or not inp.is_file():
+        return
+    release = baseline.build()
+    if release is None:
+        return
+    print(f"== C++ scalar loop against release {baseline.RELEASE}, {rounds} alternating rounds", flush=True)
+    ratios = baseline.alternate(Path(binary), release, inp, Path(workdir), rounds, RELEASE_ROUND_SECONDS)
+    for row in rows:
+        row.release_ratios = ratios.get(row.kind.name, [])
 
 
 def run_python(cd, rows, scalar_count, batch_time=1.0):
@@ -590,12 +612,16 @@ def fastest_ratio(row):
     return None
 
 
+def release_ratio(row):
+    return baseline.median_ratio(row.release_ratios) if row.release_ratios else None
+
+
 def table(rows):
     lines = [
         "| kind | C++ scalar ns | Python batch ns/query | batch/C++ ratio | judged batch/C++ "
         "| closest_points batch ns/query | closest/distance | Python scalar µs | distance3d ns "
-        "| max \\|Δ\\| vs distance3d |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        f"| max \\|Δ\\| vs distance3d | C++ vs {baseline.RELEASE} |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for row in rows:
         ratio = row.batch_ns / row.cpp_ns if row.batch_ns and row.cpp_ns else None
@@ -606,7 +632,8 @@ def table(rows):
         lines.append(
             f"| {row.kind.name} | {fmt(row.cpp_ns, '.1f')} | {fmt(row.batch_ns, '.1f')} | "
             f"{fmt(ratio, '.2f')} | {fmt(judged, '.2f')} | {fmt(row.closest_ns, '.1f')} | "
-            f"{fmt(closest_ratio, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} |"
+            f"{fmt(closest_ratio, '.2f')} | {fmt(row.scalar_us, '.2f')} | {d3d} | {delta} | "
+            f"{fmt(release_ratio(row), '.2f')} |"
         )
     return "\n".join(lines)
 
@@ -706,6 +733,13 @@ def targets(rows, mem):
             f"- closest_points batch ≤ {TARGET_CLOSEST_RATIO:g}x distance batch: "
             + ("met for every kind" if not over else f"**missed** for {', '.join(over)}")
         )
+    rel = [(release_ratio(row), row.kind.name) for row in rows if release_ratio(row)]
+    if rel:
+        over = [f"{k} ({r:.2f}x)" for r, k in rel if r > TARGET_RELEASE_RATIO]
+        out.append(
+            f"- C++ scalar no slower than at release {baseline.RELEASE} (at most {TARGET_RELEASE_RATIO:g}x): "
+            + ("met for every kind" if not over else f"**missed** for {', '.join(over)}")
+        )
     if mem:
         out.append(
             f"- peak memory of 10^7 point-circle queries ≤ inputs + outputs + {100 * TARGET_MEMORY:.0f} %: "
@@ -747,6 +781,11 @@ def report(rows, info, mem, d3d_version, n, wall):
         "- **Python scalar**: `cd.distance(a, b)` on single shapes, per call, Python loop included.",
         "- **distance3d**: its function called per query in a Python loop after a warm-up, on a subset "
         "(count below); **max |Δ|** is the largest difference from circledist's distance on that subset.",
+        f"- **C++ vs {baseline.RELEASE}**: the C++ scalar loop's time over the same loop at the previous release "
+        "(`bench/baseline.py`: that release's headers and `bench_queries.cpp`, compiled with the same flags), "
+        f"the median over {max((len(r.release_ratios) for r in rows), default=0)} rounds alternating the two "
+        "programs on the same inputs; below 1 is "
+        "faster now; — where that release did not have the kind.",
         "",
     ]
     agree = []
@@ -803,6 +842,12 @@ def main():
     parser.add_argument("--d3d-budget", type=float, default=2.0, help="seconds of distance3d calls per kind")
     parser.add_argument("--memory-n", type=int, default=10_000_000)
     parser.add_argument("--no-memory", action="store_true")
+    parser.add_argument(
+        "--release-rounds",
+        type=int,
+        default=RELEASE_ROUNDS,
+        help=f"alternating rounds against release {baseline.RELEASE}'s C++ loop (0: none)",
+    )
     parser.add_argument("--no-report", action="store_true", help="do not write docs/reports/benchmark.md")
     parser.add_argument("--memory-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--memory-copy", action="store_true", help=argparse.SUPPRESS)
@@ -836,6 +881,7 @@ def main():
         run_cpp(args.binary, rows, workdir)
         run_python(cd, rows, args.scalar)
         run_paired(cd, args.binary, rows, workdir)
+        run_release(args.binary, rows, workdir, args.release_rounds)
     d3d_version = run_distance3d(rows, args.d3d_budget)
 
     wall = time.perf_counter() - start
