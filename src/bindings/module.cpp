@@ -21,4 +21,5 @@ PYBIND11_MODULE(_core, m) {
   bind_shape_fields(m);
   bind_all_pairs(m);
   bind_arguments(m);
+  bind_motion(m);
 }

@@ -22,6 +22,8 @@ void bind_shape_fields(py::module_& m);
 void bind_all_pairs(py::module_& m);
 // The argument readers, for the Python side's arguments (arguments.cpp).
 void bind_arguments(py::module_& m);
+// Motion, Shape.moved (motion.cpp).
+void bind_motion(py::module_& m);
 
 // distance() of two shapes already read, reporting to `progress` (queries.cpp; also the all-pairs
 // queries' kernel, which reports its progress elsewhere).

@@ -70,6 +70,7 @@ def test_every_public_object_is_listed():
     assert set(PUBLIC) == set(SHAPE_CLASSES) | set(QUERIES) | {
         "Shape",
         "ClosestPoints",
+        "Motion",
         "Scene",
         "stats",
         "reset_stats",
