@@ -22,12 +22,16 @@ the precision WebGL draws them in.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Mapping, Sequence
+from typing import TYPE_CHECKING, Mapping, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _core
 from ._scene_format import KINDS, SceneFile, _SWEEP
+
+if TYPE_CHECKING:  # the annotation only: plotly is imported when a figure is made
+    import plotly.graph_objects
 
 __all__ = ["figure"]
 
@@ -539,7 +543,14 @@ def rim_points(count: int) -> int:
     return int(min(MAX_RIM, max(MIN_RIM, RIM_BUDGET // max(count, 1))))
 
 
-def figure(shapes, *, pairs=None, detail=None, box=None, title=None):
+def figure(
+    shapes,
+    *,
+    pairs: Sequence[tuple[str, str]] | None = None,
+    detail: int | None = None,
+    box: tuple[ArrayLike, ArrayLike] | None = None,
+    title: str | None = None,
+) -> plotly.graph_objects.Figure:
     """An interactive 3-D figure (plotly) of shapes, batches, a Scene or a scene file.
 
     Circles and arcs are drawn as their rims, disks and annuli as translucent faces with their
