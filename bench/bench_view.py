@@ -1,7 +1,8 @@
 """What circledist.figure costs for large batches: for 10^3, 10^4 and 10^5 random disks (and as
 many circles), the time figure() takes, the size of the self-contained HTML page (plotly.js
 inline), the rim points of the reduced-detail rule, and, where Chromium and selenium are
-installed (tools/browser.py), how long a headless browser takes to open and draw the page.
+installed (tools/browser.py), how long a headless browser takes to open and draw the page (the
+first row: a page of one point, plotly.js's own share).
 Prints a table; writes nothing unless --screenshot PATH is given, which saves the demo scene's
 page as a PNG (the guide's picture, docs/guide/view_demo.png).
 
@@ -49,13 +50,23 @@ def main():
         print(f"(no browser times: {why})")
     print(f"{platform.machine()}, {os.cpu_count()} logical cores, Python {platform.python_version()}")
     print(
-        f"rule: rim points = clamp({view.RIM_BUDGET} / n, {view.MIN_RIM}, {view.MAX_RIM}); "
-        f"above {view.FULL_LIMIT} shapes rims only, one name marker per shape"
+        f"rule: rim points = min({view.MAX_RIM}, {view.VERTEX_BUDGET} / n - 2), one marker per shape where that "
+        f"is below {view.MIN_RIM} (rim 0 in the table); above {view.FULL_LIMIT} shapes outlines only, names on one "
+        "marker per shape"
     )
     print(f"{'shapes':>8} {'kind':>7} {'rim':>4} {'traces':>6} {'figure() s':>10} {'page MB':>8} {'browser s':>9}")
     rng = np.random.default_rng(2026)
     try:
         with tempfile.TemporaryDirectory() as folder:
+            if browser is not None:  # the page of one point: plotly.js's own load and first draw
+                page = os.path.join(folder, "one.html")
+                cd.figure(cd.Point([0, 0, 0])).write_html(page, include_plotlyjs=True)
+                start = time.perf_counter()
+                browser.open(page, timeout=600)
+                print(
+                    f"{'1':>8} {'point':>7} {'':>4} {1:>6} {'':>10} {os.path.getsize(page) / 1e6:>8.1f} "
+                    f"{time.perf_counter() - start:>9.2f}"
+                )
             for n in args.sizes:
                 for kind in args.kinds:
                     batch = shapes(kind, n, rng)

@@ -12,11 +12,13 @@ tubes, as NumPy arrays); the rows are then drawn as a few traces: one per shape 
 one, with the shapes' polylines joined by gaps. One trace per shape does not scale to large
 batches: a browser spends its time per trace, not per vertex.
 
-Reduced detail (the rule; ``python -m bench.bench_view`` measures what it costs): a rim has
-``RIM_BUDGET / n`` points for n shapes, between ``MIN_RIM`` and ``MAX_RIM``; above ``FULL_LIMIT``
-shapes only the rims and curves are drawn (no faces, no sweeps: the legend says so) and the names
-are carried by one marker per shape instead of by every vertex. Coordinates are sent as float32,
-the precision WebGL draws them in.
+Reduced detail (the rule; ``python -m bench.bench_view`` measures what it costs): a browser's
+time grows with the vertices, so the outlines of n shapes share ``VERTEX_BUDGET`` of them: a rim
+has ``VERTEX_BUDGET / n - 2`` points (a closed rim repeats its first, a gap follows), at most
+``MAX_RIM``; where that is fewer than ``MIN_RIM`` each shape is one marker on it instead. Above
+``FULL_LIMIT`` shapes only outlines are drawn (no faces, no sweeps: the legend says so) and the
+names are carried by one marker per shape instead of by every vertex. Coordinates are sent as
+float32, the precision WebGL draws them in.
 """
 
 from __future__ import annotations
@@ -35,7 +37,7 @@ if TYPE_CHECKING:  # the annotation only: plotly is imported when a figure is ma
 
 __all__ = ["figure"]
 
-RIM_BUDGET = 200_000  # rim points of the whole figure, shared among its shapes
+VERTEX_BUDGET = 250_000  # outline vertices of the whole figure, shared among its shapes
 MIN_RIM, MAX_RIM = 8, 64  # points on one closed rim (a circle's; arcs and curves as many)
 FULL_LIMIT = 2_000  # up to this many shapes: faces, sweeps, every vertex named
 LEGEND_LIMIT = 40  # up to this many shapes, one trace (colour, legend entry) per shape
@@ -425,7 +427,7 @@ def _traces(go, part: _Part, geometry: _Geometry, rows: np.ndarray, label: str, 
     hover = options["hover"]
     common = {"name": label, "legendgroup": label}
     out = []
-    if geometry.curves:
+    if geometry.curves and options["outlines"]:
         xyz, text = _polylines([c[rows] for c in geometry.curves], names)
         out.append(
             go.Scatter3d(mode="lines", line={"color": colour, "width": 4}, **_xyz(xyz), **_hover(text, hover), **common)
@@ -539,8 +541,10 @@ def _closest(pairs, resolve) -> list:
 
 
 def rim_points(count: int) -> int:
-    """The points on one closed rim of a figure of count shapes (the reduced-detail rule)."""
-    return int(min(MAX_RIM, max(MIN_RIM, RIM_BUDGET // max(count, 1))))
+    """The points on one closed rim of a figure of count shapes (the reduced-detail rule); 0: the
+    shapes are drawn as one marker each."""
+    rim = min(MAX_RIM, VERTEX_BUDGET // max(count, 1) - 2)
+    return int(rim) if rim >= MIN_RIM else 0
 
 
 def figure(
@@ -559,7 +563,8 @@ def figure(
     rounded disk). Hovering over a shape shows its name (a batch's shapes are ``name[i]``).
     Closest points are drawn as a dashed segment labelled with the distance. Large figures are
     drawn at reduced detail (fewer points per rim; above ``circledist.view.FULL_LIMIT`` shapes
-    rims only, the names carried by one marker per shape): see the guide's page on figures.
+    outlines only, the names carried by one marker per shape; beyond the vertex budget one marker
+    per shape): see the guide's page on figures.
 
     Needs plotly (``pip install 'circledist[view]'``). In Jupyter the returned figure displays
     inline; ``fig.write_html(path)`` writes a page that opens in any browser.
@@ -574,7 +579,7 @@ def figure(
         that name two shapes; none for the other inputs.
     detail : int, optional
         Points on each closed rim (at least 3); default: from the number of shapes, fewer for
-        more (``circledist.view.rim_points``).
+        more, and for the largest figures one marker per shape (``circledist.view.rim_points``).
     box : pair of 3-vectors, optional
         The lower and upper corners of the region shown, which lines and rays are clipped to.
         Default: a cube around every bounded shape (with its sweep), the lines' and rays'
@@ -629,7 +634,8 @@ def figure(
         if not (np.isfinite(lo).all() and np.isfinite(hi).all() and (lo < hi).all()):
             raise ValueError(f"figure: box must be finite, its lower corner below its upper one, got {box!r}")
     full = count <= FULL_LIMIT
-    options = {"hover": full, "sweeps": full, "faces": full}
+    options = {"hover": full, "sweeps": full, "faces": full, "outlines": rim > 0}
+    rim = max(rim, 2)  # the markers' places: a point on each shape
     colours = plotly.colors.qualitative.Plotly
     traces, k = [], 0
     per_shape = count <= LEGEND_LIMIT
@@ -638,9 +644,11 @@ def figure(
         if per_shape:
             groups = [(np.array([i]), part.names[i]) for i in range(len(part))]
         else:
-            label = f"{part.kind} \u00d7 {len(part)}" + (
-                "" if options["sweeps"] or not part.sweep.any() else " (sweeps not drawn)"
-            )
+            label = f"{part.kind} \u00d7 {len(part)}"
+            if not options["outlines"]:
+                label += " (a marker each)"
+            elif not options["sweeps"] and part.sweep.any():
+                label += " (sweeps not drawn)"
             groups = [(np.arange(len(part)), label)]
         for rows, label in groups:
             traces += _traces(go, part, geometry, rows, label, colours[k % len(colours)], options)

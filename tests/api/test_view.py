@@ -158,10 +158,11 @@ def test_a_scene_draws_as_its_shapes_do():
         assert np.array_equal(vertices(a), vertices(b))
 
 
-@pytest.mark.parametrize("count", [view.LEGEND_LIMIT + 1, view.FULL_LIMIT + 1, 100_000])
+@pytest.mark.parametrize("count", [view.LEGEND_LIMIT + 1, view.FULL_LIMIT + 1, 20_000, 100_000])
 def test_large_batches_are_drawn_at_reduced_detail(count):
-    """One trace per kind and role whatever the count; rims of rim_points(count) points; above
-    FULL_LIMIT rims only, and one name marker per shape."""
+    """One trace per kind and role whatever the count; rims of rim_points(count) points, their
+    vertices within the budget; above FULL_LIMIT outlines only, and one name marker per shape;
+    where the budget leaves too few points for a rim, one marker per shape alone."""
     rng = np.random.default_rng(7)
     disks = cd.Disk(
         rng.uniform(-50, 50, (count, 3)), rng.normal(size=(count, 3)), rng.uniform(0.2, 1, count), sweep=0.1
@@ -169,16 +170,32 @@ def test_large_batches_are_drawn_at_reduced_detail(count):
     fig = cd.figure({"disk": disks, "rail": cd.Line([0, 0, 0], [1, 0, 0])})
     mine = [t for t in fig.data if t.name.startswith("disk")]
     full = count <= view.FULL_LIMIT
-    assert [t.type for t in mine] == (["scatter3d", "mesh3d", "mesh3d"] if full else ["scatter3d", "scatter3d"])
     rim = view.rim_points(count)
-    assert view.MIN_RIM <= rim <= view.MAX_RIM and (count < view.RIM_BUDGET // view.MIN_RIM or rim == view.MIN_RIM)
-    assert len(mine[0].x) == count * (rim + 2)  # rim + 1 points (closed), then a gap
+    assert rim == 0 or view.MIN_RIM <= rim <= view.MAX_RIM
     if full:
+        assert [t.type for t in mine] == ["scatter3d", "mesh3d", "mesh3d"]
         assert set(mine[0].text) == {f"disk[{i}]" for i in range(count)}
-    else:
+    elif rim:
+        assert [t.type for t in mine] == ["scatter3d", "scatter3d"]
         assert mine[0].hoverinfo == "skip" and "sweeps not drawn" in mine[0].name
-        assert list(mine[1].text) == [f"disk[{i}]" for i in range(count)]
-        assert len(mine[1].x) == count
+    else:
+        assert [t.type for t in mine] == ["scatter3d"] and mine[0].mode == "markers"
+        assert "a marker each" in mine[0].name
+    if rim:
+        assert len(mine[0].x) == count * (rim + 2) <= view.VERTEX_BUDGET  # rim + 1 points (closed), a gap
+    markers = mine[-1]
+    if not full:
+        assert markers.mode == "markers" and list(markers.text) == [f"disk[{i}]" for i in range(count)]
+        # Each marker on its shape (float32 coordinates).
+        assert np.all(cd.distance(disks, np.stack([markers.x, markers.y, markers.z], axis=1).astype(float)) < 1e-4)
+
+
+def test_the_vertex_budget_rule():
+    assert view.rim_points(1) == view.MAX_RIM
+    for count in (10, 1_000, 3_000, 10_000, 30_000, 100_000, 10**6):
+        rim = view.rim_points(count)
+        assert rim == 0 or count * (rim + 2) <= view.VERTEX_BUDGET
+        assert (rim == 0) == (view.VERTEX_BUDGET // count - 2 < view.MIN_RIM)
 
 
 def test_detail_sets_the_points_on_a_rim():
