@@ -30,7 +30,9 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _core
+from ._batch import TRAILING_DIMS
 from ._scene_format import KINDS, SceneFile, _SWEEP
+from .scene import Scene
 
 if TYPE_CHECKING:  # the annotation only: plotly is imported when a figure is made
     import plotly.graph_objects
@@ -74,9 +76,6 @@ class _Part:
     def __len__(self) -> int:
         return len(self.names)
 
-    def take(self, rows) -> "_Part":
-        return _Part(self.kind, [self.names[i] for i in rows], [v[rows] for v in self.values], self.sweep[rows])
-
 
 def _shape_part(name: str, shape) -> _Part:
     """A shape or batch as a part: a batch's shapes are named name[i] (C order)."""
@@ -88,24 +87,15 @@ def _shape_part(name: str, shape) -> _Part:
     values = []
     for field in fields + [_SWEEP]:
         a = np.asarray(arrays.get(field, 0.0), dtype=np.float64)
-        trailing = a.shape[len(a.shape) - _trailing(kind, field) :] if _trailing(kind, field) else ()
+        trailing = a.shape[a.ndim - TRAILING_DIMS[field] :] if TRAILING_DIMS[field] else ()
         values.append(np.broadcast_to(a, batch + trailing).reshape((count,) + trailing))
     names = [name] if batch == () else [f"{name}[{i}]" for i in range(count)]
     return _Part(kind, names, values[:-1], values[-1])
 
 
-def _trailing(kind: str, field: str) -> int:
-    """The trailing dimensions of a field: 1 for vectors, 2 for control points, 0 for numbers."""
-    from ._batch import TRAILING_DIMS
-
-    return TRAILING_DIMS[field]
-
-
 def _parts_of(shapes) -> tuple[list, object, list]:
     """(parts, resolve, pairs): the parts to draw; resolve(name) the single shape named so (for
     closest points); the scene file's pairs (its queries that name two shapes), else []."""
-    from .scene import Scene
-
     if isinstance(shapes, _core.Shape):
         shapes = {shapes.kind.lower(): shapes}
     if isinstance(shapes, SceneFile):
@@ -380,10 +370,12 @@ def _meshes(pieces: list, names: list):
     and each vertex's name."""
     xyz, ijk, text, offset = [], [], [], 0
     for vertices, triangles in pieces:
+        drawn = np.isfinite(vertices).all(axis=(1, 2))  # a line that misses the box has no tube
+        vertices, names_drawn = vertices[drawn], [n for n, keep in zip(names, drawn) if keep]
         rows, count, _ = vertices.shape
         xyz.append(vertices.reshape(-1, 3))
         ijk.append((triangles[None] + (offset + count * np.arange(rows))[:, None, None]).reshape(-1, 3))
-        text.append(np.repeat(np.asarray(names, dtype=object), count))
+        text.append(np.repeat(np.asarray(names_drawn, dtype=object), count))
         offset += rows * count
     return np.concatenate(xyz), np.concatenate(ijk).astype(np.int32), np.concatenate(text)
 

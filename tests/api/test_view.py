@@ -108,10 +108,16 @@ def test_lines_are_clipped_to_the_box(kind, origin, direction):
         assert np.allclose(ends[0], origin, atol=1e-6)
 
 
-def test_a_line_that_misses_the_box_is_left_out():
-    fig = cd.figure({"far": cd.Line([0, 5, 0], [1, 0, 0]), "ring": SHAPES["circle"]}, box=([-1, -1, -1], [1, 1, 1]))
-    (far,) = [t for t in fig.data if t.name == "far"]
-    assert len(vertices(far)) == 0
+@pytest.mark.parametrize("sweep", [0.0, 0.2])
+def test_a_line_that_misses_the_box_is_left_out(sweep):
+    far = cd.Line([0, 5, 0], [1, 0, 0], sweep=sweep)
+    fig = cd.figure({"far": far, "ring": SHAPES["circle"]}, box=([-1, -1, -1], [1, 1, 1]))
+    drawn = [t for t in fig.data if t.name == "far"]
+    assert [t.type for t in drawn] == ["scatter3d"] + ["mesh3d"] * (sweep > 0)
+    for trace in drawn:
+        assert len(vertices(trace)) == 0
+        if trace.type == "mesh3d":  # no vertex at all: NaN vertices would reach WebGL
+            assert len(trace.x) == 0 and len(trace.i) == 0
 
 
 def test_the_default_box_holds_the_bounded_shapes_and_clips_the_lines():
