@@ -2,7 +2,9 @@
 many circles), the time figure() takes, the size of the self-contained HTML page (plotly.js
 inline), the rim points of the reduced-detail rule, and, where Chromium and selenium are
 installed (tools/browser.py), how long a headless browser takes to open and draw the page (the
-first row: a page of one point, plotly.js's own share).
+first row: a page of one point, plotly.js's own share) and one WebGL frame of it (what each step
+of rotating the view costs; headless Chromium draws WebGL in software, on the CPU, so a browser
+with a GPU draws a frame in a fraction of that time).
 Prints a table; writes nothing unless --screenshot PATH is given, which saves the demo scene's
 page as a PNG (the guide's picture, docs/guide/view_demo.png).
 
@@ -54,38 +56,36 @@ def main():
         f"is below {view.MIN_RIM} (rim 0 in the table); above {view.FULL_LIMIT} shapes outlines only, names on one "
         "marker per shape"
     )
-    print(f"{'shapes':>8} {'kind':>7} {'rim':>4} {'traces':>6} {'figure() s':>10} {'page MB':>8} {'browser s':>9}")
+    print(
+        f"{'shapes':>8} {'kind':>7} {'rim':>4} {'traces':>6} {'figure() s':>10} {'page MB':>8} {'open s':>7} "
+        f"{'redraw s':>8}"
+    )
     rng = np.random.default_rng(2026)
     try:
         with tempfile.TemporaryDirectory() as folder:
-            if browser is not None:  # the page of one point: plotly.js's own load and first draw
-                page = os.path.join(folder, "one.html")
-                cd.figure(cd.Point([0, 0, 0])).write_html(page, include_plotlyjs=True)
+            rows = [(1, "point", cd.Point([0, 0, 0]))]  # first, plotly.js's own load and first draw
+            rows += [(n, kind, shapes(kind, n, rng)) for n in args.sizes for kind in args.kinds]
+            for n, kind, batch in rows:
                 start = time.perf_counter()
-                browser.open(page, timeout=600)
-                print(
-                    f"{'1':>8} {'point':>7} {'':>4} {1:>6} {'':>10} {os.path.getsize(page) / 1e6:>8.1f} "
-                    f"{time.perf_counter() - start:>9.2f}"
-                )
-            for n in args.sizes:
-                for kind in args.kinds:
-                    batch = shapes(kind, n, rng)
+                fig = cd.figure({kind: batch})
+                made = time.perf_counter() - start
+                page = os.path.join(folder, f"{kind}{n}.html")
+                fig.write_html(page, include_plotlyjs=True)
+                size = os.path.getsize(page) / 1e6
+                opened = redrawn = note = ""
+                if browser is not None:
                     start = time.perf_counter()
-                    fig = cd.figure({kind: batch})
-                    made = time.perf_counter() - start
-                    page = os.path.join(folder, f"{kind}{n}.html")
-                    fig.write_html(page, include_plotlyjs=True)
-                    size = os.path.getsize(page) / 1e6
-                    drawn = ""
-                    if browser is not None:
-                        start = time.perf_counter()
-                        browser.open(page, timeout=600)
-                        drawn = f"{time.perf_counter() - start:.2f}"
-                        errors = browser.console_errors()
-                        if errors:
-                            drawn += f" ({len(errors)} console errors: {errors[0][:60]})"
-                    rim = view.rim_points(n)
-                    print(f"{n:>8} {kind:>7} {rim:>4} {len(fig.data):>6} {made:>10.2f} {size:>8.1f} {drawn:>9}")
+                    browser.open(page, timeout=600)
+                    opened = f"{time.perf_counter() - start:.2f}"
+                    redrawn = f"{browser.redraw_seconds():.3f}"
+                    errors = browser.console_errors()
+                    if errors:
+                        note = f"  ({len(errors)} console errors: {errors[0][:60]})"
+                rim = view.rim_points(n)
+                print(
+                    f"{n:>8} {kind:>7} {rim:>4} {len(fig.data):>6} {made:>10.2f} {size:>8.1f} {opened:>7} "
+                    f"{redrawn:>8}{note}"
+                )
             if args.screenshot:
                 if browser is None:
                     sys.exit(f"--screenshot needs a browser: {why or 'not with --no-browser'}")

@@ -80,6 +80,26 @@ class Browser:
             "const done = arguments[0]; requestAnimationFrame(() => requestAnimationFrame(() => done()));"
         )
 
+    def redraw_seconds(self, frames: int = 5) -> float:
+        """Seconds per WebGL frame of the first plot's 3-D scene (what each step of rotating the
+        view costs): frames redraws, each waited for by reading a pixel back. Reads plotly.js's
+        scene object (not a public API): NaN where it is not there."""
+        seconds = self.driver.execute_script(
+            """
+            const scene = document.querySelector('.js-plotly-plot')._fullLayout.scene._scene;
+            const plot = scene && scene.glplot, pixel = new Uint8Array(4);
+            if (!plot || typeof plot.redraw !== 'function') return null;
+            const start = performance.now();
+            for (let i = 0; i < arguments[0]; i++) {
+              plot.redraw();
+              plot.gl.readPixels(0, 0, 1, 1, plot.gl.RGBA, plot.gl.UNSIGNED_BYTE, pixel);
+            }
+            return (performance.now() - start) / arguments[0] / 1000;
+            """,
+            frames,
+        )
+        return float("nan") if seconds is None else seconds
+
     def run(self, script: str, *arguments):
         return self.driver.execute_script(script, *arguments)
 
