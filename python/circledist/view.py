@@ -23,6 +23,7 @@ float32, the precision WebGL draws them in.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Mapping, Sequence
 
@@ -31,6 +32,7 @@ from numpy.typing import ArrayLike
 
 from . import _core
 from ._batch import TRAILING_DIMS
+from ._cli_present import _PLAIN_LENGTHS, _scaled
 from ._scene_format import KINDS, SceneFile, _SWEEP
 from .scene import Scene
 
@@ -323,8 +325,8 @@ def _view_box(parts: list, closest: list):
         with np.errstate(invalid="ignore"):
             low, high = np.where(np.isfinite(pts), pts - pad, np.inf), np.where(np.isfinite(pts), pts + pad, -np.inf)
         lo, hi = np.minimum(lo, low.min(axis=(0, 1))), np.maximum(hi, high.max(axis=(0, 1)))
-    for _, _, r in closest:
-        for p in (np.asarray(r.point_a, np.float64), np.asarray(r.point_b, np.float64)):
+    for _, _, _, p_a, p_b in closest:
+        for p in (p_a, p_b):
             if np.isfinite(p).all():
                 lo, hi = np.minimum(lo, p), np.maximum(hi, p)
     if not (np.isfinite(lo).all() and np.isfinite(hi).all()):
@@ -479,11 +481,9 @@ def _pair_traces(go, closest: list) -> list:
     if not closest:
         return []
     xyz, text, middles, labels = [], [], [], []
-    for a, b, r in closest:
-        p, q = np.asarray(r.point_a, np.float64), np.asarray(r.point_b, np.float64)
+    for a, b, d, p, q in closest:
         if not (np.isfinite(p).all() and np.isfinite(q).all()):
             continue
-        d = float(r.distance)
         line = f"{a} \u2013 {b}: distance {d:.6g}"
         xyz += [p, q, np.full(3, np.nan)]
         text += [line, line, line]
@@ -528,8 +528,28 @@ def _closest(pairs, resolve) -> list:
                 shapes.append(resolve(name))
             except (KeyError, TypeError):
                 raise ValueError(f"figure: pairs[{i}]: no shape named {name!r}") from None
-        out.append((pair[0], pair[1], _core.closest_points(*shapes)))
+        r = _core.closest_points(*shapes)
+        out.append(
+            (pair[0], pair[1], float(r.distance), np.asarray(r.point_a, np.float64), np.asarray(r.point_b, np.float64))
+        )
     return out
+
+
+def _scale(parts: list, closest: list) -> float:
+    """The power of ten the figure's coordinates are given in: 1, or about the largest coordinate
+    or length where that is outside the plain lengths (float32, which WebGL draws in, holds
+    neither 1e300 nor 1e-300), as the command line's picture does."""
+    largest = 0.0
+    for part in parts:
+        for value, role in zip(part.values, KINDS[part.kind][1].values()):
+            if role in ("vector", "length", "control_points") and value.size:
+                largest = max(largest, float(np.abs(value).max()))
+        largest = max(largest, float(np.abs(part.sweep).max(initial=0.0)))
+    for *_, p, q in closest:
+        largest = max([largest] + [abs(float(x)) for x in np.concatenate([p, q]) if math.isfinite(x)])
+    if largest == 0 or _PLAIN_LENGTHS[0] <= largest <= _PLAIN_LENGTHS[1]:
+        return 1.0
+    return 10.0 ** max(math.floor(math.log10(largest)), -300)  # a normal double, never 0
 
 
 def rim_points(count: int) -> int:
@@ -609,6 +629,10 @@ def figure(
 
     parts, resolve, file_pairs = _parts_of(shapes)
     closest = _closest(file_pairs if pairs is None else pairs, resolve)
+    scale = _scale(parts, closest)
+    if scale != 1:  # drawn in units of scale; the distances' labels stay as they are
+        parts = [_Part(p.kind, p.names, _scaled(p.kind, p.values, scale), p.sweep / scale) for p in parts]
+        closest = [(a, b, d, p / scale, q / scale) for a, b, d, p, q in closest]
     count = sum(len(p) for p in parts)
     if detail is None:
         rim = rim_points(count)
@@ -620,7 +644,7 @@ def figure(
         lo, hi = _view_box(parts, closest)
     else:
         try:
-            lo, hi = (np.asarray(c, np.float64).reshape(3) for c in box)
+            lo, hi = (np.asarray(c, np.float64).reshape(3) / scale for c in box)
         except (TypeError, ValueError):
             raise ValueError(f"figure: box must be two 3-vectors (lower and upper corners), got {box!r}") from None
         if not (np.isfinite(lo).all() and np.isfinite(hi).all() and (lo < hi).all()):
@@ -648,7 +672,10 @@ def figure(
     traces += _pair_traces(go, closest)
     if title is None and isinstance(shapes, SceneFile) and shapes.description:
         title = shapes.description.split("\n")[0]
-    axes = {f"{axis}axis": {"range": [float(lo[i]), float(hi[i])], "title": axis} for i, axis in enumerate("xyz")}
+    unit = "" if scale == 1 else f" (\u00d7 {scale:.0e})"
+    axes = {
+        f"{axis}axis": {"range": [float(lo[i]), float(hi[i])], "title": axis + unit} for i, axis in enumerate("xyz")
+    }
     fig = go.Figure(data=traces)
     fig.update_layout(
         title=title,

@@ -272,3 +272,24 @@ def test_cli_html_without_plotly_says_what_to_install(tmp_path, capsys, no_plotl
 def test_cli_html_refuses_an_unwritable_path_before_any_work(tmp_path, capsys):
     assert cli.main(["--no-plot", "--html", str(tmp_path / "no" / "such" / "dir.html")]) == 2
     assert "cannot write the output" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("size", [1e-300, 1e-9, 1.0, 1e12, 1e300])
+def test_far_from_unit_lengths_are_drawn_in_powers_of_ten(size):
+    """Coordinates go to the browser as float32, which holds neither 1e300 nor 1e-300: a scene far
+    from unit lengths is drawn in units of a power of ten (the axes say which), its shapes where
+    they are in those units, the distances' labels as they are."""
+    ring = cd.Circle([size, 0, 0], [0, 0, 1], size / 2, sweep=size / 20)
+    probe = cd.Point([size, 0, size])
+    fig = cd.figure({"ring": ring, "probe": probe}, pairs=[("probe", "ring")])
+    scale = 1.0 if size == 1.0 else 10.0 ** np.floor(np.log10(size))
+    title = fig.layout.scene.xaxis.title.text
+    assert title == ("x" if scale == 1 else f"x (\u00d7 {scale:.0e})")
+    for trace in fig.data:
+        xyz = np.stack([np.asarray(trace.x, float), np.asarray(trace.y, float), np.asarray(trace.z, float)], axis=1)
+        assert np.all(np.isfinite(xyz) | np.isnan(xyz)) and np.isfinite(xyz).any(), trace.name
+    (rim,) = [t for t in fig.data if t.name == "ring" and t.type == "scatter3d"]
+    unit_ring = cd.Circle([size / scale, 0, 0], [0, 0, 1], size / scale / 2)
+    assert np.all(cd.distance(unit_ring, vertices(rim)) < 1e-6 * size / scale)
+    segments = [t for t in fig.data if t.name == "closest points" and t.mode != "text"][0]
+    assert segments.text[0] == f"probe \u2013 ring: distance {cd.distance(probe, ring):.6g}"
