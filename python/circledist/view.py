@@ -395,8 +395,10 @@ def _sweep_pieces(part: _Part, geometry: _Geometry, rows: np.ndarray, sides: int
     return pieces
 
 
-def _xyz(points: np.ndarray) -> dict:
-    points = points.astype(np.float32)  # WebGL's precision; half the page of float64
+def _xyz(points: np.ndarray, origin: np.ndarray) -> dict:
+    """Coordinates for the browser: from the view's origin (the far-translated scenes' digits
+    kept), as float32, WebGL's precision (half the page of float64)."""
+    points = (points - origin).astype(np.float32)
     return {"x": points[:, 0], "y": points[:, 1], "z": points[:, 2]}
 
 
@@ -424,13 +426,23 @@ def _traces(go, part: _Part, geometry: _Geometry, rows: np.ndarray, label: str, 
     if geometry.curves and options["outlines"]:
         xyz, text = _polylines([c[rows] for c in geometry.curves], names)
         out.append(
-            go.Scatter3d(mode="lines", line={"color": colour, "width": 4}, **_xyz(xyz), **_hover(text, hover), **common)
+            go.Scatter3d(
+                mode="lines",
+                line={"color": colour, "width": 4},
+                **_xyz(xyz, options["origin"]),
+                **_hover(text, hover),
+                **common,
+            )
         )
     if geometry.points is not None:
         p = geometry.points[rows]
         out.append(
             go.Scatter3d(
-                mode="markers", marker={"color": colour, "size": 4}, **_xyz(p), **_hover(names, True), **common
+                mode="markers",
+                marker={"color": colour, "size": 4},
+                **_xyz(p, options["origin"]),
+                **_hover(names, True),
+                **common,
             )
         )
     if geometry.face is not None and options["faces"]:
@@ -443,7 +455,7 @@ def _traces(go, part: _Part, geometry: _Geometry, rows: np.ndarray, label: str, 
                 color=colour,
                 opacity=0.45,
                 flatshading=True,
-                **_xyz(xyz),
+                **_xyz(xyz, options["origin"]),
                 **_hover(text, hover),
                 **common,
             )
@@ -459,7 +471,7 @@ def _traces(go, part: _Part, geometry: _Geometry, rows: np.ndarray, label: str, 
                 color=colour,
                 opacity=0.25,
                 flatshading=False,
-                **_xyz(xyz),
+                **_xyz(xyz, options["origin"]),
                 **_hover(text, hover),
                 **common,
             )
@@ -468,7 +480,11 @@ def _traces(go, part: _Part, geometry: _Geometry, rows: np.ndarray, label: str, 
         a = _anchors(geometry)[rows]
         out.append(
             go.Scatter3d(
-                mode="markers", marker={"color": colour, "size": 2}, **_xyz(a), **_hover(names, True), **common
+                mode="markers",
+                marker={"color": colour, "size": 2},
+                **_xyz(a, options["origin"]),
+                **_hover(names, True),
+                **common,
             )
         )
     for i, trace in enumerate(out):
@@ -476,7 +492,7 @@ def _traces(go, part: _Part, geometry: _Geometry, rows: np.ndarray, label: str, 
     return out
 
 
-def _pair_traces(go, closest: list) -> list:
+def _pair_traces(go, closest: list, origin: np.ndarray) -> list:
     """A dashed segment between each pair's closest points, labelled with the distance."""
     if not closest:
         return []
@@ -498,7 +514,7 @@ def _pair_traces(go, closest: list) -> list:
             mode="lines+markers",
             line={**style, "width": 3, "dash": "dash"},
             marker={**style, "size": 3},
-            **_xyz(np.array(xyz)),
+            **_xyz(np.array(xyz), origin),
             **_hover(text, True),
             **common,
         ),
@@ -509,7 +525,7 @@ def _pair_traces(go, closest: list) -> list:
             textposition="top center",
             showlegend=False,
             hoverinfo="skip",
-            **_xyz(np.array(middles)),
+            **_xyz(np.array(middles), origin),
             **common,
         ),
     ]
@@ -550,6 +566,18 @@ def _scale(parts: list, closest: list) -> float:
     if largest == 0 or _PLAIN_LENGTHS[0] <= largest <= _PLAIN_LENGTHS[1]:
         return 1.0
     return 10.0 ** max(math.floor(math.log10(largest)), -300)  # a normal double, never 0
+
+
+def _origin(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Where the drawn coordinates start: 0, or on an axis where the view lies far from 0 for its
+    width (float32's 24 bits would step visibly across it: a scene 1e6 from the origin), its
+    centre rounded to 3 significant digits."""
+    mid, half = (lo + hi) / 2, float((hi - lo).max()) / 2
+    origin = np.zeros(3)
+    for i in range(3):
+        if abs(mid[i]) > 1e3 * half:
+            origin[i] = float(f"{mid[i]:.2e}")
+    return origin
 
 
 def rim_points(count: int) -> int:
@@ -650,7 +678,8 @@ def figure(
         if not (np.isfinite(lo).all() and np.isfinite(hi).all() and (lo < hi).all()):
             raise ValueError(f"figure: box must be finite, its lower corner below its upper one, got {box!r}")
     full = count <= FULL_LIMIT
-    options = {"hover": full, "sweeps": full, "faces": full, "outlines": rim > 0}
+    origin = _origin(lo, hi)
+    options = {"hover": full, "sweeps": full, "faces": full, "outlines": rim > 0, "origin": origin}
     rim = max(rim, 2)  # the markers' places: a point on each shape
     colours = plotly.colors.qualitative.Plotly
     traces, k = [], 0
@@ -669,13 +698,17 @@ def figure(
         for rows, label in groups:
             traces += _traces(go, part, geometry, rows, label, colours[k % len(colours)], options)
             k += 1
-    traces += _pair_traces(go, closest)
+    traces += _pair_traces(go, closest, origin)
     if title is None and isinstance(shapes, SceneFile) and shapes.description:
         title = shapes.description.split("\n")[0]
     unit = "" if scale == 1 else f" (\u00d7 {scale:.0e})"
-    axes = {
-        f"{axis}axis": {"range": [float(lo[i]), float(hi[i])], "title": axis + unit} for i, axis in enumerate("xyz")
-    }
+    axes = {}
+    for i, axis in enumerate("xyz"):
+        shift = "" if origin[i] == 0 else f" \u2212 {origin[i]:.6g}"
+        axes[f"{axis}axis"] = {
+            "range": [float(lo[i] - origin[i]), float(hi[i] - origin[i])],
+            "title": f"{axis}{shift}{unit}",
+        }
     fig = go.Figure(data=traces)
     fig.update_layout(
         title=title,

@@ -293,3 +293,20 @@ def test_far_from_unit_lengths_are_drawn_in_powers_of_ten(size):
     assert np.all(cd.distance(unit_ring, vertices(rim)) < 1e-6 * size / scale)
     segments = [t for t in fig.data if t.name == "closest points" and t.mode != "text"][0]
     assert segments.text[0] == f"probe \u2013 ring: distance {cd.distance(probe, ring):.6g}"
+
+
+@pytest.mark.parametrize("offset", [1e4, 1e6, 1e9])
+def test_far_translated_scenes_keep_their_digits(offset):
+    """A unit ring far from the origin: float32 steps at 1e6 are 0.06, so the coordinates are
+    drawn from an origin near the scene (the axes say which), and the rims stay on the ring."""
+    center = np.array([offset, -2 * offset, 3 * offset])
+    ring = cd.Circle(center, [0, 1, 1], 1.0)
+    fig = cd.figure({"ring": ring, "probe": cd.Point(center + [0, 0, 2])}, detail=32)
+    scene = fig.layout.scene
+    titles = [scene.xaxis.title.text, scene.yaxis.title.text, scene.zaxis.title.text]
+    assert all("\u2212" in t for t in titles), titles
+    scale = 1.0 if 3 * offset <= 1e6 else 10.0 ** np.floor(np.log10(3 * offset))
+    origin = np.array([float(t.split("\u2212 ")[1].split(" ")[0]) for t in titles])
+    (rim,) = [t for t in fig.data if t.name == "ring"]
+    drawn = (vertices(rim) + origin) * scale
+    assert np.all(cd.distance(ring, drawn) < 1e-5 * max(1.0, offset * 1e-7)), cd.distance(ring, drawn).max()
