@@ -18,7 +18,7 @@ import time
 # Debian's names for the browser and its driver (tools/run.sh installs them for the test task).
 CHROMIUM = ("chromium", "chromium-browser")
 DRIVER = ("chromedriver",)
-INSTALL = "apt-get install chromium chromium-driver; pip install selenium (tools/run.sh test installs both)"
+INSTALL = "apt-get install chromium chromium-driver, pip install selenium; tools/run.sh test installs them"
 
 
 def _which(names) -> str | None:
