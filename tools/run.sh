@@ -27,9 +27,10 @@
 #                            then computes every recorded 50-digit reference of tests/references/
 #                            again (python -m tools.references verify), and rewrites
 #                            docs/reports/fuzz.md and differential.md from those records
-# Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv come
-# from apt when missing; the Python packages pyproject.toml lists (build requires, dependencies,
-# the task's extras) go into ./.venv (which sees the system's site-packages).
+# Works as root on a fresh Debian machine with Python 3: Debian's Eigen, compiler and venv (and
+# for the test task Chromium and its driver) come from apt when missing; the Python packages
+# pyproject.toml lists (build requires, dependencies, the task's extras) go into ./.venv (which
+# sees the system's site-packages).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 task="${1:-test}"
@@ -41,6 +42,12 @@ command -v g++ >/dev/null 2>&1 || missing+=(g++)
 "$python" -c "import ensurepip" >/dev/null 2>&1 || missing+=(python3-venv)
 "$python" -c "import os, sysconfig; assert os.path.exists(os.path.join(sysconfig.get_paths()['include'], 'Python.h'))" \
   >/dev/null 2>&1 || missing+=(python3-dev)
+# The browser tests (tests/api/test_view_browser.py: the pages circledist.figure writes, opened
+# in headless Chromium) run in the test task only; the other tasks do without the browser.
+if [ "$task" = test ]; then
+  command -v chromium >/dev/null 2>&1 || missing+=(chromium)
+  command -v chromedriver >/dev/null 2>&1 || missing+=(chromium-driver)
+fi
 if [ ${#missing[@]} -gt 0 ]; then
   echo "== installing from Debian: ${missing[*]}"
   sudo=""
@@ -67,7 +74,7 @@ missing_requirements() {  # missing_requirements EXTRA... -- TOOL... (tools/pypr
 }
 case "$task" in
   demo) extras=(plot) ;;
-  test|check) extras=(test plot docs dask) ;;  # docs: the stubs' check and the docs build (tests/package/test_stubs.py, test_docs.py); dask: tests/api/test_dask.py on a LocalCluster
+  test|check) extras=(test plot docs dask view browser) ;;  # docs: the stubs' check and the docs build (tests/package/test_stubs.py, test_docs.py); dask: tests/api/test_dask.py on a LocalCluster; view, browser: tests/api/test_view*.py
   docs) extras=(docs) ;;
   fuzz) extras=(test) ;;  # the fuzz and the differential test check against the tests' mpmath references
   bench) extras=(bench) ;;

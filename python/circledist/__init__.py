@@ -27,6 +27,7 @@ from ._core import (
 )
 from .scene import Scene
 from .scenefile import SceneFileError, read_scene, write_scene
+from .view import figure  # plotly is imported when a figure is made, not here
 
 __all__ = [
     "Annulus",
@@ -47,6 +48,7 @@ __all__ = [
     "closest_points",
     "distance",
     "distance_if_within",
+    "figure",
     "intersects",
     "nearest",
     "pairs_within",

@@ -1,5 +1,6 @@
 """The command line's last step: the answers as a text table or JSON, and the scene drawn in 3D
-(matplotlib) with a segment between each pair of closest points."""
+(matplotlib) with a segment between each pair of closest points, or as an interactive page
+(plotly: circledist.view)."""
 
 from __future__ import annotations
 
@@ -111,6 +112,14 @@ def check_output(path: str) -> None:
 def write_output(path: str, data: bytes) -> None:
     """Writes a whole output file or nothing (a temporary file renamed into place)."""
     _write_atomically(path, lambda f: f.write(data))
+
+
+def page(scene: SceneFile) -> bytes:
+    """The scene as one self-contained HTML page (plotly.js inside): circledist.figure of the scene
+    file, its pair queries' closest points drawn."""
+    from .view import figure
+
+    return figure(scene).to_html(include_plotlyjs=True, full_html=True).encode("utf-8")
 
 
 # ------------------------------------------------------------------------------------------

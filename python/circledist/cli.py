@@ -1,6 +1,6 @@
 """circledist's command line: answer the queries of a scene file.
 
-    python -m circledist [scene.json | scene.npz] [--json [PATH]] [--plot PATH | --no-plot]
+    python -m circledist [scene.json | scene.npz] [--json [PATH]] [--plot PATH | --no-plot] [--html PATH]
     circledist [scene] ...                            (the same, as a console script)
 
 Without a scene file it runs the demo scene shipped in the package and draws it to
@@ -18,7 +18,7 @@ import sys
 
 from ._cli_answer import answer
 from ._cli_load import FORMAT_HELP, Query, SceneError, demo_scene_text, format_help, load_scene
-from ._cli_present import PICTURE_LIMIT, as_json, check_output, picture, table, write_output
+from ._cli_present import PICTURE_LIMIT, as_json, check_output, page, picture, table, write_output
 
 __all__ = [
     "main",
@@ -59,6 +59,13 @@ def _parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--plot", metavar="PATH", help="draw the scene and its closest points to PATH (PNG, matplotlib)")
     p.add_argument("--no-plot", action="store_true", help="do not draw the demo scene")
+    p.add_argument(
+        "--html",
+        metavar="PATH",
+        help="write an interactive 3-D view of the scene and its closest points to PATH: one "
+        "self-contained HTML file (plotly.js inside, no network needed); needs plotly "
+        "(pip install 'circledist[view]')",
+    )
     p.add_argument("--version", action="version", version=f"circledist {_version()}")
     return p
 
@@ -77,7 +84,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.no_plot:
         plot = None
     try:
-        for path in (args.json if args.json != "-" else None, plot):
+        for path in (args.json if args.json != "-" else None, plot, args.html):
             if path is not None:
                 check_output(path)
         if args.scene is None:
@@ -101,10 +108,20 @@ def main(argv: list[str] | None = None) -> int:
                     file=sys.stderr,
                 )
                 return 1
+        if args.html is not None:
+            try:
+                import plotly  # noqa: F401
+            except ImportError:
+                print(
+                    "circledist: --html needs plotly (pip install 'circledist[view]', or pip install plotly)",
+                    file=sys.stderr,
+                )
+                return 1
         queries = answer(scene)
         text = table(scene, queries)
         payload = as_json(scene, queries) if args.json is not None else None
         image = picture(scene, queries) if plot is not None else None
+        html = page(scene) if args.html is not None else None
     except SceneError as e:
         print(f"circledist: error: {e}", file=sys.stderr)
         return 2
@@ -114,6 +131,8 @@ def main(argv: list[str] | None = None) -> int:
         outputs.append((args.json, payload.encode("utf-8")))
     if image is not None:
         outputs.append((plot, image))
+    if html is not None:
+        outputs.append((args.html, html))
     for path, data in outputs:
         try:
             write_output(path, data)
@@ -128,6 +147,8 @@ def main(argv: list[str] | None = None) -> int:
             print(f"answers written to {args.json}")
     if image is not None:
         print(f"picture written to {plot}")
+    if html is not None:
+        print(f"interactive view written to {args.html}")
     return 0
 
 

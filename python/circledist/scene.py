@@ -599,6 +599,36 @@ class Scene:
         except KeyError:
             raise KeyError(f"Scene: no shape named {name!r}") from None
 
+    def figure(self, *, pairs=None, detail=None, box=None, title=None):
+        """An interactive 3-D figure (plotly) of the scene: ``circledist.figure(scene, ...)``.
+
+        Parameters
+        ----------
+        pairs : sequence of (str, str), optional
+            Pairs of shape names whose closest points are drawn, each labelled with its distance.
+        detail : int, optional
+            Points on each closed rim; default: fewer for more shapes.
+        box : pair of 3-vectors, optional
+            The region shown, which lines and rays are clipped to; default: around the shapes.
+        title : str, optional
+            The figure's title.
+
+        Returns
+        -------
+        plotly.graph_objects.Figure
+            Each shape labelled with its name on hover (`circledist.figure`).
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene({"ring": cd.Circle([0, 0, 0], [0, 0, 1], 1.0), "probe": cd.Point([0, 0, 2])})
+        >>> [trace.name for trace in s.figure(pairs=[("probe", "ring")]).data][:2]
+        ['ring', 'probe']
+        """
+        from .view import figure
+
+        return figure(self, pairs=pairs, detail=detail, box=box, title=title)
+
     # ---- the hierarchy ---------------------------------------------------------------------
     def _fresh(self, build: bool, merge: bool) -> bool:
         """Whether reading needs no change first: no group has rows pending, and (build) the

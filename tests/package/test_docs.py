@@ -152,6 +152,8 @@ def test_every_table_renders(page):
 def test_guide_examples_run(page):
     """Every Python block of a guide page, in order, in one namespace per page."""
     codes = re.findall(r"```python\n(.*?)```", page.read_text(), flags=re.S)
+    if "cd.figure(" in "".join(codes):
+        pytest.importorskip("plotly", reason="plotly is the view extra (pip install 'circledist[view]')")
     if "import circledist.dask" in "".join(codes):
         pytest.importorskip("dask")
         pytest.importorskip("distributed")

@@ -79,6 +79,7 @@ def test_every_public_object_is_listed():
         "write_scene",
         "pairs_within",
         "nearest",
+        "figure",
     }
 
 
