@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace circledist {
 
@@ -377,10 +378,13 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   // and as near at that end. The answer is the end's point-arc candidate the rest of this path
   // would have found, by the same call.
   SecondMinimumTest<Real> test;
+  bool tested = false;  // a full line has no end to answer before the root: its test comes after
   const auto before_root = [&](const LineRingMinimum<Real>& line_data) {
     // A piece in the arc's plane: the plane's candidates, no root (piece_arc_planar).
     if (piece_arc_planar<for_closest>(piece, arc, ends, linear, line_data, out)) return true;
+    if constexpr (std::is_same<Piece, Line3<Real>>::value) return false;
     test = second_minimum_test(line_data, arc.radius);
+    tested = true;
     if (test.verdict != 0 || line_data.on_axis) return false;
     const Vec3<Real>& direction = pl.line.direction;
     Real tau;
@@ -438,6 +442,8 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
     return out.value == out.value;
   }
   LineRingMinimum<Real> second;
+  // The secular data second_minimum_test reads are the same after the root (its test, the same).
+  if (!tested) test = second_minimum_test(m, arc.radius);
   const int other = other_line_minimum<Roots>(m, arc.radius, second, [](Real) { return true; }, test);
   if (other < 0) return false;
   // Closest points keep every candidate (for the tie test); the distance keeps the least value.
