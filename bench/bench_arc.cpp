@@ -8,9 +8,10 @@
 //
 // stdout, one line per pair and call: ns/query for the arc and the circle (the least over the
 // repeats of a full pass's thread CPU time, over the pairs; the arc's and the circle's passes
-// alternate), and their ratio; then two "floor" lines: the sine and cosine of the arc's angle
-// against point-circle's distance, and the share of the draws whose point-arc answer is the far
-// end (the trigonometry it cannot do without). docs/derivations/arc.md "Cost".
+// alternate), and their ratio (the kinds ".../plane": the other shape in the arc's plane); then
+// two "floor" lines: the sine and cosine of the arc's angle against point-circle's distance, and
+// the share of the draws whose point-arc answer is the far end (the trigonometry it cannot do
+// without). docs/derivations/arc.md "Cost".
 #include <circledist/circledist.hpp>
 
 #include <algorithm>
@@ -47,6 +48,14 @@ struct Draw {
   Real radius() { return std::uniform_real_distribution<Real>(0.2, 2)(rng); }
   Real angle() { return std::uniform_real_distribution<Real>(0.5, 6)(rng); }
   Arc3<Real> arc() { return {vec(2), dir(), radius(), dir(), angle()}; }
+  // A point of arc a's plane at in-plane offsets up to s from its center, and an in-plane
+  // direction (formed in double: in the plane to rounding).
+  V in_plane(const Arc3<Real>& a, Real s, bool direction) {
+    const V n = a.normal.normalized();
+    const V e1 = n.cross(dir()).normalized(), e2 = n.cross(e1);
+    const V offset = s * unit(rng) * e1 + s * unit(rng) * e2;
+    return direction ? offset : V(a.center + offset);
+  }
 };
 
 Circle3<Real> circle_of(const Arc3<Real>& a) { return {a.center, a.normal, a.radius}; }
@@ -135,6 +144,28 @@ int main(int argc, char** argv) {
   run("disk", disks, arcs, disks, arc_circles, repeats, sink);
   // Arc-arc against circle-circle: both arcs become their circles.
   run("arc-arc", others, arcs, other_circles, arc_circles, repeats, sink);
+  // In the arc's plane (the toolpath case: arcs and lines in one plane), the same shapes against
+  // the arc and its circle; the target there is 1.5x (a point 2x).
+  {
+    std::vector<V> p;
+    std::vector<Line3<Real>> l;
+    std::vector<Ray3<Real>> r;
+    std::vector<Segment3<Real>> s;
+    std::vector<Circle3<Real>> c;
+    for (const Arc3<Real>& a : arcs) {
+      p.push_back(draw.in_plane(a, 3, false));
+      l.push_back({draw.in_plane(a, 3, false), draw.in_plane(a, 1, true)});
+      r.push_back({draw.in_plane(a, 3, false), draw.in_plane(a, 1, true)});
+      const V p0 = draw.in_plane(a, 3, false);
+      s.push_back({p0, p0 + draw.in_plane(a, 3, true)});
+      c.push_back({draw.in_plane(a, 2, false), (draw.unit(draw.rng) < 0 ? -1 : 1) * a.normal, draw.radius()});
+    }
+    run("point/plane", p, arcs, p, arc_circles, repeats, sink);
+    run("line/plane", l, arcs, l, arc_circles, repeats, sink);
+    run("ray/plane", r, arcs, r, arc_circles, repeats, sink);
+    run("seg/plane", s, arcs, s, arc_circles, repeats, sink);
+    run("circ/plane", c, arcs, c, arc_circles, repeats, sink);
+  }
   // The floor under point-arc: the sine and cosine of the arc's angle, which the far end's point
   // needs (there is no end point without them: the arc is given by its angle), timed alone in the
   // same loop against point-circle's whole distance. Where this ratio is above 0.3 a point-arc

@@ -33,6 +33,17 @@ template <class Real, class Visitor> void for_each_kind(Visitor&& v) {
   v.template add<Disk3<Real>, Arc3<Real>>("disk-arc");
   v.template add<Arc3<Real>, Arc3<Real>>("arc-arc");
   v.template add<BezierCurve3<Real>, Arc3<Real>>("bezier-arc");
+  // In the arc's plane (the toolpath case), and the same inputs against the arc's circle.
+  v.template add<Vec3<Real>, Arc3<Real>>("point-arc-coplanar");
+  v.template add<Line3<Real>, Arc3<Real>>("line-arc-coplanar");
+  v.template add<Ray3<Real>, Arc3<Real>>("ray-arc-coplanar");
+  v.template add<Segment3<Real>, Arc3<Real>>("segment-arc-coplanar");
+  v.template add<Circle3<Real>, Arc3<Real>>("circle-arc-coplanar");
+  v.template add<Vec3<Real>, Circle3<Real>>("point-circle-coplanar");
+  v.template add<Line3<Real>, Circle3<Real>>("line-circle-coplanar");
+  v.template add<Ray3<Real>, Circle3<Real>>("ray-circle-coplanar");
+  v.template add<Segment3<Real>, Circle3<Real>>("segment-circle-coplanar");
+  v.template add<Circle3<Real>, Circle3<Real>>("circle-circle-coplanar");
   v.template add<Vec3<Real>, Annulus3<Real>>("point-annulus");
   v.template add<Line3<Real>, Annulus3<Real>>("line-annulus");
   v.template add<Ray3<Real>, Annulus3<Real>>("ray-annulus");

@@ -165,6 +165,38 @@ class Kind:
     b: str
     d3d: Optional[Callable] = None
     d3d_name: str = ""
+    coplanar: bool = False  # a in the plane of b (an arc, or a circle: the same inputs' circle)
+
+
+def _coplanar(a, n):
+    """Shape a in the plane of a random arc (the toolpath case: arcs and lines in one plane), and
+    the arc: points, origins, ends and centers at in-plane offsets from the arc's center, in-plane
+    directions, a circle's normal the arc's (either sign); formed in double, so in the plane to
+    rounding. Seeded by the shape kind alone: the arc row and its circle row (the arc's first three
+    fields) time the same inputs, and the other kinds' inputs stay the same bytes."""
+    rng = np.random.default_rng([SEED, list(SHAPES).index(a)])
+    arc = _arc(rng, n)
+    center, normal = arc[0], arc[1]
+    unit = _unit(normal)
+    e1 = _unit(np.cross(unit, rng.normal(0.0, 1.0, (n, 3))))
+    e2 = np.cross(unit, e1)
+
+    def offset(scale):
+        x, y = rng.normal(0.0, scale, (2, n, 1))
+        return x * e1 + y * e2
+
+    if a == "point":
+        fields = [center + offset(1.5)]
+    elif a in ("line", "ray"):
+        fields = [center + offset(2.0), offset(1.0)]
+    elif a == "segment":
+        p0 = center + offset(1.5)
+        fields = [p0, p0 + offset(1.5)]
+    else:
+        assert a == "circle", a
+        sign = np.where(rng.random(n) < 0.5, -1.0, 1.0)[:, None]
+        fields = [center + offset(1.0), sign * normal * rng.uniform(0.5, 2.0, (n, 1)), rng.uniform(0.5, 2.0, n)]
+    return fields, arc
 
 
 KINDS = [
@@ -188,6 +220,9 @@ KINDS = [
         Kind(f"{a}-annulus", a, "annulus")
         for a in ("point", "line", "ray", "segment", "circle", "disk", "arc", "annulus", "bezier")
     ),
+    # In the arc's plane (the toolpath case), and the same inputs against the arc's circle.
+    *(Kind(f"{a}-arc-coplanar", a, "arc", coplanar=True) for a in ("point", "line", "ray", "segment", "circle")),
+    *(Kind(f"{a}-circle-coplanar", a, "circle", coplanar=True) for a in ("point", "line", "ray", "segment", "circle")),
 ]
 # An arc query's circle counterpart: the arc replaced by its circle (a disk against an arc:
 # circle-disk; two arcs: circle-circle).
@@ -201,6 +236,13 @@ ARC_COUNTERPART = {
     "arc-arc": "circle-circle",
     "bezier-arc": "bezier-circle",
 }
+# In the arc's plane: against the arc's circle on the same inputs; a line, ray or segment at most
+# 1.5x, a point at most 2x (the far end's sine and cosine).
+COPLANAR_COUNTERPART = {
+    f"{a}-arc-coplanar": f"{a}-circle-coplanar" for a in ("point", "line", "ray", "segment", "circle")
+}
+TARGET_COPLANAR_RATIO = {"point-arc-coplanar": 2.0, "circle-arc-coplanar": 1.5}
+TARGET_COPLANAR_PIECE_RATIO = 1.5
 
 
 @dataclass
@@ -726,6 +768,24 @@ def targets(rows, mem):
                 else f"**missed** for {', '.join(over)}"
             )
         )
+    # In the arc's plane, on the same inputs: the arc against its circle.
+    coplanar = [
+        (by[a].cpp_ns / by[c].cpp_ns, a, c)
+        for a, c in COPLANAR_COUNTERPART.items()
+        if a in by and c in by and by[a].cpp_ns and by[c].cpp_ns
+    ]
+    if coplanar:
+        limit = lambda a: TARGET_COPLANAR_RATIO.get(a, TARGET_COPLANAR_PIECE_RATIO)  # noqa: E731
+        over = [f"{a} ({r:.2f}x {c}, target {limit(a):g}x)" for r, a, c in coplanar if r > limit(a)]
+        out.append(
+            "- in the arc's plane, C++ against the arc's circle on the same inputs (a point at most 2x, "
+            f"the others {TARGET_COPLANAR_PIECE_RATIO:g}x): "
+            + (
+                "met for every kind (" + ", ".join(f"{a} {r:.2f}x" for r, a, _ in coplanar) + ")"
+                if not over
+                else f"**missed** for {', '.join(over)}"
+            )
+        )
     cl = [(row.closest_ns / row.batch_ns, row.kind.name) for row in rows if row.closest_ns and row.batch_ns]
     if cl:
         over = [f"{k} ({r:.2f}x)" for r, k in cl if r > TARGET_CLOSEST_RATIO]
@@ -762,7 +822,9 @@ def report(rows, info, mem, d3d_version, n, wall):
         "",
         f"Inputs: {n:,} random queries per kind (seed {SEED}; centers and origins around the origin, "
         "normals and directions of random length, radii in [0.5, 2], arcs of angle in [0.5, 6] from a random "
-        "start, annuli with a hole of 10 to 90 % of the outer radius, Bézier curves cubic), the same "
+        "start, annuli with a hole of 10 to 90 % of the outer radius, Bézier curves cubic; the *-coplanar kinds: "
+        "the first shape in the plane of a random arc, to rounding, against the arc and on the same inputs "
+        "against its circle), the same "
         "bytes for C++ and Python. Times are medians of repeated runs on one core, in double.",
         "",
         table(rows),
@@ -873,8 +935,12 @@ def main():
     rng = np.random.default_rng(SEED)
     rows = []
     for kind in kinds:
-        fa = SHAPES[kind.a].make(rng, args.n)
-        fb = SHAPES[kind.b].make(rng, args.n)
+        if kind.coplanar:  # its own seed: the other kinds' inputs stay the same bytes
+            fa, arc = _coplanar(kind.a, args.n)
+            fb = arc if kind.b == "arc" else arc[:3]
+        else:
+            fa = SHAPES[kind.a].make(rng, args.n)
+            fb = SHAPES[kind.b].make(rng, args.n)
         rows.append(Row(kind, fa, fb))
 
     with tempfile.TemporaryDirectory(prefix="circledist-bench-") as workdir:

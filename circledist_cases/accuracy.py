@@ -68,6 +68,12 @@ KINDS = [
     "arc-annulus",
     "annulus-annulus",
     "bezier-annulus",
+    # the first shape in the arc's plane (the toolpath case: arcs and lines in one plane)
+    "point-arc-coplanar",
+    "line-arc-coplanar",
+    "ray-arc-coplanar",
+    "segment-arc-coplanar",
+    "circle-arc-coplanar",
 ]
 LINEAR = ("point", "line", "ray", "segment")
 ROUND = ("circle", "disk")
@@ -75,8 +81,28 @@ SHAPE_SIZE = {"point": 3, "line": 6, "ray": 6, "segment": 6, "circle": 7, "disk"
 
 
 def shapes_of(kind):
-    a, b = kind.split("-")
+    """The two shape kinds of a kind ("line-arc", "line-arc-coplanar": line and arc)."""
+    a, b = kind.split("-")[:2]
     return a, b
+
+
+def _coplanar_kind(kind):
+    return kind.endswith("-coplanar")
+
+
+def _in_the_arc_plane(a, b):
+    """Whether local shape a lies in the plane z = 0 of arc b (normal along z, center at z = 0):
+    its points at z = 0, its directions and a round's normal-free part flat."""
+    if b[0] != "arc" or b[1][2] != 0 or b[2][0] != 0 or b[2][1] != 0:
+        return False
+    kind, *f = a
+    if kind == "point":
+        return f[0][2] == 0
+    if kind in ("line", "ray", "segment"):
+        return f[0][2] == 0 and f[1][2] == 0
+    if kind == "circle":
+        return f[0][2] == 0 and f[1][0] == 0 and f[1][1] == 0
+    return False
 
 
 def split_values(kind, values):
@@ -659,7 +685,11 @@ def _variants(scenes, target, bases):
 
 
 def hard_scenes(kind):
-    """[(name, a, b, scale)] in local coordinates, before placement."""
+    """[(name, a, b, scale)] in local coordinates, before placement. A coplanar kind: its base
+    kind's scenes that lie in the arc's plane."""
+    if _coplanar_kind(kind):
+        base = kind[: -len("-coplanar")]
+        return [scene for scene in hard_scenes(base) if _in_the_arc_plane(scene[1], scene[2])]
     a, b = shapes_of(kind)
     out = []
     if a in LINEAR:
@@ -722,8 +752,37 @@ def _unit(v):
     return v / np.linalg.norm(v)
 
 
+def _random_coplanar_cases(kind, n, rng):
+    """Shape a in the plane of a random arc (formed in double: in the plane to rounding)."""
+    a, _ = shapes_of(kind)
+    out = []
+    for i in range(n):
+        c, nrm = rng.normal(size=3), rng.normal(size=3) * (1.0 if rng.random() < 0.5 else rng.uniform(0.1, 10.0))
+        e1 = _unit(np.cross(nrm, rng.normal(size=3)))
+        e2 = np.cross(_unit(nrm), e1)
+
+        def at(scale):
+            x, y = rng.normal(scale=scale, size=2)
+            return c + x * e1 + y * e2
+
+        arc = ("arc", c, nrm, rng.uniform(0.2, 2.0), rng.normal(size=3), rng.uniform(0.2, TWO_PI))
+        if a == "point":
+            sa = ("point", at(1.5))
+        elif a in ("line", "ray"):
+            sa = (a, at(1.5), at(1.0) - c)
+        elif a == "segment":
+            p0 = at(1.5)
+            sa = ("segment", p0, p0 + at(1.5) - c)
+        else:
+            sa = ("circle", at(1.5), nrm * (1.0 if rng.random() < 0.5 else -2.0), rng.uniform(0.2, 2.0))
+        out.append(Case(kind, "random", f"random {i:03d}", scene_values(sa, arc)))
+    return out
+
+
 def random_cases(kind, n):
     rng = np.random.default_rng(7000 + KINDS.index(kind))
+    if _coplanar_kind(kind):
+        return _random_coplanar_cases(kind, n, rng)
     a, b = shapes_of(kind)
     out = []
     for i in range(n):

@@ -334,6 +334,84 @@ void piece_tests() {
   }
 }
 
+// Lines, rays and segments in the arc's plane (the toolpath case, linear_arc.hpp's
+// piece_arc_planar): random planes whose points are formed in double (coplanar to rounding), the
+// xy plane at a height with normals of either sign (exactly coplanar), the same lifted 1e-12 off
+// the plane, and 1e6 from the origin; random pieces, and the hard ones: tangent at angles on,
+// at and 1e-9 beside the arc's ends, crossing the circle there, missing it by 1e-9, segments
+// ending 1e-9 short of the circle, rays out through it; arc radii 1e-3 and 1e3.
+struct Plane {
+  V3d origin, e1, e2, n;
+  double lift;
+  V3d at(double x, double y) const { return origin + x * e1 + y * e2 + lift * n.normalized(); }
+  V3d along(double x, double y) const { return x * e1 + y * e2; }
+  Arc arc(double r, double start, double angle) const {
+    return {origin, n, r, std::cos(start) * e1 + std::sin(start) * e2, angle};
+  }
+};
+
+void coplanar_tests() {
+  Draw d(41);
+  std::vector<Plane> planes;
+  planes.push_back({V3d(0.25, -0.5, 1.75), V3d(1, 0, 0), V3d(0, 1, 0), V3d(0, 0, 2), 0});
+  planes.push_back({V3d(0.25, -0.5, -3), V3d(0, 1, 0), V3d(1, 0, 0), V3d(0, 0, -0.5), 0});
+  for (int k = 0; k < 3; ++k) {
+    const V3d n = d.vec();
+    const V3d e1 = n.cross(d.vec()).normalized(), e2 = n.normalized().cross(e1);
+    planes.push_back({d.vec(), e1, e2, n, 0});
+  }
+  planes.push_back({planes[2].origin, planes[2].e1, planes[2].e2, planes[2].n, 1e-12});
+  planes.push_back({planes[3].origin + 1e6 * unit(0.3, -1, 0.6), planes[3].e1, planes[3].e2, planes[3].n, 0});
+  for (const Plane& p : planes) {
+    const Arc a = p.arc(1, 0, 2);  // t in [0, 2], the plane's angle
+    for (const double t : {1.0, 0.0, 2.0, 2.0 - 1e-9, 2.0 + 1e-9, -1e-9, 4.0}) {
+      const double cs = std::cos(t), sn = std::sin(t);
+      const V3d tangent = p.along(-sn, cs);
+      const Line touching{p.at(cs, sn) - 3 * tangent, tangent};
+      arc_case("line-arc", "coplanar tangent", touching, a, ref_piece_arc(touching, a));
+      const Line missing{p.at((1 + 1e-9) * cs, (1 + 1e-9) * sn) + 2 * tangent, -tangent};
+      arc_case("line-arc", "coplanar missing by 1e-9", missing, a, ref_piece_arc(missing, a));
+      const Line crossing{p.at(cs, sn), p.along(std::cos(t + 2.5) - cs, std::sin(t + 2.5) - sn)};
+      arc_case("line-arc", "coplanar crossing", crossing, a, ref_piece_arc(crossing, a));
+      const Segment short_of{p.at(1.5 * cs, 1.5 * sn), p.at((1 + 1e-9) * cs, (1 + 1e-9) * sn)};
+      arc_case("segment-arc", "coplanar short of the circle", short_of, a, ref_piece_arc(short_of, a));
+      const Segment ending_on{p.at(1.5 * cs, 1.5 * sn), p.at(cs, sn)};
+      arc_case("segment-arc", "coplanar ending on the circle", ending_on, a, ref_piece_arc(ending_on, a));
+      const Ray out{p.at(0.2 * cs, 0.2 * sn), p.along(cs, sn)};
+      arc_case("ray-arc", "coplanar out through the circle", out, a, ref_piece_arc(out, a));
+    }
+    // Chords of the circle between two angles: both crossings on the arc (two pairs at distance 0),
+    // one, or none (the ends decide).
+    const auto chord = [&](double t1, double t2) {
+      return Line{p.at(std::cos(t1), std::sin(t1)), p.along(std::cos(t2) - std::cos(t1), std::sin(t2) - std::sin(t1))};
+    };
+    // (At 1e6 the chord's ends round by 1e-10 off the circle: the two crossings' distances differ.)
+    const bool near_origin = p.origin.norm() < 10;
+    arc_case("line-arc", "coplanar crossing the arc twice", chord(0.3, 1.7), a, ref_piece_arc(chord(0.3, 1.7), a),
+             near_origin ? 0 : -1);
+    arc_case("line-arc", "coplanar crossing the arc once", chord(1.0, 3.0), a, ref_piece_arc(chord(1.0, 3.0), a), 1);
+    arc_case("line-arc", "coplanar crossing the gap", chord(2.5, 5.0), a, ref_piece_arc(chord(2.5, 5.0), a), 1);
+    const Segment inside{p.at(-0.2, 0.3), p.at(0.4, 0.1)};
+    arc_case("segment-arc", "coplanar inside the circle", inside, a, ref_piece_arc(inside, a));
+    const Arc small = p.arc(1e-3, 0.5, 2), big = p.arc(1e3, 0, 0.01);
+    const Line small_line{p.at(0, 5e-4), p.along(1, 0.1)};
+    arc_case("line-arc", "coplanar tiny arc", small_line, small, ref_piece_arc(small_line, small));
+    const Segment big_segment{p.at(999, 3), p.at(1001, 3.5)};
+    arc_case("segment-arc", "coplanar huge arc", big_segment, big, ref_piece_arc(big_segment, big));
+    for (int k = 0; k < check::scaled(24); ++k) {
+      const double r = d.radius(), x = d.normal(d.rng), y = d.normal(d.rng);
+      const Arc ra = p.arc(r, kTurn * d.uniform(d.rng), std::max(0.05, 6.2 * d.uniform(d.rng)));
+      const V3d o = p.at(2 * x, 2 * y), dir = p.along(d.normal(d.rng), d.normal(d.rng));
+      const Line l{o, dir};
+      const Ray ray{o, dir};
+      const Segment seg{o, o + 1.5 * dir};
+      arc_case("line-arc", "coplanar random", l, ra, ref_piece_arc(l, ra));
+      arc_case("ray-arc", "coplanar random", ray, ra, ref_piece_arc(ray, ra));
+      arc_case("segment-arc", "coplanar random", seg, ra, ref_piece_arc(seg, ra));
+    }
+  }
+}
+
 template <class Round3> LD ref_round_arc(const Round3& s, const Arc& a);
 template <> LD ref_round_arc(const Circle& s, const Arc& a) { return ref_circle_arc(s, a); }
 template <> LD ref_round_arc(const Disk& s, const Arc& a) { return ref_disk_arc(s, a); }
@@ -608,6 +686,7 @@ int main() {
   normal_length_tests();
   point_tests();
   piece_tests();
+  coplanar_tests();
   round_tests<Circle>("circle-arc");
   round_tests<Disk>("disk-arc");
   arc_arc_tests();

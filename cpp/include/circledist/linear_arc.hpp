@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace circledist {
 
@@ -176,6 +177,187 @@ template <class Real> struct PieceArcPick {
   bool unique = true, tied = false;
 };
 
+// The piece in the arc's plane (docs/derivations/arc.md, "A line, ray or segment in the arc's
+// plane"): the problem taken in the plane, in the arc's unit u and v, on the line's data
+// (line_ring_minimum's anchor a, unit direction m and unit normal n, before its root). The
+// candidates are the ring points that can be the plane problem's closest: the line's crossings of
+// the circle (or, where it misses, the ring point toward it), the arc's two ends and the ring
+// points toward the piece's finite ends, those on the arc; each against the piece's clamped point.
+// The least in the plane, V2, is at most the distance f* (projecting onto the plane shortens every
+// distance from a plane point); its pair's distance in space, V, is at least f* and at most
+// V2 + |h| (h the piece point's height over the plane). So V is the answer within |h|, and it is
+// taken only where |h|, bounded with its rounding, is below 64 eps max(R, V): a piece in the plane
+// to rounding. Returns 1 decided (`out` holds V, and for closest the pair and `unique`), 0 not.
+// The first candidate list entry that is a line minimum on the arc and on the piece is the plane
+// problem's global minimum: distance() stops there; closest() goes on only to the other crossing
+// (the one pair that can tie with it at a distinct point).
+// The arc's span test of a plane point (x, y) in the arc's u, v coordinates: its angle from u
+// toward v, atan2(y, x) in [0, 2 pi), at most `angle`; the atan2 only where the octant of the
+// same two numbers does not decide (detail::octant_bounds: where it does, the angle answers the
+// same).
+template <class Real> CIRCLEDIST_INLINE bool plane_angle_holds(Real x, Real y, Real angle) {
+  Real lo, hi;
+  if (detail::octant_bounds(x, y, lo, hi)) {
+    if (hi < angle) return true;
+    if (lo > angle) return false;
+  }
+  const Real t = detail::atan2(y, x);
+  return (t < 0 ? t + 2 * pi_v<Real>() : t) <= angle;
+}
+
+// piece_arc_planar's candidates: a ring point (x, y) of the arc and the piece's point at its
+// foot's tau clamped to [lo, hi], and the pair's distance in the plane.
+template <class Real> struct PlaneCandidates {
+  struct Item {
+    Real x, y, value;  // the ring point in the plane, and its plane distance to the piece
+    Real tau;          // the piece point's tau, clamped
+    int clamped_end;   // -1 inside the piece, 0 or 1 at its end lo or hi
+    int arc_end;       // -1 inside the arc, 0 or 1 its start or far end
+  };
+  Real ax, ay, mx, my, lo, hi;  // the anchor and the unit direction in the plane, the interval
+  Item item[6];
+  int count = 0;
+
+  // Adds the pair; true where the piece's point is inside the piece.
+  CIRCLEDIST_INLINE bool take(Real x, Real y, int arc_end) {
+    const Real tau_free = (x - ax) * mx + (y - ay) * my;
+    Item& k = item[count++];
+    k.clamped_end = tau_free < lo ? 0 : (tau_free > hi ? 1 : -1);
+    k.tau = k.clamped_end < 0 ? tau_free : (k.clamped_end == 0 ? lo : hi);
+    k.arc_end = arc_end;
+    k.x = x;
+    k.y = y;
+    k.value = length2d(x - (ax + k.tau * mx), y - (ay + k.tau * my));
+    return k.clamped_end < 0;
+  }
+};
+
+template <bool for_closest, class Real, class Piece>
+int piece_arc_planar(const Piece& piece, const Arc3<Real>& arc, const ArcEnds<Real>& ends, const Linear<Real>& linear,
+                     const LineRingMinimum<Real>& line, PieceArcPick<Real>& out) {
+  constexpr Real eps = std::numeric_limits<Real>::epsilon();
+  const Vec3<Real>&a = line.anchor, &m = line.unit_direction, &n = line.unit_normal;
+  const Real radius = arc.radius;
+  const Real height = a.x() * n.x() + a.y() * n.y() + a.z() * n.z();
+  const Real tilt = m.x() * n.x() + m.y() * n.y() + m.z() * n.z();
+  // |a| bounded without a square root: |a|_max <= |a| <= |a|_1.
+  const Real a_max = std::max({std::abs(a.x()), std::abs(a.y()), std::abs(a.z())});
+  const Real a_sum = std::abs(a.x()) + std::abs(a.y()) + std::abs(a.z());
+  // Cheap refusal of a piece out of the plane: the bound below before V is known (V >= 0 and
+  // |tau| <= R + V <= 2 R + |a| at the plane's answer).
+  if (!(std::abs(height) + std::abs(tilt) * (2 * radius + a_sum) <= 32 * eps * (radius + a_max))) return 0;
+  // The arc's unit u (from u', ArcEnds) and v = n x u.
+  const Real inv_u = 1 / ends.length;
+  const Real ux = ends.u.x() * inv_u, uy = ends.u.y() * inv_u, uz = ends.u.z() * inv_u;
+  const Real vx = n.y() * uz - n.z() * uy, vy = n.z() * ux - n.x() * uz, vz = n.x() * uy - n.y() * ux;
+  PlaneCandidates<Real> k;
+  k.ax = a.x() * ux + a.y() * uy + a.z() * uz;
+  k.ay = a.x() * vx + a.y() * vy + a.z() * vz;
+  k.mx = m.x() * ux + m.y() * uy + m.z() * uz;
+  k.my = m.x() * vx + m.y() * vy + m.z() * vz;
+  // The unit m is in the plane to 32 eps (the refusal above): its plane part's squared length
+  // is 1 to rounding, and is taken as 1 (tau and the foot then round as by eps |a|).
+  // The piece's interval in tau from the anchor (AnchoredPiece's ends).
+  const Vec3<Real>& c = arc.center;
+  k.lo = std::isfinite(linear.lo) ? (piece_end(piece, linear.lo) - c).dot(m) : linear.lo;
+  k.hi = std::isfinite(linear.hi) ? (piece_end(piece, linear.hi) - c).dot(m) : linear.hi;
+  // The line's minima over the ring, in the plane: its foot f from the center at distance d0
+  // (|a x m| in the plane); the crossings f +- w m (w = sqrt(R^2 - d0^2)) where d0 < R, else the
+  // ring point toward f.
+  const Real cross = k.ax * k.my - k.ay * k.mx;
+  const Real fx = cross * k.my, fy = -cross * k.mx;
+  const Real d0_squared = cross * cross, r_squared = radius * radius;
+  int best = -1;
+  if (d0_squared < r_squared) {
+    // (R^2 - d0^2) rounds by eps R^2 as (R - d0)(R + d0) would by eps R 2R: near a tangency the
+    // crossings' place is that sensitive to the inputs' rounding anyway, and the distance is not.
+    const Real w = std::sqrt(r_squared - d0_squared);
+    const Real wx = w * k.mx, wy = w * k.my;
+    if (plane_angle_holds(fx + wx, fy + wy, ends.angle) && k.take(fx + wx, fy + wy, -1)) best = 0;
+    if (best < 0 || for_closest) {
+      if (plane_angle_holds(fx - wx, fy - wy, ends.angle) && k.take(fx - wx, fy - wy, -1) && best < 0)
+        best = k.count - 1;
+    }
+  } else if (d0_squared > 0) {
+    const Real to_ring = radius / std::sqrt(d0_squared);
+    const Real x = fx * to_ring, y = fy * to_ring;
+    if (plane_angle_holds(x, y, ends.angle) && k.take(x, y, -1)) best = 0;
+  } else {
+    return 0;  // a radius of zero (the caller's case) or NaN
+  }
+  if (best < 0) {
+    // The arc's ends and the ring points toward the piece's finite ends.
+    k.take(radius, 0, 0);
+    k.take(radius * std::cos(ends.angle), radius * std::sin(ends.angle), 1);
+    for (const Real t : {linear.lo, linear.hi}) {
+      if (!std::isfinite(t)) continue;
+      const Vec3<Real> e = piece_end(piece, t) - c;
+      const Real ex = e.x() * ux + e.y() * uy + e.z() * uz, ey = e.x() * vx + e.y() * vy + e.z() * vz;
+      const Real length = length2d(ex, ey);
+      if (length > 0 && plane_angle_holds(ex, ey, ends.angle))
+        k.take(ex * (radius / length), ey * (radius / length), -1);
+    }
+    best = 0;
+    for (int i = 1; i < k.count; ++i)
+      if (k.item[i].value < k.item[best].value) best = i;
+  }
+  // The pair in space, relative to the center.
+  const auto arc_point = [&](const typename PlaneCandidates<Real>::Item& q) {
+    return Vec3<Real>(q.x * ux + q.y * vx, q.x * uy + q.y * vy, q.x * uz + q.y * vz);
+  };
+  const auto piece_point = [&](const typename PlaneCandidates<Real>::Item& q) {
+    if (q.clamped_end >= 0) return Vec3<Real>(piece_end(piece, q.clamped_end == 0 ? linear.lo : linear.hi) - c);
+    return Vec3<Real>(a.x() + q.tau * m.x(), a.y() + q.tau * m.y(), a.z() + q.tau * m.z());
+  };
+  const typename PlaneCandidates<Real>::Item& w = k.item[best];
+  const Real value = w.value;
+  // |h| at the pair's piece point, with the rounding of height and tilt (a few eps |a| and eps).
+  const Real tau_bound = std::abs(w.tau);
+  if (!(std::abs(height) + std::abs(tilt) * tau_bound + 8 * eps * (a_sum + tau_bound) <=
+        64 * eps * std::max(radius, value)))
+    return 0;
+  out.value = value;
+  if constexpr (for_closest) {
+    const Vec3<Real> pa = arc_point(w), pp = piece_point(w);
+    // Another candidate's pair as close at distinct points: not unique. Near either threshold
+    // (within a factor 4) `tied`: the general path takes the pair and `unique`, this distance kept.
+    const Real scale = std::max(radius, a.norm());
+    const Real tie = tie_tolerance(std::max(scale, value));
+    const Real apart_arc = distinct_points_tolerance(radius), apart_piece = distinct_points_tolerance(scale);
+    const auto near = [](Real x, Real threshold) { return x > threshold / 4 && x < 4 * threshold; };
+    bool other_pair = false;
+    for (int i = 0; i < k.count; ++i) {
+      if (i == best) continue;
+      const Vec3<Real> qa = arc_point(k.item[i]), qp = piece_point(k.item[i]);
+      const Real gap = k.item[i].value - value;
+      const Real da = (qa - pa).norm(), dp = (qp - pp).norm();
+      const bool apart = da > apart_arc / 4 || dp > apart_piece / 4;
+      if ((near(gap, tie) && apart) || (gap <= tie && (near(da, apart_arc) || near(dp, apart_piece)))) {
+        out.tied = true;
+        return 1;
+      }
+      if (gap <= tie && (da > apart_arc || dp > apart_piece)) other_pair = true;
+    }
+    out.arc_point = c + pa;
+    if (w.arc_end < 0) {  // the plane's angle, as plane_angle_holds took it (on the arc: t <= angle)
+      const Real t = detail::atan2(w.y, w.x);
+      out.arc_param = std::min(t < 0 ? t + 2 * pi_v<Real>() : t, ends.angle);
+    } else {
+      out.arc_param = w.arc_end == 0 ? Real(0) : ends.angle;
+    }
+    if (w.clamped_end >= 0) {
+      out.piece_point = piece_end(piece, w.clamped_end == 0 ? linear.lo : linear.hi);
+      out.piece_param = w.clamped_end == 0 ? linear.lo : linear.hi;
+    } else {
+      out.piece_point = c + pp;
+      out.piece_param = line_param(Line3<Real>{linear.origin, linear.direction}, c, pp);
+    }
+    out.unique = !other_pair;
+    out.tied = false;
+  }
+  return out.value == out.value;
+}
+
 // False where the fast path does not decide (the general path answers): the line declined by
 // line_ring_minimum or along the axis, the second minimum undecided, a segment too long for its
 // line (piece_line).
@@ -196,8 +378,13 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
   // and as near at that end. The answer is the end's point-arc candidate the rest of this path
   // would have found, by the same call.
   SecondMinimumTest<Real> test;
+  bool tested = false;  // a full line has no end to answer before the root: its test comes after
   const auto before_root = [&](const LineRingMinimum<Real>& line_data) {
+    // A piece in the arc's plane: the plane's candidates, no root (piece_arc_planar).
+    if (piece_arc_planar<for_closest>(piece, arc, ends, linear, line_data, out)) return true;
+    if constexpr (std::is_same<Piece, Line3<Real>>::value) return false;
     test = second_minimum_test(line_data, arc.radius);
+    tested = true;
     if (test.verdict != 0 || line_data.on_axis) return false;
     const Vec3<Real>& direction = pl.line.direction;
     Real tau;
@@ -255,6 +442,8 @@ bool piece_arc_fast(const Piece& piece, const Arc3<Real>& arc, PieceArcPick<Real
     return out.value == out.value;
   }
   LineRingMinimum<Real> second;
+  // The secular data second_minimum_test reads are the same after the root (its test, the same).
+  if (!tested) test = second_minimum_test(m, arc.radius);
   const int other = other_line_minimum<Roots>(m, arc.radius, second, [](Real) { return true; }, test);
   if (other < 0) return false;
   // Closest points keep every candidate (for the tie test); the distance keeps the least value.
@@ -369,6 +558,7 @@ template <class Real, class Piece> struct PieceArcQuery {
       r.param_a = Vec2<Real>(pick.piece_param, 0);
       r.point_b = pick.arc_point;
       r.param_b = Vec2<Real>(pick.arc_param, 0);
+      r.unique = pick.unique;
       return r;
     }
     const Round<Real> round(arc.center, arc.normal, arc.radius);
