@@ -6,7 +6,9 @@ the same input file.
     python -m bench.baseline [--build-dir build/cpp]    # builds it, prints the binary's path
 
 Both programs time a kind by the same loop (bench_queries.cpp's protocol has not changed since the
-release); a kind the release did not know is skipped by its program. The ratio of a kind is the
+release); the release's program reads the same queries under the names it knows (a kind of
+inputs it did not have, such as a line in an arc's plane, under its shapes' kind: line-arc), and
+skips a pair of shapes it did not have. The ratio of a kind is the
 median, over rounds, of the current time over the release's time in the same round: a slow spell
 of a shared machine lasts seconds and slows both sides of a round alike.
 """
@@ -85,23 +87,28 @@ def build(build_dir: Path = ROOT / "build" / "cpp", commit: str = COMMIT) -> Pat
     return binary
 
 
-def _times(binary: Path, inp: Path, outp: Path, seconds: float) -> dict[str, float]:
+def _times(binary: Path, inp: Path, outp: Path, seconds: float) -> list:
+    """Each kind's time in the order of the input file (None where the program skipped it)."""
     proc = subprocess.run(
         [str(binary), str(inp), str(outp), "--min-time", str(seconds)], capture_output=True, text=True, check=True
     )
-    return {p[1]: float(p[3]) for p in (line.split() for line in proc.stdout.splitlines()) if p and p[0] == "T"}
+    lines = [line.split() for line in proc.stdout.splitlines()]
+    return [float(p[3]) if p[0] == "T" else None for p in lines if p and p[0] in ("T", "S")]
 
 
-def alternate(current: Path, release: Path, inp: Path, workdir: Path, rounds: int, seconds: float):
-    """{kind: [current / release time of each round]} for the kinds both programs time."""
-    ratios: dict[str, list[float]] = {}
+def alternate(current: Path, release: Path, inputs: tuple, names: list, workdir: Path, rounds: int, seconds: float):
+    """{name: [current / release time of each round]} for the kinds both programs time. `inputs`:
+    the input files of the two programs, holding the same queries in the same order (the
+    release's under the names it knows); `names`: the kinds in that order."""
+    ratios: dict = {}
     outp = Path(workdir) / "baseline-out.bin"
     for k in range(rounds):
-        now = _times(current, inp, outp, seconds)
-        then = _times(release, inp, outp, seconds)
-        for kind in now.keys() & then.keys():
-            ratios.setdefault(kind, []).append(now[kind] / then[kind])
-        print(f"   round {k + 1}/{rounds}: {len(now)} kinds now, {len(then)} at {RELEASE}", flush=True)
+        now = _times(current, inputs[0], outp, seconds)
+        then = _times(release, inputs[1], outp, seconds)
+        for name, a, b in zip(names, now, then):
+            if a is not None and b is not None:
+                ratios.setdefault(name, []).append(a / b)
+        print(f"   round {k + 1}/{rounds}: {sum(x is not None for x in then)} kinds at {RELEASE}", flush=True)
     return ratios
 
 

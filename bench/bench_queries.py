@@ -302,13 +302,14 @@ def repeat_timing(fn, min_repeats, max_repeats, min_time):
 # --------------------------------------------------------------------------------------------
 # The C++ program: binary input and output.
 # --------------------------------------------------------------------------------------------
-def write_input(path, rows):
+def write_input(path, rows, names=None):
+    """The queries of `rows` under their kinds' names (or under `names`, one per row)."""
     with open(path, "wb") as f:
         f.write(b"CDBQIN01")
         f.write(struct.pack("<Q", len(rows)))
-        for row in rows:
+        for k, row in enumerate(rows):
             values = np.ascontiguousarray(row.flat(), dtype="<f8")
-            name = row.kind.name.encode()
+            name = (names[k] if names else row.kind.name).encode()
             f.write(struct.pack("<Q", len(name)) + name)
             f.write(struct.pack("<QQ", values.shape[0], values.shape[1]))
             f.write(values.tobytes())
@@ -406,14 +407,17 @@ TARGET_RELEASE_RATIO = 1.10  # no kind slower than at the previous release by mo
 def run_release(binary, rows, workdir, rounds):
     """Every kind's C++ loop against the same loop at the previous release (bench/baseline.py),
     the two programs alternating on the input file run_cpp wrote."""
-    inp = Path(workdir) / "queries.bin"
+    inp, old = Path(workdir) / "queries.bin", Path(workdir) / "release-queries.bin"
     if rounds <= 0 or not Path(binary).is_file() or not inp.is_file():
         return
     release = baseline.build()
     if release is None:
         return
+    # The release reads each kind's queries under its shapes' kind (line-arc-coplanar: line-arc).
+    write_input(old, rows, names=[f"{row.kind.a}-{row.kind.b}" for row in rows])
     print(f"== C++ scalar loop against release {baseline.RELEASE}, {rounds} alternating rounds", flush=True)
-    ratios = baseline.alternate(Path(binary), release, inp, Path(workdir), rounds, RELEASE_ROUND_SECONDS)
+    names = [row.kind.name for row in rows]
+    ratios = baseline.alternate(Path(binary), release, (inp, old), names, Path(workdir), rounds, RELEASE_ROUND_SECONDS)
     for row in rows:
         row.release_ratios = ratios.get(row.kind.name, [])
 

@@ -42,19 +42,36 @@ command -v g++ >/dev/null 2>&1 || missing+=(g++)
 "$python" -c "import ensurepip" >/dev/null 2>&1 || missing+=(python3-venv)
 "$python" -c "import os, sysconfig; assert os.path.exists(os.path.join(sysconfig.get_paths()['include'], 'Python.h'))" \
   >/dev/null 2>&1 || missing+=(python3-dev)
-# The browser tests (tests/api/test_view_browser.py: the pages circledist.figure writes, opened
-# in headless Chromium) run in the test task only; the other tasks do without the browser.
-if [ "$task" = test ]; then
-  command -v chromium >/dev/null 2>&1 || missing+=(chromium)
-  command -v chromedriver >/dev/null 2>&1 || missing+=(chromium-driver)
-fi
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo=sudo
 if [ ${#missing[@]} -gt 0 ]; then
   echo "== installing from Debian: ${missing[*]}"
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo=sudo
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
+# The browser tests (tests/api/test_view_browser.py: the pages circledist.figure writes, opened
+# in headless Chromium) run in the test task only; the other tasks do without the browser. Its
+# install is mostly download and unpacking, so it runs in the background while the wheel builds
+# (browser_wait, before pytest). Without the recommended packages (printing, notifications,
+# power management) but with what a headless page needs: Mesa (WebGL in software) and the fonts.
+browser=()
+if [ "$task" = test ]; then
+  command -v chromium >/dev/null 2>&1 || browser+=(chromium)
+  command -v chromedriver >/dev/null 2>&1 || browser+=(chromium-driver)
+fi
+browser_pid=""
+if [ ${#browser[@]} -gt 0 ]; then
+  echo "== installing from Debian, in the background: ${browser[*]} (log: build/browser-install.log)"
+  mkdir -p build
+  ( $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+      "${browser[@]}" libgl1-mesa-dri fonts-liberation ) >build/browser-install.log 2>&1 &
+  browser_pid=$!
+fi
+browser_wait() {
+  [ -n "$browser_pid" ] || return 0
+  wait "$browser_pid" || { echo "!! the browser's install failed:"; cat build/browser-install.log; }
+  browser_pid=""
+}
 
 if [ ! -x .venv/bin/python ]; then
   echo "== creating .venv"
@@ -266,6 +283,7 @@ case "$task" in
     ;;
   test)
     status=0
+    browser_wait
     echo "== pytest"
     timed pytest_on_every_core || status=$?
     echo "== the wheel alone: a fresh venv with the wheel and the test extra, no compiler or Eigen on PATH"
