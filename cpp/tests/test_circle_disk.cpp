@@ -56,6 +56,43 @@ void circle_disk_tests() {
   }
 }
 
+// Neither clear of the cylinder nor decided by its heights, a circle's distance is the
+// circle-rim distance (docs/derivations/circle_disk.md, "The distance alone, and the rim part").
+// Parallel circles crossing the rim, whose t = 0 and t = pi (their frame's +-y) lie off the disk:
+// the closest set is the arc over the disk (distance h, not unique), or, where the disk lies
+// inside the circle's projection, one pair. And tilted circles over the rim, their lowest point
+// just inside or outside it (the heights decide or the rim part does), against the references.
+void rim_part_boundary() {
+  const V3d z(0, 0, 1);
+  for (const V3d& shift : {V3d(0, 0, 0), V3d(1e6, -2e6, 0.5e6)}) {
+    const Disk3<double> d{shift, z, 1};
+    for (const double r : {1.0, 2.0}) {
+      for (const double offset : {0.9, 1.0, 1.5}) {
+        for (const double h : {2.0, 0.3, 1e-6}) {
+          const Circle3<double> a{shift + V3d(offset, 0, h), z, r};
+          const bool crossing = std::abs(offset - r) < 1 && 1 < offset + r;
+          // Crossing: the distance is the height as the inputs hold it (1e6 away, h rounds).
+          const LD height = LD(a.center.z()) - LD(d.center.z());
+          circle_disk_case("rim part, parallel", a, d, crossing ? height : ref::circle_disk(a, d), crossing ? 0 : 1);
+        }
+      }
+    }
+    for (const double r : {0.5, 2.0}) {
+      for (const double tilt : {0.2, 0.7, 1.3}) {
+        for (const double lift : {0.2, 1.0}) {
+          for (const double edge : {-0.5, -1e-3, 0.0, 1e-3, 0.5}) {
+            // The lowest point of the circle, (x + r cos(tilt), 0, lift), at 1 + edge from the axis.
+            const double x = 1 + edge - r * std::cos(tilt);
+            const Circle3<double> a{shift + V3d(x, 0, lift + r * std::sin(tilt)),
+                                    V3d(std::sin(tilt), 0, std::cos(tilt)), r};
+            circle_disk_case("rim part, tilted over the rim", a, d, ref::circle_disk(a, d));
+          }
+        }
+      }
+    }
+  }
+}
+
 // A circle clear of the disk's cylinder is answered as circle-circle against the rim
 // (docs/derivations/circle_disk.md, "A circle clear of the cylinder"). Its boundary: circles
 // whose projection misses the rim by -1e-3..1e-3 of the scale and by a few ulps, touches it, or
@@ -164,6 +201,7 @@ int main() {
   circle_disk_tests();
   clear_of_cylinder_boundary();
   clear_of_cylinder_margin();
+  rim_part_boundary();
   eigen_policies_run_as_selected();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
   shared_round_cases([](const RoundCase& r) { circle_disk_case("random", r.a, r.db, ref::circle_disk(r.a, r.db)); },

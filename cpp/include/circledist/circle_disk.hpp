@@ -101,10 +101,10 @@ template <class Real> struct CircleDiskPair {
                                 verdict.value.data(), heights.count);
   }
 
-  // The distance alone often needs no octic (docs/derivations/circle_disk.md, "The distance alone"): the
-  // points over the disk where z = 0 or z' = 0 come first; where the best of them is as low as
-  // |z| gets anywhere on the circle (the circle crosses the disk, or its lowest point is over
-  // it), no other point can be closer.
+  // The distance alone often needs no octic (docs/derivations/circle_disk.md, "The distance
+  // alone, and the rim part"): the points over the disk where z = 0 or z' = 0 come first; where
+  // the best of them is as low as |z| gets anywhere on the circle (the circle crosses the disk,
+  // or its lowest point is over it), no other point can be closer.
   template <class Roots = DefaultRoots> static Real distance(const Circle3<Real>& a, const Disk3<Real>& disk) {
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     if (clear_of_cylinder(a, round)) return Rim::template distance<Roots>(a, rim(disk));
@@ -113,15 +113,20 @@ template <class Real> struct CircleDiskPair {
     const Heights heights = height_candidates<Roots>(c, scale);
     const HeightVerdict early = height_verdict(CircleOverRound<Real>(c, disk.radius), scale, heights);
     if (early.decided) return early.best;
-    // Otherwise the full solve, as closest() runs it: the ring's octic alone is not enough. For
-    // a circle 1e5 times larger than the disk its roots near the disk are a cluster 1e-5 wide
-    // that rounding blurs, and the minimum was missed (0.084 for 0.0138) where the rim crossings
-    // of the full solve start next to it.
+    // Then the rim part (the same section): circle-circle against the rim, the answer where it
+    // lies below every height candidate; otherwise the full solve, as closest() runs it. (The
+    // octic in A's own angle is not enough for the rim part: for a circle 1e5 times larger than
+    // the disk its roots near the disk are a cluster 1e-5 wide that rounding blurs, and a minimum
+    // was missed, 0.084 for 0.0138; circle-circle parametrizes the smaller circle, the rim.)
+    const Real rim_part = Rim::template distance<Roots>(a, rim(disk));
+    if (rim_part_decides(rim_part, early, scale)) return rim_part;
     return std::min(early.best, solve<Roots>(c, disk.radius, scale, heights, early).best.value);
   }
 
-  // The closest pair of the full solve, reporting the distance distance() returns (the two never
-  // disagree: the best height candidate, unpolished, may lie an ulp above the polished minimum).
+  // The same decisions as distance(): the clear circle's and the rim part's answers are
+  // circle-circle's; otherwise the closest pair of the full solve, reporting the distance
+  // distance() returns (the two never disagree: the best height candidate, unpolished, may lie
+  // an ulp above the polished minimum).
   template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Disk3<Real>& disk) {
     const Round<Real> round(disk.center, disk.normal, disk.radius);
     if (clear_of_cylinder(a, round)) {
@@ -134,6 +139,13 @@ template <class Real> struct CircleDiskPair {
     const Real scale = circle_round_scale(c, disk.radius);
     const Heights heights = height_candidates<Roots>(c, scale);
     const HeightVerdict early = height_verdict(CircleOverRound<Real>(c, disk.radius), scale, heights);
+    if (!early.decided) {
+      Result<Real> r = Rim::template closest<Roots>(a, rim(disk));
+      if (rim_part_decides(r.distance, early, scale)) {
+        r.param_b = Vec2<Real>(disk.radius, r.param_b.x());  // as for a circle clear of the cylinder
+        return r;
+      }
+    }
     const auto minima = solve<Roots>(c, disk.radius, scale, heights, early);
     Result<Real> r = circle_round_result<DiskTarget<Real>>(a, c, round, minima, scale);
     r.distance = early.decided ? early.best : std::min(early.best, minima.best.value);
@@ -151,6 +163,15 @@ template <class Real> struct CircleDiskPair {
     const Vec3<Real> o = round.local(a.center);
     const Real margin = 16 * std::numeric_limits<Real>::epsilon() * (o.norm() + a.radius + round.radius);
     return length2d(o.x(), o.y()) - a.radius - round.radius > margin;
+  }
+
+  // Whether the circle-rim distance is the answer: below every height candidate's disk distance
+  // by more than the tie tolerance. Then no point over the disk comes as close (the least |z| on
+  // an arc over the disk is at a height candidate or at an end on the rim, where the disk's
+  // distance is the rim's), the closest pairs are the rim's and none of them ties with a point
+  // over the disk.
+  static bool rim_part_decides(Real rim_part, const HeightVerdict& early, Real scale) {
+    return rim_part + tie_tolerance(scale) < early.best;
   }
 
  private:
