@@ -89,9 +89,9 @@ template <class Real> struct CircleDiskPair {
   }
 
   // The heights come first among the starts, and the verdict has their values already.
-  template <class Roots>
-  static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius, Real scale,
-                                              const Heights& heights, const HeightVerdict& verdict) {
+  template <class Roots> static Minima<Real, Starts::capacity> solve(const LocalCircle<Real>& c, Real radius,
+                                                                     Real scale, const Heights& heights,
+                                                                     const HeightVerdict& verdict) {
     const CircleOverRound<Real> view(c, radius);
     const auto squared = [&](const Vec3<Real>& p) { return DiskTarget<Real>::distance_squared(p, radius); };
     const Starts starts = candidates<Roots>(view, scale, heights, sampled_distance(c, squared));
