@@ -36,8 +36,37 @@ void disk_disk_tests() {
   }
 }
 
+// Disks whose rims are both clear of the other disk's cylinder, or one of them only
+// (disk_disk.hpp, clear_rims): beside each other by -1e-3..0.5 of the scale and by 1e-12,
+// parallel, tilted, steep and facing, at radius ratios 1e-6, 1 and 1e6, near the origin and 1e6 away,
+// against the references in both orders; `unique` where the geometry decides it (parallel
+// disks beside each other: one rim-to-rim pair).
+void clear_rims_boundary() {
+  const V3d z(0, 0, 1), toward(0.6, 0.8, 0), across(-0.8, 0.6, 0);
+  for (const double ratio : {1e-6, 1.0, 1e6}) {
+    const double rb = 1, ra = ratio * rb, reach = ra + rb;
+    for (const double gap : {-1e-3, -1e-12, 0.0, 1e-12, 1e-3, 0.5}) {
+      // Parallel, tilted about the line of centers, steep, and facing B's axis (rim B then
+      // passes through A's cylinder while rim A stays clear of B's).
+      for (const V3d& normal : {z, V3d(std::sin(0.3) * across + std::cos(0.3) * z),
+                                V3d(std::sin(1.2) * across + std::cos(1.2) * z), toward}) {
+        for (const double lift : {0.0, 0.4}) {
+          for (const V3d& shift : {V3d(0, 0, 0), V3d(1e6, -2e6, 0.5e6)}) {
+            const Disk3<double> b{shift, z, rb};
+            const Disk3<double> a{shift + (reach * (1 + gap)) * toward + lift * z, normal, ra};
+            const bool exact = shift.norm() == 0 || gap >= 1e-3;
+            const int unique = normal == z && gap >= 1e-3 && exact ? 1 : -1;
+            disk_disk_case("clear rims boundary", a, b, ref::disk_disk(a, b), unique);
+          }
+        }
+      }
+    }
+  }
+}
+
 int main() {
   disk_disk_tests();
+  clear_rims_boundary();
   // The random configurations, the tangencies and the other precisions of round_reference.hpp.
   shared_round_cases([](const RoundCase& r) { disk_disk_case("random", r.da, r.db, ref::disk_disk(r.da, r.db)); },
                      [](const RoundCase& r) { disk_disk_case("tangent", r.da, r.db, ref::disk_disk(r.da, r.db)); },

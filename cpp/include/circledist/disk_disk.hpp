@@ -99,10 +99,27 @@ template <class Real> struct DiskDiskPair {
 
   static Circle3<Real> rim(const Disk3<Real>& d) { return {d.center, d.normal, d.radius}; }
 
+  // Which rims are clear of the other disk's cylinder (docs/derivations/disk_disk.md, "A rim
+  // clear of the other cylinder"): a clear rim's query is circle-circle between the rims, and
+  // the other rim's query is at most that (its distance is at most its rim part, the same
+  // circle-circle distance), so only the other one is solved. Both clear: the one
+  // circle-circle query, which runs the same computation in either order
+  // (CircleCirclePair::parametrized_first).
+  struct ClearRims {
+    bool a, b;
+  };
+  static ClearRims clear_rims(const Disk3<Real>& a, const Disk3<Real>& b, const Round<Real>& round_b) {
+    return {CircleDisk::clear_of_cylinder(rim(a), round_b),
+            CircleDisk::clear_of_cylinder(rim(b), Round<Real>(a.center, a.normal, a.radius))};
+  }
+
   template <class Roots = DefaultRoots> static Real distance(const Disk3<Real>& a, const Disk3<Real>& b) {
     const Round<Real> round(b.center, b.normal, b.radius);
     const DiskContact<Real> contact = disk_contact(a, round, b.radius);
     if (contact.intersect && !contact.borderline) return Real(0);
+    const ClearRims clear = clear_rims(a, b, round);
+    if (clear.a) return CircleDisk::template distance<Roots>(rim(b), a);
+    if (clear.b) return CircleDisk::template distance<Roots>(rim(a), b);
     return std::min(CircleDisk::template distance<Roots>(rim(a), b), CircleDisk::template distance<Roots>(rim(b), a));
   }
 
@@ -121,10 +138,20 @@ template <class Real> struct DiskDiskPair {
       return r;
     }
     // The rim's parameter (theta, 0) becomes the disk's (radius, theta): the same frame.
-    Result<Real> ra = CircleDisk::template closest<Roots>(rim(a), b);
-    ra.param_a = Vec2<Real>(a.radius, ra.param_a.x());
-    Result<Real> rb = CircleDisk::template closest<Roots>(rim(b), a).swapped();
-    rb.param_b = Vec2<Real>(b.radius, rb.param_b.x());
+    const auto rim_a = [&] {
+      Result<Real> r = CircleDisk::template closest<Roots>(rim(a), b);
+      r.param_a = Vec2<Real>(a.radius, r.param_a.x());
+      return r;
+    };
+    const auto rim_b = [&] {
+      Result<Real> r = CircleDisk::template closest<Roots>(rim(b), a).swapped();
+      r.param_b = Vec2<Real>(b.radius, r.param_b.x());
+      return r;
+    };
+    const ClearRims clear = clear_rims(a, b, round);
+    if (clear.a) return rim_b();
+    if (clear.b) return rim_a();
+    const Result<Real> ra = rim_a(), rb = rim_b();
     const bool a_wins = ra.distance <= rb.distance;
     Result<Real> best = a_wins ? ra : rb;
     const Result<Real>& other = a_wins ? rb : ra;

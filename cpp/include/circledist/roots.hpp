@@ -25,6 +25,8 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -131,6 +133,32 @@ template <class Real> int trimmed_degree(const Real* c, int degree) {
 }
 
 namespace detail {
+
+// std::ilogb(x), read from the bits for a normal IEEE double (the same value without a library
+// call: root bounds and polynomial scaling take one per coefficient).
+template <class Real> int binade(Real x) {
+  if constexpr (std::numeric_limits<Real>::is_iec559 && sizeof(Real) == sizeof(std::uint64_t) &&
+                std::numeric_limits<Real>::digits == 53) {
+    const Real magnitude = std::abs(x);
+    if (magnitude >= std::numeric_limits<Real>::min() && magnitude <= std::numeric_limits<Real>::max()) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &magnitude, sizeof bits);
+      return int((bits >> 52) & 0x7ff) - 1023;
+    }
+  }
+  return std::ilogb(x);
+}
+
+// x 2^e (std::ldexp) for every x of p, by one multiplication where 2^e is a normal number (the
+// same values: a product with a power of two is rounded once, as ldexp's result is).
+template <class Real> void scale_by_power_of_two(Real* p, int n, int e) {
+  if (e > std::numeric_limits<Real>::min_exponent && e < std::numeric_limits<Real>::max_exponent - 1) {
+    const Real factor = std::ldexp(Real(1), e);
+    for (int i = 0; i < n; ++i) p[i] *= factor;
+  } else {
+    for (int i = 0; i < n; ++i) p[i] = std::ldexp(p[i], e);
+  }
+}
 
 template <class Real>
 Real halley_bisection(const Real* c, int n, Real a, Real b, Real pa, Real x, Real rel_tol, Real abs_tol);
@@ -712,7 +740,7 @@ template <class Real> Real root_bound(const Real* c, int n) {
   for (int i = 0; i < n; ++i) {
     const Real ratio = std::abs(c[i] / c[n]) / (i == 0 ? 2 : 1);
     if (!(ratio > 0)) continue;
-    const int e = std::ilogb(ratio) + 1, k = n - i;  // ratio < 2^e, so ratio^(1/k) < 2^ceil(e/k)
+    const int e = binade(ratio) + 1, k = n - i;  // ratio < 2^e, so ratio^(1/k) < 2^ceil(e/k)
     exponent = std::max(exponent, e >= 0 ? (e + k - 1) / k : -((-e) / k));
   }
   return exponent == std::numeric_limits<int>::min() ? Real(1) : std::ldexp(Real(2), exponent);

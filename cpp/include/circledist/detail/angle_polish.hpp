@@ -46,9 +46,12 @@ template <class Real, int N> struct ScreenedStarts {
   std::array<int, N> order{};
   int count = 0;
 
-  template <class H> ScreenedStarts(const H& h, const Candidates<Real, N>& starts) : count(starts.count) {
+  // `known`: h at the first `known_count` starts, where the caller has it already.
+  template <class H>
+  ScreenedStarts(const H& h, const Candidates<Real, N>& starts, const Real* known = nullptr, int known_count = 0)
+      : count(starts.count) {
     for (int i = 0; i < count; ++i) {
-      value[i] = h(starts.value[i]);
+      value[i] = i < known_count ? known[i] : h(starts.value[i]);
       if (!(value[i] == value[i])) value[i] = std::numeric_limits<Real>::infinity();
       // Insertion sort by start value (N is small).
       int j = i;
@@ -65,11 +68,13 @@ template <class Real, int N> struct ScreenedStarts {
 // relative tolerance (sqrt(eps) |x|) never limits the parameter's absolute accuracy.
 // `reach` bounds the offset itself: half a turn for a periodic angle, where a flat distance (a
 // circle parallel to a disk) would otherwise let Newton's steps run to t = 5e16.
+// `known`, `known_count`: h at the first starts, where the caller has it (ScreenedStarts).
 template <class Roots, class Real, int N, class J, class H>
 Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, N>& starts, Real width, Real lo,
-                               Real hi, Real abs_tol, Real margin, Real reach = std::numeric_limits<Real>::infinity()) {
+                               Real hi, Real abs_tol, Real margin, Real reach = std::numeric_limits<Real>::infinity(),
+                               const Real* known = nullptr, int known_count = 0) {
   Minima<Real, N> out;
-  const ScreenedStarts<Real, N> screened(h, starts);
+  const ScreenedStarts<Real, N> screened(h, starts, known, known_count);
   for (int k = 0; k < screened.count; ++k) {
     const int i = screened.order[k];
     if (has_accurate_roots<Roots>::value && out.count > 0 && !(screened.value[i] <= out.best.value + margin)) break;
@@ -108,9 +113,11 @@ Minima<Real, N> polish_offsets(const J& jet, const H& h, const Candidates<Real, 
 
 // Angles: periodic, polished with the note's width of 1e-3 rad, then wrapped to (-pi, pi].
 template <class Roots, class Real, int N, class J, class H>
-Minima<Real, N> polish_angles(const J& jet, const H& h, const Candidates<Real, N>& starts, Real abs_tol, Real margin) {
+Minima<Real, N> polish_angles(const J& jet, const H& h, const Candidates<Real, N>& starts, Real abs_tol, Real margin,
+                              const Real* known = nullptr, int known_count = 0) {
   const Real inf = std::numeric_limits<Real>::infinity();
-  Minima<Real, N> out = polish_offsets<Roots>(jet, h, starts, Real(1e-3), -inf, inf, abs_tol, margin, pi_v<Real>());
+  Minima<Real, N> out =
+      polish_offsets<Roots>(jet, h, starts, Real(1e-3), -inf, inf, abs_tol, margin, pi_v<Real>(), known, known_count);
   for (int i = 0; i < out.count; ++i) out.item[i].x = wrap_angle(out.item[i].x);
   out.best.x = wrap_angle(out.best.x);
   return out;

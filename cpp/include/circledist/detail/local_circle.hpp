@@ -192,8 +192,7 @@ template <class Real, std::size_t N> std::array<Real, N> normalized(const std::a
   Real largest = 0;
   for (const Real& x : p) largest = std::max(largest, std::abs(x));
   if (!(largest > 0) || !std::isfinite(largest)) return p;
-  const int e = std::ilogb(largest);
-  for (Real& x : p) x = std::ldexp(x, -e);
+  scale_by_power_of_two(p.data(), int(N), -binade(largest));
   return p;
 }
 
