@@ -1,6 +1,8 @@
 // circledist.Motion (a batch of rigid motions, motion.hpp's Motion3) and Shape.moved: the motion's
 // fields are read and validated as shape fields are (shapes.hpp's make_field), and a moved shape
-// is the same kind rebuilt from its moved fields by its own constructor.
+// is the same kind rebuilt from its moved fields by its own constructor. first_contact and its
+// answer, Contact: the pair tables' first_contact kernels (kernels/pairs.hpp) over the broadcast
+// of both shapes, both motions and the contact distance.
 #include "module.hpp"
 #include "motion_doc.hpp"
 
@@ -10,6 +12,8 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -29,6 +33,17 @@ struct Motions {
     for (const Field& f : fields)
       if (f.has_wide()) return true;
     return false;
+  }
+  // Every field float32, or zero (exact in every precision, as the defaults): a float32 query
+  // stays float32 with Motion(translation=float32 values).
+  bool single() const {
+    for (const Field& f : fields) {
+      if (f.single) continue;
+      const double* p = f.data();
+      for (Index i = 0, n = f.array.size(); i < n; ++i)
+        if (p[i] != 0) return false;
+    }
+    return true;
   }
 };
 
@@ -234,6 +249,149 @@ ShapeObject moved_shape(py::handle self, py::handle motion, py::handle t) {
   return py::reinterpret_borrow<ShapeObject>(py::type::of(self)(**arrays));
 }
 
+// first_contact's answer: the time, and closest_points' answers at that time.
+struct Contacts {
+  py::object time, distance, point_a, point_b, param_a, param_b, unique;
+};
+
+// None: at rest (one motion of zero fields, made once and never freed, as default_sweep).
+const Motions& motion_argument(const char* name, py::handle value) {
+  if (value.is_none()) {
+    static const Motions* const rest = [] {
+      const py::tuple zero = py::make_tuple(0.0, 0.0, 0.0);
+      return new Motions(make_motions(zero, zero, zero, true));
+    }();
+    return *rest;
+  }
+  if (!py::isinstance<Motions>(value))
+    throw py::type_error(std::string("first_contact: ") + name + " must be a circledist.Motion or None, got " +
+                         Py_TYPE(value.ptr())->tp_name);
+  return motions_of(value);
+}
+
+template <class Real> Operand<Real> motion_operand(const Motions& m) {
+  Operand<Real> out{kPoint, 0, &m.batch};
+  for (const Field& f : m.fields) out.fields[size_t(out.count++)] = {f.name, f.template data_as<Real>(), 3, &f.batch};
+  return out;
+}
+
+Motions motions_rounded_to_float(const char* owner, const Motions& m) {
+  Motions out = m;
+  for (Field& f : out.fields) f = rounded_to_float(owner, f);
+  return out;
+}
+
+// The kernel over the broadcast batch `shape` (checked by the caller), in the caller's order of
+// the arguments: the table's entry may be the (b, a) kernel, run with the operands, the motions
+// and the answers' points and parameters exchanged.
+template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const Motions& motion_a,
+                                           const Motions& motion_b, const Field& within, int workers,
+                                           py::handle progress) {
+  const Call<Real> call{pairs().of<Real>(pairs().default_solver), a, b, nullptr, workers, progress};
+  const KernelFn<Real> fn = call.entry(&PairTable<Real>::first_contact);
+  const bool reversed = call.reversed();
+  const Operand<Real> first = operand<Real>(reversed ? b : a), second = operand<Real>(reversed ? a : b);
+  const Operand<Real> first_motion = motion_operand<Real>(reversed ? motion_b : motion_a);
+  const Operand<Real> second_motion = motion_operand<Real>(reversed ? motion_a : motion_b);
+  Operand<Real> limit{kPoint, 0, &within.batch};
+  limit.fields[0] = {within.name, within.template data_as<Real>(), 1, &within.batch};
+  limit.count = 1;
+  Request<Real> r(first, second, first_motion, second_motion, limit, reversed);
+  const BatchShape& shape = r.elements.shape;
+  auto time = new_array<Real>(shape, 0), distance = new_array<Real>(shape, 0);
+  auto point_a = new_array<Real>(shape, 3), point_b = new_array<Real>(shape, 3);
+  auto param_a = new_array<Real>(shape, 2), param_b = new_array<Real>(shape, 2);
+  auto unique = new_array<bool>(shape, 0);
+  r.time = time.mutable_data();
+  r.distance = distance.mutable_data();
+  r.flag = unique.mutable_data();
+  r.point_a = point_a.mutable_data();
+  r.point_b = point_b.mutable_data();
+  r.param_a = param_a.mutable_data();
+  r.param_b = param_b.mutable_data();
+  if (reversed) {
+    std::swap(r.point_a, r.point_b);
+    std::swap(r.param_a, r.param_b);
+  }
+  call.run(fn, r);
+  if (shape.empty())
+    return {scalar<Real>(r.time[0]), scalar<Real>(r.distance[0]), std::move(point_a),  std::move(point_b),
+            std::move(param_a),      std::move(param_b),          py::bool_(r.flag[0])};
+  return {std::move(time),    std::move(distance), std::move(point_a), std::move(point_b),
+          std::move(param_a), std::move(param_b),  std::move(unique)};
+}
+
+// A float64 answer rounded to float32: inf and NaN (no contact) stay; a finite value beyond
+// float32's range is an OverflowError naming the output and its index.
+py::object contact_float32(const py::object& value, const char* output, Index width) {
+  const py::object out = to_float32(value, "first_contact", output, width, false);
+  const auto check = [&](double x, Index flat, const BatchShape& batch) {
+    if (std::isfinite(x) && !std::isfinite(float(x)))
+      throw std::overflow_error(std::string("first_contact: ") + output + index_text(flat, batch) +
+                                " is beyond float32's range (precision='float32'); ask for precision='float64'");
+  };
+  if (py::isinstance<py::float_>(value)) {
+    check(value.cast<double>(), 0, {});
+    return out;
+  }
+  const auto from = py::array_t<double, py::array::c_style>::ensure(value);
+  const BatchShape all(from.shape(), from.shape() + from.ndim());
+  const BatchShape batch(all.begin(), all.end() - (width > 1 ? 1 : 0));
+  for (Index i = 0, n = from.size(); i < n; ++i) check(from.data()[i], i / width, batch);
+  return out;
+}
+
+// first_contact(a, b, motion_a, motion_b, within=, precision=, workers=, progress=).
+Contacts first_contact_of(py::handle a_given, py::handle b_given, py::handle motion_a_given, py::handle motion_b_given,
+                          py::handle within_given, const py::object& precision, py::handle workers,
+                          const py::object& progress) {
+  const Argument x(a_given), y(b_given);
+  const Shape &a = *x.shape, &b = *y.shape;
+  const Motions& motion_a = motion_argument("motion_a", motion_a_given);
+  const Motions& motion_b = motion_argument("motion_b", motion_b_given);
+  const Field within = make_field("first_contact", "within", within_given, 1, Check::NonNegative);
+  Choice c(precision, py::none(), a, b, workers, progress);
+  // precision=None: NumPy's promotion over the shapes and the motions given (at rest decides nothing).
+  if (precision.is_none()) {
+    const bool given_a = !motion_a_given.is_none(), given_b = !motion_b_given.is_none();
+    if ((given_a && motion_a.wide()) || (given_b && motion_b.wide()))
+      c.precision = kLongDouble;
+    else if (c.precision == kFloat && ((given_a && !motion_a.single()) || (given_b && !motion_b.single())))
+      c.precision = kDouble;
+  }
+  // The batch shapes, named in the caller's words (the kernel's Broadcast would name fields).
+  bool ok = true;
+  BatchShape batch = broadcast_shapes(a.batch, b.batch, ok);
+  if (!ok)
+    throw py::value_error("first_contact: batch shapes " + shape_text(a.batch) + " of the " + kind_name(a.kind) +
+                          " and " + shape_text(b.batch) + " of the " + kind_name(b.kind) + " do not broadcast");
+  const std::pair<const char*, const BatchShape*> others[] = {
+      {"motion_a", &motion_a.batch}, {"motion_b", &motion_b.batch}, {"within", &within.batch}};
+  for (const auto& [name, other] : others) {
+    const BatchShape joined = broadcast_shapes(batch, *other, ok);
+    if (!ok)
+      throw py::value_error(std::string("first_contact: ") + name + " of batch shape " + shape_text(*other) +
+                            " does not broadcast with batch shape " + shape_text(batch) +
+                            " of the arguments before it");
+    batch = joined;
+  }
+  if (c.precision == kLongDouble)
+    return run_contact<long double>(a, b, motion_a, motion_b, within, c.workers, c.progress);
+  if (!c.single()) return run_contact<double>(a, b, motion_a, motion_b, within, c.workers, c.progress);
+  const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
+  const Motions fma = motions_rounded_to_float("motion_a", motion_a),
+                fmb = motions_rounded_to_float("motion_b", motion_b);
+  const Field fw = rounded_to_float("first_contact", within);
+  const Contacts r = run_contact<double>(fa, fb, fma, fmb, fw, c.workers, c.progress);
+  return {contact_float32(r.time, "time", 1),
+          contact_float32(r.distance, "distance", 1),
+          contact_float32(r.point_a, "point_a", 3),
+          contact_float32(r.point_b, "point_b", 3),
+          contact_float32(r.param_a, "param_a", 2),
+          contact_float32(r.param_b, "param_b", 2),
+          r.unique};
+}
+
 }  // namespace
 
 void bind_motion(py::module_& m) {
@@ -278,6 +436,44 @@ void bind_motion(py::module_& m) {
   shape.attr("moved") =
       py::cpp_function([](py::handle self, MotionObject motion, ArrayLike t) { return moved_shape(self, motion, t); },
                        py::name("moved"), py::is_method(shape), py::arg("motion"), py::arg("t"), doc::kMoved);
+
+  py::class_<Contacts>(m, "Contact", doc::kContact)
+      .def_property_readonly(
+          "time", [](const Contacts& r) { return Distances(r.time); },
+          "The earliest time in [0, 1] within reach; inf where the shapes never come within it.")
+      .def_property_readonly(
+          "distance", [](const Contacts& r) { return Distances(r.distance); },
+          "The distance at that time (at most `within`, within rounding); NaN where there is no contact.")
+      .def_property_readonly(
+          "point_a", [](const Contacts& r) { return Array(r.point_a); },
+          "A closest point on the first shape at that time, shape (..., 3); NaN where there is no contact.")
+      .def_property_readonly(
+          "point_b", [](const Contacts& r) { return Array(r.point_b); },
+          "A closest point on the second shape at that time, shape (..., 3); NaN where there is no contact.")
+      .def_property_readonly(
+          "param_a", [](const Contacts& r) { return Array(r.param_a); },
+          "point_a's parameters on the moved first shape, shape (..., 2), as closest_points' param_a.")
+      .def_property_readonly(
+          "param_b", [](const Contacts& r) { return Array(r.param_b); },
+          "point_b's parameters on the moved second shape, shape (..., 2).")
+      .def_property_readonly(
+          "unique", [](const Contacts& r) { return Flags(r.unique); },
+          "closest_points' unique at that time (True where there is no contact).")
+      .def("__repr__", [](const Contacts& r) {
+        return "Contact(time=" + py::repr(r.time).cast<std::string>() +
+               ", distance=" + py::repr(r.distance).cast<std::string>() +
+               ", point_a=" + py::repr(r.point_a).cast<std::string>() +
+               ", point_b=" + py::repr(r.point_b).cast<std::string>() + ")";
+      });
+  m.def(
+      "first_contact",
+      [](ShapeLike a, ShapeLike b, OptionalMotion motion_a, OptionalMotion motion_b, ArrayLike within,
+         PrecisionName precision, Count workers, ProgressLike progress) {
+        return first_contact_of(a, b, motion_a, motion_b, within, precision, workers, progress);
+      },
+      py::arg("a"), py::arg("b"), py::arg("motion_a") = py::none(), py::arg("motion_b") = py::none(), py::kw_only(),
+      py::arg("within") = 0.0, py::arg("precision") = py::none(), py::arg("workers") = 1,
+      py::arg("progress") = py::none(), doc::kFirstContact());
 }
 
 }  // namespace circledist::python
