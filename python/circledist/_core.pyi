@@ -1378,7 +1378,7 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
     >>> cd.distance_if_within(line, ring, [0.4, 0.6])
     array([inf, 0.5])
     """
-def first_contact(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, motion_a: Motion | None = None, motion_b: Motion | None = None, *, within: numpy.typing.ArrayLike = 0.0, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> Contact:
+def first_contact(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, motion_a: Motion | None = None, motion_b: Motion | None = None, *, within: numpy.typing.ArrayLike = 0.0, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> Contact:
     """
     The earliest time at which two moving shapes come within a distance of each other.
     
@@ -1391,9 +1391,10 @@ def first_contact(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arr
     the query): the distance at ``time`` is at most ``within + delta``, and no earlier time has a
     distance below ``within - delta``. A tangential approach takes of the order of
     ``sqrt(S / delta)`` distance evaluations; each counts in `stats` (``distances``, and
-    ``closest_points`` for the contact). Both argument orders agree to the bit (with the motions
-    exchanged). Solved with the default root policy (``solver='bracketing'``): the other policies
-    are not offered here.
+    ``closest_points`` for the contact), and each is `distance`'s own, with the chosen solver. Both
+    argument orders agree to the bit (with the motions exchanged). ``precision=None`` follows the
+    motions given as well as the shapes (a motion's fields of zeros, as its defaults, decide
+    nothing).
     
     Parameters
     ----------
@@ -1408,9 +1409,23 @@ def first_contact(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arr
         Keyword only. Finite contact distances >= 0, a scalar or an array broadcasting with the
         batch; default 0 (touching).
     precision : {None, 'float32', 'float64', 'longdouble'}, optional
-        Keyword only. As `distance`'s; None follows the shapes and the motions given.
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
     workers : int, optional
-        Keyword only. As `distance`'s: threads that answer a batch, the GIL released.
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
     progress : bool or callable, optional
         Keyword only. None or False (the default): no report. True: a progress bar on stderr
         (tqdm's when it is installed), shown once the work has taken a second. A callable is called
@@ -1429,7 +1444,8 @@ def first_contact(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arr
     ValueError
         When a line or ray is given a rotating motion (the message names the motion and the
         batch index), ``within`` is negative or not finite, the batch shapes do not broadcast, an
-        input is beyond float32's range (float32), or the worker count is neither positive nor -1.
+        input is beyond float32's range (float32), the precision or solver is unknown, or the worker
+        count is neither positive nor -1.
     TypeError
         When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
         callable.

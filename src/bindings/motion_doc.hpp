@@ -186,9 +186,10 @@ The answer meets the bar ``delta = 1e-12 S`` (``S`` the largest coordinate, radi
 the query): the distance at ``time`` is at most ``within + delta``, and no earlier time has a
 distance below ``within - delta``. A tangential approach takes of the order of
 ``sqrt(S / delta)`` distance evaluations; each counts in `stats` (``distances``, and
-``closest_points`` for the contact). Both argument orders agree to the bit (with the motions
-exchanged). Solved with the default root policy (``solver='bracketing'``): the other policies
-are not offered here.
+``closest_points`` for the contact), and each is `distance`'s own, with the chosen solver. Both
+argument orders agree to the bit (with the motions exchanged). ``precision=None`` follows the
+motions given as well as the shapes (a motion's fields of zeros, as its defaults, decide
+nothing).
 
 Parameters
 ----------
@@ -199,11 +200,8 @@ Parameters
 within : array_like, optional
     Keyword only. Finite contact distances >= 0, a scalar or an array broadcasting with the
     batch; default 0 (touching).
-precision : {None, 'float32', 'float64', 'longdouble'}, optional
-    Keyword only. As `distance`'s; None follows the shapes and the motions given.
-workers : int, optional
-    Keyword only. As `distance`'s: threads that answer a batch, the GIL released.
-)" + kProgressParameter + R"(
+)" + kChoiceParameters + kProgressParameter +
+                                  R"(
 Returns
 -------
 Contact
@@ -215,7 +213,8 @@ Raises
 ValueError
     When a line or ray is given a rotating motion (the message names the motion and the
     batch index), ``within`` is negative or not finite, the batch shapes do not broadcast, an
-    input is beyond float32's range (float32), or the worker count is neither positive nor -1.
+    input is beyond float32's range (float32), the precision or solver is unknown, or the worker
+    count is neither positive nor -1.
 TypeError
     When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
     callable.

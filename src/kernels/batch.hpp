@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -157,8 +156,6 @@ template <class Real, class Fn> void visit_kind(int kind, Fn&& fn) {
 // precision (double, or long double), its width (values per element) and its batch shape. The
 // module makes it from a Shape (bindings/shapes.hpp) with the GIL held; it borrows the Shape's storage.
 constexpr int kMaxShapeFields = 6;  // an arc's center, normal, radius, start, angle, and the sweep
-// An operand that is not a shape has as many: first_contact's motions (translation, rotation and
-// center each) and its contact distance are three operands of 3, 3 and 1 fields.
 template <class T> struct FieldRef {
   const char* name;
   const T* data;
@@ -173,8 +170,7 @@ template <class T> struct Operand {
   std::array<FieldRef<T>, kMaxShapeFields> fields{};
 };
 
-// Two shapes, and within()'s limit or first_contact's two motions and contact distance.
-constexpr int kMaxFields = 2 * kMaxShapeFields + 7;
+constexpr int kMaxFields = 2 * kMaxShapeFields + 1;  // two shapes, and within()'s limit
 
 // Offsets (in values of the storage type T: double, or long double for long-double queries) of
 // every field of both shapes for each element of the broadcast batch. Fields that are full-size
@@ -187,25 +183,13 @@ template <class T> class Broadcast {
 
   // `limit` (optional): a third batch, the distances of within(), broadcast with both shapes.
   // `reversed`: the caller gave b first (the pair tables' order, pairs.hpp), which the message keeps.
-  Broadcast(const Operand<T>& a, const Operand<T>& b, const Operand<T>* limit = nullptr, bool reversed = false)
-      : Broadcast(a, b, {limit}, reversed) {}
-
-  // Any number of further batches after the shapes (nullptr for none), each broadcast with both
-  // shapes, their fields after the shapes' in the given order (first_contact's motions and
-  // contact distance, whose broadcasting the module checks first and names in its messages).
-  Broadcast(const Operand<T>& a, const Operand<T>& b, std::initializer_list<const Operand<T>*> more, bool reversed) {
-    bool single = a.batch->empty() && b.batch->empty();
-    for (const Operand<T>* s : more) single = single && (!s || s->batch->empty());
-    if (single) {  // a single query
-      const auto take = [&](const Operand<T>* s) {
+  Broadcast(const Operand<T>& a, const Operand<T>& b, const Operand<T>* limit = nullptr, bool reversed = false) {
+    if (a.batch->empty() && b.batch->empty() && (!limit || limit->batch->empty())) {  // a single query
+      for (const Operand<T>* s : {&a, &b, limit})
         for (int k = 0; s && k < s->count; ++k, ++count_) {
           base_[count_] = s->fields[size_t(k)].data;  // step 0: the one element
           width_[count_] = s->fields[size_t(k)].width;
         }
-      };
-      take(&a);
-      take(&b);
-      for (const Operand<T>* s : more) take(s);
       return;
     }
     bool ok = true;
@@ -217,8 +201,7 @@ template <class T> class Broadcast {
                                   kind_name(first.kind) + " and " + shape_text(*second.batch) + " of the " +
                                   kind_name(second.kind) + " do not broadcast");
     }
-    for (const Operand<T>* limit : more) {
-      if (!limit) continue;
+    if (limit) {
       const BatchShape joined = broadcast_shapes(shape, *limit->batch, ok);
       if (!ok)
         throw std::invalid_argument(std::string(limit->fields[0].name) + " of batch shape " +
@@ -229,8 +212,7 @@ template <class T> class Broadcast {
     for (Index d : shape) size *= d;
     add(a);
     add(b);
-    for (const Operand<T>* s : more)
-      if (s) add(*s);
+    if (limit) add(*limit);
   }
 
   // Calls fn(flat_index, field_pointers) for every element of [begin, end) (a chunk of the batch:

@@ -10,8 +10,6 @@
 #include <circledist/effects.hpp>
 
 #include <array>
-#include <stdexcept>
-#include <string>
 #include <type_traits>
 
 namespace circledist::python {
@@ -33,34 +31,12 @@ template <class Real> struct Request {
   Broadcast<Real> elements;
   int a_points, b_points;    // control points per Bezier curve
   bool swept;                // a shape has a sweep field that is not the constant 0
-  bool reversed = false;     // the caller gave the kernel's b first (first_contact's messages)
-  Real* distance = nullptr;  // distance(), distance_if_within(), closest_points(), first_contact()
-  bool* flag = nullptr;      // within(): the answer; closest_points(), first_contact(): `unique`
+  Real* distance = nullptr;  // distance(), distance_if_within(), closest_points()
+  bool* flag = nullptr;      // within(): the answer; closest_points(): `unique`
   Real *point_a = nullptr, *point_b = nullptr, *param_a = nullptr, *param_b = nullptr;
-  Real* time = nullptr;  // first_contact()
 
   Request(const Operand<Real>& a, const Operand<Real>& b, const Operand<Real>* limit, bool reversed, bool any_sweep)
       : elements(a, b, limit, reversed), a_points(a.points), b_points(b.points), swept(any_sweep) {}
-  // first_contact(): the shapes, then both motions (in the kernel's order) and the contact distance.
-  Request(const Operand<Real>& a, const Operand<Real>& b, const Operand<Real>& motion_a, const Operand<Real>& motion_b,
-          const Operand<Real>& within, bool reversed_order)
-      : elements(a, b, {&motion_a, &motion_b, &within}, reversed_order),
-        a_points(a.points),
-        b_points(b.points),
-        swept(true),
-        reversed(reversed_order) {}
-
-  void store(Index i, const Contact<Real>& c) const {
-    time[i] = c.time;
-    Result<Real> r;
-    r.distance = c.distance;
-    r.point_a = c.point_a;
-    r.point_b = c.point_b;
-    r.param_a = c.param_a;
-    r.param_b = c.param_b;
-    r.unique = c.unique;
-    store(i, r);
-  }
 
   void store(Index i, const Result<Real>& r) const {
     distance[i] = r.distance;
@@ -133,47 +109,6 @@ template <class Roots, class A, class B, class Real> struct PairKernels {
     r.elements.template for_each<kFields + 1>(
         [&](Index i, Fields f) CIRCLEDIST_PER_ELEMENT {
           out[i] = circledist::distance_if_within<Roots>(first(r, f), second(r, f), *f[kLimitAt]);
-        },
-        begin, end);
-  }
-
-  // first_contact (motion.hpp) with the default root policy; fields after the shapes': each
-  // motion's translation, rotation and center (the kernel's a first), then the contact distance.
-  // Every pair runs it swept (a sweep of 0 gives the unswept answers bit for bit, sweep.hpp): one
-  // instantiation per pair, of the distance and closest_points the swept kernels above instantiate.
-  // A rotating line or ray (no speed bound): std::invalid_argument naming the caller's argument
-  // and the element.
-  static void first_contact(const Request<Real>& r, Index begin, Index end) {
-    constexpr int kMotionAt = kFields, kWithinAt = kFields + 6;
-    r.elements.template for_each<kFields + 7>(
-        [&](Index i, Fields f) {
-          const Swept<A> a = first(r, f);
-          const Swept<B> b = second(r, f);
-          Motion3<Real> motion[2];
-          for (int k = 0; k < 2; ++k) {
-            motion[k].translation = vec<Real>(f[kMotionAt + 3 * k]);
-            motion[k].rotation = vec<Real>(f[kMotionAt + 3 * k + 1]);
-            motion[k].center = vec<Real>(f[kMotionAt + 3 * k + 2]);
-          }
-          try {
-            r.store(i, circledist::first_contact<Roots>(a, b, motion[0], motion[1], *f[kWithinAt]));
-          } catch (const std::invalid_argument& e) {
-            bool first_rotates = false;
-            try {
-              detail::rotation_speed(a, motion[0]);
-            } catch (const std::invalid_argument&) {
-              first_rotates = true;
-            }
-            const bool motion_a = first_rotates != r.reversed;
-            const int kind = first_rotates ? ShapeTraits<A>::kind : ShapeTraits<B>::kind;
-            std::string why = e.what();
-            const std::string prefix = "circledist::first_contact: ";
-            if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
-            throw std::invalid_argument(std::string("first_contact: ") + (motion_a ? "motion_a" : "motion_b") +
-                                        index_text(i, r.elements.shape) + " rotates the " +
-                                        (motion_a ? "first" : "second") + " argument, a " + kind_name(kind) + ": " +
-                                        why);
-          }
         },
         begin, end);
   }
@@ -262,9 +197,6 @@ template <class Real> struct PairTable {
   KernelFn<Real> closest[kKindCount][kKindCount] = {};
   KernelFn<Real> within[kKindCount][kKindCount] = {};
   KernelFn<Real> distance_if_within[kKindCount][kKindCount] = {};
-  // The default root policy's (and the closed forms') only: a kernel per policy would add an
-  // instantiation of every pair per policy, for a query whose cost is its many distances.
-  KernelFn<Real> first_contact[kKindCount][kKindCount] = {};
   bool reversed[kKindCount][kKindCount] = {};
 };
 
@@ -301,10 +233,6 @@ struct PairTables {
   }
 };
 
-// The root "policy" of the closed-form pairs: it has no members, so a closed-form query that
-// reached for a root solver would not compile here.
-struct NoRoots {};
-
 // Enters a pair's kernels with one policy, for both argument orders (one instantiation).
 template <class Roots, class Real> struct PairRegistrar {
   PairTable<Real>& table;
@@ -317,8 +245,6 @@ template <class Roots, class Real> struct PairRegistrar {
       table.closest[first][second] = &Kernels::closest;
       table.within[first][second] = &Kernels::within;
       table.distance_if_within[first][second] = &Kernels::distance_if_within;
-      if constexpr (std::is_same_v<Roots, NoRoots> || std::is_same_v<Roots, Counted<DefaultRoots>>)
-        table.first_contact[first][second] = &Kernels::first_contact;
       table.reversed[first][second] = reversed && ka != kb;
     }
   }
@@ -379,6 +305,10 @@ template <class Real, class Visitor> void for_each_closed_form_pair(Visitor&& v)
   v.template add<Ray3<Real>, Segment3<Real>>();
   v.template add<Segment3<Real>, Segment3<Real>>();
 }
+
+// The root "policy" of the closed-form pairs: it has no members, so a closed-form query that
+// reached for a root solver would not compile here.
+struct NoRoots {};
 
 // The pairs of one precision and root policy: one translation unit each (pair_unit.cpp, built
 // once per entry of CIRCLEDIST_PAIR_UNITS by CMakeLists.txt), so that both cores stay busy.

@@ -313,3 +313,17 @@ def test_workers_progress_and_stats():
     for name in ANSWERS:
         same_bits(getattr(one, name), getattr(two, name))
     assert calls[-1] == (600, 600)
+
+
+@pytest.mark.parametrize("solver", ["bracketing", "companion", "polished", "eigen"])
+def test_every_solver(solver):
+    """A tilted line falling through a ring (a pair that solves polynomials): every root policy
+    meets the sampled reference, with its solves counted."""
+    line, fall = cd.Line([0, 0.5, 2], [1, 0.2, 0.3]), cd.Motion(translation=[0.3, 0, -4])
+    reference, delta = _check_against_sampling(line, RING, fall, cd.Motion(), 0.0)
+    cd.reset_stats()
+    c = cd.first_contact(line, RING, fall, solver=solver)
+    assert cd.stats()["solves"] > 0
+    assert abs(c.time - reference.time) <= 1e-11 and c.distance <= delta
+    with pytest.raises(ValueError, match="solver must be None"):
+        cd.first_contact(line, RING, solver="newton")
