@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Annulus', 'Arc', 'Bezier', 'Circle', 'ClosestPoints', 'Disk', 'Line', 'Motion', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
+__all__: list[str] = ['Annulus', 'Arc', 'Bezier', 'Circle', 'ClosestPoints', 'Contact', 'Disk', 'Line', 'Motion', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'first_contact', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
 class Shape:
     """
     Base class of every shape: a single shape or a batch of them.
@@ -1072,6 +1072,76 @@ class Motion:
         """
         The displacement over [0, 1], shape (..., 3): a read-only array, as stored.
         """
+class Contact:
+    """
+    The answer of `first_contact`: when the shapes first come within reach, and where.
+    
+    For single shapes ``time`` and ``distance`` are floats (``numpy.longdouble`` in long double)
+    and ``unique`` a bool; for batches each attribute is an array of the broadcast batch shape
+    (with a trailing axis of 3 for points and of 2 for parameters).
+    
+    Attributes
+    ----------
+    time : float or numpy.ndarray
+        The earliest time in [0, 1] at which the moving shapes are within ``within`` of each
+        other; ``inf`` where they never are.
+    distance : float or numpy.ndarray
+        The distance at that time (at most ``within``, to the bar given in `first_contact`); NaN
+        where there is no contact.
+    point_a, point_b : numpy.ndarray, shape (..., 3)
+        A closest pair of the moved shapes at that time, as `closest_points` gives it; NaN where
+        there is no contact.
+    param_a, param_b : numpy.ndarray, shape (..., 2)
+        Their parameters on the moved shapes (as `closest_points`' ``param_a``, ``param_b``); NaN
+        where there is no contact.
+    unique : bool or numpy.ndarray
+        `closest_points`' ``unique`` at that time; True where there is no contact.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> c = cd.first_contact(cd.Point([3, 0, 0]), ring, cd.Motion(translation=[-4, 0, 0]))
+    >>> round(c.time, 12), c.point_b.round(12) + 0.0
+    (0.5, array([1., 0., 0.]))
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def distance(self) -> float | numpy.longdouble | numpy.ndarray:
+        """
+        The distance at that time (at most `within`, within rounding); NaN where there is no contact.
+        """
+    @property
+    def param_a(self) -> numpy.ndarray:
+        """
+        point_a's parameters on the moved first shape, shape (..., 2), as closest_points' param_a.
+        """
+    @property
+    def param_b(self) -> numpy.ndarray:
+        """
+        point_b's parameters on the moved second shape, shape (..., 2).
+        """
+    @property
+    def point_a(self) -> numpy.ndarray:
+        """
+        A closest point on the first shape at that time, shape (..., 3); NaN where there is no contact.
+        """
+    @property
+    def point_b(self) -> numpy.ndarray:
+        """
+        A closest point on the second shape at that time, shape (..., 3); NaN where there is no contact.
+        """
+    @property
+    def time(self) -> float | numpy.longdouble | numpy.ndarray:
+        """
+        The earliest time in [0, 1] within reach; inf where the shapes never come within it.
+        """
+    @property
+    def unique(self) -> bool | numpy.ndarray:
+        """
+        closest_points' unique at that time (True where there is no contact).
+        """
 def _count_culled(n: typing.SupportsInt | typing.SupportsIndex) -> None:
     """
     Adds n to stats()['culled'] (used by circledist.Scene).
@@ -1307,6 +1377,100 @@ def distance_if_within(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typin
     >>> line = cd.Line([-3, 1, 0.5], [1, 0, 0])
     >>> cd.distance_if_within(line, ring, [0.4, 0.6])
     array([inf, 0.5])
+    """
+def first_contact(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, motion_a: Motion | None = None, motion_b: Motion | None = None, *, within: numpy.typing.ArrayLike = 0.0, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> Contact:
+    """
+    The earliest time at which two moving shapes come within a distance of each other.
+    
+    With ``a(t) = a.moved(motion_a, t)`` and ``b(t)`` likewise, the earliest ``t`` in [0, 1] with
+    ``distance(a(t), b(t)) <= within``, found by conservative advancement on the exact distance:
+    from a time ``t`` where the gap ``g = distance - within`` is positive, no time before
+    ``t + g / L`` can close it, ``L`` a bound on how fast the distance can fall (the relative
+    translation speed plus each rotation's angular speed times the shape's reach from its center).
+    The answer meets the bar ``delta = 1e-12 S`` (``S`` the largest coordinate, radius or travel of
+    the query): the distance at ``time`` is at most ``within + delta``, and no earlier time has a
+    distance below ``within - delta``. A tangential approach takes of the order of
+    ``sqrt(S / delta)`` distance evaluations; each counts in `stats` (``distances``, and
+    ``closest_points`` for the contact), and each is `distance`'s own, with the chosen solver. Both
+    argument orders agree to the bit (with the motions exchanged). ``precision=None`` follows the
+    motions given as well as the shapes (a motion's fields of zeros, as its defaults, decide
+    nothing).
+    
+    Parameters
+    ----------
+    a, b : Shape or array_like
+        The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+        batch shapes broadcast like NumPy's.
+    motion_a, motion_b : Motion or None, optional
+        The motions of a and b over [0, 1]; None (the default) is at rest. Their batch shapes
+        broadcast with the shapes'. A line or ray cannot rotate (its points reach infinitely far
+        from the center, so no speed bound exists): only translations move them.
+    within : array_like, optional
+        Keyword only. Finite contact distances >= 0, a scalar or an array broadcasting with the
+        batch; default 0 (touching).
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+        batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+        an exception it raises stops the work and propagates.
+    
+    Returns
+    -------
+    Contact
+        ``time`` (inf where there is no contact), ``distance``, ``point_a``, ``point_b``,
+        ``param_a``, ``param_b`` (NaN where there is no contact) and ``unique``.
+    
+    Raises
+    ------
+    ValueError
+        When a line or ray is given a rotating motion (the message names the motion and the
+        batch index), ``within`` is negative or not finite, the batch shapes do not broadcast, an
+        input is beyond float32's range (float32), the precision or solver is unknown, or the worker
+        count is neither positive nor -1.
+    TypeError
+        When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
+        callable.
+    
+    See Also
+    --------
+    Motion : the motions.
+    Shape.moved : a shape at one time of its motion.
+    
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> point = cd.Point([3, 0, 0])
+    >>> towards = cd.Motion(translation=[-4, 0, 0])  # closes the gap of 2 at speed 4
+    >>> round(cd.first_contact(point, ring, towards).time, 12)
+    0.5
+    >>> round(cd.first_contact(point, ring, towards, within=0.5).time, 12)
+    0.375
+    >>> cd.first_contact(point, ring).time  # both at rest: never
+    inf
+    >>> speeds = cd.Motion(translation=[[-4, 0, 0], [-8, 0, 0], [-1, 0, 0]])
+    >>> cd.first_contact(point, ring, speeds).time.round(12)  # a batch of motions
+    array([0.5 , 0.25,  inf])
     """
 def intersects(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> bool | numpy.ndarray:
     """

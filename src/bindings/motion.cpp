@@ -1,6 +1,9 @@
 // circledist.Motion (a batch of rigid motions, motion.hpp's Motion3) and Shape.moved: the motion's
 // fields are read and validated as shape fields are (shapes.hpp's make_field), and a moved shape
-// is the same kind rebuilt from its moved fields by its own constructor.
+// is the same kind rebuilt from its moved fields by its own constructor. first_contact and its
+// answer, Contact: motion.hpp's conservative advancement over the broadcast of both shapes, both
+// motions and the contact distance, each distance answered by the pair tables' kernels
+// (kernels/pairs.hpp), so that it adds no code per pair.
 #include "module.hpp"
 #include "motion_doc.hpp"
 
@@ -9,7 +12,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -29,6 +36,17 @@ struct Motions {
     for (const Field& f : fields)
       if (f.has_wide()) return true;
     return false;
+  }
+  // Every field float32, or zero (exact in every precision, as the defaults): a float32 query
+  // stays float32 with Motion(translation=float32 values).
+  bool single() const {
+    for (const Field& f : fields) {
+      if (f.single) continue;
+      const double* p = f.data();
+      for (Index i = 0, n = f.array.size(); i < n; ++i)
+        if (p[i] != 0) return false;
+    }
+    return true;
   }
 };
 
@@ -234,6 +252,274 @@ ShapeObject moved_shape(py::handle self, py::handle motion, py::handle t) {
   return py::reinterpret_borrow<ShapeObject>(py::type::of(self)(**arrays));
 }
 
+// first_contact's answer: the time, and closest_points' answers at that time.
+struct Contacts {
+  py::object time, distance, point_a, point_b, param_a, param_b, unique;
+};
+
+// None: at rest (one motion of zero fields, made once and never freed, as default_sweep).
+const Motions& motion_argument(const char* name, py::handle value) {
+  if (value.is_none()) {
+    static const Motions* const rest = [] {
+      const py::tuple zero = py::make_tuple(0.0, 0.0, 0.0);
+      return new Motions(make_motions(zero, zero, zero, true));
+    }();
+    return *rest;
+  }
+  if (!py::isinstance<Motions>(value))
+    throw py::type_error(std::string("first_contact: ") + name + " must be a circledist.Motion or None, got " +
+                         Py_TYPE(value.ptr())->tp_name);
+  return motions_of(value);
+}
+
+Motions motions_rounded_to_float(const char* owner, const Motions& m) {
+  Motions out = m;
+  for (Field& f : out.fields) f = rounded_to_float(owner, f);
+  return out;
+}
+
+// One moving shape of first_contact at one element of the batch: its fields as given (`in`, the
+// sweep last), its motion, and its fields at the time last moved to (`now`: the moved points and
+// vectors in `moved`, the numbers, which a motion keeps, as given).
+template <class Real> struct Mover {
+  int kind = kPoint, points = 0, count = 0;
+  std::array<const Real*, kMaxShapeFields> in{}, now{};
+  std::array<std::array<Real, 3 * (kMaxBezierDegree + 1)>, kMaxShapeFields> moved{};
+  Motion3<Real> motion;
+  void (*move)(Mover&, Real t) = nullptr;          // `now` at time t
+  Real (*rotation_speed)(const Mover&) = nullptr;  // motion.hpp's detail::rotation_speed
+  Real (*size)(const Mover&) = nullptr;            // motion.hpp's detail::motion_size
+  BatchShape none;                                 // the one element's batch shape, ()
+  std::array<FieldRef<Real>, kMaxShapeFields> refs{};
+
+  template <class S> Swept<S> shape() const { return {ShapeTraits<S>::make(in.data(), points), *in[count - 1]}; }
+  template <class S> static void move_to(Mover& m, Real t) {
+    const S at = circledist::moved(ShapeTraits<S>::make(m.in.data(), m.points), placement(m.motion, t));
+    std::array<Real*, kMaxShapeFields> out{};
+    for (int k = 0; k < m.count; ++k) out[size_t(k)] = m.moved[size_t(k)].data();
+    store(at, out.data());
+  }
+  template <class S> static Real speed_of(const Mover& m) { return detail::rotation_speed(m.shape<S>(), m.motion); }
+  template <class S> static Real size_of(const Mover& m) { return detail::motion_size(m.shape<S>(), m.motion); }
+
+  // The element `at` of the broadcast batch: its fields and motion, and the kind's operations.
+  void set(const Shape& s, const Motions& m, const std::vector<Index>& at) {
+    kind = s.kind;
+    points = s.points;
+    count = int(s.fields.size());
+    for (int k = 0; k < count; ++k) {
+      const Field& f = s.fields[size_t(k)];
+      in[size_t(k)] = f.template data_as<Real>() + f.width * element_at(at, f.batch);
+      // Vector fields read the moved values; numbers (width 1) the given ones.
+      now[size_t(k)] = f.width == 1 ? in[size_t(k)] : moved[size_t(k)].data();
+      refs[size_t(k)] = {f.name, now[size_t(k)], f.width, &none};
+    }
+    Vec3<Real>* parts[kMotionFieldCount] = {&motion.translation, &motion.rotation, &motion.center};
+    for (int k = 0; k < kMotionFieldCount; ++k)
+      *parts[k] =
+          vec<Real>(m.fields[size_t(k)].template data_as<Real>() + 3 * element_at(at, m.fields[size_t(k)].batch));
+    visit_kind<Real>(kind, [&](auto tag) {
+      using S = typename decltype(tag)::type;
+      move = &move_to<S>;
+      rotation_speed = &speed_of<S>;
+      size = &size_of<S>;
+    });
+  }
+  Operand<Real> operand() const {
+    Operand<Real> out{kind, points, &none};
+    for (int k = 0; k < count; ++k) out.fields[size_t(k)] = refs[size_t(k)];
+    out.count = count;
+    return out;
+  }
+};
+
+// first_contact over the pair tables: motion.hpp's first_contact, element by element, with the
+// shapes moved here (per kind) and every distance and the contact's closest points answered by
+// the table's distance and closest_points kernels of the pair (the solver's own). The loop is
+// first_contact's (docs/derivations/motion.md: the bound L, the bar delta, the steps g / L); its
+// pieces are motion.hpp's own (rotation_speed, motion_size, contact_tolerance, next_time). So
+// no pair gains code: the pair units, the build's long pole, and the module's size stay as they
+// were. Both argument orders run the pair's one kernel (the table swaps the operands and the
+// answers), so they agree to the bit. `batch`: the broadcast batch shape (checked by the caller).
+template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const Motions& motion_a,
+                                           const Motions& motion_b, const Field& within, const BatchShape& batch,
+                                           const Choice& c) {
+  constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const PairTable<Real>& table = pairs().of<Real>(c.solver);
+  const Call<Real> call{table, a, b, nullptr, c.workers, c.progress};
+  const KernelFn<Real> distance_fn = call.entry(&PairTable<Real>::distance);
+  const KernelFn<Real> closest_fn = call.entry(&PairTable<Real>::closest);
+  const bool reversed = call.reversed();
+  Index size = 1;
+  for (const Index d : batch) size *= d;
+  auto time = new_array<Real>(batch, 0), distance = new_array<Real>(batch, 0);
+  auto point_a = new_array<Real>(batch, 3), point_b = new_array<Real>(batch, 3);
+  auto param_a = new_array<Real>(batch, 2), param_b = new_array<Real>(batch, 2);
+  auto unique = new_array<bool>(batch, 0);
+  Real *out_time = time.mutable_data(), *out_distance = distance.mutable_data();
+  Real *out_point_a = point_a.mutable_data(), *out_point_b = point_b.mutable_data();
+  Real *out_param_a = param_a.mutable_data(), *out_param_b = param_b.mutable_data();
+  bool* out_unique = unique.mutable_data();
+  const Real* limits = within.template data_as<Real>();
+  // A long-double query's first read of a float64 field makes its long-double copy, with the GIL
+  // held (Field::data_as): made here, before the threads read the fields without it.
+  for (const Shape* s : {&a, &b})
+    for (const Field& f : s->fields) f.template data_as<Real>();
+  for (const Motions* m : {&motion_a, &motion_b})
+    for (const Field& f : m->fields) f.template data_as<Real>();
+  const auto work = [&](Index begin, Index end) {
+    Mover<Real> first, second;  // a and b
+    std::vector<Index> at(batch.size());
+    for (Index i = begin; i < end; ++i) {
+      Index flat = i;
+      for (size_t d = batch.size(); d-- > 0;) {
+        at[d] = flat % batch[d];
+        flat /= batch[d];
+      }
+      // What first_contact answers where there is no contact (motion.hpp's Contact).
+      out_time[i] = std::numeric_limits<Real>::infinity();
+      out_distance[i] = nan;
+      std::fill_n(out_point_a + 3 * i, 3, nan);
+      std::fill_n(out_point_b + 3 * i, 3, nan);
+      std::fill_n(out_param_a + 2 * i, 2, nan);
+      std::fill_n(out_param_b + 2 * i, 2, nan);
+      out_unique[i] = true;
+      first.set(a, motion_a, at);
+      second.set(b, motion_b, at);
+      const Real limit = limits[element_at(at, within.batch)];
+      Real speed = detail::safe_norm(Vec3<Real>(first.motion.translation - second.motion.translation));
+      for (const Mover<Real>* m : {&first, &second}) {
+        try {
+          speed += m->rotation_speed(*m);
+        } catch (const std::invalid_argument& e) {
+          std::string why = e.what();
+          const std::string prefix = "circledist::first_contact: ";
+          if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
+          const bool is_a = m == &first;
+          throw std::invalid_argument(std::string("first_contact: ") + (is_a ? "motion_a" : "motion_b") +
+                                      index_text(i, batch) + " rotates the " + (is_a ? "first" : "second") +
+                                      " argument, a " + kind_name(m->kind) + ": " + why);
+        }
+      }
+      const Real extent = std::max(first.size(first), second.size(second));
+      const Real delta = contact_tolerance(extent);
+      if (speed != speed || extent != extent || limit != limit) {
+        out_time[i] = nan;
+        continue;
+      }
+      // The table's kernel of the pair, on the moved fields (its operands in the table's order).
+      const Operand<Real> oa = first.operand(), ob = second.operand();
+      const bool swept_pair = *first.in[size_t(first.count - 1)] != 0 || *second.in[size_t(second.count - 1)] != 0;
+      Request<Real> r(reversed ? ob : oa, reversed ? oa : ob, nullptr, reversed, swept_pair);
+      Real d;
+      Real t = 0;
+      for (;;) {
+        first.move(first, t);
+        second.move(second, t);
+        r.distance = &d;
+        distance_fn(r, 0, 1);
+        if (d != d) {
+          out_time[i] = nan;
+          break;
+        }
+        const Real gap = d - limit;
+        if (gap <= delta / 2) {
+          r.distance = out_distance + i;
+          r.flag = out_unique + i;
+          r.point_a = (reversed ? out_point_b : out_point_a) + 3 * i;
+          r.point_b = (reversed ? out_point_a : out_point_b) + 3 * i;
+          r.param_a = (reversed ? out_param_b : out_param_a) + 2 * i;
+          r.param_b = (reversed ? out_param_a : out_param_b) + 2 * i;
+          closest_fn(r, 0, 1);
+          out_time[i] = t;
+          break;
+        }
+        // At rest relative to each other (the distance cannot change), or at the end: no contact.
+        if (speed == 0 || t >= 1) break;
+        t = detail::next_time(t, gap / speed);
+      }
+    }
+  };
+  run_released(size, c.workers, work, c.progress);
+  if (batch.empty())
+    return {scalar<Real>(out_time[0]), scalar<Real>(out_distance[0]),
+            std::move(point_a),        std::move(point_b),
+            std::move(param_a),        std::move(param_b),
+            py::bool_(out_unique[0])};
+  return {std::move(time),    std::move(distance), std::move(point_a), std::move(point_b),
+          std::move(param_a), std::move(param_b),  std::move(unique)};
+}
+
+// A float64 answer rounded to float32: inf and NaN (no contact) stay; a finite value beyond
+// float32's range is an OverflowError naming the output and its index.
+py::object contact_float32(const py::object& value, const char* output, Index width) {
+  const py::object out = to_float32(value, "first_contact", output, width, false);
+  const auto check = [&](double x, Index flat, const BatchShape& batch) {
+    if (std::isfinite(x) && !std::isfinite(float(x)))
+      throw std::overflow_error(std::string("first_contact: ") + output + index_text(flat, batch) +
+                                " is beyond float32's range (precision='float32'); ask for precision='float64'");
+  };
+  if (py::isinstance<py::float_>(value)) {
+    check(value.cast<double>(), 0, {});
+    return out;
+  }
+  const auto from = py::array_t<double, py::array::c_style>::ensure(value);
+  const BatchShape all(from.shape(), from.shape() + from.ndim());
+  const BatchShape batch(all.begin(), all.end() - (width > 1 ? 1 : 0));
+  for (Index i = 0, n = from.size(); i < n; ++i) check(from.data()[i], i / width, batch);
+  return out;
+}
+
+// first_contact(a, b, motion_a, motion_b, within=, precision=, workers=, progress=).
+Contacts first_contact_of(py::handle a_given, py::handle b_given, py::handle motion_a_given, py::handle motion_b_given,
+                          py::handle within_given, const py::object& precision, const py::object& solver,
+                          py::handle workers, const py::object& progress) {
+  const Argument x(a_given), y(b_given);
+  const Shape &a = *x.shape, &b = *y.shape;
+  const Motions& motion_a = motion_argument("motion_a", motion_a_given);
+  const Motions& motion_b = motion_argument("motion_b", motion_b_given);
+  const Field within = make_field("first_contact", "within", within_given, 1, Check::NonNegative);
+  Choice c(precision, solver, a, b, workers, progress);
+  // precision=None: NumPy's promotion over the shapes and the motions given (at rest decides nothing).
+  if (precision.is_none()) {
+    const bool given_a = !motion_a_given.is_none(), given_b = !motion_b_given.is_none();
+    if ((given_a && motion_a.wide()) || (given_b && motion_b.wide()))
+      c.precision = kLongDouble;
+    else if (c.precision == kFloat && ((given_a && !motion_a.single()) || (given_b && !motion_b.single())))
+      c.precision = kDouble;
+  }
+  // The batch shapes, named in the caller's words (the kernel's Broadcast would name fields).
+  bool ok = true;
+  BatchShape batch = broadcast_shapes(a.batch, b.batch, ok);
+  if (!ok)
+    throw py::value_error("first_contact: batch shapes " + shape_text(a.batch) + " of the " + kind_name(a.kind) +
+                          " and " + shape_text(b.batch) + " of the " + kind_name(b.kind) + " do not broadcast");
+  const std::pair<const char*, const BatchShape*> others[] = {
+      {"motion_a", &motion_a.batch}, {"motion_b", &motion_b.batch}, {"within", &within.batch}};
+  for (const auto& [name, other] : others) {
+    const BatchShape joined = broadcast_shapes(batch, *other, ok);
+    if (!ok)
+      throw py::value_error(std::string("first_contact: ") + name + " of batch shape " + shape_text(*other) +
+                            " does not broadcast with batch shape " + shape_text(batch) +
+                            " of the arguments before it");
+    batch = joined;
+  }
+  if (c.precision == kLongDouble) return run_contact<long double>(a, b, motion_a, motion_b, within, batch, c);
+  if (!c.single()) return run_contact<double>(a, b, motion_a, motion_b, within, batch, c);
+  const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
+  const Motions fma = motions_rounded_to_float("motion_a", motion_a),
+                fmb = motions_rounded_to_float("motion_b", motion_b);
+  const Field fw = rounded_to_float("first_contact", within);
+  const Contacts r = run_contact<double>(fa, fb, fma, fmb, fw, batch, c);
+  return {contact_float32(r.time, "time", 1),
+          contact_float32(r.distance, "distance", 1),
+          contact_float32(r.point_a, "point_a", 3),
+          contact_float32(r.point_b, "point_b", 3),
+          contact_float32(r.param_a, "param_a", 2),
+          contact_float32(r.param_b, "param_b", 2),
+          r.unique};
+}
+
 }  // namespace
 
 void bind_motion(py::module_& m) {
@@ -278,6 +564,44 @@ void bind_motion(py::module_& m) {
   shape.attr("moved") =
       py::cpp_function([](py::handle self, MotionObject motion, ArrayLike t) { return moved_shape(self, motion, t); },
                        py::name("moved"), py::is_method(shape), py::arg("motion"), py::arg("t"), doc::kMoved);
+
+  py::class_<Contacts>(m, "Contact", doc::kContact)
+      .def_property_readonly(
+          "time", [](const Contacts& r) { return Distances(r.time); },
+          "The earliest time in [0, 1] within reach; inf where the shapes never come within it.")
+      .def_property_readonly(
+          "distance", [](const Contacts& r) { return Distances(r.distance); },
+          "The distance at that time (at most `within`, within rounding); NaN where there is no contact.")
+      .def_property_readonly(
+          "point_a", [](const Contacts& r) { return Array(r.point_a); },
+          "A closest point on the first shape at that time, shape (..., 3); NaN where there is no contact.")
+      .def_property_readonly(
+          "point_b", [](const Contacts& r) { return Array(r.point_b); },
+          "A closest point on the second shape at that time, shape (..., 3); NaN where there is no contact.")
+      .def_property_readonly(
+          "param_a", [](const Contacts& r) { return Array(r.param_a); },
+          "point_a's parameters on the moved first shape, shape (..., 2), as closest_points' param_a.")
+      .def_property_readonly(
+          "param_b", [](const Contacts& r) { return Array(r.param_b); },
+          "point_b's parameters on the moved second shape, shape (..., 2).")
+      .def_property_readonly(
+          "unique", [](const Contacts& r) { return Flags(r.unique); },
+          "closest_points' unique at that time (True where there is no contact).")
+      .def("__repr__", [](const Contacts& r) {
+        return "Contact(time=" + py::repr(r.time).cast<std::string>() +
+               ", distance=" + py::repr(r.distance).cast<std::string>() +
+               ", point_a=" + py::repr(r.point_a).cast<std::string>() +
+               ", point_b=" + py::repr(r.point_b).cast<std::string>() + ")";
+      });
+  m.def(
+      "first_contact",
+      [](ShapeLike a, ShapeLike b, OptionalMotion motion_a, OptionalMotion motion_b, ArrayLike within,
+         PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
+        return first_contact_of(a, b, motion_a, motion_b, within, precision, solver, workers, progress);
+      },
+      py::arg("a"), py::arg("b"), py::arg("motion_a") = py::none(), py::arg("motion_b") = py::none(), py::kw_only(),
+      py::arg("within") = 0.0, py::arg("precision") = py::none(), py::arg("solver") = py::none(),
+      py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kFirstContact());
 }
 
 }  // namespace circledist::python

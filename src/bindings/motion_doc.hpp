@@ -1,7 +1,10 @@
-// The docstrings of circledist.Motion and Shape.moved (bound by motion.cpp). NumPy-style; their
+// The docstrings of circledist.Motion, Shape.moved, first_contact and its answer, Contact (bound
+// by motion.cpp). NumPy-style; their
 // examples run as doctests (tests/package/test_docstrings.py), and the generated stubs
 // (python/circledist/_core.pyi) carry them. No behaviour lives here.
 #pragma once
+
+#include "arguments_doc.hpp"
 
 #include <string>
 
@@ -135,5 +138,109 @@ Examples
 >>> lifted.batch_shape, lifted.center[:, 2]
 ((3,), array([0., 1., 2.]))
 )";
+
+inline const char* const kContact =
+    R"(The answer of `first_contact`: when the shapes first come within reach, and where.
+
+For single shapes ``time`` and ``distance`` are floats (``numpy.longdouble`` in long double)
+and ``unique`` a bool; for batches each attribute is an array of the broadcast batch shape
+(with a trailing axis of 3 for points and of 2 for parameters).
+
+Attributes
+----------
+time : float or numpy.ndarray
+    The earliest time in [0, 1] at which the moving shapes are within ``within`` of each
+    other; ``inf`` where they never are.
+distance : float or numpy.ndarray
+    The distance at that time (at most ``within``, to the bar given in `first_contact`); NaN
+    where there is no contact.
+point_a, point_b : numpy.ndarray, shape (..., 3)
+    A closest pair of the moved shapes at that time, as `closest_points` gives it; NaN where
+    there is no contact.
+param_a, param_b : numpy.ndarray, shape (..., 2)
+    Their parameters on the moved shapes (as `closest_points`' ``param_a``, ``param_b``); NaN
+    where there is no contact.
+unique : bool or numpy.ndarray
+    `closest_points`' ``unique`` at that time; True where there is no contact.
+
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> c = cd.first_contact(cd.Point([3, 0, 0]), ring, cd.Motion(translation=[-4, 0, 0]))
+>>> round(c.time, 12), c.point_b.round(12) + 0.0
+(0.5, array([1., 0., 0.]))
+)";
+
+inline const char* kFirstContact() {
+  static const std::string text = std::string() +
+                                  R"(The earliest time at which two moving shapes come within a distance of each other.
+
+With ``a(t) = a.moved(motion_a, t)`` and ``b(t)`` likewise, the earliest ``t`` in [0, 1] with
+``distance(a(t), b(t)) <= within``, found by conservative advancement on the exact distance:
+from a time ``t`` where the gap ``g = distance - within`` is positive, no time before
+``t + g / L`` can close it, ``L`` a bound on how fast the distance can fall (the relative
+translation speed plus each rotation's angular speed times the shape's reach from its center).
+The answer meets the bar ``delta = 1e-12 S`` (``S`` the largest coordinate, radius or travel of
+the query): the distance at ``time`` is at most ``within + delta``, and no earlier time has a
+distance below ``within - delta``. A tangential approach takes of the order of
+``sqrt(S / delta)`` distance evaluations; each counts in `stats` (``distances``, and
+``closest_points`` for the contact), and each is `distance`'s own, with the chosen solver. Both
+argument orders agree to the bit (with the motions exchanged). ``precision=None`` follows the
+motions given as well as the shapes (a motion's fields of zeros, as its defaults, decide
+nothing).
+
+Parameters
+----------
+)" + kQueryParameters + R"(motion_a, motion_b : Motion or None, optional
+    The motions of a and b over [0, 1]; None (the default) is at rest. Their batch shapes
+    broadcast with the shapes'. A line or ray cannot rotate (its points reach infinitely far
+    from the center, so no speed bound exists): only translations move them.
+within : array_like, optional
+    Keyword only. Finite contact distances >= 0, a scalar or an array broadcasting with the
+    batch; default 0 (touching).
+)" + kChoiceParameters + kProgressParameter +
+                                  R"(
+Returns
+-------
+Contact
+    ``time`` (inf where there is no contact), ``distance``, ``point_a``, ``point_b``,
+    ``param_a``, ``param_b`` (NaN where there is no contact) and ``unique``.
+
+Raises
+------
+ValueError
+    When a line or ray is given a rotating motion (the message names the motion and the
+    batch index), ``within`` is negative or not finite, the batch shapes do not broadcast, an
+    input is beyond float32's range (float32), the precision or solver is unknown, or the worker
+    count is neither positive nor -1.
+TypeError
+    When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
+    callable.
+
+See Also
+--------
+Motion : the motions.
+Shape.moved : a shape at one time of its motion.
+
+Examples
+--------
+>>> import numpy as np
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> point = cd.Point([3, 0, 0])
+>>> towards = cd.Motion(translation=[-4, 0, 0])  # closes the gap of 2 at speed 4
+>>> round(cd.first_contact(point, ring, towards).time, 12)
+0.5
+>>> round(cd.first_contact(point, ring, towards, within=0.5).time, 12)
+0.375
+>>> cd.first_contact(point, ring).time  # both at rest: never
+inf
+>>> speeds = cd.Motion(translation=[[-4, 0, 0], [-8, 0, 0], [-1, 0, 0]])
+>>> cd.first_contact(point, ring, speeds).time.round(12)  # a batch of motions
+array([0.5 , 0.25,  inf])
+)";
+  return text.c_str();
+}
 
 }  // namespace circledist::python::doc

@@ -43,6 +43,7 @@ CIRCLEDIST_TYPED_OBJECT(OptionalCount, "int | None")
 CIRCLEDIST_TYPED_OBJECT(PairsResult, "tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]")
 CIRCLEDIST_TYPED_OBJECT(NearestResult, "tuple[numpy.ndarray, numpy.ndarray]")
 CIRCLEDIST_TYPED_OBJECT(MotionObject, "circledist._core.Motion")
+CIRCLEDIST_TYPED_OBJECT(OptionalMotion, "circledist._core.Motion | None")
 CIRCLEDIST_TYPED_OBJECT(ShapeObject, "circledist._core.Shape")
 
 #undef CIRCLEDIST_TYPED_OBJECT

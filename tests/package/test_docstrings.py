@@ -70,6 +70,7 @@ def test_every_public_object_is_listed():
     assert set(PUBLIC) == set(SHAPE_CLASSES) | set(QUERIES) | {
         "Shape",
         "ClosestPoints",
+        "Contact",
         "Motion",
         "Scene",
         "stats",
@@ -80,6 +81,7 @@ def test_every_public_object_is_listed():
         "pairs_within",
         "nearest",
         "figure",
+        "first_contact",
     }
 
 
@@ -103,7 +105,7 @@ def test_numpy_style_sections(name):
     found = sections(obj.__doc__)
     assert "Examples" in found, name
     if inspect.isclass(obj):
-        if name not in ("Shape", "ClosestPoints"):  # not built by users
+        if name not in ("Shape", "ClosestPoints", "Contact"):  # not built by users
             assert "Parameters" in found, name
         assert "Attributes" in found, name
         for method in public_methods(obj):
@@ -120,7 +122,7 @@ def test_numpy_style_sections(name):
         assert ("Parameters" in found) == takes_arguments, name
 
 
-@pytest.mark.parametrize("name", SHAPE_CLASSES + ["Shape", "ClosestPoints"])
+@pytest.mark.parametrize("name", SHAPE_CLASSES + ["Shape", "ClosestPoints", "Contact"])
 def test_properties_have_docstrings(name):
     cls = getattr(circledist, name)
     for attribute, value in inspect.getmembers(cls, lambda v: isinstance(v, property)):
@@ -137,6 +139,14 @@ def test_query_signatures_name_types(name):
     assert ": object" not in signature and "-> object" not in signature, signature
     assert "a: circledist._core.Shape | numpy.typing.ArrayLike" in signature
     assert "precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None" in signature
+
+
+def test_first_contact_signature_names_types():
+    signature = circledist.first_contact.__doc__.splitlines()[0]
+    assert ": object" not in signature and "-> object" not in signature, signature
+    assert "motion_a: circledist._core.Motion | None = None" in signature
+    assert "precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None" in signature
+    assert signature.endswith("-> circledist._core.Contact")
 
 
 @pytest.mark.parametrize("name", QUERIES)
@@ -160,7 +170,7 @@ def test_documented_choices_are_the_accepted_ones(name):
 def documented_callables():
     for name in PUBLIC:
         obj = getattr(circledist, name)
-        if name in ("Shape", "ClosestPoints"):
+        if name in ("Shape", "ClosestPoints", "Contact"):
             continue  # not built by users: no constructor parameters to document
         yield name, obj
         if inspect.isclass(obj):
