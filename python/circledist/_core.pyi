@@ -980,9 +980,8 @@ class Motion:
     Attributes
     ----------
     translation, rotation, center : numpy.ndarray
-        The fields as stored, shape (..., 3) each.
-    batch_shape : tuple of int
-        Leading batch dimensions; ``()`` for a single motion.
+        The fields as stored, shape (..., 3) each; their broadcast leading dimensions are the
+        motion's ``batch_shape`` (``()`` for a single motion).
     
     Raises
     ------
