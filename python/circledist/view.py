@@ -445,37 +445,27 @@ def _traces(go, part: _Part, geometry: _Geometry, rows: np.ndarray, label: str, 
                 **common,
             )
         )
-    if geometry.face is not None and options["faces"]:
-        xyz, ijk, text = _meshes([(geometry.face[0][rows], geometry.face[1])], names)
-        out.append(
-            go.Mesh3d(
-                i=ijk[:, 0],
-                j=ijk[:, 1],
-                k=ijk[:, 2],
-                color=colour,
-                opacity=0.45,
-                flatshading=True,
-                **_xyz(xyz, options["origin"]),
-                **_hover(text, hover),
-                **common,
-            )
+
+    def mesh(pieces, piece_names, opacity, flat):
+        xyz, ijk, text = _meshes(pieces, piece_names)
+        return go.Mesh3d(
+            i=ijk[:, 0],
+            j=ijk[:, 1],
+            k=ijk[:, 2],
+            color=colour,
+            opacity=opacity,
+            flatshading=flat,
+            **_xyz(xyz, options["origin"]),
+            **_hover(text, hover),
+            **common,
         )
+
+    if geometry.face is not None and options["faces"]:
+        out.append(mesh([(geometry.face[0][rows], geometry.face[1])], names, 0.45, True))
     swept = rows[part.sweep[rows] > 0]
     if len(swept) and options["sweeps"]:
-        xyz, ijk, text = _meshes(_sweep_pieces(part, geometry, swept, TUBE_SIDES), [part.names[i] for i in swept])
-        out.append(
-            go.Mesh3d(
-                i=ijk[:, 0],
-                j=ijk[:, 1],
-                k=ijk[:, 2],
-                color=colour,
-                opacity=0.25,
-                flatshading=False,
-                **_xyz(xyz, options["origin"]),
-                **_hover(text, hover),
-                **common,
-            )
-        )
+        pieces = _sweep_pieces(part, geometry, swept, TUBE_SIDES)
+        out.append(mesh(pieces, [part.names[i] for i in swept], 0.25, False))
     if not hover and geometry.points is None:
         a = _anchors(geometry)[rows]
         out.append(

@@ -79,12 +79,7 @@ py::dict motion_arrays(py::handle self) {
   const Motions& m = motions_of(self);
   py::dict out;
   for (const Field& f : m.fields) {
-    py::object value = f.value();
-    if (f.single && !f.is_wide) {
-      value = value.attr("astype")("float32");
-      value.attr("setflags")(py::arg("write") = false);
-    }
-    out[f.name] = value;
+    out[f.name] = f.given();
   }
   return out;
 }

@@ -66,12 +66,7 @@ py::dict to_arrays(py::handle self) {
   for (size_t i = 0; i < s.fields.size(); ++i) {
     const Field& f = s.fields[i];
     if (i + 1 == s.fields.size() && is_default_sweep(f)) break;
-    py::object value = f.value();
-    if (f.single && !f.is_wide) {
-      value = value.attr("astype")("float32");
-      value.attr("setflags")(py::arg("write") = false);
-    }
-    out[f.name] = value;
+    out[f.name] = f.given();
   }
   return out;
 }

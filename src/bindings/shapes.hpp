@@ -58,6 +58,16 @@ struct Field {
   }
   // The array a user reads back: the long double one when that is what was given.
   py::object value() const { return is_wide ? py::object(wide) : py::object(array); }
+  // The values in the dtype they were given in (to_arrays): a float32 field as a read-only
+  // float32 copy of the stored float64 values, which reproduce it exactly.
+  py::object given() const {
+    py::object out = value();
+    if (single && !is_wide) {
+      out = out.attr("astype")("float32");
+      out.attr("setflags")(py::arg("write") = false);
+    }
+    return out;
+  }
 };
 
 // Angle: an arc's angle, in (0, 2 pi] (float32's rounding of 2 pi, just above, is 2 pi given as float32).
