@@ -148,16 +148,7 @@ def test_an_animated_page_moves_its_moving_shape(browser, tmp_path):
     )
     assert frames == [[f.name, list(f.traces)] for f in fig.frames]
     before = coloured(pixels(browser.png()))
-    result = browser.driver.execute_async_script(
-        """
-        const done = arguments[arguments.length - 1], gd = document.querySelector('.js-plotly-plot');
-        Plotly.animate(gd, [arguments[0]], {mode: 'immediate', frame: {duration: 0, redraw: true},
-                                            transition: {duration: 0}})
-          .then(() => requestAnimationFrame(() => requestAnimationFrame(() => done(gd._fullLayout._currentFrame))),
-                error => done('rejected: ' + error));
-        """,
-        fig.frames[-1].name,
-    )
+    result = browser.animate(fig.frames[-1].name)
     assert result == fig.frames[-1].name
     assert browser.console_errors() == []
     after = coloured(pixels(browser.png()))
