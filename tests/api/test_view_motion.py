@@ -6,6 +6,8 @@ points at every time, the view's box around every time, and bad arguments. That 
 animates in a browser is test_view_browser.py's."""
 
 import math
+import pathlib
+import runpy
 
 import numpy as np
 import pytest
@@ -14,6 +16,8 @@ import circledist as cd
 from circledist import cli, view
 
 pytest.importorskip("plotly", reason="plotly is the view extra (pip install 'circledist[view]')")
+
+EXAMPLE = pathlib.Path(__file__).resolve().parents[2] / "examples" / "motion_demo.py"
 
 
 def vertices(trace):
@@ -313,3 +317,19 @@ STILL = cd.Motion()
 def test_bad_motions_and_frames_are_named(arguments, error, message):
     with pytest.raises(error, match=message):
         cd.figure(RING, **arguments)
+
+
+def test_the_motion_example_writes_its_page(tmp_path):
+    """examples/motion_demo.py: a page with the frames, opening at t = 0 (no autoplay), the tool
+    touching the sensor at the contact's frame and never the probe."""
+    example = runpy.run_path(str(EXAMPLE))
+    page = tmp_path / "motion.html"
+    fig = example["main"](str(page))
+    text = page.read_text()
+    assert "Plotly.newPlot" in text and "addFrames" in text and "Plotly.animate(" not in text
+    contact = cd.first_contact(example["tool"], example["shapes"]["sensor"], example["slide_and_turn"])
+    assert 0 < contact.time < 1
+    names = {t.name for t in fig.data}
+    assert f"tool \u2013 sensor: first contact at t = {contact.time:.4g}" in names
+    assert "tool \u2013 probe: no contact for t in [0, 1]" in names
+    assert contact.time in frame_times(fig)
