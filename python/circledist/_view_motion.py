@@ -214,7 +214,7 @@ def _pair_frame_traces(go, pair: _MovingPair, k: int, t: float, origin: np.ndarr
         go.Scatter3d(
             mode="text",
             text=[label],
-            textfont={**style, "size": 13},  # a frame redrawn keeps no default size
+            textfont=style,
             textposition="top center",
             showlegend=False,
             hoverinfo="skip",

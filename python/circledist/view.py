@@ -19,6 +19,9 @@ has ``VERTEX_BUDGET / n - 2`` points (a closed rim repeats its first, a gap foll
 ``FULL_LIMIT`` shapes only outlines are drawn (no faces, no sweeps: the legend says so) and the
 names are carried by one marker per shape instead of by every vertex. Coordinates are sent as
 float32, the precision WebGL draws them in.
+
+Shapes given motions are animated by _view_motion.py, which draws each time with these parts,
+geometry and traces (the moving shapes count once per frame in the rule above).
 """
 
 from __future__ import annotations
