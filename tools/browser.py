@@ -4,6 +4,7 @@ pages circledist.figure writes and waits until plotly has drawn them: for the br
 
     browser = Browser(width, height)   # or None from Browser.missing(): why there is none
     browser.open(path)                 # waits for the plot
+    browser.animate(name)              # an animated figure shown at its frame of that name
     browser.png(), browser.console_errors(), browser.run("return ...")
     browser.close()
 """
@@ -78,6 +79,21 @@ class Browser:
         # Two animation frames: the scene's first WebGL frame is painted after plotly returns.
         self.driver.execute_async_script(
             "const done = arguments[0]; requestAnimationFrame(() => requestAnimationFrame(() => done()));"
+        )
+
+    def animate(self, frame: str) -> str:
+        """Shows the first plot's frame of that name (Plotly.animate, at once) and waits until it
+        is painted; returns the frame plotly then says is current (or why the animation was
+        refused)."""
+        return self.driver.execute_async_script(
+            """
+            const done = arguments[arguments.length - 1], gd = document.querySelector('.js-plotly-plot');
+            const now = {mode: 'immediate', frame: {duration: 0, redraw: true}, transition: {duration: 0}};
+            Plotly.animate(gd, [arguments[0]], now).then(
+              () => requestAnimationFrame(() => requestAnimationFrame(() => done(gd._fullLayout._currentFrame))),
+              error => done('refused: ' + error));
+            """,
+            frame,
         )
 
     def redraw_seconds(self, frames: int = 5) -> float:

@@ -599,7 +599,7 @@ class Scene:
         except KeyError:
             raise KeyError(f"Scene: no shape named {name!r}") from None
 
-    def figure(self, *, pairs=None, detail=None, box=None, title=None):
+    def figure(self, *, pairs=None, detail=None, box=None, title=None, motions=None, frames=None):
         """An interactive 3-D figure (plotly) of the scene: ``circledist.figure(scene, ...)``.
 
         Parameters
@@ -612,6 +612,8 @@ class Scene:
             The region shown, which lines and rays are clipped to; default: around the shapes.
         title : str, optional
             The figure's title.
+        motions, frames : optional
+            Shapes' motions by name, animated over ``frames`` time steps (`circledist.figure`).
 
         Returns
         -------
@@ -627,7 +629,7 @@ class Scene:
         """
         from .view import figure
 
-        return figure(self, pairs=pairs, detail=detail, box=box, title=title)
+        return figure(self, pairs=pairs, detail=detail, box=box, title=title, motions=motions, frames=frames)
 
     # ---- the hierarchy ---------------------------------------------------------------------
     def _fresh(self, build: bool, merge: bool) -> bool:

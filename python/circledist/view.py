@@ -19,6 +19,9 @@ has ``VERTEX_BUDGET / n - 2`` points (a closed rim repeats its first, a gap foll
 ``FULL_LIMIT`` shapes only outlines are drawn (no faces, no sweeps: the legend says so) and the
 names are carried by one marker per shape instead of by every vertex. Coordinates are sent as
 float32, the precision WebGL draws them in.
+
+Shapes given motions are animated by _view_motion.py, which draws each time with these parts,
+geometry and traces (the moving shapes count once per frame in the rule above).
 """
 
 from __future__ import annotations
@@ -45,6 +48,7 @@ VERTEX_BUDGET = 250_000  # outline vertices of the whole figure, shared among it
 MIN_RIM, MAX_RIM = 8, 64  # points on one closed rim (a circle's; arcs and curves as many)
 FULL_LIMIT = 2_000  # up to this many shapes: faces, sweeps, every vertex named
 LEGEND_LIMIT = 40  # up to this many shapes, one trace (colour, legend entry) per shape
+FRAMES = 41  # time steps of an animation over [0, 1] (steps of 0.025)
 TUBE_SIDES = 10  # points around a tube's cross-section
 PADDING = 0.15  # the view's margin around the shapes, a fraction of its half-width
 
@@ -74,6 +78,8 @@ class _Part:
     names: list
     values: list
     sweep: np.ndarray
+    label: str | None = None  # the input's name for all the rows (a batch's), if it has one
+    batch: tuple = ()  # the batch shape the rows came from (C order), where label is set
 
     def __len__(self) -> int:
         return len(self.names)
@@ -92,7 +98,7 @@ def _shape_part(name: str, shape) -> _Part:
         trailing = a.shape[a.ndim - TRAILING_DIMS[field] :] if TRAILING_DIMS[field] else ()
         values.append(np.broadcast_to(a, batch + trailing).reshape((count,) + trailing))
     names = [name] if batch == () else [f"{name}[{i}]" for i in range(count)]
-    return _Part(kind, names, values[:-1], values[-1])
+    return _Part(kind, names, values[:-1], values[-1], name, batch)
 
 
 def _parts_of(shapes) -> tuple[list, object, list]:
@@ -109,7 +115,8 @@ def _parts_of(shapes) -> tuple[list, object, list]:
                 np.asarray(e.fields[f], np.float64).reshape((rows,) + np.shape(e.fields[f])[e.count is not None :])
                 for f in fields + [_SWEEP]
             ]
-            parts.append(_Part(e.kind, e.element_names(), values[:-1], values[-1].reshape(rows)))
+            batch = () if e.count is None else (rows,)
+            parts.append(_Part(e.kind, e.element_names(), values[:-1], values[-1].reshape(rows), e.name, batch))
         pairs = [(q["a"], q["b"]) for q in shapes.queries if q.get("b") is not None]
         return parts, shapes.shape, list(dict.fromkeys(pairs))
     if isinstance(shapes, Scene):
@@ -521,10 +528,11 @@ def _pair_traces(go, closest: list, origin: np.ndarray) -> list:
     ]
 
 
-def _closest(pairs, resolve) -> list:
-    out = []
+def _named_pairs(pairs, resolve) -> list:
+    """The pairs checked: (index, name a, name b, shape a, shape b) each."""
     if isinstance(pairs, (str, bytes)) or not isinstance(pairs, Sequence):
         raise TypeError(f"figure: pairs must be a sequence of (name, name) pairs, got {type(pairs).__name__}")
+    out = []
     for i, pair in enumerate(pairs):
         if isinstance(pair, (str, bytes)) or not isinstance(pair, Sequence) or len(pair) != 2:
             raise TypeError(f"figure: pairs[{i}] must be a pair of shape names, got {pair!r}")
@@ -534,10 +542,16 @@ def _closest(pairs, resolve) -> list:
                 shapes.append(resolve(name))
             except (KeyError, TypeError):
                 raise ValueError(f"figure: pairs[{i}]: no shape named {name!r}") from None
-        r = _core.closest_points(*shapes)
-        out.append(
-            (pair[0], pair[1], float(r.distance), np.asarray(r.point_a, np.float64), np.asarray(r.point_b, np.float64))
-        )
+        out.append((i, pair[0], pair[1], *shapes))
+    return out
+
+
+def _closest(named: list) -> list:
+    """Each checked pair's closest points: (name a, name b, distance, point a, point b)."""
+    out = []
+    for _, a, b, shape_a, shape_b in named:
+        r = _core.closest_points(shape_a, shape_b)
+        out.append((a, b, float(r.distance), np.asarray(r.point_a, np.float64), np.asarray(r.point_b, np.float64)))
     return out
 
 
@@ -577,6 +591,88 @@ def rim_points(count: int) -> int:
     return int(rim) if rim >= MIN_RIM else 0
 
 
+def _rescaled(parts: list, closest: list, scale: float):
+    """The parts and closest points in units of scale (the distances' labels stay as they are)."""
+    if scale == 1:
+        return parts, closest
+    parts = [_Part(p.kind, p.names, _scaled(p.kind, p.values, scale), p.sweep / scale) for p in parts]
+    return parts, [(a, b, d, p / scale, q / scale) for a, b, d, p, q in closest]
+
+
+def _rim(detail, count: int) -> int:
+    """Points on a closed rim: detail, checked, or the reduced-detail rule's for count shapes."""
+    if detail is None:
+        return rim_points(count)
+    if isinstance(detail, (bool, float)) or not isinstance(detail, (int, np.integer)) or detail < 3:
+        raise ValueError(f"figure: detail must be an integer >= 3 (points on a rim), got {detail!r}")
+    return int(detail)
+
+
+def _box(box, scale: float, parts: list, closest: list):
+    """The view's corners (in units of scale): the box given, checked, or around the shapes."""
+    if box is None:
+        return _view_box(parts, closest)
+    try:
+        lo, hi = (np.asarray(c, np.float64).reshape(3) / scale for c in box)
+    except (TypeError, ValueError):
+        raise ValueError(f"figure: box must be two 3-vectors (lower and upper corners), got {box!r}") from None
+    if not (np.isfinite(lo).all() and np.isfinite(hi).all() and (lo < hi).all()):
+        raise ValueError(f"figure: box must be finite, its lower corner below its upper one, got {box!r}")
+    return lo, hi
+
+
+def _options(count: int, rim: int, origin: np.ndarray) -> dict:
+    """What is drawn of count shapes (the reduced-detail rule) with rim points on a rim."""
+    full = count <= FULL_LIMIT
+    return {"hover": full, "sweeps": full, "faces": full, "outlines": rim > 0, "origin": origin}
+
+
+def _draw(go, parts: list, rim: int, lo, hi, options: dict, per_shape: bool, k: int = 0, note: str = ""):
+    """(traces, k): the parts' traces, a trace group (a colour, a legend entry) per shape or,
+    merged, per kind; k counts the groups drawn so far (their colours), note ends a kind's label."""
+    import plotly.colors
+
+    colours = plotly.colors.qualitative.Plotly
+    traces = []
+    rim = max(rim, 2)  # the markers' places: a point on each shape
+    for part in parts if per_shape else _merged(parts):
+        geometry = _geometry(part, rim, lo, hi)
+        if per_shape:
+            groups = [(np.array([i]), part.names[i]) for i in range(len(part))]
+        else:
+            label = f"{part.kind} \u00d7 {len(part)}{note}"
+            if not options["outlines"]:
+                label += " (a marker each)"
+            elif not options["sweeps"] and part.sweep.any():
+                label += " (sweeps not drawn)"
+            groups = [(np.arange(len(part)), label)]
+        for rows, label in groups:
+            traces += _traces(go, part, geometry, rows, label, colours[k % len(colours)], options)
+            k += 1
+    return traces, k
+
+
+def _laid_out(go, traces: list, title, lo, hi, origin: np.ndarray, scale: float, bottom: int = 0):
+    """The figure of the traces: the view's cube, the axes' titles saying the unit and origin."""
+    unit = "" if scale == 1 else f" (\u00d7 {scale:.0e})"
+    axes = {}
+    for i, axis in enumerate("xyz"):
+        shift = "" if origin[i] == 0 else f" \u2212 {origin[i]:.6g}"
+        axes[f"{axis}axis"] = {
+            "range": [float(lo[i] - origin[i]), float(hi[i] - origin[i])],
+            "title": f"{axis}{shift}{unit}",
+        }
+    fig = go.Figure(data=traces)
+    fig.update_layout(
+        title=title,
+        # The camera a little nearer than plotly's default: the cube's margin is empty space.
+        scene={**axes, "aspectmode": "cube", "camera": {"eye": {"x": 1.15, "y": 1.15, "z": 0.85}}},
+        legend={"itemsizing": "constant"},
+        margin={"l": 0, "r": 0, "t": 40 if title else 10, "b": bottom},
+    )
+    return fig
+
+
 def figure(
     shapes,
     *,
@@ -584,6 +680,8 @@ def figure(
     detail: int | None = None,
     box: tuple[ArrayLike, ArrayLike] | None = None,
     title: str | None = None,
+    motions: Mapping[str, _core.Motion] | None = None,
+    frames: int | None = None,
 ) -> plotly.graph_objects.Figure:
     """An interactive 3-D figure (plotly) of shapes, batches, a Scene or a scene file.
 
@@ -594,7 +692,9 @@ def figure(
     Closest points are drawn as a dashed segment labelled with the distance. Large figures are
     drawn at reduced detail (fewer points per rim; above ``circledist.view.FULL_LIMIT`` shapes
     outlines only, the names carried by one marker per shape; beyond the vertex budget one marker
-    per shape): see the guide's page on figures.
+    per shape): see the guide's page on figures. Shapes given motions are animated over t in
+    [0, 1]: a time slider and a play button, the pairs' closest points at every time, and the
+    time at which each pair with a moving shape first touches (`first_contact`) marked.
 
     Needs plotly (``pip install 'circledist[view]'``). In Jupyter the returned figure displays
     inline; ``fig.write_html(path)`` writes a page that opens in any browser.
@@ -616,6 +716,15 @@ def figure(
         origins and the closest points.
     title : str, optional
         The figure's title; default: a scene file's description, else none.
+    motions : mapping of str to Motion, optional
+        Shapes that move, by name: a shape's name (``ring``, ``beads[1]``) or a batch's
+        (``beads``: the batch moves by the motion, a batch of motions broadcasting to the batch's
+        shape). The figure gets one frame per time step over [0, 1] and one at each pair's first
+        contact; the view holds the shapes at every time; shapes without a motion are drawn once.
+        The moving shapes count once per frame in the reduced-detail rule.
+    frames : int, optional
+        Time steps of the animation over [0, 1], both ends included (at least 2); default
+        ``circledist.view.FRAMES``. Without motions there is no animation.
 
     Returns
     -------
@@ -628,9 +737,11 @@ def figure(
     ImportError
         When plotly is not installed (the message says what to install).
     TypeError
-        When `shapes` is none of the inputs above, or `pairs` not pairs of names.
+        When `shapes` is none of the inputs above, `pairs` not pairs of names, `motions` not
+        Motions by name, or `frames` not an integer.
     ValueError
-        When a pair names no shape of `shapes`, or `detail` or `box` is invalid.
+        When a pair names no shape of `shapes`, a motion no shape, or `detail`, `box` or
+        `frames` is invalid.
 
     Examples
     --------
@@ -641,70 +752,32 @@ def figure(
     ['ring', 'rail', 'closest points', 'closest points']
     >>> fig.data[2].text[0]
     'rail – ring: distance 0.5'
+
+    A point moving towards the ring at speed 4 first touches it at t = 0.5:
+
+    >>> fig = cd.figure({"ring": cd.Circle([0, 0, 0], [0, 0, 1], 1.0), "probe": cd.Point([3, 0, 0])},
+    ...                 motions={"probe": cd.Motion(translation=[-4, 0, 0])}, pairs=[("probe", "ring")], frames=5)
+    >>> len(fig.frames), [step.label for step in fig.layout.sliders[0].steps]
+    (5, ['0', '0.25', '0.5 contact', '0.75', '1'])
     """
     go = _plotly()
-    import plotly.colors
+    from . import _view_motion  # beside this module, which it draws with
 
     parts, resolve, file_pairs = _parts_of(shapes)
-    closest = _closest(file_pairs if pairs is None else pairs, resolve)
-    scale = _scale(parts, closest)
-    if scale != 1:  # drawn in units of scale; the distances' labels stay as they are
-        parts = [_Part(p.kind, p.names, _scaled(p.kind, p.values, scale), p.sweep / scale) for p in parts]
-        closest = [(a, b, d, p / scale, q / scale) for a, b, d, p, q in closest]
-    count = sum(len(p) for p in parts)
-    if detail is None:
-        rim = rim_points(count)
-    elif isinstance(detail, (bool, float)) or not isinstance(detail, (int, np.integer)) or detail < 3:
-        raise ValueError(f"figure: detail must be an integer >= 3 (points on a rim), got {detail!r}")
-    else:
-        rim = int(detail)
-    if box is None:
-        lo, hi = _view_box(parts, closest)
-    else:
-        try:
-            lo, hi = (np.asarray(c, np.float64).reshape(3) / scale for c in box)
-        except (TypeError, ValueError):
-            raise ValueError(f"figure: box must be two 3-vectors (lower and upper corners), got {box!r}") from None
-        if not (np.isfinite(lo).all() and np.isfinite(hi).all() and (lo < hi).all()):
-            raise ValueError(f"figure: box must be finite, its lower corner below its upper one, got {box!r}")
-    full = count <= FULL_LIMIT
-    origin = _origin(lo, hi)
-    options = {"hover": full, "sweeps": full, "faces": full, "outlines": rim > 0, "origin": origin}
-    rim = max(rim, 2)  # the markers' places: a point on each shape
-    colours = plotly.colors.qualitative.Plotly
-    traces, k = [], 0
-    per_shape = count <= LEGEND_LIMIT
-    for part in parts if per_shape else _merged(parts):
-        geometry = _geometry(part, rim, lo, hi)
-        if per_shape:
-            groups = [(np.array([i]), part.names[i]) for i in range(len(part))]
-        else:
-            label = f"{part.kind} \u00d7 {len(part)}"
-            if not options["outlines"]:
-                label += " (a marker each)"
-            elif not options["sweeps"] and part.sweep.any():
-                label += " (sweeps not drawn)"
-            groups = [(np.arange(len(part)), label)]
-        for rows, label in groups:
-            traces += _traces(go, part, geometry, rows, label, colours[k % len(colours)], options)
-            k += 1
-    traces += _pair_traces(go, closest, origin)
+    named = _named_pairs(file_pairs if pairs is None else pairs, resolve)
     if title is None and isinstance(shapes, SceneFile) and shapes.description:
         title = shapes.description.split("\n")[0]
-    unit = "" if scale == 1 else f" (\u00d7 {scale:.0e})"
-    axes = {}
-    for i, axis in enumerate("xyz"):
-        shift = "" if origin[i] == 0 else f" \u2212 {origin[i]:.6g}"
-        axes[f"{axis}axis"] = {
-            "range": [float(lo[i] - origin[i]), float(hi[i] - origin[i])],
-            "title": f"{axis}{shift}{unit}",
-        }
-    fig = go.Figure(data=traces)
-    fig.update_layout(
-        title=title,
-        # The camera a little nearer than plotly's default: the cube's margin is empty space.
-        scene={**axes, "aspectmode": "cube", "camera": {"eye": {"x": 1.15, "y": 1.15, "z": 0.85}}},
-        legend={"itemsizing": "constant"},
-        margin={"l": 0, "r": 0, "t": 40 if title else 10, "b": 0},
-    )
-    return fig
+    steps = _view_motion.frame_count(frames)
+    movers = _view_motion.movers(parts, motions)
+    if movers:
+        return _view_motion.animated(go, parts, named, movers, steps, detail, box, title)
+    closest = _closest(named)
+    scale = _scale(parts, closest)
+    parts, closest = _rescaled(parts, closest, scale)
+    count = sum(len(p) for p in parts)
+    rim = _rim(detail, count)
+    lo, hi = _box(box, scale, parts, closest)
+    origin = _origin(lo, hi)
+    traces, _ = _draw(go, parts, rim, lo, hi, _options(count, rim, origin), count <= LEGEND_LIMIT)
+    traces += _pair_traces(go, closest, origin)
+    return _laid_out(go, traces, title, lo, hi, origin, scale)

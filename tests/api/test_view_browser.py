@@ -45,10 +45,9 @@ def coloured(image: np.ndarray) -> np.ndarray:
     return image.max(axis=2) - image.min(axis=2) > 40
 
 
-def ring_page(path) -> None:
-    """An annulus seen from straight above (orthographic), nothing else drawn: no axes, legend,
-    title or toolbar, the plot filling the window."""
-    fig = cd.figure({"ring": cd.Annulus([0, 0, 0], [0, 0, 1], 0.6, 1.0)})
+def top_view(fig) -> None:
+    """The figure seen from straight above (orthographic), nothing else drawn: no axes, legend
+    or title, the plot filling the window."""
     hidden = {"visible": False}
     fig.update_layout(
         width=SIZE,
@@ -66,6 +65,12 @@ def ring_page(path) -> None:
             },
         },
     )
+
+
+def ring_page(path) -> None:
+    """An annulus seen from straight above, nothing else drawn (no toolbar either)."""
+    fig = cd.figure({"ring": cd.Annulus([0, 0, 0], [0, 0, 1], 0.6, 1.0)})
+    top_view(fig)
     fig.write_html(path, include_plotlyjs=True, config={"displayModeBar": False})
 
 
@@ -125,3 +130,35 @@ def test_the_demo_page_draws_every_shape_without_errors(browser, tmp_path):
     assert any(any(t.startswith("cable \u2013 ring: distance ") for t in text) for text in pairs)
     mask = coloured(pixels(browser.png()))
     assert mask.mean() > 0.02, "a blank page"
+
+
+def test_an_animated_page_moves_its_moving_shape(browser, tmp_path):
+    """A ring sliding from left to right below a disk at rest, seen from above: the page draws
+    without errors and holds the figure's frames; stepping to the last frame (Plotly.animate)
+    moves the ring's pixels from the left half to the right one and leaves the disk's alone."""
+    shapes = {"disk": cd.Disk([0, 1.2, 0], [0, 0, 1], 0.5), "ring": cd.Annulus([-1.5, -0.9, 0], [0, 0, 1], 0.3, 0.5)}
+    fig = cd.figure(shapes, motions={"ring": cd.Motion(translation=[3, 0, 0])}, frames=6)
+    top_view(fig)
+    page = tmp_path / "motion.html"
+    fig.write_html(page, include_plotlyjs=True, auto_play=False, config={"displayModeBar": False})
+    browser.open(page)
+    assert browser.console_errors() == []
+    frames = browser.run(
+        "return document.querySelector('.js-plotly-plot')._transitionData._frames.map(f => [f.name, f.traces]);"
+    )
+    assert frames == [[f.name, list(f.traces)] for f in fig.frames]
+    before = coloured(pixels(browser.png()))
+    result = browser.animate(fig.frames[-1].name)
+    assert result == fig.frames[-1].name
+    assert browser.console_errors() == []
+    after = coloured(pixels(browser.png()))
+    # The scene's middle row: the disk (y = 1.2) is drawn above it, the ring (y = -0.9) below.
+    rows = np.nonzero(before.any(axis=1))[0]
+    middle = (rows.min() + rows.max()) // 2
+    assert np.array_equal(before[:middle], after[:middle]), "the disk at rest moved"
+    centre = SIZE // 2
+    left_before, right_before = before[middle:, :centre].sum(), before[middle:, centre:].sum()
+    left_after, right_after = after[middle:, :centre].sum(), after[middle:, centre:].sum()
+    assert left_before > 1000 and right_before == 0, (left_before, right_before)
+    assert right_after > 1000 and left_after == 0, (left_after, right_after)
+    assert abs(right_after - left_before) < 0.1 * left_before  # the same ring, moved
