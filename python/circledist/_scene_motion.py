@@ -247,9 +247,7 @@ class MotionQueries:
         parts = []
         for gnum in np.unique(group):
             sel = np.flatnonzero(group == gnum)
-            contact = _core.first_contact(
-                shape, self._group_list[gnum].batch(row[sel]), motion, None, within=within
-            )
+            contact = _core.first_contact(shape, self._group_list[gnum].batch(row[sel]), motion, None, within=within)
             times[sel] = np.asarray(contact.time, dtype=np.float64)
             parts.append((sel, contact))
         reached = np.flatnonzero(np.isfinite(times))
