@@ -417,6 +417,12 @@ BAD = [
     ),
     (
         "first_contact against the scene without a motion",
+        _motion_query(a="tip", effects=["first_contact"]),
+        "$.queries[0]",
+        "missing field 'motion' (the motion of 'a'), which first_contact needs",
+    ),
+    (
+        "motion_b without b",
         _motion_query(a="tip", effects=["first_contact"], motion_b={}),
         "$.queries[0].motion_b",
         "not expected: motion_b moves 'b', and the query has no 'b'",

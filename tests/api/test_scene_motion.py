@@ -222,3 +222,23 @@ def test_the_docstring_example_runs_and_lists_the_signature():
     assert listed == [p for p in inspect.signature(method).parameters if p != "self"]
     for title in ("Returns", "Raises", "Examples"):
         assert re.search(rf"^{title}\n-+$", text, flags=re.M)
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.longdouble])
+def test_shapes_of_other_dtypes_are_measured_as_added(dtype):
+    # Half the scene's shapes in another dtype (groups of their own): the answers are still brute
+    # force's, each pair measured as circledist.first_contact measures it.
+    rng = np.random.default_rng(21)
+    scene, shapes = cd.Scene(), []
+    for i in range(60):
+        kind = KINDS[i % len(KINDS)]
+        s = random_shape(kind, rng, np.zeros(3), sweep=i % 3 == 0)
+        if i % 2:
+            s = type(s).from_arrays({k: np.asarray(v).astype(dtype) for k, v in s.to_arrays().items()})
+        scene.add(f"s{i}", s)
+        shapes.append(scene[f"s{i}"])
+    reached = 0
+    for motion in motions(rng, "Disk", np.zeros(3)).values():
+        shape = random_shape("Segment", rng, np.zeros(3), spread=5.0)
+        reached += len(check_same_as_brute_force(scene, shapes, shape, motion, 0.2, 100))
+    assert reached > 0
