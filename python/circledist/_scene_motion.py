@@ -6,7 +6,9 @@ within ``within`` of. docs/derivations/motion.md gives the motion, the reach and
 
 - A rotating shape: every point x stays at |x(t) - (c + t T)| = |x - c| <= reach(shape, c) from
   the moving center (the rotation keeps |R (x - c)| = |x - c|), so the whole motion lies in the
-  capsule of radius reach about the segment [c, c + T].
+  capsule of radius reach about the segment [c, c + T]. Where the shape is small beside its
+  distance from the axis (a ball (m, rho) holding it, rho + |T| / 2 < reach), the torus about
+  the circle m turns on, moved by T / 2, of tube radius rho + |T| / 2, is taken instead.
 - A translating shape (no rotation): its point x(t) = x + t T is within |T| / 2 of x + T / 2, so
   the motion lies in the shape moved by T / 2 with |T| / 2 added to its sweep (lines and rays
   too); for a bounded shape whose travel exceeds its size, the capsule of radius rho about
@@ -137,6 +139,20 @@ def sweep_volume(shape, motion, scale: float):
     if np.any(w):
         r = reach(shape, c)
         size = max(scale, _size(shape), float(np.abs(c).max()) + r + travel)
+        # The ball (m, rho) holding the shape turns about the axis: its center stays on a circle
+        # about the axis, which the translation carries within |T| / 2 of its place at t = 1/2.
+        m_ = _anchor(shape)
+        rho = reach(shape, m_)
+        tube = rho + 0.5 * travel
+        if tube < r:
+            n = w / np.linalg.norm(w)
+            v = m_ - c
+            h = float(np.dot(v, n))
+            center = c + h * n + 0.5 * T
+            radius = float(np.linalg.norm(v - h * n))
+            if radius > 0:
+                return _core.Circle(center, n, radius, sweep=tube + _PAD * size)
+            return _core.Point(center, sweep=tube + _PAD * size)
         return _capsule(c, T, r + _PAD * size)
     size = max(scale, _size(shape), float(np.abs(T).max()))
     if shape.kind not in ("Line", "Ray"):

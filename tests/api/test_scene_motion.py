@@ -242,3 +242,45 @@ def test_shapes_of_other_dtypes_are_measured_as_added(dtype):
         shape = random_shape("Segment", rng, np.zeros(3), spread=5.0)
         reached += len(check_same_as_brute_force(scene, shapes, shape, motion, 0.2, 100))
     assert reached > 0
+
+
+def test_a_shape_on_a_turning_wheel_equals_brute_force():
+    # A small shape far from the axis it turns about (the torus about its orbit bounds the
+    # motion), with and without a translation along the way, through a dense scene.
+    rng = np.random.default_rng(31)
+    scene, shapes = random_scene(41, 150, np.zeros(3), spread=9.0)
+    reached = 0
+    for trial in range(12):
+        axis = rng.normal(size=3)
+        shape = random_shape(KINDS[trial % 7], rng, np.zeros(3), spread=0.0, sweep=trial % 2 == 0)
+        center = rng.normal(size=3) * 7
+        travel = rng.normal(size=3) * (0 if trial < 4 else 3)
+        motion = cd.Motion(
+            translation=travel, rotation=axis * rng.uniform(0.5, 7) / np.linalg.norm(axis), center=center
+        )
+        reached += len(check_same_as_brute_force(scene, shapes, shape, motion, 0.3, 200))
+    assert reached > 20
+
+
+@pytest.mark.parametrize("travel", [0.0, 3.0])
+def test_a_ball_on_a_wheel_reaches_the_points_near_its_path(travel):
+    # A ball of radius 0.5 at 5 from the axis it screws about, and points scattered at 0.3 to 0.7
+    # from its center's path (so about half of them are reached, many just within): the torus about
+    # the orbit must keep every one brute force reaches.
+    rng = np.random.default_rng(int(travel) + 51)
+    n = rng.normal(size=3)
+    n /= np.linalg.norm(n)
+    u = np.cross(n, rng.normal(size=3))
+    u /= np.linalg.norm(u)
+    c = rng.normal(size=3) * 3
+    ball = cd.Point(c + 5 * u, sweep=0.5)
+    motion = cd.Motion(translation=travel * n + 0.3 * u, rotation=5.0 * n, center=c)
+    times = rng.uniform(0, 1, 300)
+    path = ball.moved(motion, times).p
+    offsets = rng.normal(size=(300, 3))
+    offsets *= rng.uniform(0.3, 0.7, (300, 1)) / np.linalg.norm(offsets, axis=1, keepdims=True)
+    scene = cd.Scene()
+    scene.extend("p", cd.Point(path + offsets))
+    shapes = [scene[name] for name in scene.names]
+    got = check_same_as_brute_force(scene, shapes, ball, motion, 0.0, 300)
+    assert 60 < len(got) < 240
