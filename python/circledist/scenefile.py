@@ -75,6 +75,7 @@ from ._scene_format import (  # noqa: F401
     _gigabytes,
     _json_index,
     _memory_budget,
+    _motion_as_written,
     _open_regular,
     _refused_rows,
     _roles,
@@ -305,7 +306,8 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
     queries : iterable of dict, optional
         As in the JSON format: ``{"a": ..., "b": ..., "effects": [...], "d": ..., "k": ...}``,
         with ``"motion"`` / ``"motion_b"`` (``{"translation": [x, y, z], "rotation": ...,
-        "center": ...}``) for the effects first_contact and closest_approach.
+        "center": ...}``, or a single `Motion`) for the effects first_contact and
+        closest_approach.
     description : str, optional
         Free text.
 
@@ -339,8 +341,9 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
 
 def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str) -> None:
     entries, columns = _entries_of(shapes)
-    # The queries as a reader gets them back (JSON's types: lists, floats, string keys).
-    queries = json.loads(json.dumps([dict(q) for q in queries]))
+    # The queries as a reader gets them back (JSON's types: lists, floats, string keys; a
+    # circledist.Motion, as read_scene gives it, as its three vectors).
+    queries = json.loads(json.dumps([dict(q) for q in queries], default=_json_motion))
     if path.endswith(".json"):
         data = {"format": FORMAT, "version": _version_of(entries, queries)}
         if description:
@@ -385,6 +388,13 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
     _write_atomically(
         path, lambda f: np.savez(f, **arrays), check=None if fine else lambda tmp: scene_from_npz(tmp, path)
     )
+
+
+def _json_motion(value):
+    """json.dumps' default: a single circledist.Motion as a file states it; anything else is not JSON."""
+    if isinstance(value, _core.Motion) and value.batch_shape == ():
+        return _motion_as_written(value)
+    raise TypeError(f"write_scene: a query holds {type(value).__name__}, which is not JSON (nor a single Motion)")
 
 
 def _version_of(entries: list, queries: list) -> int:

@@ -242,3 +242,15 @@ def test_the_guide_example_loads_and_reaches_its_shapes():
     pair, against_scene = cli.answer(scene)
     assert 0 < pair.answers["first_contact"]["time"] < 1
     assert [x["name"] for x in against_scene.answers["first_contact"]] == ["fixture"]
+
+
+def test_write_scene_takes_motions_as_read(tmp_path):
+    # The queries as read_scene gives them (a Motion each) are written as their vectors.
+    scene = read(SCENE)
+    queries = [{k: v for k, v in q.items() if v is not None} for q in scene.queries]
+    path = tmp_path / "again.json"
+    sf.write_scene(str(path), scene.shapes, queries)
+    assert sf.read_scene(str(path)).queries_as_written() == scene.queries_as_written()
+    bad = [{"a": "tip", "b": "ring", "motion": cd.Motion(translation=np.zeros((2, 3))), "effects": ["first_contact"]}]
+    with pytest.raises(TypeError, match="write_scene: a query holds Motion"):
+        sf.write_scene(str(path), scene.shapes, bad)
