@@ -128,7 +128,9 @@ def test_the_culling_passes_only_shapes_near_the_motion(monkeypatch):
     ]
     for motion in cases:
         calls.clear()
+        cd.reset_stats()
         got = scene.first_contact(shape, motion, within=0.5, k=10)
+        assert cd.stats()["culled"] == scene.last_stats["culled"] > 250
         evaluated = sum(int(np.prod(b.batch_shape)) for b in calls)
         assert evaluated == scene.last_stats["tested"]
         assert scene.last_stats["culled"] == len(scene) - evaluated
