@@ -4,7 +4,7 @@ and schema tests)."""
 
 SCENE = {
     "format": "circledist-scene",
-    "version": 3,  # it holds an annulus (and an arc)
+    "version": 4,  # it holds motions (and an annulus, and an arc)
     "description": "test scene",
     "shapes": [
         {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
@@ -39,13 +39,30 @@ SCENE = {
         {"a": "cable", "b": "ring", "effects": ["distance"]},
         {"a": "hook", "b": "ring", "effects": ["intersects", "distance", "closest_points"]},
         {"a": "washer", "b": "rail", "effects": ["intersects", "distance", "closest_points"]},
+        {"a": "tip", "b": "ring", "motion": {"translation": [0, 1, -2]}, "effects": ["first_contact"], "d": 0.1},
+        {
+            "name": "swinging probe",
+            "a": "probe",
+            "motion": {"translation": [-3, 0, 0], "rotation": [0, 0, 3.0], "center": [1.5, 0, 0]},
+            "effects": ["first_contact"],
+            "k": 2,
+        },
     ],
 }
 
 
-HEAD = {"format": "circledist-scene", "version": 3}  # the current version (annuli need it)
+HEAD = {"format": "circledist-scene", "version": 4}  # the current version (motions need it)
 HEAD1 = {"format": "circledist-scene", "version": 1}
 HEAD2 = {"format": "circledist-scene", "version": 2}
+HEAD3 = {"format": "circledist-scene", "version": 3}
+SHAPES = SCENE["shapes"]
+
+
+def _motion_query(**query):
+    """A version-4 document of the scene's shapes with one query."""
+    return {**HEAD, "shapes": SHAPES, "queries": [query]}
+
+
 # (label, file content, the JSON path, what was expected): each must appear in the one-line message.
 BAD = [
     ("not json", "{", "", "not valid JSON: Expecting property name"),
@@ -62,19 +79,19 @@ BAD = [
         "no version",
         {"format": "circledist-scene", "shapes": SCENE["shapes"]},
         "$",
-        "missing field 'version' (this circledist reads versions 1 to 3)",
+        "missing field 'version' (this circledist reads versions 1 to 4)",
     ),
     (
         "newer version",
-        {**HEAD, "version": 4, "shapes": SCENE["shapes"]},
+        {**HEAD, "version": 5, "shapes": SCENE["shapes"]},
         "$.version",
-        "version 4 is newer than this circledist reads (versions 1 to 3): upgrade circledist",
+        "version 5 is newer than this circledist reads (versions 1 to 4): upgrade circledist",
     ),
     (
         "bad version",
         {**HEAD, "version": "1", "shapes": SCENE["shapes"]},
         "$.version",
-        'expected one of 1, 2, 3, got "1"',
+        'expected one of 1, 2, 3, 4, got "1"',
     ),
     (
         "arc in a version 1 file",
@@ -363,7 +380,8 @@ BAD = [
         "scene effect on a pair",
         {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "b": "rail", "effects": ["nearest"]}]},
         "$.queries[0].effects",
-        "expected effects against a pair (with 'b'): intersects, within, distance, " 'closest_points; got "nearest"',
+        "expected effects against a pair (with 'b'): intersects, within, distance, "
+        'closest_points, first_contact, closest_approach; got "nearest"',
     ),
     (
         "within without d",
@@ -378,5 +396,104 @@ BAD = [
         {**HEAD, "shapes": SCENE["shapes"], "queries": [{"a": "ring", "effects": ["nearest"], "k": 0}]},
         "$.queries[0].k",
         "expected an integer >= 1, got 0",
+    ),
+    (
+        "a motion in a version 3 file",
+        {**HEAD3, "shapes": SHAPES[:1], "queries": [{"a": "ring", "motion": {}, "effects": ["first_contact"]}]},
+        "$.queries[0].motion",
+        "a query's motion needs format version 4 or later, the file says version 3",
+    ),
+    (
+        "a motion effect in a version 3 file",
+        {**HEAD3, "shapes": SHAPES[:1], "queries": [{"a": "ring", "effects": ["first_contact"]}]},
+        "$.queries[0].effects",
+        "effect 'first_contact' needs format version 4 or later, the file says version 3",
+    ),
+    (
+        "first_contact without a motion",
+        _motion_query(a="tip", b="ring", effects=["first_contact"]),
+        "$.queries[0]",
+        "missing field 'motion' (the motion of 'a') or 'motion_b' (of 'b'), which first_contact needs",
+    ),
+    (
+        "first_contact against the scene without a motion",
+        _motion_query(a="tip", effects=["first_contact"]),
+        "$.queries[0]",
+        "missing field 'motion' (the motion of 'a'), which first_contact needs",
+    ),
+    (
+        "motion_b without b",
+        _motion_query(a="tip", effects=["first_contact"], motion_b={}),
+        "$.queries[0].motion_b",
+        "not expected: motion_b moves 'b', and the query has no 'b'",
+    ),
+    (
+        "a motion no effect uses",
+        _motion_query(a="tip", b="ring", motion={"translation": [1, 0, 0]}, effects=["distance"]),
+        "$.queries[0].motion",
+        "not expected: only first_contact and closest_approach take a motion",
+    ),
+    (
+        "a motion of b no effect uses",
+        _motion_query(a="tip", b="ring", motion_b={"translation": [1, 0, 0]}, effects=["closest_points"]),
+        "$.queries[0].motion_b",
+        "not expected: only first_contact and closest_approach take a motion",
+    ),
+    (
+        "motion effects beside static ones",
+        _motion_query(a="tip", b="ring", motion={}, effects=["first_contact", "distance"]),
+        "$.queries[0].effects",
+        "expected first_contact without distance: the motion effects are a query of their own",
+    ),
+    (
+        "a rotating line",
+        _motion_query(a="rail", b="ring", motion={"rotation": [0, 0, 1]}, effects=["first_contact"]),
+        "$.queries[0].motion.rotation",
+        "expected no rotation: 'rail' is a line, which cannot rotate",
+    ),
+    (
+        "a rotating line as b",
+        _motion_query(a="ring", b="rail", motion_b={"rotation": [0, 1, 0]}, effects=["first_contact"]),
+        "$.queries[0].motion_b.rotation",
+        "expected no rotation: 'rail' is a line, which cannot rotate",
+    ),
+    (
+        "an unknown motion field",
+        _motion_query(a="tip", b="ring", motion={"speed": [1, 0, 0]}, effects=["first_contact"]),
+        "$.queries[0].motion.speed",
+        "unknown field (allowed: translation, rotation, center)",
+    ),
+    (
+        "a motion's vector of 2",
+        _motion_query(a="tip", b="ring", motion={"translation": [1, 0]}, effects=["first_contact"]),
+        "$.queries[0].motion.translation",
+        "expected a vector of 3 numbers [x, y, z], got [1, 0]",
+    ),
+    (
+        "a motion that is no object",
+        _motion_query(a="tip", b="ring", motion=[1, 0, 0], effects=["first_contact"]),
+        "$.queries[0].motion",
+        "expected a motion: an object with translation, rotation and center",
+    ),
+    (
+        "an infinite motion",
+        '{"format": "circledist-scene", "version": 4, "shapes": [{"name": "p", "kind": "point", "p": [0, 0, 0]}, '
+        '{"name": "q", "kind": "point", "p": [1, 0, 0]}], "queries": [{"a": "p", "b": "q", '
+        '"motion": {"center": [0, 1e999, 0]}, "effects": ["first_contact"]}]}',
+        "$.queries[0].motion.center[1]",
+        "expected a finite number (within a double's range), got",
+    ),
+    (
+        "k on a pair's first_contact",
+        _motion_query(a="tip", b="ring", motion={}, effects=["first_contact"], k=2),
+        "$.queries[0].k",
+        "not expected: only nearest and first_contact against the scene take k",
+    ),
+    (
+        "closest_approach against the scene",
+        _motion_query(a="tip", motion={}, effects=["closest_approach"]),
+        "$.queries[0].effects",
+        "expected effects against the rest of the scene (without 'b'): nearest, within, intersects, "
+        'first_contact; got "closest_approach"',
     ),
 ]

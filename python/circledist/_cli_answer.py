@@ -36,6 +36,13 @@ def answer(scene: SceneFile) -> list[Query]:
                         "param_b": [float(x) for x in r.param_b],
                         "unique": bool(r.unique),
                     }
+                elif e == "first_contact":
+                    within = 0.0 if q.d is None else q.d
+                    q.answers[e] = _moving(_core.first_contact(A, B, q.motion, q.motion_b, within=within))
+                elif e == "closest_approach":
+                    import circledist
+
+                    q.answers[e] = _moving(circledist.closest_approach(A, B, q.motion, q.motion_b))
         else:
             for e in q.effects:
                 if e == "nearest":
@@ -44,4 +51,22 @@ def answer(scene: SceneFile) -> list[Query]:
                     q.answers[e] = world.within(q.a, q.d)
                 elif e == "intersects":
                     q.answers[e] = world.within(q.a, 0.0)
+                elif e == "first_contact":
+                    hits = world.first_contact(q.a, q.motion, within=0.0 if q.d is None else q.d, k=q.k)
+                    q.answers[e] = [{"name": h.name, **_moving(h)} for h in hits]
     return queries
+
+
+def _moving(r) -> dict:
+    """A contact (or closest approach) of single shapes as plain numbers: time (inf where there
+    is none), distance, the closest points and their parameters (NaN where there is none),
+    unique."""
+    return {
+        "time": float(r.time),
+        "distance": float(r.distance),
+        "point_a": [float(x) for x in r.point_a],
+        "point_b": [float(x) for x in r.point_b],
+        "param_a": [float(x) for x in r.param_a],
+        "param_b": [float(x) for x in r.param_b],
+        "unique": bool(r.unique),
+    }

@@ -7,6 +7,7 @@ from __future__ import annotations
 import textwrap
 from dataclasses import dataclass, field
 from importlib import resources
+from typing import Any
 
 from .scene import MAX_CONTROL_POINTS
 from .scenefile import KINDS, SCHEMA_RESOURCE, SceneFile, SceneFileError, read_scene
@@ -14,9 +15,9 @@ from .scenefile import KINDS, SCHEMA_RESOURCE, SceneFile, SceneFileError, read_s
 # Bad files raise this; the message names the file, the JSON path (or .npz array) and what was expected.
 SceneError = SceneFileError
 
-_FORMAT_TEMPLATE = """scene files, format version 3 (version 2: without annuli; version 1: without arcs either); JSON Schema: {schema}
+_FORMAT_TEMPLATE = """scene files, format version 4 (version 3: without motions; 2: without annuli; 1: without arcs); JSON Schema: {schema}
 
-  {{"format": "circledist-scene", "version": 1, "description": "optional text",
+  {{"format": "circledist-scene", "version": 4, "description": "optional text",
    "shapes": [
      {{"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1,
       "sweep": 0.05}},
@@ -28,7 +29,11 @@ _FORMAT_TEMPLATE = """scene files, format version 3 (version 2: without annuli; 
       "d": 0.6}},
      {{"a": "beads[2]", "effects": ["nearest"], "k": 2}},
      {{"a": "ring", "effects": ["within"], "d": 0.5}},
-     {{"effects": ["pairs_within"], "d": 0.25}}]}}
+     {{"effects": ["pairs_within"], "d": 0.25}},
+     {{"a": "beads[0]", "b": "ring", "motion": {{"translation": [0, 0, -3]}},
+      "effects": ["first_contact"], "d": 0.1}},
+     {{"a": "ring", "motion": {{"rotation": [0, 3.1416, 0], "center": [1, 0, 0]}},
+      "effects": ["first_contact"], "k": 2}}]}}
 
   "format" and "version" are required (a file without them is refused: add the two fields).
 {kinds}
@@ -38,6 +43,13 @@ _FORMAT_TEMPLATE = """scene files, format version 3 (version 2: without annuli; 
   the pair a-b, each computed with only the work it needs. Without "b", against the rest of the
   scene: nearest ("k", default 1), within ("d"), intersects. {{"effects": ["pairs_within"],
   "d": ...}} lists every pair of shapes within d.
+  Motions (version 4): "motion": {{"translation": [x, y, z], "rotation": [x, y, z], "center":
+  [x, y, z]}} (each default 0) moves a over t in [0, 1] (x -> center + R(t rotation)(x - center)
+  + t translation), "motion_b" moves b. first_contact: the earliest t at which a comes within
+  "d" (default 0) of b, or of the scene's shapes ("k" of them, earliest first); closest_approach
+  (pairs, where circledist has it): the least distance over the motion. A query with motion asks
+  only for these; a line or ray cannot rotate. --plot draws each moving shape at its start, its
+  contact and its end.
 
   .npz scenes (numpy.savez; circledist.write_scene writes both forms) hold the same content:
   format (0-d str), version (0-d int), description (0-d str, optional), shapes (1-d str: the
@@ -85,6 +97,9 @@ def format_help() -> str:
 
 @dataclass
 class Query:
+    """A query as the command line answers it; motion and motion_b (circledist.Motion or None)
+    move a and b for the effects first_contact and closest_approach."""
+
     label: str
     a: str | None
     b: str | None
@@ -92,6 +107,8 @@ class Query:
     d: float | None = None
     k: int = 1
     answers: dict = field(default_factory=dict)
+    motion: Any = None
+    motion_b: Any = None
 
 
 def scene_queries(scene: SceneFile) -> list[Query]:
@@ -102,7 +119,18 @@ def scene_queries(scene: SceneFile) -> list[Query]:
             label = q["name"] or "pairs within"
         else:
             label = q["name"] or (f"{q['a']} ~ {q['b']}" if q["b"] is not None else f"{q['a']} ~ scene")
-        out.append(Query(label=label, a=q["a"], b=q["b"], effects=q["effects"], d=q["d"], k=q["k"] or 1))
+        out.append(
+            Query(
+                label=label,
+                a=q["a"],
+                b=q["b"],
+                effects=q["effects"],
+                d=q["d"],
+                k=q["k"] or 1,
+                motion=q.get("motion"),
+                motion_b=q.get("motion_b"),
+            )
+        )
     return out
 
 

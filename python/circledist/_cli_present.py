@@ -13,6 +13,7 @@ import numpy as np
 
 from ._cli_load import Query
 from .scenefile import _SWEEP, KINDS, SceneFile, SceneFileError, _write_atomically
+from ._scene_format import _motion_as_written
 
 PICTURE_LIMIT = 2000  # shapes --plot draws at most
 
@@ -40,6 +41,10 @@ def table(scene: SceneFile, queries: list[Query]) -> str:
                 text = f"{_fmt(v['distance'])} between {_point(v['point_a'])} and {_point(v['point_b'])}" + (
                     "" if v["unique"] else " (not unique)"
                 )
+            elif e in ("first_contact", "closest_approach") and q.b is not None:
+                text = _moment(v) if math.isfinite(v["time"]) else "none"
+            elif e == "first_contact":  # against the scene: the shapes reached, earliest first
+                text = "; ".join(f"{x['name']} {_moment(x)}" for x in v) or "none"
             elif e == "nearest":
                 text = ", ".join(f"{x['name']} {_fmt(x['distance'])}" for x in v) or "-"
             elif e == "pairs_within":
@@ -50,6 +55,9 @@ def table(scene: SceneFile, queries: list[Query]) -> str:
                 "within": f"within {_fmt(q.d) if q.d is not None else ''}",
                 "nearest": f"nearest k={q.k}",
                 "pairs_within": f"pairs within {_fmt(q.d) if q.d is not None else ''}",
+                "first_contact": "first_contact"
+                + (f" within {_fmt(q.d)}" if q.d else "")
+                + (f" k={q.k}" if q.b is None else ""),
             }.get(e, e)
             rows.append((q.label, effect, text))
     widths = [max(len(r[i]) for r in rows) for i in range(2)]
@@ -63,6 +71,14 @@ def table(scene: SceneFile, queries: list[Query]) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _moment(v: dict) -> str:
+    """A contact or closest approach: its time, its distance and the closest points then."""
+    return (
+        f"at t={_fmt(v['time'])}: {_fmt(v['distance'])} between {_point(v['point_a'])} and {_point(v['point_b'])}"
+        + ("" if v["unique"] else " (not unique)")
+    )
+
+
 def as_json(scene: SceneFile, queries: list[Query]) -> str:
     out = {"scene": scene.path, "answers": []}
     for q in queries:
@@ -73,8 +89,11 @@ def as_json(scene: SceneFile, queries: list[Query]) -> str:
             item["b"] = q.b
         if q.d is not None:
             item["d"] = q.d
-        if "nearest" in q.effects:
+        if "nearest" in q.effects or (q.b is None and "first_contact" in q.effects):
             item["k"] = q.k
+        for key in ("motion", "motion_b"):
+            if getattr(q, key) is not None:
+                item[key] = _motion_as_written(getattr(q, key))
         item.update(q.answers)
         out["answers"].append(item)
     return json.dumps(_json_numbers(out), indent=2, allow_nan=False) + "\n"
@@ -262,20 +281,103 @@ def _scaled(kind: str, values: list, scale: float) -> list:
     ]
 
 
-def picture(scene: SceneFile, queries: list[Query]) -> bytes:
-    """The scene drawn in 3D (PNG bytes): shapes, and a segment between each pair of closest points."""
+def _library_spec(shape) -> tuple:
+    """(kind, the kind's field values in the table's order, sweep) of a single library shape."""
+    kind = shape.kind.lower()
+    return kind, [np.asarray(getattr(shape, f), float) for f in KINDS[kind][1]], float(shape.sweep)
+
+
+def _moment_times(q: Query) -> list:
+    """(time, word) of the moments a query with motion is drawn at: its start, its contact or
+    closest approach (the first shape reached, against the scene), its end."""
+    times = [(0.0, "start")]
+    for e, word in (("first_contact", "contact"), ("closest_approach", "closest approach")):
+        v = q.answers.get(e)
+        if isinstance(v, list):  # first_contact against the scene
+            v = v[0] if v else None
+        if v is not None and math.isfinite(v["time"]):
+            times.append((v["time"], word))
+    times.append((1.0, "end"))
+    return times
+
+
+def _poses(scene: SceneFile, queries: list[Query]) -> list:
+    """(shape name, label, kind, values, sweep, word) of each moving shape at each moment of its
+    query (_moment_times): the moved shape, to be drawn beside the scene's."""
+    out = []
+    for q in queries:
+        for key, ref in (("motion", q.a), ("motion_b", q.b)):
+            motion = getattr(q, key)
+            if motion is None:
+                continue
+            shape = scene.shape(ref)
+            for t, word in _moment_times(q):
+                kind, values, sweep = _library_spec(shape.moved(motion, t))
+                out.append((ref, f"{ref} t={_fmt(t)} ({word})", kind, values, sweep, word))
+    return out
+
+
+def _contact_points(queries: list[Query]) -> list:
+    """The closest points of the motion effects' answers where there is a contact (or an
+    approach): drawn as the closest points are."""
+    out = []
+    for q in queries:
+        for e in ("first_contact", "closest_approach"):
+            v = q.answers.get(e)
+            for r in v if isinstance(v, list) else [v] if v is not None else []:
+                if math.isfinite(r["time"]):
+                    out.append(r)
+    return out
+
+
+def _draw(ax, kind, values, sweep, color, label, name, lo, hi, alpha_factor=1.0, style="-"):
+    """One shape (a point, a clipped line or ray, a segment, a curve or a filled face)."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    width = 1.6 + (4.0 if sweep > 0 else 0.0)
+    alpha = (0.55 if sweep > 0 else 1.0) * alpha_factor
+    if kind == "point":
+        ax.scatter(*values[0], color=color, s=30 + (120 if sweep else 0), label=label, alpha=alpha_factor)
+        anchor = values[0]
+    elif kind in ("line", "ray"):
+        seg = _clip(*values, lo, hi, kind == "ray")
+        if seg is None:
+            return
+        ax.plot(*seg.T, color=color, lw=width, alpha=alpha, ls=style, label=label)
+        anchor = seg.mean(axis=0)
+    elif kind == "segment":
+        seg = np.array(values, float)
+        ax.plot(*seg.T, color=color, lw=width, alpha=alpha, ls=style, solid_capstyle="round", label=label)
+        anchor = seg.mean(axis=0)
+    else:
+        curves = _CURVES[kind](values, 120)
+        if kind in _FILLED:
+            face = Poly3DCollection([_face(curves)], facecolor=color, alpha=0.35 * alpha_factor, edgecolor="none")
+            ax.add_collection3d(face)
+        for j, curve in enumerate(curves):
+            ax.plot(*curve.T, color=color, lw=width, alpha=alpha, ls=style, label=label if j == 0 else None)
+        anchor = curves[0][len(curves[0]) // 2]
+    ax.text(*anchor, f" {name}", color=color, fontsize=9 if alpha_factor == 1 else 7, alpha=max(alpha_factor, 0.5))
+
+
+def figure_of(scene: SceneFile, queries: list[Query]):
+    """The scene drawn in 3D (a matplotlib figure): shapes, a segment between each pair of closest
+    points, and each moving shape of a query with motion at its start, its contact (or closest
+    approach) and its end, lighter than the scene's shapes and labelled with its time."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     specs = _specs(scene)
     closest = [q.answers["closest_points"] for q in queries if "closest_points" in q.answers]
+    closest += _contact_points(queries)
+    poses = _poses(scene, queries)
     # Drawn in units of `scale` (a power of ten) where the scene's lengths are far from 1: the
     # projection's arithmetic on coordinates near 1e308 overflows, and near 1e-300 underflows.
-    scale = _scale(specs, closest)
+    scale = _scale({**specs, **{p[1]: p[2:5] for p in poses}}, closest)
     specs = {name: (kind, _scaled(kind, values, scale), sweep / scale) for name, (kind, values, sweep) in specs.items()}
+    poses = [(ref, label, k, _scaled(k, v, scale), sweep / scale, word) for ref, label, k, v, sweep, word in poses]
     closest = [
         {
             "distance": r["distance"],
@@ -284,9 +386,9 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
         }
         for r in closest
     ]
-    # The view: every bounded shape and every closest point, plus the lines' origins.
+    # The view: every bounded shape (moved ones too) and every closest point, plus the lines' origins.
     pts = []
-    for kind, values, _ in specs.values():
+    for kind, values, _ in list(specs.values()) + [p[2:5] for p in poses]:
         pts += _outline(kind, values)
     for r in closest:
         pts += [r["point_a"], r["point_b"]]
@@ -301,33 +403,15 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     fig = plt.figure(figsize=(8, 7), dpi=110)
     ax = fig.add_subplot(projection="3d")
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    color_of = {}
     for i, (name, (k, values, sweep)) in enumerate(specs.items()):
-        c = colors[i % len(colors)]
-        width = 1.6 + (4.0 if sweep > 0 else 0.0)
+        c = color_of[name] = colors[i % len(colors)]
         name = _short(name, 40)
         label = name + (f" (sweep {sweep * scale:g})" if sweep > 0 else "")
-        alpha = 0.55 if sweep > 0 else 1.0
-        if k == "point":
-            ax.scatter(*values[0], color=c, s=30 + (120 if sweep else 0), label=label)
-            anchor = values[0]
-        elif k in ("line", "ray"):
-            seg = _clip(*values, lo, hi, k == "ray")
-            if seg is None:
-                continue
-            ax.plot(*seg.T, color=c, lw=width, alpha=alpha, label=label)
-            anchor = seg.mean(axis=0)
-        elif k == "segment":
-            seg = np.array(values, float)
-            ax.plot(*seg.T, color=c, lw=width, alpha=alpha, solid_capstyle="round", label=label)
-            anchor = seg.mean(axis=0)
-        else:
-            curves = _CURVES[k](values, 120)
-            if k in _FILLED:
-                ax.add_collection3d(Poly3DCollection([_face(curves)], facecolor=c, alpha=0.35, edgecolor="none"))
-            for j, curve in enumerate(curves):
-                ax.plot(*curve.T, color=c, lw=width, alpha=alpha, label=label if j == 0 else None)
-            anchor = curves[0][len(curves[0]) // 2]
-        ax.text(*anchor, f" {name}", color=c, fontsize=9)
+        _draw(ax, k, values, sweep, c, label, name, lo, hi)
+    for ref, label, k, values, sweep, word in poses:
+        strength, style = (0.8, "-") if word in ("contact", "closest approach") else (0.3, ":")
+        _draw(ax, k, values, sweep, color_of[ref], None, _short(label, 60), lo, hi, strength, style)
     for r in closest:
         seg = np.array([r["point_a"], r["point_b"]])
         ax.plot(*seg.T, color="crimson", lw=1.4, ls="--")
@@ -342,8 +426,17 @@ def picture(scene: SceneFile, queries: list[Query]) -> bytes:
     ax.set_ylabel("y" + unit)
     ax.set_zlabel("z" + unit)
     title = _short(scene.description.split("\n")[0] if scene.description else os.path.basename(scene.path), 100)
-    ax.set_title(title + "\n(dashed: closest points)", fontsize=10)
+    moving = "; dotted: moving shapes at start and end" if poses else ""
+    ax.set_title(title + f"\n(dashed: closest points{moving})", fontsize=10)
     ax.legend(loc="upper left", fontsize=8)
+    return fig
+
+
+def picture(scene: SceneFile, queries: list[Query]) -> bytes:
+    """The scene drawn in 3D (PNG bytes): figure_of's figure."""
+    import matplotlib.pyplot as plt
+
+    fig = figure_of(scene, queries)
     buf = io.BytesIO()
     fig.savefig(buf, format="png", bbox_inches="tight")
     plt.close(fig)

@@ -22,13 +22,15 @@ from .scene import ROLE_TRAILING_DIMS
 
 
 FORMAT = "circledist-scene"
-VERSION = 3
+VERSION = 4
 # The versions this circledist reads: every one up to VERSION. Version 2 added the kind "arc",
-# version 3 the kind "annulus"; a file says the first version that holds what it holds
-# (write_scene writes that one, so that a scene without arcs stays readable by a circledist that
-# reads version 1, and one without annuli by one that reads version 2).
-VERSIONS = (1, 2, 3)
+# version 3 the kind "annulus", version 4 a query's motions ("motion", "motion_b") and the
+# effects that use them; a file says the first version that holds what it holds (write_scene
+# writes that one, so that a scene without arcs stays readable by a circledist that reads
+# version 1, one without annuli by one that reads version 2, one without motions by version 3).
+VERSIONS = (1, 2, 3, 4)
 KIND_SINCE = {"arc": 2, "annulus": 3}
+MOTION_SINCE = 4
 SCHEMA_RESOURCE = "scene.schema.json"  # inside the circledist package
 
 # kind -> (class name, {field: role}), read from the module's one table of fields (src/shapes.hpp);
@@ -44,8 +46,11 @@ def _roles(kind: str) -> dict:
     return {**KINDS[kind][1], _SWEEP: _SWEEP_ROLE}
 
 
-PAIR_EFFECTS = ("intersects", "within", "distance", "closest_points")
-SCENE_EFFECTS = ("nearest", "within", "intersects")
+PAIR_EFFECTS = ("intersects", "within", "distance", "closest_points", "first_contact", "closest_approach")
+SCENE_EFFECTS = ("nearest", "within", "intersects", "first_contact")
+# The effects of moving shapes: a query asking for them carries a motion, and asks for no other.
+MOTION_EFFECTS = ("first_contact", "closest_approach")
+MOTION_FIELDS = ("translation", "rotation", "center")
 _REFERENCE = re.compile(r"^([^\[\]/]+)(?:\[(0|[1-9][0-9]*)\])?$")
 _NPZ_TOP = ("format", "version", "description", "shapes", "queries")
 
@@ -142,7 +147,8 @@ class ShapeEntry:
 @dataclass
 class SceneFile:
     """A validated scene file: its entries in file order, its queries (dicts with the keys name,
-    a, b, effects, d, k; absent ones None) and its description."""
+    a, b, motion, motion_b, effects, d, k; absent ones None; motion and motion_b a
+    circledist.Motion: the motion of a, of b) and its description."""
 
     path: str
     description: str
@@ -163,8 +169,12 @@ class SceneFile:
         return {e.name: e.shape() for e in self.entries}
 
     def queries_as_written(self) -> list:
-        """The queries as a file states them (no absent keys): for write_scene."""
-        return [{k: v for k, v in q.items() if v is not None} for q in self.queries]
+        """The queries as a file states them (no absent keys; motions as their three vectors):
+        for write_scene."""
+        return [
+            {k: (_motion_as_written(v) if isinstance(v, _core.Motion) else v) for k, v in q.items() if v is not None}
+            for q in self.queries
+        ]
 
     def lookup(self, reference: str):
         """(entry, index) for 'name' (index None) or 'name[i]'; KeyError if there is no such shape."""
@@ -213,6 +223,12 @@ class SceneFile:
         world = Scene()
         world._insert(names, parts, distinct=True)  # a validated file's names: strings, each of its own
         return world
+
+
+def _motion_as_written(motion) -> dict:
+    """A single motion as a file states it: its three vectors as lists of floats."""
+    arrays = motion.to_arrays()
+    return {f: [float(x) for x in arrays[f]] for f in MOTION_FIELDS}
 
 
 def _error(path: str, where: str, message: str) -> SceneFileError:

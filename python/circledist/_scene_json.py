@@ -141,5 +141,5 @@ def _scene_from_json(data: dict, file: str) -> SceneFile:
         if "count" in s:
             _check_shape_count(total, int(s["count"]), file, f"$.shapes[{i}].count (shape {s['name']!r})")
     entries = _entries_from_json(shapes, file)
-    queries = _check_queries(data.get("queries", []), entries, file)
+    queries = _check_queries(data.get("queries", []), entries, file, version=data["version"])
     return SceneFile(file, data.get("description", ""), entries, queries)

@@ -229,7 +229,7 @@ def _scene_from_npz(arrays: "_NpzArrays", file: str) -> SceneFile:
             error = _validator().first_error({"queries": specs}, {"properties": schema()["properties"]})
             if error:
                 raise _error(file, f"{where}: {error[0]}", error[1])
-            queries = _check_queries(specs, entries, file, prefix=f"{where}: ")
+            queries = _check_queries(specs, entries, file, prefix=f"{where}: ", version=version)
         except RecursionError:
             raise _nested_too_deeply(specs, file, f"{where}: $.queries") from None
     return SceneFile(file, description, entries, queries)

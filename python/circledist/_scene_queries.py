@@ -7,14 +7,26 @@ from typing import Iterable
 
 from . import _core
 from ._schema import member, shown
-from ._scene_format import PAIR_EFFECTS, SCENE_EFFECTS, _REFERENCE, _error, _finite_array, _text
+from ._scene_format import (
+    MOTION_EFFECTS,
+    MOTION_FIELDS,
+    MOTION_SINCE,
+    PAIR_EFFECTS,
+    SCENE_EFFECTS,
+    VERSION,
+    _REFERENCE,
+    _error,
+    _finite_array,
+    _text,
+)
 
 
 # ------------------------------------------------------------------------------------------
 # queries (the same in both file types)
 # ------------------------------------------------------------------------------------------
-def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> list:
-    """Semantic checks of schema-valid queries; returns them as dicts with every key."""
+def _check_queries(specs: list, entries: list, file: str, prefix: str = "", version: int = VERSION) -> list:
+    """Semantic checks of schema-valid queries of a file of `version`; returns them as dicts with
+    every key (a motion as a circledist.Motion)."""
     by_name = {e.name: e for e in entries}
     supported = {tuple(p) for p in _core._query_kinds()}
     # Entries and shapes of each kind, for the checks against the whole scene: counted once (a
@@ -59,6 +71,7 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
                 )
             refs[key] = (entry, index)
         effects = spec["effects"]
+        _check_motion_version(spec, effects, version, fail)
         if "pairs_within" in effects:
             if effects != ["pairs_within"]:
                 raise fail("effects", "expected pairs_within alone (it is a query of its own)")
@@ -98,13 +111,14 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
                         f"expected shapes circledist has a query between: "
                         f"none exists between a {a_entry.class_name} and a {kb}",
                     )
-            if "k" in spec and "nearest" not in effects:
-                raise fail("k", "not expected: only nearest takes k")
+            if "k" in spec and "nearest" not in effects and ("first_contact" not in effects or "b" in spec):
+                raise fail("k", "not expected: only nearest and first_contact against the scene take k")
+        motions = _motions(spec, effects, refs, file, base, fail)
         needs_d = "within" in effects or "pairs_within" in effects
         if needs_d and "d" not in spec:
             raise fail(None, "missing field 'd' (the distance of within / pairs_within)")
-        if not needs_d and "d" in spec:
-            raise fail("d", "not expected: only within and pairs_within take a distance")
+        if not needs_d and "d" in spec and "first_contact" not in effects:
+            raise fail("d", "not expected: only within, pairs_within and first_contact take a distance")
         d = None
         if "d" in spec:
             d = float(_finite_array(spec["d"], file, member(base, "d")))
@@ -113,12 +127,88 @@ def _check_queries(specs: list, entries: list, file: str, prefix: str = "") -> l
                 "name": spec.get("name"),
                 "a": spec.get("a"),
                 "b": spec.get("b"),
+                "motion": motions.get("motion"),
+                "motion_b": motions.get("motion_b"),
                 "effects": list(effects),
                 "d": d,
                 "k": int(spec["k"]) if "k" in spec else None,
             }
         )
     return out
+
+
+def _check_motion_version(spec: dict, effects: list, version, fail) -> None:
+    """Motions and the effects that use them are refused in a file older than MOTION_SINCE."""
+    if version >= MOTION_SINCE:
+        return
+    for key in ("motion", "motion_b"):
+        if key in spec:
+            raise fail(
+                key,
+                f"a query's motion needs format version {MOTION_SINCE} or later, the file says version {int(version)}",
+            )
+    for e in effects:
+        if e in MOTION_EFFECTS:
+            raise fail(
+                "effects",
+                f"effect {e!r} needs format version {MOTION_SINCE} or later, the file says version {int(version)}",
+            )
+
+
+def _motions(spec: dict, effects: list, refs: dict, file: str, base: str, fail) -> dict:
+    """The query's motions ("motion" moves a, "motion_b" moves b) as circledist.Motion, checked
+    against its effects: the motion effects ask for a motion and for no static effect beside
+    them, and a motion is given only where they are asked for."""
+    moving = [key for key in ("motion", "motion_b") if key in spec]
+    asked = [e for e in effects if e in MOTION_EFFECTS]
+    if not asked:
+        for key in moving:
+            raise fail(key, f"not expected: only {' and '.join(MOTION_EFFECTS)} take a motion")
+        return {}
+    if len(asked) != len(effects):
+        static = [e for e in effects if e not in MOTION_EFFECTS]
+        raise fail(
+            "effects",
+            f"expected {' and '.join(asked)} without {', '.join(static)}: the motion effects are a "
+            "query of their own (ask for the others in another query)",
+        )
+    if "motion_b" in spec and "b" not in spec:
+        raise fail("motion_b", "not expected: motion_b moves 'b', and the query has no 'b'")
+    if not moving:
+        wanted = "'motion' (the motion of 'a')" + (" or 'motion_b' (of 'b')" if "b" in spec else "")
+        raise fail(None, f"missing field {wanted}, which {asked[0]} needs")
+    if "closest_approach" in asked:
+        import circledist
+
+        if not hasattr(circledist, "closest_approach"):
+            raise fail(
+                "effects",
+                "closest_approach needs circledist.closest_approach, which this circledist does not have: "
+                "upgrade circledist",
+            )
+    out = {}
+    for key in moving:
+        where = member(base, key)
+        fields = {f: _finite_array(spec[key].get(f, [0, 0, 0]), file, member(where, f)) for f in MOTION_FIELDS}
+        entry, index = refs["a" if key == "motion" else "b"]
+        if entry.kind in ("line", "ray") and fields["rotation"].any():
+            shape = entry.name if index is None else f"{entry.name}[{index}]"
+            raise _error(
+                file,
+                member(where, "rotation"),
+                f"expected no rotation: {shape!r} is a {entry.kind}, which cannot rotate (its points reach "
+                "infinitely far from the motion's center); give it a translation only",
+            )
+        out[key] = _core.Motion(**fields)
+    return out
+
+
+def _queries_version(queries) -> int:
+    """The oldest version that holds these queries (as a file states them)."""
+    for q in queries:
+        if "motion" in q or "motion_b" in q or any(e in MOTION_EFFECTS for e in q.get("effects", ())):
+            return MOTION_SINCE
+    return 1
 
 
 def _check_names(names: Iterable[str], file: str, where) -> None:

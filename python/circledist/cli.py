@@ -43,7 +43,8 @@ def _parser() -> argparse.ArgumentParser:
         prog="circledist",
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Answer the queries of a circledist scene file (JSON or .npz): intersects, within,\n"
-        "distance, closest_points, nearest, pairs_within. Without a file: the shipped demo\n"
+        "distance, closest_points, nearest, pairs_within, first_contact, closest_approach. Without\n"
+        "a file: the shipped demo\n"
         f"scene, drawn to {DEMO_PICTURE}.",
         epilog=format_help(),
     )
@@ -57,7 +58,12 @@ def _parser() -> argparse.ArgumentParser:
         "when PATH is omitted or '-'); a number beyond a double's range (an infinite "
         "distance) is written as null",
     )
-    p.add_argument("--plot", metavar="PATH", help="draw the scene and its closest points to PATH (PNG, matplotlib)")
+    p.add_argument(
+        "--plot",
+        metavar="PATH",
+        help="draw the scene, its closest points and its moving shapes (at start, contact and end) "
+        "to PATH (PNG, matplotlib)",
+    )
     p.add_argument("--no-plot", action="store_true", help="do not draw the demo scene")
     p.add_argument(
         "--html",

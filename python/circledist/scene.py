@@ -31,6 +31,7 @@ import numpy as np
 
 from . import _core
 from ._batch import ROLE_TRAILING_DIMS, TRAILING_DIMS  # noqa: F401 (ROLE_TRAILING_DIMS: scenefile.py)
+from ._scene_motion import MotionQueries, SceneContact  # noqa: F401 (SceneContact: its answers)
 
 __all__ = ["Scene"]
 
@@ -222,7 +223,7 @@ def _limit(owner: str, d) -> float:
     return _core._distance_limit(owner, d)
 
 
-class Scene:
+class Scene(MotionQueries):
     """Named shapes of any kinds (each a single shape) and culled queries over them.
 
     A bounding-volume hierarchy (the C++ broadphase of `circledist.pairs_within`) skips the

@@ -7,13 +7,13 @@ the package (``circledist/scene.schema.json``, see ``schema_text()``); the ``.np
 the same content as arrays, for scenes of millions of shapes. ``python -m circledist --help``
 summarizes both; README.md shows their use.
 
-Format version 3 (version 2 without annuli, version 1 without arcs either). The version goes up with any
-change to what a valid
-file may hold or to what it means (a new kind, field, effect or array, a changed default); a
-reader refuses files of a newer version with a message saying so instead of misreading them, and
-keeps reading older ones. A file of an older version may hold only what that version holds (an
-arc in a version 1 file, an annulus in a version 2 one, is refused); `write_scene` writes the oldest version
-that holds the scene.
+Format version 4 (version 3 without motions, version 2 without annuli either, version 1 without
+arcs either). The version goes up with any change to what a valid file may hold or to what it
+means (a new kind, field, effect or array, a changed default); a reader refuses files of a newer
+version with a message saying so instead of misreading them, and keeps reading older ones. A file
+of an older version may hold only what that version holds (an arc in a version 1 file, an annulus
+in a version 2 one, a query's motion in a version 3 one, is refused); `write_scene` writes the
+oldest version that holds the scene.
 Files must say ``"format": "circledist-scene"`` and ``"version"``: without them a JSON file is
 refused (the message says which two fields to add), so that a file is never read under a version
 it was not written for.
@@ -75,6 +75,7 @@ from ._scene_format import (  # noqa: F401
     _gigabytes,
     _json_index,
     _memory_budget,
+    _motion_as_written,
     _open_regular,
     _refused_rows,
     _roles,
@@ -86,6 +87,7 @@ from ._scene_format import (  # noqa: F401
 from ._scene_queries import (  # noqa: F401
     _check_names,
     _check_queries,
+    _queries_version,
 )
 from ._scene_json import (  # noqa: F401
     _MAX_DEPTH,
@@ -133,9 +135,8 @@ def read_scene(path: str, text: Optional[str] = None) -> SceneFile:
     """Reads and validates a scene file, JSON or ``.npz``.
 
     The format (``circledist --help``, and the JSON Schema ``scene.schema.json`` in the package):
-    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need, or 3, which annuli need), the
-    shapes (single
-    or batches) and the queries.
+    ``"format": "circledist-scene"``, ``"version": 1`` (or 2, which arcs need, 3, which annuli
+    need, or 4, which a query's motions need), the shapes (single or batches) and the queries.
 
     Parameters
     ----------
@@ -303,7 +304,10 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
         shape i is ``name[i]`` in queries and answers); fields that hold one value for all are
         written once.
     queries : iterable of dict, optional
-        As in the JSON format: ``{"a": ..., "b": ..., "effects": [...], "d": ..., "k": ...}``.
+        As in the JSON format: ``{"a": ..., "b": ..., "effects": [...], "d": ..., "k": ...}``,
+        with ``"motion"`` / ``"motion_b"`` (``{"translation": [x, y, z], "rotation": ...,
+        "center": ...}``, or a single `Motion`) for the effects first_contact and
+        closest_approach.
     description : str, optional
         Free text.
 
@@ -337,10 +341,11 @@ def write_scene(path: str, shapes, queries: Iterable[Mapping] = (), description:
 
 def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str) -> None:
     entries, columns = _entries_of(shapes)
-    # The queries as a reader gets them back (JSON's types: lists, floats, string keys).
-    queries = json.loads(json.dumps([dict(q) for q in queries]))
+    # The queries as a reader gets them back (JSON's types: lists, floats, string keys; a
+    # circledist.Motion, as read_scene gives it, as its three vectors).
+    queries = json.loads(json.dumps([dict(q) for q in queries], default=_json_motion))
     if path.endswith(".json"):
-        data = {"format": FORMAT, "version": _file_version(kind for _, kind, _, _ in entries)}
+        data = {"format": FORMAT, "version": _version_of(entries, queries)}
         if description:
             data["description"] = description
         data["shapes"] = []
@@ -361,7 +366,7 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
         return
     arrays = {
         "format": np.array(FORMAT),
-        "version": np.array(_file_version(e[1] for e in entries), dtype=np.int64),
+        "version": np.array(_version_of(entries, queries), dtype=np.int64),
         "shapes": np.array([e[0] for e in entries], dtype=str),
     }
     if description:
@@ -383,6 +388,18 @@ def _write_scene(path: str, shapes, queries: Iterable[Mapping], description: str
     _write_atomically(
         path, lambda f: np.savez(f, **arrays), check=None if fine else lambda tmp: scene_from_npz(tmp, path)
     )
+
+
+def _json_motion(value):
+    """json.dumps' default: a single circledist.Motion as a file states it; anything else is not JSON."""
+    if isinstance(value, _core.Motion) and value.batch_shape == ():
+        return _motion_as_written(value)
+    raise TypeError(f"write_scene: a query holds {type(value).__name__}, which is not JSON (nor a single Motion)")
+
+
+def _version_of(entries: list, queries: list) -> int:
+    """The oldest version that holds the shapes' kinds and the queries."""
+    return max(_file_version(kind for _, kind, _, _ in entries), _queries_version(queries))
 
 
 def _item_encoder():

@@ -75,9 +75,10 @@ def test_schema_ships_in_the_package_and_is_valid_draft_2020_12():
     jsonschema.Draft202012Validator.check_schema(schema)
     assert schema == sf.schema()
     assert schema["properties"]["format"] == {"const": "circledist-scene"}
-    assert schema["properties"]["version"] == {"enum": list(sf.VERSIONS)} and sf.VERSIONS == (1, 2, 3) == (
+    assert schema["properties"]["version"] == {"enum": list(sf.VERSIONS)} and sf.VERSIONS == (1, 2, 3, 4) == (
         1,
         2,
+        3,
         sf.VERSION,
     )
     assert set(schema["$defs"]["shape"]["properties"]["kind"]["enum"]) == set(sf.KINDS)
@@ -693,11 +694,11 @@ BAD_NPZ = [
     ("wrong format", {**GOOD_NPZ, "format": np.array("other")}, "array 'format'", 'expected "circledist-scene"'),
     (
         "newer version",
-        {**GOOD_NPZ, "version": np.array(4)},
+        {**GOOD_NPZ, "version": np.array(5)},
         "array 'version'",
-        "version 4 is newer than this circledist reads (versions 1 to 3): upgrade circledist",
+        "version 5 is newer than this circledist reads (versions 1 to 4): upgrade circledist",
     ),
-    ("version 0", {**GOOD_NPZ, "version": np.array(0)}, "array 'version'", "expected one of 1, 2, 3, got 0"),
+    ("version 0", {**GOOD_NPZ, "version": np.array(0)}, "array 'version'", "expected one of 1, 2, 3, 4, got 0"),
     ("float version", {**GOOD_NPZ, "version": np.array(1.0)}, "array 'version'", "expected a 0-d integer array"),
     ("missing shapes", _without("shapes"), "array 'shapes'", "missing (a 1-d string array"),
     ("unlisted kind", {**GOOD_NPZ, "shapes": np.array(["rings", "rail", "x"])}, "array 'x/kind'", "missing"),
@@ -823,7 +824,7 @@ def test_bad_files_exit_2_with_one_line_from_the_console(tmp_path):
         [sys.executable, "-m", "circledist", str(tmp_path / "old.json")], capture_output=True, text=True, timeout=120
     )
     assert (
-        'missing field \'format\': a circledist scene starts with "format": "circledist-scene", "version": 3'
+        'missing field \'format\': a circledist scene starts with "format": "circledist-scene", "version": 4'
         in r.stderr
     )
 
@@ -833,7 +834,7 @@ def test_help_documents_the_format():
     assert r.returncode == 0
     text = r.stdout
     for needle in (
-        '"format": "circledist-scene", "version": 1',
+        '"format": "circledist-scene", "version": 4',
         '"count": 3',
         "beads[2]",
         ".npz scenes",
