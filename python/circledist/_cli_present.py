@@ -135,10 +135,11 @@ def write_output(path: str, data: bytes) -> None:
 
 def page(scene: SceneFile) -> bytes:
     """The scene as one self-contained HTML page (plotly.js inside): circledist.figure of the scene
-    file, its pair queries' closest points drawn."""
+    file, its pair queries' closest points drawn and its queries' motions animated (opening at
+    t = 0: the frames play when asked, not on opening)."""
     from .view import figure
 
-    return figure(scene).to_html(include_plotlyjs=True, full_html=True).encode("utf-8")
+    return figure(scene).to_html(include_plotlyjs=True, full_html=True, auto_play=False).encode("utf-8")
 
 
 # ------------------------------------------------------------------------------------------

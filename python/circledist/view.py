@@ -101,9 +101,10 @@ def _shape_part(name: str, shape) -> _Part:
     return _Part(kind, names, values[:-1], values[-1], name, batch)
 
 
-def _parts_of(shapes) -> tuple[list, object, list]:
-    """(parts, resolve, pairs): the parts to draw; resolve(name) the single shape named so (for
-    closest points); the scene file's pairs (its queries that name two shapes), else []."""
+def _parts_of(shapes) -> tuple[list, object, list, dict]:
+    """(parts, resolve, pairs, motions): the parts to draw; resolve(name) the single shape named so
+    (for closest points); the scene file's pairs (its queries that name two shapes) and motions
+    (the shapes its queries move, each by the first query that moves it), else [] and {}."""
     if isinstance(shapes, _core.Shape):
         shapes = {shapes.kind.lower(): shapes}
     if isinstance(shapes, SceneFile):
@@ -118,9 +119,14 @@ def _parts_of(shapes) -> tuple[list, object, list]:
             batch = () if e.count is None else (rows,)
             parts.append(_Part(e.kind, e.element_names(), values[:-1], values[-1].reshape(rows), e.name, batch))
         pairs = [(q["a"], q["b"]) for q in shapes.queries if q.get("b") is not None]
-        return parts, shapes.shape, list(dict.fromkeys(pairs))
+        motions = {}
+        for q in shapes.queries:
+            for key, name in (("motion", q["a"]), ("motion_b", q.get("b"))):
+                if q.get(key) is not None:
+                    motions.setdefault(name, q[key])
+        return parts, shapes.shape, list(dict.fromkeys(pairs)), motions
     if isinstance(shapes, Scene):
-        return _scene_parts(shapes), shapes.shape, []
+        return _scene_parts(shapes), shapes.shape, [], {}
     if isinstance(shapes, Mapping):
         parts = []
         for name, shape in shapes.items():
@@ -136,7 +142,7 @@ def _parts_of(shapes) -> tuple[list, object, list]:
             cls = getattr(_core, KINDS[part.kind][0])
             return cls(*(v[i] for v in part.values), sweep=part.sweep[i])
 
-        return parts, resolve, []
+        return parts, resolve, [], {}
     raise TypeError(
         "figure: shapes must be a circledist shape, a mapping of names to shapes, a Scene or a scene file "
         f"(read_scene), got {type(shapes).__name__}"
@@ -721,7 +727,9 @@ def figure(
         (``beads``: the batch moves by the motion, a batch of motions broadcasting to the batch's
         shape). The figure gets one frame per time step over [0, 1] and one at each pair's first
         contact; the view holds the shapes at every time; shapes without a motion are drawn once.
-        The moving shapes count once per frame in the reduced-detail rule.
+        The moving shapes count once per frame in the reduced-detail rule. Default: a scene
+        file's motions (a shape its queries move, by the first query that moves it); none for
+        the other inputs.
     frames : int, optional
         Time steps of the animation over [0, 1], both ends included (at least 2); default
         ``circledist.view.FRAMES``. Without motions there is no animation.
@@ -763,12 +771,12 @@ def figure(
     go = _plotly()
     from . import _view_motion  # beside this module, which it draws with
 
-    parts, resolve, file_pairs = _parts_of(shapes)
+    parts, resolve, file_pairs, file_motions = _parts_of(shapes)
     named = _named_pairs(file_pairs if pairs is None else pairs, resolve)
     if title is None and isinstance(shapes, SceneFile) and shapes.description:
         title = shapes.description.split("\n")[0]
     steps = _view_motion.frame_count(frames)
-    movers = _view_motion.movers(parts, motions)
+    movers = _view_motion.movers(parts, file_motions if motions is None else motions)
     if movers:
         return _view_motion.animated(go, parts, named, movers, steps, detail, box, title)
     closest = _closest(named)

@@ -333,3 +333,22 @@ def test_the_motion_example_writes_its_page(tmp_path):
     assert f"tool \u2013 sensor: first contact at t = {contact.time:.4g}" in names
     assert "tool \u2013 probe: no contact for t in [0, 1]" in names
     assert contact.time in frame_times(fig)
+
+
+def test_a_scene_files_queries_move_their_shapes_by_default(tmp_path, capsys):
+    """The packaged motion example: its queries' motions animate the figure and the CLI's page.
+    The tool (a circle of radius 0.4 swept by 0.1 at z = 0.6, sliding 5 along x from x = -2.5)
+    first touches the upright fixture (a segment crossing its plane at (0, -0.2), swept by 0.15)
+    when the crossing is 0.4 + 0.1 + 0.15 from the tool's center: x^2 + 0.2^2 = 0.65^2."""
+    path = pathlib.Path(cd.__file__).parent / "scenes" / "motion.json"
+    fig = cd.figure(cd.read_scene(path))
+    touch = (math.sqrt(0.65**2 - 0.2**2) * -1 + 2.5) / 5
+    contacts = [float(s.args[0][0]) for s in fig.layout.sliders[0].steps if s.label.endswith("contact")]
+    assert any(abs(t - touch) < 1e-9 for t in contacts), (contacts, touch)
+    assert len(fig.frames) >= view.FRAMES
+    assert len(cd.figure(cd.read_scene(path), motions={}).frames) == 0  # motions={} draws it still
+    out = tmp_path / "motion.html"
+    assert cli.main([str(path), "--no-plot", "--html", str(out)]) == 0
+    page = out.read_text()
+    assert '"frames"' in page or "addFrames" in page
+    assert "Plotly.animate" not in page  # opens at t = 0: no autoplay
