@@ -530,6 +530,12 @@ void analytic_approaches() {
         check_approach(hand, q, Motion{V::Zero(), V(0, 0, 2 * pi), shift}, Motion{}, std::sqrt(0.3125), true);
     CHECK(std::abs(c.time - 2.0 / (2 * pi)) <= 1e-5);
   }
+  // Coplanar disks passing through each other: distance 0 over a stretch (not unique), found
+  // without refining the stretch (a distance 0 ends the search).
+  const Approach<double> crossing = check_approach(Disk3<double>{V(-3, 0, 0), V(0, 0, 1), 1.0},
+                                                   Disk3<double>{V(0, 0.5, 0), V(0, 0, 1), 1.0}, Motion{V(6, 0, 0)},
+                                                   Motion{}, 0.0, false);
+  CHECK(crossing.evaluations < 200);
   // NaN in, NaN out; a rotating line refused.
   CHECK(std::isnan(closest_approach(V(0, 0, std::nan("")), unit, Motion{V(1, 0, 0)}, Motion{}).time));
   bool refused = false;

@@ -290,10 +290,15 @@ def test_least_at_the_ends_and_tangential_grazes():
             cd.Point([-5, 1 + gap, 0]), RING, cd.Motion(translation=[10, 0, 0]), cd.Motion()
         )
         assert abs(c.distance - gap) <= BAR * size and abs(c.time - 0.5) <= 1e-5
+        assert c.unique is True  # one instant: its neighbourhood within the bar is the same dip
+    # A point sliding across a disk's face: distance 0 over a stretch, so not unique (though
+    # closest_points' pair is unique at any one time).
+    disk = cd.Disk([0, 0, 0], [0, 0, 1], 2.0)
+    across = cd.closest_approach(cd.Point([-0.5, 0.2, 0]), disk, cd.Motion(translation=[1, 0, 0]))
+    assert across.distance == 0.0 and across.unique is False
     # A segment sliding along a disk's face 1e-9 above it: least 1e-9 over a stretch (not unique).
-    slide = cd.closest_approach(
-        cd.Segment([-0.5, 0, 1e-9], [0.5, 0, 1e-9]), cd.Disk([0, 0, 0], [0, 0, 1], 2.0), cd.Motion(translation=[1, 0, 0])
-    )
+    segment = cd.Segment([-0.5, 0, 1e-9], [0.5, 0, 1e-9])
+    slide = cd.closest_approach(segment, disk, cd.Motion(translation=[1, 0, 0]))
     assert abs(slide.distance - 1e-9) <= BAR * 3 and slide.unique is False
 
 

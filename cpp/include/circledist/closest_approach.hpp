@@ -75,7 +75,9 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
   open.push(stretch(Real(0), d0, Real(1), d1));
   while (!open.empty()) {
     const Stretch s = open.top();
-    if (s.bound >= best - screen) break;  // and so every other one
+    // Every other stretch's bound is at least this one's; and no distance is below 0, so a
+    // distance 0 found (shapes touching or crossing) ends the search at once.
+    if (s.bound >= best - screen || best == 0) break;
     open.pop();
     const Real mid = s.t0 + (s.t1 - s.t0) / 2;
     if (!(mid > s.t0 && mid < s.t1)) {  // as fine as double's times
@@ -130,6 +132,10 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
   // short that L times its length is within a quarter of the bar (or as short as double's times).
   const Real golden = (std::sqrt(Real(5)) - 1) / 2;
   std::vector<Sample> polished;  // each least found, with the bracket it was found in
+  // A distance 0 at two times farther apart than a tangency's own stretch within the bar
+  // (about sqrt(2 delta S) / L): a stretch of contact, or two touches.
+  bool zeros = false;
+  const Real apart = std::sqrt(2 * delta * size) / speed;
   for (const Sample& m : minima) {
     Real lo = m.lo, hi = m.hi, x = m.t, fx = m.d;
     while (speed * (hi - lo) > delta / 4) {
@@ -139,6 +145,7 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
       if (!(y > lo && y < hi) || y == x) break;
       const Real fy = d(y);
       if (failed) return out;
+      zeros = zeros || (fy == 0 && fx == 0 && std::abs(y - x) > apart);
       if (fy < fx) {
         (right ? lo : hi) = x;
         x = y;
@@ -158,7 +165,7 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
   out.distance = won.d;
   // Another time as close: a polished least within the bar whose bracket is apart from the
   // winner's, or a run of candidates within the bar at both ends (a distance flat over it).
-  out.several = flat;
+  out.several = flat || zeros;
   for (const Sample& p : polished)
     if (p.d <= won.d + delta && (p.hi < won.lo || p.lo > won.hi)) out.several = true;
   return out;
