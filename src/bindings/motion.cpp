@@ -1,9 +1,10 @@
 // circledist.Motion (a batch of rigid motions, motion.hpp's Motion3) and Shape.moved: the motion's
 // fields are read and validated as shape fields are (shapes.hpp's make_field), and a moved shape
 // is the same kind rebuilt from its moved fields by its own constructor. first_contact and its
-// answer, Contact: motion.hpp's conservative advancement over the broadcast of both shapes, both
-// motions and the contact distance, each distance answered by the pair tables' kernels
-// (kernels/pairs.hpp), so that it adds no code per pair.
+// answer, Contact, and closest_approach and its answer, Approach: motion.hpp's conservative
+// advancement and closest_approach.hpp's branch and bound over the broadcast of both shapes,
+// both motions (and the contact distance), each distance answered by the pair tables' kernels
+// (kernels/pairs.hpp), so that they add no code per pair.
 #include "module.hpp"
 #include "motion_doc.hpp"
 

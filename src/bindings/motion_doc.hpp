@@ -1,6 +1,6 @@
-// The docstrings of circledist.Motion, Shape.moved, first_contact and its answer, Contact (bound
-// by motion.cpp). NumPy-style; their
-// examples run as doctests (tests/package/test_docstrings.py), and the generated stubs
+// The docstrings of circledist.Motion, Shape.moved, first_contact and its answer, Contact, and
+// closest_approach and its answer, Approach (bound by motion.cpp). NumPy-style; their examples
+// run as doctests (tests/package/test_docstrings.py), and the generated stubs
 // (python/circledist/_core.pyi) carry them. No behaviour lives here.
 #pragma once
 
