@@ -1,7 +1,10 @@
 // Rigid motions (motion.hpp): the rotation R(w) against the quaternion formula and exact quarter
 // turns, moved shapes (radii, angles and sweeps kept; a point of a shape moves onto the moved
-// shape at the same parameter), reach() against sampled points, and first_contact() against
-// analytic contact times and a dense-sampling-plus-bisection reference.
+// shape at the same parameter), reach() against sampled points, first_contact() against
+// analytic contact times and a dense-sampling-plus-bisection reference, the evaluation limit of
+// both queries, and closest_approach() against analytic least distances and a dense-sampling-
+// plus-golden-section reference.
+#include <circledist/closest_approach.hpp>
 #include <circledist/motion.hpp>
 
 #include "check.hpp"
@@ -458,6 +461,219 @@ void random_contacts() {
   CHECK(crossings >= cases / 2);
 }
 
+
+// The analytic least distances: value to the bar, the time to the bar's width in time.
+template <class A, class B>
+Approach<double> check_approach(const A& a, const B& b, const Motion& ma, const Motion& mb, double expected,
+                                bool unique) {
+  const Approach<double> c = closest_approach(a, b, ma, mb);
+  const double size = std::max(detail::motion_size(a, ma), detail::motion_size(b, mb));
+  const double delta = contact_tolerance(size);
+  CHECK(std::abs(c.distance - expected) <= delta);
+  CHECK(c.unique == unique);
+  CHECK(c.time >= 0 && c.time <= 1);
+  // The points lie on the shapes at that time, as far apart as the distance.
+  CHECK(distance(c.point_a, moved(a, ma, c.time)) <= delta);
+  CHECK(distance(c.point_b, moved(b, mb, c.time)) <= delta);
+  CHECK(std::abs((c.point_a - c.point_b).norm() - c.distance) <= delta);
+  CHECK(c.distance == distance(moved(a, ma, c.time), moved(b, mb, c.time)));
+  return c;
+}
+
+void analytic_approaches() {
+  const Circle3<double> unit{V(0, 0, 0), V(0, 0, 1), 1.0};
+  // A point passing over the ring, 2 off its axis and 1 above: least sqrt(2) at t = 0.5.
+  const Approach<double> over = check_approach(V(-3, 2, 1), unit, Motion{V(6, 0, 0)}, Motion{}, std::sqrt(2.0), true);
+  CHECK(std::abs(over.time - 0.5) <= 1e-6);
+  // 0.5 off the axis and 2 above: the least 2 twice, where the point is over the rim (x = -+sqrt(0.75)).
+  const Approach<double> twice = check_approach(V(-3, 0.5, 2), unit, Motion{V(6, 0, 0)}, Motion{}, 2.0, false);
+  CHECK(std::min(std::abs(twice.time - (3 - std::sqrt(0.75)) / 6), std::abs(twice.time - (3 + std::sqrt(0.75)) / 6)) <=
+        1e-6);
+  // The least at the start (moving away) and at the end (coming closer).
+  CHECK(check_approach(V(2, 0, 0), unit, Motion{V(3, 1, 0)}, Motion{}, 1.0, true).time == 0);
+  CHECK(check_approach(V(5, 0, 0), unit, Motion{V(-2, 0, 1)}, Motion{}, std::sqrt(5.0), true).time == 1);
+  // A tangential graze: a point along a tangent of the ring touches it at t = 0.5 only.
+  const Approach<double> graze = check_approach(V(-5, 1, 0), unit, Motion{V(10, 0, 0)}, Motion{}, 0.0, true);
+  CHECK(std::abs(graze.time - 0.5) <= 1e-6);
+  // Spinning about its own axis: at rest relative to the point (time 0, not unique).
+  const Approach<double> spin =
+      check_approach(unit, V(2.5, 0, 0), Motion{V::Zero(), V(0, 0, 8 * pi)}, Motion{}, 1.5, false);
+  CHECK(spin.time == 0 && spin.evaluations == 1);
+  // The same motion for both: at rest relative to each other.
+  const Motion both{V(1, 2, 3), V(0.4, 2, -1), V(0.5, 0, 0)};
+  CHECK(check_approach(unit, V(0, 3, 0), both, both, 2.0, false).evaluations == 1);
+  // A point at the center of a ring tumbling about a diameter: the distance 1 at every time.
+  check_approach(unit, V(0, 0, 0), Motion{V::Zero(), V(2 * pi, 0, 0)}, Motion{}, 1.0, false);
+  // Coaxial rings (every rim point at once): the smaller one rising past the larger's plane to
+  // 0.5 below... least where they are level, sqrt((1 - 0.5)^2) = 0.5, at t = 0.5.
+  const Circle3<double> small{V(0, 0, -1), V(0, 0, 1), 0.5};
+  const Approach<double> coaxial = check_approach(small, unit, Motion{V(0, 0, 2)}, Motion{}, 0.5, false);
+  CHECK(std::abs(coaxial.time - 0.5) <= 1e-6);
+  // A ring of radius 0.3 through the hole of an annulus of radii 0.5 and 1 (coaxial): least 0.2.
+  const Annulus3<double> washer{V(0, 0, 0), V(0, 0, 1), 0.5, 1.0};
+  const Circle3<double> thread{V(0, 0, -2), V(0, 0, 1), 0.3};
+  check_approach(thread, washer, Motion{V(0, 0, 4)}, Motion{}, 0.2, false);
+  // Off center by 0.1 through the hole, tilted: it still passes the hole without touching.
+  const Approach<double> through =
+      closest_approach(Circle3<double>{V(0.1, 0, -2), V(0, 0.1, 1), 0.3}, washer, Motion{V(0, 0, 4)}, Motion{});
+  CHECK(through.distance > 0.05 && through.distance < 0.2);
+  // Many turns: a ring tumbling 20 times about x past a point at radius sqrt(1.17): the least
+  // |p| - 1 whenever its plane holds the point, 40 times.
+  const V p(0, 0.6, 0.9);
+  check_approach(unit, p, Motion{V::Zero(), V(40 * pi, 0, 0)}, Motion{}, p.norm() - 1, false);
+  // 1e6 from the origin: a clock hand turning once about z past a point at radius 1.5 and
+  // height 0.25 above its plane: least sqrt(0.25 + 0.0625) at the hand's tip.
+  for (const V& shift : {V(0, 0, 0), V(1e6, -1e6, 1e6)}) {
+    const Segment3<double> hand{shift, V(shift + V(1, 0, 0))};
+    const V q = shift + V(1.5 * std::cos(2.0), 1.5 * std::sin(2.0), 0.25);
+    const Approach<double> c =
+        check_approach(hand, q, Motion{V::Zero(), V(0, 0, 2 * pi), shift}, Motion{}, std::sqrt(0.3125), true);
+    CHECK(std::abs(c.time - 2.0 / (2 * pi)) <= 1e-5);
+  }
+  // Coplanar disks passing through each other: distance 0 over a stretch (not unique), found
+  // without refining the stretch (a distance 0 ends the search).
+  const Approach<double> crossing = check_approach(Disk3<double>{V(-3, 0, 0), V(0, 0, 1), 1.0},
+                                                   Disk3<double>{V(0, 0.5, 0), V(0, 0, 1), 1.0}, Motion{V(6, 0, 0)},
+                                                   Motion{}, 0.0, false);
+  CHECK(crossing.evaluations < 200);
+  // NaN in, NaN out; a rotating line refused.
+  CHECK(std::isnan(closest_approach(V(0, 0, std::nan("")), unit, Motion{V(1, 0, 0)}, Motion{}).time));
+  bool refused = false;
+  try {
+    closest_approach(Line3<double>{V(0, 0, 3), V(1, 0, 0)}, unit, Motion{V::Zero(), V(0, 0, 1)}, Motion{});
+  } catch (const std::invalid_argument& e) {
+    refused = std::string(e.what()).find("closest_approach") != std::string::npos;
+  }
+  CHECK(refused);
+  // A translating line is fine: a line falling onto the ring's plane, least 0 (touching it).
+  check_approach(Line3<double>{V(0, 0.5, 2), V(1, 0, 0)}, unit, Motion{V(0, 0, -4)}, Motion{}, 0.0, false);
+}
+
+// The reference: d(t) sampled at n + 1 times, and golden section (to the last bit of t) about
+// each of the three least local minima of the samples; the least found.
+template <class A, class B> double sampled_least(const A& a, const B& b, const Motion& ma, const Motion& mb, int n) {
+  const auto d = [&](double t) { return distance(moved(a, ma, t), moved(b, mb, t)); };
+  std::vector<double> samples(n + 1);
+  for (int i = 0; i <= n; ++i) samples[i] = d(double(i) / n);
+  std::vector<int> minima;
+  for (int i = 0; i <= n; ++i)
+    if ((i == 0 || samples[i] <= samples[i - 1]) && (i == n || samples[i] <= samples[i + 1])) minima.push_back(i);
+  std::sort(minima.begin(), minima.end(), [&](int x, int y) { return samples[x] < samples[y]; });
+  double least = *std::min_element(samples.begin(), samples.end());
+  for (size_t k = 0; k < std::min<size_t>(3, minima.size()); ++k) {
+    double lo = std::max(0, minima[k] - 1) / double(n), hi = std::min(n, minima[k] + 1) / double(n);
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = d(x1), f2 = d(x2);
+    for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+      if (f1 <= f2) {
+        hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = d(x1);
+      } else {
+        lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = d(x2);
+      }
+    }
+    least = std::min({least, f1, f2});
+  }
+  return least;
+}
+
+template <class A, class B> void check_approach_against_sampling(const A& a, const B& b, const Motion& ma,
+                                                                 const Motion& mb, double& worst) {
+  const Approach<double> c = closest_approach(a, b, ma, mb);
+  const double size = std::max(detail::motion_size(a, ma), detail::motion_size(b, mb));
+  const double delta = contact_tolerance(size);
+  const double reference = sampled_least(a, b, ma, mb, 2000);
+  CHECK(std::abs(c.distance - reference) <= delta);
+  CHECK(c.distance == distance(moved(a, ma, c.time), moved(b, mb, c.time)));
+  worst = std::max(worst, std::abs(c.distance - reference) / size);
+}
+
+// The evaluation limit: a query past it throws evaluation_limit, never answers "no contact".
+void evaluation_limits() {
+  const Circle3<double> unit{V(0, 0, 0), V(0, 0, 1), 1.0};
+  // The near miss of analytic_contacts takes some 4400 steps: with a limit of 1000 it throws.
+  bool thrown = false;
+  try {
+    first_contact(V(-5, 1 + 1e-6, 0), unit, Motion{V(10, 0, 0)}, Motion{}, 0.0, 1000);
+  } catch (const evaluation_limit&) {
+    thrown = true;
+  }
+  CHECK(thrown);
+  // With the default limit it completes.
+  CHECK(first_contact(V(-5, 1 + 1e-6, 0), unit, Motion{V(10, 0, 0)}, Motion{}, 0.0).time == inf);
+  // A ring tumbling about a diameter at 10^7 rad per unit time past a point 0.5 off its sphere:
+  // steps of 0.5 / 10^7, some 2e7 of them: past the default limit, for every rate above it too.
+  for (const double rate : {1e7, 1e9, 1e15}) {
+    thrown = false;
+    try {
+      first_contact(unit, V(0, 0, 1.5), Motion{V::Zero(), V(rate, 0, 0)}, Motion{}, 0.0);
+    } catch (const evaluation_limit& e) {
+      thrown = std::string(e.what()).find("first_contact") != std::string::npos;
+    }
+    CHECK(thrown);
+    thrown = false;
+    try {
+      closest_approach(unit, V(0, 0, 1.5), Motion{V::Zero(), V(rate, 0, 0)}, Motion{});
+    } catch (const evaluation_limit& e) {
+      thrown = std::string(e.what()).find("closest_approach") != std::string::npos;
+    }
+    CHECK(thrown);
+  }
+}
+
+// Rings spinning about their own axis are carried onto themselves: no speed from the spin.
+void spinning_rings() {
+  const Circle3<double> unit{V(0, 0, 0), V(0, 0, 1), 1.0};
+  const Motion spin{V::Zero(), V(0, 0, 40 * pi), V::Zero()};
+  CHECK(detail::rotation_speed(unit, spin) == 0);
+  CHECK(detail::rotation_speed(Disk3<double>{V(0, 0, 5), V(0, 0, -2), 1.0}, spin) == 0);
+  CHECK(detail::rotation_speed(swept(Annulus3<double>{V(0, 0, 0), V(0, 0, 1), 0.5, 1.0}, 0.2), spin) == 0);
+  // Off the axis: the center's distance from it; tilted: the reach.
+  CHECK(std::abs(detail::rotation_speed(Circle3<double>{V(3, 4, 1), V(0, 0, 1), 1.0}, spin) - 40 * pi * 5) <= 1e-12);
+  CHECK(detail::rotation_speed(Circle3<double>{V(0, 0, 0), V(0, 1, 1), 1.0}, spin) == 40 * pi * 1);
+  // A point 0.5 off the spinning ring: never reached, in one evaluation (it used to take steps).
+  const Contact<double> c = first_contact(unit, V(1.5, 0, 0), spin, Motion{}, 0.0);
+  CHECK(c.time == inf && c.evaluations == 1);
+  // Rings whose center circles the axis while they spin about their own normal (a rotation
+  // vector a power of two times the normal: exactly parallel), against the sampled references:
+  // the center's speed is bound enough, and no contact is missed.
+  double worst = 0;
+  for (int i = 0; i < 12; ++i) {
+    const Circle3<double> ring = source.circle(2);
+    const Motion m{source.vector(2), 16 * ring.normal, source.vector(2)};
+    CHECK(detail::spins_in_place(ring, m) && detail::rotation_speed(ring, m) < 16 * ring.normal.norm() * 10);
+    const V q = source.vector(2);
+    std::vector<double> samples;
+    sampled_first_contact(ring, q, m, Motion{}, 0.0, 400, samples);
+    const auto [lo, hi] = std::minmax_element(samples.begin(), samples.end());
+    const double within = *lo + 0.3 * (*hi - *lo);
+    const double reference = sampled_first_contact(ring, q, m, Motion{}, within, 400, samples);
+    const Contact<double> c = first_contact(ring, q, m, Motion{}, within);
+    const double delta = contact_tolerance(std::max(detail::motion_size(ring, m), detail::motion_size(q, Motion{})));
+    CHECK(c.time <= reference + 1e-3);
+    CHECK(c.time < inf && distance(moved(ring, m, c.time), q) <= within + delta);
+    for (int k = 0; k <= 400 && k / 400.0 < c.time; ++k) CHECK(samples[size_t(k)] + within >= within - delta);
+    check_approach_against_sampling(ring, q, m, Motion{}, worst);
+  }
+  CHECK(worst <= 1e-12);
+}
+
+void random_approaches() {
+  double worst = 0;
+  for (int i = 0; i < check::scaled(3); ++i) {
+    check_approach_against_sampling(source.vector(2), source.circle(2), random_motion(), random_motion(), worst);
+    check_approach_against_sampling(source.segment(2), source.disk(2), random_motion(), random_motion(), worst);
+    check_approach_against_sampling(source.circle(2), source.circle(2), random_motion(), random_motion(), worst);
+    check_approach_against_sampling(random_arc(2), random_annulus(2), random_motion(), random_motion(), worst);
+    check_approach_against_sampling(swept(source.segment(2), 0.1), source.disk(2), random_motion(), random_motion(),
+                                    worst);
+    check_approach_against_sampling(source.bezier(2), source.circle(2), random_motion(), random_motion(), worst);
+    // A translating line against a turning disk.
+    check_approach_against_sampling(Line3<double>{source.vector(2), source.direction()}, source.disk(2),
+                                    Motion{source.vector(3)}, random_motion(), worst);
+  }
+  CHECK(worst <= 1e-12);
+}
+
 }  // namespace
 
 int main() {
@@ -466,6 +682,10 @@ int main() {
   reaches();
   analytic_contacts();
   random_contacts();
+  evaluation_limits();
+  spinning_rings();
+  analytic_approaches();
+  random_approaches();
   return check::finish("test_motion");
 }
 

@@ -3,6 +3,7 @@ rays, segments, points and Bezier curves in 3D, single or batched (NumPy broadca
 
 from ._core import (
     Annulus,
+    Approach,
     Arc,
     Bezier,
     Circle,
@@ -16,6 +17,7 @@ from ._core import (
     Segment,
     Shape,
     __version__,
+    closest_approach,
     closest_points,
     distance,
     distance_if_within,
@@ -33,6 +35,7 @@ from .view import figure  # plotly is imported when a figure is made, not here
 
 __all__ = [
     "Annulus",
+    "Approach",
     "Arc",
     "Bezier",
     "Circle",
@@ -48,6 +51,7 @@ __all__ = [
     "Segment",
     "Shape",
     "__version__",
+    "closest_approach",
     "closest_points",
     "distance",
     "distance_if_within",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Annulus', 'Arc', 'Bezier', 'Circle', 'ClosestPoints', 'Contact', 'Disk', 'Line', 'Motion', 'Point', 'Ray', 'Segment', 'Shape', 'closest_points', 'distance', 'distance_if_within', 'first_contact', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
+__all__: list[str] = ['Annulus', 'Approach', 'Arc', 'Bezier', 'Circle', 'ClosestPoints', 'Contact', 'Disk', 'Line', 'Motion', 'Point', 'Ray', 'Segment', 'Shape', 'closest_approach', 'closest_points', 'distance', 'distance_if_within', 'first_contact', 'intersects', 'nearest', 'pairs_within', 'reset_stats', 'stats', 'within']
 class Shape:
     """
     Base class of every shape: a single shape or a batch of them.
@@ -1141,6 +1141,75 @@ class Contact:
         """
         closest_points' unique at that time (True where there is no contact).
         """
+class Approach:
+    """
+    The answer of `closest_approach`: the least distance of two moving shapes, when, and where.
+    
+    For single shapes ``time`` and ``distance`` are floats (``numpy.longdouble`` in long double)
+    and ``unique`` a bool; for batches each attribute is an array of the broadcast batch shape
+    (with a trailing axis of 3 for points and of 2 for parameters).
+    
+    Attributes
+    ----------
+    time : float or numpy.ndarray
+        A time in [0, 1] at which the distance is least (0 for shapes at rest relative to each
+        other); NaN for NaN input.
+    distance : float or numpy.ndarray
+        The least distance over the motion (`closest_points`' distance at ``time``).
+    point_a, point_b : numpy.ndarray, shape (..., 3)
+        A closest pair of the moved shapes at that time, as `closest_points` gives it.
+    param_a, param_b : numpy.ndarray, shape (..., 2)
+        Their parameters on the moved shapes (as `closest_points`' ``param_a``, ``param_b``).
+    unique : bool or numpy.ndarray
+        False where another time is as close (the shapes at rest relative to each other, a
+        distance constant over a stretch of time, two separate times within the bar) or where
+        `closest_points`' pair at ``time`` is not unique.
+    
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> a = cd.closest_approach(cd.Point([-3, 2, 1]), ring, cd.Motion(translation=[6, 0, 0]))
+    >>> round(a.time, 9), round(a.distance, 12)
+    (0.5, 1.414213562373)
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def distance(self) -> float | numpy.longdouble | numpy.ndarray:
+        """
+        The least distance over [0, 1] (closest_points' distance at that time).
+        """
+    @property
+    def param_a(self) -> numpy.ndarray:
+        """
+        point_a's parameters on the moved first shape, shape (..., 2), as closest_points' param_a.
+        """
+    @property
+    def param_b(self) -> numpy.ndarray:
+        """
+        point_b's parameters on the moved second shape, shape (..., 2).
+        """
+    @property
+    def point_a(self) -> numpy.ndarray:
+        """
+        A closest point on the first shape at that time, shape (..., 3).
+        """
+    @property
+    def point_b(self) -> numpy.ndarray:
+        """
+        A closest point on the second shape at that time, shape (..., 3).
+        """
+    @property
+    def time(self) -> float | numpy.longdouble | numpy.ndarray:
+        """
+        A time in [0, 1] of the least distance (the earliest of equal ones found); NaN for NaN input.
+        """
+    @property
+    def unique(self) -> bool | numpy.ndarray:
+        """
+        False where another time is as close (within the bar) or closest_points' pair is not unique.
+        """
 def _count_culled(n: typing.SupportsInt | typing.SupportsIndex) -> None:
     """
     Adds n to stats()['culled'] (used by circledist.Scene).
@@ -1172,6 +1241,95 @@ def _shape_fields() -> dict[str, tuple[tuple[str, str], ...]]:
 def _sweep_field() -> tuple[str, str]:
     """
     The (name, role) of the optional keyword field every kind takes after its own fields.
+    """
+def closest_approach(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, motion_a: Motion | None = None, motion_b: Motion | None = None, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> Approach:
+    """
+    The least distance between two moving shapes over the motion, and when.
+    
+    With ``a(t) = a.moved(motion_a, t)`` and ``b(t)`` likewise, the least of
+    ``distance(a(t), b(t))`` over ``t`` in [0, 1], the time it happens and the closest points then.
+    A branch and bound over ``t`` on the exact distance, with the speed bound ``L`` of
+    `first_contact` (no stretch ``[t0, t1]`` holds a distance below
+    ``(d(t0) + d(t1) - L (t1 - t0)) / 2``), excludes every stretch of time that cannot come closer
+    than ``1e-5 S`` below the best distance found (``S`` the query's size, as in `first_contact`);
+    a golden-section polish in each stretch left (the least four) then finds the least to the bar
+    ``1e-12 S`` where it is a local least of its stretch. Shapes at rest relative to each other
+    (the same motion, or a ring spinning about its own axis) have one distance: time 0, ``unique``
+    False. Each distance counts in `stats` (``distances``, and ``closest_points`` for the answer);
+    both argument orders agree to the bit (with the motions exchanged). ``precision=None`` follows
+    the motions given as well as the shapes.
+    
+    Parameters
+    ----------
+    a, b : Shape or array_like
+        The two shapes (sweeps included). An array of shape (3,) or (..., 3) is a `Point`. Their
+        batch shapes broadcast like NumPy's.
+    motion_a, motion_b : Motion or None, optional
+        The motions of a and b over [0, 1]; None (the default) is at rest. Their batch shapes
+        broadcast with the shapes'. A line or ray cannot rotate: only translations move them.
+    precision : {None, 'float32', 'float64', 'longdouble'}, optional
+        Keyword only. The arithmetic of the query. None follows the inputs: long double when any
+        field was given as ``numpy.longdouble``, float32 when every one was float32, float64
+        otherwise. 'float32' rounds the inputs to float32 (a value beyond its range is a
+        ValueError), solves in double and rounds the answer to float32; 'longdouble' reads
+        ``numpy.longdouble`` fields unrounded. ('float', 'double', 'long double' and 'float128'
+        are accepted as aliases.)
+    solver : {None, 'default', 'bracketing', 'companion', 'polished', 'eigen'}, optional
+        Keyword only. The polynomial root policy: 'bracketing' (the default, also None and
+        'default') isolates real roots by derivative bracketing; 'companion' solves the balanced
+        companion matrix (Eigen's scheme without eigenvectors); 'polished' adds Newton steps and a
+        bracketed minimization to it; 'eigen' is Eigen's PolynomialSolver as it is. Closed-form
+        pairs give the same answer with every solver.
+    workers : int, optional
+        Keyword only. Threads that answer a batch, in chunks, the GIL released (SciPy's
+        convention): a positive count (an int or a NumPy integer; not a bool), or -1 for every
+        core; default 1. The answers are the same bits for any count, and stats() counts every
+        thread's work. Ctrl-C stops a long batch (KeyboardInterrupt).
+    progress : bool or callable, optional
+        Keyword only. None or False (the default): no report. True: a progress bar on stderr
+        (tqdm's when it is installed), shown once the work has taken a second. A callable is called
+        as ``progress(done, total)`` with the elements answered so far, about every 0.1 s while a
+        batch runs and once with ``(total, total)`` at the end (``(1, 1)`` for two single shapes);
+        an exception it raises stops the work and propagates.
+    
+    Returns
+    -------
+    Approach
+        ``time``, ``distance``, ``point_a``, ``point_b``, ``param_a``, ``param_b`` and ``unique``.
+    
+    Raises
+    ------
+    ValueError
+        When a line or ray is given a rotating motion (the message names the motion and the
+        batch index), the batch shapes do not broadcast, an input is beyond float32's range
+        (float32), the precision or solver is unknown, or the worker count is neither positive
+        nor -1.
+    RuntimeError
+        When a query needs more than 2**20 distance evaluations (motions vastly faster than the
+        shapes' size over the bar); the message names the batch index. No answer is given rather
+        than one that could miss a closer time.
+    TypeError
+        When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
+        callable.
+    
+    See Also
+    --------
+    first_contact : the earliest time within a distance.
+    Motion : the motions.
+    
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+    >>> passing = cd.Motion(translation=[6, 0, 0])  # from x = -3 to 3, 2 off the axis, 1 above
+    >>> a = cd.closest_approach(cd.Point([-3, 2, 1]), ring, passing)
+    >>> round(a.time, 9), a.point_b.round(9) + 0.0
+    (0.5, array([0., 1., 0.]))
+    >>> spin = cd.Motion(rotation=[0, 0, 4 * np.pi])  # about its own axis: the ring stays put
+    >>> s = cd.closest_approach(ring, cd.Point([2, 0, 0]), spin)
+    >>> s.time, s.distance, s.unique
+    (0.0, 1.0, False)
     """
 def closest_points(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.ArrayLike, *, precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None, solver: typing.Literal['default', 'bracketing', 'companion', 'polished', 'eigen'] | None = None, workers: int = 1, progress: bool | collections.abc.Callable[[int, int], typing.Any] | None = None) -> ClosestPoints:
     """
@@ -1445,12 +1603,17 @@ def first_contact(a: Shape | numpy.typing.ArrayLike, b: Shape | numpy.typing.Arr
         batch index), ``within`` is negative or not finite, the batch shapes do not broadcast, an
         input is beyond float32's range (float32), the precision or solver is unknown, or the worker
         count is neither positive nor -1.
+    RuntimeError
+        When a query needs more than 2**20 distance evaluations (motions vastly faster than the
+        shapes' size over the bar, or a tangential approach at such a speed); the message names
+        the batch index. No answer is given rather than "no contact" for a contact not excluded.
     TypeError
         When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
         callable.
     
     See Also
     --------
+    closest_approach : the least distance over the motion.
     Motion : the motions.
     Shape.moved : a shape at one time of its motion.
     

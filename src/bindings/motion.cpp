@@ -1,12 +1,14 @@
 // circledist.Motion (a batch of rigid motions, motion.hpp's Motion3) and Shape.moved: the motion's
 // fields are read and validated as shape fields are (shapes.hpp's make_field), and a moved shape
 // is the same kind rebuilt from its moved fields by its own constructor. first_contact and its
-// answer, Contact: motion.hpp's conservative advancement over the broadcast of both shapes, both
-// motions and the contact distance, each distance answered by the pair tables' kernels
-// (kernels/pairs.hpp), so that it adds no code per pair.
+// answer, Contact, and closest_approach and its answer, Approach: motion.hpp's conservative
+// advancement and closest_approach.hpp's branch and bound over the broadcast of both shapes,
+// both motions (and the contact distance), each distance answered by the pair tables' kernels
+// (kernels/pairs.hpp), so that they add no code per pair.
 #include "module.hpp"
 #include "motion_doc.hpp"
 
+#include <circledist/closest_approach.hpp>
 #include <circledist/motion.hpp>
 
 #include <pybind11/numpy.h>
@@ -15,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -251,9 +254,11 @@ ShapeObject moved_shape(py::handle self, py::handle motion, py::handle t) {
 struct Contacts {
   py::object time, distance, point_a, point_b, param_a, param_b, unique;
 };
+// closest_approach's answer: the time of the least distance, and closest_points' answers then.
+struct Approaches : Contacts {};
 
 // None: at rest (one motion of zero fields, made once and never freed, as default_sweep).
-const Motions& motion_argument(const char* name, py::handle value) {
+const Motions& motion_argument(const char* query, const char* name, py::handle value) {
   if (value.is_none()) {
     static const Motions* const rest = [] {
       const py::tuple zero = py::make_tuple(0.0, 0.0, 0.0);
@@ -262,7 +267,7 @@ const Motions& motion_argument(const char* name, py::handle value) {
     return *rest;
   }
   if (!py::isinstance<Motions>(value))
-    throw py::type_error(std::string("first_contact: ") + name + " must be a circledist.Motion or None, got " +
+    throw py::type_error(std::string(query) + ": " + name + " must be a circledist.Motion or None, got " +
                          Py_TYPE(value.ptr())->tp_name);
   return motions_of(value);
 }
@@ -328,18 +333,20 @@ template <class Real> struct Mover {
   }
 };
 
-// first_contact over the pair tables: motion.hpp's first_contact, element by element, with the
-// shapes moved here (per kind) and every distance and the contact's closest points answered by
-// the table's distance and closest_points kernels of the pair (the solver's own). The loop is
-// first_contact's (docs/derivations/motion.md: the bound L, the bar delta, the steps g / L); its
-// pieces are motion.hpp's own (rotation_speed, motion_size, contact_tolerance, next_time). So
-// no pair gains code: the pair units, the build's long pole, and the module's size stay as they
-// were. Both argument orders run the pair's one kernel (the table swaps the operands and the
-// answers), so they agree to the bit. `batch`: the broadcast batch shape (checked by the caller).
-template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const Motions& motion_a,
-                                           const Motions& motion_b, const Field& within, const BatchShape& batch,
-                                           const Choice& c) {
+// first_contact and closest_approach over the pair tables: motion.hpp's first_contact and
+// closest_approach.hpp's closest_approach, element by element, with the shapes moved here (per
+// kind) and every distance and the answer's closest points answered by the table's distance and
+// closest_points kernels of the pair (the solver's own). The searches are the headers' own
+// (detail::advance, detail::least_over_time: the bound L, the bar delta), as are their pieces
+// (rotation_speed, motion_size, contact_tolerance). So no pair gains code: the pair units, the
+// build's long pole, and the module's size stay as they were. Both argument orders run the pair's
+// one kernel (the table swaps the operands and the answers), so they agree to the bit. `batch`:
+// the broadcast batch shape (checked by the caller); `within` is null for closest_approach.
+template <class Real>
+Contacts run_motion(const char* query, const Shape& a, const Shape& b, const Motions& motion_a,
+                  const Motions& motion_b, const Field* within, const BatchShape& batch, const Choice& c) {
   constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const bool approach = within == nullptr;
   const PairTable<Real>& table = pairs().of<Real>(c.solver);
   const Call<Real> call{table, a, b, nullptr, c.workers, c.progress};
   const KernelFn<Real> distance_fn = call.entry(&PairTable<Real>::distance);
@@ -355,7 +362,7 @@ template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const
   Real *out_point_a = point_a.mutable_data(), *out_point_b = point_b.mutable_data();
   Real *out_param_a = param_a.mutable_data(), *out_param_b = param_b.mutable_data();
   bool* out_unique = unique.mutable_data();
-  const Real* limits = within.template data_as<Real>();
+  const Real* limits = approach ? nullptr : within->template data_as<Real>();
   // A long-double query's first read of a float64 field makes its long-double copy, with the GIL
   // held (Field::data_as): made here, before the threads read the fields without it.
   for (const Shape* s : {&a, &b})
@@ -371,8 +378,9 @@ template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const
         at[d] = flat % batch[d];
         flat /= batch[d];
       }
-      // What first_contact answers where there is no contact (motion.hpp's Contact).
-      out_time[i] = std::numeric_limits<Real>::infinity();
+      // What first_contact answers where there is no contact (motion.hpp's Contact), and
+      // closest_approach for NaN input.
+      out_time[i] = approach ? nan : std::numeric_limits<Real>::infinity();
       out_distance[i] = nan;
       std::fill_n(out_point_a + 3 * i, 3, nan);
       std::fill_n(out_point_b + 3 * i, 3, nan);
@@ -381,23 +389,23 @@ template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const
       out_unique[i] = true;
       first.set(a, motion_a, at);
       second.set(b, motion_b, at);
-      const Real limit = limits[element_at(at, within.batch)];
-      Real speed = detail::safe_norm(Vec3<Real>(first.motion.translation - second.motion.translation));
+      const Real limit = approach ? Real(0) : limits[element_at(at, within->batch)];
+      Real spins[2] = {0, 0};
       for (const Mover<Real>* m : {&first, &second}) {
         try {
-          speed += m->rotation_speed(*m);
+          spins[m == &first ? 0 : 1] = m->rotation_speed(*m);
         } catch (const std::invalid_argument& e) {
           std::string why = e.what();
           const std::string prefix = "circledist::first_contact: ";
           if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
           const bool is_a = m == &first;
-          throw std::invalid_argument(std::string("first_contact: ") + (is_a ? "motion_a" : "motion_b") +
+          throw std::invalid_argument(std::string(query) + ": " + (is_a ? "motion_a" : "motion_b") +
                                       index_text(i, batch) + " rotates the " + (is_a ? "first" : "second") +
                                       " argument, a " + kind_name(m->kind) + ": " + why);
         }
       }
+      const Real speed = detail::combined_speed(first.motion, second.motion, spins[0], spins[1]);
       const Real extent = std::max(first.size(first), second.size(second));
-      const Real delta = contact_tolerance(extent);
       if (speed != speed || extent != extent || limit != limit) {
         out_time[i] = nan;
         continue;
@@ -407,31 +415,49 @@ template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const
       const bool swept_pair = *first.in[size_t(first.count - 1)] != 0 || *second.in[size_t(second.count - 1)] != 0;
       Request<Real> r(reversed ? ob : oa, reversed ? oa : ob, nullptr, reversed, swept_pair);
       Real d;
-      Real t = 0;
-      for (;;) {
+      std::uint64_t evaluations = 0;
+      const auto distance_at = [&](Real t) {
         first.move(first, t);
         second.move(second, t);
         r.distance = &d;
         distance_fn(r, 0, 1);
-        if (d != d) {
-          out_time[i] = nan;
-          break;
+        return d;
+      };
+      Real t;
+      bool several = false;
+      try {
+        if (approach) {
+          const detail::Least<Real> least =
+              detail::least_over_time(distance_at, speed, extent, evaluations, kMotionEvaluationLimit, query);
+          t = least.time;
+          several = least.several;
+          if (t == t) {  // the movers back at the least's time
+            first.move(first, t);
+            second.move(second, t);
+          }
+        } else {
+          t = detail::advance(distance_at, limit, speed, contact_tolerance(extent), evaluations);
         }
-        const Real gap = d - limit;
-        if (gap <= delta / 2) {
-          r.distance = out_distance + i;
-          r.flag = out_unique + i;
-          r.point_a = (reversed ? out_point_b : out_point_a) + 3 * i;
-          r.point_b = (reversed ? out_point_a : out_point_b) + 3 * i;
-          r.param_a = (reversed ? out_param_b : out_param_a) + 2 * i;
-          r.param_b = (reversed ? out_param_a : out_param_b) + 2 * i;
-          closest_fn(r, 0, 1);
-          out_time[i] = t;
-          break;
-        }
-        // At rest relative to each other (the distance cannot change), or at the end: no contact.
-        if (speed == 0 || t >= 1) break;
-        t = detail::next_time(t, gap / speed);
+      } catch (const evaluation_limit&) {
+        throw std::runtime_error(std::string(query) + ": " +
+                                 (batch.empty() ? std::string("the query") : "query" + index_text(i, batch)) +
+                                 " needs more than " + std::to_string(kMotionEvaluationLimit) +
+                                 " distance evaluations (its motions are too fast for the bar, or it grazes "
+                                 "tangentially at a vast speed); no answer is given rather than one that could miss "
+                                 "a closer time");
+      }
+      if (t != t) {
+        out_time[i] = nan;
+      } else if (t <= 1) {  // the movers are at t
+        r.distance = out_distance + i;
+        r.flag = out_unique + i;
+        r.point_a = (reversed ? out_point_b : out_point_a) + 3 * i;
+        r.point_b = (reversed ? out_point_a : out_point_b) + 3 * i;
+        r.param_a = (reversed ? out_param_b : out_param_a) + 2 * i;
+        r.param_b = (reversed ? out_param_a : out_param_b) + 2 * i;
+        closest_fn(r, 0, 1);
+        out_time[i] = t;
+        if (several) out_unique[i] = false;
       }
     }
   };
@@ -447,11 +473,11 @@ template <class Real> Contacts run_contact(const Shape& a, const Shape& b, const
 
 // A float64 answer rounded to float32: inf and NaN (no contact) stay; a finite value beyond
 // float32's range is an OverflowError naming the output and its index.
-py::object contact_float32(const py::object& value, const char* output, Index width) {
-  const py::object out = to_float32(value, "first_contact", output, width, false);
+py::object contact_float32(const char* query, const py::object& value, const char* output, Index width) {
+  const py::object out = to_float32(value, query, output, width, false);
   const auto check = [&](double x, Index flat, const BatchShape& batch) {
     if (std::isfinite(x) && !std::isfinite(float(x)))
-      throw std::overflow_error(std::string("first_contact: ") + output + index_text(flat, batch) +
+      throw std::overflow_error(std::string(query) + ": " + output + index_text(flat, batch) +
                                 " is beyond float32's range (precision='float32'); ask for precision='float64'");
   };
   if (py::isinstance<py::float_>(value)) {
@@ -465,15 +491,18 @@ py::object contact_float32(const py::object& value, const char* output, Index wi
   return out;
 }
 
-// first_contact(a, b, motion_a, motion_b, within=, precision=, workers=, progress=).
-Contacts first_contact_of(py::handle a_given, py::handle b_given, py::handle motion_a_given, py::handle motion_b_given,
-                          py::handle within_given, const py::object& precision, const py::object& solver,
-                          py::handle workers, const py::object& progress) {
+// first_contact(a, b, motion_a, motion_b, within=, precision=, workers=, progress=) and
+// closest_approach (the same without within: `within_given` null).
+Contacts motion_query_of(const char* query, py::handle a_given, py::handle b_given, py::handle motion_a_given,
+                         py::handle motion_b_given, const py::handle* within_given, const py::object& precision,
+                         const py::object& solver, py::handle workers, const py::object& progress) {
   const Argument x(a_given), y(b_given);
   const Shape &a = *x.shape, &b = *y.shape;
-  const Motions& motion_a = motion_argument("motion_a", motion_a_given);
-  const Motions& motion_b = motion_argument("motion_b", motion_b_given);
-  const Field within = make_field("first_contact", "within", within_given, 1, Check::NonNegative);
+  const Motions& motion_a = motion_argument(query, "motion_a", motion_a_given);
+  const Motions& motion_b = motion_argument(query, "motion_b", motion_b_given);
+  const Field within = make_field(query, "within", within_given ? *within_given : py::float_(0.0).ptr(), 1,
+                                  Check::NonNegative);
+  const Field* limit = within_given ? &within : nullptr;
   Choice c(precision, solver, a, b, workers, progress);
   // precision=None: NumPy's promotion over the shapes and the motions given (at rest decides nothing).
   if (precision.is_none()) {
@@ -487,31 +516,32 @@ Contacts first_contact_of(py::handle a_given, py::handle b_given, py::handle mot
   bool ok = true;
   BatchShape batch = broadcast_shapes(a.batch, b.batch, ok);
   if (!ok)
-    throw py::value_error("first_contact: batch shapes " + shape_text(a.batch) + " of the " + kind_name(a.kind) +
-                          " and " + shape_text(b.batch) + " of the " + kind_name(b.kind) + " do not broadcast");
+    throw py::value_error(std::string(query) + ": batch shapes " + shape_text(a.batch) + " of the " +
+                          kind_name(a.kind) + " and " + shape_text(b.batch) + " of the " + kind_name(b.kind) +
+                          " do not broadcast");
   const std::pair<const char*, const BatchShape*> others[] = {
       {"motion_a", &motion_a.batch}, {"motion_b", &motion_b.batch}, {"within", &within.batch}};
   for (const auto& [name, other] : others) {
     const BatchShape joined = broadcast_shapes(batch, *other, ok);
     if (!ok)
-      throw py::value_error(std::string("first_contact: ") + name + " of batch shape " + shape_text(*other) +
+      throw py::value_error(std::string(query) + ": " + name + " of batch shape " + shape_text(*other) +
                             " does not broadcast with batch shape " + shape_text(batch) +
                             " of the arguments before it");
     batch = joined;
   }
-  if (c.precision == kLongDouble) return run_contact<long double>(a, b, motion_a, motion_b, within, batch, c);
-  if (!c.single()) return run_contact<double>(a, b, motion_a, motion_b, within, batch, c);
+  if (c.precision == kLongDouble) return run_motion<long double>(query, a, b, motion_a, motion_b, limit, batch, c);
+  if (!c.single()) return run_motion<double>(query, a, b, motion_a, motion_b, limit, batch, c);
   const Shape fa = rounded_to_float(a), fb = rounded_to_float(b);
   const Motions fma = motions_rounded_to_float("motion_a", motion_a),
                 fmb = motions_rounded_to_float("motion_b", motion_b);
-  const Field fw = rounded_to_float("first_contact", within);
-  const Contacts r = run_contact<double>(fa, fb, fma, fmb, fw, batch, c);
-  return {contact_float32(r.time, "time", 1),
-          contact_float32(r.distance, "distance", 1),
-          contact_float32(r.point_a, "point_a", 3),
-          contact_float32(r.point_b, "point_b", 3),
-          contact_float32(r.param_a, "param_a", 2),
-          contact_float32(r.param_b, "param_b", 2),
+  const Field fw = rounded_to_float(query, within);
+  const Contacts r = run_motion<double>(query, fa, fb, fma, fmb, limit ? &fw : nullptr, batch, c);
+  return {contact_float32(query, r.time, "time", 1),
+          contact_float32(query, r.distance, "distance", 1),
+          contact_float32(query, r.point_a, "point_a", 3),
+          contact_float32(query, r.point_b, "point_b", 3),
+          contact_float32(query, r.param_a, "param_a", 2),
+          contact_float32(query, r.param_b, "param_b", 2),
           r.unique};
 }
 
@@ -592,11 +622,54 @@ void bind_motion(py::module_& m) {
       "first_contact",
       [](ShapeLike a, ShapeLike b, OptionalMotion motion_a, OptionalMotion motion_b, ArrayLike within,
          PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
-        return first_contact_of(a, b, motion_a, motion_b, within, precision, solver, workers, progress);
+        const py::handle limit = within;
+        return motion_query_of("first_contact", a, b, motion_a, motion_b, &limit, precision, solver, workers,
+                               progress);
       },
       py::arg("a"), py::arg("b"), py::arg("motion_a") = py::none(), py::arg("motion_b") = py::none(), py::kw_only(),
       py::arg("within") = 0.0, py::arg("precision") = py::none(), py::arg("solver") = py::none(),
       py::arg("workers") = 1, py::arg("progress") = py::none(), doc::kFirstContact());
+
+  py::class_<Approaches>(m, "Approach", doc::kApproach)
+      .def_property_readonly(
+          "time", [](const Approaches& r) { return Distances(r.time); },
+          "A time in [0, 1] of the least distance (the earliest of equal ones found); NaN for NaN input.")
+      .def_property_readonly(
+          "distance", [](const Approaches& r) { return Distances(r.distance); },
+          "The least distance over [0, 1] (closest_points' distance at that time).")
+      .def_property_readonly(
+          "point_a", [](const Approaches& r) { return Array(r.point_a); },
+          "A closest point on the first shape at that time, shape (..., 3).")
+      .def_property_readonly(
+          "point_b", [](const Approaches& r) { return Array(r.point_b); },
+          "A closest point on the second shape at that time, shape (..., 3).")
+      .def_property_readonly(
+          "param_a", [](const Approaches& r) { return Array(r.param_a); },
+          "point_a's parameters on the moved first shape, shape (..., 2), as closest_points' param_a.")
+      .def_property_readonly(
+          "param_b", [](const Approaches& r) { return Array(r.param_b); },
+          "point_b's parameters on the moved second shape, shape (..., 2).")
+      .def_property_readonly(
+          "unique", [](const Approaches& r) { return Flags(r.unique); },
+          "False where another time is as close (within the bar) or closest_points' pair is not unique.")
+      .def("__repr__", [](const Approaches& r) {
+        return "Approach(time=" + py::repr(r.time).cast<std::string>() +
+               ", distance=" + py::repr(r.distance).cast<std::string>() +
+               ", point_a=" + py::repr(r.point_a).cast<std::string>() +
+               ", point_b=" + py::repr(r.point_b).cast<std::string>() + ")";
+      });
+  m.def(
+      "closest_approach",
+      [](ShapeLike a, ShapeLike b, OptionalMotion motion_a, OptionalMotion motion_b, PrecisionName precision,
+         SolverName solver, Count workers, ProgressLike progress) {
+        Approaches out;
+        static_cast<Contacts&>(out) = motion_query_of("closest_approach", a, b, motion_a, motion_b, nullptr,
+                                                      precision, solver, workers, progress);
+        return out;
+      },
+      py::arg("a"), py::arg("b"), py::arg("motion_a") = py::none(), py::arg("motion_b") = py::none(), py::kw_only(),
+      py::arg("precision") = py::none(), py::arg("solver") = py::none(), py::arg("workers") = 1,
+      py::arg("progress") = py::none(), doc::kClosestApproach());
 }
 
 }  // namespace circledist::python

@@ -1,6 +1,6 @@
-// The docstrings of circledist.Motion, Shape.moved, first_contact and its answer, Contact (bound
-// by motion.cpp). NumPy-style; their
-// examples run as doctests (tests/package/test_docstrings.py), and the generated stubs
+// The docstrings of circledist.Motion, Shape.moved, first_contact and its answer, Contact, and
+// closest_approach and its answer, Approach (bound by motion.cpp). NumPy-style; their examples
+// run as doctests (tests/package/test_docstrings.py), and the generated stubs
 // (python/circledist/_core.pyi) carry them. No behaviour lives here.
 #pragma once
 
@@ -214,12 +214,17 @@ ValueError
     batch index), ``within`` is negative or not finite, the batch shapes do not broadcast, an
     input is beyond float32's range (float32), the precision or solver is unknown, or the worker
     count is neither positive nor -1.
+RuntimeError
+    When a query needs more than 2**20 distance evaluations (motions vastly faster than the
+    shapes' size over the bar, or a tangential approach at such a speed); the message names
+    the batch index. No answer is given rather than "no contact" for a contact not excluded.
 TypeError
     When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
     callable.
 
 See Also
 --------
+closest_approach : the least distance over the motion.
 Motion : the motions.
 Shape.moved : a shape at one time of its motion.
 
@@ -239,6 +244,104 @@ inf
 >>> speeds = cd.Motion(translation=[[-4, 0, 0], [-8, 0, 0], [-1, 0, 0]])
 >>> cd.first_contact(point, ring, speeds).time.round(12)  # a batch of motions
 array([0.5 , 0.25,  inf])
+)";
+  return text.c_str();
+}
+
+inline const char* const kApproach =
+    R"(The answer of `closest_approach`: the least distance of two moving shapes, when, and where.
+
+For single shapes ``time`` and ``distance`` are floats (``numpy.longdouble`` in long double)
+and ``unique`` a bool; for batches each attribute is an array of the broadcast batch shape
+(with a trailing axis of 3 for points and of 2 for parameters).
+
+Attributes
+----------
+time : float or numpy.ndarray
+    A time in [0, 1] at which the distance is least (0 for shapes at rest relative to each
+    other); NaN for NaN input.
+distance : float or numpy.ndarray
+    The least distance over the motion (`closest_points`' distance at ``time``).
+point_a, point_b : numpy.ndarray, shape (..., 3)
+    A closest pair of the moved shapes at that time, as `closest_points` gives it.
+param_a, param_b : numpy.ndarray, shape (..., 2)
+    Their parameters on the moved shapes (as `closest_points`' ``param_a``, ``param_b``).
+unique : bool or numpy.ndarray
+    False where another time is as close (the shapes at rest relative to each other, a
+    distance constant over a stretch of time, two separate times within the bar) or where
+    `closest_points`' pair at ``time`` is not unique.
+
+Examples
+--------
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> a = cd.closest_approach(cd.Point([-3, 2, 1]), ring, cd.Motion(translation=[6, 0, 0]))
+>>> round(a.time, 9), round(a.distance, 12)
+(0.5, 1.414213562373)
+)";
+
+inline const char* kClosestApproach() {
+  static const std::string text = std::string() +
+                                  R"(The least distance between two moving shapes over the motion, and when.
+
+With ``a(t) = a.moved(motion_a, t)`` and ``b(t)`` likewise, the least of
+``distance(a(t), b(t))`` over ``t`` in [0, 1], the time it happens and the closest points then.
+A branch and bound over ``t`` on the exact distance, with the speed bound ``L`` of
+`first_contact` (no stretch ``[t0, t1]`` holds a distance below
+``(d(t0) + d(t1) - L (t1 - t0)) / 2``), excludes every stretch of time that cannot come closer
+than ``1e-5 S`` below the best distance found (``S`` the query's size, as in `first_contact`);
+a golden-section polish in each stretch left (the least four) then finds the least to the bar
+``1e-12 S`` where it is a local least of its stretch. Shapes at rest relative to each other
+(the same motion, or a ring spinning about its own axis) have one distance: time 0, ``unique``
+False. Each distance counts in `stats` (``distances``, and ``closest_points`` for the answer);
+both argument orders agree to the bit (with the motions exchanged). ``precision=None`` follows
+the motions given as well as the shapes.
+
+Parameters
+----------
+)" + kQueryParameters + R"(motion_a, motion_b : Motion or None, optional
+    The motions of a and b over [0, 1]; None (the default) is at rest. Their batch shapes
+    broadcast with the shapes'. A line or ray cannot rotate: only translations move them.
+)" + kChoiceParameters + kProgressParameter +
+                                  R"(
+Returns
+-------
+Approach
+    ``time``, ``distance``, ``point_a``, ``point_b``, ``param_a``, ``param_b`` and ``unique``.
+
+Raises
+------
+ValueError
+    When a line or ray is given a rotating motion (the message names the motion and the
+    batch index), the batch shapes do not broadcast, an input is beyond float32's range
+    (float32), the precision or solver is unknown, or the worker count is neither positive
+    nor -1.
+RuntimeError
+    When a query needs more than 2**20 distance evaluations (motions vastly faster than the
+    shapes' size over the bar); the message names the batch index. No answer is given rather
+    than one that could miss a closer time.
+TypeError
+    When a motion is neither a `Motion` nor None, or `progress` is neither None, a bool nor a
+    callable.
+
+See Also
+--------
+first_contact : the earliest time within a distance.
+Motion : the motions.
+
+Examples
+--------
+>>> import numpy as np
+>>> import circledist as cd
+>>> ring = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
+>>> passing = cd.Motion(translation=[6, 0, 0])  # from x = -3 to 3, 2 off the axis, 1 above
+>>> a = cd.closest_approach(cd.Point([-3, 2, 1]), ring, passing)
+>>> round(a.time, 9), a.point_b.round(9) + 0.0
+(0.5, array([0., 1., 0.]))
+>>> spin = cd.Motion(rotation=[0, 0, 4 * np.pi])  # about its own axis: the ring stays put
+>>> s = cd.closest_approach(ring, cd.Point([2, 0, 0]), spin)
+>>> s.time, s.distance, s.unique
+(0.0, 1.0, False)
 )";
   return text.c_str();
 }

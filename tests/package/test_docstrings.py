@@ -82,6 +82,8 @@ def test_every_public_object_is_listed():
         "nearest",
         "figure",
         "first_contact",
+        "closest_approach",
+        "Approach",
     }
 
 
@@ -105,7 +107,7 @@ def test_numpy_style_sections(name):
     found = sections(obj.__doc__)
     assert "Examples" in found, name
     if inspect.isclass(obj):
-        if name not in ("Shape", "ClosestPoints", "Contact"):  # not built by users
+        if name not in ("Shape", "ClosestPoints", "Contact", "Approach"):  # not built by users
             assert "Parameters" in found, name
         assert "Attributes" in found, name
         for method in public_methods(obj):
@@ -122,7 +124,7 @@ def test_numpy_style_sections(name):
         assert ("Parameters" in found) == takes_arguments, name
 
 
-@pytest.mark.parametrize("name", SHAPE_CLASSES + ["Shape", "ClosestPoints", "Contact"])
+@pytest.mark.parametrize("name", SHAPE_CLASSES + ["Shape", "ClosestPoints", "Contact", "Approach"])
 def test_properties_have_docstrings(name):
     cls = getattr(circledist, name)
     for attribute, value in inspect.getmembers(cls, lambda v: isinstance(v, property)):
@@ -141,12 +143,13 @@ def test_query_signatures_name_types(name):
     assert "precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None" in signature
 
 
-def test_first_contact_signature_names_types():
-    signature = circledist.first_contact.__doc__.splitlines()[0]
+@pytest.mark.parametrize("name, answer", [("first_contact", "Contact"), ("closest_approach", "Approach")])
+def test_motion_query_signatures_name_types(name, answer):
+    signature = getattr(circledist, name).__doc__.splitlines()[0]
     assert ": object" not in signature and "-> object" not in signature, signature
     assert "motion_a: circledist._core.Motion | None = None" in signature
     assert "precision: typing.Literal['float32', 'float64', 'longdouble'] | None = None" in signature
-    assert signature.endswith("-> circledist._core.Contact")
+    assert signature.endswith(f"-> circledist._core.{answer}")
 
 
 @pytest.mark.parametrize("name", QUERIES)
@@ -170,7 +173,7 @@ def test_documented_choices_are_the_accepted_ones(name):
 def documented_callables():
     for name in PUBLIC:
         obj = getattr(circledist, name)
-        if name in ("Shape", "ClosestPoints", "Contact"):
+        if name in ("Shape", "ClosestPoints", "Contact", "Approach"):
             continue  # not built by users: no constructor parameters to document
         yield name, obj
         if inspect.isclass(obj):

@@ -15,7 +15,9 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
+#include <utility>
 
 namespace circledist {
 
@@ -214,6 +216,23 @@ template <class Real> Real contact_tolerance(Real size) {
   return std::max(Real(1e-12), 64 * std::numeric_limits<Real>::epsilon()) * size;
 }
 
+// The most distances a motion query evaluates (first_contact, closest_approach): a motion
+// whose speed bound L is vast against the bar (hundreds of thousands of turns of a shape of its
+// size) or a tangential approach at a vast L would take more; the query then throws
+// evaluation_limit rather than answer "no contact" for a contact it has not excluded
+// (docs/derivations/motion.md, "The evaluation limit").
+constexpr std::uint64_t kMotionEvaluationLimit = std::uint64_t(1) << 20;
+
+// The error of a query that reached its evaluation limit (std::runtime_error: RuntimeError in
+// Python, where the message names the query and the batch element).
+class evaluation_limit : public std::runtime_error {
+ public:
+  evaluation_limit(const char* query, std::uint64_t limit)
+      : std::runtime_error(std::string("circledist::") + query + ": more than " + std::to_string(limit) +
+                           " distance evaluations (the motion is too fast for the bar, L / delta too large); no "
+                           "answer rather than one that could miss a contact") {}
+};
+
 namespace detail {
 // The size of a moving shape: its largest coordinate or radius (sweep included) at both ends of
 // the motion, and how far it travels.
@@ -227,19 +246,79 @@ template <class A> scalar_t<core_t<A>> motion_size(const A& a, const Motion3<sca
   return std::max({at0, at1, travel, swing});
 }
 
+// A ring (circle, disk, annulus, or one swept) turning about an axis along its own normal is
+// carried onto the same ring about its moved center: its points can be taken to follow the
+// center, at |rotation| times the center's distance from the axis (docs/derivations/motion.md,
+// "Rings spinning about their axis"). Exactly parallel only (the rotation's cross product with
+// the normal exactly zero); otherwise the reach bounds it.
+template <class Real> bool turns_about_own_normal(const Vec3<Real>& normal, const Motion3<Real>& m) {
+  return m.rotation.cross(normal) == Vec3<Real>::Zero();
+}
+template <class Real> Real axis_offset(const Vec3<Real>& center, const Motion3<Real>& m) {
+  const Vec3<Real> k = unit_vector(m.rotation), d = center - m.center;
+  return safe_norm(Vec3<Real>(d - k.dot(d) * k));
+}
+template <class S, class M> bool spins_in_place(const S&, const M&) { return false; }
+template <class Real> bool spins_in_place(const Circle3<Real>& s, const Motion3<Real>& m) {
+  return turns_about_own_normal(s.normal, m);
+}
+template <class Real> bool spins_in_place(const Disk3<Real>& s, const Motion3<Real>& m) {
+  return turns_about_own_normal(s.normal, m);
+}
+template <class Real> bool spins_in_place(const Annulus3<Real>& s, const Motion3<Real>& m) {
+  return turns_about_own_normal(s.normal, m);
+}
+template <class S, class M> bool spins_in_place(const Swept<S>& s, const M& m) { return spins_in_place(s.shape, m); }
+
+// How far from m's center the points of a shape effectively are: its reach, or for a ring that
+// spins in place its center's distance from the axis.
+template <class S, class M> auto spin_reach(const S& s, const M& m) { return reach(s, m.center); }
+template <class Real> Real spin_reach(const Circle3<Real>& s, const Motion3<Real>& m) {
+  return spins_in_place(s, m) ? axis_offset(s.center, m) : reach(s, m.center);
+}
+template <class Real> Real spin_reach(const Disk3<Real>& s, const Motion3<Real>& m) {
+  return spins_in_place(s, m) ? axis_offset(s.center, m) : reach(s, m.center);
+}
+template <class Real> Real spin_reach(const Annulus3<Real>& s, const Motion3<Real>& m) {
+  return spins_in_place(s, m) ? axis_offset(s.center, m) : reach(s, m.center);
+}
+template <class S, class M> auto spin_reach(const Swept<S>& s, const M& m) {
+  return spins_in_place(s.shape, m) ? spin_reach(s.shape, m) : reach(s, m.center);
+}
+
 // |rotation| reach(a, center): the most a's rotation adds to the speed of any of its points (0
-// when it does not rotate, whatever its reach).
-template <class A> scalar_t<core_t<A>> rotation_speed(const A& a, const Motion3<scalar_t<core_t<A>>>& m) {
+// when it does not rotate, whatever its reach). `query` names the caller in the refusal of a
+// rotating line or ray.
+template <class A>
+scalar_t<core_t<A>> rotation_speed(const A& a, const Motion3<scalar_t<core_t<A>>>& m,
+                                   const char* query = "first_contact") {
   using Real = scalar_t<core_t<A>>;
   const Real w = safe_norm(m.rotation);
   if (w == 0) return Real(0);
-  const Real r = reach(a, m.center);
+  const Real r = spin_reach(a, m);
   if (!(r < std::numeric_limits<Real>::infinity()) && w == w && r == r) {
-    throw std::invalid_argument(
-        "circledist::first_contact: a line or ray cannot rotate (its points reach infinitely far from the motion's "
-        "center, so no speed bound exists); give it a motion without rotation");
+    throw std::invalid_argument(std::string("circledist::") + query +
+                                ": a line or ray cannot rotate (its points reach infinitely far from the motion's "
+                                "center, so no speed bound exists); give it a motion without rotation");
   }
   return w * r;
+}
+
+// L of docs/derivations/motion.md (4) from each shape's rotation_speed: |T_a - T_b| + spin_a +
+// spin_b, the most the distance can change per unit time; 0 for one motion of both (one rigid
+// motion of the pair keeps every distance: relative rest).
+template <class Real>
+Real combined_speed(const Motion3<Real>& motion_a, const Motion3<Real>& motion_b, Real spin_a, Real spin_b) {
+  const Real speed = safe_norm(Vec3<Real>(motion_a.translation - motion_b.translation)) + spin_a + spin_b;
+  if (motion_a.translation == motion_b.translation && motion_a.rotation == motion_b.rotation &&
+      motion_a.center == motion_b.center && speed == speed)
+    return Real(0);
+  return speed;
+}
+template <class A, class B>
+scalar_t<core_t<A>> relative_speed(const A& a, const B& b, const Motion3<scalar_t<core_t<A>>>& motion_a,
+                                   const Motion3<scalar_t<core_t<A>>>& motion_b, const char* query) {
+  return combined_speed(motion_a, motion_b, rotation_speed(a, motion_a, query), rotation_speed(b, motion_b, query));
 }
 
 // The next time after t: t + h, or less by an ulp or two, so that the stretch (t, next] is no
@@ -254,60 +333,80 @@ template <class Real> Real next_time(Real t, Real h) {
 }
 }  // namespace detail
 
-// The earliest t in [0, 1] at which distance(a(t), b(t)) <= within, a(t) = moved(a, motion_a,
-// t). Conservative advancement (docs/derivations/motion.md): with L a bound on how fast the
-// distance can fall (the relative speed of any point of one shape against the other), delta the
-// bar (contact_tolerance) and g = distance - within at time t,
-//   - contact at t when g <= delta / 2;
+namespace detail {
+// The conservative advancement of first_contact (docs/derivations/motion.md, "The method"), on
+// any evaluation of the distance: distance_at(t) moves the shapes to t and answers their exact
+// distance (the caller keeps them there: the last call is at the contact's time). `speed` is the
+// bound L, `delta` the bar. Returns the contact's time, +inf for none over [0, 1], NaN where a
+// distance is NaN; `evaluations` counts the calls; after `limit` of them, evaluation_limit
+// (never "no contact" for a contact not excluded). One copy of the loop: motion.hpp's
+// first_contact and the Python module's batched kernel both run it.
+//   - contact at t when g = distance - within <= delta / 2;
 //   - else no time in (t, t + g / L] has distance below within (less the distance's own
 //     rounding): step there. The bar's lower allowance (within - delta) is not spent on longer
 //     steps: a step of (g + delta / 2) / L would jump over an instant of touching (a ring turning
 //     through a point, distance exactly `within` at one instant) and miss it.
+template <class Real, class Distance>
+Real advance(Distance&& distance_at, Real within, Real speed, Real delta, std::uint64_t& evaluations,
+             std::uint64_t limit = kMotionEvaluationLimit) {
+  Real t = 0;
+  for (;;) {
+    if (evaluations >= limit) throw evaluation_limit("first_contact", limit);
+    const Real d = distance_at(t);
+    ++evaluations;
+    if (d != d) return std::numeric_limits<Real>::quiet_NaN();
+    const Real gap = d - within;
+    if (gap <= delta / 2) return t;
+    // At rest relative to each other (the distance cannot change), or at the end: no contact.
+    if (speed == 0 || t >= 1) return std::numeric_limits<Real>::infinity();
+    t = next_time(t, gap / speed);
+  }
+}
+}  // namespace detail
+
+// The earliest t in [0, 1] at which distance(a(t), b(t)) <= within, a(t) = moved(a, motion_a,
+// t). Conservative advancement (docs/derivations/motion.md, detail::advance above): with L a
+// bound on how fast the distance can fall (the relative speed of any point of one shape against
+// the other) and delta the bar (contact_tolerance), steps of (distance - within) / L.
 // The steps are longer than delta / (2 L), so the loop ends; a tangential approach (g falling
 // quadratically to its least) takes of the order of sqrt(S / delta) steps. A rotating line or
-// ray has no speed bound: std::invalid_argument.
+// ray has no speed bound: std::invalid_argument. More than `max_evaluations` distances:
+// evaluation_limit.
 template <class Roots = DefaultRoots, class A, class B>
 Contact<scalar_t<core_t<A>>> first_contact(const A& a, const B& b, const Motion3<scalar_t<core_t<A>>>& motion_a,
                                            const Motion3<scalar_t<core_t<A>>>& motion_b,
-                                           scalar_t<core_t<A>> within = 0) {
+                                           scalar_t<core_t<A>> within = 0,
+                                           std::uint64_t max_evaluations = kMotionEvaluationLimit) {
   using Real = scalar_t<core_t<A>>;
   static_assert(std::is_same<Real, scalar_t<core_t<B>>>::value, "circledist::first_contact: shapes of one scalar type");
   Contact<Real> out;
-  const Real speed = detail::safe_norm(Vec3<Real>(motion_a.translation - motion_b.translation)) +
-                     detail::rotation_speed(a, motion_a) + detail::rotation_speed(b, motion_b);
+  const Real speed = detail::relative_speed(a, b, motion_a, motion_b, "first_contact");
   const Real size = std::max(detail::motion_size(a, motion_a), detail::motion_size(b, motion_b));
   const Real delta = contact_tolerance(size);
   if (speed != speed || size != size || within != within) {
     out.time = std::numeric_limits<Real>::quiet_NaN();
     return out;
   }
-  Real t = 0;
-  for (;;) {
-    const Placement<Real> pa = placement(motion_a, t), pb = placement(motion_b, t);
-    const A at = moved(a, pa);
-    const B bt = moved(b, pb);
-    const Real d = counted_distance<Roots>(at, bt);
-    ++out.evaluations;
-    if (d != d) {
-      out.time = std::numeric_limits<Real>::quiet_NaN();
-      return out;
-    }
-    const Real gap = d - within;
-    if (gap <= delta / 2) {
-      const Result<Real> r = counted_closest_points<Roots>(at, bt);
-      out.time = t;
-      out.distance = r.distance;
-      out.point_a = r.point_a;
-      out.point_b = r.point_b;
-      out.param_a = r.param_a;
-      out.param_b = r.param_b;
-      out.unique = r.unique;
-      return out;
-    }
-    // At rest relative to each other (the distance cannot change), or at the end: no contact.
-    if (speed == 0 || t >= 1) return out;
-    t = detail::next_time(t, gap / speed);
-  }
+  const auto at = [&](Real t) {
+    return std::make_pair(moved(a, placement(motion_a, t)), moved(b, placement(motion_b, t)));
+  };
+  const Real t = detail::advance(
+      [&](Real time) {
+        const auto [a_t, b_t] = at(time);
+        return counted_distance<Roots>(a_t, b_t);
+      },
+      within, speed, delta, out.evaluations, max_evaluations);
+  out.time = t;
+  if (!(t <= 1)) return out;  // +inf (no contact) or NaN
+  const auto [a_t, b_t] = at(t);
+  const Result<Real> r = counted_closest_points<Roots>(a_t, b_t);
+  out.distance = r.distance;
+  out.point_a = r.point_a;
+  out.point_b = r.point_b;
+  out.param_a = r.param_a;
+  out.param_b = r.param_b;
+  out.unique = r.unique;
+  return out;
 }
 
 }  // namespace circledist
