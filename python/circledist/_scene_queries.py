@@ -177,15 +177,6 @@ def _motions(spec: dict, effects: list, refs: dict, file: str, base: str, fail) 
     if not moving:
         wanted = "'motion' (the motion of 'a')" + (" or 'motion_b' (of 'b')" if "b" in spec else "")
         raise fail(None, f"missing field {wanted}, which {asked[0]} needs")
-    if "closest_approach" in asked:
-        import circledist
-
-        if not hasattr(circledist, "closest_approach"):
-            raise fail(
-                "effects",
-                "closest_approach needs circledist.closest_approach, which this circledist does not have: "
-                "upgrade circledist",
-            )
     out = {}
     for key in moving:
         where = member(base, key)

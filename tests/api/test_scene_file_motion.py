@@ -95,35 +95,25 @@ def test_an_npz_of_version_3_with_a_motion_is_refused(tmp_path):
     assert f"array 'queries': $.queries[{TIP_QUERY}].motion: a query's motion needs format version 4" in message
 
 
-def test_closest_approach_is_refused_where_the_library_lacks_it(monkeypatch):
-    import circledist
-
-    monkeypatch.delattr(circledist, "closest_approach", raising=False)
-    doc = {**SCENE, "queries": [{"a": "tip", "b": "ring", "motion": {}, "effects": ["closest_approach"]}]}
-    with pytest.raises(sf.SceneFileError, match=r"\$\.queries\[0\]\.effects: closest_approach needs circledist"):
-        read(doc)
-
-
-def test_closest_approach_calls_the_library_with_the_motions(monkeypatch):
-    # The effect's wiring: the loader accepts it once circledist.closest_approach exists, and the
-    # command line passes it the query's shapes and motions. A recording stand-in answers with
-    # first_contact's answer (the same fields) so the wiring is checked whatever the library has.
-    import circledist
-
-    calls = []
-
-    def recording(a, b, motion_a=None, motion_b=None):
-        calls.append((a, b, motion_a, motion_b))
-        return cd.first_contact(a, b, motion_a, motion_b)
-
-    monkeypatch.setattr(circledist, "closest_approach", recording, raising=False)
-    query = {"a": "tip", "b": "ring", "motion_b": {"translation": [0, 0, 1.5]}, "effects": ["closest_approach"]}
-    scene = read({**SCENE, "queries": [query]})
+def test_closest_approach_is_the_librarys_and_the_least_worked_out_by_hand():
+    # A point passing a unit ring at height 1, offset 2 in y, sliding 6 along x from x = -3: its
+    # least distance is at t = 0.5 (x = 0), from (0, 2, 1) to the rim point (0, 1, 0): sqrt(2).
+    doc = {
+        "format": "circledist-scene",
+        "version": 4,
+        "shapes": [
+            {"name": "ring", "kind": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0},
+            {"name": "p", "kind": "point", "p": [-3, 2, 1]},
+        ],
+        "queries": [{"a": "p", "b": "ring", "motion": {"translation": [6, 0, 0]}, "effects": ["closest_approach"]}],
+    }
+    scene = read(doc)
     (answered,) = cli.answer(scene)
-    ((a, b, motion_a, motion_b),) = calls
-    assert motion_a is None and same_motion(motion_b, translation=[0, 0, 1.5])
-    assert a.kind == "Point" and b.kind == "Circle"
-    assert answered.answers["closest_approach"]["time"] == float(cd.first_contact(a, b, None, motion_b).time)
+    got = answered.answers["closest_approach"]
+    assert got["time"] == pytest.approx(0.5, abs=1e-9)
+    assert got["distance"] == pytest.approx(2**0.5, rel=1e-12)
+    want = cd.closest_approach(scene.shape("p"), scene.shape("ring"), scene.queries[0]["motion"])
+    assert got["time"] == float(want.time) and got["distance"] == float(want.distance)
     assert "closest_approach" in cli.table(scene, [answered])
 
 
