@@ -20,7 +20,9 @@ namespace detail {
 // it is least at phi when phi lies on the arc (point-circle's answer), otherwise at the end
 // nearer in angle. On the axis (rho = 0) every arc point is as close.
 // The angle is taken from the arc's own start direction u' (the start's in-plane part), not from
-// the canonical frame: no Frame, no theta0, one atan2 (docs/derivations/arc.md, "A point": the cost).
+// the canonical frame: no Frame, no theta0; and the place of the answer (the ring, an end) from
+// signs against the ends' directions, with the trigonometry the arc carries (Arc3::trig): no
+// atan2 (docs/derivations/arc.md, "A point": the ends' directions).
 template <class Real> struct PointArcPair {
   static constexpr bool defined = true;
   using Whole = detail::PointRoundQuery<Real, false>;
