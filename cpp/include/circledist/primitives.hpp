@@ -293,8 +293,16 @@ template <class Real, if_float<Real> = 0> Circle3<double> promoted(const Circle3
 template <class Real, if_float<Real> = 0> Disk3<double> promoted(const Disk3<Real>& d) {
   return {promoted(d.center), promoted(d.normal), double(d.radius)};
 }
+// The fields assigned, not given to the constructor: a float query is promoted per query, and the
+// angle's trigonometry in double would cost it more than it saves (Arc3::trig).
 template <class Real, if_float<Real> = 0> Arc3<double> promoted(const Arc3<Real>& a) {
-  return {promoted(a.center), promoted(a.normal), double(a.radius), promoted(a.start), double(a.angle)};
+  Arc3<double> out;
+  out.center = promoted(a.center);
+  out.normal = promoted(a.normal);
+  out.radius = double(a.radius);
+  out.start = promoted(a.start);
+  out.angle = double(a.angle);
+  return out;
 }
 
 // An annulus: the points of the plane disk of radius `outer_radius` about `center`
