@@ -97,12 +97,11 @@ template <class Real> struct Reader {
     d.normal = vec();
     d.radius = next();
   }
-  void read(Arc3<Real>& a) {
-    a.center = vec();
-    a.normal = vec();
-    a.radius = next();
-    a.start = vec();
-    a.angle = next();
+  void read(Arc3<Real>& a) {  // by the constructor, as a C++ caller makes an arc (Arc3::trig)
+    const Vec3<Real> center = vec(), normal = vec();
+    const Real radius = next();
+    const Vec3<Real> start = vec();
+    a = Arc3<Real>(center, normal, radius, start, next());
   }
   void read(Annulus3<Real>& a) {
     a.center = vec();

@@ -239,6 +239,52 @@ void point_tests() {
   }
 }
 
+// The arc's ends as the point query places a point against them (point_arc.hpp, sector_from_ends:
+// the angle's cosines and sines that Arc3's constructor forms): points at the angles where the
+// place changes (the start, the far end, the bisector of the gap and the edges of the band around
+// it where both ends are measured), just on either side and on them, in and out of the plane, for
+// angles up to, at and past pi and near 0 and 2 pi. Each against the reference, and the same
+// arc with its angle assigned after it was made (no trigonometry carried: the general path)
+// giving the same answer within the bar and the same `unique`.
+void ends_tests() {
+  Draw d(29);
+  const double band = std::ldexp(1.0, -21);  // half the margin of point_arc.hpp
+  const double angles[] = {1e-6, 0.5, kTurn / 4, kTurn / 2 - 1e-9, kTurn / 2, kTurn / 2 + 1e-9, 3.0, 4.5, kTurn - 1e-6};
+  for (int k = 0; k < 3; ++k) {
+    const V3d c = d.vec(), n = d.vec(), start = d.vec();
+    const double r = d.radius();
+    const V3d nn = n.normalized(), u = (start - start.dot(nn) * nn).normalized(), v = nn.cross(u);
+    for (const double angle : angles) {
+      const Arc a{c, n, r, start, angle};
+      CHECK(a.trig.angle == angle);  // formed by the constructor
+      Arc later;                     // the same arc, its angle given after it was made
+      later.center = c;
+      later.normal = n;
+      later.radius = r;
+      later.start = start;
+      later.angle = angle;
+      CHECK(!(later.trig.angle == later.angle));
+      const double bisector = kTurn / 2 + angle / 2;
+      const double places[] = {0, angle, bisector, bisector - band, bisector + band};
+      for (const double place : places) {
+        for (const double offset : {-1e-3, -1e-9, 0.0, 1e-9, 1e-3}) {
+          for (const double height : {0.0, 0.7 * r}) {
+            const double t = place + offset, rho = (0.3 + 1.4 * d.uniform(d.rng)) * r;
+            const V3d p = c + rho * (std::cos(t) * u + std::sin(t) * v) + height * nn;
+            // Exactly opposite the arc's middle (on the bisector, offset 0): two closest pairs.
+            const bool tie = place == bisector && offset == 0;
+            const LD truth = ref_point_arc(p, a);
+            arc_case("point-arc", "ends", p, a, truth, tie ? -1 : 1);
+            arc_case("point-arc", "ends, angle given later", p, later, truth, tie ? -1 : 1);
+            const Result<double> x = closest_points(p, a), y = closest_points(p, later);
+            CHECK(x.unique == y.unique);
+          }
+        }
+      }
+    }
+  }
+}
+
 // The piece's origin moved back along it by `far` (a line: the same line; a ray or segment: a
 // longer one): distances near the arc from a far origin (the fast path's anchored piece, arc.hpp).
 Line far_back(const Line& l, double far) { return {l.origin - far * l.direction.normalized(), l.direction}; }
@@ -687,6 +733,7 @@ int main() {
   point_tests();
   piece_tests();
   coplanar_tests();
+  ends_tests();
   round_tests<Circle>("circle-arc");
   round_tests<Disk>("disk-arc");
   arc_arc_tests();

@@ -114,13 +114,22 @@ template <class Real> struct ShapeTraits<BezierCurve3<Real>> {
 // An arc: center, normal, radius, start, angle (bindings/shapes.hpp checks 0 < angle <= 2 pi). An angle of
 // float64's 2 pi is the whole circle in every precision: it lies 2.4e-16 below long double's 2 pi,
 // which would leave a long-double query a gap in the circle (arc.hpp takes angle >= 2 pi whole).
+// The fields are assigned, not given to Arc3's constructor: the constructor's trigonometry of the
+// angle (Arc3::trig) would be formed for every element, and costs more than the point query
+// saves with it; an arc without it takes the general path (point_arc.hpp), which forms only what
+// it needs.
 template <class Real> struct ShapeTraits<Arc3<Real>> {
   static constexpr int kind = kArc;
   template <class T> static Arc3<Real> make(const T* const* f, int) {
     const Real angle = Real(*f[4]);
     const Real whole = 2 * pi_v<Real>();
-    return {vec<Real>(f[0]), vec<Real>(f[1]), Real(*f[2]), vec<Real>(f[3]),
-            angle >= Real(2 * pi_v<double>()) && angle < whole ? whole : angle};
+    Arc3<Real> a;
+    a.center = vec<Real>(f[0]);
+    a.normal = vec<Real>(f[1]);
+    a.radius = Real(*f[2]);
+    a.start = vec<Real>(f[3]);
+    a.angle = angle >= Real(2 * pi_v<double>()) && angle < whole ? whole : angle;
+    return a;
   }
 };
 

@@ -20,12 +20,15 @@ namespace detail {
 // it is least at phi when phi lies on the arc (point-circle's answer), otherwise at the end
 // nearer in angle. On the axis (rho = 0) every arc point is as close.
 // The angle is taken from the arc's own start direction u' (the start's in-plane part), not from
-// the canonical frame: no Frame, no theta0, one atan2 (docs/derivations/arc.md, "A point": the cost).
+// the canonical frame: no Frame, no theta0; and the place of the answer (the ring, an end) from
+// signs against the ends' directions, with the trigonometry the arc carries (Arc3::trig): no
+// atan2 (docs/derivations/arc.md, "A point": the ends' directions).
 template <class Real> struct PointArcPair {
   static constexpr bool defined = true;
   using Whole = detail::PointRoundQuery<Real, false>;
 
-  template <class Roots = DefaultRoots> static Real distance(const Vec3<Real>& p, const Arc3<Real>& arc) {
+  template <class Roots = DefaultRoots>
+  CIRCLEDIST_INLINE static Real distance(const Vec3<Real>& p, const Arc3<Real>& arc) {
     if (whole_arc(arc)) return Whole::distance(p, arc_circle(arc));
     bool on_ring;
     return solve<false>(p, arc, on_ring).distance;
@@ -44,6 +47,26 @@ template <class Real> struct PointArcPair {
   // (piece_arc_fast; docs/derivations/arc.md, "Before the root").
   template <bool Points>
   CIRCLEDIST_INLINE static Result<Real> solve(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
+    if (arc.trig.angle == arc.angle) return solve_with<Points, true>(p, arc, on_ring);
+    return solve_uncached<Points>(p, arc, on_ring);
+  }
+
+ private:
+  // An arc without its trigonometry (Arc3::trig), or a point whose place the ends do not
+  // decide: the general path, out of line (the common one stays small enough to be inlined
+  // into a caller's loop).
+  template <bool Points>
+#if defined(__GNUC__) || defined(__clang__)
+  __attribute__((noinline))
+#endif
+  static Result<Real>
+  solve_uncached(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
+    return solve_with<Points, false>(p, arc, on_ring);
+  }
+
+  // solve()'s computation; Cached: the arc carries its angle's trigonometry.
+  template <bool Points, bool Cached>
+  CIRCLEDIST_INLINE static Result<Real> solve_with(const Vec3<Real>& p, const Arc3<Real>& arc, bool& on_ring) {
     constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
     const Real turn = 2 * pi_v<Real>();
     Result<Real> r;
@@ -57,7 +80,8 @@ template <class Real> struct PointArcPair {
     const detail::PointOverRound<Real> seen(p, arc.center, arc.normal);
     const Real radius = arc.radius;
     const Real angle = arc.angle > 0 ? arc.angle : (arc.angle <= 0 ? Real(0) : nan);  // NaN stays NaN
-    const Real ring = length2d(seen.height, seen.radial - radius);
+    // The ring's distance (point-circle's), formed only where it is the answer.
+    const auto ring = [&] { return length2d(seen.height, seen.radial - radius); };
     // u' = |W|^2 S - (S.W) W, the start's in-plane part times |W|^2 (seen's W, rescaled if it
     // had to be: no division), and v' = W x u' (|v'| = s |u'|): the arc's u and v up to their
     // lengths.
@@ -73,7 +97,7 @@ template <class Real> struct PointArcPair {
                        seen.wx * u.y() - seen.wy * u.x());
     if (seen.on_axis(radius)) {  // every arc point as close: the start
       on_ring = true;
-      r.distance = ring;
+      r.distance = ring();
       r.point_b = arc.center + (radius / u.norm()) * u;
       r.unique = false;
       return r;
@@ -89,8 +113,19 @@ template <class Real> struct PointArcPair {
     // Where the answer is: 0 the ring (t <= angle), 1 the start, 2 the far end, 3 both ends.
     int where = -1;
     Real t = 0;
-    if constexpr (!Points) where = sector_without_angle(x, y, angle, margin);
-    if (where < 0) {
+    if constexpr (Cached) {
+      where = sector_from_ends(x, y, arc.trig);
+      if (where < 0) return solve_uncached<Points>(p, arc, on_ring);  // x or y not finite
+      if constexpr (Points) {
+        if (where == 0) {
+          t = detail::atan2(y, x);
+          t = detail::select(t < 0, t + turn, t);
+        }
+      }
+    } else if constexpr (!Points) {
+      where = sector_without_angle(x, y, angle, margin);
+    }
+    if (!Cached && where < 0) {
       t = detail::atan2(y, x);
       t = detail::select(t < 0, t + turn, t);
       if (!(t == t) || !(angle == angle)) {  // a NaN normal or angle (out of line in effect: rare)
@@ -102,7 +137,7 @@ template <class Real> struct PointArcPair {
     }
     if (where == 0) {
       on_ring = true;
-      r.distance = ring;
+      r.distance = ring();
       if constexpr (Points) {
         r.point_b = seen.on_rim(arc.center, radius);
         r.param_b = Vec2<Real>(t, 0);
@@ -121,8 +156,10 @@ template <class Real> struct PointArcPair {
       return r;
     }
     // The far end, radius (cos a u' / |u'| + sin a v' / (s |u'|)).
-    const Real to_v = to_u / seen.s;
-    const Vec3<Real> e1 = (std::cos(angle) * to_u) * u + (std::sin(angle) * to_v) * v;
+    const Real to_v = to_u * seen.inv_s;
+    const Real cos_a = Cached ? arc.trig.cos_angle : std::cos(angle),
+               sin_a = Cached ? arc.trig.sin_angle : std::sin(angle);
+    const Vec3<Real> e1 = (cos_a * to_u) * u + (sin_a * to_v) * v;
     const Real d1 = (d - e1).norm();
     if (where == 2) {
       r.distance = d1;
@@ -141,7 +178,31 @@ template <class Real> struct PointArcPair {
     return r;
   }
 
- private:
+  // The answer's place (0 the ring, 1 the start, 2 the far end, 3 both ends) from the arc's
+  // end directions (docs/derivations/arc.md, "A point": the ends' directions): (x, y) is the
+  // point's in-plane part, |q| (cos t, sin t) with t its angle from the start. With the end at
+  // angle a, y cos a - x sin a = |q| sin(t - a): for a <= pi the point is on the arc where
+  // y >= 0 and that is <= 0; for a > pi it is off the arc where y < 0 and that is > 0. Off the
+  // arc, the gap's bisector b = pi + a/2 parts the points nearer the start (t > b) from those
+  // nearer the far end: x sin(a/2) - y cos(a/2) = |q| sin(t - b), t - b in (-pi, pi). Both ends
+  // are measured where |t - b| <= margin / 2 (solve()'s band), |sin(t - b)| <= sin(margin / 2).
+  // -1 (the general path decides) where x or y is not finite.
+  CIRCLEDIST_INLINE static int sector_from_ends(Real x, Real y, const detail::ArcTrig<Real>& e) {
+    const Real ax = std::abs(x), ay = std::abs(y);
+    if (!(ax + ay < std::numeric_limits<Real>::infinity())) return -1;  // NaN too
+    const Real past_end = y * e.cos_angle - x * e.sin_angle;
+    const bool on_arc = e.cos_half >= 0 ? (y >= 0 && past_end <= 0) : !(y < 0 && past_end > 0);
+    if (on_arc) return 0;
+    const Real side = x * e.sin_half - y * e.cos_half, gap = std::abs(side);
+    // sin(margin / 2) to the last bit is not needed: the band's edge is a choice, not a bound.
+    constexpr Real band = Real(1) / (1 << 21);
+    const Real big = std::max(ax, ay);
+    if (gap > band * (ax + ay)) return side > 0 ? 1 : 2;  // |q| <= |x| + |y|
+    if (gap <= band * big) return 3;                      // |q| >= max(|x|, |y|)
+    const Real small = std::min(ax, ay) / big;
+    return gap > band * (big * std::sqrt(1 + small * small)) ? (side > 0 ? 1 : 2) : 3;
+  }
+
   // distance()'s sector test without the atan2 (docs/derivations/arc.md, "Cost"): the answer's place (0
   // the ring, 1 the start, 2 the far end, 3 both ends, as solve() derives them from t) where the
   // octant of (x, y) decides it, else -1 (then t decides). The octant comes from exact

@@ -42,6 +42,28 @@ template <class Real> struct Disk3 {
   Real radius;
 };
 
+namespace detail {
+// The cosine and sine of an arc's angle and of its half, for the angle `angle` (NaN: none, equal
+// to no angle). point_arc.hpp places a point against the arc's ends with them (a few products,
+// no atan2; docs/derivations/arc.md, "A point"); an arc made by Arc3's constructor carries them,
+// so a query does no trigonometry of its own. Formed only for 0 < angle < 2 pi (the other
+// angles are answered without them).
+template <class Real> struct ArcTrig {
+  Real angle = std::numeric_limits<Real>::quiet_NaN();
+  Real cos_angle = 0, sin_angle = 0, cos_half = 0, sin_half = 0;
+
+  ArcTrig() = default;
+  explicit ArcTrig(Real a) {
+    if (!(a > 0 && a < 2 * pi_v<Real>())) return;
+    angle = a;
+    cos_angle = std::cos(a);
+    sin_angle = std::sin(a);
+    cos_half = std::cos(a / 2);
+    sin_half = std::sin(a / 2);
+  }
+};
+}  // namespace detail
+
 // A circular arc: the points center + radius (cos t u + sin t v), t in [0, angle], where n is
 // the unit normal, u the unit projection of `start` onto the plane normal to n and v = n x u.
 // 0 < angle <= 2 pi; an angle of 2 pi or more is the whole circle (answered as the
@@ -53,6 +75,14 @@ template <class Real> struct Arc3 {
   Real radius;
   Vec3<Real> start;
   Real angle;
+  // The angle's trigonometry, formed once by the constructor. Valid while trig.angle == angle:
+  // an arc whose angle is assigned after it was made (or a default-constructed one) is answered
+  // by the general path, which forms what it needs per query (point_arc.hpp).
+  detail::ArcTrig<Real> trig;
+
+  Arc3() = default;
+  Arc3(const Vec3<Real>& center_, const Vec3<Real>& normal_, Real radius_, const Vec3<Real>& start_, Real angle_)
+      : center(center_), normal(normal_), radius(radius_), start(start_), angle(angle_), trig(angle_) {}
 };
 
 // Points origin + t * direction, t in R. `direction` need not be unit length.
@@ -178,11 +208,19 @@ template <class Real> int direction_exponent(const Vec3<Real>& d) {
 // |W|^2 S - (S.W) W and its length, which overflowed for a start of 1e200 (a NaN or wrong
 // point-arc distance) and underflowed to zero, read as "no projection", for one of 1e-200 (the
 // crash fuzz's arcs). The common case pays one comparison.
-template <class Real> Vec3<Real> moderate_start(const Vec3<Real>& start) {
+template <class Real>
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, cold))
+#endif
+Vec3<Real>
+moderated_start(const Vec3<Real>& start) {
+  return ldexp3(start, -direction_exponent(start));
+}
+template <class Real> CIRCLEDIST_INLINE Vec3<Real> moderate_start(const Vec3<Real>& start) {
   constexpr Real lo = power_of_two<Real>(-100), hi = power_of_two<Real>(100);
   const Real largest = start.cwiseAbs().maxCoeff();
   if (largest >= lo && largest <= hi) return start;
-  return ldexp3(start, -direction_exponent(start));
+  return moderated_start(start);  // out of line: rare
 }
 }  // namespace detail
 
@@ -203,7 +241,10 @@ template <class Real> Disk3<Real> scaled(const Disk3<Real>& d, int e) {
   return {detail::ldexp3(d.center, e), d.normal, std::ldexp(d.radius, e)};
 }
 template <class Real> Arc3<Real> scaled(const Arc3<Real>& a, int e) {
-  return {detail::ldexp3(a.center, e), a.normal, std::ldexp(a.radius, e), a.start, a.angle};
+  Arc3<Real> out = a;  // the angle and its trigonometry unchanged
+  out.center = detail::ldexp3(a.center, e);
+  out.radius = std::ldexp(a.radius, e);
+  return out;
 }
 template <class Real> Real extent(const Vec3<Real>& p) { return p.cwiseAbs().maxCoeff(); }
 template <class Real> Real extent(const Line3<Real>& l) { return extent(l.origin); }
@@ -252,8 +293,16 @@ template <class Real, if_float<Real> = 0> Circle3<double> promoted(const Circle3
 template <class Real, if_float<Real> = 0> Disk3<double> promoted(const Disk3<Real>& d) {
   return {promoted(d.center), promoted(d.normal), double(d.radius)};
 }
+// The fields assigned, not given to the constructor: a float query is promoted per query, and the
+// angle's trigonometry in double would cost it more than it saves (Arc3::trig).
 template <class Real, if_float<Real> = 0> Arc3<double> promoted(const Arc3<Real>& a) {
-  return {promoted(a.center), promoted(a.normal), double(a.radius), promoted(a.start), double(a.angle)};
+  Arc3<double> out;
+  out.center = promoted(a.center);
+  out.normal = promoted(a.normal);
+  out.radius = double(a.radius);
+  out.start = promoted(a.start);
+  out.angle = double(a.angle);
+  return out;
 }
 
 // An annulus: the points of the plane disk of radius `outer_radius` about `center`
