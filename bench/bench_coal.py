@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import platform
 import shutil
 import struct
 import subprocess
@@ -260,22 +259,6 @@ def coal_label(tolerance, default_tolerance):
     return f"coal, tolerance {tolerance:g}"
 
 
-def machine():
-    model = "unknown CPU"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    try:
-        load = " ".join(Path("/proc/loadavg").read_text().split()[:3])
-    except OSError:
-        load = "?"
-    return model, load
-
-
 def table_lines(rows):
     lines = [
         "| call | ns per pair | max error | colliding, wrongly | separated, wrongly |",
@@ -287,8 +270,11 @@ def table_lines(rows):
 
 
 def report(args, table, ratio_scalar, ratio_batch, model_gap, touching, cpp):
-    model, load = machine()
     from importlib.metadata import version
+
+    from bench.bench_queries import _busy, machine
+
+    info = machine()
 
     lines = [
         "# Disk–disk against coal's GJK",
@@ -333,8 +319,10 @@ def report(args, table, ratio_scalar, ratio_batch, model_gap, touching, cpp):
         f"circledist's scalar call over coal's at its default tolerance: **{ratio_scalar:.2f}×**; "
         f"the batched call: **{ratio_batch:.2f}×**.",
         "",
-        f"Machine: {model}, {os.cpu_count()} logical cores, load {load}; Python {platform.python_version()}, "
-        f"NumPy {np.__version__}, coal {version('coal')}, circledist {version('circledist')}.",
+        f"Machine: {info['model']}, {info['cores']} cores ({info['usable']} usable)"
+        + (", shared with other work during the run" if _busy(info["load"], info["usable"]) else "")
+        + f"; Python {info['python']}, NumPy {info['numpy']}, coal {version('coal')}, "
+        f"circledist {version('circledist')}.",
         "",
     ]
     return "\n".join(lines)
