@@ -22,6 +22,39 @@ namespace circledist {
 
 namespace detail {
 
+// The distance h(t) and its jet for the polish (angle_polish.hpp), keeping cos t and sin t of
+// the last few angles: the polish asks for both at one angle (every start's value, then the jet
+// at the ones it polishes; Newton's last jet, then the value there), and each would take its
+// own sine and cosine. The same values to the bit as CircleOverRound's, which take them from
+// the same cos t and sin t; an angle is a kept one only with the same sign (sin(-0) is -0).
+template <class Real> class RecentAngles {
+ public:
+  template <class Target> Real distance(const CircleOverRound<Real>& view, Real t) {
+    const int i = at(t);
+    return view.template distance<Target>(cs_[i], sn_[i]);
+  }
+  template <class Target> Jet<Real> jet(const CircleOverRound<Real>& view, Real t) {
+    const int i = at(t);
+    return view.template jet<Target>(cs_[i], sn_[i]);
+  }
+
+ private:
+  static constexpr int kKept = 8;
+  int at(Real t) {
+    for (int i = 0; i < count_; ++i)
+      if (t_[i] == t && std::signbit(t_[i]) == std::signbit(t)) return i;
+    const int i = next_;
+    next_ = (next_ + 1) % kKept;
+    count_ = std::max(count_, next_ == 0 ? kKept : next_);
+    t_[i] = t;
+    cs_[i] = std::cos(t);
+    sn_[i] = std::sin(t);
+    return i;
+  }
+  Real t_[kKept], cs_[kKept], sn_[kKept];
+  int count_ = 0, next_ = 0;
+};
+
 // Circle-circle: the smaller circle is parametrized (its angle features are then never narrower
 // than the other's), its candidates are the octic's roots plus t = 0 and t = pi; the exact
 // point-circle distance judges them. The octic is searched only where the distance can beat the
@@ -64,8 +97,9 @@ template <class Real> struct CircleCirclePair {
     const auto squared = [&](const Vec3<Real>& p) { return RingTarget<Real>::distance_squared(p, radius); };
     const SampledDistances<Real> samples = sampled_distances(c, squared);
     const Starts starts = candidates<Roots>(view, scale, std::min(bound, samples.best), samples);
-    const auto h = [&](Real t) { return view.template distance<RingTarget<Real>>(t); };
-    const auto jet = [&](Real t) { return view.template jet<RingTarget<Real>>(t); };
+    RecentAngles<Real> angles;
+    const auto h = [&](Real t) { return angles.template distance<RingTarget<Real>>(view, t); };
+    const auto jet = [&](Real t) { return angles.template jet<RingTarget<Real>>(view, t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale));
   }
 
@@ -81,18 +115,22 @@ template <class Real> struct CircleCirclePair {
     return true;
   }
 
-  // a is parametrized, b is the ring.
-  template <class Roots> static Real distance_ordered(const Circle3<Real>& a, const Circle3<Real>& b) {
+  // a is parametrized, b is the ring. `bound`: as for solve().
+  template <class Roots>
+  static Real distance_ordered(const Circle3<Real>& a, const Circle3<Real>& b,
+                               Real bound = std::numeric_limits<Real>::infinity()) {
     const Round<Real> round(b.center, b.normal, b.radius);
     const LocalCircle<Real> c(a, round);
-    return solve<Roots>(c, b.radius, circle_round_scale(c, b.radius)).best.value;
+    return solve<Roots>(c, b.radius, circle_round_scale(c, b.radius), bound).best.value;
   }
 
-  template <class Roots> static Result<Real> closest_ordered(const Circle3<Real>& a, const Circle3<Real>& b) {
+  template <class Roots>
+  static Result<Real> closest_ordered(const Circle3<Real>& a, const Circle3<Real>& b,
+                                      Real bound = std::numeric_limits<Real>::infinity()) {
     const Round<Real> round(b.center, b.normal, b.radius);
     const LocalCircle<Real> c(a, round);
     const Real scale = circle_round_scale(c, b.radius);
-    const auto minima = solve<Roots>(c, b.radius, scale);
+    const auto minima = solve<Roots>(c, b.radius, scale, bound);
     return circle_round_result<RingTarget<Real>>(a, c, round, minima, scale);
   }
 
@@ -102,6 +140,20 @@ template <class Real> struct CircleCirclePair {
 
   template <class Roots = DefaultRoots> static Result<Real> closest(const Circle3<Real>& a, const Circle3<Real>& b) {
     return parametrized_first(a, b) ? closest_ordered<Roots>(a, b) : closest_ordered<Roots>(b, a).swapped();
+  }
+
+  // The same where only a distance at most `bound` matters (circle-disk's rim part): the octic
+  // is searched only where the distance can be at most that (or the samples' best); a minimum
+  // above it may be missed, one at or below it is found as distance() finds it.
+  template <class Roots = DefaultRoots>
+  static Real distance_below(const Circle3<Real>& a, const Circle3<Real>& b, Real bound) {
+    return parametrized_first(a, b) ? distance_ordered<Roots>(a, b, bound) : distance_ordered<Roots>(b, a, bound);
+  }
+
+  template <class Roots = DefaultRoots>
+  static Result<Real> closest_below(const Circle3<Real>& a, const Circle3<Real>& b, Real bound) {
+    return parametrized_first(a, b) ? closest_ordered<Roots>(a, b, bound)
+                                    : closest_ordered<Roots>(b, a, bound).swapped();
   }
 };
 

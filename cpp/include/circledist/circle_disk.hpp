@@ -95,8 +95,9 @@ template <class Real> struct CircleDiskPair {
     const CircleOverRound<Real> view(c, radius);
     const auto squared = [&](const Vec3<Real>& p) { return DiskTarget<Real>::distance_squared(p, radius); };
     const Starts starts = candidates<Roots>(view, scale, heights, sampled_distance(c, squared));
-    const auto h = [&](Real t) { return view.template distance<DiskTarget<Real>>(t); };
-    const auto jet = [&](Real t) { return view.template jet<DiskTarget<Real>>(t); };
+    RecentAngles<Real> angles;
+    const auto h = [&](Real t) { return angles.template distance<DiskTarget<Real>>(view, t); };
+    const auto jet = [&](Real t) { return angles.template jet<DiskTarget<Real>>(view, t); };
     return polish_angles<Roots>(jet, h, starts, parameter_tolerance(c.radius, scale), screening_margin(scale),
                                 verdict.value.data(), heights.count);
   }
@@ -118,7 +119,9 @@ template <class Real> struct CircleDiskPair {
     // octic in A's own angle is not enough for the rim part: for a circle 1e5 times larger than
     // the disk its roots near the disk are a cluster 1e-5 wide that rounding blurs, and a minimum
     // was missed, 0.084 for 0.0138; circle-circle parametrizes the smaller circle, the rim.)
-    const Real rim_part = Rim::template distance<Roots>(a, rim(disk));
+    // Its octic is searched only where the rim distance can be at most early.best: a rim part
+    // above that never decides (the same section).
+    const Real rim_part = Rim::template distance_below<Roots>(a, rim(disk), early.best);
     if (rim_part_decides(rim_part, early, scale)) return rim_part;
     return std::min(early.best, solve<Roots>(c, disk.radius, scale, heights, early).best.value);
   }
@@ -140,7 +143,7 @@ template <class Real> struct CircleDiskPair {
     const Heights heights = height_candidates<Roots>(c, scale);
     const HeightVerdict early = height_verdict(CircleOverRound<Real>(c, disk.radius), scale, heights);
     if (!early.decided) {
-      Result<Real> r = Rim::template closest<Roots>(a, rim(disk));
+      Result<Real> r = Rim::template closest_below<Roots>(a, rim(disk), early.best);
       if (rim_part_decides(r.distance, early, scale)) {
         r.param_b = Vec2<Real>(disk.radius, r.param_b.x());  // as for a circle clear of the cylinder
         return r;
