@@ -3,7 +3,7 @@
 // shape at the same parameter), reach() against sampled points, first_contact() against
 // analytic contact times and a dense-sampling-plus-bisection reference, the evaluation limit of
 // both queries, and closest_approach() against analytic least distances and a dense-sampling-
-// plus-golden-section reference.
+// plus-golden-section reference (many near-equal dips included).
 #include <circledist/closest_approach.hpp>
 #include <circledist/motion.hpp>
 
@@ -677,9 +677,9 @@ void random_approaches() {
 // Many near-equal dips: a ring tumbling 20 times about its diameter on x past a point 1e-3
 // outside it, the point drifting slowly along x. Twice a turn the ring's plane holds the point
 // (a dip of least about |p(t)| - 1); the drift makes the dips' leasts differ by as little as
-// 1e-11 S, far less than the screen, so the search's samples, as far off each dip's least as the screen
-// allows, mis-order them: the least dip is rarely among the few least samples, and every dip
-// must be polished. The reference: the distance in closed form at long double (the ring's normal
+// 1e-11 S, far less than the screen, so the search's samples (as far above each dip's least as
+// the screen allows) mis-order them: the least dip is rarely among the few least samples, and
+// every dip must be polished. The reference: the distance in closed form at long double (the ring's normal
 // R_x(w t) e_z, the point's distance from its plane h and from its axis rho, d = |(rho - 1, h)|),
 // sampled at 40 points a dip, every local least of the samples refined by golden section.
 long double drifting_point_distance(long double t, long double w, const V& p, long double v) {
