@@ -3,7 +3,7 @@
 // shape at the same parameter), reach() against sampled points, first_contact() against
 // analytic contact times and a dense-sampling-plus-bisection reference, the evaluation limit of
 // both queries, and closest_approach() against analytic least distances and a dense-sampling-
-// plus-golden-section reference.
+// plus-golden-section reference (many near-equal dips included).
 #include <circledist/closest_approach.hpp>
 #include <circledist/motion.hpp>
 
@@ -674,6 +674,66 @@ void random_approaches() {
   CHECK(worst <= 1e-12);
 }
 
+// Many near-equal dips: a ring tumbling 20 times about its diameter on x past a point 1e-3
+// outside it, the point drifting slowly along x. Twice a turn the ring's plane holds the point
+// (a dip of least about |p(t)| - 1); the drift makes the dips' leasts differ by as little as
+// 1e-11 S, far less than the screen, so the search's samples (as far above each dip's least as
+// the screen allows) mis-order them: the least dip is rarely among the few least samples, and
+// every dip must be polished. The reference: the distance in closed form at long double (the ring's normal
+// R_x(w t) e_z, the point's distance from its plane h and from its axis rho, d = |(rho - 1, h)|),
+// sampled at 40 points a dip, every local least of the samples refined by golden section.
+long double drifting_point_distance(long double t, long double w, const V& p, long double v) {
+  const long double ny = -std::sin(w * t), nz = std::cos(w * t), px = p.x() + v * t;
+  const long double y = p.y(), z = p.z(), h = y * ny + z * nz;
+  const long double rho = std::sqrt(std::max(px * px + y * y + z * z - h * h, 0.0L));
+  return std::sqrt((rho - 1) * (rho - 1) + h * h);
+}
+
+long double drifting_point_least(long double w, const V& p, long double v, int n) {
+  const auto d = [&](long double t) { return drifting_point_distance(t, w, p, v); };
+  std::vector<long double> samples(size_t(n) + 1);
+  for (int i = 0; i <= n; ++i) samples[size_t(i)] = d((long double)(i) / n);
+  long double least = *std::min_element(samples.begin(), samples.end());
+  const long double g = (std::sqrt(5.0L) - 1) / 2;
+  for (int i = 0; i <= n; ++i) {
+    const size_t k = size_t(i);
+    if ((i > 0 && samples[k] > samples[k - 1]) || (i < n && samples[k] > samples[k + 1])) continue;
+    long double lo = std::max(0, i - 1) / (long double)(n), hi = std::min(n, i + 1) / (long double)(n);
+    long double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = d(x1), f2 = d(x2);
+    for (int it = 0; it < 200 && hi - lo > 1e-19L; ++it) {
+      if (f1 <= f2) {
+        hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = d(x1);
+      } else {
+        lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = d(x2);
+      }
+    }
+    least = std::min({least, f1, f2});
+  }
+  return least;
+}
+
+void many_dips() {
+  const Circle3<double> unit{V(0, 0, 0), V(0, 0, 1), 1.0};
+  const double turns = 20, w = 2 * turns * pi;
+  const Motion tumble{V::Zero(), V(w, 0, 0)};
+  double worst = 0;
+  for (const double phi : {0.3, 0.98, 2.2})
+    for (const double v : {3e-4, 1e-3})
+      for (int k = 0; k < 6; ++k) {
+        // The drift crosses x = 0 (the least |p|) near the middle, at offsets across a dip's spacing.
+        const double x0 = -v / 2 + k * v / (2 * turns) / 6;
+        const V p(x0, 1.001 * std::cos(phi), 1.001 * std::sin(phi));
+        const Motion drift{V(v, 0, 0)};
+        const Approach<double> c = closest_approach(unit, p, tumble, drift);
+        const double size = std::max(detail::motion_size(unit, tumble), detail::motion_size(p, drift));
+        const long double reference = drifting_point_least(w, p, v, 80 * int(turns));
+        CHECK(std::abs(c.distance - reference) <= contact_tolerance(size));
+        CHECK(c.distance == distance(moved(unit, tumble, c.time), moved(p, drift, c.time)));
+        worst = std::max(worst, double(std::abs(c.distance - reference)) / size);
+      }
+  CHECK(worst <= 1e-12);
+}
+
 }  // namespace
 
 int main() {
@@ -686,6 +746,7 @@ int main() {
   spinning_rings();
   analytic_approaches();
   random_approaches();
+  many_dips();
   return check::finish("test_motion");
 }
 

@@ -290,8 +290,10 @@ A branch and bound over ``t`` on the exact distance, with the speed bound ``L`` 
 `first_contact` (no stretch ``[t0, t1]`` holds a distance below
 ``(d(t0) + d(t1) - L (t1 - t0)) / 2``), excludes every stretch of time that cannot come closer
 than ``1e-5 S`` below the best distance found (``S`` the query's size, as in `first_contact`);
-a golden-section polish in each stretch left (the least four) then finds the least to the bar
-``1e-12 S`` where it is a local least of its stretch. Shapes at rest relative to each other
+a golden-section polish of every dip the stretches left show (each local least of their
+samples, the least first) then finds the least to the bar ``1e-12 S`` where it is a local least
+of its dip's bracket (past the fourth dip the polish stops at four times the search's
+evaluations: a distance flat over many stretches). Shapes at rest relative to each other
 (the same motion, or a ring spinning about its own axis) have one distance: time 0, ``unique``
 False. Each distance counts in `stats` (``distances``, and ``closest_points`` for the answer);
 both argument orders agree to the bit (with the motions exchanged). ``precision=None`` follows

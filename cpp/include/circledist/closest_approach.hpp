@@ -45,6 +45,7 @@ template <class Real, class Distance>
 Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::uint64_t& evaluations,
                             std::uint64_t limit, const char* query) {
   Least<Real> out;
+  const std::uint64_t start = evaluations;
   const Real delta = contact_tolerance(size), screen = std::max(delta, approach_screen(size));
   bool failed = false;
   const auto d = [&](Real t) {
@@ -102,17 +103,19 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
     if (s.bound < best) candidates.push_back(s);
   std::sort(candidates.begin(), candidates.end(), [](const Stretch& x, const Stretch& y) { return x.t0 < y.t0; });
   // The sampled times of the candidates in order, and the local least samples among them (less
-  // than or equal to their neighbours within a run of adjacent candidates): each is polished in
-  // the bracket of its neighbours, the least four of them.
+  // than or equal to their neighbours within a run of adjacent candidates): the dips. Each is
+  // polished in the bracket of its neighbours; `bound` is the least bound (5) of the bracket's
+  // stretches, below which nothing in the bracket comes.
   struct Sample {
-    Real t, d, lo, hi;  // the time, its distance and its bracket
+    Real t, d, lo, hi, bound;  // the time, its distance, its bracket and the bracket's bound
   };
   std::vector<Sample> minima;
   bool flat = false;  // a run of candidates whose both ends are within the bar of the least
   for (size_t i = 0; i < candidates.size();) {
     size_t j = i;
     while (j + 1 < candidates.size() && candidates[j + 1].t0 == candidates[j].t1) ++j;
-    // The run i..j: its sample times t0(i), t1(i) = t0(i + 1), ..., t1(j).
+    // The run i..j: its sample times t0(i), t1(i) = t0(i + 1), ..., t1(j); sample k lies between
+    // the stretches i + k - 1 and i + k.
     std::vector<std::pair<Real, Real>> run{{candidates[i].t0, candidates[i].d0}};
     for (size_t k = i; k <= j; ++k) run.push_back({candidates[k].t1, candidates[k].d1});
     if (run.size() > 2 && run.front().second <= best + delta && run.back().second <= best + delta) flat = true;
@@ -120,14 +123,25 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
       const Real here = run[k].second;
       const bool left_ok = k == 0 || here <= run[k - 1].second;
       const bool right_ok = k + 1 == run.size() || here <= run[k + 1].second;
-      if (left_ok && right_ok)
+      if (left_ok && right_ok) {
+        const Real bound = std::min(k == 0 ? here : candidates[i + k - 1].bound,
+                                    k + 1 == run.size() ? here : candidates[i + k].bound);
         minima.push_back({run[k].first, here, k == 0 ? run[k].first : run[k - 1].first,
-                          k + 1 == run.size() ? run[k].first : run[k + 1].first});
+                          k + 1 == run.size() ? run[k].first : run[k + 1].first, bound});
+      }
     }
     i = j + 1;
   }
-  std::sort(minima.begin(), minima.end(), [](const Sample& x, const Sample& y) { return x.d < y.d; });
-  if (minima.size() > 4) minima.resize(4);
+  // Every dip is polished, the least samples first, except (a) a dip whose bound is more than
+  // twice the bar above the least found so far ((5) holds to the evaluations' rounding, far
+  // inside the bar): nothing in it is the answer or within the bar of it; and (b) once four dips
+  // are polished and the polish has spent four times the search's evaluations, or reached the
+  // evaluation limit, the dips left (dips crowded within a few hundred of the finest stretches
+  // of each other: a distance flat over many stretches, where nearly every sample is a dip;
+  // derivation: "Polish"). The dips past the fourth never throw at the limit.
+  std::sort(minima.begin(), minima.end(),
+            [](const Sample& x, const Sample& y) { return x.d < y.d || (x.d == y.d && x.t < y.t); });
+  const std::uint64_t searched = evaluations - start;
   // Golden section in each bracket [lo, hi] around its least sample, until the bracket is so
   // short that L times its length is within a quarter of the bar (or as short as double's times).
   const Real golden = (std::sqrt(Real(5)) - 1) / 2;
@@ -136,9 +150,13 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
   // (about sqrt(2 delta S) / L): a stretch of contact, or two touches.
   bool zeros = false;
   const Real apart = std::sqrt(2 * delta * size) / speed;
+  Real least = best;  // the least distance found so far
   for (const Sample& m : minima) {
+    if (m.bound > least + 2 * delta) continue;
+    const bool extra = polished.size() >= 4;
+    if (extra && (evaluations - start - searched >= 4 * searched || evaluations >= limit)) break;
     Real lo = m.lo, hi = m.hi, x = m.t, fx = m.d;
-    while (speed * (hi - lo) > delta / 4) {
+    while (speed * (hi - lo) > delta / 4 && !(extra && evaluations >= limit)) {
       // The longer side of x gets the new point.
       const bool right = hi - x >= x - lo;
       const Real y = right ? x + (1 - golden) * (hi - x) : x - (1 - golden) * (x - lo);
@@ -154,11 +172,12 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
         (right ? hi : lo) = y;
       }
     }
-    polished.push_back({x, fx, m.lo, m.hi});
+    polished.push_back({x, fx, m.lo, m.hi, m.bound});
+    least = std::min(least, fx);
   }
   // The least of the polished, or the best sample where none improved on it (its stretches
   // had no bound below it).
-  Sample won{best_time, best, best_time, best_time};
+  Sample won{best_time, best, best_time, best_time, best};
   for (const Sample& p : polished)
     if (p.d < won.d || (p.d == won.d && p.t < won.t)) won = p;
   out.time = won.t;
