@@ -461,11 +461,9 @@ void random_contacts() {
   CHECK(crossings >= cases / 2);
 }
 
-
 // The analytic least distances: value to the bar, the time to the bar's width in time.
-template <class A, class B>
-Approach<double> check_approach(const A& a, const B& b, const Motion& ma, const Motion& mb, double expected,
-                                bool unique) {
+template <class A, class B> Approach<double> check_approach(const A& a, const B& b, const Motion& ma, const Motion& mb,
+                                                            double expected, bool unique) {
   const Approach<double> c = closest_approach(a, b, ma, mb);
   const double size = std::max(detail::motion_size(a, ma), detail::motion_size(b, mb));
   const double delta = contact_tolerance(size);
@@ -532,9 +530,9 @@ void analytic_approaches() {
   }
   // Coplanar disks passing through each other: distance 0 over a stretch (not unique), found
   // without refining the stretch (a distance 0 ends the search).
-  const Approach<double> crossing = check_approach(Disk3<double>{V(-3, 0, 0), V(0, 0, 1), 1.0},
-                                                   Disk3<double>{V(0, 0.5, 0), V(0, 0, 1), 1.0}, Motion{V(6, 0, 0)},
-                                                   Motion{}, 0.0, false);
+  const Approach<double> crossing =
+      check_approach(Disk3<double>{V(-3, 0, 0), V(0, 0, 1), 1.0}, Disk3<double>{V(0, 0.5, 0), V(0, 0, 1), 1.0},
+                     Motion{V(6, 0, 0)}, Motion{}, 0.0, false);
   CHECK(crossing.evaluations < 200);
   // NaN in, NaN out; a rotating line refused.
   CHECK(std::isnan(closest_approach(V(0, 0, std::nan("")), unit, Motion{V(1, 0, 0)}, Motion{}).time));
@@ -576,8 +574,8 @@ template <class A, class B> double sampled_least(const A& a, const B& b, const M
   return least;
 }
 
-template <class A, class B> void check_approach_against_sampling(const A& a, const B& b, const Motion& ma,
-                                                                 const Motion& mb, double& worst) {
+template <class A, class B>
+void check_approach_against_sampling(const A& a, const B& b, const Motion& ma, const Motion& mb, double& worst) {
   const Approach<double> c = closest_approach(a, b, ma, mb);
   const double size = std::max(detail::motion_size(a, ma), detail::motion_size(b, mb));
   const double delta = contact_tolerance(size);

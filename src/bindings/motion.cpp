@@ -342,9 +342,9 @@ template <class Real> struct Mover {
 // build's long pole, and the module's size stay as they were. Both argument orders run the pair's
 // one kernel (the table swaps the operands and the answers), so they agree to the bit. `batch`:
 // the broadcast batch shape (checked by the caller); `within` is null for closest_approach.
-template <class Real>
-Contacts run_motion(const char* query, const Shape& a, const Shape& b, const Motions& motion_a,
-                  const Motions& motion_b, const Field* within, const BatchShape& batch, const Choice& c) {
+template <class Real> Contacts run_motion(const char* query, const Shape& a, const Shape& b, const Motions& motion_a,
+                                          const Motions& motion_b, const Field* within, const BatchShape& batch,
+                                          const Choice& c) {
   constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
   const bool approach = within == nullptr;
   const PairTable<Real>& table = pairs().of<Real>(c.solver);
@@ -500,8 +500,8 @@ Contacts motion_query_of(const char* query, py::handle a_given, py::handle b_giv
   const Shape &a = *x.shape, &b = *y.shape;
   const Motions& motion_a = motion_argument(query, "motion_a", motion_a_given);
   const Motions& motion_b = motion_argument(query, "motion_b", motion_b_given);
-  const Field within = make_field(query, "within", within_given ? *within_given : py::float_(0.0).ptr(), 1,
-                                  Check::NonNegative);
+  const Field within =
+      make_field(query, "within", within_given ? *within_given : py::float_(0.0).ptr(), 1, Check::NonNegative);
   const Field* limit = within_given ? &within : nullptr;
   Choice c(precision, solver, a, b, workers, progress);
   // precision=None: NumPy's promotion over the shapes and the motions given (at rest decides nothing).
@@ -623,8 +623,7 @@ void bind_motion(py::module_& m) {
       [](ShapeLike a, ShapeLike b, OptionalMotion motion_a, OptionalMotion motion_b, ArrayLike within,
          PrecisionName precision, SolverName solver, Count workers, ProgressLike progress) {
         const py::handle limit = within;
-        return motion_query_of("first_contact", a, b, motion_a, motion_b, &limit, precision, solver, workers,
-                               progress);
+        return motion_query_of("first_contact", a, b, motion_a, motion_b, &limit, precision, solver, workers, progress);
       },
       py::arg("a"), py::arg("b"), py::arg("motion_a") = py::none(), py::arg("motion_b") = py::none(), py::kw_only(),
       py::arg("within") = 0.0, py::arg("precision") = py::none(), py::arg("solver") = py::none(),
@@ -663,8 +662,8 @@ void bind_motion(py::module_& m) {
       [](ShapeLike a, ShapeLike b, OptionalMotion motion_a, OptionalMotion motion_b, PrecisionName precision,
          SolverName solver, Count workers, ProgressLike progress) {
         Approaches out;
-        static_cast<Contacts&>(out) = motion_query_of("closest_approach", a, b, motion_a, motion_b, nullptr,
-                                                      precision, solver, workers, progress);
+        static_cast<Contacts&>(out) = motion_query_of("closest_approach", a, b, motion_a, motion_b, nullptr, precision,
+                                                      solver, workers, progress);
         return out;
       },
       py::arg("a"), py::arg("b"), py::arg("motion_a") = py::none(), py::arg("motion_b") = py::none(), py::kw_only(),

@@ -116,17 +116,15 @@ template <class Real> struct CircleCirclePair {
   }
 
   // a is parametrized, b is the ring. `bound`: as for solve().
-  template <class Roots>
-  static Real distance_ordered(const Circle3<Real>& a, const Circle3<Real>& b,
-                               Real bound = std::numeric_limits<Real>::infinity()) {
+  template <class Roots> static Real distance_ordered(const Circle3<Real>& a, const Circle3<Real>& b,
+                                                      Real bound = std::numeric_limits<Real>::infinity()) {
     const Round<Real> round(b.center, b.normal, b.radius);
     const LocalCircle<Real> c(a, round);
     return solve<Roots>(c, b.radius, circle_round_scale(c, b.radius), bound).best.value;
   }
 
-  template <class Roots>
-  static Result<Real> closest_ordered(const Circle3<Real>& a, const Circle3<Real>& b,
-                                      Real bound = std::numeric_limits<Real>::infinity()) {
+  template <class Roots> static Result<Real> closest_ordered(const Circle3<Real>& a, const Circle3<Real>& b,
+                                                             Real bound = std::numeric_limits<Real>::infinity()) {
     const Round<Real> round(b.center, b.normal, b.radius);
     const LocalCircle<Real> c(a, round);
     const Real scale = circle_round_scale(c, b.radius);

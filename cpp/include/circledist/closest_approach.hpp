@@ -41,9 +41,9 @@ template <class Real> struct Least {
   bool several = false;
 };
 
-template <class Real, class Distance>
-Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::uint64_t& evaluations,
-                            std::uint64_t limit, const char* query) {
+template <class Real, class Distance> Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size,
+                                                                  std::uint64_t& evaluations, std::uint64_t limit,
+                                                                  const char* query) {
   Least<Real> out;
   const std::uint64_t start = evaluations;
   const Real delta = contact_tolerance(size), screen = std::max(delta, approach_screen(size));
@@ -124,8 +124,8 @@ Least<Real> least_over_time(Distance&& distance_at, Real speed, Real size, std::
       const bool left_ok = k == 0 || here <= run[k - 1].second;
       const bool right_ok = k + 1 == run.size() || here <= run[k + 1].second;
       if (left_ok && right_ok) {
-        const Real bound = std::min(k == 0 ? here : candidates[i + k - 1].bound,
-                                    k + 1 == run.size() ? here : candidates[i + k].bound);
+        const Real bound =
+            std::min(k == 0 ? here : candidates[i + k - 1].bound, k + 1 == run.size() ? here : candidates[i + k].bound);
         minima.push_back({run[k].first, here, k == 0 ? run[k].first : run[k - 1].first,
                           k + 1 == run.size() ? run[k].first : run[k + 1].first, bound});
       }

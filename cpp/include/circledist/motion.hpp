@@ -289,9 +289,8 @@ template <class S, class M> auto spin_reach(const Swept<S>& s, const M& m) {
 // |rotation| reach(a, center): the most a's rotation adds to the speed of any of its points (0
 // when it does not rotate, whatever its reach). `query` names the caller in the refusal of a
 // rotating line or ray.
-template <class A>
-scalar_t<core_t<A>> rotation_speed(const A& a, const Motion3<scalar_t<core_t<A>>>& m,
-                                   const char* query = "first_contact") {
+template <class A> scalar_t<core_t<A>> rotation_speed(const A& a, const Motion3<scalar_t<core_t<A>>>& m,
+                                                      const char* query = "first_contact") {
   using Real = scalar_t<core_t<A>>;
   const Real w = safe_norm(m.rotation);
   if (w == 0) return Real(0);
@@ -346,9 +345,9 @@ namespace detail {
 //     rounding): step there. The bar's lower allowance (within - delta) is not spent on longer
 //     steps: a step of (g + delta / 2) / L would jump over an instant of touching (a ring turning
 //     through a point, distance exactly `within` at one instant) and miss it.
-template <class Real, class Distance>
-Real advance(Distance&& distance_at, Real within, Real speed, Real delta, std::uint64_t& evaluations,
-             std::uint64_t limit = kMotionEvaluationLimit) {
+template <class Real, class Distance> Real advance(Distance&& distance_at, Real within, Real speed, Real delta,
+                                                   std::uint64_t& evaluations,
+                                                   std::uint64_t limit = kMotionEvaluationLimit) {
   Real t = 0;
   for (;;) {
     if (evaluations >= limit) throw evaluation_limit("first_contact", limit);
@@ -374,8 +373,7 @@ Real advance(Distance&& distance_at, Real within, Real speed, Real delta, std::u
 // evaluation_limit.
 template <class Roots = DefaultRoots, class A, class B>
 Contact<scalar_t<core_t<A>>> first_contact(const A& a, const B& b, const Motion3<scalar_t<core_t<A>>>& motion_a,
-                                           const Motion3<scalar_t<core_t<A>>>& motion_b,
-                                           scalar_t<core_t<A>> within = 0,
+                                           const Motion3<scalar_t<core_t<A>>>& motion_b, scalar_t<core_t<A>> within = 0,
                                            std::uint64_t max_evaluations = kMotionEvaluationLimit) {
   using Real = scalar_t<core_t<A>>;
   static_assert(std::is_same<Real, scalar_t<core_t<B>>>::value, "circledist::first_contact: shapes of one scalar type");
