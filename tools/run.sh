@@ -325,6 +325,7 @@ case "$task" in
     "$py" -m bench.bench_queries          # docs/reports/benchmark.md
     "$py" -m bench.accuracy_vs_time       # docs/reports/accuracy_vs_time.md, .png, stability_sweeps.png
     "$py" -m bench.bench_scene            # docs/reports/scene_scaling.md, .png
+    "$py" -m bench.bench_motion           # docs/reports/motion.md
     "$py" -m bench.figures                # docs/derivations/line_disk.png
     ;;
   *)
