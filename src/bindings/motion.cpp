@@ -331,6 +331,14 @@ template <class Real> void list_parts(const BezierCurve3<Real>& b, Real* const* 
   for (int i = 0; i < int(b.control.cols()); ++i) to.point(Vec3<Real>(b.control.col(i)), out[0] + 3 * i);
 }
 
+// What a function calls inlined into it: the unit is compiled for size (CMakeLists.txt), where
+// Eigen's small loops stay calls, and those calls were most of a cheap pair's evaluation.
+#if defined(__GNUC__) || defined(__clang__)
+#define CIRCLEDIST_FLATTEN __attribute__((flatten))
+#else
+#define CIRCLEDIST_FLATTEN
+#endif
+
 // One moving shape of first_contact at one element of the batch: its fields as given (`in`, the
 // sweep last), its motion, and its fields at the time last moved to (`now`: the moved points and
 // vectors in `moved`, the numbers, which a motion keeps, as given).
@@ -352,7 +360,7 @@ template <class Real> struct Mover {
 
   template <class S> Swept<S> shape() const { return {ShapeTraits<S>::make(in.data(), points), *in[count - 1]}; }
   // `now` at time t: the fields as moved(shape, placement(motion, t)) has them.
-  void move(Real t) {
+  CIRCLEDIST_FLATTEN void move(Real t) {
     if (turns) {
       const Placement<Real> p = placement(motion, t);
       for (int i = 0; i < moving.count; ++i) {
