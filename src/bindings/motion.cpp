@@ -278,6 +278,67 @@ Motions motions_rounded_to_float(const char* owner, const Motions& m) {
   return out;
 }
 
+// The points and vectors a motion moves in a shape's fields, each as motion.hpp's moved() moves
+// it (a point by Placement::point, a vector by Placement::vector, an arc's start as its direction
+// in the plane), with the place of its moved value (`out`: one pointer per field of the kind, as
+// store()'s). Listed once per batch element, so that an evaluation moves only them: no shape
+// rebuilt, no arc's frame or trigonometry formed again, no curve allocated, the same numbers.
+template <class Real> struct MovingParts {
+  struct Part {
+    Vec3<Real> from;  // the field's value (an arc's start: its direction in the plane)
+    Real* to;
+    bool point;  // a point (a center, an origin, an end, a control point), else a vector
+  };
+  static constexpr int kCapacity = std::max(kMaxBezierDegree + 1, 3);
+  std::array<Part, size_t(kCapacity)> list{};
+  int count = 0;
+  void point(const Vec3<Real>& x, Real* to) { list[size_t(count++)] = {x, to, true}; }
+  void vector(const Vec3<Real>& v, Real* to) { list[size_t(count++)] = {v, to, false}; }
+};
+template <class Real> void list_parts(const Vec3<Real>& p, Real* const* out, MovingParts<Real>& to) {
+  to.point(p, out[0]);
+}
+template <class Real> void list_parts(const Line3<Real>& l, Real* const* out, MovingParts<Real>& to) {
+  to.point(l.origin, out[0]);
+  to.vector(l.direction, out[1]);
+}
+template <class Real> void list_parts(const Ray3<Real>& r, Real* const* out, MovingParts<Real>& to) {
+  to.point(r.origin, out[0]);
+  to.vector(r.direction, out[1]);
+}
+template <class Real> void list_parts(const Segment3<Real>& s, Real* const* out, MovingParts<Real>& to) {
+  to.point(s.p0, out[0]);
+  to.point(s.p1, out[1]);
+}
+template <class Real> void list_parts(const Circle3<Real>& c, Real* const* out, MovingParts<Real>& to) {
+  to.point(c.center, out[0]);
+  to.vector(c.normal, out[1]);
+}
+template <class Real> void list_parts(const Disk3<Real>& d, Real* const* out, MovingParts<Real>& to) {
+  to.point(d.center, out[0]);
+  to.vector(d.normal, out[1]);
+}
+template <class Real> void list_parts(const Annulus3<Real>& a, Real* const* out, MovingParts<Real>& to) {
+  to.point(a.center, out[0]);
+  to.vector(a.normal, out[1]);
+}
+template <class Real> void list_parts(const Arc3<Real>& a, Real* const* out, MovingParts<Real>& to) {
+  to.point(a.center, out[0]);
+  to.vector(a.normal, out[1]);
+  to.vector(detail::arc_start_in_plane(a), out[3]);
+}
+template <class Real> void list_parts(const BezierCurve3<Real>& b, Real* const* out, MovingParts<Real>& to) {
+  for (int i = 0; i < int(b.control.cols()); ++i) to.point(Vec3<Real>(b.control.col(i)), out[0] + 3 * i);
+}
+
+// What a function calls inlined into it: the unit is compiled for size (CMakeLists.txt), where
+// Eigen's small loops stay calls, and those calls were most of a cheap pair's evaluation.
+#if defined(__GNUC__) || defined(__clang__)
+#define CIRCLEDIST_FLATTEN __attribute__((flatten))
+#else
+#define CIRCLEDIST_FLATTEN
+#endif
+
 // One moving shape of first_contact at one element of the batch: its fields as given (`in`, the
 // sweep last), its motion, and its fields at the time last moved to (`now`: the moved points and
 // vectors in `moved`, the numbers, which a motion keeps, as given).
@@ -286,18 +347,31 @@ template <class Real> struct Mover {
   std::array<const Real*, kMaxShapeFields> in{}, now{};
   std::array<std::array<Real, 3 * (kMaxBezierDegree + 1)>, kMaxShapeFields> moved{};
   Motion3<Real> motion;
-  void (*move)(Mover&, Real t) = nullptr;          // `now` at time t
   Real (*rotation_speed)(const Mover&) = nullptr;  // motion.hpp's detail::rotation_speed
   Real (*size)(const Mover&) = nullptr;            // motion.hpp's detail::motion_size
   BatchShape none;                                 // the one element's batch shape, ()
   std::array<FieldRef<Real>, kMaxShapeFields> refs{};
+  MovingParts<Real> moving;
+  // A motion whose rotation is exactly zero turns by R = I at every time (rotation_matrix): its
+  // vectors stay as moved at t = 0, and a point x moves to (center + I (x - center)) + t
+  // translation, Placement::point's sum in its order, the bracket formed once (`still`).
+  bool turns = false;
+  std::array<Vec3<Real>, size_t(MovingParts<Real>::kCapacity)> still{};
 
   template <class S> Swept<S> shape() const { return {ShapeTraits<S>::make(in.data(), points), *in[count - 1]}; }
-  template <class S> static void move_to(Mover& m, Real t) {
-    const S at = circledist::moved(ShapeTraits<S>::make(m.in.data(), m.points), placement(m.motion, t));
-    std::array<Real*, kMaxShapeFields> out{};
-    for (int k = 0; k < m.count; ++k) out[size_t(k)] = m.moved[size_t(k)].data();
-    store(at, out.data());
+  // `now` at time t: the fields as moved(shape, placement(motion, t)) has them.
+  CIRCLEDIST_FLATTEN void move(Real t) {
+    if (turns) {
+      const Placement<Real> p = placement(motion, t);
+      for (int i = 0; i < moving.count; ++i) {
+        const auto& part = moving.list[size_t(i)];
+        put(part.point ? p.point(part.from) : p.vector(part.from), part.to);
+      }
+      return;
+    }
+    const Vec3<Real> shift = t * motion.translation;
+    for (int i = 0; i < moving.count; ++i)
+      if (moving.list[size_t(i)].point) put(Vec3<Real>(still[size_t(i)] + shift), moving.list[size_t(i)].to);
   }
   template <class S> static Real speed_of(const Mover& m) { return detail::rotation_speed(m.shape<S>(), m.motion); }
   template <class S> static Real size_of(const Mover& m) { return detail::motion_size(m.shape<S>(), m.motion); }
@@ -318,12 +392,25 @@ template <class Real> struct Mover {
     for (int k = 0; k < kMotionFieldCount; ++k)
       *parts[k] =
           vec<Real>(m.fields[size_t(k)].template data_as<Real>() + 3 * element_at(at, m.fields[size_t(k)].batch));
+    std::array<Real*, kMaxShapeFields> out{};
+    for (int k = 0; k < count; ++k) out[size_t(k)] = moved[size_t(k)].data();
+    moving.count = 0;
     visit_kind<Real>(kind, [&](auto tag) {
       using S = typename decltype(tag)::type;
-      move = &move_to<S>;
       rotation_speed = &speed_of<S>;
       size = &size_of<S>;
+      list_parts(ShapeTraits<S>::make(in.data(), points), out.data(), moving);
     });
+    turns = motion.rotation != Vec3<Real>::Zero();
+    if (turns) return;
+    const Placement<Real> p = placement(motion, Real(0));  // R = I
+    for (int i = 0; i < moving.count; ++i) {
+      const auto& part = moving.list[size_t(i)];
+      if (part.point)
+        still[size_t(i)] = p.center + p.rotation * (part.from - p.center);
+      else
+        put(p.vector(part.from), part.to);
+    }
   }
   Operand<Real> operand() const {
     Operand<Real> out{kind, points, &none};
@@ -417,8 +504,8 @@ template <class Real> Contacts run_motion(const char* query, const Shape& a, con
       Real d;
       std::uint64_t evaluations = 0;
       const auto distance_at = [&](Real t) {
-        first.move(first, t);
-        second.move(second, t);
+        first.move(t);
+        second.move(t);
         r.distance = &d;
         distance_fn(r, 0, 1);
         return d;
@@ -432,8 +519,8 @@ template <class Real> Contacts run_motion(const char* query, const Shape& a, con
           t = least.time;
           several = least.several;
           if (t == t) {  // the movers back at the least's time
-            first.move(first, t);
-            second.move(second, t);
+            first.move(t);
+            second.move(t);
           }
         } else {
           t = detail::advance(distance_at, limit, speed, contact_tolerance(extent), evaluations);

@@ -327,3 +327,50 @@ def test_every_solver(solver):
     assert abs(c.time - reference.time) <= 1e-11 and c.distance <= delta
     with pytest.raises(ValueError, match="solver must be None"):
         cd.first_contact(line, RING, solver="newton")
+
+
+@pytest.mark.parametrize("dtype", [np.float64, np.longdouble], ids=["float64", "longdouble"])
+def test_answers_are_closest_points_of_the_moved_shapes(dtype):
+    """Every kind against a few, turning, translating only (a rotation of zeros, negative zeros
+    among them) and at rest: first_contact's and closest_approach's answers are closest_points of
+    a.moved(ma, time) and b.moved(mb, time) to the bit, as the queries move the shapes as
+    Shape.moved does."""
+    rng = np.random.default_rng(29)
+    kinds = sorted({k for pair in cd._core._query_kinds() for k in pair})
+    n = 4
+    for first in kinds:
+        for second in ("Point", "Circle", "Arc", "Bezier"):
+            a = getattr(cd, first)(**random_fields(cd, first, rng, batch=(n,), dtype=dtype))
+            b = getattr(cd, second)(**random_fields(cd, second, rng, batch=(n,), dtype=dtype))
+            b = b.moved(cd.Motion(translation=np.array([2.5, 0, 0], dtype=dtype)), np.array(1.0, dtype=dtype))
+            still = np.zeros((n, 3), dtype=dtype)
+            still[::2, 1] = -0.0
+            turning = rng.normal(size=(n, 3)).astype(dtype) * 2
+            rotation_a = still if first in ("Line", "Ray") else turning
+            for ma, mb in (
+                (
+                    cd.Motion(
+                        translation=rng.normal(size=(n, 3)).astype(dtype) * 3,
+                        rotation=rotation_a,
+                        center=rng.normal(size=(n, 3)).astype(dtype),
+                    ),
+                    cd.Motion(translation=rng.normal(size=(n, 3)).astype(dtype), rotation=still),
+                ),
+                (
+                    cd.Motion(
+                        translation=-rng.normal(size=(n, 3)).astype(dtype) * 3,
+                        rotation=still,
+                        center=rng.normal(size=(n, 3)).astype(dtype),
+                    ),
+                    cd.Motion(rotation=turning, center=rng.normal(size=(n, 3)).astype(dtype)),
+                ),
+                (cd.Motion(translation=rng.normal(size=(n, 3)).astype(dtype) * 3, rotation=still), None),
+            ):
+                for r in (cd.first_contact(a, b, ma, mb, within=0.3), cd.closest_approach(a, b, ma, mb)):
+                    t = np.asarray(r.time)
+                    assert t.dtype == dtype
+                    met = np.isfinite(t)
+                    at = np.where(met, t, 0).astype(dtype)
+                    expected = cd.closest_points(a.moved(ma, at), b.moved(mb if mb is not None else cd.Motion(), at))
+                    for name in ("distance", "point_a", "point_b", "param_a", "param_b"):
+                        same_bits(np.asarray(getattr(r, name))[met], np.asarray(getattr(expected, name))[met])
