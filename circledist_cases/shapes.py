@@ -73,3 +73,20 @@ def make_shape(cd, kind: str, values):
         k = int(v[0])
         return cd.Bezier(v[1 : 1 + 3 * k].reshape(k, 3))
     raise ValueError(kind)
+
+
+def random_motion(cd, rng, kind: str, translation=None):
+    """A random motion for a shape of `kind`; lines and rays translate only (they cannot rotate)."""
+    rotation = np.zeros(3) if kind in ("Line", "Ray") else rng.normal(size=3) * 2
+    translation = rng.normal(size=3) * 3 if translation is None else translation
+    return cd.Motion(translation=translation, rotation=rotation, center=rng.normal(size=3))
+
+
+def swapped_agree(c, d) -> None:
+    """A motion query's answer for (b, a, motion_b, motion_a), `d`, is its answer for (a, b,
+    motion_a, motion_b), `c`, with a and b exchanged, to the bit."""
+    for name in ("time", "distance", "unique"):
+        same_bits(getattr(c, name), getattr(d, name))
+    for x, y in (("point_a", "point_b"), ("param_a", "param_b")):
+        same_bits(getattr(c, x), getattr(d, y))
+        same_bits(getattr(c, y), getattr(d, x))

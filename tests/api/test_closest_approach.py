@@ -11,7 +11,7 @@ import pytest
 from mpmath import mp, mpf
 
 from circledist_cases.accuracy import reference_distance
-from circledist_cases.shapes import random_fields, same_bits
+from circledist_cases.shapes import random_fields, random_motion, same_bits, swapped_agree
 
 cd = pytest.importorskip("circledist")
 
@@ -181,14 +181,6 @@ def query_size(a, b, ma, mb):
     return size
 
 
-def _swapped_agree(c, d):
-    for name in ("time", "distance", "unique"):
-        same_bits(getattr(c, name), getattr(d, name))
-    for x, y in (("point_a", "point_b"), ("param_a", "param_b")):
-        same_bits(getattr(c, x), getattr(d, y))
-        same_bits(getattr(c, y), getattr(d, x))
-
-
 def check_against_reference(a, b, ma, mb):
     c = cd.closest_approach(a, b, ma, mb)
     size = query_size(a, b, ma, mb)
@@ -198,7 +190,7 @@ def check_against_reference(a, b, ma, mb):
     # closest_points' distance of the moved shapes at that time, to the bit.
     assert c.distance == _distances(a, b, ma, mb, np.array([c.time]))[0]
     assert np.linalg.norm(c.point_a - c.point_b) == pytest.approx(c.distance, abs=BAR * size)
-    _swapped_agree(c, cd.closest_approach(b, a, mb, ma))
+    swapped_agree(c, cd.closest_approach(b, a, mb, ma))
     return c, reference, size
 
 
@@ -218,11 +210,6 @@ PAIRS = [
 ]
 
 
-def _random_motion(rng, kind):
-    rotation = np.zeros(3) if kind in ("Line", "Ray") else rng.normal(size=3) * 2
-    return cd.Motion(translation=rng.normal(size=3) * 3, rotation=rotation, center=rng.normal(size=3))
-
-
 @pytest.mark.parametrize("kinds", PAIRS, ids="-".join)
 def test_random_pairs_against_the_reference(kinds):
     """Two random moving pairs of each kind (one swept where the reference takes sweeps): the
@@ -232,7 +219,7 @@ def test_random_pairs_against_the_reference(kinds):
         a, b = (getattr(cd, kind)(**random_fields(cd, kind, rng, sweep=bool(case))) for kind in kinds)
         if not case:  # apart by 2 at the start: a least above 0, mostly
             b = b.moved(cd.Motion(translation=[2, 0, 0]), 1.0)
-        check_against_reference(a, b, _random_motion(rng, kinds[0]), _random_motion(rng, kinds[1]))
+        check_against_reference(a, b, random_motion(cd, rng, kinds[0]), random_motion(cd, rng, kinds[1]))
 
 
 def test_a_ring_spinning_about_its_axis_is_at_rest():
@@ -377,7 +364,7 @@ def test_broadcasts_shapes_over_motions():
             )
             for name in ANSWERS:
                 same_bits(getattr(c, name)[i, j], getattr(one, name))
-    _swapped_agree(c, cd.closest_approach(disk, points, None, motions))
+    swapped_agree(c, cd.closest_approach(disk, points, None, motions))
     assert repr(cd.closest_approach(cd.Point([3, 0, 0]), RING)).startswith("Approach(time=0.0, distance=2.0")
 
 
@@ -389,10 +376,10 @@ def test_every_pair_of_kinds_in_both_orders():
             a = getattr(cd, first)(**random_fields(cd, first, rng, batch=(2,)))
             b = getattr(cd, second)(**random_fields(cd, second, rng, batch=(2,)))
             ma = cd.Motion(translation=rng.normal(size=(2, 3)) * 3)
-            mb = _random_motion(rng, second)
+            mb = random_motion(cd, rng, second)
             c = cd.closest_approach(a, b, ma, mb)
             assert np.isfinite(c.distance).all() and ((0 <= c.time) & (c.time <= 1)).all()
-            _swapped_agree(c, cd.closest_approach(b, a, mb, ma))
+            swapped_agree(c, cd.closest_approach(b, a, mb, ma))
 
 
 def test_precisions():

@@ -7,22 +7,13 @@ bisection of the first crossing."""
 import numpy as np
 import pytest
 
-from circledist_cases.shapes import random_fields, same_bits
+from circledist_cases.shapes import random_fields, random_motion, same_bits, swapped_agree
 
 cd = pytest.importorskip("circledist")
 
 BAR = 1e-12  # the contact bar: 1e-12 times the query's size (docs/derivations/motion.md)
 ANSWERS = ("time", "distance", "point_a", "point_b", "param_a", "param_b", "unique")
 RING = cd.Circle([0, 0, 0], [0, 0, 1], 1.0)
-
-
-def _swapped_agree(c, d):
-    """first_contact(b, a, mb, ma) is first_contact(a, b, ma, mb) with a and b exchanged, to the bit."""
-    for name in ("time", "distance", "unique"):
-        same_bits(getattr(c, name), getattr(d, name))
-    for x, y in (("point_a", "point_b"), ("param_a", "param_b")):
-        same_bits(getattr(c, x), getattr(d, y))
-        same_bits(getattr(c, y), getattr(d, x))
 
 
 def _size(shapes_and_motions, times):
@@ -178,13 +169,6 @@ PAIRS = [
 ]
 
 
-def _random_motion(rng, kind, translation=None):
-    """A random motion; lines and rays translate only (they cannot rotate)."""
-    rotation = np.zeros(3) if kind in ("Line", "Ray") else rng.normal(size=3) * 2
-    translation = rng.normal(size=3) * 3 if translation is None else translation
-    return cd.Motion(translation=translation, rotation=rotation, center=rng.normal(size=3))
-
-
 def _a_point_of(shape):
     """A point of a shape (its first vector field: a center, an origin, an end, a control point)."""
     return np.asarray(next(iter(shape.to_arrays().values())), dtype=float).reshape(-1, 3)[0]
@@ -201,13 +185,13 @@ def test_random_pairs_against_sampling(kinds):
         b = b.moved(cd.Motion(translation=[5, 0, 0]), 1.0)  # apart at the start, mostly
         # Each shape turning, a translating so that a point of it meets one of b about mid-way (give
         # or take 0.3), so that most cases touch.
-        turn, mb = _random_motion(rng, kinds[0], np.zeros(3)), _random_motion(rng, kinds[1], np.zeros(3))
+        turn, mb = random_motion(cd, rng, kinds[0], np.zeros(3)), random_motion(cd, rng, kinds[1], np.zeros(3))
         aim = 2 * (_a_point_of(b.moved(mb, 0.5)) - _a_point_of(a.moved(turn, 0.5))) + rng.normal(size=3) * 0.3
         ma = cd.Motion(translation=aim, rotation=turn.rotation, center=turn.center)
         within = float(rng.uniform(0.1, 0.6)) if case else 0.0
         c, _ = _check_against_sampling(a, b, ma, mb, within)
         contacts += bool(np.isfinite(c.time))
-        _swapped_agree(c, cd.first_contact(b, a, mb, ma, within=within))
+        swapped_agree(c, cd.first_contact(b, a, mb, ma, within=within))
     assert contacts >= 2
 
 
@@ -221,9 +205,9 @@ def test_both_orders_agree_for_every_pair_of_kinds():
             a = getattr(cd, first)(**random_fields(cd, first, rng, batch=(3,)))
             b = getattr(cd, second)(**random_fields(cd, second, rng, batch=(3,)))
             ma = cd.Motion(translation=rng.normal(size=(3, 3)) * 3)
-            mb = _random_motion(rng, second)
+            mb = random_motion(cd, rng, second)
             c = cd.first_contact(a, b, ma, mb, within=0.1)
-            _swapped_agree(c, cd.first_contact(b, a, mb, ma, within=0.1))
+            swapped_agree(c, cd.first_contact(b, a, mb, ma, within=0.1))
 
 
 def test_precisions():
